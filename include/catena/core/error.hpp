@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// The three kinds of failure (STYLE.md §5). Bad input and unreadable files throw one of these
+/// before any work is done; numerical outcomes are never exceptions (they go in SolverSummary);
+/// broken internal invariants are assert()s.
+
+#include <stdexcept>
+#include <string>
+
+namespace catena {
+
+/// Base of every exception Catena throws on purpose.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A value violates a documented constraint. The message names the field, its value and the
+/// constraint, e.g. "Invalid CableProperties::length_m = -1: must be > 0 [m]".
+class InvalidInput : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A file cannot be read or parsed (bad TOML, unknown key, wrong type). The message names the
+/// file, the table and the key.
+class ParseError : public Error {
+ public:
+  using Error::Error;
+};
+
+}  // namespace catena

@@ -1,0 +1,77 @@
+#pragma once
+/// \file
+/// The cable and its supports in SI units (DESIGN.md §1.1), and the Problem every solver answers.
+
+#include <optional>
+#include <string>
+
+#include "catena/core/types.hpp"
+
+namespace catena {
+
+/// Material and section of a uniform cable, per unit *unstretched* length.
+struct CableProperties {
+  /// Unstretched length L [m]. Must be finite and > 0.
+  double length_m = 1.0;
+  /// Submerged weight per unit unstretched length W0 (weight minus buoyancy) [N/m].
+  /// Must be finite and > 0 (a weightless cable has no catenary; use a tiny value for a string).
+  double weight_n_per_m = 1.0;
+  /// Axial stiffness EA [N]. Must be > 0; +infinity means inextensible.
+  double axial_stiffness_n = kInfinity;
+  /// Structural mass per unit unstretched length m [kg/m]. Must be finite and > 0.
+  double mass_kg_per_m = 1.0;
+  /// Added (hydrodynamic) mass per unit unstretched length ma [kg/m], acting in the normal
+  /// directions only. Must be finite and >= 0.
+  double added_mass_kg_per_m = 0.0;
+
+  /// M = m + ma: the mass that resists normal motion [kg/m].
+  double normal_mass_kg_per_m() const { return mass_kg_per_m + added_mass_kg_per_m; }
+  /// True for EA = inf.
+  bool is_inextensible() const;
+
+  /// Throws InvalidInput naming the field, its value and the violated constraint.
+  void validate() const;
+};
+
+/// End points of the cable in one vertical plane: x horizontal, z up [m]. `s = 0` at `a`.
+struct Supports {
+  Vec2 a_m = Vec2(0.0, 0.0);
+  Vec2 b_m = Vec2(1.0, 0.0);
+
+  /// b - a [m].
+  Vec2 chord_m() const { return b_m - a_m; }
+  /// Throws InvalidInput for non-finite coordinates or coincident ends.
+  void validate() const;
+};
+
+/// How a problem was specified (kept for reports; the physics is always the SI form).
+enum class ProblemForm { Physical, TautInclined, GaleXi, GaleSag };
+
+/// "cable", "taut_inclined", "gale_xi", "gale_sag".
+std::string to_string(ProblemForm form);
+
+/// The static end forces (H, V_A), when the static state is given by tension rather than by the
+/// position of support b (see Problem::prescribed_forces).
+struct EndForces {
+  /// Horizontal component of the tension, >= 0 [N].
+  double horizontal_n = 0.0;
+  /// Vertical component of the tension at support a, along the tangent toward b [N].
+  double vertical_a_n = 0.0;
+};
+
+/// A cable between two fixed supports: the input of statics and of every solver.
+struct Problem {
+  CableProperties cable;
+  Supports supports;
+  ProblemForm form = ProblemForm::Physical;
+  /// When set, the static state is these end forces and `supports.b_m` must be where they put
+  /// the end of the cable (builders set both). Needed for taut cables: there the tension is
+  /// determined by the chord only to about (rounding / static strain), e.g. 1e-2 relative for
+  /// eps = 1e-6, so a tension-specified problem must not be re-solved from its geometry.
+  std::optional<EndForces> prescribed_forces;
+
+  /// Validates the cable and the supports (not reachability: statics checks that).
+  void validate() const;
+};
+
+}  // namespace catena

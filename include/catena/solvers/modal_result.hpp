@@ -1,0 +1,89 @@
+#pragma once
+/// \file
+/// Results every solver returns, in the same structures (DESIGN.md §2, §3).
+///
+/// Shape normalisation (the common convention every solver follows, so that shapes compare
+/// directly): in-plane shapes are scaled so that max_j |w(s_j)| = 1 and w is positive where |w| is
+/// largest (the first such station); a mode whose normal motion is negligible (max|w| <= 1e-6
+/// max|u|, e.g. the axial modes of a straight bar) is scaled by u instead and `normalised_by` says
+/// "u". Out-of-plane shapes are scaled the same way by v. Dynamic tension is given for that scaling,
+/// i.e. per unit maximum normal amplitude [N/m of displacement].
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "catena/core/types.hpp"
+#include "catena/solvers/solve_request.hpp"
+#include "catena/solvers/solver_summary.hpp"
+
+namespace catena {
+
+/// One natural mode.
+struct Mode {
+  /// 1-based, lowest first, within its plane.
+  int index = 0;
+  double omega_rad_s = 0.0;
+  double frequency_hz = 0.0;
+  /// kL/pi with k = omega / sqrt(T0/M).
+  double k_l_over_pi = 0.0;
+  /// omega / sqrt(g/a) (Gale), when defined.
+  std::optional<double> gale_ratio;
+  /// Estimated relative error of omega (the solver's own estimate; -1: none).
+  double relative_error_estimate = -1.0;
+
+  /// Present when shapes were asked: stations s [m] and the normalised displacements there.
+  Vector s_m;
+  /// In-plane: tangential u = Phi . t and normal w = Phi . n [m per unit normalised amplitude].
+  Vector u;
+  Vector w;
+  /// Out-of-plane displacement.
+  Vector v;
+  /// "w", "u" or "v": which component fixed the scale.
+  std::string normalised_by;
+  /// Dynamic tension tau(s_j) = t . A Phi' [N], present when tension and shapes were asked.
+  Vector tension_n;
+  /// max_s |tau| for the normalised mode [N], when tension was asked (-1 otherwise).
+  double max_abs_tension_n = -1.0;
+  /// int (m u^2 + M w^2) ds (in-plane) or int M v^2 ds (out of plane) for the normalised
+  /// shape [kg], when shapes were asked (-1 otherwise).
+  double modal_mass_kg = -1.0;
+};
+
+/// The modes of one plane.
+struct ModalResult {
+  Plane plane = Plane::InPlane;
+  std::vector<Mode> modes;
+  /// Number of eigenvalues proved to lie below (or at) the highest returned frequency, by a
+  /// counting argument (Sylvester inertia, conjugate points, Sturm); -1 when the method has none.
+  int proved_count_below_top = -1;
+  SolverSummary summary;
+};
+
+/// Response to one forcing frequency.
+struct ForcedResponse {
+  double omega_rad_s = 0.0;
+  /// Stations [m] and the displacement amplitude there [m] (u, w in plane; v out of plane).
+  Vector s_m;
+  Vector u;
+  Vector w;
+  Vector v;
+  /// Dynamic tension amplitude [N] (signed: in phase with the forcing).
+  Vector tension_n;
+  double max_abs_tension_n = 0.0;
+  /// Empty when fine; otherwise why this frequency has no finite answer (e.g. "forcing within
+  /// 1e-12 of natural frequency 3 (resonance)").
+  std::string diagnostic;
+};
+
+/// Everything one solver produced for one problem and request.
+struct SolverOutput {
+  std::string solver;
+  std::optional<ModalResult> inplane;
+  std::optional<ModalResult> outofplane;
+  std::vector<ForcedResponse> forced;
+  /// Overall summary (NotApplicable with the reason when the solver declined).
+  SolverSummary summary;
+};
+
+}  // namespace catena

@@ -1,0 +1,60 @@
+#pragma once
+/// \file
+/// What a scene asks the solvers to compute (DESIGN.md §3). Only what is asked is computed.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "catena/core/types.hpp"
+
+namespace catena {
+
+/// Which support is driven in a forced-response request.
+enum class CableEnd { A, B };
+std::string to_string(CableEnd end);
+
+/// Direction of the prescribed end displacement.
+enum class ForcingDirection {
+  Tangential,  ///< along the static tangent at the driven end
+  Normal,      ///< along the in-plane normal at the driven end
+  GivenVector, ///< a given in-plane vector (x, z), normalised
+  OutOfPlane   ///< normal to the plane of the supports
+};
+std::string to_string(ForcingDirection direction);
+
+/// Harmonic forced response: one end displaced by `amplitude_m * direction * cos(omega t)`, the
+/// other fixed. One solve per forcing frequency.
+struct ForcedRequest {
+  CableEnd end = CableEnd::B;
+  ForcingDirection direction = ForcingDirection::Tangential;
+  /// In-plane direction (x, z) when direction == GivenVector; need not be unit.
+  Vec2 vector = Vec2(1.0, 0.0);
+  /// Displacement amplitude at the driven end [m]. > 0.
+  double amplitude_m = 0.01;
+  /// Forcing frequencies [rad/s], >= 0.
+  std::vector<double> omegas_rad_s;
+};
+
+/// What to compute.
+struct SolveRequest {
+  /// Number of lowest in-plane modes (0: none).
+  int inplane_modes = 6;
+  /// Number of lowest out-of-plane modes (0: none).
+  int outofplane_modes = 0;
+  /// Mode shapes on `points` equally spaced stations s_j = j L / (points - 1).
+  bool shapes = false;
+  /// Stations for shapes, tension and forced response; >= 2.
+  int points = 101;
+  /// Dynamic tension of each mode (along the cable when shapes are asked, else its maximum).
+  bool tension = false;
+  /// Forced response, when asked.
+  std::optional<ForcedRequest> forced;
+
+  /// Throws InvalidInput naming the field and the constraint.
+  void validate() const;
+  /// The stations s_j [m] for a cable of unstretched length L.
+  Vector stations_m(double length_m) const;
+};
+
+}  // namespace catena

@@ -1,0 +1,97 @@
+#pragma once
+/// \file
+/// Statics of a uniform elastic (or inextensible) cable hanging between two supports
+/// (DESIGN.md §1.2): the elastic catenary.
+///
+/// The internal force at unstretched arc length s is F(s) = (H, V(s)), V(s) = V_A + W0 s, with
+/// H >= 0 constant; tension T = |F|, unit tangent t = F/T, in-plane normal n = (-V, H)/T, static
+/// strain e = T/EA and r'(s) = (1 + e) t. Closed forms (written here in forms that do not lose
+/// digits for taut cables, where H/W0 is large):
+///
+///     x(s) = H s / EA + (H/W0) [asinh(V(s)/H) - asinh(V_A/H)]
+///     z(s) = (V_A s + W0 s^2/2) / EA + (T(s) - T_A) / W0
+///
+/// EA = inf gives the inextensible catenary; H = 0 is a vertical cable (allowed when it is taut,
+/// V > 0 along its whole length).
+
+#include <string>
+
+#include "catena/core/types.hpp"
+#include "catena/models/cable.hpp"
+
+namespace catena {
+
+/// Options of the (H, V_A) Newton solve.
+struct StaticsOptions {
+  /// Converged when |r(L) - (B - A)| <= relative_tolerance * max(L, |B - A|). In (0, 1e-3].
+  double relative_tolerance = 1e-14;
+  /// Newton iterations before giving up. >= 1.
+  int max_iterations = 200;
+
+  /// Throws InvalidInput naming the field and the constraint.
+  void validate() const;
+};
+
+/// The static state of the cable: the two end-force unknowns plus closed forms at any s.
+/// Every function of s takes the unstretched arc length s in [0, L] [m].
+class StaticSolution {
+ public:
+  StaticSolution() = default;
+  /// The equilibrium with horizontal force `H` [N] and vertical force `V_A` [N] at support `a`.
+  StaticSolution(const CableProperties& cable, const Vec2& a_m, double H, double V_A);
+
+  const CableProperties& cable() const { return cable_; }
+  /// H: horizontal component of the tension, constant along the cable [N].
+  double horizontal_force_n() const { return H_; }
+  /// V_A: vertical component of the tension at s = 0 (along t, i.e. toward b) [N].
+  double vertical_force_a_n() const { return V_A_; }
+
+  /// V(s) = V_A + W0 s [N].
+  double vertical_force_n(double s) const { return V_A_ + cable_.weight_n_per_m * s; }
+  /// T(s) = sqrt(H^2 + V^2) [N].
+  double tension_n(double s) const;
+  /// e(s) = T/EA (0 when inextensible) [-].
+  double strain(double s) const;
+  /// Angle of the tangent above the horizontal, atan2(V, H) [rad].
+  double angle_rad(double s) const;
+  /// Unit tangent t = (H, V)/T.
+  Vec2 tangent(double s) const;
+  /// Unit in-plane normal n = (-V, H)/T (t rotated +90 degrees).
+  Vec2 normal(double s) const;
+  /// r(s) - r(0): offset from support a along the cable [m].
+  Vec2 offset_m(double s) const;
+  /// r(s): absolute position [m].
+  Vec2 position_m(double s) const { return a_m_ + offset_m(s); }
+  /// Stretched length of [0, s] [m].
+  double stretched_length_m(double s) const;
+
+  /// Newton iterations used by solve_statics (0 when built directly).
+  int iterations = 0;
+  /// |r(L) - (B - A)| at the solution [m].
+  double closure_error_m = 0.0;
+  /// One line: "H = ... N, V_A = ... N, T_A = ..., T_B = ..., 5 Newton iterations, closure 1e-16 m".
+  std::string brief_report() const;
+
+ private:
+  CableProperties cable_;
+  Vec2 a_m_ = Vec2::Zero();
+  double H_ = 0.0;
+  double V_A_ = 0.0;
+};
+
+/// Offset r(L) - r(0) of a cable with end forces (H, V_A): the closure function of the Newton solve.
+/// Also used by problem builders. `H` >= 0 [N]; H = 0 requires V > 0 on (0, L].
+Vec2 catenary_end_offset(const CableProperties& cable, double H, double V_A);
+
+/// Solves the statics: finds (H, V_A) with r(L) = B - A by Newton's method on the 2x2 system with
+/// its analytic Jacobian, from a robust initial guess (parabolic sag for slack cables, a straight
+/// taut estimate otherwise), with a backtracking line search that keeps H > 0.
+/// A vertical chord (B - A along z) is solved in the one unknown V_A with H = 0.
+/// When the problem has prescribed_forces, they are the solution (no Newton; the closure error
+/// against support b is checked and reported).
+/// Throws InvalidInput when no equilibrium exists (e.g. an inextensible cable shorter than the
+/// chord, or a vertical chord longer than the cable hanging straight) or Newton fails (with the
+/// residual and iteration count in the message).
+StaticSolution solve_statics(const Problem& problem, const StaticsOptions& options = {});
+
+}  // namespace catena

@@ -1,0 +1,76 @@
+#include "catena/models/cable.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "catena/core/error.hpp"
+
+namespace catena {
+namespace {
+
+void require_finite_positive(double value, const char* field, const char* unit) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    throw InvalidInput(fmt::format("Invalid CableProperties::{} = {}: must be finite and > 0 [{}]",
+                                   field, value, unit));
+  }
+}
+
+}  // namespace
+
+bool CableProperties::is_inextensible() const { return std::isinf(axial_stiffness_n); }
+
+void CableProperties::validate() const {
+  require_finite_positive(length_m, "length_m", "m");
+  require_finite_positive(weight_n_per_m, "weight_n_per_m", "N/m");
+  require_finite_positive(mass_kg_per_m, "mass_kg_per_m", "kg/m");
+  if (std::isnan(axial_stiffness_n) || axial_stiffness_n <= 0.0 ||
+      axial_stiffness_n == -kInfinity) {
+    throw InvalidInput(fmt::format(
+        "Invalid CableProperties::axial_stiffness_n = {}: must be > 0 or +inf (inextensible) [N]",
+        axial_stiffness_n));
+  }
+  if (!std::isfinite(added_mass_kg_per_m) || added_mass_kg_per_m < 0.0) {
+    throw InvalidInput(fmt::format(
+        "Invalid CableProperties::added_mass_kg_per_m = {}: must be finite and >= 0 [kg/m]",
+        added_mass_kg_per_m));
+  }
+}
+
+void Supports::validate() const {
+  for (int i = 0; i < 2; ++i) {
+    if (!std::isfinite(a_m[i]) || !std::isfinite(b_m[i])) {
+      throw InvalidInput(fmt::format("Invalid Supports: a = ({}, {}), b = ({}, {}): coordinates must "
+                                     "be finite [m]",
+                                     a_m.x(), a_m.y(), b_m.x(), b_m.y()));
+    }
+  }
+  const double scale = std::max({1.0, a_m.norm(), b_m.norm()});
+  if (chord_m().norm() <= 1e-12 * scale) {
+    throw InvalidInput(fmt::format("Invalid Supports: a = ({}, {}) and b = ({}, {}) coincide; the "
+                                   "ends must be apart",
+                                   a_m.x(), a_m.y(), b_m.x(), b_m.y()));
+  }
+  if (b_m.x() < a_m.x()) {
+    throw InvalidInput(fmt::format(
+        "Invalid Supports: b.x = {} < a.x = {}: support b must not be left of support a "
+        "(s runs from a to b with x increasing; swap a and b)",
+        b_m.x(), a_m.x()));
+  }
+}
+
+std::string to_string(ProblemForm form) {
+  switch (form) {
+    case ProblemForm::Physical: return "cable";
+    case ProblemForm::TautInclined: return "taut_inclined";
+    case ProblemForm::GaleXi: return "gale_xi";
+    case ProblemForm::GaleSag: return "gale_sag";
+  }
+  return "unknown";
+}
+
+void Problem::validate() const {
+  cable.validate();
+  supports.validate();
+}
+
+}  // namespace catena

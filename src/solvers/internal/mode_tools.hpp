@@ -1,0 +1,31 @@
+#pragma once
+/// \file
+/// Helpers every solver uses to fill the common result structs the same way: frequency units,
+/// the shape normalisation of modal_result.hpp, and modal mass on the stations.
+
+#include "catena/solvers/modal_result.hpp"
+#include "catena/statics/dimensionless_groups.hpp"
+
+namespace catena::internal {
+
+/// Sets omega, Hz, kL/pi and Gale's ratio (when defined) of `mode`.
+void set_mode_frequency(Mode& mode, double omega_rad_s, const DimensionlessGroups& groups);
+
+/// Scales an in-plane mode (u, w and, when present, tension_n) to max|w| = 1 with w > 0 at the
+/// first station of largest |w|; a mode with max|w| <= 1e-6 max|u| is scaled by u instead.
+/// Sets normalised_by and max_abs_tension_n (when tension_n is present). Returns the factor applied.
+double normalise_inplane_mode(Mode& mode);
+
+/// Same for an out-of-plane mode, by v.
+double normalise_outofplane_mode(Mode& mode);
+
+/// Integral of f over the stations s (trapezoid on equally or unequally spaced points).
+double integrate_on_stations(const Vector& s, const Vector& f);
+
+/// In-plane modal mass int (m u^2 + M w^2) ds on the stations [kg].
+double inplane_modal_mass(const Mode& mode, double mass_kg_per_m, double normal_mass_kg_per_m);
+
+/// Out-of-plane modal mass int M v^2 ds [kg].
+double outofplane_modal_mass(const Mode& mode, double normal_mass_kg_per_m);
+
+}  // namespace catena::internal

@@ -1,0 +1,60 @@
+#include "catena/solvers/solve_request.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "catena/core/error.hpp"
+
+namespace catena {
+
+std::string to_string(CableEnd end) { return end == CableEnd::A ? "a" : "b"; }
+
+std::string to_string(ForcingDirection direction) {
+  switch (direction) {
+    case ForcingDirection::Tangential: return "tangential";
+    case ForcingDirection::Normal: return "normal";
+    case ForcingDirection::GivenVector: return "vector";
+    case ForcingDirection::OutOfPlane: return "out_of_plane";
+  }
+  return "?";
+}
+
+void SolveRequest::validate() const {
+  if (inplane_modes < 0 || inplane_modes > 100000) {
+    throw InvalidInput(fmt::format(
+        "Invalid SolveRequest::inplane_modes = {}: must be in [0, 100000]", inplane_modes));
+  }
+  if (outofplane_modes < 0 || outofplane_modes > 100000) {
+    throw InvalidInput(fmt::format(
+        "Invalid SolveRequest::outofplane_modes = {}: must be in [0, 100000]", outofplane_modes));
+  }
+  if (points < 2 || points > 1000000) {
+    throw InvalidInput(
+        fmt::format("Invalid SolveRequest::points = {}: must be in [2, 1000000]", points));
+  }
+  if (forced) {
+    if (!std::isfinite(forced->amplitude_m) || forced->amplitude_m <= 0.0) {
+      throw InvalidInput(fmt::format(
+          "Invalid ForcedRequest::amplitude_m = {}: must be finite and > 0 [m]", forced->amplitude_m));
+    }
+    if (forced->omegas_rad_s.empty()) {
+      throw InvalidInput("Invalid ForcedRequest::omegas_rad_s: at least one forcing frequency needed");
+    }
+    for (double omega : forced->omegas_rad_s) {
+      if (!std::isfinite(omega) || omega < 0.0) {
+        throw InvalidInput(fmt::format(
+            "Invalid ForcedRequest forcing frequency {} rad/s: must be finite and >= 0", omega));
+      }
+    }
+    if (forced->direction == ForcingDirection::GivenVector &&
+        (!forced->vector.allFinite() || forced->vector.norm() == 0.0)) {
+      throw InvalidInput("Invalid ForcedRequest::vector: must be finite and non-zero");
+    }
+  }
+}
+
+Vector SolveRequest::stations_m(double length_m) const {
+  return Vector::LinSpaced(points, 0.0, length_m);
+}
+
+}  // namespace catena

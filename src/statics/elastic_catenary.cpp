@@ -1,0 +1,272 @@
+#include "catena/statics/elastic_catenary.hpp"
+
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "catena/core/error.hpp"
+
+namespace catena {
+namespace {
+
+double inverse_stiffness(const CableProperties& cable) {
+  return cable.is_inextensible() ? 0.0 : 1.0 / cable.axial_stiffness_n;
+}
+
+// asinh(V/H) - asinh(V_A/H) = asinh(D), with D written so that neither branch cancels:
+// same signs: D = W0 s (V + V_A) / (V T_A + V_A T); otherwise D = (V T_A - V_A T) / H^2.
+double asinh_difference(double H, double V_A, double V, double T_A, double T, double W0s) {
+  if (V * V_A > 0.0) return std::asinh(W0s * (V + V_A) / (V * T_A + V_A * T));
+  return std::asinh((V * T_A - V_A * T) / (H * H));
+}
+
+Vec2 offset(const CableProperties& cable, double H, double V_A, double s) {
+  const double W0 = cable.weight_n_per_m;
+  const double V = V_A + W0 * s;
+  const double T_A = std::hypot(H, V_A);
+  const double T = std::hypot(H, V);
+  const double compliance = inverse_stiffness(cable);
+  double x = H * s * compliance;
+  double z = (V_A * s + 0.5 * W0 * s * s) * compliance;
+  if (H > 0.0) x += (H / W0) * asinh_difference(H, V_A, V, T_A, T, W0 * s);
+  // (T - T_A)/W0 = s (V + V_A)/(T + T_A): exact, and finite for H = 0.
+  if (T + T_A > 0.0) z += s * (V + V_A) / (T + T_A);
+  return {x, z};
+}
+
+// Jacobian of r(L) with respect to (H, V_A); entries written without cancellation.
+Eigen::Matrix2d offset_jacobian(const CableProperties& cable, double H, double V_A) {
+  const double L = cable.length_m;
+  const double W0 = cable.weight_n_per_m;
+  const double compliance_l = L * inverse_stiffness(cable);
+  const double V_B = V_A + W0 * L;
+  const double T_A = std::hypot(H, V_A);
+  const double T_B = std::hypot(H, V_B);
+  // dx/dV_A = dz/dH = (H/W0)(1/T_B - 1/T_A) = -H L (V_A + V_B) / ((T_A + T_B) T_A T_B).
+  const double cross = -H * L * (V_A + V_B) / ((T_A + T_B) * T_A * T_B);
+  // dz/dV_A = L/EA + int H^2/T^3 ds = L/EA + (V_B/T_B - V_A/T_A)/W0.
+  double dz_dv;
+  if (V_A * V_B > 0.0) {
+    dz_dv = H * H * L * (V_A + V_B) / ((V_B * T_A + V_A * T_B) * T_A * T_B);
+  } else {
+    dz_dv = (V_B * T_A - V_A * T_B) / (W0 * T_A * T_B);
+  }
+  // dx/dH = L/EA + int V^2/T^3 ds. The closed form (f(V_B/H) - f(V_A/H))/W0 with
+  // f(v) = asinh v - v/sqrt(1+v^2) cancels for nearly straight, nearly horizontal cables:
+  // there the integrand is smooth and 12-point Gauss-Legendre is exact to rounding.
+  double dx_dh;
+  if (std::max(std::abs(V_A), std::abs(V_B)) < 0.3 * H) {
+    static constexpr std::array<double, 6> nodes = {0.1252334085114689, 0.3678314989981802,
+                                                    0.5873179542866175, 0.7699026741943047,
+                                                    0.9041172563704749, 0.9815606342467192};
+    static constexpr std::array<double, 6> weights = {0.2491470458134028, 0.2334925365383548,
+                                                      0.2031674267230659, 0.1600783285433462,
+                                                      0.1069393259953184, 0.0471753363865118};
+    dx_dh = 0.0;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      for (double sign : {-1.0, 1.0}) {
+        const double s = 0.5 * L * (1.0 + sign * nodes[i]);
+        const double V = V_A + W0 * s;
+        const double T = std::hypot(H, V);
+        dx_dh += 0.5 * L * weights[i] * V * V / (T * T * T);
+      }
+    }
+  } else {
+    const double asinh_diff = asinh_difference(H, V_A, V_B, T_A, T_B, W0 * L);
+    dx_dh = (asinh_diff - (V_B / T_B - V_A / T_A)) / W0;
+  }
+  Eigen::Matrix2d J;
+  J << dx_dh + compliance_l, cross, cross, dz_dv + compliance_l;
+  return J;
+}
+
+StaticSolution solve_vertical(const Problem& problem) {
+  const CableProperties& cable = problem.cable;
+  const double L = cable.length_m;
+  const double W0 = cable.weight_n_per_m;
+  const double dz = problem.supports.chord_m().y();
+  const double direction = dz > 0.0 ? 1.0 : -1.0;
+  const double compliance = inverse_stiffness(cable);
+  // Straight vertical cable: z(L) = direction L + (V_A L + W0 L^2/2)/EA.
+  const double mismatch = dz - direction * L;
+  if (compliance == 0.0) {
+    throw InvalidInput(fmt::format(
+        "No static equilibrium for an inextensible cable on a vertical chord: |dz| = {} m, "
+        "L = {} m (it hangs straight only when |dz| = L, and then its tension is indeterminate); "
+        "give a finite EA or a horizontal offset between the supports",
+        std::abs(dz), L));
+  }
+  const double V_A = mismatch / (L * compliance) - 0.5 * W0 * L;
+  const double V_B = V_A + W0 * L;
+  const bool taut = direction > 0.0 ? V_A > 0.0 : V_B < 0.0;
+  if (!taut) {
+    throw InvalidInput(fmt::format(
+        "No straight equilibrium for a vertical chord: |dz| = {} m with L = {} m, EA = {} N leaves "
+        "the cable slack (it would fold on itself); vertical cables must be taut along their "
+        "whole length",
+        std::abs(dz), L, cable.axial_stiffness_n));
+  }
+  StaticSolution solution(cable, problem.supports.a_m, 0.0, V_A);
+  solution.iterations = 1;
+  solution.closure_error_m = (solution.offset_m(L) - problem.supports.chord_m()).norm();
+  return solution;
+}
+
+}  // namespace
+
+void StaticsOptions::validate() const {
+  if (!(relative_tolerance > 0.0 && relative_tolerance <= 1e-3)) {
+    throw InvalidInput(fmt::format(
+        "Invalid StaticsOptions::relative_tolerance = {}: must be in (0, 1e-3]", relative_tolerance));
+  }
+  if (max_iterations < 1) {
+    throw InvalidInput(fmt::format("Invalid StaticsOptions::max_iterations = {}: must be >= 1",
+                                   max_iterations));
+  }
+}
+
+StaticSolution::StaticSolution(const CableProperties& cable, const Vec2& a_m, double H, double V_A)
+    : cable_(cable), a_m_(a_m), H_(H), V_A_(V_A) {}
+
+double StaticSolution::tension_n(double s) const { return std::hypot(H_, vertical_force_n(s)); }
+
+double StaticSolution::strain(double s) const {
+  return tension_n(s) * inverse_stiffness(cable_);
+}
+
+double StaticSolution::angle_rad(double s) const { return std::atan2(vertical_force_n(s), H_); }
+
+Vec2 StaticSolution::tangent(double s) const {
+  const double T = tension_n(s);
+  return {H_ / T, vertical_force_n(s) / T};
+}
+
+Vec2 StaticSolution::normal(double s) const {
+  const Vec2 t = tangent(s);
+  return {-t.y(), t.x()};
+}
+
+Vec2 StaticSolution::offset_m(double s) const { return offset(cable_, H_, V_A_, s); }
+
+double StaticSolution::stretched_length_m(double s) const {
+  // s + (1/EA) int T ds, with int T ds = (V T + H^2 asinh(V/H)) / (2 W0) between the ends.
+  const double compliance = inverse_stiffness(cable_);
+  if (compliance == 0.0) return s;
+  const double W0 = cable_.weight_n_per_m;
+  const double V = vertical_force_n(s);
+  const double T = tension_n(s);
+  const double T_A = tension_n(0.0);
+  double integral = 0.5 * (V * T - V_A_ * T_A) / W0;
+  if (H_ > 0.0) integral += 0.5 * H_ * H_ * asinh_difference(H_, V_A_, V, T_A, T, W0 * s) / W0;
+  return s + compliance * integral;
+}
+
+std::string StaticSolution::brief_report() const {
+  const double L = cable_.length_m;
+  return fmt::format(
+      "H = {:.10g} N, V_A = {:.10g} N, T_A = {:.10g} N, T_B = {:.10g} N, {} Newton iterations, "
+      "closure error {:.2e} m",
+      H_, V_A_, tension_n(0.0), tension_n(L), iterations, closure_error_m);
+}
+
+Vec2 catenary_end_offset(const CableProperties& cable, double H, double V_A) {
+  return offset(cable, H, V_A, cable.length_m);
+}
+
+StaticSolution solve_statics(const Problem& problem, const StaticsOptions& options) {
+  problem.validate();
+  options.validate();
+  const CableProperties& cable = problem.cable;
+  const double L = cable.length_m;
+  const double W0 = cable.weight_n_per_m;
+  const Vec2 chord = problem.supports.chord_m();
+  const double dx = chord.x();
+  const double dz = chord.y();
+  const double d = chord.norm();
+
+  if (problem.prescribed_forces) {
+    // Tension-specified: the state is given; report how well b matches it.
+    const EndForces& forces = *problem.prescribed_forces;
+    if (!std::isfinite(forces.horizontal_n) || forces.horizontal_n < 0.0 ||
+        !std::isfinite(forces.vertical_a_n)) {
+      throw InvalidInput(fmt::format(
+          "Invalid Problem::prescribed_forces = (H = {}, V_A = {}): H must be finite and >= 0, "
+          "V_A finite [N]",
+          forces.horizontal_n, forces.vertical_a_n));
+    }
+    StaticSolution solution(cable, problem.supports.a_m, forces.horizontal_n, forces.vertical_a_n);
+    solution.iterations = 0;
+    solution.closure_error_m = (solution.offset_m(L) - chord).norm();
+    if (!(solution.closure_error_m <= 1e-9 * std::max(L, d))) {
+      throw InvalidInput(fmt::format(
+          "Invalid Problem::prescribed_forces: the forces (H = {}, V_A = {}) put the end of the "
+          "cable {:.3e} m away from support b",
+          forces.horizontal_n, forces.vertical_a_n, solution.closure_error_m));
+    }
+    return solution;
+  }
+
+  if (dx <= 1e-14 * d) return solve_vertical(problem);
+
+  if (cable.is_inextensible() && L <= d * (1.0 + 1e-14)) {
+    throw InvalidInput(fmt::format(
+        "No static equilibrium: the chord |b - a| = {:.10g} m is {} the inextensible cable length "
+        "L = {:.10g} m (the ends are farther apart than the cable can reach)",
+        d, L < d ? "longer than" : "equal to", L));
+  }
+
+  // Initial guess (after Peyrot & Goulois 1979): parabolic sag for a slack cable; a straight
+  // stretched estimate when the chord exceeds L (possible only when EA is finite).
+  const double slack_ratio = (L * L - dz * dz) / (dx * dx) - 1.0;
+  const double lambda0 = slack_ratio > 0.0 ? std::sqrt(3.0 * slack_ratio) : 0.2;
+  double H = std::abs(W0 * dx / (2.0 * std::max(lambda0, 1e-6)));
+  if (!cable.is_inextensible() && d > L) {
+    const double stretched_tension = cable.axial_stiffness_n * (d / L - 1.0);
+    H = std::max(H, stretched_tension * dx / d);
+  }
+  double V_A = H * dz / dx - 0.5 * W0 * L;
+
+  const double tolerance = options.relative_tolerance * std::max(L, d);
+  auto residual = [&](double h, double v) { return (offset(cable, h, v, L) - chord).eval(); };
+  Vec2 r = residual(H, V_A);
+  int iteration = 0;
+  for (; iteration < options.max_iterations && r.norm() > tolerance; ++iteration) {
+    const Eigen::Matrix2d J = offset_jacobian(cable, H, V_A);
+    const Vec2 step = J.fullPivLu().solve(-r);
+    if (!step.allFinite()) break;
+    // Backtracking: keep H > 0 (the catenary is undefined otherwise) and decrease |r|.
+    double alpha = 1.0;
+    bool accepted = false;
+    for (int halving = 0; halving < 60; ++halving, alpha *= 0.5) {
+      const double H_trial = H + alpha * step.x();
+      if (!(H_trial > 0.0)) continue;
+      const double V_trial = V_A + alpha * step.y();
+      const Vec2 r_trial = residual(H_trial, V_trial);
+      if (r_trial.allFinite() && r_trial.norm() < (1.0 - 1e-4 * alpha) * r.norm()) {
+        H = H_trial;
+        V_A = V_trial;
+        r = r_trial;
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;
+  }
+  // Newton can stall a few ulps above a very tight tolerance: the closure is then at the rounding
+  // floor of evaluating r(L), which is accepted (and reported as the closure error).
+  const double rounding_floor = 1e-11 * std::max(L, d);
+  if (!(r.norm() <= std::max(tolerance, rounding_floor)) || !std::isfinite(H) ||
+      !std::isfinite(V_A)) {
+    throw InvalidInput(fmt::format(
+        "Statics did not converge: closure error {:.3e} m > {:.3e} m after {} Newton iterations "
+        "(H = {:.6g} N, V_A = {:.6g} N); check that the supports are reachable by the cable",
+        r.norm(), tolerance, iteration, H, V_A));
+  }
+  StaticSolution solution(cable, problem.supports.a_m, H, V_A);
+  solution.iterations = iteration;
+  solution.closure_error_m = r.norm();
+  return solution;
+}
+
+}  // namespace catena
