@@ -1,0 +1,97 @@
+#include "catena/io/csv_table.hpp"
+
+#include <charconv>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+
+#include "catena/core/error.hpp"
+
+namespace catena {
+namespace {
+
+std::vector<std::string> split_cells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  std::istringstream stream(line);
+  while (std::getline(stream, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+std::string trim(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  const auto last = text.find_last_not_of(" \t\r");
+  return text.substr(first, last - first + 1);
+}
+
+}  // namespace
+
+std::size_t CsvTable::column_index(const std::string& column) const {
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (columns[i] == column) return i;
+  }
+  throw ParseError(fmt::format("CSV table has no column '{}'", column));
+}
+
+std::optional<double> CsvTable::number(std::size_t row, const std::string& column) const {
+  const std::string& cell = text(row, column);
+  if (cell.empty()) return std::nullopt;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
+  if (error != std::errc() || end != cell.data() + cell.size()) {
+    throw ParseError(fmt::format("CSV cell '{}' in column '{}', row {} is not a number", cell,
+                                 column, row + 1));
+  }
+  return value;
+}
+
+const std::string& CsvTable::text(std::size_t row, const std::string& column) const {
+  return rows.at(row).at(column_index(column));
+}
+
+CsvTable read_csv_table(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw ParseError(fmt::format("{}: cannot open CSV file", path.string()));
+  CsvTable table;
+  std::string line;
+  int line_number = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (trim(line).empty()) continue;
+    if (line[0] == '#') {
+      table.comments.push_back(trim(line.substr(1)));
+      continue;
+    }
+    std::vector<std::string> cells = split_cells(line);
+    for (auto& cell : cells) cell = trim(cell);
+    if (table.columns.empty()) {
+      table.columns = cells;
+      continue;
+    }
+    if (cells.size() != table.columns.size()) {
+      throw ParseError(fmt::format("{}:{}: {} cells, header has {}", path.string(), line_number,
+                                   cells.size(), table.columns.size()));
+    }
+    table.rows.push_back(std::move(cells));
+  }
+  if (table.columns.empty()) throw ParseError(fmt::format("{}: no header line", path.string()));
+  return table;
+}
+
+void write_csv_table(const std::filesystem::path& path, const CsvTable& table) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  std::ofstream out(path);
+  if (!out) throw Error(fmt::format("{}: cannot write CSV file", path.string()));
+  for (const auto& comment : table.comments) out << "# " << comment << '\n';
+  auto write_row = [&](const std::vector<std::string>& cells) {
+    for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << cells[i];
+    out << '\n';
+  };
+  write_row(table.columns);
+  for (const auto& row : table.rows) write_row(row);
+}
+
+}  // namespace catena

@@ -1,0 +1,27 @@
+#pragma once
+// Shared test helpers: relative errors measured the same way everywhere (STYLE.md §7) and the
+// location of the reference tables.
+
+#include <algorithm>
+#include <boost/math/special_functions/relative_difference.hpp>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace catena::testing {
+
+/// Symmetric relative difference (Boost.Math); infinite when one value is non-finite.
+inline double relative_error(double a, double b) { return boost::math::relative_difference(a, b); }
+
+/// -log10(relative error), capped at 16.
+inline double digits_of_agreement(double a, double b) {
+  const double error = relative_error(a, b);
+  return error == 0.0 ? 16.0 : std::min(16.0, -std::log10(error));
+}
+
+/// verification/reference/published/<name>
+inline std::string published_table(const std::string& name) {
+  return std::string(CATENA_REFERENCE_DIR) + "/published/" + name;
+}
+
+}  // namespace catena::testing
