@@ -1,1 +1,41 @@
-int main() { return 0; }
+// The `catena` command-line tool: solve a scene, run the verification suite, list solvers.
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <fmt/format.h>
+#include <functional>
+
+#include "catena/core/error.hpp"
+#include "catena/core/version.hpp"
+#include "cli/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "catena: linear dynamics of cables (natural frequencies, mode shapes, dynamic tension,\n"
+      "forced response) by independent methods, cross-checked against each other and against\n"
+      "published tables.\n\n"
+      "Exit codes: 0 ok, 1 a verification check failed, 2 bad input or usage, 3 internal error.",
+      "catena"};
+  app.set_version_flag("--version", fmt::format("catena {} (git {}, {}, {})", catena::version(),
+                                                catena::git_hash(), catena::compiler(),
+                                                catena::build_type()));
+  app.require_subcommand(1);
+  std::function<int()> run;
+  catena::cli::add_solve_command(app, run);
+  catena::cli::add_verify_command(app, run);
+  catena::cli::add_solvers_command(app, run);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int code = app.exit(error);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    return run ? run() : 2;
+  } catch (const catena::Error& error) {
+    fmt::print(stderr, "error: {}\n", error.what());
+    return 2;
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "internal error: {}\n", error.what());
+    return 3;
+  }
+}

@@ -1,0 +1,29 @@
+#pragma once
+/// \file
+/// The JSON documents of `catena solve --json` and `catena verify` (report.json): a public,
+/// scriptable interface documented in verification/README.md. Layout:
+///
+///     { "catena": {version, git, compiler, build_type, generated_utc},
+///       "scenes": [ { name, file, description, tags, sweep, problem, request, statics, groups,
+///                     solvers: { <name>: {summary, inplane, outofplane, forced} },
+///                     checks: [...], error, wall_time_s } ] }
+///
+/// Units are SI and carried in key names (`_m`, `_n`, `_rad_s`, `_hz`, `_kg`); dimensionless
+/// frequencies are `k_l_over_pi` and `gale_ratio`. Non-finite values (e.g. lambda2 of an
+/// inextensible cable) are written as null, never as NaN.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "catena/verification/scene_runner.hpp"
+
+namespace catena {
+
+/// The whole document for `results`, pretty-printed with `indent` spaces (-1: compact).
+std::string results_to_json(const std::vector<SceneResult>& results, int indent = 2);
+
+/// Writes results_to_json to `path` (parent directories created). Throws Error on I/O failure.
+void write_results_json(const std::filesystem::path& path, const std::vector<SceneResult>& results);
+
+}  // namespace catena

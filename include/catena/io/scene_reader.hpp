@@ -1,0 +1,42 @@
+#pragma once
+/// \file
+/// Strict reading of scene files (TOML). Every key is checked: an unknown key, a wrong type, a
+/// missing table or an invalid value is a ParseError/InvalidInput whose message names the file,
+/// the table and the key, e.g.
+///     "scenes/x.toml: [cable].mass = -1: must be > 0 [kg/m]"
+///
+/// Format (DESIGN.md §3; documented with examples in verification/README.md):
+///
+///     name = "mooring-line"            # optional (default: file stem)
+///     description = "..."              # optional
+///     tags = ["mooring"]               # optional
+///     [cable]  length, weight, EA (number or "inf"), mass, added_mass = 0, a = [x, z], b = [x, z]
+///     [taut_inclined]  eps, phi_deg, lambda2, mass_ratio = 1
+///     [gale]   xi1, xi2   |   h_over_b, sag_param            (exactly one of the three forms)
+///     [request]  inplane_modes = 6, outofplane_modes = 0, shapes = false, points = 101,
+///                tension = false
+///     [request.forced]  end = "b", direction = "tangential" | "normal" | "out_of_plane" | [x, z],
+///                amplitude, amplitude_unit = "m" | "a", frequencies = [...],
+///                frequency_unit = "rad/s" | "Hz" | "kL/pi" | "gale"
+///     [solvers]  fe = { elements = 400 }, shooting = {}   (only these run; default: all)
+///     [checks]   frequency_rel, mac_min, shape_max_diff, tension_rel, orthogonality
+///     [[published]]  source, quantity, unit, modes, values, decimals
+///     [sweep]    parameter = "taut_inclined.lambda2", values = [...]
+
+#include <filesystem>
+#include <vector>
+
+#include "catena/verification/scene.hpp"
+
+namespace catena {
+
+/// Reads one scene file. Returns one Scene, or one per value for a sweep.
+std::vector<Scene> read_scene_file(const std::filesystem::path& path);
+
+/// Parses scene text (for tests); `origin` names it in messages.
+std::vector<Scene> parse_scene_text(const std::string& text, const std::string& origin);
+
+/// All *.toml files under `directory` (recursively), sorted by path.
+std::vector<std::filesystem::path> list_scene_files(const std::filesystem::path& directory);
+
+}  // namespace catena

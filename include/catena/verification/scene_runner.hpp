@@ -1,0 +1,49 @@
+#pragma once
+/// \file
+/// Runs one scene: statics once (shared by every solver), then each applicable solver on the
+/// resolved request, then the checks. Data flows one way: scene -> problem -> statics -> solvers
+/// -> checks.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "catena/solvers/modal_result.hpp"
+#include "catena/statics/dimensionless_groups.hpp"
+#include "catena/statics/elastic_catenary.hpp"
+#include "catena/verification/check_result.hpp"
+#include "catena/verification/scene.hpp"
+
+namespace catena {
+
+struct SceneResult {
+  Scene scene;
+  /// Present when the statics solved.
+  std::optional<StaticSolution> statics;
+  std::optional<DimensionlessGroups> groups;
+  /// The request in SI units.
+  SolveRequest request;
+  std::vector<SolverOutput> outputs;
+  std::vector<CheckResult> checks;
+  /// Non-empty when the scene could not be solved at all (bad input found at run time, e.g. an
+  /// unreachable chord); such a scene counts as bad input.
+  std::string error;
+  double wall_time_s = 0.0;
+
+  /// Number of checks with verdict Fail.
+  int failed_checks() const;
+};
+
+/// Options of a run.
+struct SceneRunOptions {
+  /// Run only these solvers (empty: the scene's choice).
+  std::vector<std::string> only_solvers;
+  /// Compute the checks (otherwise statics and solvers only).
+  bool checks = true;
+};
+
+/// Runs the scene. Never throws for numerical trouble (it is in the outputs and checks); bad input
+/// discovered at run time is recorded in SceneResult::error.
+SceneResult run_scene(const Scene& scene, const SceneRunOptions& options = {});
+
+}  // namespace catena

@@ -1,0 +1,152 @@
+// `catena verify`: every scene under a directory, on all cores, with a summary and report.json.
+#include <atomic>
+#include <chrono>
+#include <fmt/format.h>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+#include "catena/core/error.hpp"
+#include "catena/io/json_writer.hpp"
+#include "catena/io/scene_reader.hpp"
+#include "catena/verification/scene_runner.hpp"
+#include "cli/commands.hpp"
+
+namespace catena::cli {
+namespace {
+
+struct VerifyArguments {
+  std::string scenes = "verification/scenes";
+  std::string out = "build/report";
+  std::string filter;
+  int jobs = 0;
+  bool quiet = false;
+};
+
+// Reads every scene file; collects every parse error before giving up, so one run shows them all.
+std::vector<Scene> read_all(const std::vector<std::filesystem::path>& files, const std::string& filter) {
+  std::vector<Scene> scenes;
+  std::vector<std::string> errors;
+  for (const auto& file : files) {
+    try {
+      for (auto& scene : read_scene_file(file)) {
+        if (filter.empty() || scene.name.find(filter) != std::string::npos ||
+            file.string().find(filter) != std::string::npos) {
+          scenes.push_back(std::move(scene));
+        }
+      }
+    } catch (const Error& error) {
+      errors.push_back(error.what());
+    }
+  }
+  if (!errors.empty()) {
+    std::string message = fmt::format("{} scene file(s) could not be read:", errors.size());
+    for (const auto& e : errors) message += "\n  " + e;
+    throw InvalidInput(message);
+  }
+  return scenes;
+}
+
+std::string solver_column(const SceneResult& result) {
+  std::string text;
+  for (const auto& output : result.outputs) {
+    const char* mark = "?";
+    switch (output.summary.termination) {
+      case Termination::Converged: mark = "ok"; break;
+      case Termination::NoConvergence: mark = "partial"; break;
+      case Termination::NumericalFailure: mark = "FAILED"; break;
+      case Termination::NotApplicable: mark = "n/a"; break;
+    }
+    if (output.summary.termination == Termination::NotApplicable) continue;
+    text += fmt::format("{}{}:{}", text.empty() ? "" : " ", output.solver, mark);
+  }
+  return text.empty() ? "statics only" : text;
+}
+
+int run_verify(const VerifyArguments& arguments) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Scene> scenes = read_all(list_scene_files(arguments.scenes), arguments.filter);
+  if (scenes.empty()) throw InvalidInput(fmt::format("no scenes under {} match '{}'", arguments.scenes, arguments.filter));
+
+  const int jobs = arguments.jobs > 0 ? arguments.jobs
+                                      : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const bool progress = !arguments.quiet && isatty(STDERR_FILENO);
+  std::vector<SceneResult> results(scenes.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> done{0};
+  std::mutex print_mutex;
+  auto worker = [&] {
+    for (std::size_t i = next++; i < scenes.size(); i = next++) {
+      results[i] = run_scene(scenes[i]);
+      const std::size_t finished = ++done;
+      if (progress) {
+        std::lock_guard<std::mutex> lock(print_mutex);
+        fmt::print(stderr, "\r\033[K[{}/{}] {}", finished, scenes.size(), scenes[i].name);
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);
+  for (auto& thread : threads) thread.join();
+  if (progress) fmt::print(stderr, "\r\033[K");
+
+  int failed_checks = 0, total_checks = 0, errors = 0, discrepancies = 0;
+  for (const auto& result : results) {
+    failed_checks += result.failed_checks();
+    total_checks += static_cast<int>(result.checks.size());
+    errors += !result.error.empty();
+    for (const auto& check : result.checks) discrepancies += check.verdict == Verdict::SourceDiscrepancy;
+  }
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  if (!arguments.quiet) {
+    fmt::print("{:<48} {:>8} {:>7} {:>9}  {}\n", "scene", "checks", "failed", "time [ms]", "solvers");
+    for (const auto& result : results) {
+      fmt::print("{:<48} {:>8} {:>7} {:>9.1f}  {}\n", result.scene.name, result.checks.size(),
+                 result.failed_checks(), result.wall_time_s * 1e3,
+                 result.error.empty() ? solver_column(result) : "ERROR: " + result.error);
+    }
+  }
+  for (const auto& result : results) {
+    for (const auto& check : result.checks) {
+      if (check.verdict != Verdict::Fail) continue;
+      fmt::print("FAIL {} / {} / {}{}: measured {:.3e} > tolerance {:.3e}: {}\n", result.scene.name,
+                 check.check, check.compare, check.mode ? fmt::format(" mode {}", check.mode) : "",
+                 check.measured, check.tolerance, check.detail);
+    }
+  }
+  const auto report = std::filesystem::path(arguments.out) / "report.json";
+  write_results_json(report, results);
+  fmt::print("{} scenes, {} checks, {} failed, {} source discrepancies, {} scene errors; {:.1f} s on {} "
+             "threads; wrote {}\n",
+             results.size(), total_checks, failed_checks, discrepancies, errors, elapsed, jobs,
+             report.string());
+  if (errors > 0) {
+    for (const auto& result : results) {
+      if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
+    }
+    return 2;
+  }
+  return failed_checks > 0 ? 1 : 0;
+}
+
+}  // namespace
+
+void add_verify_command(CLI::App& app, std::function<int()>& run) {
+  auto arguments = std::make_shared<VerifyArguments>();
+  CLI::App* command = app.add_subcommand(
+      "verify",
+      "Run the verification suite: every scene under --scenes, every applicable solver,\n"
+      "cross-checked; prints a summary and writes <out>/report.json. Exit 1 if a check fails.");
+  command->add_option("--scenes", arguments->scenes, "Directory of scene files (searched recursively)")
+      ->capture_default_str();
+  command->add_option("--out", arguments->out, "Directory for report.json")->capture_default_str();
+  command->add_option("--filter", arguments->filter, "Only scenes whose name or file contains this text");
+  command->add_option("--jobs,-j", arguments->jobs, "Worker threads (default: all cores)");
+  command->add_flag("--quiet,-q", arguments->quiet, "Print only failures and the closing line");
+  command->callback([arguments, &run] { run = [arguments] { return run_verify(*arguments); }; });
+}
+
+}  // namespace catena::cli

@@ -1,0 +1,515 @@
+#include "catena/io/scene_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <toml.hpp>
+
+#include "catena/core/error.hpp"
+#include "catena/models/problem_builders.hpp"
+
+namespace catena {
+namespace {
+
+// Reads one TOML table strictly: every access records the key, and finish() rejects the rest.
+// Messages name "<file>: [<table>].<key>".
+class TableReader {
+ public:
+  TableReader(const toml::value& table, std::string origin, std::string path)
+      : table_(table), origin_(std::move(origin)), path_(std::move(path)) {}
+
+  std::string where(const std::string& key) const {
+    return path_.empty() ? fmt::format("{}: {}", origin_, key)
+                         : fmt::format("{}: [{}].{}", origin_, path_, key);
+  }
+
+  bool has(const std::string& key) const { return table_.as_table().count(key) > 0; }
+
+  const toml::value* find(const std::string& key) {
+    used_.insert(key);
+    const auto& map = table_.as_table();
+    const auto it = map.find(key);
+    return it == map.end() ? nullptr : &it->second;
+  }
+
+  const toml::value& require(const std::string& key) {
+    const toml::value* value = find(key);
+    if (!value) throw ParseError(fmt::format("{}: missing required key", where(key)));
+    return *value;
+  }
+
+  double to_number(const toml::value& value, const std::string& key) const {
+    if (value.is_floating()) return value.as_floating();
+    if (value.is_integer()) return static_cast<double>(value.as_integer());
+    throw ParseError(fmt::format("{}: expected a number, got {}", where(key), type_name(value)));
+  }
+
+  double number(const std::string& key) { return to_number(require(key), key); }
+  double number(const std::string& key, double fallback) {
+    const toml::value* value = find(key);
+    return value ? to_number(*value, key) : fallback;
+  }
+
+  // A finite number that must satisfy `ok`; `rule` and `unit` go into the message.
+  double checked(const std::string& key, bool (*ok)(double), const char* rule, const char* unit,
+                 std::optional<double> fallback = std::nullopt) {
+    const double value = fallback && !has(key) ? number(key, *fallback) : number(key);
+    if (!std::isfinite(value) || !ok(value)) {
+      throw InvalidInput(fmt::format("{} = {}: must be {} [{}]", where(key), value, rule, unit));
+    }
+    return value;
+  }
+
+  long integer(const std::string& key, long fallback) {
+    const toml::value* value = find(key);
+    if (!value) return fallback;
+    if (!value->is_integer()) {
+      throw ParseError(fmt::format("{}: expected an integer, got {}", where(key), type_name(*value)));
+    }
+    return static_cast<long>(value->as_integer());
+  }
+
+  bool boolean(const std::string& key, bool fallback) {
+    const toml::value* value = find(key);
+    if (!value) return fallback;
+    if (!value->is_boolean()) {
+      throw ParseError(fmt::format("{}: expected true or false, got {}", where(key), type_name(*value)));
+    }
+    return value->as_boolean();
+  }
+
+  std::string string(const std::string& key, const std::string& fallback) {
+    const toml::value* value = find(key);
+    if (!value) return fallback;
+    if (!value->is_string()) {
+      throw ParseError(fmt::format("{}: expected a string, got {}", where(key), type_name(*value)));
+    }
+    return value->as_string().str;
+  }
+
+  std::vector<double> numbers(const std::string& key) {
+    const toml::value& value = require(key);
+    if (!value.is_array()) {
+      throw ParseError(fmt::format("{}: expected an array of numbers, got {}", where(key), type_name(value)));
+    }
+    std::vector<double> out;
+    for (const auto& item : value.as_array()) {
+      const double x = to_number(item, key);
+      if (!std::isfinite(x)) {
+        throw InvalidInput(fmt::format("{}: entry {} is not finite", where(key), x));
+      }
+      out.push_back(x);
+    }
+    return out;
+  }
+
+  Vec2 point(const std::string& key) {
+    const std::vector<double> xs = numbers(key);
+    if (xs.size() != 2) {
+      throw InvalidInput(fmt::format("{}: expected [x, z] (2 numbers) [m], got {} numbers", where(key), xs.size()));
+    }
+    return {xs[0], xs[1]};
+  }
+
+  TableReader subtable(const std::string& key) {
+    const toml::value& value = require(key);
+    if (!value.is_table()) {
+      throw ParseError(fmt::format("{}: expected a table, got {}", where(key), type_name(value)));
+    }
+    return TableReader(value, origin_, path_.empty() ? key : path_ + "." + key);
+  }
+
+  // Throws for keys never asked for.
+  void finish() const {
+    for (const auto& [key, value] : table_.as_table()) {
+      if (!used_.count(key)) {
+        std::string known;
+        for (const auto& k : used_) {
+          if (!known.empty()) known.append(", ");
+          known.append(k);
+        }
+        throw ParseError(fmt::format("{}: unknown key (known here: {})", where(key), known));
+      }
+    }
+  }
+
+  const toml::value& value() const { return table_; }
+
+  static std::string type_name(const toml::value& value) {
+    std::ostringstream out;
+    out << value.type();
+    return out.str();
+  }
+
+ private:
+  const toml::value& table_;
+  std::string origin_;
+  std::string path_;
+  std::set<std::string> used_;
+};
+
+bool positive(double x) { return x > 0.0; }
+bool non_negative(double x) { return x >= 0.0; }
+bool any_value(double) { return true; }
+
+double read_axial_stiffness(TableReader& cable) {
+  const toml::value& value = cable.require("EA");
+  double ea;
+  if (value.is_string()) {
+    if (value.as_string().str != "inf") {
+      throw InvalidInput(fmt::format("{} = \"{}\": must be a number > 0 or \"inf\" [N]",
+                                     cable.where("EA"), value.as_string().str));
+    }
+    ea = kInfinity;
+  } else {
+    ea = cable.to_number(value, "EA");
+  }
+  if (std::isnan(ea) || ea <= 0.0) {
+    throw InvalidInput(fmt::format("{} = {}: must be > 0 or inf (inextensible) [N]", cable.where("EA"), ea));
+  }
+  return ea;
+}
+
+// Reads the one cable form of the scene into a Problem.
+Problem read_problem(TableReader& root, const std::string& origin) {
+  const bool physical = root.has("cable");
+  const bool taut = root.has("taut_inclined");
+  const bool gale = root.has("gale");
+  const int forms = int(physical) + int(taut) + int(gale);
+  if (forms != 1) {
+    throw ParseError(fmt::format(
+        "{}: a scene needs exactly one of the tables [cable], [taut_inclined], [gale]; found {}",
+        origin, forms));
+  }
+  Problem problem;
+  if (physical) {
+    TableReader cable = root.subtable("cable");
+    problem.cable.length_m = cable.checked("length", positive, "finite and > 0", "m");
+    problem.cable.weight_n_per_m = cable.checked("weight", positive, "finite and > 0", "N/m");
+    problem.cable.axial_stiffness_n = read_axial_stiffness(cable);
+    problem.cable.mass_kg_per_m = cable.checked("mass", positive, "finite and > 0", "kg/m");
+    problem.cable.added_mass_kg_per_m =
+        cable.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
+    problem.supports.a_m = cable.point("a");
+    problem.supports.b_m = cable.point("b");
+    cable.finish();
+    try {
+      problem.validate();
+    } catch (const InvalidInput& error) {
+      throw InvalidInput(fmt::format("{}: [cable]: {}", origin, error.what()));
+    }
+  } else if (taut) {
+    TableReader form = root.subtable("taut_inclined");
+    const double eps = form.checked("eps", positive, "finite and > 0", "-");
+    const double phi = form.checked("phi_deg", any_value, "finite", "deg");
+    const double lambda2 = form.checked("lambda2", positive, "finite and > 0", "-");
+    const double h = form.checked("mass_ratio", positive, "finite and > 0", "-", 1.0);
+    form.finish();
+    try {
+      problem = make_taut_inclined_problem(eps, phi, lambda2, h);
+    } catch (const InvalidInput& error) {
+      throw InvalidInput(fmt::format("{}: [taut_inclined]: {}", origin, error.what()));
+    }
+  } else {
+    TableReader form = root.subtable("gale");
+    const bool by_xi = form.has("xi1") || form.has("xi2");
+    const bool by_sag = form.has("h_over_b") || form.has("sag_param");
+    if (by_xi == by_sag) {
+      throw ParseError(fmt::format(
+          "{}: [gale] needs either (xi1, xi2) or (h_over_b, sag_param), not {}", origin,
+          by_xi ? "both" : "neither"));
+    }
+    try {
+      if (by_xi) {
+        const double xi1 = form.number("xi1");
+        const double xi2 = form.number("xi2");
+        form.finish();
+        problem = make_gale_xi_problem(xi1, xi2);
+      } else {
+        const double h_over_b = form.number("h_over_b");
+        const double sag = form.number("sag_param");
+        form.finish();
+        problem = make_gale_sag_problem(h_over_b, sag);
+      }
+    } catch (const InvalidInput& error) {
+      throw InvalidInput(fmt::format("{}: [gale]: {}", origin, error.what()));
+    }
+  }
+  return problem;
+}
+
+FrequencyUnit read_frequency_unit(TableReader& table, const std::string& key, const std::string& fallback) {
+  const std::string text = table.string(key, fallback);
+  const auto unit = parse_frequency_unit(text);
+  if (!unit) {
+    throw InvalidInput(fmt::format("{} = \"{}\": must be one of \"rad/s\", \"Hz\", \"kL/pi\", \"gale\"",
+                                   table.where(key), text));
+  }
+  return *unit;
+}
+
+void read_request(TableReader& root, Scene& scene) {
+  if (!root.has("request")) return;
+  TableReader request = root.subtable("request");
+  auto count = [&](const std::string& key, long fallback, long low, long high) {
+    const long value = request.integer(key, fallback);
+    if (value < low || value > high) {
+      throw InvalidInput(fmt::format("{} = {}: must be in [{}, {}]", request.where(key), value, low, high));
+    }
+    return static_cast<int>(value);
+  };
+  scene.request.inplane_modes = count("inplane_modes", scene.request.inplane_modes, 0, 100000);
+  scene.request.outofplane_modes = count("outofplane_modes", scene.request.outofplane_modes, 0, 100000);
+  scene.request.shapes = request.boolean("shapes", scene.request.shapes);
+  scene.request.points = count("points", scene.request.points, 2, 1000000);
+  scene.request.tension = request.boolean("tension", scene.request.tension);
+  if (request.has("forced")) {
+    TableReader forced = request.subtable("forced");
+    ForcedRequest f;
+    const std::string end = forced.string("end", "b");
+    if (end != "a" && end != "b") {
+      throw InvalidInput(fmt::format("{} = \"{}\": must be \"a\" or \"b\"", forced.where("end"), end));
+    }
+    f.end = end == "a" ? CableEnd::A : CableEnd::B;
+    if (const toml::value* direction = forced.find("direction")) {
+      if (direction->is_array()) {
+        f.direction = ForcingDirection::GivenVector;
+        f.vector = forced.point("direction");
+        if (f.vector.norm() == 0.0) {
+          throw InvalidInput(fmt::format("{}: the direction vector must be non-zero", forced.where("direction")));
+        }
+      } else {
+        const std::string text = forced.string("direction", "tangential");
+        if (text == "tangential") f.direction = ForcingDirection::Tangential;
+        else if (text == "normal") f.direction = ForcingDirection::Normal;
+        else if (text == "out_of_plane") f.direction = ForcingDirection::OutOfPlane;
+        else {
+          throw InvalidInput(fmt::format(
+              "{} = \"{}\": must be \"tangential\", \"normal\", \"out_of_plane\" or [x, z]",
+              forced.where("direction"), text));
+        }
+      }
+    }
+    f.amplitude_m = forced.checked("amplitude", positive, "finite and > 0", "m or a", 0.01);
+    const std::string amplitude_unit = forced.string("amplitude_unit", "m");
+    if (amplitude_unit != "m" && amplitude_unit != "a") {
+      throw InvalidInput(fmt::format("{} = \"{}\": must be \"m\" or \"a\" (Gale's a = H/W0)",
+                                     forced.where("amplitude_unit"), amplitude_unit));
+    }
+    scene.forcing_amplitude_in_a = amplitude_unit == "a";
+    f.omegas_rad_s = forced.numbers("frequencies");
+    if (f.omegas_rad_s.empty()) {
+      throw InvalidInput(fmt::format("{}: at least one forcing frequency needed", forced.where("frequencies")));
+    }
+    for (double omega : f.omegas_rad_s) {
+      if (omega < 0.0) {
+        throw InvalidInput(fmt::format("{}: forcing frequency {} must be >= 0", forced.where("frequencies"), omega));
+      }
+    }
+    scene.forcing_frequency_unit = read_frequency_unit(forced, "frequency_unit", "rad/s");
+    forced.finish();
+    scene.request.forced = f;
+  }
+  request.finish();
+  if (scene.request.inplane_modes == 0 && scene.request.outofplane_modes == 0 && !scene.request.forced) {
+    throw InvalidInput(fmt::format("{}: [request] asks for nothing (no modes and no forcing)",
+                                   scene.file.string()));
+  }
+}
+
+KnobValue to_knob(const toml::value& value, const std::string& where) {
+  if (value.is_boolean()) return value.as_boolean();
+  if (value.is_integer()) return static_cast<long>(value.as_integer());
+  if (value.is_floating()) return value.as_floating();
+  if (value.is_string()) return value.as_string().str;
+  throw ParseError(fmt::format("{}: a knob must be a number, a boolean or a string, got {}", where,
+                               TableReader::type_name(value)));
+}
+
+void read_solvers(TableReader& root, Scene& scene) {
+  if (!root.has("solvers")) return;
+  TableReader solvers = root.subtable("solvers");
+  for (const auto& [name, knobs_value] : solvers.value().as_table()) {
+    const SolverEntry* entry = find_solver(name);
+    if (!entry) {
+      std::string known;
+      for (const auto& e : solver_registry()) known += (known.empty() ? "" : ", ") + e.name;
+      throw ParseError(fmt::format("{}: unknown solver (known: {})", solvers.where(name), known));
+    }
+    TableReader knob_table = solvers.subtable(name);
+    SolverKnobs knobs;
+    for (const auto& [knob, value] : knob_table.value().as_table()) {
+      knobs[knob] = to_knob(value, knob_table.where(knob));
+    }
+    try {
+      if (entry->validate_knobs) entry->validate_knobs(knobs);
+    } catch (const InvalidInput& error) {
+      throw InvalidInput(fmt::format("{}: {}", scene.file.string(), error.what()));
+    }
+    scene.solvers[name] = knobs;
+  }
+}
+
+void read_checks(TableReader& root, Scene& scene) {
+  if (!root.has("checks")) return;
+  TableReader checks = root.subtable("checks");
+  auto optional_positive = [&](const std::string& key, std::optional<double>& out) {
+    if (checks.has(key)) out = checks.checked(key, positive, "finite and > 0", "-");
+  };
+  optional_positive("frequency_rel", scene.checks.frequency_rel);
+  optional_positive("shape_max_diff", scene.checks.shape_max_diff);
+  optional_positive("tension_rel", scene.checks.tension_rel);
+  optional_positive("orthogonality", scene.checks.orthogonality);
+  if (checks.has("mac_min")) {
+    scene.checks.mac_min = checks.checked(
+        "mac_min", [](double x) { return x > 0.0 && x <= 1.0; }, "in (0, 1]", "-");
+  }
+  checks.finish();
+}
+
+void read_published(TableReader& root, Scene& scene, const std::string& origin) {
+  const toml::value* list = root.find("published");
+  if (!list) return;
+  if (!list->is_array()) {
+    throw ParseError(fmt::format("{}: published: expected an array of tables [[published]]", origin));
+  }
+  int index = 0;
+  for (const auto& item : list->as_array()) {
+    ++index;
+    if (!item.is_table()) {
+      throw ParseError(fmt::format("{}: [[published]] entry {}: expected a table", origin, index));
+    }
+    TableReader table(item, origin, fmt::format("published#{}", index));
+    PublishedValues published;
+    published.source = table.string("source", "");
+    if (published.source.empty()) {
+      throw ParseError(fmt::format("{}: missing required key (say where the values come from)", table.where("source")));
+    }
+    const std::string quantity = table.string("quantity", "");
+    const auto parsed = parse_published_quantity(quantity);
+    if (!parsed) {
+      throw InvalidInput(fmt::format("{} = \"{}\": must be \"inplane_frequency\", "
+                                     "\"outofplane_frequency\" or \"forced_max_tension\"",
+                                     table.where("quantity"), quantity));
+    }
+    published.quantity = *parsed;
+    published.unit = read_frequency_unit(table, "unit", "rad/s");
+    for (double mode : table.numbers("modes")) {
+      if (mode != std::floor(mode) || mode < 0) {
+        throw InvalidInput(fmt::format("{}: {} is not a non-negative integer", table.where("modes"), mode));
+      }
+      published.modes.push_back(static_cast<int>(mode));
+    }
+    published.values = table.numbers("values");
+    if (published.values.size() != published.modes.size()) {
+      throw InvalidInput(fmt::format("{}: {} values for {} modes", table.where("values"),
+                                     published.values.size(), published.modes.size()));
+    }
+    published.decimals = static_cast<int>(table.integer("decimals", -1));
+    table.finish();
+    scene.published.push_back(std::move(published));
+  }
+}
+
+// Applies one sweep value to the parsed TOML document (so the value is validated exactly like a
+// value written in the file).
+toml::value with_sweep_value(const toml::value& document, const std::string& parameter, double value,
+                             const std::string& origin) {
+  const auto dot = parameter.find('.');
+  if (dot == std::string::npos) {
+    throw InvalidInput(fmt::format("{}: [sweep].parameter = \"{}\": expected \"table.key\"", origin, parameter));
+  }
+  const std::string table = parameter.substr(0, dot);
+  const std::string key = parameter.substr(dot + 1);
+  toml::value copy = document;
+  if (!copy.as_table().count(table) || !copy.as_table().at(table).is_table()) {
+    throw InvalidInput(fmt::format("{}: [sweep].parameter = \"{}\": the scene has no table [{}]", origin, parameter, table));
+  }
+  copy.as_table().at(table).as_table()[key] = value;
+  return copy;
+}
+
+std::vector<Scene> read_document(const toml::value& document, const std::string& origin,
+                                 const std::filesystem::path& file) {
+  if (!document.is_table()) throw ParseError(fmt::format("{}: not a TOML table", origin));
+  // A sweep: read the document once per value.
+  if (document.as_table().count("sweep")) {
+    TableReader root(document, origin, "");
+    TableReader sweep = root.subtable("sweep");
+    const std::string parameter = sweep.string("parameter", "");
+    if (parameter.empty()) throw ParseError(fmt::format("{}: missing required key", sweep.where("parameter")));
+    const std::vector<double> values = sweep.numbers("values");
+    sweep.finish();
+    if (values.empty()) throw InvalidInput(fmt::format("{}: no values", sweep.where("values")));
+    std::vector<Scene> scenes;
+    toml::value base = document;
+    base.as_table().erase("sweep");
+    for (double value : values) {
+      std::vector<Scene> one = read_document(with_sweep_value(base, parameter, value, origin), origin, file);
+      one.front().name += fmt::format("[{}={}]", parameter.substr(parameter.find('.') + 1), value);
+      one.front().sweep_point = std::make_pair(parameter, value);
+      scenes.push_back(std::move(one.front()));
+    }
+    return scenes;
+  }
+
+  TableReader root(document, origin, "");
+  Scene scene;
+  scene.file = file;
+  scene.name = root.string("name", file.empty() ? origin : file.stem().string());
+  scene.description = root.string("description", "");
+  if (const toml::value* tags = root.find("tags")) {
+    if (!tags->is_array()) throw ParseError(fmt::format("{}: tags: expected an array of strings", origin));
+    for (const auto& tag : tags->as_array()) {
+      if (!tag.is_string()) throw ParseError(fmt::format("{}: tags: expected strings", origin));
+      scene.tags.push_back(tag.as_string().str);
+    }
+  }
+  scene.problem = read_problem(root, origin);
+  read_request(root, scene);
+  read_solvers(root, scene);
+  read_checks(root, scene);
+  read_published(root, scene, origin);
+  root.finish();
+  return {scene};
+}
+
+}  // namespace
+
+std::vector<Scene> parse_scene_text(const std::string& text, const std::string& origin) {
+  std::istringstream stream(text);
+  toml::value document;
+  try {
+    document = toml::parse(stream, origin);
+  } catch (const std::exception& error) {
+    throw ParseError(fmt::format("{}: TOML syntax error: {}", origin, error.what()));
+  }
+  return read_document(document, origin, origin);
+}
+
+std::vector<Scene> read_scene_file(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw ParseError(fmt::format("{}: cannot open scene file", path.string()));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  std::vector<Scene> scenes = parse_scene_text(buffer.str(), path.string());
+  for (auto& scene : scenes) scene.file = path;
+  return scenes;
+}
+
+std::vector<std::filesystem::path> list_scene_files(const std::filesystem::path& directory) {
+  if (!std::filesystem::is_directory(directory)) {
+    throw InvalidInput(fmt::format("{}: not a directory of scenes", directory.string()));
+  }
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(directory)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".toml") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace catena
