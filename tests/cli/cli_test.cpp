@@ -1,0 +1,126 @@
+// The `catena` executable: exit codes (0 ok, 1 failed check, 2 bad input/usage), error messages on
+// stderr naming file/table/key, and JSON without NaN. Runs the built binary on scenes written to
+// a temporary directory.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+CliRun run_cli(const std::string& arguments) {
+  const std::string command = std::string(CATENA_CLI_PATH) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string output;
+  std::array<char, 4096> buffer{};
+  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+fs::path write_scene(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / "catena_cli_test";
+  fs::create_directories(dir);
+  const fs::path path = dir / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+const std::string kGood = R"(
+[cable]
+length = 1000.0
+weight = 1000.0
+EA = 5.0e8
+mass = 120.0
+added_mass = 80.0
+a = [0.0, 0.0]
+b = [900.0, 300.0]
+)";
+
+TEST(Cli, HelpExitsZeroOnEveryCommand) {
+  for (const char* args : {"--help", "solve --help", "verify --help", "solvers --help"}) {
+    const CliRun run = run_cli(args);
+    EXPECT_EQ(run.exit_code, 0) << args << "\n" << run.output;
+    EXPECT_NE(run.output.find("Usage"), std::string::npos) << args;
+  }
+}
+
+TEST(Cli, SolveWritesJsonWithoutNaN) {
+  const fs::path scene = write_scene("good.toml", kGood);
+  const fs::path json = scene.parent_path() / "good.json";
+  const CliRun run = run_cli("solve " + scene.string() + " --json " + json.string());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  std::stringstream text;
+  text << std::ifstream(json).rdbuf();
+  EXPECT_NE(text.str().find("\"horizontal_force_n\""), std::string::npos);
+  EXPECT_EQ(text.str().find("NaN"), std::string::npos);
+  EXPECT_EQ(text.str().find("nan"), std::string::npos);
+}
+
+TEST(Cli, BadInputExitsTwoNamingTheKey) {
+  const fs::path scene = write_scene("bad.toml", kGood + "colour = \"red\"\n");
+  const CliRun run = run_cli("solve " + scene.string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("[cable].colour"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("bad.toml"), std::string::npos) << run.output;
+}
+
+TEST(Cli, UnreachableChordExitsTwo) {
+  // An inextensible 100 m cable cannot reach supports 150 m apart.
+  const fs::path scene = write_scene("unreachable.toml", R"(
+[cable]
+length = 100.0
+weight = 10.0
+EA = "inf"
+mass = 1.0
+a = [0.0, 0.0]
+b = [150.0, 0.0]
+)");
+  const CliRun run = run_cli("solve " + scene.string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("farther apart than the cable can reach"), std::string::npos) << run.output;
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(run_cli("").exit_code, 2);
+  EXPECT_EQ(run_cli("frobnicate").exit_code, 2);
+  EXPECT_EQ(run_cli("solve").exit_code, 2);
+  EXPECT_EQ(run_cli("solve /nonexistent.toml").exit_code, 2);
+  const fs::path scene = write_scene("good2.toml", kGood);
+  EXPECT_EQ(run_cli("solve " + scene.string() + " --solver nonsense").exit_code, 2);
+  EXPECT_EQ(run_cli("verify --scenes /nonexistent-dir").exit_code, 2);
+}
+
+TEST(Cli, VerifyRunsADirectoryAndWritesReport) {
+  const fs::path dir = fs::temp_directory_path() / "catena_cli_verify";
+  fs::create_directories(dir / "scenes");
+  std::ofstream(dir / "scenes" / "one.toml") << kGood;
+  const CliRun run = run_cli("verify --scenes " + (dir / "scenes").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(fs::exists(dir / "out" / "report.json"));
+  EXPECT_NE(run.output.find("1 scenes"), std::string::npos) << run.output;
+}
+
+TEST(Cli, VerifyReportsEveryBadSceneAndExitsTwo) {
+  const fs::path dir = fs::temp_directory_path() / "catena_cli_verify_bad";
+  fs::create_directories(dir);
+  std::ofstream(dir / "a.toml") << kGood + "x = 1\n";
+  std::ofstream(dir / "b.toml") << "[cable]\nlength = -1.0\n";
+  const CliRun run = run_cli("verify --scenes " + dir.string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("2 scene file(s)"), std::string::npos) << run.output;
+}
+
+}  // namespace

@@ -1,0 +1,87 @@
+// API-level bad input (DESIGN.md §5): every validate() constraint of the cable, supports, request
+// and statics options throws InvalidInput naming the field; statics reports unreachable chords.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+
+#include "catena/core/error.hpp"
+#include "catena/models/cable.hpp"
+#include "catena/solvers/solve_request.hpp"
+#include "catena/statics/elastic_catenary.hpp"
+
+namespace catena {
+namespace {
+
+void expect_invalid(const std::function<void()>& action, const std::string& word) {
+  try {
+    action();
+    ADD_FAILURE() << "no InvalidInput; expected a message with '" << word << "'";
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find(word), std::string::npos) << error.what();
+  }
+}
+
+Problem good() {
+  Problem p;
+  p.cable = {100.0, 10.0, 1e6, 2.0, 1.0};
+  p.supports.b_m = Vec2(80.0, 20.0);
+  return p;
+}
+
+TEST(CableProperties, RejectsEachInvalidField) {
+  const double nan = std::nan("");
+  auto with = [](auto change) { Problem p = good(); change(p); return [p] { p.validate(); }; };
+  expect_invalid(with([](Problem& p) { p.cable.length_m = 0.0; }), "length_m");
+  expect_invalid(with([&](Problem& p) { p.cable.length_m = nan; }), "length_m");
+  expect_invalid(with([](Problem& p) { p.cable.weight_n_per_m = -1.0; }), "weight_n_per_m");
+  expect_invalid(with([](Problem& p) { p.cable.mass_kg_per_m = kInfinity; }), "mass_kg_per_m");
+  expect_invalid(with([](Problem& p) { p.cable.axial_stiffness_n = 0.0; }), "axial_stiffness_n");
+  expect_invalid(with([&](Problem& p) { p.cable.axial_stiffness_n = nan; }), "axial_stiffness_n");
+  expect_invalid(with([](Problem& p) { p.cable.added_mass_kg_per_m = -0.1; }), "added_mass_kg_per_m");
+  expect_invalid(with([&](Problem& p) { p.supports.b_m.x() = nan; }), "finite");
+  expect_invalid(with([](Problem& p) { p.supports.b_m = p.supports.a_m; }), "coincide");
+  expect_invalid(with([](Problem& p) { p.supports.b_m.x() = -5.0; }), "left of");
+}
+
+TEST(Statics, ReportsUnreachableAndImpossibleGeometries) {
+  Problem p = good();
+  p.cable.axial_stiffness_n = kInfinity;
+  p.supports.b_m = Vec2(120.0, 0.0);
+  expect_invalid([&] { solve_statics(p); }, "farther apart than the cable can reach");
+  p.supports.b_m = Vec2(0.0, 50.0);  // vertical, inextensible
+  expect_invalid([&] { solve_statics(p); }, "vertical chord");
+  p.cable.axial_stiffness_n = 1e6;  // vertical, slack: would fold
+  expect_invalid([&] { solve_statics(p); }, "slack");
+  p = good();
+  p.prescribed_forces = EndForces{-1.0, 0.0};
+  expect_invalid([&] { solve_statics(p); }, "prescribed_forces");
+  p.prescribed_forces = EndForces{100.0, 0.0};  // does not put the end at b
+  expect_invalid([&] { solve_statics(p); }, "away from support b");
+  StaticsOptions options;
+  options.max_iterations = 0;
+  expect_invalid([&] { solve_statics(good(), options); }, "max_iterations");
+}
+
+TEST(SolveRequest, RejectsEachInvalidField) {
+  auto with = [](auto change) { SolveRequest r; change(r); return [r] { r.validate(); }; };
+  expect_invalid(with([](SolveRequest& r) { r.inplane_modes = -1; }), "inplane_modes");
+  expect_invalid(with([](SolveRequest& r) { r.outofplane_modes = -1; }), "outofplane_modes");
+  expect_invalid(with([](SolveRequest& r) { r.points = 1; }), "points");
+  expect_invalid(with([](SolveRequest& r) { r.forced = ForcedRequest{}; }), "forcing frequency");
+  expect_invalid(with([](SolveRequest& r) {
+                   r.forced = ForcedRequest{};
+                   r.forced->omegas_rad_s = {std::nan("")};
+                 }),
+                 "forcing frequency");
+  expect_invalid(with([](SolveRequest& r) {
+                   r.forced = ForcedRequest{};
+                   r.forced->omegas_rad_s = {1.0};
+                   r.forced->amplitude_m = 0.0;
+                 }),
+                 "amplitude_m");
+}
+
+}  // namespace
+}  // namespace catena
