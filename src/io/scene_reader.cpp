@@ -409,6 +409,15 @@ void read_published(TableReader& root, Scene& scene, const std::string& origin) 
                                      published.values.size(), published.modes.size()));
     }
     published.decimals = static_cast<int>(table.integer("decimals", -1));
+    if (const toml::value* solvers = table.find("solvers")) {
+      if (!solvers->is_array()) throw ParseError(fmt::format("{}: expected an array of solver names", table.where("solvers")));
+      for (const auto& name : solvers->as_array()) {
+        if (!name.is_string() || !find_solver(name.as_string().str)) {
+          throw ParseError(fmt::format("{}: unknown solver", table.where("solvers")));
+        }
+        published.compare_with.push_back(name.as_string().str);
+      }
+    }
     table.finish();
     scene.published.push_back(std::move(published));
   }

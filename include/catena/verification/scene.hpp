@@ -34,6 +34,9 @@ struct PublishedValues {
   /// forcing frequency in the request.
   std::vector<int> modes;
   std::vector<double> values;
+  /// The solvers that compute what the column tabulates (e.g. "asymptotic" for Grinfogel's
+  /// 'approx' column); empty: every solver that runs.
+  std::vector<std::string> compare_with;
   /// Decimal places printed: the rounding half-width is 0.5 * 10^-decimals. -1: unknown.
   int decimals = -1;
 };

@@ -1,0 +1,56 @@
+#pragma once
+/// \file
+/// Expected agreement, held as reviewed data (verification/tolerances.toml, after Boost.Math's
+/// expected_results()): each rule says which check and which pair of solvers (or a solver and the
+/// published value) it governs, the tolerance, and why.
+///
+///     [[tolerance]]
+///     check = "frequency"               # frequency, published, mac, shape, tension, forced,
+///                                       # orthogonality, mode-count
+///     compare = ["fe", "shooting"]      # solver names, "*" (any solver) or "published"
+///     scene = "*"                       # optional glob on the scene name
+///     tag = "gale"                      # optional: only scenes with this tag
+///     max = 1e-8                        # the tolerance (a floor when estimate_factor is set)
+///     estimate_factor = 3.0             # optional: tolerance = max(max, factor * (est_a + est_b))
+///     reason = "..."                    # required
+///
+/// The first rule that matches wins: put specific rules before general ones.
+
+#include <string>
+#include <vector>
+
+namespace catena {
+
+struct ToleranceRule {
+  std::string check;
+  /// Two entries: solver names, "*" or "published". Order does not matter.
+  std::vector<std::string> compare;
+  std::string scene_pattern = "*";
+  std::string tag;
+  double max = 0.0;
+  double estimate_factor = 0.0;
+  std::string reason;
+};
+
+class ToleranceTable {
+ public:
+  /// Parses the TOML text; `origin` names it in errors (ParseError/InvalidInput).
+  static ToleranceTable parse(const std::string& text, const std::string& origin);
+  static ToleranceTable load(const std::string& path);
+  /// verification/tolerances.toml as it was when the library was built.
+  static const ToleranceTable& builtin();
+
+  /// The first rule for `check` comparing `a` with `b` in `scene` (with `tags`), or nullptr.
+  const ToleranceRule* find(const std::string& check,
+                            const std::string& a,
+                            const std::string& b,
+                            const std::string& scene,
+                            const std::vector<std::string>& tags) const;
+
+  const std::vector<ToleranceRule>& rules() const { return rules_; }
+
+ private:
+  std::vector<ToleranceRule> rules_;
+};
+
+}  // namespace catena
