@@ -1,6 +1,7 @@
 // `catena verify`: every scene under a directory, on all cores, with a summary and report.json.
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <fmt/format.h>
 #include <mutex>
 #include <string>
@@ -23,7 +24,23 @@ struct VerifyArguments {
   std::string filter;
   int jobs = 0;
   bool quiet = false;
+  std::string perturb;
 };
+
+// "--perturb fe:inplane:2:1e-3" -> Perturbation.
+std::optional<Perturbation> parse_perturbation(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  Perturbation p;
+  char plane[32] = {0};
+  char solver[32] = {0};
+  if (std::sscanf(text.c_str(), "%31[^:]:%31[^:]:%d:%lf", solver, plane, &p.mode, &p.relative) != 4 ||
+      (std::string(plane) != "inplane" && std::string(plane) != "outofplane") || !find_solver(solver)) {
+    throw InvalidInput(fmt::format("--perturb {}: expected SOLVER:inplane|outofplane:MODE:RELATIVE", text));
+  }
+  p.solver = solver;
+  p.plane = std::string(plane) == "inplane" ? Plane::InPlane : Plane::OutOfPlane;
+  return p;
+}
 
 // Reads every scene file; collects every parse error before giving up, so one run shows them all.
 std::vector<Scene> read_all(const std::vector<std::filesystem::path>& files, const std::string& filter) {
@@ -74,12 +91,14 @@ int run_verify(const VerifyArguments& arguments) {
                                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const bool progress = !arguments.quiet && isatty(STDERR_FILENO);
   std::vector<SceneResult> results(scenes.size());
+  SceneRunOptions run_options;
+  run_options.perturbation = parse_perturbation(arguments.perturb);
   std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> done{0};
   std::mutex print_mutex;
   auto worker = [&] {
     for (std::size_t i = next++; i < scenes.size(); i = next++) {
-      results[i] = run_scene(scenes[i]);
+      results[i] = run_scene(scenes[i], run_options);
       const std::size_t finished = ++done;
       if (progress) {
         std::lock_guard<std::mutex> lock(print_mutex);
@@ -146,6 +165,9 @@ void add_verify_command(CLI::App& app, std::function<int()>& run) {
   command->add_option("--filter", arguments->filter, "Only scenes whose name or file contains this text");
   command->add_option("--jobs,-j", arguments->jobs, "Worker threads (default: all cores)");
   command->add_flag("--quiet,-q", arguments->quiet, "Print only failures and the closing line");
+  command->add_option("--perturb", arguments->perturb,
+                      "Testing the harness: multiply one frequency of one solver by (1 + RELATIVE),\n"
+                      "as SOLVER:inplane|outofplane:MODE:RELATIVE; the run must then fail");
   command->callback([arguments, &run] { run = [arguments] { return run_verify(*arguments); }; });
 }
 

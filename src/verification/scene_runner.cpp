@@ -58,6 +58,16 @@ SceneResult run_scene(const Scene& scene, const SceneRunOptions& options) {
       break;
     }
   }
+  if (options.perturbation) {
+    for (auto& output : result.outputs) {
+      if (output.solver != options.perturbation->solver) continue;
+      auto& modal = options.perturbation->plane == Plane::InPlane ? output.inplane : output.outofplane;
+      if (!modal) continue;
+      for (auto& mode : modal->modes) {
+        if (mode.index == options.perturbation->mode) mode.omega_rad_s *= 1.0 + options.perturbation->relative;
+      }
+    }
+  }
   if (options.checks && result.error.empty()) result.checks = internal::run_checks(result);
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

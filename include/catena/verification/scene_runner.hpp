@@ -34,8 +34,20 @@ struct SceneResult {
   int failed_checks() const;
 };
 
+/// A deliberate error injected into one solver's result after it ran: for testing that the
+/// harness catches a wrong solver (`catena verify --perturb`). Never used in a real run.
+struct Perturbation {
+  std::string solver;
+  Plane plane = Plane::InPlane;
+  /// 1-based mode whose frequency is multiplied by (1 + relative).
+  int mode = 1;
+  double relative = 1e-3;
+};
+
 /// Options of a run.
 struct SceneRunOptions {
+  /// Test hook: perturb one frequency of one solver (see Perturbation).
+  std::optional<Perturbation> perturbation;
   /// Run only these solvers (empty: the scene's choice).
   std::vector<std::string> only_solvers;
   /// Compute the checks (otherwise statics and solvers only).

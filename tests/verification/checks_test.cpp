@@ -1,0 +1,159 @@
+// The verification checks on hand-made results: each verdict (PASS, FAIL, SOURCE, SKIP) is reached
+// by the case that should reach it, and a check's record names scene, solvers, values and
+// tolerance. Expected outcomes follow from the rules in verification/tolerances.toml.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "catena/core/error.hpp"
+#include "catena/models/problem_builders.hpp"
+#include "catena/verification/tolerance_table.hpp"
+#include "verification/internal/checks.hpp"
+
+namespace catena {
+namespace {
+
+SceneResult gale_result() {
+  SceneResult result;
+  result.scene.name = "test-scene";
+  result.scene.problem = make_gale_sag_problem(0.0, 0.9);
+  result.statics = solve_statics(result.scene.problem);
+  result.groups = compute_dimensionless_groups(result.scene.problem, *result.statics);
+  return result;
+}
+
+SolverOutput output_with(const std::string& solver, std::vector<double> omegas, double estimate,
+                         bool with_shapes = false) {
+  SolverOutput out;
+  out.solver = solver;
+  out.summary.solver = solver;
+  out.summary.termination = Termination::Converged;
+  ModalResult modal;
+  const Vector s = Vector::LinSpaced(101, 0.0, 1.0);
+  for (std::size_t i = 0; i < omegas.size(); ++i) {
+    Mode mode;
+    mode.index = static_cast<int>(i + 1);
+    mode.omega_rad_s = omegas[i];
+    mode.relative_error_estimate = estimate;
+    if (with_shapes) {
+      mode.s_m = s;
+      mode.w = (s.array() * kPi * double(i + 1)).sin();
+      mode.u = Vector::Zero(s.size());
+    }
+    modal.modes.push_back(mode);
+  }
+  modal.proved_count_below_top = static_cast<int>(omegas.size());
+  out.inplane = modal;
+  return out;
+}
+
+const CheckResult* find(const std::vector<CheckResult>& checks, const std::string& kind, int mode) {
+  for (const auto& c : checks) {
+    if (c.check == kind && c.mode == mode) return &c;
+  }
+  return nullptr;
+}
+
+TEST(Checks, FrequencyAgreementWithinEstimatesPasses) {
+  SceneResult r = gale_result();
+  r.outputs = {output_with("fe", {1.0, 2.0}, 1e-9), output_with("shooting", {1.0 + 1e-9, 2.0}, 1e-10)};
+  const auto checks = internal::run_checks(r);
+  ASSERT_NE(find(checks, "frequency", 1), nullptr);
+  EXPECT_EQ(find(checks, "frequency", 1)->verdict, Verdict::Pass);
+  EXPECT_EQ(find(checks, "statics-closure", 0)->verdict, Verdict::Pass);
+  EXPECT_EQ(find(checks, "mode-count", 0)->verdict, Verdict::Pass);
+}
+
+TEST(Checks, APerturbedFrequencyFailsNamingEverything) {
+  SceneResult r = gale_result();
+  r.outputs = {output_with("fe", {1.0, 2.0 * (1 + 1e-3)}, 1e-9), output_with("shooting", {1.0, 2.0}, 1e-10)};
+  const auto checks = internal::run_checks(r);
+  const CheckResult* c = find(checks, "frequency", 2);
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(c->verdict, Verdict::Fail);
+  EXPECT_EQ(c->scene, "test-scene");
+  EXPECT_EQ(c->compare, "fe vs shooting");
+  EXPECT_NEAR(c->measured, 1e-3 / (1 + 1e-3), 1e-12);
+  EXPECT_LT(c->tolerance, 1e-6);
+  EXPECT_NE(c->detail.find("2.002"), std::string::npos) << c->detail;
+}
+
+TEST(Checks, NonFiniteFrequencyFailsWhateverTheTolerance) {
+  SceneResult r = gale_result();
+  r.outputs = {output_with("fe", {std::nan("")}, 1e-9), output_with("shooting", {1.0}, 1e-10)};
+  EXPECT_EQ(find(internal::run_checks(r), "frequency", 1)->verdict, Verdict::Fail);
+}
+
+TEST(Checks, MissingModeShowsAsModeCountFailure) {
+  SceneResult r = gale_result();
+  r.outputs = {output_with("fe", {1.0, 2.0}, 1e-9)};
+  r.outputs[0].inplane->proved_count_below_top = 3;
+  EXPECT_EQ(find(internal::run_checks(r), "mode-count", 0)->verdict, Verdict::Fail);
+}
+
+TEST(Checks, PublishedValueWithinPrintedRoundingPasses) {
+  SceneResult r = gale_result();
+  PublishedValues p;
+  p.source = "table";
+  p.unit = FrequencyUnit::GaleRatio;
+  p.modes = {1};
+  p.values = {1.91};
+  p.decimals = 2;
+  r.scene.published = {p};
+  r.outputs = {output_with("shooting", {1.9149}, 1e-10)};
+  EXPECT_EQ(find(internal::run_checks(r), "published", 1)->verdict, Verdict::Pass);
+  r.outputs = {output_with("shooting", {1.9151}, 1e-10)};
+  EXPECT_EQ(find(internal::run_checks(r), "published", 1)->verdict, Verdict::Fail);
+}
+
+TEST(Checks, PublishedValueContradictedByTwoAgreeingSolversIsASourceDiscrepancy) {
+  SceneResult r = gale_result();
+  PublishedValues p;
+  p.source = "table";
+  p.unit = FrequencyUnit::GaleRatio;
+  p.modes = {1};
+  p.values = {2.00};
+  p.decimals = 2;
+  r.scene.published = {p};
+  r.outputs = {output_with("frobenius", {1.9149}, 1e-12), output_with("shooting", {1.9149 + 1e-10}, 1e-10)};
+  const auto checks = internal::run_checks(r);
+  for (const auto& c : checks) {
+    if (c.check == "published") {
+      EXPECT_EQ(c.verdict, Verdict::SourceDiscrepancy) << c.compare << ": " << c.detail;
+      EXPECT_NE(c.detail.find("confirmed by"), std::string::npos);
+    }
+  }
+}
+
+TEST(Checks, IdenticalShapesPassMacAndOrthogonalModesPassOrthogonality) {
+  SceneResult r = gale_result();
+  r.outputs = {output_with("fe", {1.0, 2.0, 3.0}, 1e-9, true), output_with("shooting", {1.0, 2.0, 3.0}, 1e-10, true)};
+  const auto checks = internal::run_checks(r);
+  EXPECT_EQ(find(checks, "mac", 3)->verdict, Verdict::Pass);
+  EXPECT_EQ(find(checks, "shape", 3)->verdict, Verdict::Pass);
+  EXPECT_EQ(find(checks, "orthogonality", 0)->verdict, Verdict::Pass);
+  // A swapped pair of shapes fails the MAC.
+  std::swap(r.outputs[0].inplane->modes[0].w, r.outputs[0].inplane->modes[1].w);
+  EXPECT_EQ(find(internal::run_checks(r), "mac", 1)->verdict, Verdict::Fail);
+}
+
+TEST(ToleranceTable, FirstMatchingRuleWinsAndEveryRuleHasAReason) {
+  const ToleranceTable& table = ToleranceTable::builtin();
+  ASSERT_FALSE(table.rules().empty());
+  for (const auto& rule : table.rules()) EXPECT_FALSE(rule.reason.empty()) << rule.check;
+  const ToleranceRule* rule = table.find("frequency", "shooting", "frobenius", "any", {});
+  ASSERT_NE(rule, nullptr);
+  EXPECT_EQ(rule->max, 1e-8);
+  EXPECT_NE(table.find("frequency", "asymptotic", "shooting", "any", {}), nullptr);
+}
+
+TEST(ToleranceTable, RejectsMalformedRules) {
+  EXPECT_THROW(ToleranceTable::parse("[[tolerance]]\ncheck = \"frequency\"\n", "t.toml"), ParseError);
+  EXPECT_THROW(ToleranceTable::parse("[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = -1.0\nreason = \"r\"\n", "t.toml"),
+               InvalidInput);
+  EXPECT_THROW(ToleranceTable::parse("[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = 1.0\nreason = \"r\"\nfoo = 1\n", "t.toml"),
+               ParseError);
+}
+
+}  // namespace
+}  // namespace catena
