@@ -18,8 +18,13 @@ configure: setup
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
+# The suite's exit status is kept; the report is written whatever it says.
 verify: build
-	$(BUILD_DIR)/catena verify --scenes verification/scenes --out $(BUILD_DIR)/report
+	@status=0; \
+	$(BUILD_DIR)/catena verify --scenes verification/scenes --out $(BUILD_DIR)/report || status=$$?; \
+	$(BUILD_DIR)/catena report --from $(BUILD_DIR)/report/report.json --out $(BUILD_DIR)/report || status=$$?; \
+	echo "report: $(BUILD_DIR)/report/report.html (and report.md)"; \
+	exit $$status
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

@@ -11,5 +11,6 @@ namespace catena::cli {
 void add_solve_command(CLI::App& app, std::function<int()>& run);
 void add_verify_command(CLI::App& app, std::function<int()>& run);
 void add_solvers_command(CLI::App& app, std::function<int()>& run);
+void add_report_command(CLI::App& app, std::function<int()>& run);
 
 }  // namespace catena::cli

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   std::function<int()> run;
   catena::cli::add_solve_command(app, run);
   catena::cli::add_verify_command(app, run);
+  catena::cli::add_report_command(app, run);
   catena::cli::add_solvers_command(app, run);
   try {
     app.parse(argc, argv);

@@ -1,9 +1,7 @@
 // `catena verify`: every scene under a directory, on all cores, with a summary and report.json.
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <fmt/format.h>
-#include <mutex>
 #include <string>
 #include <thread>
 #include <unistd.h>
@@ -13,6 +11,7 @@
 #include "catena/io/json_writer.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/verification/scene_runner.hpp"
+#include "catena/verification/suite.hpp"
 #include "cli/commands.hpp"
 
 namespace catena::cli {
@@ -90,25 +89,12 @@ int run_verify(const VerifyArguments& arguments) {
   const int jobs = arguments.jobs > 0 ? arguments.jobs
                                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const bool progress = !arguments.quiet && isatty(STDERR_FILENO);
-  std::vector<SceneResult> results(scenes.size());
   SceneRunOptions run_options;
   run_options.perturbation = parse_perturbation(arguments.perturb);
-  std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> done{0};
-  std::mutex print_mutex;
-  auto worker = [&] {
-    for (std::size_t i = next++; i < scenes.size(); i = next++) {
-      results[i] = run_scene(scenes[i], run_options);
-      const std::size_t finished = ++done;
-      if (progress) {
-        std::lock_guard<std::mutex> lock(print_mutex);
-        fmt::print(stderr, "\r\033[K[{}/{}] {}", finished, scenes.size(), scenes[i].name);
-      }
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);
-  for (auto& thread : threads) thread.join();
+  const std::vector<SceneResult> results =
+      run_scenes(scenes, jobs, run_options, [&](std::size_t done, std::size_t total, const std::string& name) {
+        if (progress) fmt::print(stderr, "\r\033[K[{}/{}] {}", done, total, name);
+      });
   if (progress) fmt::print(stderr, "\r\033[K");
 
   int failed_checks = 0, total_checks = 0, errors = 0, discrepancies = 0;

@@ -190,6 +190,17 @@ json scene_json(const SceneResult& result) {
   json solvers = json::object();
   for (const auto& output : result.outputs) solvers[output.solver] = output_json(output);
   out["solvers"] = solvers;
+  json published = json::array();
+  for (const auto& p : scene.published) {
+    published.push_back({{"source", p.source},
+                         {"quantity", to_string(p.quantity)},
+                         {"unit", to_string(p.unit)},
+                         {"modes", p.modes},
+                         {"values", p.values},
+                         {"decimals", p.decimals},
+                         {"solvers", p.compare_with}});
+  }
+  out["published"] = published;
   json checks = json::array();
   for (const auto& check : result.checks) checks.push_back(check_json(check));
   out["checks"] = checks;

@@ -1,0 +1,53 @@
+// `catena report`: the comparison report (Markdown, self-contained HTML, CSV, figures) from the
+// results JSON that `catena verify` wrote.
+#include <fmt/format.h>
+
+#include "catena/core/error.hpp"
+#include "catena/verification/report.hpp"
+#include "cli/commands.hpp"
+
+#ifndef CATENA_TOOLS_DIR
+#define CATENA_TOOLS_DIR "verification/tools"
+#endif
+
+namespace catena::cli {
+namespace {
+
+struct ReportArguments {
+  std::string from = "build/report/report.json";
+  std::string out = "build/report";
+  std::string tools = CATENA_TOOLS_DIR;
+  std::string python = "python3";
+  bool no_figures = false;
+};
+
+}  // namespace
+
+void add_report_command(CLI::App& app, std::function<int()>& run) {
+  auto arguments = std::make_shared<ReportArguments>();
+  CLI::App* command = app.add_subcommand(
+      "report",
+      "Write the comparison report from a results JSON of `catena verify`: report.md,\n"
+      "report.html (self-contained, figures embedded), data/*.csv and figures/*.png.\n"
+      "Figures need python3 with matplotlib; without them the report says so.");
+  command->add_option("--from", arguments->from, "Results JSON written by `catena verify`")->capture_default_str();
+  command->add_option("--out", arguments->out, "Output directory")->capture_default_str();
+  command->add_option("--tools", arguments->tools, "Directory of figures.py")->capture_default_str();
+  command->add_option("--python", arguments->python, "Python interpreter for the figures")->capture_default_str();
+  command->add_flag("--no-figures", arguments->no_figures, "Skip the figures");
+  command->callback([arguments, &run] {
+    run = [arguments] {
+      ReportOptions options;
+      options.out_dir = arguments->out;
+      options.tools_dir = arguments->tools;
+      options.python = arguments->python;
+      options.figures = !arguments->no_figures;
+      const ReportFiles files = write_report(arguments->from, options);
+      fmt::print("wrote {} and {} ({} figures{}); data in {}\n", files.markdown.string(), files.html.string(),
+                 files.figures, files.figures_note.empty() ? "" : "; " + files.figures_note, files.data_dir.string());
+      return 0;
+    };
+  });
+}
+
+}  // namespace catena::cli
