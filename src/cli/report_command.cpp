@@ -1,5 +1,6 @@
 // `catena report`: the comparison report (Markdown, self-contained HTML, CSV, figures) from the
 // results JSON that `catena verify` wrote.
+#include <filesystem>
 #include <fmt/format.h>
 
 #include "catena/core/error.hpp"
@@ -17,7 +18,9 @@ struct ReportArguments {
   std::string from = "build/report/report.json";
   std::string out = "build/report";
   std::string tools = CATENA_TOOLS_DIR;
-  std::string python = "python3";
+  // Debian's interpreter, where python3-matplotlib installs (a python3 earlier on PATH, e.g.
+  // pyenv's, may not have it).
+  std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
   bool no_figures = false;
 };
 

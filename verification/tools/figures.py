@@ -1,0 +1,255 @@
+#!/usr/bin/env python3
+"""Figures of the Catena report, drawn with matplotlib from the results JSON of `catena verify`.
+
+    /usr/bin/python3 verification/tools/figures.py --results build/report/report.json \
+        --published verification/reference/published --out build/report/figures
+
+Writes PNG files and index.json ([{file, caption}], in report order). A figure whose scenes are
+not in the results (e.g. a filtered run) is skipped. Published points are read from the
+transcribed tables and overlaid as open markers.
+"""
+import argparse
+import csv
+import json
+import math
+import pathlib
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+STYLE = {"shooting": ("-", "o", "C0"), "fe": ("--", "s", "C1"), "frobenius": (":", "^", "C2"),
+         "asymptotic": ("-.", "v", "C3"), "airy": ((0, (3, 1, 1, 1)), "D", "C4")}
+PLANES = {"inplane": "in-plane", "outofplane": "out-of-plane"}
+
+
+def read_table(path):
+    with open(path) as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#") and line.strip()))
+
+
+class Figures:
+    def __init__(self, results, published, out):
+        self.scenes = results["scenes"]
+        self.published = pathlib.Path(published)
+        self.out = pathlib.Path(out)
+        self.index = []
+
+    def save(self, fig, name, caption):
+        fig.tight_layout()
+        fig.savefig(self.out / name, dpi=110)
+        plt.close(fig)
+        self.index.append({"file": name, "caption": caption})
+
+    def sweep(self, prefix):
+        """Scenes of one sweep (name starts with prefix + '['), sorted by the swept value."""
+        members = [s for s in self.scenes if s["name"].startswith(prefix + "[") and s.get("sweep")]
+        return sorted(members, key=lambda s: s["sweep"]["value"])
+
+    @staticmethod
+    def modes(scene, solver, plane):
+        out = scene["solvers"].get(solver, {})
+        return out.get(plane, {}).get("modes", []) if out.get("summary", {}).get("termination") in (
+            "converged", "no-convergence") else []
+
+    def solvers_in(self, scenes):
+        names = []
+        for s in scenes:
+            for name, out in s["solvers"].items():
+                if out["summary"]["termination"] in ("converged", "no-convergence") and name not in names:
+                    names.append(name)
+        return [n for n in STYLE if n in names]
+
+    def frequency_sweep(self, prefix, unit_key, name, caption, published_rows=None, modes_shown=None):
+        scenes = self.sweep(prefix)
+        if not scenes:
+            return
+        fig, ax = plt.subplots(figsize=(7.5, 4.8))
+        x = [s["sweep"]["value"] for s in scenes]
+        for solver in self.solvers_in(scenes):
+            ls, marker, color = STYLE[solver]
+            count = max(len(self.modes(s, solver, "inplane")) for s in scenes)
+            for k in range(count if modes_shown is None else min(count, modes_shown)):
+                y = [self.modes(s, solver, "inplane")[k][unit_key] if k < len(self.modes(s, solver, "inplane"))
+                     else math.nan for s in scenes]
+                ax.plot(x, y, linestyle=ls, marker=marker, markersize=3, color=color,
+                        label=solver if k == 0 else None)
+        for label, rows, marker in published_rows or []:
+            ax.plot([r[0] for r in rows], [r[1] for r in rows], linestyle="none", marker=marker, markersize=8,
+                    markerfacecolor="none", color="k", label=label)
+        ax.set_xscale("log")
+        ax.set_xlabel("lambda^2")
+        ax.set_ylabel("kL/pi" if unit_key == "k_l_over_pi" else unit_key)
+        ax.axvline(4 * math.pi ** 2, color="0.7", linewidth=0.8)
+        ax.legend(fontsize=8)
+        ax.grid(alpha=0.3)
+        self.save(fig, name, caption)
+
+    def grinfogel(self):
+        self.frequency_sweep("irvine-horizontal", "k_l_over_pi", "irvine-horizontal.png",
+                             "Grinfogel Fig. 1.2.5 regenerated: in-plane kL/pi against lambda^2 of a horizontal "
+                             "cable (eps = 0.01); symmetric and antisymmetric families cross at lambda^2 = 4 pi^2 "
+                             "(grey line).")
+        self.frequency_sweep("inclined-crossover", "k_l_over_pi", "inclined-crossover.png",
+                             "Grinfogel Fig. 1.2.6.2 regenerated: in-plane kL/pi against lambda^2 of an inclined "
+                             "cable (phi = 20 deg, eps = 0.1): the families veer instead of crossing.")
+        table = self.published / "grinfogel-1984-table-2-2-frequencies.csv"
+        rows = read_table(table) if table.exists() else []
+        for eps, phi in [("0.18", "23.46"), ("0.49", "45.0")]:
+            sel = [r for r in rows if r["eps"] == eps and r["phi_deg"] == phi]
+            exact = [(float(r["lambda2"]), float(r["exact"])) for r in sel]
+            approx = [(float(r["lambda2"]), float(r["approx"])) for r in sel]
+            self.frequency_sweep(f"grinfogel-curve-eps{eps}-phi{phi}", "k_l_over_pi",
+                                 f"grinfogel-eps{eps}-phi{phi}.png",
+                                 f"Grinfogel Table 2.2 / Fig. 2.2, eps = {eps}, phi = {phi} deg: our solvers' "
+                                 f"kL/pi against lambda^2, with the published 'exact' (circles) and 'approx' "
+                                 f"(squares) points.",
+                                 [("published exact", exact, "o"), ("published approx", approx, "s")])
+
+    def mode_shapes(self):
+        scenes = [s for s in self.sweep("inclined-crossover") if s["sweep"]["value"] in (10.0, 45.0, 120.0)]
+        if not scenes:
+            return
+        fig, axes = plt.subplots(len(scenes), 2, figsize=(9, 2.6 * len(scenes)), squeeze=False)
+        for row, scene in enumerate(scenes):
+            for k in range(2):
+                ax = axes[row][k]
+                for solver in self.solvers_in([scene]):
+                    modes = self.modes(scene, solver, "inplane")
+                    if k < len(modes) and "shape" in modes[k] and "w" in modes[k]["shape"]:
+                        shape = modes[k]["shape"]
+                        ls, _, color = STYLE[solver]
+                        s = [v / shape["s_m"][-1] for v in shape["s_m"]]
+                        ax.plot(s, shape["w"], linestyle=ls, color=color, label=solver)
+                ax.set_title(f"lambda^2 = {scene['sweep']['value']:g}, mode {k + 1}: w(s)", fontsize=9)
+                ax.grid(alpha=0.3)
+                if row == 0 and k == 0:
+                    ax.legend(fontsize=7)
+        axes[-1][0].set_xlabel("s / L")
+        axes[-1][1].set_xlabel("s / L")
+        self.save(fig, "mode-shapes.png",
+                  "Grinfogel Figs. 3.4.1.x regenerated: normal displacement w(s) of the first two in-plane modes "
+                  "(phi = 20 deg, eps = 0.1) below, near and above cross-over, every solver overlaid "
+                  "(normalised to max |w| = 1).")
+
+    def dynamic_tension(self):
+        scenes = self.sweep("inclined-crossover")
+        if not scenes:
+            return
+        fig, ax = plt.subplots(figsize=(7.5, 4.5))
+        x = [s["sweep"]["value"] for s in scenes]
+        drawn = False
+        for solver in self.solvers_in(scenes):
+            ls, marker, color = STYLE[solver]
+            for k in range(2):
+                y = []
+                for s in scenes:
+                    m = self.modes(s, solver, "inplane")
+                    y.append(m[k].get("max_abs_tension_n", math.nan) if k < len(m) else math.nan)
+                if all(math.isnan(v) for v in y):
+                    continue
+                drawn = True
+                ax.plot(x, y, linestyle=ls, marker=marker, markersize=3, color=color,
+                        label=f"{solver}, mode {k + 1}")
+        if not drawn:
+            plt.close(fig)
+            return
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("lambda^2")
+        ax.set_ylabel("max |tau| per unit max |w| [N/m]")
+        ax.axvline(4 * math.pi ** 2, color="0.7", linewidth=0.8)
+        ax.legend(fontsize=7, ncol=2)
+        ax.grid(alpha=0.3)
+        self.save(fig, "dynamic-tension.png",
+                  "Grinfogel Figs. 4.3.2/4.3.3 regenerated: modal dynamic tension against lambda^2 (phi = 20 deg, "
+                  "eps = 0.1); the tension of the first modes is amplified near cross-over.")
+
+    def gale_frequencies(self):
+        for table, label, plane in [("gale-1976-table-B3-inplane.csv", "b-3", "inplane"),
+                                    ("gale-1976-table-B4-outofplane.csv", "b-4", "outofplane")]:
+            path = self.published / table
+            if not path.exists():
+                continue
+            rows = read_table(path)
+            for hb in sorted({r["h_over_b"] for r in rows}, key=float):
+                scenes = [s for s in self.scenes if s["name"].startswith(f"gale-{label}-hb{float(hb):.2f}-sag")]
+                if not scenes:
+                    continue
+                scenes.sort(key=lambda s: s["groups"]["gale"]["sag_param"] or 0)
+                fig, ax = plt.subplots(figsize=(7, 4.5))
+                for solver in self.solvers_in(scenes):
+                    ls, marker, color = STYLE[solver]
+                    for k in range(6):
+                        pts = [(s["groups"]["gale"]["sag_param"], self.modes(s, solver, plane)[k]["gale_ratio"])
+                               for s in scenes if k < len(self.modes(s, solver, plane))]
+                        if pts:
+                            ax.plot(*zip(*pts), linestyle=ls, marker=marker, markersize=3, color=color,
+                                    label=solver if k == 0 else None)
+                pub = [(float(r["sag_param"]), float(r[f"w{k}"])) for r in rows if r["h_over_b"] == hb
+                       for k in range(1, 7) if r[f"w{k}"]]
+                ax.plot(*zip(*pub), linestyle="none", marker="o", markersize=7, markerfacecolor="none", color="k",
+                        label=f"Gale Table {label.upper()}")
+                ax.set_xlabel("sag parameter b / sqrt(l^2 - h^2)")
+                ax.set_ylabel("w / sqrt(g/a)")
+                ax.set_yscale("log")
+                ax.legend(fontsize=8)
+                ax.grid(alpha=0.3)
+                self.save(fig, f"gale-{label}-hb{float(hb):.2f}.png",
+                          f"Gale Figs. 3.2-3.11 regenerated: {PLANES[plane]} frequency ratios of the first six "
+                          f"modes against the sag parameter, h/b = {hb}; published Table {label.upper()} values as "
+                          f"open circles.")
+
+    def gale_forced(self):
+        table = self.published / "gale-1976-table-C2-forced-max-tension.csv"
+        rows = read_table(table) if table.exists() else []
+        for scene in [s for s in self.scenes if s["name"].startswith("gale-c-2-curve-")]:
+            H = scene["statics"]["horizontal_force_n"]
+            scale = scene["groups"]["gale"]["frequency_scale_rad_s"]
+            fig, ax = plt.subplots(figsize=(7.5, 4.5))
+            for solver in self.solvers_in([scene]):
+                forced = scene["solvers"][solver].get("forced", [])
+                pts = [(f["omega_rad_s"] / scale, f["max_abs_tension_n"] / H) for f in forced
+                       if not f.get("diagnostic") and f.get("max_abs_tension_n") is not None]
+                if pts:
+                    ls, _, color = STYLE[solver]
+                    ax.plot(*zip(*pts), linestyle=ls, color=color, label=solver)
+            hb = f"{scene['groups']['gale']['h_over_b']:.2f}"
+            sag = scene["name"].split("-sag")[-1]
+            pub = [(float(r["wf"]), float(r["tmax"])) for r in rows
+                   if f"{float(r['h_over_b']):.2f}" == hb and r["sag_param"] == sag]
+            if pub:
+                ax.plot(*zip(*pub), linestyle="none", marker="o", markerfacecolor="none", color="k",
+                        label="Gale Table C-2")
+            ax.set_yscale("log")
+            ax.set_xlabel("forcing frequency w / sqrt(g/a)")
+            ax.set_ylabel("max |dynamic tension| / H")
+            ax.legend(fontsize=8)
+            ax.grid(alpha=0.3)
+            self.save(fig, f"{scene['name']}.png",
+                      f"Gale Figs. 3.14-3.15 regenerated: maximum dynamic tension along the cable against the "
+                      f"forcing frequency, tangential end motion 0.01 a, h/b = {hb}, sag parameter {sag}; "
+                      f"Table C-2 as open circles.")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--results", required=True)
+    parser.add_argument("--published", required=True)
+    parser.add_argument("--out", required=True)
+    args = parser.parse_args()
+    with open(args.results) as f:
+        results = json.load(f)
+    pathlib.Path(args.out).mkdir(parents=True, exist_ok=True)
+    figures = Figures(results, args.published, args.out)
+    for draw in (figures.grinfogel, figures.mode_shapes, figures.dynamic_tension, figures.gale_frequencies,
+                 figures.gale_forced):
+        draw()
+    with open(pathlib.Path(args.out) / "index.json", "w") as f:
+        json.dump(figures.index, f, indent=1)
+    print(f"drew {len(figures.index)} figures in {args.out}")
+
+
+if __name__ == "__main__":
+    main()
