@@ -186,6 +186,55 @@ void extrapolate_mode_in_kappa(Mode& a, const Mode& b_in) {
   }
 }
 
+// The displacement of the free nodes of a chain of `elements` elements, restricted to the nodes
+// of a chain of `coarse_elements` (a divisor): node i of the coarse chain is node i r of the fine.
+Eigen::MatrixXd restrict_to_nodes(const Eigen::MatrixXd& vectors, int elements, int coarse_elements, Plane plane) {
+  const int per_node = plane == Plane::InPlane ? 2 : 1;
+  const int ratio = elements / coarse_elements;
+  Eigen::MatrixXd out(per_node * (coarse_elements - 1), vectors.cols());
+  for (int i = 1; i < coarse_elements; ++i)
+    out.middleRows(per_node * (i - 1), per_node) = vectors.middleRows(per_node * (i * ratio - 1), per_node);
+  return out;
+}
+
+// For each reference mode, the index of the mode of `other` with the largest modal assurance
+// criterion MAC = (a.b)^2 / (a.a b.b) on the common nodes, assigned greedily from the best pair
+// down (each mode used once). Meshes differ by powers of two, so the coarser nodes are common.
+std::vector<int> match_modes(const Eigen::MatrixXd& reference,
+                             int reference_elements,
+                             const Eigen::MatrixXd& other,
+                             int other_elements,
+                             Plane plane) {
+  const int common = std::min(reference_elements, other_elements);
+  const Eigen::MatrixXd a = restrict_to_nodes(reference, reference_elements, common, plane);
+  const Eigen::MatrixXd b = restrict_to_nodes(other, other_elements, common, plane);
+  const Eigen::MatrixXd cross = a.transpose() * b;
+  const Vector na = a.colwise().squaredNorm().transpose(), nb = b.colwise().squaredNorm().transpose();
+  const auto n = static_cast<int>(reference.cols());
+  std::vector<int> result(static_cast<std::size_t>(n), -1);
+  std::vector<bool> used(static_cast<std::size_t>(other.cols()), false);
+  for (int assigned = 0; assigned < n; ++assigned) {
+    double best = -1.0;
+    int bi = -1, bj = -1;
+    for (int i = 0; i < n; ++i) {
+      if (result[static_cast<std::size_t>(i)] >= 0) continue;
+      for (int j = 0; j < other.cols(); ++j) {
+        if (used[static_cast<std::size_t>(j)]) continue;
+        const double norms = na[i] * nb[j];
+        const double mac = norms > 0.0 ? cross(i, j) * cross(i, j) / norms : 0.0;
+        if (mac > best) {
+          best = mac;
+          bi = i;
+          bj = j;
+        }
+      }
+    }
+    result[static_cast<std::size_t>(bi)] = bj;
+    used[static_cast<std::size_t>(bj)] = true;
+  }
+  return result;
+}
+
 Termination worse(Termination a, Termination b) {
   auto rank = [](Termination t) {
     switch (t) {
@@ -375,7 +424,7 @@ SolverOutput solve_fe_timed(const Problem& problem,
 
   const Vector stations = request.stations_m(problem.cable.length_m);
   long total_restarts = 0, total_operations = 0;
-  double max_residual = 0.0, max_orthogonality = 0.0, max_error = 0.0;
+  double max_residual = 0.0, max_orthogonality = 0.0, max_error = 0.0, max_backward = 0.0;
   std::vector<std::string> plane_messages;
 
   for (const auto& [plane, modes] : planes) {
@@ -407,6 +456,7 @@ SolverOutput solve_fe_timed(const Problem& problem,
         } else {
           result.summary.max_residual = std::max(result.summary.max_residual, eigen.max_residual);
           max_orthogonality = std::max(max_orthogonality, eigen.max_orthogonality_error);
+          max_backward = std::max(max_backward, eigen.max_backward_error);
         }
         level.eigen[plane] = std::move(eigen);
       }
@@ -428,10 +478,24 @@ SolverOutput solve_fe_timed(const Problem& problem,
         available = std::min(available, static_cast<int>(level.eigen.at(plane).eigenvalues.size()));
 
     const auto start_post = Clock::now();
-    auto omega_at = [&](std::size_t m, std::size_t k, int i) {
-      return std::sqrt(std::max(0.0, levels[m][k].eigen.at(plane).eigenvalues[i]));
-    };
     const auto fine = static_cast<std::size_t>(plan.main_fine);
+    // Pair every level's modes with the reference level's (finest main mesh, first penalty) by
+    // shape, not by rank: near a cross-over the order of two close modes can differ between
+    // meshes (the discretisation error moves the crossing), and pairing by rank would then
+    // extrapolate one mode's frequency with the other's.
+    std::vector<std::vector<std::vector<int>>> match(levels.size(),
+                                                     std::vector<std::vector<int>>(num_penalties));
+    const Level& reference = levels[fine][0];
+    for (std::size_t m = 0; m < levels.size(); ++m)
+      for (std::size_t k = 0; k < num_penalties; ++k)
+        match[m][k] = match_modes(reference.eigen.at(plane).eigenvectors.leftCols(available),
+                                  reference.chain.elements,
+                                  levels[m][k].eigen.at(plane).eigenvectors.leftCols(available),
+                                  levels[m][k].chain.elements, plane);
+    auto omega_at = [&](std::size_t m, std::size_t k, int i) {
+      const int j = match[m][k][static_cast<std::size_t>(i)];
+      return std::sqrt(std::max(0.0, levels[m][k].eigen.at(plane).eigenvalues[j]));
+    };
     const bool has_coarse = plan.main_coarse >= 0;
     const auto coarse = static_cast<std::size_t>(std::max(0, plan.main_coarse));
     std::vector<double> observed_orders;
@@ -481,8 +545,8 @@ SolverOutput solve_fe_timed(const Problem& problem,
                               statics, with_tension);
       if (plan.inextensible) {
         const Mode other = make_mode(plane, levels[fine][1].chain,
-                                     levels[fine][1].eigen.at(plane).eigenvectors.col(i), stations,
-                                     statics, with_tension);
+                                     levels[fine][1].eigen.at(plane).eigenvectors.col(match[fine][1][static_cast<std::size_t>(i)]),
+                                     stations, statics, with_tension);
         extrapolate_mode_in_kappa(shaped, other);
       }
       mode.normalised_by = shaped.normalised_by;
@@ -501,6 +565,11 @@ SolverOutput solve_fe_timed(const Problem& problem,
       }
       result.modes.push_back(std::move(mode));
     }
+    // Extrapolation may reorder two modes closer than their discretisation errors: report them
+    // lowest first.
+    std::stable_sort(result.modes.begin(), result.modes.end(),
+                     [](const Mode& a, const Mode& b) { return a.omega_rad_s < b.omega_rad_s; });
+    for (std::size_t i = 0; i < result.modes.size(); ++i) result.modes[i].index = static_cast<int>(i) + 1;
     timings.postprocessing_s += seconds_since(start_post);
 
     const FeEigenSolution& finest = levels[fine][0].eigen.at(plane);
@@ -517,8 +586,11 @@ SolverOutput solve_fe_timed(const Problem& problem,
         "(just above the top eigenvalue, N = {}) has {} negative pivots for {} modes{}",
         finest.inertia_shift, plan.meshes[fine], finest.inertia_count,
         finest.eigenvalues.size(), all_proved ? "; same on every mesh" : "; NOT on every mesh"));
-    result.summary.notes.push_back(fmt::format("max mass-orthogonality error {:.2e} (M-normalised)",
-                                               max_orthogonality));
+    result.summary.notes.push_back(fmt::format(
+        "max mass-orthogonality error {:.2e} (M-normalised); max normwise backward error {:.2e} "
+        "(the relative residual ||K phi - w^2 M phi|| / ||K phi|| has a rounding floor of about "
+        "eps ||K|| / ||K phi||, large for a stiff chain)",
+        max_orthogonality, max_backward));
     if (options.observed_order && !observed_orders.empty()) {
       std::string list;
       for (double p : observed_orders) list += fmt::format("{}{:.3f}", list.empty() ? "" : ", ", p);

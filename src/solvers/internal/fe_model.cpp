@@ -272,10 +272,25 @@ void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
   const Eigen::MatrixXd K_phi = matrices.stiffness * out.eigenvectors;
   const Eigen::MatrixXd M_phi = matrices.mass * out.eigenvectors;
   out.max_residual = 0.0;
+  out.max_backward_error = 0.0;
+  // ||.||_1 of a symmetric matrix: the largest absolute column sum.
+  auto norm1 = [](const SparseMatrix& A) {
+    double best = 0.0;
+    for (Eigen::Index c = 0; c < A.outerSize(); ++c) {
+      double sum = 0.0;
+      for (SparseMatrix::InnerIterator it(A, c); it; ++it) sum += std::abs(it.value());
+      best = std::max(best, sum);
+    }
+    return best;
+  };
+  const double k_norm = norm1(matrices.stiffness), m_norm = norm1(matrices.mass);
   for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
     const double denominator = K_phi.col(i).norm();
     const double r = (K_phi.col(i) - out.eigenvalues[i] * M_phi.col(i)).norm();
     out.max_residual = std::max(out.max_residual, denominator > 0.0 ? r / denominator : r);
+    out.max_backward_error = std::max(
+        out.max_backward_error,
+        r / ((k_norm + std::abs(out.eigenvalues[i]) * m_norm) * out.eigenvectors.col(i).norm()));
   }
   const Eigen::MatrixXd gram = out.eigenvectors.transpose() * M_phi;
   out.max_orthogonality_error =
