@@ -1,10 +1,11 @@
 #include "solvers/internal/fe_model.hpp"
 
+#include "solvers/internal/fe_banded_ldlt.hpp"
+
 #include <fmt/format.h>
 
 #include <Eigen/SparseCholesky>
-#include <Spectra/MatOp/SparseSymMatProd.h>
-#include <Spectra/SymGEigsShiftSolver.h>
+#include <Spectra/SymEigsShiftSolver.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,9 +19,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Banded matrices in natural order: the LDLT factor has no fill outside the band, so the
-// factorisation is O(N) and the pivots give the inertia directly. No reordering is wanted.
-using Ldlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::NaturalOrdering<int>>;
 
 // Fills the per-element forces, lengths and node positions of a chain with support forces (H, V_A).
 void build_chain(FeChain& chain, double H, double V_A, double W0) {
@@ -235,27 +233,21 @@ class ShiftInvertOperator {
   void set_shift(double sigma) {
     const auto start = Clock::now();
     shifted_ = stiffness_ - sigma * mass_;
-    if (!analysed_) {
-      ldlt_.analyzePattern(shifted_);
-      analysed_ = true;
-    }
-    ldlt_.factorize(shifted_);
+    bool ok = ldlt_.factorize(shifted_);
     factorization_time_s += seconds_since(start);
-    bool ok = ldlt_.info() == Eigen::Success;
-    if (ok) {
-      const Vector& d = ldlt_.vectorD();
-      const double scale = d.cwiseAbs().maxCoeff();
-      ok = std::isfinite(scale) && d.cwiseAbs().minCoeff() > 1e-14 * scale;
-    }
+    ok = ok && ldlt_.pivot_ratio() > 1e-14;
     // Same exception type as Spectra's own SymShiftInvert, so callers handle both alike.
     if (!ok) throw std::invalid_argument(fmt::format("K - sigma M is singular at sigma = {:.6e}", sigma));
   }
   /// Solves (K - sigma M) Y = X for a block of right-hand sides.
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& X) const { return ldlt_.solve(X); }
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& X) const {
+    Eigen::MatrixXd Y = X;
+    ldlt_.solve_in_place(Y);
+    return Y;
+  }
   void perform_op(const double* x_in, double* y_out) const {
-    Eigen::Map<const Vector> x(x_in, rows());
-    Eigen::Map<Vector> y(y_out, rows());
-    y = ldlt_.solve(x);
+    std::copy(x_in, x_in + rows(), y_out);
+    ldlt_.solve_in_place(y_out);
   }
   double factorization_time_s = 0.0;
 
@@ -263,8 +255,68 @@ class ShiftInvertOperator {
   const SparseMatrix& stiffness_;
   const SparseMatrix& mass_;
   SparseMatrix shifted_;
-  Ldlt ldlt_;
-  bool analysed_ = false;
+  BandedLdlt ldlt_;
+};
+
+// The block-diagonal Cholesky factor L of the lumped mass (M = L L^T, 2x2 blocks in plane,
+// diagonal out of plane) and L^{-T}.
+struct MassFactor {
+  SparseMatrix lower;              // L
+  SparseMatrix inverse_transpose;  // L^{-T}
+};
+MassFactor factor_mass(const SparseMatrix& mass, int dofs_per_node) {
+  const Eigen::Index n = mass.rows();
+  std::vector<Eigen::Triplet<double>> l_entries, inv_entries;
+  l_entries.reserve(static_cast<std::size_t>(3 * n));
+  inv_entries.reserve(static_cast<std::size_t>(3 * n));
+  for (Eigen::Index i = 0; i < n; i += dofs_per_node) {
+    if (dofs_per_node == 1) {
+      const double l = std::sqrt(mass.coeff(i, i));
+      l_entries.emplace_back(i, i, l);
+      inv_entries.emplace_back(i, i, 1.0 / l);
+    } else {
+      const double a = mass.coeff(i, i), b = mass.coeff(i + 1, i), c = mass.coeff(i + 1, i + 1);
+      const double l11 = std::sqrt(a), l21 = b / l11, l22 = std::sqrt(c - l21 * l21);
+      l_entries.emplace_back(i, i, l11);
+      l_entries.emplace_back(i + 1, i, l21);
+      l_entries.emplace_back(i + 1, i + 1, l22);
+      // L^{-1} = [1/l11, 0; -l21/(l11 l22), 1/l22]; stored transposed.
+      inv_entries.emplace_back(i, i, 1.0 / l11);
+      inv_entries.emplace_back(i, i + 1, -l21 / (l11 * l22));
+      inv_entries.emplace_back(i + 1, i + 1, 1.0 / l22);
+    }
+  }
+  MassFactor factor;
+  factor.lower.resize(n, n);
+  factor.lower.setFromTriplets(l_entries.begin(), l_entries.end());
+  factor.inverse_transpose.resize(n, n);
+  factor.inverse_transpose.setFromTriplets(inv_entries.begin(), inv_entries.end());
+  return factor;
+}
+
+// The standard-form operator for Spectra: with A = L^{-1} K L^{-T},
+// (A - sigma I)^{-1} x = L^T (K - sigma M)^{-1} L x. A standard symmetric Lanczos avoids the
+// M-inner products of the generalized solver (which cost more than the banded solves here).
+class StandardFormOperator {
+ public:
+  using Scalar = double;
+  StandardFormOperator(ShiftInvertOperator& inner, const MassFactor& factor)
+      : inner_(inner), factor_(factor), work_(inner.rows()), solved_(inner.rows()) {}
+  Eigen::Index rows() const { return inner_.rows(); }
+  Eigen::Index cols() const { return inner_.cols(); }
+  void set_shift(double sigma) { inner_.set_shift(sigma); }
+  void perform_op(const double* x_in, double* y_out) const {
+    Eigen::Map<const Vector> x(x_in, rows());
+    Eigen::Map<Vector> y(y_out, rows());
+    work_.noalias() = factor_.lower * x;
+    inner_.perform_op(work_.data(), solved_.data());
+    y.noalias() = factor_.lower.transpose() * solved_;
+  }
+
+ private:
+  ShiftInvertOperator& inner_;
+  const MassFactor& factor_;
+  mutable Vector work_, solved_;
 };
 
 // Residual and M-orthogonality of M-normalised eigenvectors.
@@ -297,12 +349,25 @@ void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
       (gram - Eigen::MatrixXd::Identity(gram.rows(), gram.cols())).cwiseAbs().maxCoeff();
 }
 
+// Normwise backward error at which the eigenpairs are as good as double precision allows.
+constexpr double kBackwardErrorGoal = 1e-14;
+
+// M-normalises the vectors (the Ritz vectors are M-orthonormal already; this removes rounding
+// drift) and measures residual, backward error and M-orthogonality.
+void normalise_and_check(const FeMatrices& matrices, FeEigenSolution& out) {
+  for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
+    const double norm2 = out.eigenvectors.col(i).dot(matrices.mass * out.eigenvectors.col(i));
+    out.eigenvectors.col(i) /= std::sqrt(norm2);
+  }
+  check_eigenpairs(matrices, out);
+}
+
 // Subspace (inverse) iteration with Rayleigh-Ritz on the converged Ritz vectors, with the
 // factorisation Spectra already used. Lanczos leaves components along the stiff axial directions
 // of size ~ tolerance; K amplifies them by EA/l0 into the residual. One inverse-iteration step
 // damps them by lambda/lambda_axial (<= 1e-4 here), so one or two steps reach the rounding floor.
 void refine(const FeMatrices& matrices, const ShiftInvertOperator& op, FeEigenSolution& out) {
-  for (int step = 0; step < 2; ++step) {
+  {
     const Eigen::MatrixXd Y = op.solve(matrices.mass * out.eigenvectors);
     const Eigen::MatrixXd KY = matrices.stiffness * Y;
     const Eigen::MatrixXd MY = matrices.mass * Y;
@@ -337,11 +402,9 @@ void solve_dense(const FeMatrices& matrices, int modes, FeEigenSolution& out) {
 
 int count_eigenvalues_below(const FeMatrices& matrices, double shift) {
   const SparseMatrix shifted = matrices.stiffness - shift * matrices.mass;
-  Ldlt ldlt(shifted);
-  if (ldlt.info() != Eigen::Success) return -1;
-  const Vector& d = ldlt.vectorD();
-  if (!d.allFinite()) return -1;
-  return static_cast<int>((d.array() < 0.0).count());
+  BandedLdlt ldlt;
+  if (!ldlt.factorize(shifted)) return -1;
+  return ldlt.negative_pivots();
 }
 
 FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
@@ -359,17 +422,16 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
   if (n <= 64 || subspace <= modes) {
     solve_dense(matrices, modes, out);
   } else {
-    using BOp = Spectra::SparseSymMatProd<double>;
     ShiftInvertOperator op(matrices.stiffness, matrices.mass);
-    BOp mass_op(matrices.mass);
+    const MassFactor factor = factor_mass(matrices.mass, matrices.dofs_per_node);
+    StandardFormOperator standard(op, factor);
     // Shift 0 targets the lowest modes (K is positive definite for a taut chain). If it is
     // singular (a chain with a zero-stiffness mode), move the shift below the spectrum's bottom.
     double sigma = 0.0;
     for (int attempt = 0; attempt < 4; ++attempt) {
       try {
         const auto start = Clock::now();
-        Spectra::SymGEigsShiftSolver<ShiftInvertOperator, BOp, Spectra::GEigsMode::ShiftInvert>
-            eigs(op, mass_op, modes, subspace, sigma);
+        Spectra::SymEigsShiftSolver<StandardFormOperator> eigs(standard, modes, subspace, sigma);
         eigs.init();
         eigs.compute(Spectra::SortRule::LargestMagn, max_restarts, tolerance,
                      Spectra::SortRule::SmallestAlge);
@@ -378,9 +440,17 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
         out.operations += eigs.num_operations();
         if (eigs.info() == Spectra::CompInfo::Successful) {
           out.eigenvalues = eigs.eigenvalues();
-          out.eigenvectors = eigs.eigenvectors();
+          out.eigenvectors = factor.inverse_transpose * eigs.eigenvectors();
           out.termination = Termination::Converged;
-          refine(matrices, op, out);
+          // Refine only what needs it: one or two inverse-iteration steps until the normwise
+          // backward error is at rounding level.
+          const auto start_refine = Clock::now();
+          for (int step = 0; step < 3; ++step) {
+            normalise_and_check(matrices, out);
+            if (out.max_backward_error <= kBackwardErrorGoal || step == 2) break;
+            refine(matrices, op, out);
+          }
+          out.iteration_time_s += seconds_since(start_refine);
         } else {
           out.termination = Termination::NoConvergence;
           out.message = fmt::format("Spectra did not converge: {} restarts, {} operator applications",
@@ -403,12 +473,7 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
   }
   if (out.termination != Termination::Converged) return out;
 
-  // M-normalise (Spectra's vectors are M-orthonormal already; this removes rounding drift).
-  for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
-    const double norm2 = out.eigenvectors.col(i).dot(matrices.mass * out.eigenvectors.col(i));
-    out.eigenvectors.col(i) /= std::sqrt(norm2);
-  }
-  check_eigenpairs(matrices, out);
+  if (n <= 64 || subspace <= modes) normalise_and_check(matrices, out);
 
   // Sylvester: the negative pivots of LDLT(K - sigma_top M) count the eigenvalues below sigma_top.
   // sigma_top sits a relative max(1e-9, 10 r) above the top eigenvalue (r the relative residual):
