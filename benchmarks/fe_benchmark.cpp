@@ -14,6 +14,7 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <cmath>
 
 #include "catena/models/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
@@ -61,7 +62,6 @@ void BM_FeStages(benchmark::State& state) {
     operations = eigen.operations;
     omega1 = eigen.eigenvalues.size() ? std::sqrt(eigen.eigenvalues[0]) : -1.0;
     if (eigen.inertia_count != 10) state.SkipWithError("inertia count != 10");
-    benchmark::DoNotOptimize(omega1);
   }
   const auto iterations = static_cast<double>(state.iterations());
   state.counters["statics_ms"] = statics_ms / iterations;
@@ -86,16 +86,22 @@ void BM_FeSolveDefault(benchmark::State& state) {
   for (auto _ : state) {
     const SolverOutput output = solve_fe(problem, statics, groups, request, options);
     error = output.summary.max_error_estimate;
-    benchmark::DoNotOptimize(error);
   }
-  state.counters["max_rel_error_estimate"] = error;
+  // -log10 of the largest relative error estimate (Google Benchmark prints small counters badly).
+  state.counters["digits_estimate"] = error > 0.0 ? -std::log10(error) : 16.0;
 }
 
 }  // namespace
 
 BENCHMARK(BM_FeStages)
     ->ArgNames({"outofplane", "N"})
-    ->ArgsProduct({{0, 1}, {1000, 10000, 100000, 1000000}})
+    ->ArgsProduct({{0, 1}, {1000, 10000, 100000}})
+    ->Unit(benchmark::kMillisecond);
+// N = 1e6 (2e6 unknowns in plane): one iteration; the Lanczos basis alone is 2e6 x 30 doubles.
+BENCHMARK(BM_FeStages)
+    ->ArgNames({"outofplane", "N"})
+    ->ArgsProduct({{0, 1}, {1000000}})
+    ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FeSolveDefault)
     ->ArgNames({"outofplane", "N"})

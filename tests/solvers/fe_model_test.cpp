@@ -247,6 +247,36 @@ TEST(FeModel, ForcedResponseOfAStraightBarMatchesTheStandingWave) {
   }
 }
 
+// The quasi-static (omega = 0) response of an inextensible catenary to a tangential end
+// displacement is the derivative of the exact nonlinear statics: max_s |dT(s)| for support b moved
+// along its tangent (finite differences of the shared solve_statics, step 1e-6 a: error ~1e-6).
+// The fe value goes through the kappa penalty and its extrapolation.
+constexpr double kRelTolQuasiStaticTension = 1e-4;
+
+TEST(FeModel, QuasiStaticTensionOfAnInextensibleCatenaryIsTheStaticsDerivative) {
+  const Problem problem = make_gale_sag_problem(0.5, 0.8);
+  Problem base = problem;
+  base.prescribed_forces.reset();
+  const StaticSolution before = solve_statics(base);
+  const double L = problem.cable.length_m, delta = 1e-6;
+  Problem moved = base;
+  moved.supports.b_m += delta * before.tangent(L);
+  const StaticSolution after = solve_statics(moved);
+  double expected = 0.0;
+  for (int i = 0; i <= 200; ++i) {
+    const double s = L * i / 200.0;
+    expected = std::max(expected, std::abs(after.tension_n(s) - before.tension_n(s)) / delta);
+  }
+  SolveRequest request = modes_request(0, 0);
+  request.points = 201;
+  request.forced = ForcedRequest{.end = CableEnd::B, .direction = ForcingDirection::Tangential,
+                                 .amplitude_m = 1.0, .omegas_rad_s = {0.0}};
+  const Solved solved = solve(problem, request, {.elements = 400});
+  ASSERT_TRUE(solved.output.forced[0].diagnostic.empty()) << solved.output.forced[0].diagnostic;
+  EXPECT_LE(relative_error(solved.output.forced[0].max_abs_tension_n, expected), kRelTolQuasiStaticTension)
+      << solved.output.forced[0].max_abs_tension_n << " vs " << expected;
+}
+
 TEST(FeModel, ForcingAtANaturalFrequencyGivesADiagnosticNotInfinity) {
   const Problem problem = make_taut_inclined_problem(0.1, 10.0, 30.0, 1.0);
   const Solved modal = solve(problem, modes_request(3, 0), {.elements = 200});
