@@ -71,6 +71,9 @@ TEST(FeSolver, TautStringGivesIntegerKLOverPiInBothPlanes) {
           << "mode " << mode.index << ": " << mode.k_l_over_pi;
       EXPECT_GT(mode.relative_error_estimate, 0.0);
       EXPECT_LT(mode.relative_error_estimate, 1e-4);
+      // The estimate is an upper one: it covers the actual error.
+      EXPECT_LE(relative_error(mode.k_l_over_pi, n / std::sqrt(1.0 + strain)), mode.relative_error_estimate)
+          << "mode " << mode.index;
     }
   }
 }

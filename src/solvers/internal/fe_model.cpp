@@ -4,7 +4,6 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/SparseCholesky>
 #include <Spectra/SymEigsShiftSolver.h>
 #include <algorithm>
 #include <cassert>
