@@ -523,7 +523,7 @@ SolverOutput solve_fe_timed(const Problem& problem,
         omega = per_penalty[0];
         error = per_penalty_error[0];
       }
-      if (options.observed_order) {
+      if (options.observed_order && plan.meshes.size() >= 3) {
         const std::size_t last = plan.meshes.size() - 1;
         const double d1 = omega_at(last - 2, 0, i) - omega_at(last - 1, 0, i);
         const double d2 = omega_at(last - 1, 0, i) - omega_at(last, 0, i);
