@@ -573,6 +573,12 @@ SolverOutput solve_fe_timed(const Problem& problem,
     for (std::size_t i = 0; i < result.modes.size(); ++i) result.modes[i].index = static_cast<int>(i) + 1;
     timings.postprocessing_s += seconds_since(start_post);
 
+    if (!has_coarse && !result.modes.empty()) {
+      result.summary.warnings.push_back(fmt::format(
+          "no error estimate: without Richardson the estimate needs N/2 = {} elements, too few for "
+          "{} {} modes (relative_error_estimate = -1)",
+          options.elements / 2, modes, plane_name(plane)));
+    }
     const FeEigenSolution& finest = levels[fine][0].eigen.at(plane);
     result.proved_count_below_top = finest.inertia_count;
     bool all_proved = true;
