@@ -334,6 +334,18 @@ TEST(FeSolverOptions, RegistryKnobsAreValidated) {
   expect_invalid([&] { entry->validate_knobs({{"elements", 1L}}); }, "[solvers.fe].elements");
   expect_invalid([&] { entry->validate_knobs({{"kappa", 0.0}}); }, "[solvers.fe].kappa");
   expect_invalid([&] { entry->validate_knobs({{"elemnts", 10L}}); }, "elemnts");
+  // End to end through the registry, as `catena solve` runs it.
+  const Problem problem = make_gale_xi_problem(-0.5, 0.5);
+  const StaticSolution statics = solve_statics(problem);
+  const DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
+  const SolveRequest request = modes_request(3, 3);
+  const SolveContext context{problem, statics, groups, request};
+  const SolverOutput output = run_solver(*entry, context, {{"elements", 200L}, {"kappa", 1e-6}});
+  EXPECT_EQ(output.summary.termination, Termination::Converged) << output.summary.full_report();
+  EXPECT_EQ(output.solver, "fe");
+  EXPECT_GT(output.summary.wall_time_s, 0.0);
+  ASSERT_TRUE(output.inplane && output.outofplane);
+  EXPECT_NEAR(*output.inplane->modes[0].gale_ratio, 2.59, 0.005);
 }
 
 }  // namespace
