@@ -56,7 +56,9 @@
 /// extensibility through Irvine's 1/lambda^2, which is linear in kappa); the summary says so.
 /// Measured on Gale's catenaries at N = 800: the extrapolated frequencies change by ~1e-8..1e-7
 /// relative between kappa = 1e-5 and 1e-6; below 1e-6 the rounding of the stiff penalty grows
-/// (~1e-6 relative at kappa = 1e-7). So the penalty limits inextensible results to about 1e-7.
+/// (~1e-6 relative at kappa = 1e-7). So the penalty limits inextensible results to a few 1e-7
+/// relative (seen as changes of that size when only the order of floating-point operations
+/// changes).
 ///
 /// Shapes, tension, forced response. Nodal displacements are interpolated linearly to the request
 /// stations and projected on the continuous static tangent and normal there (the shared statics);
