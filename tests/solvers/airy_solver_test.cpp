@@ -66,6 +66,22 @@ TEST(ScaledAiry, MatchesBoostAcrossTheSeriesThreshold) {
   }
 }
 
+TEST(ScaledAiry, MaclaurinFastPathMatchesBoost) {
+  // Error measured against the size of the functions (their envelope |x|^(-1/4)/sqrt(pi) and
+  // |x|^(1/4)/sqrt(pi) for the derivatives, at least 1), not pointwise near the zeros of Ai.
+  constexpr double kTol = 2e-13;
+  for (double x = internal::kAiryMaclaurinLow; x <= internal::kAiryMaclaurinHigh; x += 0.01) {
+    const internal::ScaledAiry fast = internal::scaled_airy(x);
+    const internal::ScaledAiry ref = internal::scaled_airy_boost(x);
+    const double size = std::max(1.0, std::pow(std::abs(x), 0.25));
+    EXPECT_NEAR(fast.ai, ref.ai, kTol * size) << x;
+    EXPECT_NEAR(fast.bi, ref.bi, kTol * size) << x;
+    EXPECT_NEAR(fast.ai_prime, ref.ai_prime, kTol * size) << x;
+    EXPECT_NEAR(fast.bi_prime, ref.bi_prime, kTol * size) << x;
+    EXPECT_EQ(fast.zeta, ref.zeta);
+  }
+}
+
 TEST(ScaledAiry, WronskianHoldsWhereTheUnscaledFunctionsOverflow) {
   // Ai Bi' - Ai' Bi = 1/pi: the exponents cancel, so the scaled values must satisfy it exactly.
   for (double x : {-50.0, -3.0, 0.0, 0.5, 5.0, 24.0, 26.0, 100.0, 1e3, 1e4, 1e6}) {

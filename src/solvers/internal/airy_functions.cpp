@@ -8,7 +8,57 @@
 
 namespace catena::internal {
 
+namespace {
+
+// Maclaurin series: Ai = c1 f - c2 g, Bi = sqrt(3)(c1 f + c2 g) with f = sum a_k x^{3k},
+// g = sum b_k x^{3k+1}, a_k = a_{k-1} / (3k (3k-1)), b_k = b_{k-1} / (3k (3k+1)) (from y'' = x y).
+ScaledAiry maclaurin_airy(double x) {
+  constexpr double c1 = 0.35502805388781723926;   // Ai(0)
+  constexpr double c2 = 0.25881940379280679840;   // -Ai'(0)
+  constexpr double sqrt3 = 1.7320508075688772935;
+  const double x3 = x * x * x;
+  double a = 1.0, b = x;           // current terms of f and g
+  double f = 1.0, g = x;
+  double fp = 0.0, gp = 1.0;       // f', g'
+  for (int k = 1; k < 60; ++k) {
+    const double three_k = 3.0 * k;
+    a *= x3 / (three_k * (three_k - 1.0));
+    b *= x3 / (three_k * (three_k + 1.0));
+    f += a;
+    g += b;
+    // f' term: 3k a_k x^{3k-1} = a_{k} * 3k / x; written without dividing by x.
+    fp += a * three_k / (x == 0.0 ? 1.0 : x);
+    gp += b * (three_k + 1.0) / (x == 0.0 ? 1.0 : x);
+    if (std::abs(a) + std::abs(b) < 1e-18 * (std::abs(f) + std::abs(g))) break;
+  }
+  if (x == 0.0) {
+    fp = 0.0;
+    gp = 1.0;
+  }
+  ScaledAiry out;
+  out.ai = c1 * f - c2 * g;
+  out.bi = sqrt3 * (c1 * f + c2 * g);
+  out.ai_prime = c1 * fp - c2 * gp;
+  out.bi_prime = sqrt3 * (c1 * fp + c2 * gp);
+  if (x > 0.0) {
+    out.zeta = 2.0 / 3.0 * x * std::sqrt(x);
+    const double grow = std::exp(out.zeta);
+    out.ai *= grow;
+    out.ai_prime *= grow;
+    out.bi /= grow;
+    out.bi_prime /= grow;
+  }
+  return out;
+}
+
+}  // namespace
+
 ScaledAiry scaled_airy(double x) {
+  if (x >= kAiryMaclaurinLow && x <= kAiryMaclaurinHigh) return maclaurin_airy(x);
+  return scaled_airy_boost(x);
+}
+
+ScaledAiry scaled_airy_boost(double x) {
   ScaledAiry out;
   if (x <= 0.0) {
     out.ai = boost::math::airy_ai(x);

@@ -21,7 +21,17 @@ struct ScaledAiry {
 /// still far from overflow.
 inline constexpr double kAirySeriesThreshold = 25.0;
 
+/// On [kAiryMaclaurinLow, kAiryMaclaurinHigh] the Maclaurin series is used instead of Boost (10x
+/// faster, all four functions at once): its terms peak near e^{(2/3)|x|^{3/2}}, so the rounding
+/// error relative to the functions' size stays below ~1e-13 there (tested against Boost).
+inline constexpr double kAiryMaclaurinLow = -5.0;
+inline constexpr double kAiryMaclaurinHigh = 3.0;
+
 /// Scaled Ai, Ai', Bi, Bi' at x (any finite x).
 ScaledAiry scaled_airy(double x);
+
+/// The same without the Maclaurin fast path: Boost.Math up to kAirySeriesThreshold, the
+/// asymptotic series above it (for tests and comparison).
+ScaledAiry scaled_airy_boost(double x);
 
 }  // namespace catena::internal
