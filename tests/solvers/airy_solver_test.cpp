@@ -197,6 +197,30 @@ TEST(AirySolver, ModesSatisfyTheBoundaryConditionsAndResembleEq34) {
   }
 }
 
+TEST(AirySolver, Eq34ShapesConvergeToTheAiryModesAsEpsSquaredInTheHybridRegion) {
+  // lambda^2 = 38, phi = 30 deg: the first two modes are hybrid. max |w34 - w_airy| measured
+  // 1.34e-3 (eps 0.05) and 5.80e-3 (eps 0.1): observed order 2.1.
+  double previous = 0.0;
+  for (double eps : {0.05, 0.1}) {
+    const Solved s = solve(eps, 30.0, 38.0);
+    SolveRequest request;
+    request.inplane_modes = 1;
+    request.shapes = true;
+    request.points = 201;
+    const SolverOutput airy = solve_airy(s.problem, s.statics, s.groups, request);
+    const SolverOutput asym = solve_asymptotic(s.problem, s.statics, s.groups, request);
+    ASSERT_TRUE(airy.inplane && asym.inplane);
+    const double difference =
+        (airy.inplane->modes[0].w - asym.inplane->modes[0].w).cwiseAbs().maxCoeff();
+    EXPECT_LE(difference, eps * eps) << "eps " << eps;
+    if (previous > 0.0) {
+      const double order = std::log(difference / previous) / std::log(2.0);
+      EXPECT_GE(order, 1.7) << "observed order " << order;
+    }
+    previous = difference;
+  }
+}
+
 TEST(AirySolver, DeclinesHorizontalAndVerticalChords) {
   const Solved horizontal = solve(0.1, 0.0, 30.0);
   SolveRequest request;
