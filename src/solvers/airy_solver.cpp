@@ -487,6 +487,12 @@ SolverOutput solve_airy(const Problem& problem,
         }
       }
     }
+    if (found > 0 && scan.roots.front() < 1.1 * scan.cutoff_kl) {
+      result.summary.warnings.push_back(fmt::format(
+          "the first root kL/pi = {:.4g} lies within 10% of the spurious-root cutoff {:.4g}: it may "
+          "be the model's spurious low root (eps = {:.3g} is large)",
+          scan.roots.front() / kPi, scan.cutoff_kl / kPi, eps));
+    }
     if (found < request.inplane_modes) {
       complete = false;
       result.summary.termination = Termination::NoConvergence;
@@ -589,7 +595,7 @@ SolverEntry make_airy_entry() {
   entry.knobs = {
       {"curvature_fit", "linearisation of Q(s): \"tangent\" (default), \"secant\", \"paper\""},
       {"scan_step", "scan step in kL/pi, default 0.05, in [1e-4, 0.5]"},
-      {"cutoff_fraction", "spurious-root cutoff as a fraction of the string bound, default 0.6"},
+      {"cutoff_fraction", "spurious-root cutoff as a fraction of the string bound, default 0.75"},
       {"max_k_l_over_pi", "scan limit in kL/pi (0: 2 modes + 20)"},
       {"tolerance_bits", "root tolerance in bits, default 50, in [20, 53]"},
       {"eps_warning_threshold", "eps above which a validity warning is given; default 0.3"},

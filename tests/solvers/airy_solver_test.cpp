@@ -221,6 +221,44 @@ TEST(AirySolver, Eq34ShapesConvergeToTheAiryModesAsEpsSquaredInTheHybridRegion) 
   }
 }
 
+TEST(AirySolver, FallingChordHasTheSameFrequencies) {
+  // The same physical cable described from its upper end: Q0 < 0 (negative cube root kappa).
+  const Solved rising = solve(0.18, 23.46, 38.0);
+  Problem falling = rising.problem;
+  const double L = rising.problem.cable.length_m;
+  falling.prescribed_forces = EndForces{rising.statics.horizontal_force_n(),
+                                        -rising.statics.vertical_force_n(L)};
+  falling.supports.a_m = Vec2::Zero();
+  falling.supports.b_m = catenary_end_offset(falling.cable, falling.prescribed_forces->horizontal_n,
+                                             falling.prescribed_forces->vertical_a_n);
+  const StaticSolution statics = solve_statics(falling);
+  const DimensionlessGroups groups = compute_dimensionless_groups(falling, statics);
+  ASSERT_LT(groups.chord_angle_rad, 0.0);
+  const std::vector<double> up = airy_k_l_over_pi(rising, 4);
+  const std::vector<double> down = airy_k_l_over_pi(Solved{falling, statics, groups}, 4);
+  ASSERT_EQ(up.size(), 4u);
+  ASSERT_EQ(down.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_LE(relative_error(up[i], down[i]), 1e-11) << i;
+}
+
+TEST(AirySolver, SkipsTheModelsSpuriousLowRoot) {
+  // The Airy determinant has a root at kL = O(eps) (WKB meaningless there); it lies below the
+  // cutoff, and the first returned root is the physical one near kL = pi.
+  for (double eps : {0.1, 0.5, 1.0}) {
+    const Solved s = solve(eps, 45.0, 40.0);
+    const double first = airy_k_l_over_pi(s, 1).at(0);
+    double previous = airy_frequency_determinant(s.problem, s.statics, s.groups, 0.01 * kPi);
+    int spurious = 0;
+    for (double q = 0.012; q < 0.75 * first; q += 0.002) {
+      const double d = airy_frequency_determinant(s.problem, s.statics, s.groups, q * kPi);
+      spurious += (d > 0.0) != (previous > 0.0);
+      previous = d;
+    }
+    EXPECT_EQ(spurious, 1) << "eps " << eps;
+    EXPECT_GT(first, 1.5) << "eps " << eps;  // lambda^2 = 40 is near cross-over: kL/pi ~ 1.8-2
+  }
+}
+
 TEST(AirySolver, DeclinesHorizontalAndVerticalChords) {
   const Solved horizontal = solve(0.1, 0.0, 30.0);
   SolveRequest request;

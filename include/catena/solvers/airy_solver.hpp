@@ -75,8 +75,9 @@ struct AirySolverOptions {
   /// |det| minimum search; smaller steps only cost time.
   double scan_step_k_l_over_pi = 0.05;
   /// Roots below cutoff_fraction * pi sqrt(min(T/(1+e))/T0) (in kL) are discarded as spurious.
-  /// In (0, 1).
-  double cutoff_fraction = 0.6;
+  /// In (0, 1). Measured: the spurious root lies at kL/pi ~ 0.05-0.4 for eps <= 0.5 and up to
+  /// 0.56 at eps = 1 (phi = 10 deg, lambda^2 = 1e3), where this cutoff is 0.74.
+  double cutoff_fraction = 0.75;
   /// The scan gives up above this kL/pi (0: automatic, 2 * modes + 20). >= 0.
   double max_k_l_over_pi = 0.0;
   /// Root tolerance: bits of TOMS 748 agreement in kL. In [20, 53].
