@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "catena/solvers/airy_solver.hpp"
+
 #include <cmath>
 #include <vector>
 
@@ -317,6 +319,67 @@ TEST(AsymptoticSolver, RegistryEntryRunsAndRejectsBadKnobs) {
   AsymptoticSolverOptions options;
   options.quadrature_panels = 0;
   EXPECT_THROW(options.validate(), InvalidInput);
+}
+
+}  // namespace
+}  // namespace catena
+
+namespace catena {
+namespace {
+
+TEST(AnalyticSolvers, PhysicalUnitsGiveTheSameDimensionlessAnswers) {
+  // A stay-cable-like problem in SI units and its dimensionless twin built from its own groups:
+  // kL/pi and tau L / T0 must coincide (the builder's twin has L = 1 m, T0 = 1 N, M = 1 kg/m).
+  Problem physical;
+  physical.cable.length_m = 200.0;
+  physical.cable.weight_n_per_m = 800.0;
+  physical.cable.axial_stiffness_n = 4e8;
+  physical.cable.mass_kg_per_m = 80.0;
+  physical.cable.added_mass_kg_per_m = 20.0;
+  physical.supports.a_m = Vec2(0.0, 0.0);
+  physical.supports.b_m = Vec2(184.0, 78.0);
+  const StaticSolution statics = solve_statics(physical);
+  const DimensionlessGroups groups = compute_dimensionless_groups(physical, statics);
+  ASSERT_LT(groups.eps, 0.3);
+  const Problem twin = make_taut_inclined_problem(groups.eps, groups.chord_angle_rad * 180.0 / kPi,
+                                                  groups.lambda2, groups.mass_ratio);
+  const StaticSolution twin_statics = solve_statics(twin);
+  const DimensionlessGroups twin_groups = compute_dimensionless_groups(twin, twin_statics);
+  SolveRequest request;
+  request.inplane_modes = 4;
+  request.outofplane_modes = 2;
+  request.shapes = true;
+  request.tension = true;
+  const double L = physical.cable.length_m;
+  const double T0 = groups.t0_n;
+  const SolverOutput a = solve_asymptotic(physical, statics, groups, request);
+  const SolverOutput b = solve_asymptotic(twin, twin_statics, twin_groups, request);
+  ASSERT_TRUE(a.inplane && b.inplane && a.outofplane && b.outofplane);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Mode& x = a.inplane->modes[i];
+    const Mode& y = b.inplane->modes[i];
+    EXPECT_LE(relative_error(x.k_l_over_pi, y.k_l_over_pi), 1e-10) << i;
+    EXPECT_LE(relative_error(x.max_abs_tension_n * L / T0, y.max_abs_tension_n), 1e-8) << i;
+    EXPECT_LE((x.w - y.w).cwiseAbs().maxCoeff(), 1e-8) << i;
+    EXPECT_LE((x.u - y.u).cwiseAbs().maxCoeff(), 1e-8) << i;
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_LE(relative_error(a.outofplane->modes[i].k_l_over_pi, b.outofplane->modes[i].k_l_over_pi), 1e-10);
+  }
+  // The airy solver on the same pair (its roots are refined to 50 bits).
+  const SolverOutput c = solve_airy(physical, statics, groups, request);
+  const SolverOutput d = solve_airy(twin, twin_statics, twin_groups, request);
+  ASSERT_TRUE(c.inplane && d.inplane);
+  ASSERT_EQ(c.inplane->modes.size(), 4u);
+  ASSERT_EQ(d.inplane->modes.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Mode& x = c.inplane->modes[i];
+    const Mode& y = d.inplane->modes[i];
+    EXPECT_LE(relative_error(x.k_l_over_pi, y.k_l_over_pi), 1e-10) << i;
+    EXPECT_LE(relative_error(x.max_abs_tension_n * L / T0, y.max_abs_tension_n), 1e-7) << i;
+    EXPECT_LE((x.w - y.w).cwiseAbs().maxCoeff(), 1e-7) << i;
+    EXPECT_LE((x.u - y.u).cwiseAbs().maxCoeff(), 1e-7) << i;
+  }
 }
 
 }  // namespace
