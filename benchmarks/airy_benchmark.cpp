@@ -5,8 +5,7 @@
 // which shows that coarse steps lose nothing (close pairs come from the |det| minimum search).
 //
 // benchmarks/CMakeLists.txt is shared; to build by hand from the repository root:
-//   g++ -std=c++20 -O2 -DNDEBUG -Iinclude -Isrc -I/usr/include/eigen3 benchmarks/airy_benchmark.cpp \
-//       build/libcatena.a -lfmt -lbenchmark -lpthread -o build/airy_benchmark
+//   g++ -std=c++20 -O2 -DNDEBUG -Iinclude -Isrc -I/usr/include/eigen3 benchmarks/airy_benchmark.cpp build/libcatena.a -lfmt -lbenchmark -lpthread -o build/airy_benchmark
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

@@ -3,8 +3,7 @@
 // Scene: eps = 0.18, phi = 23.46 deg, lambda^2 = 38 (the paper's hybrid-region case).
 //
 // benchmarks/CMakeLists.txt is shared; to build by hand from the repository root:
-//   g++ -std=c++20 -O2 -DNDEBUG -Iinclude -Isrc -I/usr/include/eigen3 benchmarks/asymptotic_benchmark.cpp \
-//       build/libcatena.a -lfmt -lbenchmark -lpthread -o build/asymptotic_benchmark
+//   g++ -std=c++20 -O2 -DNDEBUG -Iinclude -Isrc -I/usr/include/eigen3 benchmarks/asymptotic_benchmark.cpp build/libcatena.a -lfmt -lbenchmark -lpthread -o build/asymptotic_benchmark
 #include <benchmark/benchmark.h>
 
 #include "catena/models/problem_builders.hpp"

@@ -11,14 +11,15 @@
 //    the Airy model, eps = 0.18, phi = 23.46 deg, h = 1.
 //
 // Build and run (from the repository root, after building the library in build/):
-//   g++ -std=c++20 -O2 -Iinclude -Isrc -I/usr/include/eigen3 verification/tools/analytic_grinfogel_shapes.cpp \
-//       build/libcatena.a -lfmt -o build/analytic_grinfogel_shapes
+//   g++ -std=c++20 -O2 -Iinclude -Isrc -I/usr/include/eigen3 verification/tools/analytic_grinfogel_shapes.cpp build/libcatena.a -lfmt -o build/analytic_grinfogel_shapes
 //   build/analytic_grinfogel_shapes verification/reference
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
 #include <string>
 
+#include "catena/core/version.hpp"
 #include "catena/io/csv_table.hpp"
 #include "catena/models/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
@@ -62,6 +63,16 @@ Solved make(double eps, double phi_deg, double lambda2) {
   return s;
 }
 
+// "generated: <UTC date>, catena <version> (git <hash>, <compiler>, <build type>)".
+std::string generated_line() {
+  const auto days = std::chrono::floor<std::chrono::days>(std::chrono::system_clock::now());
+  const std::chrono::year_month_day date{days};
+  return fmt::format("generated: {:04}-{:02}-{:02} UTC, catena {} (git {}, {}, {})",
+                     static_cast<int>(date.year()), static_cast<unsigned>(date.month()),
+                     static_cast<unsigned>(date.day()), catena::version(), catena::git_hash(),
+                     catena::compiler(), catena::build_type());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -82,6 +93,7 @@ int main(int argc, char** argv) {
       "source:    Grinfogel (1984) eqs. (34), (28), (37), (38) (asymptotic solver) vs Triantafyllou's Airy",
       "           model (airy solver, curvature_fit tangent); phi = 30 deg, h = 1, 401 stations",
       "generator: verification/tools/analytic_grinfogel_shapes.cpp (build/run commands in its header)",
+      generated_line(),
       "columns:   max_abs_dw_* = max_s |w - w_airy| with both normalised to max|w| = 1 [-]:",
       "           34 = eq. (34) with eps^2 sin^2(phi) (as in eqs. 29, 32; our reading),",
       "           34_printed = eq. (34) with eps^2 sin(phi) as printed, 28 = eq. (28);",
@@ -136,6 +148,7 @@ int main(int argc, char** argv) {
       "           eq. (38) (asymptotic solver) vs Triantafyllou's Airy model (airy solver), eps = 0.18,",
       "           phi = 23.46 deg, h = 1, L = 1 m, T0 = 1 N, M = 1 kg/m",
       "generator: verification/tools/analytic_grinfogel_shapes.cpp (build/run commands in its header)",
+      generated_line(),
       "columns:   tension = max_s |tau| per unit max normal amplitude [N/m] (modal_result.hpp normalisation)",
   };
   sweep.columns = {"lambda2", "k_l_over_pi_eq21", "tension_eq38", "k_l_over_pi_airy", "tension_airy",

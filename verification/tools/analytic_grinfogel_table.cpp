@@ -5,19 +5,19 @@
 // whether they exceed half a unit of the last printed digit (5e-5 in kL/pi).
 //
 // Build and run (from the repository root, after building the library in build/):
-//   g++ -std=c++20 -O2 -Iinclude -Isrc -I/usr/include/eigen3 verification/tools/analytic_grinfogel_table.cpp \
-//       build/libcatena.a -lfmt -o build/analytic_grinfogel_table
-//   build/analytic_grinfogel_table verification/reference/published/grinfogel-1984-table-2-2-frequencies.csv \
-//       verification/reference/grinfogel-table-2-2-comparison.csv
+//   g++ -std=c++20 -O2 -Iinclude -Isrc -I/usr/include/eigen3 verification/tools/analytic_grinfogel_table.cpp build/libcatena.a -lfmt -o build/analytic_grinfogel_table
+//   build/analytic_grinfogel_table verification/reference/published/grinfogel-1984-table-2-2-frequencies.csv verification/reference/grinfogel-table-2-2-comparison.csv
 //
 // The paper gives no mass ratio for these tables; h = m/M = 1 (no added mass) is used (eq. 21
 // does not depend on h; the Airy model does, weakly, through Q = h (M w^2/EA - alpha^2)), and a
 // second airy column with h = 0.5 shows that sensitivity.
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
 #include <string>
 
+#include "catena/core/version.hpp"
 #include "catena/io/csv_table.hpp"
 #include "catena/models/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
@@ -64,6 +64,16 @@ std::string verdict(double difference, int digits) {
   return "disagree";
 }
 
+// "generated: <UTC date>, catena <version> (git <hash>, <compiler>, <build type>)".
+std::string generated_line() {
+  const auto days = std::chrono::floor<std::chrono::days>(std::chrono::system_clock::now());
+  const std::chrono::year_month_day date{days};
+  return fmt::format("generated: {:04}-{:02}-{:02} UTC, catena {} (git {}, {}, {})",
+                     static_cast<int>(date.year()), static_cast<unsigned>(date.month()),
+                     static_cast<unsigned>(date.day()), catena::version(), catena::git_hash(),
+                     catena::compiler(), catena::build_type());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -78,6 +88,7 @@ int main(int argc, char** argv) {
       "source:    Grinfogel (1984) tables after Fig. 2.2 (published/grinfogel-1984-table-2-2-frequencies.csv)",
       "           beside catena's asymptotic (eq. 21) and airy (Triantafyllou's Airy determinant) solvers",
       "generator: verification/tools/analytic_grinfogel_table.cpp (build/run commands in its header)",
+      generated_line(),
       "problem:   make_taut_inclined_problem(eps, phi_deg, lambda2, h = 1); frequencies as kL/pi",
       "columns:   asymptotic_minus_approx, airy_minus_exact = ours - published; *_verdict: 'agree' when",
       "           |difference| <= 5e-5 (half a unit of the last printed digit), 'last-digit' when <= 1.5e-4,",
