@@ -603,7 +603,11 @@ SolverEntry make_airy_entry() {
       {"quadrature_panels", "panels of 20-point Gauss-Legendre for the travel time; default 4"},
   };
   entry.not_applicable_reason = [](const SolveContext& context) -> std::optional<std::string> {
-    return airy_not_applicable_reason(context.problem, context.statics, context.groups);
+    // Structural reasons only: the eps limit is a knob (max_eps, at most 10), which this hook
+    // cannot see; run() applies it and returns NotApplicable itself.
+    AirySolverOptions permissive;
+    permissive.max_eps = 10.0;
+    return airy_not_applicable_reason(context.problem, context.statics, context.groups, permissive);
   };
   entry.validate_knobs = [](const SolverKnobs& knobs) { read_airy_options(knobs); };
   entry.run = [](const SolveContext& context, const SolverKnobs& knobs) {

@@ -319,6 +319,14 @@ TEST(AsymptoticSolver, RegistryEntryRunsAndRejectsBadKnobs) {
   AsymptoticSolverOptions options;
   options.quadrature_panels = 0;
   EXPECT_THROW(options.validate(), InvalidInput);
+
+  // The eps limit is a knob: eps = 1.5 declines by default and runs (with a warning) when allowed.
+  const Solved slack = solve(1.5, 20.0, 50.0);
+  SolveContext slack_context{slack.problem, slack.statics, slack.groups, request};
+  EXPECT_EQ(run_solver(*entry, slack_context, {}).summary.termination, Termination::NotApplicable);
+  const SolverOutput allowed = run_solver(*entry, slack_context, {{"max_eps", 2.0}});
+  EXPECT_EQ(allowed.summary.termination, Termination::Converged) << allowed.summary.message;
+  EXPECT_FALSE(allowed.summary.warnings.empty());
 }
 
 }  // namespace
