@@ -194,6 +194,9 @@ TEST(AirySolver, ModesSatisfyTheBoundaryConditionsAndResembleEq34) {
     EXPECT_GE(mac, 0.999) << "mode " << i + 1;
     EXPECT_GT(a.max_abs_tension_n, 0.0);
     EXPECT_LE(relative_error(a.max_abs_tension_n, b.max_abs_tension_n), 0.1) << "mode " << i + 1;
+    // Same sign convention (tau = t . A Phi', positive when stretching) for the same w scaling.
+    const Index mid = a.tension_n.size() / 2;
+    EXPECT_GT(a.tension_n[mid] * b.tension_n[mid], 0.0) << "mode " << i + 1;
   }
 }
 
