@@ -29,8 +29,10 @@
 /// Numerics. Ai, Bi, Ai', Bi' come from Boost.Math; for arguments above 25 their exponential
 /// factors \f$e^{\mp\frac23 x^{3/2}}\f$ are split off analytically (asymptotic series, DLMF
 /// 9.7.5–9.7.8), and in the determinant each Airy column is divided by its largest exponential
-/// factor, so Bi's growth can neither overflow nor swamp the determinant (tested for arguments up
-/// to 1e4 and lambda^2 up to 1e4). Rows and columns are then equilibrated (positive factors: the
+/// factor, so Bi's growth can neither overflow nor swamp the determinant (the scaled functions
+/// are tested to x = 1e6 through their Wronskian; the solver with Airy arguments up to ~600, i.e.
+/// unscaled Bi ~ e^9500, at phi = 1e-3 deg, and lambda^2 from 0.1 to 1e4). On [-5, 3] a
+/// Maclaurin series replaces Boost for speed (agreement 2e-13). Rows and columns are then equilibrated (positive factors: the
 /// zero set and signs are unchanged). Roots are found by a scan in kL with sign changes, plus a
 /// Brent search at every grid minimum of |det| (two close roots between two samples of equal
 /// sign, as in the hybrid region, show up as such a minimum), refined by TOMS 748.
@@ -69,9 +71,9 @@ std::optional<AiryCurvatureFit> parse_airy_curvature_fit(const std::string& text
 
 /// Options of the airy solver.
 struct AirySolverOptions {
-  /// Linearisation of Q(s) (knob `curvature_fit`).
+  /// Linearisation of Q(s) (knob `curvature_fit`: "tangent" | "secant" | "paper").
   AiryCurvatureFit curvature_fit = AiryCurvatureFit::Tangent;
-  /// Scan step in kL/pi [-]. In [1e-4, 0.5]. Close pairs between two samples are caught by the
+  /// Scan step in kL/pi [-] (knob `scan_step`). In [1e-4, 0.5]. Close pairs between two samples are caught by the
   /// |det| minimum search; smaller steps only cost time.
   double scan_step_k_l_over_pi = 0.05;
   /// Roots below cutoff_fraction * pi sqrt(min(T/(1+e))/T0) (in kL) are discarded as spurious.

@@ -19,8 +19,8 @@
 /// Its two roots \f$t_-(x) < 0 \le t_+(x)\f$ are smooth in x with \f$|t_\pm'| < 1 \le \sec^2 x\f$,
 /// so \f$\tan x - t_\pm(x)\f$ is strictly increasing on every branch of tan: eq. (21) has exactly
 /// one root of each family per branch, \f$x_{n,-} \in ((n-\tfrac12)\pi, n\pi]\f$ and
-/// \f$x_{n,+} \in [n\pi, (n+\tfrac12)\pi)\f$. The mode count below any frequency is therefore
-/// exact (no root can be skipped near cross-over, where the two roots of branch n straddle
+/// \f$x_{n,+} \in [n\pi, (n+\tfrac12)\pi)\f$. The count of eq. (21)'s roots below any frequency
+/// is therefore exact (ModalResult::proved_count_below_top counts the model's roots) (no root can be skipped near cross-over, where the two roots of branch n straddle
 /// \f$x = n\pi\f$). The '+' root of branch 0, at \f$x \approx (c/(1/3 + 4/\lambda^2))^{1/4}\f$,
 /// is an artefact of the correction term (which dominates there because the main term vanishes
 /// like \f$x^4\f$) and is discarded: no in-plane mode lies below the string bound kL ~ pi.
