@@ -238,14 +238,22 @@ SolverOutput solve_asymptotic(const Problem& problem,
     summary.iterations += iterations;
     const double axial_kl = first_axial_k_l(eps, phi, lambda2, groups.mass_ratio);
     std::vector<int> hybrid;
+    std::string character;
     for (std::size_t i = 0; i < roots.size(); ++i) {
       const double kl = roots[i];
+      // Roots alternate between the '-' family (even i) and the '+' family; the family that
+      // carries Irvine's symmetric root is '-' above cross-over (kL > lambda) and '+' below.
+      const bool above_cross_over = !std::isinf(lambda2) && kl * kl > lambda2;
+      const bool symmetric_like = (i % 2 == 0) == above_cross_over;
       Mode mode;
       mode.index = static_cast<int>(i) + 1;
       internal::set_mode_frequency(mode, groups.omega_from_k_l_over_pi(kl / kPi), groups);
       mode.relative_error_estimate = error_estimate;
       const double detuning = std::isinf(lambda2) ? -1.0 : kl * kl / lambda2 - 1.0;
-      if (std::abs(detuning) < 2.0 * eps * std::abs(std::sin(phi))) hybrid.push_back(mode.index);
+      const bool in_hybrid_region = std::abs(detuning) < 2.0 * eps * std::abs(std::sin(phi));
+      if (in_hybrid_region) hybrid.push_back(mode.index);
+      character += fmt::format("{}{} {}", i ? ", " : "", mode.index,
+                               in_hybrid_region ? "H" : (symmetric_like ? "S" : "A"));
       if (need_shape) {
         internal::AsymptoticModeShape shape = internal::asymptotic_mode_shape(
             stations, cable.length_m, kl, eps, phi, lambda2, options.shape_formula);
@@ -282,6 +290,10 @@ SolverOutput solve_asymptotic(const Problem& problem,
     result.summary.iterations = iterations;
     result.summary.max_error_estimate = error_estimate;
     result.summary.resolution = summary.resolution;
+    result.summary.notes.push_back(
+        "mode character (S symmetric-like, A antisymmetric-like, H hybrid: |k^2L^2/lambda^2 - 1| "
+        "< 2 eps sin(phi_a)): " +
+        character);
     if (!hybrid.empty()) {
       std::string list;
       for (int index : hybrid) list += (list.empty() ? "" : ", ") + std::to_string(index);

@@ -114,6 +114,30 @@ TEST(GrinfogelEq21, SeparatesTheCloseNearCrossOverPair) {
   }
 }
 
+TEST(AsymptoticSolver, LabelsModeCharacterAsIrvineForAHorizontalCable) {
+  for (double lambda2 : {20.0, 100.0, 1000.0}) {
+    const Problem problem = make_taut_inclined_problem(0.05, 0.0, lambda2, 1.0);
+    const StaticSolution statics = solve_statics(problem);
+    const DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
+    SolveRequest request;
+    request.inplane_modes = 6;
+    const SolverOutput out = solve_asymptotic(problem, statics, groups, request);
+    std::string expected;
+    for (const Mode& mode : out.inplane->modes) {
+      const double n = mode.k_l_over_pi / 2.0;
+      const bool antisymmetric = std::abs(n - std::round(n)) < 1e-12;
+      expected += (mode.index > 1 ? ", " : "") + std::to_string(mode.index) + (antisymmetric ? " A" : " S");
+    }
+    bool found = false;
+    for (const std::string& note : out.inplane->summary.notes) {
+      if (note.find("mode character") == std::string::npos) continue;
+      found = true;
+      EXPECT_NE(note.find(expected), std::string::npos) << note << " expected " << expected;
+    }
+    EXPECT_TRUE(found);
+  }
+}
+
 TEST(GrinfogelEq21, RejectsBadArguments) {
   EXPECT_THROW(grinfogel_eq21_roots(-1, 0.1, 0.1, 10.0), InvalidInput);
   EXPECT_THROW(grinfogel_eq21_roots(2, 0.1, 0.1, 0.0), InvalidInput);
@@ -150,6 +174,15 @@ TEST(AsymptoticSolver, FrequenciesAreEq21RootsWithEpsSquaredErrorEstimate) {
     EXPECT_DOUBLE_EQ(mode.relative_error_estimate, s.groups.eps * s.groups.eps);
   }
   EXPECT_EQ(out.outofplane->modes.size(), 3u);
+  // lambda^2 = 38 ~ 4 pi^2: the first two modes are hybrid, then Irvine's alternation.
+  bool found = false;
+  for (const std::string& note : out.inplane->summary.notes) {
+    if (note.find("mode character") != std::string::npos) {
+      found = true;
+      EXPECT_NE(note.find("1 H, 2 H, 3 S, 4 A, 5 S, 6 A"), std::string::npos) << note;
+    }
+  }
+  EXPECT_TRUE(found);
 }
 
 TEST(AsymptoticSolver, WkbOutOfPlaneMatchesIndependentQuadrature) {
