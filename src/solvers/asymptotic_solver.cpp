@@ -31,7 +31,8 @@ struct TanRoots {
 TanRoots tan_roots(double x, double c, double inv_lambda2) {
   const double p = 4.0 * x * x * x * inv_lambda2 - x;
   if (c == 0.0) return p > 0.0 ? TanRoots{-p, 0.0} : TanRoots{0.0, -p};
-  const double root = std::sqrt(p * p + 4.0 * c * (1.0 + c));
+  // hypot: p^2 overflows for lambda^2 -> 0 (p ~ x^3 / lambda^2).
+  const double root = std::hypot(p, 2.0 * std::sqrt(c * (1.0 + c)));
   if (p > 0.0) {
     const double minus = -(p + root) / (2.0 * (1.0 + c));
     return {minus, -c / ((1.0 + c) * minus)};

@@ -138,6 +138,36 @@ TEST(AsymptoticSolver, LabelsModeCharacterAsIrvineForAHorizontalCable) {
   }
 }
 
+TEST(GrinfogelEq21, ExtremeParametersGiveFiniteOrderedBracketedRoots) {
+  for (double lambda2 : {1e-12, 1e-6, 1.0, 1e6, 1e12, kInfinity}) {
+    for (double eps : {1e-8, 1e-3, 1.0}) {
+      for (double phi_deg : {0.0, 1e-6, 45.0, 89.9}) {
+        const auto roots = grinfogel_eq21_roots(8, eps, phi_deg * kPi / 180.0, lambda2);
+        ASSERT_EQ(roots.size(), 8u);
+        for (std::size_t i = 0; i < roots.size(); ++i) {
+          ASSERT_TRUE(std::isfinite(roots[i]));
+          // Mode i lies in its half-branch: x in ((n - 1/2) pi, n pi] or [n pi, (n + 1/2) pi).
+          const int n = static_cast<int>(i / 2) + 1;
+          const double x = 0.5 * roots[i];
+          if (i % 2 == 0) {
+            EXPECT_GE(x, (n - 0.5) * kPi * (1.0 - 1e-15));
+            EXPECT_LE(x, n * kPi * (1.0 + 1e-15));
+          } else {
+            EXPECT_GE(x, n * kPi * (1.0 - 1e-15));
+            EXPECT_LE(x, (n + 0.5) * kPi * (1.0 + 1e-15));
+          }
+          if (i > 0) {
+            EXPECT_GE(roots[i], roots[i - 1]);
+          }
+        }
+      }
+    }
+  }
+  // lambda^2 -> 0 is the taut string: kL -> pi, 2 pi, 3 pi, ...
+  const auto string = grinfogel_eq21_roots(4, 1e-3, 0.3, 1e-12);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(string[static_cast<std::size_t>(i)], (i + 1) * kPi, 1e-5);
+}
+
 TEST(GrinfogelEq21, RejectsBadArguments) {
   EXPECT_THROW(grinfogel_eq21_roots(-1, 0.1, 0.1, 10.0), InvalidInput);
   EXPECT_THROW(grinfogel_eq21_roots(2, 0.1, 0.1, 0.0), InvalidInput);
