@@ -570,6 +570,10 @@ AirySolverOptions read_airy_options(const SolverKnobs& knobs) {
   }
   options.curvature_fit = *parsed;
   options.scan_step_k_l_over_pi = reader.get_double("scan_step", options.scan_step_k_l_over_pi);
+  if (!(options.scan_step_k_l_over_pi >= 1e-4 && options.scan_step_k_l_over_pi <= 0.5)) {
+    throw InvalidInput(fmt::format("{} = {}: must be in [1e-4, 0.5] (kL/pi)", reader.key("scan_step"),
+                                   options.scan_step_k_l_over_pi));
+  }
   options.cutoff_fraction = reader.get_double("cutoff_fraction", options.cutoff_fraction);
   options.max_k_l_over_pi = reader.get_double("max_k_l_over_pi", options.max_k_l_over_pi);
   options.tolerance_bits = static_cast<int>(reader.get_integer("tolerance_bits", options.tolerance_bits));

@@ -315,7 +315,12 @@ TEST(AirySolver, RegistryEntryRunsAndRejectsBadKnobs) {
   ASSERT_TRUE(out.outofplane);
   EXPECT_EQ(out.outofplane->modes.size(), 2u);
   EXPECT_THROW(entry->validate_knobs({{"curvature_fit", std::string("cubic")}}), InvalidInput);
-  EXPECT_THROW(entry->validate_knobs({{"scan_step", 0.0}}), InvalidInput);
+  try {
+    entry->validate_knobs({{"scan_step", 0.0}});
+    ADD_FAILURE() << "scan_step = 0 accepted";
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find("[solvers.airy].scan_step"), std::string::npos) << error.what();
+  }
   EXPECT_THROW(entry->validate_knobs({{"elements", 10L}}), InvalidInput);
   AirySolverOptions options;
   options.tolerance_bits = 60;
