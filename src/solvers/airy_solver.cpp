@@ -409,8 +409,7 @@ SolverOutput solve_airy(const Problem& problem,
   const double M = cable.normal_mass_kg_per_m();
   const Vector stations = request.stations_m(cable.length_m);
   const bool need_shape = request.shapes || request.tension;
-  summary.iterations = 0;
-  summary.operations = 0;
+  summary.operations = 0;  // determinant evaluations
   bool complete = true;
 
   if (request.inplane_modes > 0) {
@@ -463,6 +462,7 @@ SolverOutput solve_airy(const Problem& problem,
     result.summary.resolution = summary.resolution;
     result.summary.max_error_estimate = error_estimate;
     result.summary.max_residual = need_shape ? max_residual : -1.0;
+    summary.max_residual = result.summary.max_residual;
     const int found = static_cast<int>(result.modes.size());
     result.summary.notes.push_back(fmt::format(
         "scan kL/pi in [{:.4g}, {:.4g}] ({} determinants): {} sign changes, {} close pairs found "
