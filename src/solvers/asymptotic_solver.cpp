@@ -213,8 +213,8 @@ SolverOutput solve_asymptotic(const Problem& problem,
   if (eps > options.eps_warning_threshold) {
     summary.warnings.push_back(fmt::format(
         "eps = {:.4g} > {:.3g}: outside the region where the O(eps^2) expansion is meaningful; "
-        "expect errors of order eps^2 = {:.2g} or worse (the paper's own eps = 0.49 table differs "
-        "from its 'exact' column by up to 1.5e-2)",
+        "expect errors of order eps^2 = {:.2g} or worse (in the paper's eps = 0.49 table 'approx' "
+        "and 'exact' differ by up to 0.029 in kL/pi)",
         eps, options.eps_warning_threshold, error_estimate));
   }
   if (cable.is_inextensible()) {
