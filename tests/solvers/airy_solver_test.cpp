@@ -83,6 +83,20 @@ TEST(ScaledAiry, MaclaurinFastPathMatchesBoost) {
   }
 }
 
+TEST(ScaledAiry, TaylorFastPathMatchesBoost) {
+  // Nodes every 0.5 from Boost; Taylor to |h| <= 0.25. Same envelope-relative measure.
+  constexpr double kTol = 2e-13;
+  for (double x = internal::kAiryTaylorLow; x <= internal::kAirySeriesThreshold; x += 0.0137) {
+    const internal::ScaledAiry fast = internal::scaled_airy(x);
+    const internal::ScaledAiry ref = internal::scaled_airy_boost(x);
+    const double size = std::max(1.0, std::pow(std::abs(x), 0.25));
+    EXPECT_NEAR(fast.ai, ref.ai, kTol * size) << x;
+    EXPECT_NEAR(fast.bi, ref.bi, kTol * size) << x;
+    EXPECT_NEAR(fast.ai_prime, ref.ai_prime, kTol * size) << x;
+    EXPECT_NEAR(fast.bi_prime, ref.bi_prime, kTol * size) << x;
+  }
+}
+
 TEST(ScaledAiry, WronskianHoldsWhereTheUnscaledFunctionsOverflow) {
   // Ai Bi' - Ai' Bi = 1/pi: the exponents cancel, so the scaled values must satisfy it exactly.
   for (double x : {-50.0, -3.0, 0.0, 0.5, 5.0, 24.0, 26.0, 100.0, 1e3, 1e4, 1e6}) {

@@ -27,6 +27,10 @@ inline constexpr double kAirySeriesThreshold = 25.0;
 inline constexpr double kAiryMaclaurinLow = -5.0;
 inline constexpr double kAiryMaclaurinHigh = 3.0;
 
+/// Elsewhere on [kAiryTaylorLow, kAirySeriesThreshold]: Taylor series about nodes 0.5 apart
+/// whose values come from Boost (computed once). Below kAiryTaylorLow: Boost.
+inline constexpr double kAiryTaylorLow = -40.0;
+
 /// Scaled Ai, Ai', Bi, Bi' at x (any finite x).
 ScaledAiry scaled_airy(double x);
 
