@@ -5,7 +5,9 @@
 // which shows that coarse steps lose nothing (close pairs come from the |det| minimum search).
 //
 // benchmarks/CMakeLists.txt is shared; to build by hand from the repository root:
+// clang-format off
 //   g++ -std=c++20 -O2 -DNDEBUG -Iinclude -Isrc -I/usr/include/eigen3 benchmarks/airy_benchmark.cpp build/libcatena.a -lfmt -lbenchmark -lpthread -o build/airy_benchmark
+// clang-format on
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -29,7 +31,8 @@ struct Scene {
 double max_difference(const catena::SolverOutput& a, const catena::SolverOutput& b) {
   double worst = 0.0;
   for (std::size_t i = 0; i < std::min(a.inplane->modes.size(), b.inplane->modes.size()); ++i) {
-    worst = std::max(worst, std::abs(a.inplane->modes[i].omega_rad_s / b.inplane->modes[i].omega_rad_s - 1.0));
+    worst = std::max(
+        worst, std::abs(a.inplane->modes[i].omega_rad_s / b.inplane->modes[i].omega_rad_s - 1.0));
   }
   return worst;
 }

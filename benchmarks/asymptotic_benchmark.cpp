@@ -3,7 +3,9 @@
 // Scene: eps = 0.18, phi = 23.46 deg, lambda^2 = 38 (the paper's hybrid-region case).
 //
 // benchmarks/CMakeLists.txt is shared; to build by hand from the repository root:
+// clang-format off
 //   g++ -std=c++20 -O2 -DNDEBUG -Iinclude -Isrc -I/usr/include/eigen3 benchmarks/asymptotic_benchmark.cpp build/libcatena.a -lfmt -lbenchmark -lpthread -o build/asymptotic_benchmark
+// clang-format on
 #include <benchmark/benchmark.h>
 
 #include "catena/models/problem_builders.hpp"

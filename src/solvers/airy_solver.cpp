@@ -2,13 +2,14 @@
 // determinant, its roots and null vectors. Model and notation in airy_solver.hpp.
 #include "catena/solvers/airy_solver.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
@@ -24,10 +25,10 @@ namespace {
 // Everything of the model that does not depend on omega.
 struct AiryModel {
   double length = 1.0;
-  double mass = 1.0;         // m [kg/m]
-  double normal_mass = 1.0;  // M [kg/m]
-  double h = 1.0;            // m / M
-  double inverse_ea = 0.0;   // 1/EA [1/N], 0 when inextensible
+  double mass = 1.0;                 // m [kg/m]
+  double normal_mass = 1.0;          // M [kg/m]
+  double h = 1.0;                    // m / M
+  double inverse_ea = 0.0;           // 1/EA [1/N], 0 when inextensible
   double alpha_end[2] = {0.0, 0.0};  // static curvature at s = 0, L [1/m]
   double c_end[2] = {1.0, 1.0};      // sqrt(T/M) at s = 0, L [m/s]
   double travel_time = 0.0;          // int_0^L ds / c [s]
@@ -43,8 +44,10 @@ double curvature(const StaticSolution& statics, double s) {
   return statics.cable().weight_n_per_m * statics.horizontal_force_n() / (T * T);
 }
 
-AiryModel build_model(const Problem& problem, const StaticSolution& statics,
-                      const DimensionlessGroups& groups, const AirySolverOptions& options) {
+AiryModel build_model(const Problem& problem,
+                      const StaticSolution& statics,
+                      const DimensionlessGroups& groups,
+                      const AirySolverOptions& options) {
   const CableProperties& cable = problem.cable;
   AiryModel model;
   model.length = cable.length_m;
@@ -79,15 +82,14 @@ AiryModel build_model(const Problem& problem, const StaticSolution& statics,
     case AiryCurvatureFit::Secant:
       model.s_ref = 0.0;
       model.a2_ref = model.alpha_end[0] * model.alpha_end[0];
-      model.a2_slope =
-          (model.alpha_end[1] * model.alpha_end[1] - model.a2_ref) / model.length;
+      model.a2_slope = (model.alpha_end[1] * model.alpha_end[1] - model.a2_ref) / model.length;
       break;
     case AiryCurvatureFit::Paper: {
       const double alpha0 = groups.eps * std::cos(groups.chord_angle_rad) / model.length;
       model.s_ref = 0.5 * model.length;
       model.a2_ref = alpha0 * alpha0;
-      model.a2_slope = -4.0 * groups.eps * std::sin(groups.chord_angle_rad) * alpha0 * alpha0 /
-                       model.length;
+      model.a2_slope =
+          -4.0 * groups.eps * std::sin(groups.chord_angle_rad) * alpha0 * alpha0 / model.length;
       break;
     }
   }
@@ -111,9 +113,17 @@ struct ColumnExponents {
 
 // Raw (unequilibrated) boundary-system rows at station s: the w row and the u row, columns
 // (Ai, Bi, cos, sin). `alpha`, `c`, `phase` are the statics at s and W(s).
-void station_rows(const AiryModel& model, double omega, double s, double alpha, double c,
-                  double phase, const ColumnExponents& exponents, double w_row[4],
-                  double u_row[4], double* slow_ai = nullptr, double* slow_bi = nullptr) {
+void station_rows(const AiryModel& model,
+                  double omega,
+                  double s,
+                  double alpha,
+                  double c,
+                  double phase,
+                  const ColumnExponents& exponents,
+                  double w_row[4],
+                  double u_row[4],
+                  double* slow_ai = nullptr,
+                  double* slow_bi = nullptr) {
   const internal::ScaledAiry airy = internal::scaled_airy(airy_argument(model, omega, s));
   const double ai_factor = std::exp(-(airy.zeta - exponents.ai_ref));
   const double bi_factor = std::exp(airy.zeta - exponents.bi_ref);
@@ -192,16 +202,20 @@ struct RootScan {
   double limit_kl = 0.0;
 };
 
-RootScan scan_roots(const AiryModel& model, const DimensionlessGroups& groups,
-                    const StaticSolution& statics, int count, const AirySolverOptions& options) {
+RootScan scan_roots(const AiryModel& model,
+                    const DimensionlessGroups& groups,
+                    const StaticSolution& statics,
+                    int count,
+                    const AirySolverOptions& options) {
   RootScan scan;
   // Rigorous lower bound of the first in-plane frequency of the full model (Rayleigh with
   // A >= T/(1+e) I and Mmat <= M I): the string with the smallest tension.
   const double L = model.length;
   const double V_A = statics.vertical_force_n(0.0);
   const double V_B = statics.vertical_force_n(L);
-  const double t_min = (V_A <= 0.0 && V_B >= 0.0) ? statics.horizontal_force_n()
-                                                   : std::min(statics.tension_n(0.0), statics.tension_n(L));
+  const double t_min = (V_A <= 0.0 && V_B >= 0.0)
+                           ? statics.horizontal_force_n()
+                           : std::min(statics.tension_n(0.0), statics.tension_n(L));
   const double stiffness_min = t_min / (1.0 + t_min * model.inverse_ea);
   scan.cutoff_kl = options.cutoff_fraction * kPi * std::sqrt(stiffness_min / groups.t0_n);
   const double limit_over_pi =
@@ -216,7 +230,8 @@ RootScan scan_roots(const AiryModel& model, const DimensionlessGroups& groups,
   const auto tolerance = boost::math::tools::eps_tolerance<double>(options.tolerance_bits);
   auto refine = [&](double a, double b, double fa, double fb) {
     boost::uintmax_t iterations = 100;
-    const auto bracket = boost::math::tools::toms748_solve(det, a, b, fa, fb, tolerance, iterations);
+    const auto bracket =
+        boost::math::tools::toms748_solve(det, a, b, fa, fb, tolerance, iterations);
     scan.roots.push_back(0.5 * (bracket.first + bracket.second));
   };
 
@@ -224,8 +239,8 @@ RootScan scan_roots(const AiryModel& model, const DimensionlessGroups& groups,
   bool have_pp = false;
   double kl_p = scan.cutoff_kl;
   double d_p = det(kl_p);
-  for (double kl = kl_p + step; kl <= scan.limit_kl + 0.5 * step &&
-                                static_cast<int>(scan.roots.size()) < count;
+  for (double kl = kl_p + step;
+       kl <= scan.limit_kl + 0.5 * step && static_cast<int>(scan.roots.size()) < count;
        kl += step) {
     const double d = det(kl);
     if (d == 0.0) {
@@ -255,13 +270,19 @@ RootScan scan_roots(const AiryModel& model, const DimensionlessGroups& groups,
     d_p = d;
   }
   std::sort(scan.roots.begin(), scan.roots.end());
-  if (static_cast<int>(scan.roots.size()) > count) scan.roots.resize(static_cast<std::size_t>(count));
+  if (static_cast<int>(scan.roots.size()) > count)
+    scan.roots.resize(static_cast<std::size_t>(count));
   return scan;
 }
 
 // Mode shape and tension from the null vector of the boundary system at omega.
-void fill_mode(const AiryModel& model, const StaticSolution& statics, double omega,
-               const Vector& stations, const Vector& phases, Mode& mode, double& residual) {
+void fill_mode(const AiryModel& model,
+               const StaticSolution& statics,
+               double omega,
+               const Vector& stations,
+               const Vector& phases,
+               Mode& mode,
+               double& residual) {
   const BoundarySystem system = boundary_system(model, omega);
   Eigen::JacobiSVD<Eigen::Matrix4d> svd(system.matrix, Eigen::ComputeFullV);
   const Eigen::Vector4d singular = svd.singularValues();
@@ -290,9 +311,12 @@ void fill_mode(const AiryModel& model, const StaticSolution& statics, double ome
 
 std::string to_string(AiryCurvatureFit fit) {
   switch (fit) {
-    case AiryCurvatureFit::Tangent: return "tangent";
-    case AiryCurvatureFit::Secant: return "secant";
-    case AiryCurvatureFit::Paper: return "paper";
+    case AiryCurvatureFit::Tangent:
+      return "tangent";
+    case AiryCurvatureFit::Secant:
+      return "secant";
+    case AiryCurvatureFit::Paper:
+      return "paper";
   }
   return "?";
 }
@@ -350,9 +374,10 @@ std::optional<std::string> airy_not_applicable_reason(const Problem& problem,
         groups.chord_angle_rad * 180.0 / kPi);
   }
   if (groups.eps > options.max_eps) {
-    return fmt::format("eps = W0 L / T0 = {:.4g} > max_eps = {:.4g}: the Airy model is asymptotic "
-                       "in eps (linearised Q, WKB fast solution)",
-                       groups.eps, options.max_eps);
+    return fmt::format(
+        "eps = W0 L / T0 = {:.4g} > max_eps = {:.4g}: the Airy model is asymptotic "
+        "in eps (linearised Q, WKB fast solution)",
+        groups.eps, options.max_eps);
   }
   return std::nullopt;
 }
@@ -403,7 +428,8 @@ SolverOutput solve_airy(const Problem& problem,
         eps, options.eps_warning_threshold, model_error));
   }
   if (request.forced) {
-    summary.warnings.push_back("forced response is not implemented by the airy solver: not computed");
+    summary.warnings.push_back(
+        "forced response is not implemented by the airy solver: not computed");
   }
   const CableProperties& cable = problem.cable;
   const double M = cable.normal_mass_kg_per_m();
@@ -428,7 +454,8 @@ SolverOutput solve_airy(const Problem& problem,
       auto slowness = [&](double s) { return std::sqrt(M / statics.tension_n(s)); };
       for (Index j = 0; j < stations.size(); ++j) {
         if (stations[j] > previous) {
-          travel += boost::math::quadrature::gauss<double, 20>::integrate(slowness, previous, stations[j]);
+          travel += boost::math::quadrature::gauss<double, 20>::integrate(slowness, previous,
+                                                                          stations[j]);
         }
         previous = stations[j];
         phases[j] = travel;
@@ -476,10 +503,14 @@ SolverOutput solve_airy(const Problem& problem,
       const double axial_kl =
           first_axial_k_l(eps, groups.chord_angle_rad, groups.lambda2, groups.mass_ratio);
       if (scan.roots.back() < 0.5 * axial_kl) {
-        const auto eq21 = grinfogel_eq21_roots(found + 2, eps, groups.chord_angle_rad, groups.lambda2);
-        const auto below = std::count_if(eq21.begin(), eq21.end(),
-                                         [&](double kl) { return kl < scan.roots.back() * (1.0 + 1e-9); });
-        if (below != found && std::abs(eq21[static_cast<std::size_t>(found - 1)] / scan.roots.back() - 1.0) > 3.0 * model_error) {
+        const auto eq21 =
+            grinfogel_eq21_roots(found + 2, eps, groups.chord_angle_rad, groups.lambda2);
+        const auto below = std::count_if(eq21.begin(), eq21.end(), [&](double kl) {
+          return kl < scan.roots.back() * (1.0 + 1e-9);
+        });
+        if (below != found &&
+            std::abs(eq21[static_cast<std::size_t>(found - 1)] / scan.roots.back() - 1.0) >
+                3.0 * model_error) {
           result.summary.warnings.push_back(fmt::format(
               "eq. (21) has {} roots below the top Airy root kL/pi = {:.6g} but the scan found {}: "
               "check with a finer scan_step_k_l_over_pi",
@@ -488,17 +519,18 @@ SolverOutput solve_airy(const Problem& problem,
       }
     }
     if (found > 0 && scan.roots.front() < 1.1 * scan.cutoff_kl) {
-      result.summary.warnings.push_back(fmt::format(
-          "the first root kL/pi = {:.4g} lies within 10% of the spurious-root cutoff {:.4g}: it may "
-          "be the model's spurious low root (eps = {:.3g} is large)",
-          scan.roots.front() / kPi, scan.cutoff_kl / kPi, eps));
+      result.summary.warnings.push_back(
+          fmt::format("the first root kL/pi = {:.4g} lies within 10% of the spurious-root cutoff "
+                      "{:.4g}: it may "
+                      "be the model's spurious low root (eps = {:.3g} is large)",
+                      scan.roots.front() / kPi, scan.cutoff_kl / kPi, eps));
     }
     if (found < request.inplane_modes) {
       complete = false;
       result.summary.termination = Termination::NoConvergence;
-      result.summary.message = fmt::format(
-          "No convergence: {} of {} in-plane roots below kL/pi = {:.4g}", found,
-          request.inplane_modes, scan.limit_kl / kPi);
+      result.summary.message =
+          fmt::format("No convergence: {} of {} in-plane roots below kL/pi = {:.4g}", found,
+                      request.inplane_modes, scan.limit_kl / kPi);
     } else {
       result.summary.termination = Termination::Converged;
       result.summary.message = fmt::format(
@@ -514,7 +546,8 @@ SolverOutput solve_airy(const Problem& problem,
   if (request.outofplane_modes > 0) {
     ModalResult result;
     result.plane = Plane::OutOfPlane;
-    const auto omegas = wkb_outofplane_omegas(statics, request.outofplane_modes, options.quadrature_panels);
+    const auto omegas =
+        wkb_outofplane_omegas(statics, request.outofplane_modes, options.quadrature_panels);
     for (std::size_t i = 0; i < omegas.size(); ++i) {
       Mode mode;
       mode.index = static_cast<int>(i) + 1;
@@ -541,9 +574,9 @@ SolverOutput solve_airy(const Problem& problem,
     result.proved_count_below_top = static_cast<int>(result.modes.size());
     result.summary.solver = "airy";
     result.summary.termination = Termination::Converged;
-    result.summary.message = fmt::format(
-        "Converged: {} out-of-plane WKB string modes (the Airy model is in-plane only)",
-        result.modes.size());
+    result.summary.message =
+        fmt::format("Converged: {} out-of-plane WKB string modes (the Airy model is in-plane only)",
+                    result.modes.size());
     result.summary.max_error_estimate = error_estimate;
     output.outofplane = std::move(result);
   }
@@ -551,8 +584,7 @@ SolverOutput solve_airy(const Problem& problem,
   summary.termination = complete ? Termination::Converged : Termination::NoConvergence;
   summary.message = fmt::format(
       "{}: {} in-plane Airy-determinant roots and {} out-of-plane (WKB) modes",
-      complete ? "Converged" : "No convergence",
-      output.inplane ? output.inplane->modes.size() : 0,
+      complete ? "Converged" : "No convergence", output.inplane ? output.inplane->modes.size() : 0,
       output.outofplane ? output.outofplane->modes.size() : 0);
   return output;
 }
@@ -571,13 +603,15 @@ AirySolverOptions read_airy_options(const SolverKnobs& knobs) {
   options.curvature_fit = *parsed;
   options.scan_step_k_l_over_pi = reader.get_double("scan_step", options.scan_step_k_l_over_pi);
   if (!(options.scan_step_k_l_over_pi >= 1e-4 && options.scan_step_k_l_over_pi <= 0.5)) {
-    throw InvalidInput(fmt::format("{} = {}: must be in [1e-4, 0.5] (kL/pi)", reader.key("scan_step"),
-                                   options.scan_step_k_l_over_pi));
+    throw InvalidInput(fmt::format("{} = {}: must be in [1e-4, 0.5] (kL/pi)",
+                                   reader.key("scan_step"), options.scan_step_k_l_over_pi));
   }
   options.cutoff_fraction = reader.get_double("cutoff_fraction", options.cutoff_fraction);
   options.max_k_l_over_pi = reader.get_double("max_k_l_over_pi", options.max_k_l_over_pi);
-  options.tolerance_bits = static_cast<int>(reader.get_integer("tolerance_bits", options.tolerance_bits));
-  options.eps_warning_threshold = reader.get_double("eps_warning_threshold", options.eps_warning_threshold);
+  options.tolerance_bits =
+      static_cast<int>(reader.get_integer("tolerance_bits", options.tolerance_bits));
+  options.eps_warning_threshold =
+      reader.get_double("eps_warning_threshold", options.eps_warning_threshold);
   options.max_eps = reader.get_double("max_eps", options.max_eps);
   options.quadrature_panels =
       static_cast<int>(reader.get_integer("quadrature_panels", options.quadrature_panels));

@@ -3,10 +3,11 @@
 // the bracketing argument that makes the root count exact are in asymptotic_solver.hpp.
 #include "catena/solvers/asymptotic_solver.hpp"
 
+#include <fmt/format.h>
+
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 #include "solvers/internal/asymptotic_formulas.hpp"
@@ -58,8 +59,8 @@ double family_root(double a, double b, TanFamily family, long& iterations) {
   return 0.5 * (bracket.first + bracket.second);
 }
 
-std::vector<double> eq21_roots_counted(int count, double eps, double phi_rad, double lambda2,
-                                       long& iterations) {
+std::vector<double> eq21_roots_counted(
+    int count, double eps, double phi_rad, double lambda2, long& iterations) {
   const double e1 = eps * std::sin(phi_rad);
   const double c = kCrossOverCoefficient * e1 * e1;
   const double inv_lambda2 = std::isinf(lambda2) ? 0.0 : 1.0 / lambda2;
@@ -140,13 +141,15 @@ double first_axial_k_l(double eps, double phi_rad, double lambda2, double mass_r
 std::vector<double> wkb_outofplane_omegas(const StaticSolution& statics,
                                           int count,
                                           int quadrature_panels) {
-  require(quadrature_panels >= 1,
-          fmt::format("wkb_outofplane_omegas: quadrature_panels = {} must be >= 1",
-                      quadrature_panels));
+  require(
+      quadrature_panels >= 1,
+      fmt::format("wkb_outofplane_omegas: quadrature_panels = {} must be >= 1", quadrature_panels));
   const CableProperties& cable = statics.cable();
   const double M = cable.normal_mass_kg_per_m();
   // Slowness of transverse waves in the unstretched coordinate: sqrt(M / (T/(1+e))).
-  auto slowness = [&](double s) { return std::sqrt(M * (1.0 + statics.strain(s)) / statics.tension_n(s)); };
+  auto slowness = [&](double s) {
+    return std::sqrt(M * (1.0 + statics.strain(s)) / statics.tension_n(s));
+  };
   const double L = cable.length_m;
   const double panel = L / quadrature_panels;
   double travel_time = 0.0;
@@ -159,10 +162,11 @@ std::vector<double> wkb_outofplane_omegas(const StaticSolution& statics,
   return omegas;
 }
 
-std::optional<std::string> asymptotic_not_applicable_reason(const Problem& problem,
-                                                            const StaticSolution& statics,
-                                                            const DimensionlessGroups& groups,
-                                                            const AsymptoticSolverOptions& options) {
+std::optional<std::string> asymptotic_not_applicable_reason(
+    const Problem& problem,
+    const StaticSolution& statics,
+    const DimensionlessGroups& groups,
+    const AsymptoticSolverOptions& options) {
   (void)problem;
   const double cos_phi = std::cos(groups.chord_angle_rad);
   if (!(statics.horizontal_force_n() > 0.0) || std::abs(cos_phi) < 1e-9) {
@@ -206,10 +210,11 @@ SolverOutput solve_asymptotic(const Problem& problem,
                        fmt::format("{} x 20-point Gauss-Legendre", options.quadrature_panels);
   summary.max_error_estimate = error_estimate;
   summary.iterations = 0;
-  summary.notes.push_back(fmt::format(
-      "model error O(eps^2): eps = {:.4g}, phi_a = {:.4g} deg, lambda^2 = {:.6g}, h = {:.4g}; every "
-      "frequency carries relative_error_estimate = eps^2 = {:.3g}",
-      eps, phi * 180.0 / kPi, lambda2, groups.mass_ratio, error_estimate));
+  summary.notes.push_back(
+      fmt::format("model error O(eps^2): eps = {:.4g}, phi_a = {:.4g} deg, lambda^2 = {:.6g}, h = "
+                  "{:.4g}; every "
+                  "frequency carries relative_error_estimate = eps^2 = {:.3g}",
+                  eps, phi * 180.0 / kPi, lambda2, groups.mass_ratio, error_estimate));
   if (eps > options.eps_warning_threshold) {
     summary.warnings.push_back(fmt::format(
         "eps = {:.4g} > {:.3g}: outside the region where the O(eps^2) expansion is meaningful; "
@@ -223,7 +228,8 @@ SolverOutput solve_asymptotic(const Problem& problem,
         "shallow cable, symmetric modes tan x = x)");
   }
   if (request.forced) {
-    summary.warnings.push_back("forced response is not part of the asymptotic theory: not computed");
+    summary.warnings.push_back(
+        "forced response is not part of the asymptotic theory: not computed");
   }
 
   const Vector stations = request.stations_m(cable.length_m);
@@ -286,8 +292,7 @@ SolverOutput solve_asymptotic(const Problem& problem,
     result.summary.message = fmt::format(
         "Converged: {} of {} in-plane roots of eq. (21), count proved by the one-root-per-tan-"
         "branch bracketing; top kL/pi = {:.6g}",
-        result.modes.size(), request.inplane_modes,
-        roots.empty() ? 0.0 : roots.back() / kPi);
+        result.modes.size(), request.inplane_modes, roots.empty() ? 0.0 : roots.back() / kPi);
     result.summary.iterations = iterations;
     result.summary.max_error_estimate = error_estimate;
     result.summary.resolution = summary.resolution;
@@ -373,8 +378,8 @@ AsymptoticSolverOptions read_asymptotic_options(const SolverKnobs& knobs) {
   const std::string formula = reader.get_string("shape_formula", to_string(options.shape_formula));
   const auto parsed = parse_asymptotic_shape_formula(formula);
   if (!parsed) {
-    throw InvalidInput(fmt::format("{} = \"{}\": must be \"34\" or \"28\"",
-                                   reader.key("shape_formula"), formula));
+    throw InvalidInput(
+        fmt::format("{} = \"{}\": must be \"34\" or \"28\"", reader.key("shape_formula"), formula));
   }
   options.shape_formula = *parsed;
   options.eps_warning_threshold =
@@ -399,8 +404,9 @@ SolverEntry make_asymptotic_entry() {
       "(exact root count), WKB out-of-plane, shapes eq. (34)/(28)/(37), tension eq. (38); error "
       "O(eps^2)";
   entry.knobs = {
-      {"shape_formula", "transverse shape formula: \"34\" (uniformly valid, default) or \"28\" "
-                        "(zeroth order)"},
+      {"shape_formula",
+       "transverse shape formula: \"34\" (uniformly valid, default) or \"28\" "
+       "(zeroth order)"},
       {"eps_warning_threshold", "eps above which a validity warning is given; default 0.3"},
       {"max_eps", "eps above which the solver declines; default 1.0, in (0, 10]"},
       {"quadrature_panels", "panels of 20-point Gauss-Legendre for the WKB integral; default 4"},
@@ -410,7 +416,8 @@ SolverEntry make_asymptotic_entry() {
     // cannot see; run() applies it and returns NotApplicable itself.
     AsymptoticSolverOptions permissive;
     permissive.max_eps = 10.0;
-    return asymptotic_not_applicable_reason(context.problem, context.statics, context.groups, permissive);
+    return asymptotic_not_applicable_reason(context.problem, context.statics, context.groups,
+                                            permissive);
   };
   entry.validate_knobs = [](const SolverKnobs& knobs) { read_asymptotic_options(knobs); };
   entry.run = [](const SolveContext& context, const SolverKnobs& knobs) {

@@ -57,7 +57,8 @@ TEST(ScaledAiry, MatchesBoostAcrossTheSeriesThreshold) {
   // Boost's values are still representable up to x = 40 (Ai ~ 1e-74): compare the series branch
   // with them. Boost's own accuracy is a few ulp; 1e-13 allows for the exp() of zeta ~ 170.
   constexpr double kRelTol = 1e-13;
-  for (double x : {internal::kAirySeriesThreshold - 1.0, internal::kAirySeriesThreshold + 1e-3, 30.0, 40.0}) {
+  for (double x :
+       {internal::kAirySeriesThreshold - 1.0, internal::kAirySeriesThreshold + 1e-3, 30.0, 40.0}) {
     const internal::ScaledAiry a = internal::scaled_airy(x);
     const double grow = std::exp(a.zeta);
     EXPECT_LE(relative_error(a.ai / grow, boost::math::airy_ai(x)), kRelTol) << x;
@@ -127,7 +128,8 @@ TEST(AirySolver, RootsMatchAnIndependent30DigitComputation) {
     ASSERT_EQ(ours.size(), ref.k_l_over_pi.size()) << "eps " << ref.eps;
     for (std::size_t i = 0; i < ours.size(); ++i) {
       EXPECT_LE(relative_error(ours[i], ref.k_l_over_pi[i]), kRelTol)
-          << "eps " << ref.eps << " mode " << i + 1 << ": " << ours[i] << " vs " << ref.k_l_over_pi[i];
+          << "eps " << ref.eps << " mode " << i + 1 << ": " << ours[i] << " vs "
+          << ref.k_l_over_pi[i];
     }
   }
 }
@@ -138,7 +140,8 @@ TEST(AirySolver, ReproducesThePapersExactColumnForEpsPoint18) {
   // 1.3e-4); the eps = 0.49 rows differ by up to 1.2e-2 near cross-over and are reported in
   // verification/reference/grinfogel-table-2-2-comparison.csv, not tested here.
   constexpr double kAbsTolKLOverPi = 1e-3;
-  const CsvTable table = read_csv_table(catena::testing::published_table("grinfogel-1984-table-2-2-frequencies.csv"));
+  const CsvTable table =
+      read_csv_table(catena::testing::published_table("grinfogel-1984-table-2-2-frequencies.csv"));
   int rows = 0;
   for (std::size_t row = 0; row < table.rows.size(); ++row) {
     const double eps = *table.number(row, "eps");
@@ -161,7 +164,8 @@ TEST(AirySolver, AgreesWithEq21ToOrderEpsSquaredUnderStress) {
     for (double lambda2 : {0.1, 1.0, 10.0, 100.0, 1e3, 1e4}) {
       const Solved s = solve(eps, phi_deg, lambda2);
       const std::vector<double> airy = airy_k_l_over_pi(s, 6);
-      const auto eq21 = grinfogel_eq21_roots(6, s.groups.eps, s.groups.chord_angle_rad, s.groups.lambda2);
+      const auto eq21 =
+          grinfogel_eq21_roots(6, s.groups.eps, s.groups.chord_angle_rad, s.groups.lambda2);
       ASSERT_EQ(airy.size(), 6u) << "phi " << phi_deg << " lambda2 " << lambda2;
       for (std::size_t i = 0; i < 6; ++i) {
         ASSERT_TRUE(std::isfinite(airy[i]));
@@ -265,8 +269,8 @@ TEST(AirySolver, FallingChordHasTheSameFrequencies) {
   const Solved rising = solve(0.18, 23.46, 38.0);
   Problem falling = rising.problem;
   const double L = rising.problem.cable.length_m;
-  falling.prescribed_forces = EndForces{rising.statics.horizontal_force_n(),
-                                        -rising.statics.vertical_force_n(L)};
+  falling.prescribed_forces =
+      EndForces{rising.statics.horizontal_force_n(), -rising.statics.vertical_force_n(L)};
   falling.supports.a_m = Vec2::Zero();
   falling.supports.b_m = catenary_end_offset(falling.cable, falling.prescribed_forces->horizontal_n,
                                              falling.prescribed_forces->vertical_a_n);
@@ -301,7 +305,8 @@ TEST(AirySolver, SkipsTheModelsSpuriousLowRoot) {
 TEST(AirySolver, DeclinesHorizontalAndVerticalChords) {
   const Solved horizontal = solve(0.1, 0.0, 30.0);
   SolveRequest request;
-  const SolverOutput out = solve_airy(horizontal.problem, horizontal.statics, horizontal.groups, request);
+  const SolverOutput out =
+      solve_airy(horizontal.problem, horizontal.statics, horizontal.groups, request);
   EXPECT_EQ(out.summary.termination, Termination::NotApplicable);
   EXPECT_NE(out.summary.message.find("horizontal"), std::string::npos);
   Problem vertical;
@@ -333,7 +338,8 @@ TEST(AirySolver, RegistryEntryRunsAndRejectsBadKnobs) {
     entry->validate_knobs({{"scan_step", 0.0}});
     ADD_FAILURE() << "scan_step = 0 accepted";
   } catch (const InvalidInput& error) {
-    EXPECT_NE(std::string(error.what()).find("[solvers.airy].scan_step"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("[solvers.airy].scan_step"), std::string::npos)
+        << error.what();
   }
   EXPECT_THROW(entry->validate_knobs({{"elements", 10L}}), InvalidInput);
   AirySolverOptions options;

@@ -12,13 +12,12 @@
 
 #include <gtest/gtest.h>
 
-#include "catena/solvers/airy_solver.hpp"
-
 #include <cmath>
 #include <vector>
 
 #include "catena/core/error.hpp"
 #include "catena/models/problem_builders.hpp"
+#include "catena/solvers/airy_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 #include "test_utils.hpp"
@@ -44,7 +43,10 @@ double irvine_symmetric_x(int n, long double lambda2) {
   const long double f_low = f(low);
   for (int i = 0; i < 200; ++i) {
     const long double mid = 0.5L * (low + high);
-    if ((f(mid) > 0) == (f_low > 0)) low = mid; else high = mid;
+    if ((f(mid) > 0) == (f_low > 0))
+      low = mid;
+    else
+      high = mid;
   }
   return static_cast<double>(0.5L * (low + high));
 }
@@ -126,7 +128,8 @@ TEST(AsymptoticSolver, LabelsModeCharacterAsIrvineForAHorizontalCable) {
     for (const Mode& mode : out.inplane->modes) {
       const double n = mode.k_l_over_pi / 2.0;
       const bool antisymmetric = std::abs(n - std::round(n)) < 1e-12;
-      expected += (mode.index > 1 ? ", " : "") + std::to_string(mode.index) + (antisymmetric ? " A" : " S");
+      expected +=
+          (mode.index > 1 ? ", " : "") + std::to_string(mode.index) + (antisymmetric ? " A" : " S");
     }
     bool found = false;
     for (const std::string& note : out.inplane->summary.notes) {
@@ -195,7 +198,8 @@ TEST(AsymptoticSolver, FrequenciesAreEq21RootsWithEpsSquaredErrorEstimate) {
   const SolverOutput out = solve_asymptotic(s.problem, s.statics, s.groups, request);
   ASSERT_EQ(out.summary.termination, Termination::Converged) << out.summary.message;
   ASSERT_TRUE(out.inplane && out.outofplane);
-  const auto roots = grinfogel_eq21_roots(6, s.groups.eps, s.groups.chord_angle_rad, s.groups.lambda2);
+  const auto roots =
+      grinfogel_eq21_roots(6, s.groups.eps, s.groups.chord_angle_rad, s.groups.lambda2);
   ASSERT_EQ(out.inplane->modes.size(), 6u);
   EXPECT_EQ(out.inplane->proved_count_below_top, 6);
   for (std::size_t i = 0; i < roots.size(); ++i) {
@@ -271,7 +275,10 @@ TEST(AsymptoticSolver, WkbOutOfPlaneErrorIsWithinItsEpsSquaredEstimate) {
       const double v_low = string_end_value(s.statics, low, 4000);
       for (int iteration = 0; iteration < 60; ++iteration) {
         const double mid = 0.5 * (low + high);
-        if ((string_end_value(s.statics, mid, 4000) > 0.0) == (v_low > 0.0)) low = mid; else high = mid;
+        if ((string_end_value(s.statics, mid, 4000) > 0.0) == (v_low > 0.0))
+          low = mid;
+        else
+          high = mid;
       }
       const double exact = 0.5 * (low + high);
       EXPECT_LE(relative_error(wkb[i], exact), eps * eps) << "eps " << eps << " mode " << i + 1;
@@ -303,7 +310,11 @@ TEST(AsymptoticSolver, HorizontalShapesAreIrvines) {
         expected[j] = antisymmetric ? std::sin(theta)
                                     : 1.0 - std::cos(theta) - std::tan(0.5 * kl) * std::sin(theta);
       }
-      const Index at = [&] { Index k; mode.w.cwiseAbs().maxCoeff(&k); return k; }();
+      const Index at = [&] {
+        Index k;
+        mode.w.cwiseAbs().maxCoeff(&k);
+        return k;
+      }();
       expected /= expected[at];
       EXPECT_LE((mode.w - expected).cwiseAbs().maxCoeff(), 1e-12)
           << "formula " << formula << " mode " << mode.index;
@@ -342,8 +353,8 @@ TEST(AsymptoticSolver, FallingChordGivesTheMirroredModes) {
   falling.supports.a_m = rising.problem.supports.b_m;
   falling.supports.b_m = rising.problem.supports.a_m;
   const double L = rising.problem.cable.length_m;
-  falling.prescribed_forces = EndForces{rising.statics.horizontal_force_n(),
-                                        -rising.statics.vertical_force_n(L)};
+  falling.prescribed_forces =
+      EndForces{rising.statics.horizontal_force_n(), -rising.statics.vertical_force_n(L)};
   falling.supports.a_m = Vec2::Zero();
   falling.supports.b_m = catenary_end_offset(falling.cable, falling.prescribed_forces->horizontal_n,
                                              falling.prescribed_forces->vertical_a_n);
@@ -386,11 +397,13 @@ TEST(AsymptoticSolver, DeclinesVerticalAndSlackCablesAndWarnsAboveThreshold) {
   EXPECT_NE(out.summary.message.find("vertical"), std::string::npos) << out.summary.message;
 
   const Solved slack = solve(1.5, 20.0, 50.0);
-  EXPECT_EQ(solve_asymptotic(slack.problem, slack.statics, slack.groups, request).summary.termination,
-            Termination::NotApplicable);
+  EXPECT_EQ(
+      solve_asymptotic(slack.problem, slack.statics, slack.groups, request).summary.termination,
+      Termination::NotApplicable);
 
   const Solved moderate = solve(0.49, 45.0, 38.0);
-  const SolverOutput warned = solve_asymptotic(moderate.problem, moderate.statics, moderate.groups, request);
+  const SolverOutput warned =
+      solve_asymptotic(moderate.problem, moderate.statics, moderate.groups, request);
   EXPECT_EQ(warned.summary.termination, Termination::Converged);
   ASSERT_FALSE(warned.summary.warnings.empty());
   EXPECT_NE(warned.summary.warnings.front().find("eps"), std::string::npos);
@@ -409,7 +422,9 @@ TEST(AsymptoticSolver, InextensibleCableUsesTheLimitOneOverLambdaSquaredZero) {
   ASSERT_EQ(out.summary.termination, Termination::Converged) << out.summary.message;
   const auto roots = grinfogel_eq21_roots(4, groups.eps, groups.chord_angle_rad, kInfinity);
   for (int i = 0; i < 4; ++i) {
-    EXPECT_LE(relative_error(out.inplane->modes[static_cast<std::size_t>(i)].k_l_over_pi, roots[static_cast<std::size_t>(i)] / kPi), 1e-14);
+    EXPECT_LE(relative_error(out.inplane->modes[static_cast<std::size_t>(i)].k_l_over_pi,
+                             roots[static_cast<std::size_t>(i)] / kPi),
+              1e-14);
   }
 }
 
@@ -481,7 +496,9 @@ TEST(AnalyticSolvers, PhysicalUnitsGiveTheSameDimensionlessAnswers) {
     EXPECT_LE((x.u - y.u).cwiseAbs().maxCoeff(), 1e-8) << i;
   }
   for (std::size_t i = 0; i < 2; ++i) {
-    EXPECT_LE(relative_error(a.outofplane->modes[i].k_l_over_pi, b.outofplane->modes[i].k_l_over_pi), 1e-10);
+    EXPECT_LE(
+        relative_error(a.outofplane->modes[i].k_l_over_pi, b.outofplane->modes[i].k_l_over_pi),
+        1e-10);
   }
   // The airy solver on the same pair (its roots are refined to 50 bits).
   const SolverOutput c = solve_airy(physical, statics, groups, request);

@@ -11,12 +11,15 @@
 //    the Airy model, eps = 0.18, phi = 23.46 deg, h = 1.
 //
 // Build and run (from the repository root, after building the library in build/):
+// clang-format off
 //   g++ -std=c++20 -O2 -Iinclude -Isrc -I/usr/include/eigen3 verification/tools/analytic_grinfogel_shapes.cpp build/libcatena.a -lfmt -o build/analytic_grinfogel_shapes
 //   build/analytic_grinfogel_shapes verification/reference
+// clang-format on
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <string>
 
 #include "catena/core/version.hpp"
@@ -42,12 +45,15 @@ double second_order_bracket(double xi, double kl) {
 }
 
 // Normalises (w, u) like every solver and returns the max |w - reference| (and u likewise).
-std::pair<double, double> shape_difference(const Vector& w, const Vector& u, const catena::Mode& reference) {
+std::pair<double, double> shape_difference(const Vector& w,
+                                           const Vector& u,
+                                           const catena::Mode& reference) {
   catena::Mode mode;
   mode.w = w;
   mode.u = u;
   catena::internal::normalise_inplane_mode(mode);
-  return {(mode.w - reference.w).cwiseAbs().maxCoeff(), (mode.u - reference.u).cwiseAbs().maxCoeff()};
+  return {(mode.w - reference.w).cwiseAbs().maxCoeff(),
+          (mode.u - reference.u).cwiseAbs().maxCoeff()};
 }
 
 struct Solved {
@@ -90,9 +96,11 @@ int main(int argc, char** argv) {
   catena::CsvTable shapes;
   shapes.comments = {
       "verification/reference/grinfogel-shapes-34-vs-airy.csv",
-      "source:    Grinfogel (1984) eqs. (34), (28), (37), (38) (asymptotic solver) vs Triantafyllou's Airy",
+      "source:    Grinfogel (1984) eqs. (34), (28), (37), (38) (asymptotic solver) vs "
+      "Triantafyllou's Airy",
       "           model (airy solver, curvature_fit tangent); phi = 30 deg, h = 1, 401 stations",
-      "generator: verification/tools/analytic_grinfogel_shapes.cpp (build/run commands in its header)",
+      "generator: verification/tools/analytic_grinfogel_shapes.cpp (build/run commands in its "
+      "header)",
       generated_line(),
       "columns:   max_abs_dw_* = max_s |w - w_airy| with both normalised to max|w| = 1 [-]:",
       "           34 = eq. (34) with eps^2 sin^2(phi) (as in eqs. 29, 32; our reading),",
@@ -100,15 +108,24 @@ int main(int argc, char** argv) {
       "           max_abs_du_37 = same for u (eq. 37 scaled by eps cos(phi)/kL);",
       "           tension_rel_diff = eq. (38) / airy max|tau| - 1 (per unit max normal amplitude).",
   };
-  shapes.columns = {"eps", "phi_deg", "lambda2", "mode", "k_l_over_pi_eq21", "k_l_over_pi_airy",
-                    "max_abs_dw_34", "max_abs_dw_34_printed", "max_abs_dw_28", "max_abs_du_37",
+  shapes.columns = {"eps",
+                    "phi_deg",
+                    "lambda2",
+                    "mode",
+                    "k_l_over_pi_eq21",
+                    "k_l_over_pi_airy",
+                    "max_abs_dw_34",
+                    "max_abs_dw_34_printed",
+                    "max_abs_dw_28",
+                    "max_abs_du_37",
                     "tension_rel_diff"};
   const double phi_deg = 30.0;
   for (double eps : {0.02, 0.05, 0.1, 0.18}) {
     for (double lambda2 : {20.0, 30.0, 38.0, 4.0 * catena::kPi * catena::kPi, 45.0, 80.0}) {
       const Solved s = make(eps, phi_deg, lambda2);
       const catena::SolverOutput airy = catena::solve_airy(s.problem, s.statics, s.groups, request);
-      const catena::SolverOutput asym = catena::solve_asymptotic(s.problem, s.statics, s.groups, request);
+      const catena::SolverOutput asym =
+          catena::solve_asymptotic(s.problem, s.statics, s.groups, request);
       if (!airy.inplane || airy.inplane->modes.size() < 2) continue;
       const double e1 = s.groups.eps * std::sin(s.groups.chord_angle_rad);
       for (std::size_t m = 0; m < 2; ++m) {
@@ -122,20 +139,21 @@ int main(int argc, char** argv) {
             s.groups.lambda2, catena::AsymptoticShapeFormula::Eq28);
         Vector printed = shape34.w;
         for (Index j = 0; j < printed.size(); ++j) {
-          printed[j] += (s.groups.eps * s.groups.eps * std::sin(s.groups.chord_angle_rad) - e1 * e1) *
-                        second_order_bracket(reference.s_m[j] / s.problem.cable.length_m, kl);
+          printed[j] +=
+              (s.groups.eps * s.groups.eps * std::sin(s.groups.chord_angle_rad) - e1 * e1) *
+              second_order_bracket(reference.s_m[j] / s.problem.cable.length_m, kl);
         }
         const auto d34 = shape_difference(shape34.w, shape34.u, reference);
         const auto d34p = shape_difference(printed, shape34.u, reference);
         const auto d28 = shape_difference(shape28.w, shape28.u, reference);
-        const double tension = asym.inplane->modes[m].max_abs_tension_n / reference.max_abs_tension_n - 1.0;
-        shapes.rows.push_back({fmt::format("{}", eps), fmt::format("{}", phi_deg),
-                               fmt::format("{:.6g}", lambda2), fmt::format("{}", m + 1),
-                               fmt::format("{:.6f}", kl / catena::kPi),
-                               fmt::format("{:.6f}", reference.k_l_over_pi),
-                               fmt::format("{:.3e}", d34.first), fmt::format("{:.3e}", d34p.first),
-                               fmt::format("{:.3e}", d28.first), fmt::format("{:.3e}", d34.second),
-                               fmt::format("{:+.3e}", tension)});
+        const double tension =
+            asym.inplane->modes[m].max_abs_tension_n / reference.max_abs_tension_n - 1.0;
+        shapes.rows.push_back(
+            {fmt::format("{}", eps), fmt::format("{}", phi_deg), fmt::format("{:.6g}", lambda2),
+             fmt::format("{}", m + 1), fmt::format("{:.6f}", kl / catena::kPi),
+             fmt::format("{:.6f}", reference.k_l_over_pi), fmt::format("{:.3e}", d34.first),
+             fmt::format("{:.3e}", d34p.first), fmt::format("{:.3e}", d28.first),
+             fmt::format("{:.3e}", d34.second), fmt::format("{:+.3e}", tension)});
       }
     }
   }
@@ -144,26 +162,32 @@ int main(int argc, char** argv) {
   catena::CsvTable sweep;
   sweep.comments = {
       "verification/reference/grinfogel-fig-4-3-2-tension.csv",
-      "source:    Grinfogel (1984) Fig. 4.3.2: dynamic tension of the first mode vs lambda^2 near cross-over;",
-      "           eq. (38) (asymptotic solver) vs Triantafyllou's Airy model (airy solver), eps = 0.18,",
+      "source:    Grinfogel (1984) Fig. 4.3.2: dynamic tension of the first mode vs lambda^2 near "
+      "cross-over;",
+      "           eq. (38) (asymptotic solver) vs Triantafyllou's Airy model (airy solver), eps = "
+      "0.18,",
       "           phi = 23.46 deg, h = 1, L = 1 m, T0 = 1 N, M = 1 kg/m",
-      "generator: verification/tools/analytic_grinfogel_shapes.cpp (build/run commands in its header)",
+      "generator: verification/tools/analytic_grinfogel_shapes.cpp (build/run commands in its "
+      "header)",
       generated_line(),
-      "columns:   tension = max_s |tau| per unit max normal amplitude [N/m] (modal_result.hpp normalisation)",
+      "columns:   tension = max_s |tau| per unit max normal amplitude [N/m] (modal_result.hpp "
+      "normalisation)",
   };
-  sweep.columns = {"lambda2", "k_l_over_pi_eq21", "tension_eq38", "k_l_over_pi_airy", "tension_airy",
-                   "tension_rel_diff"};
+  sweep.columns = {"lambda2",          "k_l_over_pi_eq21", "tension_eq38",
+                   "k_l_over_pi_airy", "tension_airy",     "tension_rel_diff"};
   catena::SolveRequest first = request;
   first.inplane_modes = 1;
   for (double lambda2 = 10.0; lambda2 <= 100.0 + 1e-9; lambda2 += 2.5) {
     const Solved s = make(0.18, 23.46, lambda2);
     const catena::SolverOutput airy = catena::solve_airy(s.problem, s.statics, s.groups, first);
-    const catena::SolverOutput asym = catena::solve_asymptotic(s.problem, s.statics, s.groups, first);
+    const catena::SolverOutput asym =
+        catena::solve_asymptotic(s.problem, s.statics, s.groups, first);
     if (!airy.inplane || airy.inplane->modes.empty()) continue;
     const catena::Mode& a = asym.inplane->modes[0];
     const catena::Mode& b = airy.inplane->modes[0];
     sweep.rows.push_back({fmt::format("{:.1f}", lambda2), fmt::format("{:.6f}", a.k_l_over_pi),
-                          fmt::format("{:.6g}", a.max_abs_tension_n), fmt::format("{:.6f}", b.k_l_over_pi),
+                          fmt::format("{:.6g}", a.max_abs_tension_n),
+                          fmt::format("{:.6f}", b.k_l_over_pi),
                           fmt::format("{:.6g}", b.max_abs_tension_n),
                           fmt::format("{:+.3e}", a.max_abs_tension_n / b.max_abs_tension_n - 1.0)});
   }

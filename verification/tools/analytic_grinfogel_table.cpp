@@ -5,16 +5,19 @@
 // whether they exceed half a unit of the last printed digit (5e-5 in kL/pi).
 //
 // Build and run (from the repository root, after building the library in build/):
+// clang-format off
 //   g++ -std=c++20 -O2 -Iinclude -Isrc -I/usr/include/eigen3 verification/tools/analytic_grinfogel_table.cpp build/libcatena.a -lfmt -o build/analytic_grinfogel_table
 //   build/analytic_grinfogel_table verification/reference/published/grinfogel-1984-table-2-2-frequencies.csv verification/reference/grinfogel-table-2-2-comparison.csv
+// clang-format on
 //
 // The paper gives no mass ratio for these tables; h = m/M = 1 (no added mass) is used (eq. 21
 // does not depend on h; the Airy model does, weakly, through Q = h (M w^2/EA - alpha^2)), and a
 // second airy column with h = 0.5 shows that sensitivity.
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <string>
 
 #include "catena/core/version.hpp"
@@ -42,8 +45,10 @@ int differing_digits(double a, double b) {
   return count;
 }
 
-double airy_mode(const catena::Problem& problem, const catena::StaticSolution& statics,
-                 const catena::DimensionlessGroups& groups, int mode,
+double airy_mode(const catena::Problem& problem,
+                 const catena::StaticSolution& statics,
+                 const catena::DimensionlessGroups& groups,
+                 int mode,
                  catena::AiryCurvatureFit fit) {
   catena::SolveRequest request;
   request.inplane_modes = mode;
@@ -85,22 +90,41 @@ int main(int argc, char** argv) {
   catena::CsvTable out;
   out.comments = {
       "verification/reference/grinfogel-table-2-2-comparison.csv",
-      "source:    Grinfogel (1984) tables after Fig. 2.2 (published/grinfogel-1984-table-2-2-frequencies.csv)",
-      "           beside catena's asymptotic (eq. 21) and airy (Triantafyllou's Airy determinant) solvers",
-      "generator: verification/tools/analytic_grinfogel_table.cpp (build/run commands in its header)",
+      "source:    Grinfogel (1984) tables after Fig. 2.2 "
+      "(published/grinfogel-1984-table-2-2-frequencies.csv)",
+      "           beside catena's asymptotic (eq. 21) and airy (Triantafyllou's Airy determinant) "
+      "solvers",
+      "generator: verification/tools/analytic_grinfogel_table.cpp (build/run commands in its "
+      "header)",
       generated_line(),
       "problem:   make_taut_inclined_problem(eps, phi_deg, lambda2, h = 1); frequencies as kL/pi",
-      "columns:   asymptotic_minus_approx, airy_minus_exact = ours - published; *_verdict: 'agree' when",
-      "           |difference| <= 5e-5 (half a unit of the last printed digit), 'last-digit' when <= 1.5e-4,",
-      "           'one-digit' when the two 4-decimal strings differ in exactly one (non-final) digit",
+      "columns:   asymptotic_minus_approx, airy_minus_exact = ours - published; *_verdict: 'agree' "
+      "when",
+      "           |difference| <= 5e-5 (half a unit of the last printed digit), 'last-digit' when "
+      "<= 1.5e-4,",
+      "           'one-digit' when the two 4-decimal strings differ in exactly one (non-final) "
+      "digit",
       "           (OCR/typing suspect), else 'disagree'.",
-      "           airy = curvature_fit 'tangent' (default), airy_paper_fit = eqs. (17)-(18) linearisation,",
+      "           airy = curvature_fit 'tangent' (default), airy_paper_fit = eqs. (17)-(18) "
+      "linearisation,",
       "           airy_h05 = tangent with h = m/M = 0.5 (sensitivity to the unstated mass ratio).",
   };
-  out.columns = {"eps", "phi_deg", "lambda2", "mode", "published_exact", "published_approx",
-                 "asymptotic", "asymptotic_minus_approx", "asymptotic_verdict", "airy",
-                 "airy_minus_exact", "airy_verdict", "airy_paper_fit", "airy_h05",
-                 "published_approx_minus_exact", "asymptotic_minus_airy"};
+  out.columns = {"eps",
+                 "phi_deg",
+                 "lambda2",
+                 "mode",
+                 "published_exact",
+                 "published_approx",
+                 "asymptotic",
+                 "asymptotic_minus_approx",
+                 "asymptotic_verdict",
+                 "airy",
+                 "airy_minus_exact",
+                 "airy_verdict",
+                 "airy_paper_fit",
+                 "airy_h05",
+                 "published_approx_minus_exact",
+                 "asymptotic_minus_airy"};
   for (std::size_t row = 0; row < published.rows.size(); ++row) {
     const double eps = *published.number(row, "eps");
     const double phi_deg = *published.number(row, "phi_deg");
@@ -111,27 +135,30 @@ int main(int argc, char** argv) {
 
     const catena::Problem problem = catena::make_taut_inclined_problem(eps, phi_deg, lambda2, 1.0);
     const catena::StaticSolution statics = catena::solve_statics(problem);
-    const catena::DimensionlessGroups groups = catena::compute_dimensionless_groups(problem, statics);
-    const auto roots = catena::grinfogel_eq21_roots(mode, groups.eps, groups.chord_angle_rad,
-                                                    groups.lambda2);
+    const catena::DimensionlessGroups groups =
+        catena::compute_dimensionless_groups(problem, statics);
+    const auto roots =
+        catena::grinfogel_eq21_roots(mode, groups.eps, groups.chord_angle_rad, groups.lambda2);
     const double asymptotic = roots.back() / catena::kPi;
-    const double airy = airy_mode(problem, statics, groups, mode, catena::AiryCurvatureFit::Tangent);
-    const double airy_paper = airy_mode(problem, statics, groups, mode, catena::AiryCurvatureFit::Paper);
+    const double airy =
+        airy_mode(problem, statics, groups, mode, catena::AiryCurvatureFit::Tangent);
+    const double airy_paper =
+        airy_mode(problem, statics, groups, mode, catena::AiryCurvatureFit::Paper);
     const catena::Problem half = catena::make_taut_inclined_problem(eps, phi_deg, lambda2, 0.5);
     const catena::StaticSolution half_statics = catena::solve_statics(half);
     const double airy_h05 =
-        airy_mode(half, half_statics, catena::compute_dimensionless_groups(half, half_statics), mode,
-                  catena::AiryCurvatureFit::Tangent);
+        airy_mode(half, half_statics, catena::compute_dimensionless_groups(half, half_statics),
+                  mode, catena::AiryCurvatureFit::Tangent);
 
-    out.rows.push_back({
-        published.text(row, "eps"), published.text(row, "phi_deg"), published.text(row, "lambda2"),
-        published.text(row, "mode"), published.text(row, "exact"), published.text(row, "approx"),
-        fmt::format("{:.6f}", asymptotic), fmt::format("{:+.6f}", asymptotic - approx),
-        verdict(asymptotic - approx, differing_digits(asymptotic, approx)),
-        fmt::format("{:.6f}", airy), fmt::format("{:+.6f}", airy - exact),
-        verdict(airy - exact, differing_digits(airy, exact)), fmt::format("{:.6f}", airy_paper),
-        fmt::format("{:.6f}", airy_h05), fmt::format("{:+.4f}", approx - exact),
-        fmt::format("{:+.6f}", asymptotic - airy)});
+    out.rows.push_back(
+        {published.text(row, "eps"), published.text(row, "phi_deg"), published.text(row, "lambda2"),
+         published.text(row, "mode"), published.text(row, "exact"), published.text(row, "approx"),
+         fmt::format("{:.6f}", asymptotic), fmt::format("{:+.6f}", asymptotic - approx),
+         verdict(asymptotic - approx, differing_digits(asymptotic, approx)),
+         fmt::format("{:.6f}", airy), fmt::format("{:+.6f}", airy - exact),
+         verdict(airy - exact, differing_digits(airy, exact)), fmt::format("{:.6f}", airy_paper),
+         fmt::format("{:.6f}", airy_h05), fmt::format("{:+.4f}", approx - exact),
+         fmt::format("{:+.6f}", asymptotic - airy)});
   }
   catena::write_csv_table(argv[2], out);
   return 0;

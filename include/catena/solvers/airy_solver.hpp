@@ -15,12 +15,12 @@
 ///   \f$w = c^{-1/2}(C_3\cos W + C_4\sin W)\f$,
 ///   \f$u = \alpha c^{1/2}\omega^{-1}(C_3\sin W - C_4\cos W)\f$;
 /// - slow (chain-like) solution, eqs. (9)–(10): with the dynamic tension \f$\tau = m\omega^2 v\f$,
-///   \f$v'' + Q(s) v = 0\f$, \f$Q = m\omega^2/EA - h\alpha^2\f$, \f$u = -v'\f$, \f$w = -h\alpha v\f$.
-///   Q is linearised in s, \f$Q = Q_0 (s - s_0)\f$ (eqs. 14, 17), so that with
-///   \f$\kappa = Q_0^{1/3}\f$ (real cube root, negative for a falling chord) and
-///   \f$z = \kappa (s - s_0) = Q/\kappa^2\f$:
-///   \f$v = C_1 \mathrm{Ai}(-z) + C_2 \mathrm{Bi}(-z)\f$, \f$u = \kappa(C_1\mathrm{Ai}'(-z) +
-///   C_2\mathrm{Bi}'(-z))\f$, \f$w = -h\alpha(C_1\mathrm{Ai}(-z) + C_2\mathrm{Bi}(-z))\f$.
+///   \f$v'' + Q(s) v = 0\f$, \f$Q = m\omega^2/EA - h\alpha^2\f$, \f$u = -v'\f$, \f$w = -h\alpha
+///   v\f$. Q is linearised in s, \f$Q = Q_0 (s - s_0)\f$ (eqs. 14, 17), so that with \f$\kappa =
+///   Q_0^{1/3}\f$ (real cube root, negative for a falling chord) and \f$z = \kappa (s - s_0) =
+///   Q/\kappa^2\f$: \f$v = C_1 \mathrm{Ai}(-z) + C_2 \mathrm{Bi}(-z)\f$, \f$u =
+///   \kappa(C_1\mathrm{Ai}'(-z) + C_2\mathrm{Bi}'(-z))\f$, \f$w = -h\alpha(C_1\mathrm{Ai}(-z) +
+///   C_2\mathrm{Bi}(-z))\f$.
 ///
 /// The natural frequencies are the zeros of the 4x4 determinant of u(0) = w(0) = u(L) = w(L) = 0
 /// (eq. 16, in the real form of §3.1), the modes its null vectors, the dynamic tension
@@ -65,7 +65,8 @@ enum class AiryCurvatureFit {
             ///< Q0 equals eq. (17) exactly there and the paper's 'exact' column is reproduced
             ///< to ~1e-4 for eps = 0.18)
   Secant,   ///< the line through alpha(0)^2 and alpha(L)^2
-  Paper     ///< eqs. (17)-(18): h eps^2 cos^2(phi)/L^2 {k^2L^2/lambda^2 - 1 + 4 eps sin(phi)(s/L - 1/2)}
+  Paper     ///< eqs. (17)-(18): h eps^2 cos^2(phi)/L^2 {k^2L^2/lambda^2 - 1 + 4 eps sin(phi)(s/L -
+            ///< 1/2)}
 };
 /// "tangent", "secant", "paper".
 std::string to_string(AiryCurvatureFit fit);
@@ -75,8 +76,8 @@ std::optional<AiryCurvatureFit> parse_airy_curvature_fit(const std::string& text
 struct AirySolverOptions {
   /// Linearisation of Q(s) (knob `curvature_fit`: "tangent" | "secant" | "paper").
   AiryCurvatureFit curvature_fit = AiryCurvatureFit::Tangent;
-  /// Scan step in kL/pi [-] (knob `scan_step`). In [1e-4, 0.5]. Close pairs between two samples are caught by the
-  /// |det| minimum search; smaller steps only cost time.
+  /// Scan step in kL/pi [-] (knob `scan_step`). In [1e-4, 0.5]. Close pairs between two samples are
+  /// caught by the |det| minimum search; smaller steps only cost time.
   double scan_step_k_l_over_pi = 0.05;
   /// Roots below cutoff_fraction * pi sqrt(min(T/(1+e))/T0) (in kL) are discarded as spurious.
   /// In (0, 1). Measured: the spurious root lies at kL/pi ~ 0.05-0.4 for eps <= 0.5 and up to

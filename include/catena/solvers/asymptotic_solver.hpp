@@ -20,12 +20,12 @@
 /// so \f$\tan x - t_\pm(x)\f$ is strictly increasing on every branch of tan: eq. (21) has exactly
 /// one root of each family per branch, \f$x_{n,-} \in ((n-\tfrac12)\pi, n\pi]\f$ and
 /// \f$x_{n,+} \in [n\pi, (n+\tfrac12)\pi)\f$. The count of eq. (21)'s roots below any frequency
-/// is therefore exact (ModalResult::proved_count_below_top counts the model's roots) (no root can be skipped near cross-over, where the two roots of branch n straddle
-/// \f$x = n\pi\f$). The '+' root of branch 0, at \f$x \approx (c/(1/3 + 4/\lambda^2))^{1/4}\f$,
-/// is an artefact of the correction term (which dominates there because the main term vanishes
-/// like \f$x^4\f$) and is discarded: no in-plane mode lies below the string bound kL ~ pi.
-/// The 'symmetric-like' and 'antisymmetric-like' families exchange roles at cross-over
-/// \f$kL = \lambda\f$ (p = 0).
+/// is therefore exact, and no root can be skipped near cross-over, where the two roots of branch n
+/// straddle \f$x = n\pi\f$ (ModalResult::proved_count_below_top counts these roots). The '+'
+/// root of branch 0, at \f$x \approx (c/(1/3 + 4/\lambda^2))^{1/4}\f$, is an artefact of the
+/// correction term (which dominates there because the main term vanishes like \f$x^4\f$) and is
+/// discarded: no in-plane mode lies below the string bound kL ~ pi. The 'symmetric-like' and
+/// 'antisymmetric-like' families exchange roles at cross-over \f$kL = \lambda\f$ (p = 0).
 ///
 /// Out-of-plane frequencies: the WKB string condition
 /// \f$\omega \int_0^L \sqrt{M(1+e(s))/T(s)}\,ds = n\pi\f$ with the shared statics T(s), e(s)
@@ -125,9 +125,10 @@ SolverOutput solve_asymptotic(const Problem& problem,
                               const AsymptoticSolverOptions& options = {});
 
 /// nullopt when the asymptotic theory applies to the problem; otherwise why not.
-std::optional<std::string> asymptotic_not_applicable_reason(const Problem& problem,
-                                                            const StaticSolution& statics,
-                                                            const DimensionlessGroups& groups,
-                                                            const AsymptoticSolverOptions& options = {});
+std::optional<std::string> asymptotic_not_applicable_reason(
+    const Problem& problem,
+    const StaticSolution& statics,
+    const DimensionlessGroups& groups,
+    const AsymptoticSolverOptions& options = {});
 
 }  // namespace catena

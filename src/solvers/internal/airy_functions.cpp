@@ -6,8 +6,8 @@
 // from the reference path; Boost calls cost 1-3 us each, the series ~0.05 us.
 #include "solvers/internal/airy_functions.hpp"
 
-#include <boost/math/special_functions/airy.hpp>
 #include <algorithm>
+#include <boost/math/special_functions/airy.hpp>
 #include <cmath>
 #include <vector>
 
@@ -18,13 +18,13 @@ namespace {
 // Maclaurin series: Ai = c1 f - c2 g, Bi = sqrt(3)(c1 f + c2 g) with f = sum a_k x^{3k},
 // g = sum b_k x^{3k+1}, a_k = a_{k-1} / (3k (3k-1)), b_k = b_{k-1} / (3k (3k+1)) (from y'' = x y).
 ScaledAiry maclaurin_airy(double x) {
-  constexpr double c1 = 0.35502805388781723926;   // Ai(0)
-  constexpr double c2 = 0.25881940379280679840;   // -Ai'(0)
+  constexpr double c1 = 0.35502805388781723926;  // Ai(0)
+  constexpr double c2 = 0.25881940379280679840;  // -Ai'(0)
   constexpr double sqrt3 = 1.7320508075688772935;
   const double x3 = x * x * x;
-  double a = 1.0, b = x;           // current terms of f and g
+  double a = 1.0, b = x;  // current terms of f and g
   double f = 1.0, g = x;
-  double fp = 0.0, gp = 1.0;       // f', g'
+  double fp = 0.0, gp = 1.0;  // f', g'
   for (int k = 1; k < 60; ++k) {
     const double three_k = 3.0 * k;
     a *= x3 / (three_k * (three_k - 1.0));
@@ -64,7 +64,8 @@ const std::vector<ScaledAiry>& taylor_nodes() {
   static const std::vector<ScaledAiry> nodes = [] {
     std::vector<ScaledAiry> values;
     const int count = static_cast<int>((kAirySeriesThreshold - kAiryTaylorLow) / kNodeSpacing) + 1;
-    for (int i = 0; i < count; ++i) values.push_back(scaled_airy_boost(kAiryTaylorLow + i * kNodeSpacing));
+    for (int i = 0; i < count; ++i)
+      values.push_back(scaled_airy_boost(kAiryTaylorLow + i * kNodeSpacing));
     return values;
   }();
   return nodes;
@@ -77,7 +78,8 @@ ScaledAiry taylor_airy(double x) {
   const auto& nodes = taylor_nodes();
   const auto index = static_cast<std::size_t>(std::lround((x - kAiryTaylorLow) / kNodeSpacing));
   const ScaledAiry& node = nodes[std::min(index, nodes.size() - 1)];
-  const double x0 = kAiryTaylorLow + static_cast<double>(std::min(index, nodes.size() - 1)) * kNodeSpacing;
+  const double x0 =
+      kAiryTaylorLow + static_cast<double>(std::min(index, nodes.size() - 1)) * kNodeSpacing;
   const double h = x - x0;
   // Derivatives d[n] of (scaled) Ai and Bi at x0, kept three deep for the recurrence.
   double a_prev = 0.0, a0 = node.ai, a1 = node.ai_prime;  // y^(n-1), y^(n), y^(n+1)
@@ -100,7 +102,9 @@ ScaledAiry taylor_airy(double x) {
     b0 = b1;
     b1 = b2;
     const double size = std::abs(ai) + std::abs(bi) + std::abs(ai_prime) + std::abs(bi_prime);
-    if (std::abs(power) * (std::abs(a1) + std::abs(b1) + std::abs(a0) + std::abs(b0)) < 1e-18 * size) break;
+    if (std::abs(power) * (std::abs(a1) + std::abs(b1) + std::abs(a0) + std::abs(b0)) <
+        1e-18 * size)
+      break;
   }
   ScaledAiry out;
   out.zeta = x > 0.0 ? 2.0 / 3.0 * x * std::sqrt(x) : 0.0;

@@ -45,8 +45,8 @@ AsymptoticModeShape asymptotic_mode_shape(const Vector& stations_m,
            (-0.5 * s + (xi - 1.0) * theta * c + (xi - 0.5) * s) * b +
            4.0 * (-1.0 - 0.75 * cos_kl + 2.0 * s2 * (xi - 0.5)));
       const double second = e1 * e1 *
-                             (3.5 * (xi - 0.5) + 1.75 * c - (7.0 / 16.0) * (xi - 0.5) * c -
-                              7.0 / 32.0 + (7.0 / 16.0) * theta * (xi - 1.0) * s);
+                            (3.5 * (xi - 0.5) + 1.75 * c - (7.0 / 16.0) * (xi - 0.5) * c -
+                             7.0 / 32.0 + (7.0 / 16.0) * theta * (xi - 1.0) * s);
       w += first + second;
     }
     // Eq. (37), the leading-order longitudinal shape.
@@ -58,7 +58,9 @@ AsymptoticModeShape asymptotic_mode_shape(const Vector& stations_m,
   return shape;
 }
 
-Vector wkb_outofplane_shape(const StaticSolution& statics, const Vector& stations_m, double omega_rad_s) {
+Vector wkb_outofplane_shape(const StaticSolution& statics,
+                            const Vector& stations_m,
+                            double omega_rad_s) {
   const CableProperties& cable = statics.cable();
   const double M = cable.normal_mass_kg_per_m();
   auto stiffness = [&](double s) { return statics.tension_n(s) / (1.0 + statics.strain(s)); };

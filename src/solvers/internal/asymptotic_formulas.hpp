@@ -32,6 +32,8 @@ AsymptoticModeShape asymptotic_mode_shape(const Vector& stations_m,
 
 /// WKB out-of-plane shape (P M)^(-1/4) sin(omega int_0^s sqrt(M/P) ds) with P = T/(1+e), at the
 /// stations [m] (not normalised).
-Vector wkb_outofplane_shape(const StaticSolution& statics, const Vector& stations_m, double omega_rad_s);
+Vector wkb_outofplane_shape(const StaticSolution& statics,
+                            const Vector& stations_m,
+                            double omega_rad_s);
 
 }  // namespace catena::internal
