@@ -1,20 +1,431 @@
-// Placeholder registry entry for the `asymptotic` solver: it declines every problem until the solver
-// lands (see the project's issues).
+// Grinfogel's (1984) asymptotic solution for the taut inclined cable: eq. (21) frequencies, WKB
+// out-of-plane frequencies, eqs. (34)/(28)/(37) shapes and eq. (38) tension. The notation and
+// the bracketing argument that makes the root count exact are in asymptotic_solver.hpp.
+#include "catena/solvers/asymptotic_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+
+#include "catena/core/error.hpp"
+#include "solvers/internal/asymptotic_formulas.hpp"
 #include "solvers/internal/knob_reader.hpp"
+#include "solvers/internal/mode_tools.hpp"
 #include "solvers/internal/solver_entries.hpp"
 
-namespace catena::internal {
+namespace catena {
+namespace {
+
+// 49/64 = (7/8)^2: the square of the near-cross-over slow amplitude 7/4 e1 over 2 (eq. 29).
+constexpr double kCrossOverCoefficient = 49.0 / 64.0;
+
+struct TanRoots {
+  double minus;  // t_-(x) <= 0
+  double plus;   // t_+(x) >= 0
+};
+
+// The two roots of (1 + c) t^2 + p t - c = 0, the form eq. (21) takes in t = tan x. The root of
+// larger magnitude is formed without cancellation and the other from the product -c/(1+c), so
+// that for c = 0 the small root is exactly 0 and the large one exactly -p (Irvine, bit for bit).
+TanRoots tan_roots(double x, double c, double inv_lambda2) {
+  const double p = 4.0 * x * x * x * inv_lambda2 - x;
+  if (c == 0.0) return p > 0.0 ? TanRoots{-p, 0.0} : TanRoots{0.0, -p};
+  // hypot: p^2 overflows for lambda^2 -> 0 (p ~ x^3 / lambda^2).
+  const double root = std::hypot(p, 2.0 * std::sqrt(c * (1.0 + c)));
+  if (p > 0.0) {
+    const double minus = -(p + root) / (2.0 * (1.0 + c));
+    return {minus, -c / ((1.0 + c) * minus)};
+  }
+  const double plus = (root - p) / (2.0 * (1.0 + c));
+  return {-c / ((1.0 + c) * plus), plus};
+}
+
+// Root of sin x - t(x) cos x on [a, b], which is cos x (tan x - t(x)): strictly monotone there.
+// When the end values do not bracket (t = 0 at x = n pi, where sin(n pi) rounds to +-1e-16), the
+// root is that end point.
+template <class TanFamily>
+double family_root(double a, double b, TanFamily family, long& iterations) {
+  auto g = [&](double x) { return std::sin(x) - family(x) * std::cos(x); };
+  const double ga = g(a);
+  const double gb = g(b);
+  if (ga == 0.0) return a;
+  if (gb == 0.0 || (ga > 0.0) == (gb > 0.0)) return std::abs(ga) < std::abs(gb) ? a : b;
+  boost::uintmax_t max_iterations = 200;
+  const auto bracket = boost::math::tools::toms748_solve(
+      g, a, b, ga, gb, boost::math::tools::eps_tolerance<double>(53), max_iterations);
+  iterations += static_cast<long>(max_iterations);
+  return 0.5 * (bracket.first + bracket.second);
+}
+
+std::vector<double> eq21_roots_counted(
+    int count, double eps, double phi_rad, double lambda2, long& iterations) {
+  const double e1 = eps * std::sin(phi_rad);
+  const double c = kCrossOverCoefficient * e1 * e1;
+  const double inv_lambda2 = std::isinf(lambda2) ? 0.0 : 1.0 / lambda2;
+  std::vector<double> roots;
+  roots.reserve(static_cast<std::size_t>(std::max(count, 0)));
+  // Branch n of tan, x in ((n - 1/2) pi, (n + 1/2) pi), holds the '-' root below n pi and the
+  // '+' root above it; branch 0 holds only the spurious '+' root, skipped.
+  for (int n = 1; static_cast<int>(roots.size()) < count; ++n) {
+    const double low = (n - 0.5) * kPi;
+    const double mid = n * kPi;
+    const double high = (n + 0.5) * kPi;
+    const double x_minus = family_root(
+        low, mid, [&](double x) { return tan_roots(x, c, inv_lambda2).minus; }, iterations);
+    roots.push_back(2.0 * x_minus);
+    if (static_cast<int>(roots.size()) == count) break;
+    const double x_plus = family_root(
+        mid, high, [&](double x) { return tan_roots(x, c, inv_lambda2).plus; }, iterations);
+    roots.push_back(2.0 * x_plus);
+  }
+  return roots;
+}
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw InvalidInput(message);
+}
+
+}  // namespace
+
+std::string to_string(AsymptoticShapeFormula formula) {
+  return formula == AsymptoticShapeFormula::Eq28 ? "28" : "34";
+}
+
+std::optional<AsymptoticShapeFormula> parse_asymptotic_shape_formula(const std::string& text) {
+  if (text == "34") return AsymptoticShapeFormula::Eq34;
+  if (text == "28") return AsymptoticShapeFormula::Eq28;
+  return std::nullopt;
+}
+
+void AsymptoticSolverOptions::validate() const {
+  require(std::isfinite(max_eps) && max_eps > 0.0 && max_eps <= 10.0,
+          fmt::format("Invalid AsymptoticSolverOptions::max_eps = {}. Violated constraint: "
+                      "0 < max_eps <= 10.",
+                      max_eps));
+  require(std::isfinite(eps_warning_threshold) && eps_warning_threshold > 0.0 &&
+              eps_warning_threshold <= max_eps,
+          fmt::format("Invalid AsymptoticSolverOptions::eps_warning_threshold = {}. Violated "
+                      "constraint: 0 < eps_warning_threshold <= max_eps = {}.",
+                      eps_warning_threshold, max_eps));
+  require(quadrature_panels >= 1 && quadrature_panels <= 1000,
+          fmt::format("Invalid AsymptoticSolverOptions::quadrature_panels = {}. Violated "
+                      "constraint: 1 <= quadrature_panels <= 1000.",
+                      quadrature_panels));
+}
+
+double grinfogel_eq21(double kl, double eps, double phi_rad, double lambda2) {
+  const double x = 0.5 * kl;
+  const double e1 = eps * std::sin(phi_rad);
+  const double inv_lambda2 = std::isinf(lambda2) ? 0.0 : 1.0 / lambda2;
+  const double main = std::sin(x) * (std::cos(x) * x * (kl * kl * inv_lambda2 - 1.0) + std::sin(x));
+  return main - kCrossOverCoefficient * e1 * e1 * std::cos(kl);
+}
+
+std::vector<double> grinfogel_eq21_roots(int count, double eps, double phi_rad, double lambda2) {
+  require(count >= 0, fmt::format("grinfogel_eq21_roots: count = {} must be >= 0", count));
+  require(std::isfinite(eps) && eps >= 0.0,
+          fmt::format("grinfogel_eq21_roots: eps = {} must be finite and >= 0", eps));
+  require(std::isfinite(phi_rad), "grinfogel_eq21_roots: phi must be finite");
+  require(lambda2 > 0.0, fmt::format("grinfogel_eq21_roots: lambda2 = {} must be > 0", lambda2));
+  long iterations = 0;
+  return eq21_roots_counted(count, eps, phi_rad, lambda2, iterations);
+}
+
+double first_axial_k_l(double eps, double phi_rad, double lambda2, double mass_ratio) {
+  if (std::isinf(lambda2)) return kInfinity;
+  return kPi * std::sqrt(lambda2 / mass_ratio) / (eps * std::cos(phi_rad));
+}
+
+std::vector<double> wkb_outofplane_omegas(const StaticSolution& statics,
+                                          int count,
+                                          int quadrature_panels) {
+  require(
+      quadrature_panels >= 1,
+      fmt::format("wkb_outofplane_omegas: quadrature_panels = {} must be >= 1", quadrature_panels));
+  const CableProperties& cable = statics.cable();
+  const double M = cable.normal_mass_kg_per_m();
+  // Slowness of transverse waves in the unstretched coordinate: sqrt(M / (T/(1+e))).
+  auto slowness = [&](double s) {
+    return std::sqrt(M * (1.0 + statics.strain(s)) / statics.tension_n(s));
+  };
+  const double L = cable.length_m;
+  const double panel = L / quadrature_panels;
+  double travel_time = 0.0;
+  for (int i = 0; i < quadrature_panels; ++i) {
+    travel_time +=
+        boost::math::quadrature::gauss<double, 20>::integrate(slowness, i * panel, (i + 1) * panel);
+  }
+  std::vector<double> omegas;
+  for (int n = 1; n <= count; ++n) omegas.push_back(n * kPi / travel_time);
+  return omegas;
+}
+
+std::optional<std::string> asymptotic_not_applicable_reason(
+    const Problem& problem,
+    const StaticSolution& statics,
+    const DimensionlessGroups& groups,
+    const AsymptoticSolverOptions& options) {
+  (void)problem;
+  const double cos_phi = std::cos(groups.chord_angle_rad);
+  if (!(statics.horizontal_force_n() > 0.0) || std::abs(cos_phi) < 1e-9) {
+    return fmt::format(
+        "vertical chord (H = {:.3g} N, phi_a = {:.6g} deg): lambda^2 = 0 and Grinfogel's eq. (21) "
+        "degenerates; the theory covers inclined cables with |phi_a| < 90 deg",
+        statics.horizontal_force_n(), groups.chord_angle_rad * 180.0 / kPi);
+  }
+  if (groups.eps > options.max_eps) {
+    return fmt::format(
+        "eps = W0 L / T0 = {:.4g} > max_eps = {:.4g}: the expansion in powers of eps is not "
+        "meaningful for such a slack cable (its error is O(eps^2))",
+        groups.eps, options.max_eps);
+  }
+  return std::nullopt;
+}
+
+SolverOutput solve_asymptotic(const Problem& problem,
+                              const StaticSolution& statics,
+                              const DimensionlessGroups& groups,
+                              const SolveRequest& request,
+                              const AsymptoticSolverOptions& options) {
+  options.validate();
+  request.validate();
+  SolverOutput output;
+  output.solver = "asymptotic";
+  output.summary.solver = "asymptotic";
+  if (auto reason = asymptotic_not_applicable_reason(problem, statics, groups, options)) {
+    output.summary.termination = Termination::NotApplicable;
+    output.summary.message = *reason;
+    return output;
+  }
+
+  const CableProperties& cable = problem.cable;
+  const double eps = groups.eps;
+  const double phi = groups.chord_angle_rad;
+  const double lambda2 = groups.lambda2;
+  const double error_estimate = eps * eps;
+  SolverSummary& summary = output.summary;
+  summary.resolution = "closed form: eq. (21) roots to double precision (TOMS 748), WKB with " +
+                       fmt::format("{} x 20-point Gauss-Legendre", options.quadrature_panels);
+  summary.max_error_estimate = error_estimate;
+  summary.iterations = 0;
+  summary.notes.push_back(
+      fmt::format("model error O(eps^2): eps = {:.4g}, phi_a = {:.4g} deg, lambda^2 = {:.6g}, h = "
+                  "{:.4g}; every "
+                  "frequency carries relative_error_estimate = eps^2 = {:.3g}",
+                  eps, phi * 180.0 / kPi, lambda2, groups.mass_ratio, error_estimate));
+  if (eps > options.eps_warning_threshold) {
+    summary.warnings.push_back(fmt::format(
+        "eps = {:.4g} > {:.3g}: outside the region where the O(eps^2) expansion is meaningful; "
+        "expect errors of order eps^2 = {:.2g} or worse (in the paper's eps = 0.49 table 'approx' "
+        "and 'exact' differ by up to 0.029 in kL/pi)",
+        eps, options.eps_warning_threshold, error_estimate));
+  }
+  if (cable.is_inextensible()) {
+    summary.notes.push_back(
+        "inextensible cable: eq. (21) taken in the limit 1/lambda^2 = 0 (Irvine's inextensible "
+        "shallow cable, symmetric modes tan x = x)");
+  }
+  if (request.forced) {
+    summary.warnings.push_back(
+        "forced response is not part of the asymptotic theory: not computed");
+  }
+
+  const Vector stations = request.stations_m(cable.length_m);
+  const bool need_shape = request.shapes || request.tension;
+  const double M = cable.normal_mass_kg_per_m();
+
+  if (request.inplane_modes > 0) {
+    ModalResult result;
+    result.plane = Plane::InPlane;
+    long iterations = 0;
+    const std::vector<double> roots =
+        eq21_roots_counted(request.inplane_modes, eps, phi, lambda2, iterations);
+    summary.iterations += iterations;
+    const double axial_kl = first_axial_k_l(eps, phi, lambda2, groups.mass_ratio);
+    std::vector<int> hybrid;
+    std::string character;
+    for (std::size_t i = 0; i < roots.size(); ++i) {
+      const double kl = roots[i];
+      // Roots alternate between the '-' family (even i) and the '+' family; the family that
+      // carries Irvine's symmetric root is '-' above cross-over (kL > lambda) and '+' below.
+      const bool above_cross_over = !std::isinf(lambda2) && kl * kl > lambda2;
+      const bool symmetric_like = (i % 2 == 0) == above_cross_over;
+      Mode mode;
+      mode.index = static_cast<int>(i) + 1;
+      internal::set_mode_frequency(mode, groups.omega_from_k_l_over_pi(kl / kPi), groups);
+      mode.relative_error_estimate = error_estimate;
+      const double detuning = std::isinf(lambda2) ? -1.0 : kl * kl / lambda2 - 1.0;
+      const bool in_hybrid_region = std::abs(detuning) < 2.0 * eps * std::abs(std::sin(phi));
+      if (in_hybrid_region) hybrid.push_back(mode.index);
+      character += fmt::format("{}{} {}", i ? ", " : "", mode.index,
+                               in_hybrid_region ? "H" : (symmetric_like ? "S" : "A"));
+      if (need_shape) {
+        internal::AsymptoticModeShape shape = internal::asymptotic_mode_shape(
+            stations, cable.length_m, kl, eps, phi, lambda2, options.shape_formula);
+        mode.s_m = stations;
+        mode.w = shape.w;
+        mode.u = shape.u;
+        if (request.tension) {
+          // Eq. (38): tau = -M omega^2 w_slow / alpha with w_slow = -(S2 + 7/4 e1) in the units
+          // of the shape functions and alpha = eps cos(phi_a) / L.
+          const double tau = M * mode.omega_rad_s * mode.omega_rad_s * shape.slow_amplitude *
+                             cable.length_m / (eps * std::cos(phi));
+          mode.tension_n = Vector::Constant(stations.size(), tau);
+        }
+        internal::normalise_inplane_mode(mode);
+        mode.modal_mass_kg = internal::inplane_modal_mass(mode, cable.mass_kg_per_m, M);
+        if (!request.shapes) {
+          mode.s_m = Vector();
+          mode.u = Vector();
+          mode.w = Vector();
+          mode.tension_n = Vector();
+          mode.modal_mass_kg = -1.0;
+        }
+      }
+      result.modes.push_back(std::move(mode));
+    }
+    result.proved_count_below_top = static_cast<int>(result.modes.size());
+    result.summary.solver = "asymptotic";
+    result.summary.termination = Termination::Converged;
+    result.summary.message = fmt::format(
+        "Converged: {} of {} in-plane roots of eq. (21), count proved by the one-root-per-tan-"
+        "branch bracketing; top kL/pi = {:.6g}",
+        result.modes.size(), request.inplane_modes, roots.empty() ? 0.0 : roots.back() / kPi);
+    result.summary.iterations = iterations;
+    result.summary.max_error_estimate = error_estimate;
+    result.summary.resolution = summary.resolution;
+    result.summary.notes.push_back(
+        "mode character (S symmetric-like, A antisymmetric-like, H hybrid: |k^2L^2/lambda^2 - 1| "
+        "< 2 eps sin(phi_a)): " +
+        character);
+    if (!hybrid.empty()) {
+      std::string list;
+      for (int index : hybrid) list += (list.empty() ? "" : ", ") + std::to_string(index);
+      result.summary.notes.push_back(fmt::format(
+          "modes in the hybrid (near-cross-over) region |k^2L^2/lambda^2 - 1| < 2 eps sin(phi_a): "
+          "{} (there the eps^2 term of eq. (21) is leading order)",
+          list));
+    }
+    if (!roots.empty() && roots.back() > 0.25 * axial_kl) {
+      result.summary.warnings.push_back(fmt::format(
+          "top kL/pi = {:.4g} exceeds a quarter of the first axial mode kL/pi = {:.4g}: eq. (21) "
+          "assumes quasi-static stretching and has no axial modes",
+          roots.back() / kPi, axial_kl / kPi));
+      summary.warnings.push_back(result.summary.warnings.back());
+    }
+    result.summary.warnings.insert(result.summary.warnings.begin(), summary.warnings.begin(),
+                                   summary.warnings.end());
+    output.inplane = std::move(result);
+  }
+
+  if (request.outofplane_modes > 0) {
+    ModalResult result;
+    result.plane = Plane::OutOfPlane;
+    const std::vector<double> omegas =
+        wkb_outofplane_omegas(statics, request.outofplane_modes, options.quadrature_panels);
+    for (std::size_t i = 0; i < omegas.size(); ++i) {
+      Mode mode;
+      mode.index = static_cast<int>(i) + 1;
+      internal::set_mode_frequency(mode, omegas[i], groups);
+      mode.relative_error_estimate = error_estimate;
+      if (need_shape) {
+        // WKB shape: v = (T/(1+e))^(-1/4) sin(omega tau(s)), tau the transverse travel time.
+        mode.s_m = stations;
+        mode.v = internal::wkb_outofplane_shape(statics, stations, omegas[i]);
+        internal::normalise_outofplane_mode(mode);
+        mode.modal_mass_kg = internal::outofplane_modal_mass(mode, M);
+        if (request.tension) {
+          // Out-of-plane motion stretches the cable only to second order.
+          mode.tension_n = Vector::Zero(stations.size());
+          mode.max_abs_tension_n = 0.0;
+        }
+        if (!request.shapes) {
+          mode.s_m = Vector();
+          mode.v = Vector();
+          mode.tension_n = Vector();
+          mode.modal_mass_kg = -1.0;
+        }
+      }
+      result.modes.push_back(std::move(mode));
+    }
+    result.proved_count_below_top = static_cast<int>(result.modes.size());
+    result.summary.solver = "asymptotic";
+    result.summary.termination = Termination::Converged;
+    result.summary.message = fmt::format(
+        "Converged: {} of {} out-of-plane WKB string modes omega_n = n pi / int sqrt(M(1+e)/T) ds",
+        result.modes.size(), request.outofplane_modes);
+    result.summary.max_error_estimate = error_estimate;
+    result.summary.resolution = summary.resolution;
+    output.outofplane = std::move(result);
+  }
+
+  summary.termination = Termination::Converged;
+  summary.message = fmt::format(
+      "Converged: {} in-plane (eq. 21, count proved) and {} out-of-plane (WKB) modes; model error "
+      "O(eps^2) = {:.3g}",
+      output.inplane ? output.inplane->modes.size() : 0,
+      output.outofplane ? output.outofplane->modes.size() : 0, error_estimate);
+  return output;
+}
+
+namespace internal {
+
+AsymptoticSolverOptions read_asymptotic_options(const SolverKnobs& knobs) {
+  KnobReader reader("asymptotic", knobs);
+  AsymptoticSolverOptions options;
+  const std::string formula = reader.get_string("shape_formula", to_string(options.shape_formula));
+  const auto parsed = parse_asymptotic_shape_formula(formula);
+  if (!parsed) {
+    throw InvalidInput(
+        fmt::format("{} = \"{}\": must be \"34\" or \"28\"", reader.key("shape_formula"), formula));
+  }
+  options.shape_formula = *parsed;
+  options.eps_warning_threshold =
+      reader.get_double("eps_warning_threshold", options.eps_warning_threshold);
+  options.max_eps = reader.get_double("max_eps", options.max_eps);
+  options.quadrature_panels =
+      static_cast<int>(reader.get_integer("quadrature_panels", options.quadrature_panels));
+  reader.reject_unknown();
+  try {
+    options.validate();
+  } catch (const InvalidInput& error) {
+    throw InvalidInput(fmt::format("[solvers.asymptotic]: {}", error.what()));
+  }
+  return options;
+}
 
 SolverEntry make_asymptotic_entry() {
   SolverEntry entry;
   entry.name = "asymptotic";
-  entry.description = "not implemented yet";
-  entry.not_applicable_reason = [](const SolveContext&) -> std::optional<std::string> {
-    return std::string("the asymptotic solver is not implemented yet");
+  entry.description =
+      "Grinfogel (1984) perturbation solution for taut inclined cables: eq. (21) frequencies "
+      "(exact root count), WKB out-of-plane, shapes eq. (34)/(28)/(37), tension eq. (38); error "
+      "O(eps^2)";
+  entry.knobs = {
+      {"shape_formula",
+       "transverse shape formula: \"34\" (uniformly valid, default) or \"28\" "
+       "(zeroth order)"},
+      {"eps_warning_threshold", "eps above which a validity warning is given; default 0.3"},
+      {"max_eps", "eps above which the solver declines; default 1.0, in (0, 10]"},
+      {"quadrature_panels", "panels of 20-point Gauss-Legendre for the WKB integral; default 4"},
   };
-  entry.validate_knobs = [](const SolverKnobs& knobs) { KnobReader("asymptotic", knobs).reject_unknown(); };
-  entry.run = [](const SolveContext&, const SolverKnobs&) { return SolverOutput{}; };
+  entry.not_applicable_reason = [](const SolveContext& context) -> std::optional<std::string> {
+    // Structural reasons only: the eps limit is a knob (max_eps, at most 10), which this hook
+    // cannot see; run() applies it and returns NotApplicable itself.
+    AsymptoticSolverOptions permissive;
+    permissive.max_eps = 10.0;
+    return asymptotic_not_applicable_reason(context.problem, context.statics, context.groups,
+                                            permissive);
+  };
+  entry.validate_knobs = [](const SolverKnobs& knobs) { read_asymptotic_options(knobs); };
+  entry.run = [](const SolveContext& context, const SolverKnobs& knobs) {
+    return solve_asymptotic(context.problem, context.statics, context.groups, context.request,
+                            read_asymptotic_options(knobs));
+  };
   return entry;
 }
 
-}  // namespace catena::internal
+}  // namespace internal
+}  // namespace catena

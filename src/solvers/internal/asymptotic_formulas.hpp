@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// Closed-form mode shapes of Grinfogel (1984) used by the asymptotic solver (notation in
+/// include/catena/solvers/asymptotic_solver.hpp), and the WKB out-of-plane shape.
+
+#include "catena/solvers/asymptotic_solver.hpp"
+
+namespace catena::internal {
+
+/// One in-plane mode evaluated on stations, in the units of the paper's brackets (the common
+/// factor C4 Sf / det A is set to 1).
+struct AsymptoticModeShape {
+  /// Transverse (normal) displacement w(s_j): eq. (34) or (28).
+  Vector w;
+  /// Tangential displacement u(s_j): eq. (37) times eps cos(phi_a) / kL (= Sf'/Sf).
+  Vector u;
+  /// Leading-order slow transverse amplitude -w_slow = S2 + 7/4 e1 (eqs. 24, 29, 38), in the same
+  /// units; the dynamic tension is M omega^2 slow_amplitude L / (eps cos phi_a).
+  double slow_amplitude = 0.0;
+};
+
+/// Evaluates eqs. (34)/(28) and (37) at the stations s_j [m] of a cable of length L [m] for the
+/// root kL. For a falling chord (sin phi_a < 0) the formulas, written with s from the lower end,
+/// are evaluated on the mirrored cable (s -> L - s, u -> -u, w -> -w).
+AsymptoticModeShape asymptotic_mode_shape(const Vector& stations_m,
+                                          double length_m,
+                                          double kl,
+                                          double eps,
+                                          double phi_rad,
+                                          double lambda2,
+                                          AsymptoticShapeFormula formula);
+
+/// WKB out-of-plane shape (P M)^(-1/4) sin(omega int_0^s sqrt(M/P) ds) with P = T/(1+e), at the
+/// stations [m] (not normalised).
+Vector wkb_outofplane_shape(const StaticSolution& statics,
+                            const Vector& stations_m,
+                            double omega_rad_s);
+
+}  // namespace catena::internal
