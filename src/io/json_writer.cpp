@@ -68,6 +68,7 @@ json modal_json(const ModalResult& result) {
 json forced_json(const ForcedResponse& response) {
   json out = {{"omega_rad_s", number(response.omega_rad_s)},
               {"max_abs_tension_n", number(response.max_abs_tension_n)},
+              {"relative_error_estimate", number(response.relative_error_estimate)},
               {"diagnostic", response.diagnostic}};
   if (response.s_m.size()) out["s_m"] = vector_json(response.s_m);
   if (response.u.size()) out["u_m"] = vector_json(response.u);

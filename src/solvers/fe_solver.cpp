@@ -644,11 +644,18 @@ SolverOutput solve_fe_timed(const Problem& problem,
     const Vec2 end_a = forced.end == CableEnd::A ? d : Vec2::Zero();
     const Vec2 end_b = forced.end == CableEnd::B ? d : Vec2::Zero();
     const auto fine = static_cast<std::size_t>(plan.main_fine);
-    for (std::size_t k = 0; k < num_penalties; ++k) {
-      Level& level = levels[fine][k];
-      if (!level.matrices.count(forced_plane)) {
-        level.matrices[forced_plane] = forced_plane == Plane::InPlane ? assemble_inplane(level.chain)
-                                                                      : assemble_outofplane(level.chain);
+    // The coarse mesh of the pair (N when the result is on 2N) gives the error estimate: the
+    // response converges as O(h^2), so |fine - coarse| bounds the fine mesh's error.
+    const bool forced_has_coarse = plan.main_coarse >= 0;
+    const auto coarse = static_cast<std::size_t>(std::max(0, plan.main_coarse));
+    for (std::size_t level_index : {fine, coarse}) {
+      if (level_index == coarse && !forced_has_coarse) continue;
+      for (std::size_t k = 0; k < num_penalties; ++k) {
+        Level& level = levels[level_index][k];
+        if (!level.matrices.count(forced_plane)) {
+          level.matrices[forced_plane] = forced_plane == Plane::InPlane ? assemble_inplane(level.chain)
+                                                                        : assemble_outofplane(level.chain);
+        }
       }
     }
     const std::optional<ModalResult>& modal = forced_out_of_plane ? output.outofplane : output.inplane;
@@ -703,6 +710,18 @@ SolverOutput solve_fe_timed(const Problem& problem,
         const double scale = std::max({response.u.size() ? response.u.cwiseAbs().maxCoeff() : 0.0,
                                        response.w.size() ? response.w.cwiseAbs().maxCoeff() : 0.0,
                                        response.v.size() ? response.v.cwiseAbs().maxCoeff() : 0.0});
+        if (forced_has_coarse && response.max_abs_tension_n > 0.0) {
+          // Same penalty as the result's first level: the estimate is of the mesh error.
+          const RawForced coarse_raw = forced_on_level(forced_plane, levels[coarse][0].chain,
+                                                       levels[coarse][0].matrices.at(forced_plane), omega,
+                                                       end_a, end_b, stations, statics);
+          const RawForced& fine_raw = raw[0];
+          if (coarse_raw.ok && coarse_raw.sampled.tension.size()) {
+            const double fine_max = fine_raw.sampled.tension.cwiseAbs().maxCoeff();
+            const double coarse_max = coarse_raw.sampled.tension.cwiseAbs().maxCoeff();
+            response.relative_error_estimate = std::abs(fine_max - coarse_max) / std::max(fine_max, 1e-300);
+          }
+        }
         if (!std::isfinite(scale) || !std::isfinite(response.max_abs_tension_n)) {
           response = ForcedResponse{};
           response.omega_rad_s = omega;

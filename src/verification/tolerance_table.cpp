@@ -55,6 +55,13 @@ ToleranceTable ToleranceTable::parse(const std::string& text, const std::string&
         else if (k == "reason") rule.reason = text_value();
         else if (k == "max") rule.max = number();
         else if (k == "estimate_factor") rule.estimate_factor = number();
+        else if (k == "beyond") {
+          const std::string beyond = text_value();
+          if (beyond != "fail" && beyond != "warn") {
+            throw InvalidInput(fmt::format("{}.beyond = \"{}\": must be \"fail\" or \"warn\"", where, beyond));
+          }
+          rule.warn_only = beyond == "warn";
+        }
         else if (k == "compare") {
           if (!v.is_array() || v.as_array().size() != 2) {
             throw ParseError(fmt::format("{}.compare: expected two names", where));

@@ -71,6 +71,9 @@ struct ForcedResponse {
   /// Dynamic tension amplitude [N] (signed: in phase with the forcing).
   Vector tension_n;
   double max_abs_tension_n = 0.0;
+  /// Estimated relative error of max_abs_tension_n (the solver's own estimate; -1: none). Near a
+  /// resonance the response is sensitive to the natural frequencies, and this estimate grows.
+  double relative_error_estimate = -1.0;
   /// Empty when fine; otherwise why this frequency has no finite answer (e.g. "forcing within
   /// 1e-12 of natural frequency 3 (resonance)").
   std::string diagnostic;

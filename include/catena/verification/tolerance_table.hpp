@@ -12,6 +12,8 @@
 ///     tag = "gale"                      # optional: only scenes with this tag
 ///     max = 1e-8                        # the tolerance (a floor when estimate_factor is set)
 ///     estimate_factor = 3.0             # optional: tolerance = max(max, factor * (est_a + est_b))
+///     beyond = "warn"                   # optional: a model's known limit, WARN (not FAIL) when
+///                                       # exceeded; the measured value is still reported
 ///     reason = "..."                    # required
 ///
 /// The first rule that matches wins: put specific rules before general ones.
@@ -29,6 +31,8 @@ struct ToleranceRule {
   std::string tag;
   double max = 0.0;
   double estimate_factor = 0.0;
+  /// True for `beyond = "warn"`: exceeding the tolerance is a documented model limit.
+  bool warn_only = false;
   std::string reason;
 };
 

@@ -41,13 +41,14 @@ class CheckBuilder {
   struct Tolerance {
     double value;
     std::string reason;
+    bool warn_only = false;
   };
   std::optional<Tolerance> tolerance(const std::string& check, const std::string& a, const std::string& b,
                                      double estimate_sum, std::optional<double> scene_override) {
     if (scene_override) return Tolerance{*scene_override, "scene [checks] override"};
     const ToleranceRule* rule = ToleranceTable::builtin().find(check, a, b, result_.scene.name, result_.scene.tags);
     if (!rule) return std::nullopt;
-    return Tolerance{std::max(rule->max, rule->estimate_factor * estimate_sum), rule->reason};
+    return Tolerance{std::max(rule->max, rule->estimate_factor * estimate_sum), rule->reason, rule->warn_only};
   }
 
   CheckResult base(const std::string& check, const std::string& compare, const std::string& plane, int mode) {
@@ -67,12 +68,17 @@ class CheckBuilder {
   void add_measured(CheckResult check, double measured, const Tolerance& tol, bool relative) {
     check.measured = measured;
     check.tolerance = tol.value;
-    if (!std::isfinite(measured) || (relative && measured > kGrossRelative)) {
+    if (!std::isfinite(measured)) {
       check.verdict = Verdict::Fail;
-      check.detail = (std::isfinite(measured) ? "gross disagreement" : "non-finite value") +
-                     std::string("; ") + check.detail;
+      check.detail = "non-finite value; " + check.detail;
+    } else if (relative && measured > kGrossRelative && !tol.warn_only) {
+      check.verdict = Verdict::Fail;
+      check.detail = "gross disagreement; " + check.detail;
+    } else if (measured <= tol.value) {
+      check.verdict = Verdict::Pass;
     } else {
-      check.verdict = measured <= tol.value ? Verdict::Pass : Verdict::Fail;
+      // A rule marked beyond = "warn" describes a model's documented limit, not a defect.
+      check.verdict = tol.warn_only ? Verdict::Warn : Verdict::Fail;
     }
     if (!check.detail.empty()) check.detail += "; ";
     check.detail += "tolerance: " + tol.reason;
@@ -241,10 +247,12 @@ void forced_pair(const SceneResult& result, const SolverOutput& a, const SolverO
       builder.add(check);
       continue;
     }
-    const auto tol = builder.tolerance("forced", a.solver, b.solver, 0.0, result.scene.checks.tension_rel);
+    const double estimates = std::max(0.0, x.relative_error_estimate) + std::max(0.0, y.relative_error_estimate);
+    const auto tol = builder.tolerance("forced", a.solver, b.solver, estimates, result.scene.checks.tension_rel);
     if (!tol) continue;
-    check.detail = fmt::format("max |tau| at {:.6g} rad/s: {:.9g} vs {:.9g} N", x.omega_rad_s,
-                               x.max_abs_tension_n, y.max_abs_tension_n);
+    check.detail = fmt::format("max |tau| at {:.6g} rad/s: {:.9g} vs {:.9g} N (error estimates {:.1e}, {:.1e})",
+                               x.omega_rad_s, x.max_abs_tension_n, y.max_abs_tension_n, x.relative_error_estimate,
+                               y.relative_error_estimate);
     builder.add_measured(check, relative_difference(x.max_abs_tension_n, y.max_abs_tension_n), *tol, true);
   }
 }
@@ -290,7 +298,8 @@ std::optional<std::pair<double, double>> solver_value(const SceneResult& result,
     if (mode < 0 || mode >= static_cast<int>(output.forced.size())) return std::nullopt;
     const ForcedResponse& response = output.forced[static_cast<std::size_t>(mode)];
     if (!response.diagnostic.empty()) return std::nullopt;
-    return std::pair{response.max_abs_tension_n / result.statics->horizontal_force_n(), 0.0};
+    return std::pair{response.max_abs_tension_n / result.statics->horizontal_force_n(),
+                     std::max(0.0, response.relative_error_estimate)};
   }
   const ModalResult* m = modal(output, published.quantity == PublishedQuantity::InPlaneFrequency ? Plane::InPlane
                                                                                                   : Plane::OutOfPlane);
