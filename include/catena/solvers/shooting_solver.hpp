@@ -1,0 +1,99 @@
+#pragma once
+/// \file
+/// The `shooting` solver (DESIGN.md §2.2): the exact linear boundary-value solution of the cable
+/// equations, integrated along s with SUNDIALS CVODE. It is the project's accuracy reference.
+///
+/// Model (DESIGN.md §1.3). About the static elastic catenary, harmonic motion D = Phi(s) e^{i w t}
+/// satisfies (A Phi')' + w^2 Mmat Phi = 0 with A = EA t t^T + (T/(1+e)) n n^T and
+/// Mmat = m t t^T + M n n^T; out of plane ((T/(1+e)) v')' + w^2 M v = 0. The solver integrates the
+/// first-order form Phi' = A^{-1} F, F' = -w^2 Mmat Phi, with
+/// A^{-1} = t t^T / EA + ((1+e)/T) n n^T, which is finite for EA = inf: an inextensible cable is
+/// solved exactly, without a penalty. The coefficients are the closed forms of the shared statics.
+///
+/// Frequencies. The two principal solutions (Phi(0) = 0, F(0) = unit vectors) are integrated
+/// together; w is a natural frequency when det Phi(L; w) = 0. The number of natural frequencies
+/// below a trial w equals the number of conjugate points of the principal solution on (0, L]
+/// (Morse index theorem for this self-adjoint Hamiltonian system; out of plane, Sturm's zero
+/// count). It is obtained from the monotone phase theta = arg det(Phi + i F) integrated along s
+/// (Atkinson's unitary-matrix formulation; out of plane Pruefer's angle), so no zero of det Phi
+/// can be missed between output points. Each mode is bracketed by bisection on the count and then
+/// refined by TOMS 748 on the smooth function det Phi(L) / sqrt(det(Phi^T Phi + F^T F)), so close
+/// pairs are separated and an exactly double root (count jumping by 2) is returned as two modes.
+///
+/// Loss of independence between the two in-plane principal solutions (exponentially growing
+/// "chain" solutions of curved, inextensible or very stiff cables at high frequency) is prevented
+/// by re-orthonormalising the pair (QR with positive diagonal, so the sign of det Phi and the
+/// phase are preserved) whenever the condition number of its Gram matrix exceeds
+/// `max_condition`; the summary reports how often this happened.
+///
+/// Error estimate per frequency: half the final root bracket plus the change of the root when the
+/// end function is re-evaluated at 10x tighter tolerances (one extra shot per mode, one secant
+/// step with the slope of the final bracket). Accuracy is set by `relative_tolerance`.
+///
+/// References: Atkinson, Discrete and Continuous Boundary Problems (1964), ch. 10 (oscillation
+/// of Hamiltonian systems); Irvine, Cable Structures (1981); Gale (1976), seed 003.
+
+#include <string>
+
+#include "catena/models/cable.hpp"
+#include "catena/solvers/modal_result.hpp"
+#include "catena/solvers/solve_request.hpp"
+#include "catena/statics/dimensionless_groups.hpp"
+#include "catena/statics/elastic_catenary.hpp"
+
+namespace catena {
+
+/// CVODE's linear multistep family.
+enum class ShootingMethod {
+  Adams,  ///< Adams-Moulton, orders 1-12: the system is oscillatory, not stiff (default)
+  Bdf     ///< BDF, orders 1-5 (for comparison / stiff variants)
+};
+/// "adams", "bdf".
+std::string to_string(ShootingMethod method);
+
+/// Options of the shooting solver. Scene knobs: `rtol`, `atol`, `root_tolerance`, `method`,
+/// `max_steps`, `max_condition`, `error_estimate`.
+struct ShootingSolverOptions {
+  /// CVODE relative tolerance [-] (knob `rtol`). In [1e-14, 1e-2].
+  double relative_tolerance = 1e-10;
+  /// CVODE absolute tolerance on the scaled state (displacements in units of L, forces in units
+  /// of the largest end tension; the basis has norm ~1) [-] (knob `atol`). 0 means
+  /// relative_tolerance / 100. In [0, 1e-2].
+  double absolute_tolerance = 0.0;
+  /// Relative width of the final root bracket [-] (knob `root_tolerance`). 0 means
+  /// relative_tolerance / 100, floored at 4e-16. In [0, 1e-2].
+  double root_tolerance = 0.0;
+  /// Integration method (knob `method` = "adams" | "bdf").
+  ShootingMethod method = ShootingMethod::Adams;
+  /// Maximum CVODE steps per shot (knob `max_steps`). >= 100.
+  long max_steps = 500000;
+  /// Re-orthonormalise the in-plane pair when cond(Gram) exceeds this (knob `max_condition`).
+  /// In [2, 1e8].
+  double max_condition = 1e2;
+  /// Estimate each frequency's integration error by one extra shot at 10x tighter tolerances
+  /// (knob `error_estimate`). When false the estimate is the root bracket plus 10 rtol.
+  bool error_estimate = true;
+
+  /// absolute_tolerance with the default applied.
+  double effective_absolute_tolerance() const;
+  /// root_tolerance with the default applied.
+  double effective_root_tolerance() const;
+  /// Throws InvalidInput naming the field, its value and the violated constraint.
+  void validate() const;
+};
+
+/// Solves the request (frequencies, shapes, tension, forced response) by shooting.
+/// \param problem the cable and supports (validated).
+/// \param statics its static solution (solve_statics).
+/// \param groups its dimensionless groups (for kL/pi and Gale's ratio).
+/// \param request what to compute.
+/// \param options integrator and root-finding settings; throws InvalidInput when invalid.
+/// \return every quantity asked, with a summary per plane and an overall summary; numerical
+/// trouble is reported there (never thrown, never NaN).
+SolverOutput solve_shooting(const Problem& problem,
+                            const StaticSolution& statics,
+                            const DimensionlessGroups& groups,
+                            const SolveRequest& request,
+                            const ShootingSolverOptions& options = {});
+
+}  // namespace catena
