@@ -5,7 +5,6 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
-#include <boost/math/tools/toms748_solve.hpp>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
@@ -31,7 +30,7 @@ double ShootingSolverOptions::effective_absolute_tolerance() const {
 }
 
 double ShootingSolverOptions::effective_root_tolerance() const {
-  return root_tolerance > 0.0 ? root_tolerance : std::max(relative_tolerance / 100.0, 4e-16);
+  return root_tolerance > 0.0 ? root_tolerance : relative_tolerance;
 }
 
 void ShootingSolverOptions::validate() const {
@@ -57,22 +56,91 @@ using internal::ShootingFailure;
 using internal::ShootingIntegrator;
 using internal::Shot;
 
-// One evaluation of the end function: the count of eigenvalues below omega and the smooth
-// determinant whose simple zeros are the eigenvalues.
+// One evaluation of the end function: the count of eigenvalues below omega, the end eigen-angles
+// (for the count-aware root function) and the smooth end determinant.
 struct Sample {
   int count = 0;
+  double angle_min = 0.0;
+  double angle_max = 0.0;
   double determinant = 0.0;
 };
+
+// internal::count_function on a stored sample.
+double count_function(const Sample& sample, int n) {
+  const double angle = sample.count < n ? sample.angle_max : sample.angle_min;
+  return (sample.count - n) + (angle - kPi) / (2.0 * kPi);
+}
+
+// Brent's zero finder (Brent 1973, "zeroin"): inverse quadratic / secant steps safeguarded by
+// bisection, one evaluation per iteration, and every step at least the tolerance long so that
+// the bracket closes. Needs f(a) f(b) < 0; returns the final bracket (ascending), of width
+// <= ~relative_tolerance * omega.
+template <class Function>
+std::pair<double, double> brent_zero(Function f, double a, double b, double fa, double fb,
+                                     double relative_tolerance) {
+  double c = a, fc = fa;
+  double d = b - a, e = d;
+  for (int iteration = 0; iteration < 300; ++iteration) {
+    if ((fb > 0.0 && fc > 0.0) || (fb < 0.0 && fc < 0.0)) {
+      c = a;
+      fc = fa;
+      d = e = b - a;
+    }
+    if (std::abs(fc) < std::abs(fb)) {
+      a = b;
+      b = c;
+      c = a;
+      fa = fb;
+      fb = fc;
+      fc = fa;
+    }
+    const double tol1 = 2.0 * std::numeric_limits<double>::epsilon() * std::abs(b) +
+                        0.25 * relative_tolerance * std::abs(b);
+    const double xm = 0.5 * (c - b);
+    if (std::abs(xm) <= tol1 || fb == 0.0) break;
+    if (std::abs(e) >= tol1 && std::abs(fa) > std::abs(fb)) {
+      double p, q;
+      const double s = fb / fa;
+      if (a == c) {
+        p = 2.0 * xm * s;
+        q = 1.0 - s;
+      } else {
+        const double qa = fa / fc, r = fb / fc;
+        p = s * (2.0 * xm * qa * (qa - r) - (b - a) * (r - 1.0));
+        q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
+      }
+      if (p > 0.0) q = -q;
+      p = std::abs(p);
+      if (2.0 * p < std::min(3.0 * xm * q - std::abs(tol1 * q), std::abs(e * q))) {
+        e = d;
+        d = p / q;
+      } else {
+        d = xm;
+        e = d;
+      }
+    } else {
+      d = xm;
+      e = d;
+    }
+    a = b;
+    fa = fb;
+    b += std::abs(d) > tol1 ? d : std::copysign(tol1, xm);
+    fb = f(b);
+  }
+  return {std::min(b, c), std::max(b, c)};
+}
 
 // A frequency found (a cluster of `multiplicity` equal frequencies for a double root).
 struct Root {
   double omega = 0.0;
   int multiplicity = 1;
   double relative_error = 0.0;
-  double residual = 0.0;  // |determinant| at omega
+  double residual = 0.0;  // smaller |determinant| at the final bracket ends
 };
 
-// Brackets and refines the lowest `num_modes` eigenfrequencies of one plane.
+// Brackets and refines the lowest `num_modes` eigenfrequencies of one plane. Mode n is the root of
+// the count-aware function h_n (shooting_integrator.hpp), bracketed by any two samples with
+// counts < n and >= n: the sign of h_n certifies the count, so no mode can be skipped.
 class ModeFinder {
  public:
   static constexpr long kMaxShots = 20000;
@@ -87,8 +155,7 @@ class ModeFinder {
     if (zero.count != 0) {
       warnings.push_back(fmt::format("count at omega = 0 is {} (expected 0)", zero.count));
     }
-    // An upper bound: the string estimate (n + 1) pi / travel time, enlarged until the count
-    // reaches num_modes.
+    // An upper bound: the string estimate, enlarged until the count reaches num_modes.
     double top = first_guess_;
     for (int attempt = 0; evaluate(top).count < num_modes; ++attempt) {
       if (attempt > 200) throw ShootingFailure("no upper bound found for the requested modes");
@@ -97,45 +164,34 @@ class ModeFinder {
     const double tol = options_.effective_root_tolerance();
     int n = 1;
     while (n <= num_modes) {
-      auto [lo, hi] = bracket(n);
+      const auto [lo, hi] = bracket(n);
       const Sample& a = samples_.at(lo);
       const Sample& b = samples_.at(hi);
       if (a.count == n - 1 && b.count == n && a.determinant * b.determinant < 0.0) {
-        // The refined bracket must itself be certified by the count: a bracket end sitting on
-        // the next eigenvalue (e.g. the first guess of a uniform string is exact) lets TOMS 748
-        // converge to that end. Then bisect on the count and try again.
-        std::optional<Root> root = refine(lo, hi, n);
-        if (root) {
-          roots.push_back(*root);
-          ++n;
-        } else {
-          evaluate(0.5 * (lo + hi));
-        }
+        roots.push_back(refine(n, lo, hi));
+        ++n;
       } else if (hi - lo <= tol * hi) {
         // Several eigenvalues inside a bracket narrower than the tolerance: a multiple root
         // (e.g. Irvine's cross-over), returned as that many modes.
         Root root;
         root.omega = 0.5 * (lo + hi);
-        root.multiplicity = std::max(1, b.count - a.count);
+        root.multiplicity = std::max(1, b.count - std::max(a.count, n - 1));
         if (a.count != n - 1) {
-          warnings.push_back(fmt::format("count not monotone near mode {} ({} at {} rad/s)", n,
-                                         a.count, lo));
+          warnings.push_back(
+              fmt::format("mode {}: count {} just below the root (expected {})", n, a.count, n - 1));
         }
-        if (root.multiplicity == 1) {
+        if (b.count - a.count == 1) {
           warnings.push_back(fmt::format(
-              "mode {}: the count brackets a root the end determinant does not change sign on "
-              "(bracket [{:.17g}, {:.17g}] rad/s); bisection on the count used",
+              "mode {}: the end determinant does not change sign across the count bracket "
+              "[{:.17g}, {:.17g}] rad/s; located by bisection on the count",
               n, lo, hi));
         }
         root.relative_error = 0.5 * (hi - lo) / root.omega + 10.0 * options_.relative_tolerance;
-        root.residual = std::abs(evaluate(root.omega).determinant);
+        root.residual = std::min(std::abs(a.determinant), std::abs(b.determinant));
         roots.push_back(root);
         n += root.multiplicity;
       } else {
-        evaluate(0.5 * (lo + hi));
-      }
-      if (shots_ > kMaxShots) {
-        throw ShootingFailure(fmt::format("more than {} shots while isolating mode {}", kMaxShots, n));
+        evaluate(trial_point(n, lo, hi));
       }
     }
     const auto above = samples_.upper_bound(roots.back().omega);
@@ -145,74 +201,87 @@ class ModeFinder {
 
   long shots() const { return shots_; }
   int proved_count() const { return proved_count_; }
+  double max_phase_defect() const { return max_phase_defect_; }
 
  private:
   const Sample& evaluate(double omega) {
     auto it = samples_.find(omega);
     if (it != samples_.end()) return it->second;
+    if (shots_ >= kMaxShots) throw ShootingFailure(fmt::format("more than {} shots", kMaxShots));
     const Shot shot = integrator_.shoot(omega);
     ++shots_;
     max_phase_defect_ = std::max(max_phase_defect_, shot.phase_defect);
-    return samples_.emplace(omega, Sample{shot.count, shot.determinant}).first->second;
+    const Sample sample{shot.count, shot.angle_min, shot.angle_max, shot.determinant};
+    return samples_.emplace(omega, sample).first->second;
   }
 
-  // Largest sampled omega with count < n, smallest with count >= n.
+  // Largest sampled omega with count < n, and the smallest sample above it with count >= n.
   std::pair<double, double> bracket(int n) const {
     double lo = 0.0;
-    double hi = samples_.rbegin()->first;
     for (const auto& [omega, sample] : samples_) {
       if (sample.count < n) lo = std::max(lo, omega);
     }
-    for (auto it = samples_.rbegin(); it != samples_.rend(); ++it) {
-      if (it->second.count >= n && it->first > lo) hi = it->first;
+    double hi = samples_.rbegin()->first;
+    for (auto it = samples_.upper_bound(lo); it != samples_.end(); ++it) {
+      if (it->second.count >= n) {
+        hi = it->first;
+        break;
+      }
     }
     return {lo, hi};
   }
 
-  std::optional<Root> refine(double lo, double hi, int n) {
-    const double tol = options_.effective_root_tolerance();
+  // Next trial inside a count bracket: where the leading eigen-angle of the lower end is predicted
+  // to reach its crossing (linear in omega through the origin of h_n, which is nearly linear for
+  // string-like modes), kept within the middle 80% of the bracket; bisection otherwise.
+  double trial_point(int n, double lo, double hi) const {
+    const Sample& a = samples_.at(lo);
+    const double mid = 0.5 * (lo + hi);
+    if (a.count != n - 1 || lo <= 0.0) return mid;
+    const double h_lo = count_function(a, n);  // in (-1, 0]
+    auto below = samples_.find(lo);
+    if (below == samples_.begin()) return mid;
+    --below;
+    if (below->second.count != n - 1) return mid;
+    const double h_below = count_function(below->second, n);
+    if (!(h_lo > h_below)) return mid;
+    // Aim a little beyond the predicted crossing, so that the new point is likely the upper end.
+    const double predicted = lo - h_lo * (lo - below->first) / (h_lo - h_below);
+    const double aim = predicted + 0.02 * (predicted - lo) + 1e-9 * predicted;
+    return std::clamp(aim, lo + 0.1 * (hi - lo), hi - 0.1 * (hi - lo));
+  }
+
+  Root refine(int n, double lo, double hi) {
     auto f = [this](double omega) { return evaluate(omega).determinant; };
-    auto done = [tol](double a, double b) { return std::abs(b - a) <= tol * std::max(a, b); };
-    std::uintmax_t iterations = 200;
-    const auto [a, b] = boost::math::tools::toms748_solve(
-        f, lo, hi, samples_.at(lo).determinant, samples_.at(hi).determinant, done, iterations);
-    // Certified when the counts at the final bracket are n - 1 and n. At rounding width the
-    // count itself flickers between its two values, so there it suffices that the smaller is
-    // n - 1 (a bracket converged onto eigenvalue n + 1 shows counts n and n + 1).
-    const int count_a = evaluate(a).count;
-    const int count_b = evaluate(b).count;
-    const bool certified = count_a == n - 1 && count_b == n;
-    const bool at_rounding = (b - a) <= 64.0 * std::numeric_limits<double>::epsilon() * b &&
-                             std::min(count_a, count_b) == n - 1 && std::max(count_a, count_b) <= n;
-    if (!certified && !at_rounding) return std::nullopt;
+    const auto [a, b] = brent_zero(f, lo, hi, samples_.at(lo).determinant,
+                                   samples_.at(hi).determinant,
+                                   options_.effective_root_tolerance());
+    const Sample& sa = evaluate(a);
+    const Sample& sb = evaluate(b);
     Root root;
     root.omega = 0.5 * (a + b);
-    const double fa = f(a), fb = f(b);
-    root.residual = std::abs(f(root.omega));
-    const double slope = (b > a) ? (fb - fa) / (b - a) : 0.0;
+    root.residual = std::min(std::abs(sa.determinant), std::abs(sb.determinant));
+    (void)n;
+    const double slope = (b > a) ? (sb.determinant - sa.determinant) / (b - a) : 0.0;
     double integration_error = 10.0 * options_.relative_tolerance * root.omega;
     if (options_.error_estimate && slope != 0.0) {
-      // The root of the end function at 10x tighter tolerances, one secant step from here.
+      // The root of the end determinant at 10x tighter tolerances, one secant step from here.
       const Shot tight = integrator_.shoot(root.omega, 0.1);
       ++shots_;
-      const double here = fa + slope * (root.omega - a);
+      const double here = sa.determinant + slope * (root.omega - a);
       integration_error = std::abs((tight.determinant - here) / slope);
     }
     root.relative_error = (0.5 * (b - a) + integration_error) / root.omega;
     return root;
   }
 
-
- public:
-  double max_phase_defect_ = 0.0;
-
- private:
   ShootingIntegrator& integrator_;
   const ShootingSolverOptions& options_;
   double first_guess_;
   std::map<double, Sample> samples_;
   long shots_ = 0;
   int proved_count_ = -1;
+  double max_phase_defect_ = 0.0;
 };
 
 // Transverse travel time int sqrt(M (1+e)/T) ds [s] (Simpson), for the first frequency guess.
@@ -235,6 +304,7 @@ internal::IntegratorSettings integrator_settings(const ShootingSolverOptions& op
   settings.relative_tolerance = options.relative_tolerance;
   settings.absolute_tolerance = options.effective_absolute_tolerance();
   settings.use_bdf = options.method == ShootingMethod::Bdf;
+  settings.fixed_point = options.fixed_point_iteration;
   settings.max_steps = options.max_steps;
   settings.max_condition = options.max_condition;
   return settings;
@@ -393,7 +463,7 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
       "(max log volume growth {:.3g}); max phase defect {:.2e} rad",
       finder.shots(), integrator.total_steps(), integrator.total_rhs_evaluations(),
       integrator.total_reorthonormalisations(), integrator.max_log_growth(),
-      finder.max_phase_defect_));
+      finder.max_phase_defect()));
   summary.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -557,6 +627,15 @@ ShootingSolverOptions read_knobs(const SolverKnobs& knobs) {
     throw InvalidInput(fmt::format("{} = \"{}\": must be \"adams\" or \"bdf\"", reader.key("method"),
                                    method));
   }
+  const std::string nonlinear = reader.get_string("nonlinear_solver", options.fixed_point_iteration ? "fixed_point" : "newton");
+  if (nonlinear == "newton") {
+    options.fixed_point_iteration = false;
+  } else if (nonlinear == "fixed_point") {
+    options.fixed_point_iteration = true;
+  } else {
+    throw InvalidInput(fmt::format("{} = \"{}\": must be \"newton\" or \"fixed_point\"",
+                                   reader.key("nonlinear_solver"), nonlinear));
+  }
   options.max_steps = reader.get_integer("max_steps", options.max_steps);
   options.max_condition = reader.get_double("max_condition", options.max_condition);
   options.error_estimate = reader.get_bool("error_estimate", options.error_estimate);
@@ -576,13 +655,14 @@ SolverEntry make_shooting_entry() {
   entry.name = "shooting";
   entry.description =
       "exact linear boundary-value solution: principal solutions integrated with SUNDIALS CVODE, "
-      "modes counted by conjugate points (Morse index) and refined by TOMS 748; any sag, "
+      "modes counted by conjugate points (Morse index) and refined by Brent's method on a count-aware phase function; any sag, "
       "inclination, EA (inf exact), added mass";
   entry.knobs = {
       {"rtol", "CVODE relative tolerance, in [1e-14, 1e-2], default 1e-10"},
       {"atol", "CVODE absolute tolerance on the scaled state, in [0, 1e-2], default rtol/100"},
-      {"root_tolerance", "relative width of the final frequency bracket, default rtol/100"},
+      {"root_tolerance", "relative width of the final frequency bracket, default rtol"},
       {"method", "\"adams\" (default) or \"bdf\""},
+      {"nonlinear_solver", "\"newton\" (dense LU, analytic Jacobian) or \"fixed_point\" (default)"},
       {"max_steps", "maximum CVODE steps per shot, >= 100, default 500000"},
       {"max_condition", "re-orthonormalise when cond(Gram) exceeds this, in [2, 1e8], default 100"},
       {"error_estimate", "one extra shot per mode at 10x tighter tolerances, default true"},

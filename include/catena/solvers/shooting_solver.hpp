@@ -52,7 +52,7 @@ enum class ShootingMethod {
 std::string to_string(ShootingMethod method);
 
 /// Options of the shooting solver. Scene knobs: `rtol`, `atol`, `root_tolerance`, `method`,
-/// `max_steps`, `max_condition`, `error_estimate`.
+/// `nonlinear_solver`, `max_steps`, `max_condition`, `error_estimate`.
 struct ShootingSolverOptions {
   /// CVODE relative tolerance [-] (knob `rtol`). In [1e-14, 1e-2].
   double relative_tolerance = 1e-10;
@@ -61,10 +61,15 @@ struct ShootingSolverOptions {
   /// relative_tolerance / 100. In [0, 1e-2].
   double absolute_tolerance = 0.0;
   /// Relative width of the final root bracket [-] (knob `root_tolerance`). 0 means
-  /// relative_tolerance / 100, floored at 4e-16. In [0, 1e-2].
+  /// relative_tolerance: the end determinant carries integration noise of that order, so a
+  /// narrower bracket only costs shots without improving the frequency. In [0, 1e-2].
   double root_tolerance = 0.0;
   /// Integration method (knob `method` = "adams" | "bdf").
   ShootingMethod method = ShootingMethod::Adams;
+  /// CVODE's nonlinear solver (knob `nonlinear_solver` = "fixed_point" | "newton"): functional
+  /// iteration (no Jacobian; right for this non-stiff, oscillatory system) or Newton with the
+  /// analytic Jacobian and SUNDIALS' dense LU (SUNDenseMatrix + SUNLinSol_Dense).
+  bool fixed_point_iteration = true;
   /// Maximum CVODE steps per shot (knob `max_steps`). >= 100.
   long max_steps = 500000;
   /// Re-orthonormalise the in-plane pair when cond(Gram) exceeds this (knob `max_condition`).

@@ -3,6 +3,7 @@
 #include <cvode/cvode.h>
 #include <cvode/cvode_ls.h>
 #include <sunlinsol/sunlinsol_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <Eigen/Dense>
@@ -128,22 +129,45 @@ int jacobian(double x, N_Vector, N_Vector, SUNMatrix J, void* user_data, N_Vecto
   return 0;
 }
 
-// Eigen-angles of U = conj(Z) Z^{-1}, Z = Phi + i F, mapped to (pi, 3 pi]; returns their sum.
+// Eigen-angles of U = conj(Z) Z^{-1}, Z = Phi + i F, mapped to (pi, 3 pi], ascending.
+// The quadratic formula on U loses half the digits at a double eigenvalue (a double root of the
+// cable), so the angles come from a real symmetric matrix instead: with e^{i beta} Z = P + i Q,
+// U = e^{2 i beta} (V - i)(V + i)^{-1}, V = P Q^{-1} symmetric, and each eigenvalue nu of V gives
+// alpha = 2 beta - 2 atan2(1, nu). beta is chosen from {0, pi/4, pi/2, 3 pi/4} to make Q best
+// conditioned; the symmetric eigenproblem is then accurate to rounding.
 template <int D>
-double sum_of_unitary_angles(const Square<D>& Phi, const Square<D>& F) {
-  using Complex = std::complex<double>;
-  using CSquare = Eigen::Matrix<Complex, D, D>;
-  const CSquare Z = Phi.template cast<Complex>() + Complex(0.0, 1.0) * F.template cast<Complex>();
-  const CSquare U = Z.conjugate() * Z.inverse();
-  auto mapped = [](Complex lambda) { return std::arg(lambda) + 2.0 * kPi; };  // (pi, 3 pi]
+Eigen::Matrix<double, D, 1> unitary_angles(const Square<D>& Phi, const Square<D>& F) {
+  auto to_range = [](double alpha) {  // into (pi, 3 pi]
+    while (alpha <= kPi) alpha += 2.0 * kPi;
+    while (alpha > 3.0 * kPi) alpha -= 2.0 * kPi;
+    return alpha;
+  };
+  Eigen::Matrix<double, D, 1> angles;
   if constexpr (D == 1) {
-    return mapped(U(0, 0));
+    angles(0) = to_range(-2.0 * std::atan2(F(0, 0), Phi(0, 0)));
   } else {
-    const Complex half_trace = 0.5 * (U(0, 0) + U(1, 1));
-    const Complex det = U(0, 0) * U(1, 1) - U(0, 1) * U(1, 0);
-    const Complex root = std::sqrt(half_trace * half_trace - det);
-    return mapped(half_trace + root) + mapped(half_trace - root);
+    double best_quality = -1.0, best_beta = 0.0;
+    const double scale = Phi.squaredNorm() + F.squaredNorm();
+    for (int k = 0; k < 4; ++k) {
+      const double beta = 0.25 * kPi * k;
+      const Square<D> Q = std::sin(beta) * Phi + std::cos(beta) * F;
+      const double quality = std::abs(Q.determinant()) / scale;
+      if (quality > best_quality) {
+        best_quality = quality;
+        best_beta = beta;
+      }
+    }
+    const Square<D> best_P = std::cos(best_beta) * Phi - std::sin(best_beta) * F;
+    const Square<D> best_Q = std::sin(best_beta) * Phi + std::cos(best_beta) * F;
+    Square<D> V = best_P * best_Q.inverse();
+    V = 0.5 * (V + V.transpose()).eval();
+    const Eigen::SelfAdjointEigenSolver<Square<D>> eig(V, Eigen::EigenvaluesOnly);
+    for (int j = 0; j < D; ++j) {
+      angles(j) = to_range(2.0 * best_beta - 2.0 * std::atan2(1.0, eig.eigenvalues()(j)));
+    }
+    if (angles(0) > angles(1)) std::swap(angles(0), angles(1));
   }
+  return angles;
 }
 
 template <int D>
@@ -169,6 +193,8 @@ struct ShootingIntegrator::Impl {
         scratch(state_size, context.get()),
         matrix(SUNDenseMatrix(state_size, state_size, context.get())),
         linear_solver(SUNLinSol_Dense(y.get(), matrix.get(), context.get())),
+        nonlinear_solver(s.fixed_point ? SUNNonlinSol_FixedPoint(y.get(), 0, context.get())
+                                       : nullptr),
         cvode(s.use_bdf ? CV_BDF : CV_ADAMS, context.get()) {
     data.coefficients = coefficients;
     data.dimension = dimension;
@@ -179,9 +205,16 @@ struct ShootingIntegrator::Impl {
     N_VConst(0.0, y.get());
     check(CVodeInit(cvode.get(), dimension == 2 ? rhs<2> : rhs<1>, 0.0, y.get()), "CVodeInit");
     check(CVodeSetUserData(cvode.get(), &data), "CVodeSetUserData");
-    check(CVodeSetLinearSolver(cvode.get(), linear_solver.get(), matrix.get()),
-          "CVodeSetLinearSolver");
-    check(CVodeSetJacFn(cvode.get(), dimension == 2 ? jacobian<2> : jacobian<1>), "CVodeSetJacFn");
+    if (settings.fixed_point) {
+      // Functional iteration (no Jacobian, no linear solve): the system is not stiff.
+      if (!nonlinear_solver.get()) throw ShootingFailure("could not allocate SUNNonlinSol_FixedPoint");
+      check(CVodeSetNonlinearSolver(cvode.get(), nonlinear_solver.get()), "CVodeSetNonlinearSolver");
+    } else {
+      check(CVodeSetLinearSolver(cvode.get(), linear_solver.get(), matrix.get()),
+            "CVodeSetLinearSolver");
+      check(CVodeSetJacFn(cvode.get(), dimension == 2 ? jacobian<2> : jacobian<1>),
+            "CVodeSetJacFn");
+    }
     check(CVodeSetMaxNumSteps(cvode.get(), settings.max_steps), "CVodeSetMaxNumSteps");
   }
 
@@ -205,6 +238,7 @@ struct ShootingIntegrator::Impl {
   SerialVector scratch;
   SundialsMatrix matrix;
   SundialsLinearSolver linear_solver;
+  SundialsNonlinearSolver nonlinear_solver;
   CvodeMemory cvode;
   RhsData data;
   long total_steps = 0;
@@ -332,8 +366,11 @@ Shot ShootingIntegrator::Impl::shoot(double omega, double tolerance_factor,
   const double theta = theta_mod + 2.0 * kPi * winding;
   shot.phase_defect = std::abs(theta_integrated - theta);
   const double total_alpha = 2.0 * kPi * D - 2.0 * theta;
-  const double count = (total_alpha - sum_of_unitary_angles<D>(Phi, F)) / (2.0 * kPi);
+  const Eigen::Matrix<double, D, 1> angles = unitary_angles<D>(Phi, F);
+  const double count = (total_alpha - angles.sum()) / (2.0 * kPi);
   shot.count = static_cast<int>(std::lround(count));
+  shot.angle_min = angles(0);
+  shot.angle_max = angles(D - 1);
 
   total_steps += shot.steps;
   total_rhs += shot.rhs_evaluations;
@@ -360,6 +397,11 @@ long ShootingIntegrator::total_reorthonormalisations() const {
   return impl_->total_reorthonormalisations;
 }
 double ShootingIntegrator::max_log_growth() const { return impl_->max_log_growth; }
+
+double count_function(const Shot& shot, int n) {
+  const double angle = shot.count < n ? shot.angle_max : shot.angle_min;
+  return (shot.count - n) + (angle - kPi) / (2.0 * kPi);
+}
 
 Eigen::VectorXd combine_at_station(const Shot& shot, std::size_t j, const Eigen::VectorXd& c) {
   // c belongs to the last segment; segment k-1's coefficients are R_k^{-1} c_k.

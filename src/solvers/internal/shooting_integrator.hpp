@@ -75,6 +75,7 @@ struct IntegratorSettings {
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 1e-12;
   bool use_bdf = false;  ///< CV_BDF instead of CV_ADAMS
+  bool fixed_point = false;  ///< fixed-point nonlinear iteration instead of Newton + dense LU
   long max_steps = 200000;  ///< per shot
   double max_condition = 1e2;  ///< re-orthonormalise when cond(G) exceeds this
   bool balance = true;  ///< rescale Phi, F by kappa^2 = max(Omega, 1) (off only for studies)
@@ -96,6 +97,9 @@ struct Shot {
   double determinant = 0.0;
   /// Conjugate points on (0, L]: eigenfrequencies below omega.
   int count = 0;
+  /// Smallest and largest eigen-angle of U at the far end, in (pi, 3 pi] [rad].
+  double angle_min = 0.0;
+  double angle_max = 0.0;
   /// |theta_integrated - theta_exact| [rad]: integration error of the phase (must be << pi).
   double phase_defect = 0.0;
   /// Stations (when asked): the scaled basis there and the segment it belongs to.
@@ -108,6 +112,14 @@ struct Shot {
   /// log of the product of det R over the re-orthonormalisations (growth of the basis volume).
   double log_growth = 0.0;
 };
+
+/// The continuous, count-aware root function of eigenvalue n (1-based):
+///     h_n = N - n + (abar - pi) / (2 pi),  abar = angle_max if N < n, else angle_min.
+/// It increases with omega (upward jumps at the other eigenvalues) and crosses zero continuously,
+/// and only, at the n-th eigenvalue, where it equals (alpha_c - (2n+1) pi) / (2 pi) for the
+/// crossing eigen-angle alpha_c: nearly linear in omega, so secant steps converge fast. At a
+/// double root it jumps across zero, and a bracketing solver still converges to it.
+double count_function(const Shot& shot, int n);
 
 /// Integrates principal solutions for one plane; holds CVODE's memory between shots.
 class ShootingIntegrator {

@@ -10,6 +10,7 @@
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
+#include <sundials/sundials_nonlinearsolver.h>
 
 #include <cstdlib>
 #include <string>
@@ -81,6 +82,21 @@ class SundialsLinearSolver {
 
  private:
   SUNLinearSolver solver_ = nullptr;
+};
+
+/// Owns a SUNNonlinearSolver (may be empty: CVODE then uses its default Newton solver).
+class SundialsNonlinearSolver {
+ public:
+  explicit SundialsNonlinearSolver(SUNNonlinearSolver solver) : solver_(solver) {}
+  ~SundialsNonlinearSolver() {
+    if (solver_) SUNNonlinSolFree(solver_);
+  }
+  SundialsNonlinearSolver(const SundialsNonlinearSolver&) = delete;
+  SundialsNonlinearSolver& operator=(const SundialsNonlinearSolver&) = delete;
+  SUNNonlinearSolver get() const { return solver_; }
+
+ private:
+  SUNNonlinearSolver solver_ = nullptr;
 };
 
 /// Owns CVODE's integrator memory.
