@@ -345,6 +345,19 @@ Profile evaluate_profile(const Shot& shot, const Eigen::VectorXd& c, const Shoot
   return p;
 }
 
+bool is_straight_inextensible(const ShootingCoefficients& k) {
+  return k.H == 0.0 && k.compliance == 0.0;
+}
+
+// Out-of-plane profile of the transverse string re-labelled as the in-plane normal motion.
+Profile string_as_inplane(const Profile& string) {
+  Profile p;
+  p.w = string.v;
+  p.u = Vector::Zero(string.v.size());
+  p.tension = Vector::Zero(string.v.size());
+  return p;
+}
+
 std::vector<double> scaled_stations(const Vector& stations_m, double length_m, bool reversed) {
   std::vector<double> x(static_cast<std::size_t>(stations_m.size()));
   const Index n = stations_m.size();
@@ -369,7 +382,18 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
                                    to_string(options.method), options.relative_tolerance,
                                    options.effective_absolute_tolerance(),
                                    options.effective_root_tolerance());
-  ShootingIntegrator integrator(plane, k, integrator_settings(options));
+  // A straight (vertical, H = 0) inextensible cable: the axial direction is rigid, det Phi(L)
+  // vanishes identically, and the in-plane problem is the transverse string alone, which is the
+  // out-of-plane equation for the normal displacement.
+  const bool string_only = plane == Plane::InPlane && is_straight_inextensible(k);
+  if (string_only) {
+    summary.notes.push_back(
+        "straight inextensible cable: in-plane modes are the transverse string modes (normal "
+        "displacement w, u = 0); the axial direction is rigid and its constant dynamic tension is "
+        "statically indeterminate (reported as 0)");
+  }
+  const Plane integration_plane = string_only ? Plane::OutOfPlane : plane;
+  ShootingIntegrator integrator(integration_plane, k, integrator_settings(options));
   // String estimate of the (n+1)-th frequency, nudged off the exact string values.
   const double guess = (num_modes + 1.37) * kPi / travel_time(k);
   ModeFinder finder(integrator, options, guess);
@@ -395,7 +419,7 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
       Shot shot;
       if (want_profile) {
         shot = integrator.shoot(root.omega, 1.0, &x);
-        const int D = plane == Plane::InPlane ? 2 : 1;
+        const int D = integration_plane == Plane::InPlane ? 2 : 1;
         const Eigen::MatrixXd phi_end = shot.y_end.topRows(D);
         const Eigen::JacobiSVD<Eigen::MatrixXd> svd(phi_end, Eigen::ComputeFullV);
         for (int j = 0; j < root.multiplicity && j < D; ++j) {
@@ -409,7 +433,8 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
         mode.relative_error_estimate = root.relative_error;
         if (want_profile && j < static_cast<int>(null_vectors.size())) {
           Profile p = evaluate_profile(shot, null_vectors[static_cast<std::size_t>(j)], k,
-                                       stations, false, plane);
+                                       stations, false, integration_plane);
+          if (string_only) p = string_as_inplane(p);
           mode.s_m = stations;
           if (plane == Plane::InPlane) {
             mode.u = p.u;
@@ -474,12 +499,12 @@ ForcedResponse forced_response(ShootingIntegrator& integrator, const ShootingCoe
                                const ShootingSolverOptions& options) {
   ForcedResponse response;
   response.omega_rad_s = omega;
-  const Plane plane =
+  Plane plane =
       forced.direction == ForcingDirection::OutOfPlane ? Plane::OutOfPlane : Plane::InPlane;
   const bool from_b = forced.end == CableEnd::A;  // start at the fixed end
   const double s_driven = forced.end == CableEnd::B ? k.length_m : 0.0;
-  const int D = plane == Plane::InPlane ? 2 : 1;
-  Eigen::VectorXd d(D);
+  Eigen::VectorXd d(plane == Plane::InPlane ? 2 : 1);
+  bool string_only = false;
   if (plane == Plane::OutOfPlane) {
     d[0] = forced.amplitude_m;
   } else {
@@ -490,7 +515,22 @@ ForcedResponse forced_response(ShootingIntegrator& integrator, const ShootingCoe
       default: direction = forced.vector.normalized(); break;
     }
     d = forced.amplitude_m * direction;
+    if (is_straight_inextensible(k)) {
+      // Only the normal part can move a straight inextensible cable; see solve_plane.
+      const double axial = direction.dot(k.tangent(s_driven));
+      if (std::abs(axial) > 1e-12) {
+        response.diagnostic = fmt::format(
+            "a straight inextensible cable cannot be displaced along its axis (axial part {:.3g} "
+            "of the drive): no finite response",
+            axial);
+        return response;
+      }
+      string_only = true;
+      plane = Plane::OutOfPlane;
+      d = Eigen::VectorXd::Constant(1, forced.amplitude_m * direction.dot(k.normal(s_driven)));
+    }
   }
+  const int D = plane == Plane::InPlane ? 2 : 1;
   const std::vector<double> x = scaled_stations(stations, k.length_m, from_b);
   const Shot shot = integrator.shoot(omega, 1.0, &x, from_b);
   // Resonance: the end determinant is at the level of the integration error.
@@ -505,8 +545,9 @@ ForcedResponse forced_response(ShootingIntegrator& integrator, const ShootingCoe
   const Eigen::MatrixXd phi_end = shot.y_end.topRows(D);
   const Eigen::VectorXd c = phi_end.partialPivLu().solve(d / k.length_m);
   Profile p = evaluate_profile(shot, c, k, stations, from_b, plane);
+  if (string_only) p = string_as_inplane(p);
   response.s_m = stations;
-  if (plane == Plane::InPlane) {
+  if (plane == Plane::InPlane || string_only) {
     response.u = p.u;
     response.w = p.w;
     response.tension_n = p.tension;
@@ -571,7 +612,8 @@ SolverOutput solve_shooting(const Problem& problem,
         forced.direction == ForcingDirection::OutOfPlane ? Plane::OutOfPlane : Plane::InPlane;
     const Vector stations = request.stations_m(k.length_m);
     try {
-      ShootingIntegrator integrator(plane, k, integrator_settings(options));
+      const Plane integration_plane = is_straight_inextensible(k) ? Plane::OutOfPlane : plane;
+      ShootingIntegrator integrator(integration_plane, k, integrator_settings(options));
       for (double omega : forced.omegas_rad_s) {
         output.forced.push_back(forced_response(integrator, k, forced, omega, stations, options));
       }

@@ -146,6 +146,10 @@ TEST(ShootingSolver, IrvineAntisymmetricModesAndCrossOver) {
     ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
         << solved.output.summary.full_report();
     const auto& modes = solved.output.inplane->modes;
+    for (const Mode& mode : modes) {
+      std::printf("lambda2 %.4f mode %d kL/pi %.12f err %.1e\n", lambda2, mode.index,
+                  mode.k_l_over_pi, mode.relative_error_estimate);
+    }
     // Count the modes near the antisymmetric values kL/pi = 2, 4.
     for (double target : {2.0, 4.0}) {
       int near = 0;

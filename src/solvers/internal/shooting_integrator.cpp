@@ -129,7 +129,7 @@ int jacobian(double x, N_Vector, N_Vector, SUNMatrix J, void* user_data, N_Vecto
   return 0;
 }
 
-// Eigen-angles of U = conj(Z) Z^{-1}, Z = Phi + i F, mapped to (pi, 3 pi], ascending.
+// Eigen-angles of U = conj(Z) Z^{-1}, Z = Phi + i F, mapped to [pi, 3 pi), ascending.
 // The quadratic formula on U loses half the digits at a double eigenvalue (a double root of the
 // cable), so the angles come from a real symmetric matrix instead: with e^{i beta} Z = P + i Q,
 // U = e^{2 i beta} (V - i)(V + i)^{-1}, V = P Q^{-1} symmetric, and each eigenvalue nu of V gives
@@ -137,9 +137,14 @@ int jacobian(double x, N_Vector, N_Vector, SUNMatrix J, void* user_data, N_Vecto
 // conditioned; the symmetric eigenproblem is then accurate to rounding.
 template <int D>
 Eigen::Matrix<double, D, 1> unitary_angles(const Square<D>& Phi, const Square<D>& F) {
-  auto to_range = [](double alpha) {  // into (pi, 3 pi]
-    while (alpha <= kPi) alpha += 2.0 * kPi;
-    while (alpha > 3.0 * kPi) alpha -= 2.0 * kPi;
+  // Into [pi - delta, 3 pi - delta). An angle at pi to rounding is one that has not moved (the
+  // tangential angle of a nearly straight inextensible cable barely leaves pi, where every angle
+  // starts): it must count as not yet crossed. The shift delta moves the count threshold of a
+  // genuine crossing by 1e-12 rad, far inside the root brackets, which use the determinant.
+  constexpr double kDelta = 1e-12;
+  auto to_range = [](double alpha) {
+    while (alpha < kPi - kDelta) alpha += 2.0 * kPi;
+    while (alpha >= 3.0 * kPi - kDelta) alpha -= 2.0 * kPi;
     return alpha;
   };
   Eigen::Matrix<double, D, 1> angles;
@@ -397,11 +402,6 @@ long ShootingIntegrator::total_reorthonormalisations() const {
   return impl_->total_reorthonormalisations;
 }
 double ShootingIntegrator::max_log_growth() const { return impl_->max_log_growth; }
-
-double count_function(const Shot& shot, int n) {
-  const double angle = shot.count < n ? shot.angle_max : shot.angle_min;
-  return (shot.count - n) + (angle - kPi) / (2.0 * kPi);
-}
 
 Eigen::VectorXd combine_at_station(const Shot& shot, std::size_t j, const Eigen::VectorXd& c) {
   // c belongs to the last segment; segment k-1's coefficients are R_k^{-1} c_k.

@@ -24,7 +24,7 @@
 /// an eigenvalue of U passing -1, so the number of conjugate points on (0, x] -- which by Morse
 /// index theory equals the number of eigenfrequencies below w when x = 1 -- is
 ///
-///     N = [ (2 pi D - 2 theta) - sum_j abar_j ] / (2 pi),   abar_j = arg e^{i alpha_j} in (pi, 3 pi],
+///     N = [ (2 pi D - 2 theta) - sum_j abar_j ] / (2 pi),   abar_j = arg e^{i alpha_j} in [pi, 3 pi)
 ///
 /// exactly an integer. theta is integrated as one extra ODE component (so it never needs
 /// unwrapping) and is reconciled with arg det Z at the end; the mismatch is reported.
@@ -97,7 +97,7 @@ struct Shot {
   double determinant = 0.0;
   /// Conjugate points on (0, L]: eigenfrequencies below omega.
   int count = 0;
-  /// Smallest and largest eigen-angle of U at the far end, in (pi, 3 pi] [rad].
+  /// Smallest and largest eigen-angle of U at the far end, in [pi, 3 pi) (shifted down by 1e-12 rad) [rad].
   double angle_min = 0.0;
   double angle_max = 0.0;
   /// |theta_integrated - theta_exact| [rad]: integration error of the phase (must be << pi).
@@ -112,14 +112,6 @@ struct Shot {
   /// log of the product of det R over the re-orthonormalisations (growth of the basis volume).
   double log_growth = 0.0;
 };
-
-/// The continuous, count-aware root function of eigenvalue n (1-based):
-///     h_n = N - n + (abar - pi) / (2 pi),  abar = angle_max if N < n, else angle_min.
-/// It increases with omega (upward jumps at the other eigenvalues) and crosses zero continuously,
-/// and only, at the n-th eigenvalue, where it equals (alpha_c - (2n+1) pi) / (2 pi) for the
-/// crossing eigen-angle alpha_c: nearly linear in omega, so secant steps converge fast. At a
-/// double root it jumps across zero, and a bracketing solver still converges to it.
-double count_function(const Shot& shot, int n);
 
 /// Integrates principal solutions for one plane; holds CVODE's memory between shots.
 class ShootingIntegrator {
