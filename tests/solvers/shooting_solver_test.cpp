@@ -229,6 +229,35 @@ TEST(ShootingSolver, ObservedConvergenceVsRtolIsMonotone) {
   }
 }
 
+TEST(ShootingSolver, ThirtyModesAreCountedWithoutGaps) {
+  // The conjugate-point count at the top bracket must equal the number of modes returned, and the
+  // frequencies must not decrease, on scenes with close pairs (near Irvine's cross-over), large
+  // sag, inclination and elasticity.
+  std::vector<Problem> problems = {
+      make_taut_inclined_problem(0.01, 0.0, 4.0 * kPi * kPi * (1.0 + 1e-6), 1.0),
+      make_taut_inclined_problem(0.49, 80.0, 400.0, 0.6),
+      make_taut_inclined_problem(0.05, 10.0, 40.0, 1.0),
+      make_gale_sag_problem(0.5, 0.8),
+  };
+  SolveRequest request;
+  request.inplane_modes = 30;
+  request.outofplane_modes = 30;
+  ShootingSolverOptions options;
+  options.error_estimate = false;
+  for (const Problem& problem : problems) {
+    const Solved solved = solve(problem, request, options);
+    ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+        << solved.output.summary.full_report();
+    for (const auto* plane : {&*solved.output.inplane, &*solved.output.outofplane}) {
+      ASSERT_EQ(plane->modes.size(), 30u);
+      EXPECT_EQ(plane->proved_count_below_top, 30);
+      for (std::size_t i = 1; i < plane->modes.size(); ++i) {
+        EXPECT_GE(plane->modes[i].omega_rad_s, plane->modes[i - 1].omega_rad_s) << i;
+      }
+    }
+  }
+}
+
 TEST(ShootingSolverOptions, RejectsBadValues) {
   ShootingSolverOptions options;
   options.relative_tolerance = 0.0;
