@@ -408,31 +408,71 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
     return result;
   }
 
+  // Roots closer than the integration can resolve form one (numerically) multiple root: its
+  // null space is spanned by the smallest singular vectors of Phi(L) together.
+  const double merge = 1000.0 * std::max(options.relative_tolerance,
+                                         options.effective_root_tolerance());
+  std::vector<std::vector<Root>> clusters;
+  for (const Root& root : roots) {
+    if (!clusters.empty() && root.omega - clusters.back().back().omega <= merge * root.omega) {
+      clusters.back().push_back(root);
+    } else {
+      clusters.push_back({root});
+    }
+  }
+  if (clusters.size() < roots.size()) {
+    summary.notes.push_back(fmt::format(
+        "{} groups of frequencies closer than {:.1e} (relative): shapes from the joint null space, "
+        "mass-orthogonalised",
+        roots.size() - clusters.size(), merge));
+  }
+
   const bool want_profile = request.shapes || request.tension;
   const Vector stations = request.stations_m(k.length_m);
   const std::vector<double> x = scaled_stations(stations, k.length_m, false);
   double max_error = 0.0, max_residual = 0.0;
   int index = 1;
   try {
-    for (const Root& root : roots) {
+    for (const std::vector<Root>& cluster : clusters) {
+      int cluster_size = 0;
+      double cluster_omega = 0.0;
+      for (const Root& r : cluster) {
+        cluster_size += r.multiplicity;
+        cluster_omega += r.omega * r.multiplicity;
+      }
+      cluster_omega /= cluster_size;
       std::vector<Eigen::VectorXd> null_vectors;
       Shot shot;
       if (want_profile) {
-        shot = integrator.shoot(root.omega, 1.0, &x);
+        shot = integrator.shoot(cluster_omega, 1.0, &x);
         const int D = integration_plane == Plane::InPlane ? 2 : 1;
         const Eigen::MatrixXd phi_end = shot.y_end.topRows(D);
         const Eigen::JacobiSVD<Eigen::MatrixXd> svd(phi_end, Eigen::ComputeFullV);
-        for (int j = 0; j < root.multiplicity && j < D; ++j) {
+        for (int j = 0; j < cluster_size && j < D; ++j) {
           null_vectors.push_back(svd.matrixV().col(D - 1 - j));
         }
+        if (null_vectors.size() == 2) {
+          // A double root has a two-dimensional null space: return a mass-orthogonal pair
+          // (Gram-Schmidt in int (m u u' + M w w') ds on the stations).
+          const Profile p1 = evaluate_profile(shot, null_vectors[0], k, stations, false, plane);
+          const Profile p2 = evaluate_profile(shot, null_vectors[1], k, stations, false, plane);
+          auto mass_product = [&](const Profile& a, const Profile& b) {
+            const Vector density = k.m * a.u.cwiseProduct(b.u) + k.M * a.w.cwiseProduct(b.w);
+            return internal::integrate_on_stations(stations, density);
+          };
+          const double m11 = mass_product(p1, p1);
+          if (m11 > 0.0) null_vectors[1] -= (mass_product(p1, p2) / m11) * null_vectors[0];
+        }
       }
+      int member = 0;
+      for (const Root& root : cluster) {
       for (int j = 0; j < root.multiplicity && index <= num_modes; ++j, ++index) {
         Mode mode;
         mode.index = index;
         internal::set_mode_frequency(mode, root.omega, groups);
         mode.relative_error_estimate = root.relative_error;
-        if (want_profile && j < static_cast<int>(null_vectors.size())) {
-          Profile p = evaluate_profile(shot, null_vectors[static_cast<std::size_t>(j)], k,
+        if (want_profile && member < static_cast<int>(null_vectors.size())) {
+          Profile p = evaluate_profile(shot, null_vectors[static_cast<std::size_t>(member++)], k,
                                        stations, false, integration_plane);
           if (string_only) p = string_as_inplane(p);
           mode.s_m = stations;
@@ -465,6 +505,7 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
         max_residual = std::max(max_residual, root.residual);
         result.modes.push_back(std::move(mode));
       }
+      }
     }
   } catch (const ShootingFailure& failure) {
     summary.warnings.push_back(fmt::format("shapes: {}", failure.what()));
@@ -496,7 +537,7 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
 
 ForcedResponse forced_response(ShootingIntegrator& integrator, const ShootingCoefficients& k,
                                const ForcedRequest& forced, double omega, const Vector& stations,
-                               const ShootingSolverOptions& options) {
+                               const ShootingSolverOptions& options, bool& near_resonance) {
   ForcedResponse response;
   response.omega_rad_s = omega;
   Plane plane =
@@ -542,6 +583,7 @@ ForcedResponse forced_response(ShootingIntegrator& integrator, const ShootingCoe
         std::abs(shot.determinant), resonance_level);
     return response;
   }
+  near_resonance = std::abs(shot.determinant) < 1e-3;
   const Eigen::MatrixXd phi_end = shot.y_end.topRows(D);
   const Eigen::VectorXd c = phi_end.partialPivLu().solve(d / k.length_m);
   Profile p = evaluate_profile(shot, c, k, stations, from_b, plane);
@@ -615,7 +657,19 @@ SolverOutput solve_shooting(const Problem& problem,
       const Plane integration_plane = is_straight_inextensible(k) ? Plane::OutOfPlane : plane;
       ShootingIntegrator integrator(integration_plane, k, integrator_settings(options));
       for (double omega : forced.omegas_rad_s) {
-        output.forced.push_back(forced_response(integrator, k, forced, omega, stations, options));
+        bool near_resonance = false;
+        output.forced.push_back(
+            forced_response(integrator, k, forced, omega, stations, options, near_resonance));
+        if (!output.forced.back().diagnostic.empty()) {
+          summary.warnings.push_back(
+              fmt::format("forced response at {:.10g} rad/s: {}", omega,
+                          output.forced.back().diagnostic));
+        } else if (near_resonance) {
+          summary.warnings.push_back(fmt::format(
+              "forced response at {:.10g} rad/s is near a natural frequency (|det Phi(L)| / "
+              "sqrt(det G) < 1e-3): the response is resonance-amplified and sensitive to omega",
+              omega));
+        }
       }
       iterations += static_cast<long>(forced.omegas_rad_s.size());
       operations += integrator.total_rhs_evaluations();

@@ -119,6 +119,26 @@ TEST(ShootingSolver, ExactDoubleRootIsReturnedAsTwoModes) {
   EXPECT_LT(relative_error(expected[1], expected[2]), 1e-14) << "the test case must be double";
 }
 
+TEST(ShootingSolver, DoubleRootShapesAreMassOrthogonal) {
+  SolveRequest request;
+  request.inplane_modes = 3;
+  request.shapes = true;
+  request.points = 401;
+  ShootingSolverOptions options;
+  options.relative_tolerance = 1e-12;
+  const Solved solved = solve(straight_cable(2000.0, 6000.0), request, options);
+  ASSERT_EQ(solved.output.inplane->modes.size(), 3u);
+  const Mode& a = solved.output.inplane->modes[1];
+  const Mode& b = solved.output.inplane->modes[2];
+  double cross = 0.0;
+  for (Index j = 1; j < a.s_m.size(); ++j) {
+    auto density = [&](Index i) { return a.u[i] * b.u[i] + a.w[i] * b.w[i]; };  // m = M = 1
+    cross += 0.5 * (a.s_m[j] - a.s_m[j - 1]) * (density(j) + density(j - 1));
+  }
+  // Any mass-orthogonal basis of the two-dimensional eigenspace is a valid answer.
+  EXPECT_LT(std::abs(cross) / std::sqrt(a.modal_mass_kg * b.modal_mass_kg), 1e-8);
+}
+
 TEST(ShootingSolver, TautStringFromGroupsHasIntegerKLOverPi) {
   SolveRequest request;
   request.inplane_modes = 0;
