@@ -11,24 +11,51 @@
 /// solved exactly, without a penalty. The coefficients are the closed forms of the shared statics.
 ///
 /// Frequencies. The two principal solutions (Phi(0) = 0, F(0) = unit vectors) are integrated
-/// together; w is a natural frequency when det Phi(L; w) = 0. The number of natural frequencies
-/// below a trial w equals the number of conjugate points of the principal solution on (0, L]
-/// (Morse index theorem for this self-adjoint Hamiltonian system; out of plane, Sturm's zero
-/// count). It is obtained from the monotone phase theta = arg det(Phi + i F) integrated along s
-/// (Atkinson's unitary-matrix formulation; out of plane Pruefer's angle), so no zero of det Phi
-/// can be missed between output points. Each mode is bracketed by bisection on the count and then
-/// refined by TOMS 748 on the smooth function det Phi(L) / sqrt(det(Phi^T Phi + F^T F)), so close
-/// pairs are separated and an exactly double root (count jumping by 2) is returned as two modes.
+/// together (8 states in plane, 2 out of plane, plus one phase state); w is a natural frequency
+/// when det Phi(L; w) = 0. The number of natural frequencies below a trial w equals the number of
+/// conjugate points of the principal solution on (0, L] (Morse index theorem for this self-adjoint
+/// Hamiltonian system; out of plane, Sturm's zero count). It is read off the monotone phase
+/// theta = arg det(Phi + i F), integrated along s as an extra ODE component, together with the
+/// eigen-angles of the unitary matrix (Phi - iF)(Phi + iF)^{-1} at s = L (Atkinson's formulation;
+/// out of plane, Pruefer's angle). A zero of det Phi between output points can therefore not be
+/// missed, and the count is exact as long as the integrated phase is accurate to better than pi
+/// (its mismatch with arg det at s = L is reported as the "phase defect").
 ///
-/// Loss of independence between the two in-plane principal solutions (exponentially growing
-/// "chain" solutions of curved, inextensible or very stiff cables at high frequency) is prevented
-/// by re-orthonormalising the pair (QR with positive diagonal, so the sign of det Phi and the
-/// phase are preserved) whenever the condition number of its Gram matrix exceeds
-/// `max_condition`; the summary reports how often this happened.
+/// Each mode n is first bracketed by counts: the largest sampled w with count n - 1 and the
+/// smallest with count n (new samples by a phase-extrapolated guess or bisection). Inside such a
+/// certified bracket det Phi(L) / sqrt(det(Phi^T Phi + F^T F)) -- a smooth function of w in
+/// [-1, 1], invariant under the re-orthonormalisation below -- changes sign exactly once, and
+/// Brent's method refines the root to `root_tolerance`. Several eigenvalues inside a bracket
+/// narrower than the tolerance (an exactly double root, e.g. Irvine's cross-over, where the count
+/// jumps by 2) are returned as that many modes at the same frequency; roots closer than
+/// 1000 rtol share a joint null space for their shapes, mass-orthogonalised.
+///
+/// Loss of independence. The in-plane pair can grow at different exponential rates (the "chain"
+/// solutions of curved inextensible cables at high frequency, large lambda^2). After every CVODE
+/// step the Gram matrix of the pair is checked; when its condition number exceeds `max_condition`
+/// or its scale leaves [1e-6, 1e6], the pair is replaced by the Q of its QR factorisation with
+/// positive diagonal R (det R > 0, so the sign of det Phi and the phase are unchanged) and CVODE
+/// is restarted; the R factors map the final null vector back onto every segment. A compound-matrix
+/// (exterior-product) formulation was not used because the shapes and the forced response need
+/// the solutions themselves. The variables are also rescaled symplectically (Phi by kappa, F by
+/// 1/kappa, kappa^2 = max(Omega, 1)) so that the phase turns at a nearly uniform rate.
+///
+/// Straight inextensible cable (vertical, H = 0, EA = inf): the axial direction is rigid and
+/// det Phi(L) vanishes for every w; the in-plane modes are then the transverse string modes
+/// (solved as the scalar problem), with u = 0 and zero dynamic tension (a constant axial tension is
+/// statically indeterminate); a forced axial displacement has no finite response (diagnostic).
+///
+/// Mode shapes: the null vector of Phi(L) combined with the solutions recorded at the request's
+/// stations (CVODE's dense output), u = Phi . t, w = Phi . n, tau = t . F, normalised and
+/// integrated with the shared mode_tools. Forced response: the principal solutions from the fixed
+/// end, combined to meet the prescribed displacement at the driven end (one 2x2 solve per
+/// frequency); a frequency where det Phi(L) is at the integration-noise level is reported as
+/// resonance, one with |det| < 1e-3 gets a near-resonance warning.
 ///
 /// Error estimate per frequency: half the final root bracket plus the change of the root when the
-/// end function is re-evaluated at 10x tighter tolerances (one extra shot per mode, one secant
-/// step with the slope of the final bracket). Accuracy is set by `relative_tolerance`.
+/// end determinant is re-evaluated at 10x tighter tolerances (one extra shot per mode, one secant
+/// step with the slope of the final bracket). Observed: the frequency error is about 0.3-0.5 rtol
+/// from rtol = 1e-4 to 1e-12, and the estimate covers it (see the convergence test).
 ///
 /// References: Atkinson, Discrete and Continuous Boundary Problems (1964), ch. 10 (oscillation
 /// of Hamiltonian systems); Irvine, Cable Structures (1981); Gale (1976), seed 003.

@@ -32,10 +32,15 @@
 ///
 /// Loss of independence. The two in-plane columns can grow at different exponential rates (the
 /// "chain" solutions of a curved inextensible cable, or large lambda^2). After every CVODE step the
-/// Gram matrix G is checked; when its condition number exceeds `max_condition` (or the basis norm
-/// leaves [1e-3, 1e3]) the basis is replaced by the Q of its QR factorisation with positive
+/// Gram matrix G is checked; when its condition number exceeds `max_condition` (or the basis scale
+/// leaves [1e-6, 1e6]) the basis is replaced by the Q of its QR factorisation with positive
 /// diagonal R (so det R > 0: the sign of det Phi and theta are unchanged) and CVODE is restarted.
 /// The R factors are kept so that a combination of the final basis maps back to every segment.
+///
+/// Balancing. The shot integrates Phi~ = kappa Phi^, F~ = F^ / kappa with kappa^2 = max(Omega, 1)
+/// (a constant symplectic scaling: B -> kappa^2 B, C -> C / kappa^2). It balances B and C for the
+/// transverse wave so that the phase turns at a nearly uniform rate; unbalanced, the Pruefer-type
+/// phase turns in bursts and costs CVODE several times more steps. Results are unscaled.
 
 #include <memory>
 #include <stdexcept>
@@ -140,8 +145,8 @@ class ShootingIntegrator {
   std::unique_ptr<Impl> impl_;
 };
 
-/// The solution at station j of a shot for the combination `c` of the final basis (2D-vector:
-/// scaled [Phi^; F^]), mapped back through the segment R factors.
+/// The solution (scaled [Phi^; F^], a 2D-vector) at station j of a shot for the combination `c`
+/// (a D-vector) of the final basis, mapped back through the segment R factors.
 Eigen::VectorXd combine_at_station(const Shot& shot, std::size_t j, const Eigen::VectorXd& c);
 
 }  // namespace catena::internal
