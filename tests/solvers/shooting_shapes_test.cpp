@@ -64,10 +64,12 @@ TEST(ShootingShapes, StraightCableModesHaveExactShapesAndTension) {
     const Vector& shape = axial ? mode.u : mode.w;
     const Vector& other = axial ? mode.w : mode.u;
     double max_shape_error = 0.0, max_tension_error = 0.0;
-    // The shape is normalised to +1 at its first sampled maximum, which for sin(3 pi s/L) on
-    // these stations is the middle one: align the sign of the exact shape there.
+    // The shape is normalised to +1 at its first sampled maximum: align the sign of the exact
+    // shape there
+    // (ties within 1e-9 go to the first station, as in mode_tools).
     Index peak = 0;
-    shape.cwiseAbs().maxCoeff(&peak);
+    const double peak_value = shape.cwiseAbs().maxCoeff();
+    while (std::abs(shape[peak]) < peak_value * (1.0 - 1e-9)) ++peak;
     const double sign = std::sin(n * kPi * mode.s_m[peak] / L) > 0.0 ? 1.0 : -1.0;
     for (Index j = 0; j < mode.s_m.size(); ++j) {
       const double s = mode.s_m[j];
