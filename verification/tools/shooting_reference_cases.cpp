@@ -7,6 +7,9 @@
 //     phi in {10, 45, 80} deg, lambda^2 in {1, 40, 400}, mass ratio 1.
 // Each frequency carries the solver's relative error estimate and the conjugate-point count that
 // proves no mode below it was skipped.
+// Also writes verification/reference/shooting-grinfogel-2-2-comparison.csv: Grinfogel's (1984)
+// 'exact' (Triantafyllou's Airy solution, asymptotic in eps) and 'approx' (his eq. 21) kL/pi
+// beside the exact linear solution by shooting.
 //
 // Build and run from the repository root after building the library (Release):
 //   g++ -O2 -std=c++20 -Iinclude -Isrc -I/usr/include/eigen3 \
@@ -81,6 +84,46 @@ int main(int argc, char** argv) {
     }
   }
   write_csv_table(reference + "/shooting-issue4-cases.csv", out);
+
+  const CsvTable grinfogel =
+      read_csv_table(reference + "/published/grinfogel-1984-table-2-2-frequencies.csv");
+  CsvTable comparison;
+  comparison.comments = {
+      "verification/reference/shooting-grinfogel-2-2-comparison.csv",
+      "source:    Grinfogel (1984) tables after Fig. 2.2 (published/grinfogel-1984-table-2-2-"
+      "frequencies.csv): 'exact' = Triantafyllou's Airy solution (asymptotic in eps), 'approx' = "
+      "eq. (21)",
+      "method:    shooting solver, rtol 1e-12, make_taut_inclined_problem(eps, phi, lambda2, 1)",
+      "columns:   eps, phi_deg, lambda2, mode, published exact and approx kL/pi, shooting kL/pi, "
+      "exact - shooting, approx - shooting",
+      "generator: verification/tools/shooting_reference_cases.cpp",
+  };
+  comparison.columns = {"eps",      "phi_deg",  "lambda2",          "mode",
+                        "exact",    "approx",   "shooting",         "exact_minus_shooting",
+                        "approx_minus_shooting"};
+  for (std::size_t row = 0; row < grinfogel.rows.size(); ++row) {
+    const double eps = *grinfogel.number(row, "eps");
+    const double phi = *grinfogel.number(row, "phi_deg");
+    const double lambda2 = *grinfogel.number(row, "lambda2");
+    const int mode = static_cast<int>(*grinfogel.number(row, "mode"));
+    const Problem problem = make_taut_inclined_problem(eps, phi, lambda2, 1.0);
+    const StaticSolution statics = solve_statics(problem);
+    const DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
+    SolveRequest request;
+    request.inplane_modes = mode;
+    request.outofplane_modes = 0;
+    ShootingSolverOptions options;
+    options.relative_tolerance = 1e-12;
+    const SolverOutput output = solve_shooting(problem, statics, groups, request, options);
+    const double ours = output.inplane->modes[static_cast<std::size_t>(mode - 1)].k_l_over_pi;
+    comparison.rows.push_back(
+        {grinfogel.text(row, "eps"), grinfogel.text(row, "phi_deg"), grinfogel.text(row, "lambda2"),
+         grinfogel.text(row, "mode"), grinfogel.text(row, "exact"), grinfogel.text(row, "approx"),
+         fmt::format("{:.6f}", ours),
+         fmt::format("{:+.4f}", *grinfogel.number(row, "exact") - ours),
+         fmt::format("{:+.4f}", *grinfogel.number(row, "approx") - ours)});
+  }
+  write_csv_table(reference + "/shooting-grinfogel-2-2-comparison.csv", comparison);
   std::printf("%zu cases written\n", cases.size());
   return 0;
 }
