@@ -8,7 +8,10 @@
 //  - vertical inextensible cable (H = 0): string with tension T_A + W0 s, exact frequencies from
 //    the Bessel cross product J0(z_A) Y0(z_B) - J0(z_B) Y0(z_A) = 0, z = 2 omega sqrt(M T)/W0,
 //    in plane and out of plane alike;
-//  - mass orthogonality of the modes of a sagging inextensible cable (Gale) with added mass.
+//  - mass orthogonality of the modes of a sagging inextensible cable (Gale) with added mass;
+//  - the forced response at omega = 0 equals the derivative of the shared statics with respect to
+//    the position of the driven support (central finite difference of solve_statics), for a deep
+//    inextensible catenary and an elastic mooring line, tangential and normal drives.
 #include <gtest/gtest.h>
 
 #include <boost/math/special_functions/bessel.hpp>
@@ -162,6 +165,57 @@ TEST(ShootingForced, StraightCableResponseIsExact) {
           const double tau = axial ? EA * d * slope * sign_a : 0.0;
           EXPECT_NEAR(r.tension_n[j], tau, 1e-8 * EA * d) << to_string(direction);
         }
+      }
+    }
+  }
+}
+
+TEST(ShootingForced, StaticLimitMatchesFiniteDifferenceOfStatics) {
+  // Central difference with step 1e-5 m: truncation ~1e-10 relative, rounding ~1e-16/1e-5.
+  constexpr double kRelTol = 1e-6;
+  Problem mooring;
+  mooring.cable.length_m = 1000.0;
+  mooring.cable.weight_n_per_m = 1000.0;
+  mooring.cable.axial_stiffness_n = 5e8;
+  mooring.cable.mass_kg_per_m = 120.0;
+  mooring.cable.added_mass_kg_per_m = 80.0;
+  mooring.supports.b_m = Vec2(900.0, 300.0);
+  Problem gale = make_gale_xi_problem(-1.383, 1.383);
+  gale.prescribed_forces.reset();  // re-solved from the moved support below
+  for (const Problem& problem : {gale, mooring}) {
+    const StaticSolution statics = solve_statics(problem);
+    const double L = problem.cable.length_m;
+    for (ForcingDirection direction : {ForcingDirection::Tangential, ForcingDirection::Normal}) {
+      const Vec2 unit = direction == ForcingDirection::Tangential ? statics.tangent(L)
+                                                                  : statics.normal(L);
+      const double step = 1e-5;
+      Problem plus = problem, minus = problem;
+      plus.supports.b_m += step * unit;
+      minus.supports.b_m -= step * unit;
+      const StaticSolution sp = solve_statics(plus), sm = solve_statics(minus);
+      SolveRequest request;
+      request.inplane_modes = 0;
+      request.points = 11;
+      ForcedRequest forced;
+      forced.direction = direction;
+      forced.amplitude_m = 1.0;  // linear: the response per metre
+      forced.omegas_rad_s = {0.0};
+      request.forced = forced;
+      const SolverOutput out = run(problem, request, 1e-12);
+      const ForcedResponse& r = out.forced.at(0);
+      ASSERT_TRUE(r.diagnostic.empty()) << r.diagnostic;
+      double scale = 0.0;
+      for (Index j = 0; j < r.s_m.size(); ++j) {
+        scale = std::max(scale, std::abs(r.tension_n[j]));
+      }
+      for (Index j = 0; j < r.s_m.size(); ++j) {
+        const double s = r.s_m[j];
+        const double dT = (sp.tension_n(s) - sm.tension_n(s)) / (2.0 * step);
+        EXPECT_NEAR(r.tension_n[j], dT, kRelTol * scale)
+            << "L " << L << " " << to_string(direction) << " s " << s;
+        const Vec2 dr = (sp.offset_m(s) - sm.offset_m(s)) / (2.0 * step);
+        EXPECT_NEAR(r.u[j], dr.dot(statics.tangent(s)), kRelTol) << "u at s " << s;
+        EXPECT_NEAR(r.w[j], dr.dot(statics.normal(s)), kRelTol) << "w at s " << s;
       }
     }
   }
