@@ -3,13 +3,14 @@
 // (see include/catena/solvers/shooting_solver.hpp for the method).
 #include "catena/solvers/shooting_solver.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
-#include <map>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -35,8 +36,9 @@ double ShootingSolverOptions::effective_root_tolerance() const {
 
 void ShootingSolverOptions::validate() const {
   auto fail = [](const std::string& field, double value, const std::string& constraint) {
-    throw InvalidInput(fmt::format("Invalid ShootingSolverOptions::{} = {}. Violated constraint: {}.",
-                                   field, value, constraint));
+    throw InvalidInput(
+        fmt::format("Invalid ShootingSolverOptions::{} = {}. Violated constraint: {}.", field,
+                    value, constraint));
   };
   if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 1e-2))
     fail("relative_tolerance", relative_tolerance, "1e-14 <= relative_tolerance <= 1e-2");
@@ -76,8 +78,8 @@ double count_function(const Sample& sample, int n) {
 // the bracket closes. Needs f(a) f(b) < 0; returns the final bracket (ascending), of width
 // <= ~relative_tolerance * omega.
 template <class Function>
-std::pair<double, double> brent_zero(Function f, double a, double b, double fa, double fb,
-                                     double relative_tolerance) {
+std::pair<double, double> brent_zero(
+    Function f, double a, double b, double fa, double fb, double relative_tolerance) {
   double c = a, fc = fa;
   double d = b - a, e = d;
   for (int iteration = 0; iteration < 300; ++iteration) {
@@ -146,9 +148,16 @@ class ModeFinder {
   static constexpr long kMaxShots = 20000;
   static constexpr double kMaxPhaseDefect = 0.5;  // [rad]
 
-  ModeFinder(ShootingIntegrator& integrator, const ShootingSolverOptions& options,
-             double first_guess_rad_s)
-      : integrator_(integrator), options_(options), first_guess_(first_guess_rad_s) {}
+  /// `scalar`: a one-component problem (out of plane, or a straight inextensible cable), whose
+  /// continuous count is smooth across the eigenvalues.
+  ModeFinder(ShootingIntegrator& integrator,
+             const ShootingSolverOptions& options,
+             double first_guess_rad_s,
+             bool scalar)
+      : integrator_(integrator),
+        options_(options),
+        first_guess_(first_guess_rad_s),
+        scalar_(scalar) {}
 
   std::vector<Root> find(int num_modes, std::vector<std::string>& warnings) {
     std::vector<Root> roots;
@@ -164,6 +173,14 @@ class ModeFinder {
     }
     const double tol = options_.effective_root_tolerance();
     int n = 1;
+    while (n <= num_modes && scalar_) {
+      // Out of plane the continuous count c = N + (abar - pi)/(2 pi) (Pruefer's angle) is smooth
+      // and monotone in omega, and c = n exactly at the n-th eigenvalue: any two samples with
+      // counts < n and >= n bracket it, and Brent converges on the nearly linear c - n at once.
+      const auto [lo, hi] = bracket(n);
+      roots.push_back(refine_scalar(n, lo, hi));
+      ++n;
+    }
     while (n <= num_modes) {
       const auto [lo, hi] = bracket(n);
       const Sample& a = samples_.at(lo);
@@ -178,8 +195,8 @@ class ModeFinder {
         root.omega = 0.5 * (lo + hi);
         root.multiplicity = std::max(1, b.count - std::max(a.count, n - 1));
         if (a.count != n - 1) {
-          warnings.push_back(
-              fmt::format("mode {}: count {} just below the root (expected {})", n, a.count, n - 1));
+          warnings.push_back(fmt::format("mode {}: count {} just below the root (expected {})", n,
+                                         a.count, n - 1));
         }
         if (b.count - a.count == 1) {
           warnings.push_back(fmt::format(
@@ -259,11 +276,35 @@ class ModeFinder {
     return std::clamp(aim, lo + 0.1 * (hi - lo), hi - 0.1 * (hi - lo));
   }
 
+  Root refine_scalar(int n, double lo, double hi) {
+    auto g = [this, n](double omega) { return count_function(evaluate(omega), n); };
+    const auto [a, b] =
+        brent_zero(g, lo, hi, count_function(samples_.at(lo), n),
+                   count_function(samples_.at(hi), n), options_.effective_root_tolerance());
+    const Sample& sa = evaluate(a);
+    const Sample& sb = evaluate(b);
+    Root root;
+    root.omega = 0.5 * (a + b);
+    root.residual = std::min(std::abs(sa.determinant), std::abs(sb.determinant));
+    const double ga = count_function(sa, n), gb = count_function(sb, n);
+    const double slope = (b > a) ? (gb - ga) / (b - a) : 0.0;
+    double integration_error = 10.0 * options_.relative_tolerance * root.omega;
+    if (options_.error_estimate && slope > 0.0) {
+      const Shot tight = integrator_.shoot(root.omega, 0.1);
+      ++shots_;
+      const Sample st{tight.count, tight.angle_min, tight.angle_max, tight.determinant};
+      const double here = ga + slope * (root.omega - a);
+      integration_error = std::abs((count_function(st, n) - here) / slope);
+    }
+    root.relative_error = (0.5 * (b - a) + integration_error) / root.omega;
+    return root;
+  }
+
   Root refine(int n, double lo, double hi) {
     auto f = [this](double omega) { return evaluate(omega).determinant; };
-    const auto [a, b] = brent_zero(f, lo, hi, samples_.at(lo).determinant,
-                                   samples_.at(hi).determinant,
-                                   options_.effective_root_tolerance());
+    const auto [a, b] =
+        brent_zero(f, lo, hi, samples_.at(lo).determinant, samples_.at(hi).determinant,
+                   options_.effective_root_tolerance());
     const Sample& sa = evaluate(a);
     const Sample& sb = evaluate(b);
     Root root;
@@ -286,6 +327,7 @@ class ModeFinder {
   ShootingIntegrator& integrator_;
   const ShootingSolverOptions& options_;
   double first_guess_;
+  bool scalar_;
   std::map<double, Sample> samples_;
   long shots_ = 0;
   int proved_count_ = -1;
@@ -326,8 +368,12 @@ struct Profile {
   Vector u, w, v, tension;
 };
 
-Profile evaluate_profile(const Shot& shot, const Eigen::VectorXd& c, const ShootingCoefficients& k,
-                         const Vector& stations_m, bool reversed, Plane plane) {
+Profile evaluate_profile(const Shot& shot,
+                         const Eigen::VectorXd& c,
+                         const ShootingCoefficients& k,
+                         const Vector& stations_m,
+                         bool reversed,
+                         Plane plane) {
   const Index n = stations_m.size();
   Profile p;
   if (plane == Plane::InPlane) {
@@ -380,8 +426,11 @@ std::vector<double> scaled_stations(const Vector& stations_m, double length_m, b
 }
 
 // Frequencies (and shapes, tension) of one plane.
-ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& k,
-                        const DimensionlessGroups& groups, const SolveRequest& request,
+ModalResult solve_plane(Plane plane,
+                        int num_modes,
+                        const ShootingCoefficients& k,
+                        const DimensionlessGroups& groups,
+                        const SolveRequest& request,
                         const ShootingSolverOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   ModalResult result;
@@ -389,10 +438,10 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
   SolverSummary& summary = result.summary;
   summary.solver = "shooting";
   const char* plane_name = plane == Plane::InPlane ? "in-plane" : "out-of-plane";
-  summary.resolution = fmt::format("CVODE {} rtol {:.1e} atol {:.1e}, root bracket {:.1e}",
-                                   to_string(options.method), options.relative_tolerance,
-                                   options.effective_absolute_tolerance(),
-                                   options.effective_root_tolerance());
+  summary.resolution =
+      fmt::format("CVODE {} rtol {:.1e} atol {:.1e}, root bracket {:.1e}",
+                  to_string(options.method), options.relative_tolerance,
+                  options.effective_absolute_tolerance(), options.effective_root_tolerance());
   // A straight (vertical, H = 0) inextensible cable: the axial direction is rigid, det Phi(L)
   // vanishes identically, and the in-plane problem is the transverse string alone, which is the
   // out-of-plane equation for the normal displacement.
@@ -407,7 +456,7 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
   ShootingIntegrator integrator(integration_plane, k, integrator_settings(options));
   // String estimate of the (n+1)-th frequency, nudged off the exact string values.
   const double guess = (num_modes + 1.37) * kPi / travel_time(k);
-  ModeFinder finder(integrator, options, guess);
+  ModeFinder finder(integrator, options, guess, integration_plane == Plane::OutOfPlane);
   std::vector<Root> roots;
   try {
     roots = finder.find(num_modes, summary.warnings);
@@ -421,8 +470,8 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
 
   // Roots closer than the integration can resolve form one (numerically) multiple root: its
   // null space is spanned by the smallest singular vectors of Phi(L) together.
-  const double merge = 1000.0 * std::max(options.relative_tolerance,
-                                         options.effective_root_tolerance());
+  const double merge =
+      1000.0 * std::max(options.relative_tolerance, options.effective_root_tolerance());
   std::vector<std::vector<Root>> clusters;
   for (const Root& root : roots) {
     if (!clusters.empty() && root.omega - clusters.back().back().omega <= merge * root.omega) {
@@ -477,45 +526,45 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
       }
       int member = 0;
       for (const Root& root : cluster) {
-      for (int j = 0; j < root.multiplicity && index <= num_modes; ++j, ++index) {
-        Mode mode;
-        mode.index = index;
-        internal::set_mode_frequency(mode, root.omega, groups);
-        mode.relative_error_estimate = root.relative_error;
-        if (want_profile && member < static_cast<int>(null_vectors.size())) {
-          Profile p = evaluate_profile(shot, null_vectors[static_cast<std::size_t>(member++)], k,
-                                       stations, false, integration_plane);
-          if (string_only) p = string_as_inplane(p);
-          mode.s_m = stations;
-          if (plane == Plane::InPlane) {
-            mode.u = p.u;
-            mode.w = p.w;
-            if (request.tension) mode.tension_n = p.tension;
-            internal::normalise_inplane_mode(mode);
-            mode.modal_mass_kg = internal::inplane_modal_mass(mode, k.m, k.M);
-          } else {
-            mode.v = p.v;
-            internal::normalise_outofplane_mode(mode);
-            mode.modal_mass_kg = internal::outofplane_modal_mass(mode, k.M);
-            if (request.tension) {
-              // Out-of-plane motion carries no first-order dynamic tension.
-              mode.tension_n = Vector::Zero(stations.size());
-              mode.max_abs_tension_n = 0.0;
+        for (int j = 0; j < root.multiplicity && index <= num_modes; ++j, ++index) {
+          Mode mode;
+          mode.index = index;
+          internal::set_mode_frequency(mode, root.omega, groups);
+          mode.relative_error_estimate = root.relative_error;
+          if (want_profile && member < static_cast<int>(null_vectors.size())) {
+            Profile p = evaluate_profile(shot, null_vectors[static_cast<std::size_t>(member++)], k,
+                                         stations, false, integration_plane);
+            if (string_only) p = string_as_inplane(p);
+            mode.s_m = stations;
+            if (plane == Plane::InPlane) {
+              mode.u = p.u;
+              mode.w = p.w;
+              if (request.tension) mode.tension_n = p.tension;
+              internal::normalise_inplane_mode(mode);
+              mode.modal_mass_kg = internal::inplane_modal_mass(mode, k.m, k.M);
+            } else {
+              mode.v = p.v;
+              internal::normalise_outofplane_mode(mode);
+              mode.modal_mass_kg = internal::outofplane_modal_mass(mode, k.M);
+              if (request.tension) {
+                // Out-of-plane motion carries no first-order dynamic tension.
+                mode.tension_n = Vector::Zero(stations.size());
+                mode.max_abs_tension_n = 0.0;
+              }
+            }
+            if (!request.shapes) {
+              mode.s_m.resize(0);
+              mode.u.resize(0);
+              mode.w.resize(0);
+              mode.v.resize(0);
+              mode.tension_n.resize(0);
+              mode.modal_mass_kg = -1.0;
             }
           }
-          if (!request.shapes) {
-            mode.s_m.resize(0);
-            mode.u.resize(0);
-            mode.w.resize(0);
-            mode.v.resize(0);
-            mode.tension_n.resize(0);
-            mode.modal_mass_kg = -1.0;
-          }
+          max_error = std::max(max_error, root.relative_error);
+          max_residual = std::max(max_residual, root.residual);
+          result.modes.push_back(std::move(mode));
         }
-        max_error = std::max(max_error, root.relative_error);
-        max_residual = std::max(max_residual, root.residual);
-        result.modes.push_back(std::move(mode));
-      }
       }
     }
   } catch (const ShootingFailure& failure) {
@@ -546,9 +595,13 @@ ModalResult solve_plane(Plane plane, int num_modes, const ShootingCoefficients& 
   return result;
 }
 
-ForcedResponse forced_response(ShootingIntegrator& integrator, const ShootingCoefficients& k,
-                               const ForcedRequest& forced, double omega, const Vector& stations,
-                               const ShootingSolverOptions& options, bool& near_resonance) {
+ForcedResponse forced_response(ShootingIntegrator& integrator,
+                               const ShootingCoefficients& k,
+                               const ForcedRequest& forced,
+                               double omega,
+                               const Vector& stations,
+                               const ShootingSolverOptions& options,
+                               bool& near_resonance) {
   ForcedResponse response;
   response.omega_rad_s = omega;
   Plane plane =
@@ -562,9 +615,15 @@ ForcedResponse forced_response(ShootingIntegrator& integrator, const ShootingCoe
   } else {
     Vec2 direction;
     switch (forced.direction) {
-      case ForcingDirection::Tangential: direction = k.tangent(s_driven); break;
-      case ForcingDirection::Normal: direction = k.normal(s_driven); break;
-      default: direction = forced.vector.normalized(); break;
+      case ForcingDirection::Tangential:
+        direction = k.tangent(s_driven);
+        break;
+      case ForcingDirection::Normal:
+        direction = k.normal(s_driven);
+        break;
+      default:
+        direction = forced.vector.normalized();
+        break;
     }
     d = forced.amplitude_m * direction;
     if (is_straight_inextensible(k)) {
@@ -628,10 +687,10 @@ SolverOutput solve_shooting(const Problem& problem,
   summary.solver = "shooting";
   const ShootingCoefficients k = ShootingCoefficients::from_statics(statics);
   (void)problem;
-  summary.resolution = fmt::format("CVODE {} rtol {:.1e} atol {:.1e}, root bracket {:.1e}",
-                                   to_string(options.method), options.relative_tolerance,
-                                   options.effective_absolute_tolerance(),
-                                   options.effective_root_tolerance());
+  summary.resolution =
+      fmt::format("CVODE {} rtol {:.1e} atol {:.1e}, root bracket {:.1e}",
+                  to_string(options.method), options.relative_tolerance,
+                  options.effective_absolute_tolerance(), options.effective_root_tolerance());
   summary.notes.push_back(
       "exact linearisation about the closed-form static catenary; A^{-1} used, so EA = inf is "
       "exact (no penalty); counting by the conjugate points of the principal solution (phase of "
@@ -651,7 +710,8 @@ SolverOutput solve_shooting(const Problem& problem,
     for (const auto& w : plane.summary.warnings) summary.warnings.push_back(w);
   };
   if (request.inplane_modes > 0) {
-    output.inplane = solve_plane(Plane::InPlane, request.inplane_modes, k, groups, request, options);
+    output.inplane =
+        solve_plane(Plane::InPlane, request.inplane_modes, k, groups, request, options);
     absorb(*output.inplane);
   }
   if (request.outofplane_modes > 0) {
@@ -672,9 +732,8 @@ SolverOutput solve_shooting(const Problem& problem,
         output.forced.push_back(
             forced_response(integrator, k, forced, omega, stations, options, near_resonance));
         if (!output.forced.back().diagnostic.empty()) {
-          summary.warnings.push_back(
-              fmt::format("forced response at {:.10g} rad/s: {}", omega,
-                          output.forced.back().diagnostic));
+          summary.warnings.push_back(fmt::format("forced response at {:.10g} rad/s: {}", omega,
+                                                 output.forced.back().diagnostic));
         } else if (near_resonance) {
           summary.warnings.push_back(fmt::format(
               "forced response at {:.10g} rad/s is near a natural frequency (|det Phi(L)| / "
@@ -699,9 +758,9 @@ SolverOutput solve_shooting(const Problem& problem,
   if (output.inplane) parts += output.inplane->summary.message;
   if (output.outofplane) parts += (parts.empty() ? "" : "; ") + output.outofplane->summary.message;
   if (request.forced) {
-    parts += (parts.empty() ? "" : "; ") +
-             fmt::format("{} of {} forced frequencies", output.forced.size(),
-                         request.forced->omegas_rad_s.size());
+    parts += (parts.empty() ? "" : "; ") + fmt::format("{} of {} forced frequencies",
+                                                       output.forced.size(),
+                                                       request.forced->omegas_rad_s.size());
   }
   if (all_converged) {
     summary.termination = Termination::Converged;
@@ -731,10 +790,11 @@ ShootingSolverOptions read_knobs(const SolverKnobs& knobs) {
   } else if (method == "bdf") {
     options.method = ShootingMethod::Bdf;
   } else {
-    throw InvalidInput(fmt::format("{} = \"{}\": must be \"adams\" or \"bdf\"", reader.key("method"),
-                                   method));
+    throw InvalidInput(
+        fmt::format("{} = \"{}\": must be \"adams\" or \"bdf\"", reader.key("method"), method));
   }
-  const std::string nonlinear = reader.get_string("nonlinear_solver", options.fixed_point_iteration ? "fixed_point" : "newton");
+  const std::string nonlinear = reader.get_string(
+      "nonlinear_solver", options.fixed_point_iteration ? "fixed_point" : "newton");
   if (nonlinear == "newton") {
     options.fixed_point_iteration = false;
   } else if (nonlinear == "fixed_point") {
@@ -762,14 +822,15 @@ SolverEntry make_shooting_entry() {
   entry.name = "shooting";
   entry.description =
       "exact linear boundary-value solution: principal solutions integrated with SUNDIALS CVODE, "
-      "modes counted by conjugate points (Morse index) and refined by Brent's method on a count-aware phase function; any sag, "
+      "modes counted by conjugate points (Morse index) and refined by Brent's method on a "
+      "count-aware phase function; any sag, "
       "inclination, EA (inf exact), added mass";
   entry.knobs = {
       {"rtol", "CVODE relative tolerance, in [1e-14, 1e-2], default 1e-10"},
       {"atol", "CVODE absolute tolerance on the scaled state, in [0, 1e-2], default rtol/100"},
       {"root_tolerance", "relative width of the final frequency bracket, default rtol"},
       {"method", "\"adams\" (default) or \"bdf\""},
-      {"nonlinear_solver", "\"newton\" (dense LU, analytic Jacobian) or \"fixed_point\" (default)"},
+      {"nonlinear_solver", "\"newton\" (dense LU, analytic Jacobian; default) or \"fixed_point\""},
       {"max_steps", "maximum CVODE steps per shot, >= 100, default 500000"},
       {"max_condition", "re-orthonormalise when cond(Gram) exceeds this, in [2, 1e8], default 100"},
       {"error_estimate", "one extra shot per mode at 10x tighter tolerances, default true"},

@@ -83,7 +83,8 @@ TEST(ShootingShapes, StraightCableModesHaveExactShapesAndTension) {
       max_tension_error = std::max(max_tension_error, std::abs(mode.tension_n[j] - exact_tension));
       EXPECT_LT(std::abs(other[j]), kShapeTol) << "mode " << mode.index << " cross component";
     }
-    EXPECT_LT(max_shape_error, kShapeTol) << "mode " << mode.index << (axial ? " (bar)" : " (string)");
+    EXPECT_LT(max_shape_error, kShapeTol)
+        << "mode " << mode.index << (axial ? " (bar)" : " (string)");
     EXPECT_LT(max_tension_error, kShapeTol * EA) << "mode " << mode.index;
     // Modal mass of sin(n pi s/L): m L / 2.
     EXPECT_LT(relative_error(mode.modal_mass_kg, 0.5 * L), 1e-4) << "mode " << mode.index;
@@ -112,8 +113,8 @@ TEST(ShootingShapes, ModesOfASaggingCableWithAddedMassAreMassOrthogonal) {
   const auto& modes = out.inplane->modes;
   for (std::size_t i = 0; i < modes.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
-      const Vector density = m * modes[i].u.cwiseProduct(modes[j].u) +
-                             M * modes[i].w.cwiseProduct(modes[j].w);
+      const Vector density =
+          m * modes[i].u.cwiseProduct(modes[j].u) + M * modes[i].w.cwiseProduct(modes[j].w);
       const double cross = internal::integrate_on_stations(modes[i].s_m, density);
       const double scale = std::sqrt(modes[i].modal_mass_kg * modes[j].modal_mass_kg);
       EXPECT_LT(std::abs(cross) / scale, kOrthogonalityTol) << "modes " << i + 1 << ", " << j + 1;
@@ -153,8 +154,8 @@ TEST(ShootingForced, StraightCableResponseIsExact) {
       for (const ForcedResponse& r : out.forced) {
         ASSERT_TRUE(r.diagnostic.empty()) << r.diagnostic;
         const bool axial = direction == ForcingDirection::Tangential;
-        const double k = axial ? r.omega_rad_s * std::sqrt(1.0 / EA)
-                               : r.omega_rad_s * std::sqrt((1.0 + e) / T);
+        const double k =
+            axial ? r.omega_rad_s * std::sqrt(1.0 / EA) : r.omega_rad_s * std::sqrt((1.0 + e) / T);
         for (Index j = 0; j < r.s_m.size(); ++j) {
           const double s = end == CableEnd::B ? r.s_m[j] : L - r.s_m[j];
           const double shape = k == 0.0 ? s / L : std::sin(k * s) / std::sin(k * L);
@@ -186,8 +187,8 @@ TEST(ShootingForced, StaticLimitMatchesFiniteDifferenceOfStatics) {
     const StaticSolution statics = solve_statics(problem);
     const double L = problem.cable.length_m;
     for (ForcingDirection direction : {ForcingDirection::Tangential, ForcingDirection::Normal}) {
-      const Vec2 unit = direction == ForcingDirection::Tangential ? statics.tangent(L)
-                                                                  : statics.normal(L);
+      const Vec2 unit =
+          direction == ForcingDirection::Tangential ? statics.tangent(L) : statics.normal(L);
       const double step = 1e-5;
       Problem plus = problem, minus = problem;
       plus.supports.b_m += step * unit;

@@ -38,7 +38,8 @@ struct Solved {
   SolverOutput output;
 };
 
-Solved solve(const Problem& problem, const SolveRequest& request,
+Solved solve(const Problem& problem,
+             const SolveRequest& request,
              const ShootingSolverOptions& options = {}) {
   Solved solved{problem, solve_statics(problem), {}, {}};
   solved.groups = compute_dimensionless_groups(problem, solved.statics);
@@ -173,7 +174,8 @@ TEST(ShootingSolver, IrvineAntisymmetricModesAndCrossOver) {
     // Count the modes near the antisymmetric values kL/pi = 2, 4.
     for (double target : {2.0, 4.0}) {
       int near = 0;
-      for (const Mode& mode : modes) near += relative_error(mode.k_l_over_pi, target) < kShallowTheoryAccuracy;
+      for (const Mode& mode : modes)
+        near += relative_error(mode.k_l_over_pi, target) < kShallowTheoryAccuracy;
       const int expected = (lambda2 == 4.0 * kPi * kPi && target == 2.0) ? 2 : 1;
       EXPECT_EQ(near, expected) << "lambda2 " << lambda2 << " target kL/pi " << target;
     }
@@ -230,17 +232,18 @@ TEST(ShootingSolver, ObservedConvergenceVsRtolIsMonotone) {
       double error = 0.0, estimate = 0.0;
       for (const auto* plane : {&solved.output.inplane, &solved.output.outofplane}) {
         const auto& ref = plane == &solved.output.inplane ? reference.output.inplane
-                                                           : reference.output.outofplane;
+                                                          : reference.output.outofplane;
         for (std::size_t i = 0; i < 3; ++i) {
-          error = std::max(error, relative_error((*plane)->modes[i].omega_rad_s,
-                                                 ref->modes[i].omega_rad_s));
+          error = std::max(
+              error, relative_error((*plane)->modes[i].omega_rad_s, ref->modes[i].omega_rad_s));
           estimate = std::max(estimate, (*plane)->modes[i].relative_error_estimate);
         }
       }
-      std::printf("L = %7.1f m  rtol %.0e: max rel error %.2e, max estimate %.2e, %ld shots, %ld "
-                  "RHS evaluations\n",
-                  problem.cable.length_m, rtol, error, estimate, solved.output.summary.iterations,
-                  solved.output.summary.operations);
+      std::printf(
+          "L = %7.1f m  rtol %.0e: max rel error %.2e, max estimate %.2e, %ld shots, %ld "
+          "RHS evaluations\n",
+          problem.cable.length_m, rtol, error, estimate, solved.output.summary.iterations,
+          solved.output.summary.operations);
       EXPECT_LE(error, 2.0 * previous) << "rtol " << rtol;
       EXPECT_LE(error, 10.0 * estimate + 1e-13) << "rtol " << rtol << ": estimate not covering";
       previous = error;
@@ -304,7 +307,8 @@ TEST(ShootingSolverEntry, RejectsUnknownAndBadKnobs) {
   EXPECT_THROW(entry->validate_knobs({{"elements", KnobValue(10L)}}), InvalidInput);
   EXPECT_THROW(entry->validate_knobs({{"method", KnobValue(std::string("rk4"))}}), InvalidInput);
   EXPECT_THROW(entry->validate_knobs({{"rtol", KnobValue(1.0)}}), InvalidInput);
-  EXPECT_NO_THROW(entry->validate_knobs({{"rtol", KnobValue(1e-8)}, {"method", KnobValue(std::string("bdf"))}}));
+  EXPECT_NO_THROW(entry->validate_knobs(
+      {{"rtol", KnobValue(1e-8)}, {"method", KnobValue(std::string("bdf"))}}));
 }
 
 }  // namespace

@@ -16,9 +16,10 @@
 //       -lsundials_sunlinsoldense -lfmt
 //   build/shooting_gale_comparison verification/reference
 // rtol 1e-12: the frequencies are exact to ~1e-11, far below the printed two decimals.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <string>
 
 #include "catena/io/csv_table.hpp"
@@ -79,10 +80,20 @@ int main(int argc, char** argv) {
       "estimate",
       "generator: verification/tools/shooting_gale_comparison.cpp (build command in its header)",
   };
-  out.columns = {"table",          "h_over_b",         "sag_param",     "xi1_printed",
-                 "xi2_printed",    "xi1_geometry",     "xi2_geometry",  "mode",
-                 "published",      "shooting_geometry", "shooting_printed_xi", "difference",
-                 "beyond_rounding", "relative_error_estimate"};
+  out.columns = {"table",
+                 "h_over_b",
+                 "sag_param",
+                 "xi1_printed",
+                 "xi2_printed",
+                 "xi1_geometry",
+                 "xi2_geometry",
+                 "mode",
+                 "published",
+                 "shooting_geometry",
+                 "shooting_printed_xi",
+                 "difference",
+                 "beyond_rounding",
+                 "relative_error_estimate"};
   int flagged = 0, total = 0;
   for (const auto& [name, file, inplane] :
        {std::tuple{"B-3", "gale-1976-table-B3-inplane.csv", true},
@@ -109,19 +120,19 @@ int main(int argc, char** argv) {
         const bool beyond = std::abs(difference) > kPrintedRounding;
         flagged += beyond;
         ++total;
-        out.rows.push_back({name, table.text(row, "h_over_b"), table.text(row, "sag_param"),
-                            table.text(row, "xi1"), table.text(row, "xi2"),
-                            fmt::format("{:.4f}", geometry.xi1), fmt::format("{:.4f}", geometry.xi2),
-                            std::to_string(n), table.text(row, fmt::format("w{}", n)),
-                            fmt::format("{:.6f}", ours), fmt::format("{:.6f}", ours_xi),
-                            fmt::format("{:+.6f}", difference), beyond ? "yes" : "no",
-                            fmt::format("{:.1e}", i < geometry.errors.size() ? geometry.errors[i]
-                                                                             : -1.0)});
+        out.rows.push_back(
+            {name, table.text(row, "h_over_b"), table.text(row, "sag_param"),
+             table.text(row, "xi1"), table.text(row, "xi2"), fmt::format("{:.4f}", geometry.xi1),
+             fmt::format("{:.4f}", geometry.xi2), std::to_string(n),
+             table.text(row, fmt::format("w{}", n)), fmt::format("{:.6f}", ours),
+             fmt::format("{:.6f}", ours_xi), fmt::format("{:+.6f}", difference),
+             beyond ? "yes" : "no",
+             fmt::format("{:.1e}", i < geometry.errors.size() ? geometry.errors[i] : -1.0)});
       }
     }
   }
   write_csv_table(reference + "/shooting-gale-B3-B4-comparison.csv", out);
-  std::printf("%d of %d published entries differ from shooting by more than %.3f\n", flagged,
-              total, kPrintedRounding);
+  std::printf("%d of %d published entries differ from shooting by more than %.3f\n", flagged, total,
+              kPrintedRounding);
   return 0;
 }

@@ -13,9 +13,10 @@
 //       -Lbuild -lcatena -lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense \
 //       -lsundials_sunlinsoldense -lfmt
 //   build/shooting_gale_forced verification/reference
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <string>
 
 #include "catena/io/csv_table.hpp"
@@ -37,8 +38,8 @@ int main(int argc, char** argv) {
       "flag (|difference| > 0.0005 + 1% of the value), diagnostic",
       "generator: verification/tools/shooting_gale_forced.cpp (build command in its header)",
   };
-  out.columns = {"h_over_b",  "sag_param", "xi1",  "xi2",        "wf",        "published",
-                 "shooting",  "difference", "flag", "diagnostic"};
+  out.columns = {"h_over_b",  "sag_param", "xi1",        "xi2",  "wf",
+                 "published", "shooting",  "difference", "flag", "diagnostic"};
   int flagged = 0;
   for (std::size_t row = 0; row < table.rows.size(); ++row) {
     const Problem problem =

@@ -17,8 +17,9 @@
 //       -Lbuild -lcatena -lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense \
 //       -lsundials_sunlinsoldense -lfmt
 //   build/shooting_reference_cases verification/reference
-#include <cstdio>
 #include <fmt/format.h>
+
+#include <cstdio>
 #include <string>
 
 #include "catena/io/csv_table.hpp"
@@ -58,7 +59,8 @@ int main(int argc, char** argv) {
       "count (eigenvalues proved below the top bracket of the plane)",
       "generator: verification/tools/shooting_reference_cases.cpp (build command in its header)",
   };
-  out.columns = {"case", "plane", "mode", "omega_rad_s", "k_l_over_pi", "relative_error_estimate",
+  out.columns = {"case",        "plane",       "mode",
+                 "omega_rad_s", "k_l_over_pi", "relative_error_estimate",
                  "proved_count"};
   for (const Case& c : cases) {
     const StaticSolution statics = solve_statics(c.problem);
@@ -98,8 +100,14 @@ int main(int argc, char** argv) {
       "exact - shooting, approx - shooting",
       "generator: verification/tools/shooting_reference_cases.cpp",
   };
-  comparison.columns = {"eps",      "phi_deg",  "lambda2",          "mode",
-                        "exact",    "approx",   "shooting",         "exact_minus_shooting",
+  comparison.columns = {"eps",
+                        "phi_deg",
+                        "lambda2",
+                        "mode",
+                        "exact",
+                        "approx",
+                        "shooting",
+                        "exact_minus_shooting",
                         "approx_minus_shooting"};
   for (std::size_t row = 0; row < grinfogel.rows.size(); ++row) {
     const double eps = *grinfogel.number(row, "eps");
@@ -116,12 +124,12 @@ int main(int argc, char** argv) {
     options.relative_tolerance = 1e-12;
     const SolverOutput output = solve_shooting(problem, statics, groups, request, options);
     const double ours = output.inplane->modes[static_cast<std::size_t>(mode - 1)].k_l_over_pi;
-    comparison.rows.push_back(
-        {grinfogel.text(row, "eps"), grinfogel.text(row, "phi_deg"), grinfogel.text(row, "lambda2"),
-         grinfogel.text(row, "mode"), grinfogel.text(row, "exact"), grinfogel.text(row, "approx"),
-         fmt::format("{:.6f}", ours),
-         fmt::format("{:+.4f}", *grinfogel.number(row, "exact") - ours),
-         fmt::format("{:+.4f}", *grinfogel.number(row, "approx") - ours)});
+    comparison.rows.push_back({grinfogel.text(row, "eps"), grinfogel.text(row, "phi_deg"),
+                               grinfogel.text(row, "lambda2"), grinfogel.text(row, "mode"),
+                               grinfogel.text(row, "exact"), grinfogel.text(row, "approx"),
+                               fmt::format("{:.6f}", ours),
+                               fmt::format("{:+.4f}", *grinfogel.number(row, "exact") - ours),
+                               fmt::format("{:+.4f}", *grinfogel.number(row, "approx") - ours)});
   }
   write_csv_table(reference + "/shooting-grinfogel-2-2-comparison.csv", comparison);
   std::printf("%zu cases written\n", cases.size());

@@ -2,15 +2,15 @@
 
 #include <cvode/cvode.h>
 #include <cvode/cvode_ls.h>
+#include <fmt/format.h>
 #include <sunlinsol/sunlinsol_dense.h>
-#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 #include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <fmt/format.h>
 
 #include "solvers/internal/shooting_sundials_handles.hpp"
 
@@ -111,8 +111,8 @@ int rhs(double x, N_Vector y, N_Vector ydot, void* user_data) {
 // Analytic Jacobian of the linear part; the phase row is left zero (the phase feeds back into
 // nothing, so the modified Newton iteration still converges for it).
 template <int D>
-int jacobian(double x, N_Vector, N_Vector, SUNMatrix J, void* user_data, N_Vector, N_Vector,
-             N_Vector) {
+int jacobian(
+    double x, N_Vector, N_Vector, SUNMatrix J, void* user_data, N_Vector, N_Vector, N_Vector) {
   const auto& data = *static_cast<const RhsData*>(user_data);
   Square<D> B, C;
   coefficients_at<D>(data, x, B, C);
@@ -212,8 +212,10 @@ struct ShootingIntegrator::Impl {
     check(CVodeSetUserData(cvode.get(), &data), "CVodeSetUserData");
     if (settings.fixed_point) {
       // Functional iteration (no Jacobian, no linear solve): the system is not stiff.
-      if (!nonlinear_solver.get()) throw ShootingFailure("could not allocate SUNNonlinSol_FixedPoint");
-      check(CVodeSetNonlinearSolver(cvode.get(), nonlinear_solver.get()), "CVodeSetNonlinearSolver");
+      if (!nonlinear_solver.get())
+        throw ShootingFailure("could not allocate SUNNonlinSol_FixedPoint");
+      check(CVodeSetNonlinearSolver(cvode.get(), nonlinear_solver.get()),
+            "CVodeSetNonlinearSolver");
     } else {
       check(CVodeSetLinearSolver(cvode.get(), linear_solver.get(), matrix.get()),
             "CVodeSetLinearSolver");
@@ -225,13 +227,15 @@ struct ShootingIntegrator::Impl {
 
   void check(int flag, const char* call, double x = 0.0) const {
     if (flag < 0) {
-      throw ShootingFailure(fmt::format("{} returned {} ({}) at s/L = {:.6g}", call,
-                                        cvode_flag_name(flag), flag, x));
+      throw ShootingFailure(
+          fmt::format("{} returned {} ({}) at s/L = {:.6g}", call, cvode_flag_name(flag), flag, x));
     }
   }
 
   template <int D>
-  Shot shoot(double omega, double tolerance_factor, const std::vector<double>* stations,
+  Shot shoot(double omega,
+             double tolerance_factor,
+             const std::vector<double>* stations,
              bool from_b);
 
   IntegratorSettings settings;
@@ -253,8 +257,10 @@ struct ShootingIntegrator::Impl {
 };
 
 template <int D>
-Shot ShootingIntegrator::Impl::shoot(double omega, double tolerance_factor,
-                                     const std::vector<double>* stations, bool from_b) {
+Shot ShootingIntegrator::Impl::shoot(double omega,
+                                     double tolerance_factor,
+                                     const std::vector<double>* stations,
+                                     bool from_b) {
   Shot shot;
   shot.omega_rad_s = omega;
   data.omega2 = data.coefficients.scaled_omega2(omega);
@@ -391,15 +397,19 @@ Shot ShootingIntegrator::Impl::shoot(double omega, double tolerance_factor,
   return shot;
 }
 
-ShootingIntegrator::ShootingIntegrator(Plane plane, const ShootingCoefficients& coefficients,
+ShootingIntegrator::ShootingIntegrator(Plane plane,
+                                       const ShootingCoefficients& coefficients,
                                        const IntegratorSettings& settings)
     : impl_(std::make_unique<Impl>(plane, coefficients, settings)) {}
 
 ShootingIntegrator::~ShootingIntegrator() = default;
 
-Shot ShootingIntegrator::shoot(double omega_rad_s, double tolerance_factor,
-                               const std::vector<double>* stations_x, bool from_b) {
-  if (impl_->dimension == 2) return impl_->shoot<2>(omega_rad_s, tolerance_factor, stations_x, from_b);
+Shot ShootingIntegrator::shoot(double omega_rad_s,
+                               double tolerance_factor,
+                               const std::vector<double>* stations_x,
+                               bool from_b) {
+  if (impl_->dimension == 2)
+    return impl_->shoot<2>(omega_rad_s, tolerance_factor, stations_x, from_b);
   return impl_->shoot<1>(omega_rad_s, tolerance_factor, stations_x, from_b);
 }
 

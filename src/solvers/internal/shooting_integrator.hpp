@@ -24,7 +24,8 @@
 /// an eigenvalue of U passing -1, so the number of conjugate points on (0, x] -- which by Morse
 /// index theory equals the number of eigenfrequencies below w when x = 1 -- is
 ///
-///     N = [ (2 pi D - 2 theta) - sum_j abar_j ] / (2 pi),   abar_j = arg e^{i alpha_j} in [pi, 3 pi)
+///     N = [ (2 pi D - 2 theta) - sum_j abar_j ] / (2 pi),   abar_j = arg e^{i alpha_j} in [pi, 3
+///     pi)
 ///
 /// exactly an integer. theta is integrated as one extra ODE component (so it never needs
 /// unwrapping) and is reconciled with arg det Z at the end; the mismatch is reported.
@@ -42,12 +43,11 @@
 /// transverse wave so that the phase turns at a nearly uniform rate; unbalanced, the Pruefer-type
 /// phase turns in bursts and costs CVODE several times more steps. Results are unscaled.
 
+#include <Eigen/Core>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "catena/core/types.hpp"
 #include "catena/statics/elastic_catenary.hpp"
@@ -57,13 +57,13 @@ namespace catena::internal {
 /// Static coefficients along the cable, in the closed forms of the shared statics.
 struct ShootingCoefficients {
   double length_m = 1.0;
-  double H = 0.0;    ///< horizontal force [N]
-  double V_A = 0.0;  ///< vertical force at s = 0 [N]
-  double W0 = 0.0;   ///< weight per unstretched length [N/m]
+  double H = 0.0;           ///< horizontal force [N]
+  double V_A = 0.0;         ///< vertical force at s = 0 [N]
+  double W0 = 0.0;          ///< weight per unstretched length [N/m]
   double compliance = 0.0;  ///< 1/EA [1/N], 0 when inextensible
-  double m = 1.0;    ///< mass [kg/m] (tangential inertia)
-  double M = 1.0;    ///< normal mass m + ma [kg/m]
-  double t_ref = 1.0;  ///< tension scale [N]: max(T_A, T_B)
+  double m = 1.0;           ///< mass [kg/m] (tangential inertia)
+  double M = 1.0;           ///< normal mass m + ma [kg/m]
+  double t_ref = 1.0;       ///< tension scale [N]: max(T_A, T_B)
 
   static ShootingCoefficients from_statics(const StaticSolution& statics);
   /// T(s) [N].
@@ -79,11 +79,11 @@ struct ShootingCoefficients {
 struct IntegratorSettings {
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 1e-12;
-  bool use_bdf = false;  ///< CV_BDF instead of CV_ADAMS
-  bool fixed_point = false;  ///< fixed-point nonlinear iteration instead of Newton + dense LU
-  long max_steps = 200000;  ///< per shot
+  bool use_bdf = false;        ///< CV_BDF instead of CV_ADAMS
+  bool fixed_point = false;    ///< fixed-point nonlinear iteration instead of Newton + dense LU
+  long max_steps = 200000;     ///< per shot
   double max_condition = 1e2;  ///< re-orthonormalise when cond(G) exceeds this
-  bool balance = true;  ///< rescale Phi, F by kappa^2 = max(Omega, 1) (off only for studies)
+  bool balance = true;         ///< rescale Phi, F by kappa^2 = max(Omega, 1) (off only for studies)
 };
 
 /// A CVODE failure (flag name, position) inside a shot; the solver turns it into a summary.
@@ -102,7 +102,8 @@ struct Shot {
   double determinant = 0.0;
   /// Conjugate points on (0, L]: eigenfrequencies below omega.
   int count = 0;
-  /// Smallest and largest eigen-angle of U at the far end, in [pi, 3 pi) (shifted down by 1e-12 rad) [rad].
+  /// Smallest and largest eigen-angle of U at the far end, in [pi, 3 pi) (shifted down by 1e-12
+  /// rad) [rad].
   double angle_min = 0.0;
   double angle_max = 0.0;
   /// |theta_integrated - theta_exact| [rad]: integration error of the phase (must be << pi).
@@ -121,7 +122,8 @@ struct Shot {
 /// Integrates principal solutions for one plane; holds CVODE's memory between shots.
 class ShootingIntegrator {
  public:
-  ShootingIntegrator(Plane plane, const ShootingCoefficients& coefficients,
+  ShootingIntegrator(Plane plane,
+                     const ShootingCoefficients& coefficients,
                      const IntegratorSettings& settings);
   ~ShootingIntegrator();
   ShootingIntegrator(const ShootingIntegrator&) = delete;
@@ -131,8 +133,10 @@ class ShootingIntegrator {
   /// at s = L and integrates toward s = 0 (then F is returned with its physical sign). Stations
   /// `stations_x` (x = s/L, in the order of integration) are recorded when given.
   /// Throws ShootingFailure when CVODE fails.
-  Shot shoot(double omega_rad_s, double tolerance_factor = 1.0,
-             const std::vector<double>* stations_x = nullptr, bool from_b = false);
+  Shot shoot(double omega_rad_s,
+             double tolerance_factor = 1.0,
+             const std::vector<double>* stations_x = nullptr,
+             bool from_b = false);
 
   /// Totals over all shots.
   long total_steps() const;
