@@ -13,6 +13,11 @@
 //       -Lbuild -lcatena -lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense \
 //       -lsundials_sunlinsoldense -lfmt
 //   build/shooting_gale_forced verification/reference
+//
+// Also writes verification/reference/shooting-gale-C3-comparison.csv: Table C-3, the response
+// along the cable (h/b = 0, sag 0.70, xi = -1.383 ... 1.383) at the printed forcing frequencies:
+// U (tangential) and V (normal) displacement [units of a] and dynamic tension T / S0, ours
+// interpolated linearly between 20001 stations (error ~1e-9).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -74,6 +79,50 @@ int main(int argc, char** argv) {
                         response.diagnostic});
   }
   write_csv_table(reference + "/shooting-gale-C2-comparison.csv", out);
+
+  const CsvTable c3 =
+      read_csv_table(reference + "/published/gale-1976-table-C3-forced-distribution.csv");
+  CsvTable along;
+  along.comments = {
+      "verification/reference/shooting-gale-C3-comparison.csv",
+      "source:    Gale (1976) Table C-3 (published/gale-1976-table-C3-forced-distribution.csv)",
+      "method:    shooting forced response (as shooting-gale-C2-comparison.csv), xi1 = -1.383, "
+      "xi2 = 1.383, linear interpolation between 20001 stations",
+      "columns:   wf, xi, published U, V, T and ours (U = u tangential, V = w normal [a], T = tau "
+      "/ "
+      "S0)",
+      "generator: verification/tools/shooting_gale_forced.cpp",
+  };
+  along.columns = {"wf",          "xi",         "U_published", "U_shooting",
+                   "V_published", "V_shooting", "T_published", "T_shooting"};
+  const Problem problem = make_gale_xi_problem(-1.383, 1.383);
+  const StaticSolution statics = solve_statics(problem);
+  const DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
+  const double sigma1 = gale_sigma_from_xi(-1.383);
+  for (std::size_t row = 0; row < c3.rows.size(); ++row) {
+    SolveRequest request;
+    request.inplane_modes = 0;
+    request.outofplane_modes = 0;
+    request.points = 20001;
+    ForcedRequest forced;
+    forced.amplitude_m = 0.01;
+    forced.omegas_rad_s = {*c3.number(row, "wf")};
+    request.forced = forced;
+    ShootingSolverOptions options;
+    options.relative_tolerance = 1e-12;
+    const ForcedResponse r =
+        solve_shooting(problem, statics, groups, request, options).forced.at(0);
+    const double s = gale_sigma_from_xi(*c3.number(row, "xi")) - sigma1;
+    const double h = problem.cable.length_m / (request.points - 1);
+    const Index j = std::min<Index>(static_cast<Index>(s / h), request.points - 2);
+    const double f = s / h - static_cast<double>(j);
+    auto at = [&](const Vector& v) { return (1.0 - f) * v[j] + f * v[j + 1]; };
+    along.rows.push_back({c3.text(row, "wf"), c3.text(row, "xi"), c3.text(row, "U"),
+                          fmt::format("{:.4f}", at(r.u)), c3.text(row, "V"),
+                          fmt::format("{:.4f}", at(r.w)), c3.text(row, "T"),
+                          fmt::format("{:.4f}", at(r.tension_n) / statics.horizontal_force_n())});
+  }
+  write_csv_table(reference + "/shooting-gale-C3-comparison.csv", along);
   std::printf("%d of %zu entries flagged\n", flagged, table.rows.size());
   return 0;
 }
