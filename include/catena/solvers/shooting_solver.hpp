@@ -25,7 +25,9 @@
 /// smallest with count n (new samples by a phase-extrapolated guess or bisection). Inside such a
 /// certified bracket det Phi(L) / sqrt(det(Phi^T Phi + F^T F)) -- a smooth function of w in
 /// [-1, 1], invariant under the re-orthonormalisation below -- changes sign exactly once, and
-/// Brent's method refines the root to `root_tolerance`. Several eigenvalues inside a bracket
+/// Brent's method refines the root to `root_tolerance`. Out of plane the continuous count
+/// N + (angle - pi)/(2 pi) (Pruefer) is itself smooth and equals n at the n-th eigenvalue, so
+/// Brent works on it directly from any count bracket. Several eigenvalues inside a bracket
 /// narrower than the tolerance (an exactly double root, e.g. Irvine's cross-over, where the count
 /// jumps by 2) are returned as that many modes at the same frequency; roots closer than
 /// 1000 rtol share a joint null space for their shapes, mass-orthogonalised.
