@@ -281,6 +281,24 @@ TEST(ShootingSolver, ThirtyModesAreCountedWithoutGaps) {
   }
 }
 
+TEST(ShootingSolver, IntegratorFailureIsReportedNotThrown) {
+  // 100 CVODE steps cannot cover ten wavelengths at rtol 1e-12: a numerical outcome, reported in
+  // the summary with the reason, never an exception or a NaN.
+  SolveRequest request;
+  request.inplane_modes = 10;
+  request.outofplane_modes = 10;
+  ShootingSolverOptions options;
+  options.relative_tolerance = 1e-12;
+  options.max_steps = 100;
+  const Solved solved = solve(make_gale_sag_problem(0.0, 0.8), request, options);
+  EXPECT_EQ(solved.output.summary.termination, Termination::NumericalFailure)
+      << solved.output.summary.full_report();
+  ASSERT_TRUE(solved.output.inplane.has_value());
+  EXPECT_NE(solved.output.inplane->summary.message.find("max_steps"), std::string::npos)
+      << solved.output.inplane->summary.message;
+  EXPECT_TRUE(solved.output.inplane->modes.empty());
+}
+
 TEST(ShootingSolverOptions, RejectsBadValues) {
   ShootingSolverOptions options;
   options.relative_tolerance = 0.0;
