@@ -1,0 +1,156 @@
+#pragma once
+/// \file
+/// The integration core of the `shooting` solver (DESIGN.md §2.2): one "shot" integrates the
+/// principal solutions of the linearised cable equations along s with CVODE, for one frequency.
+///
+/// Scaled first-order system. With x = s / L, Phi^ = Phi / L and F^ = F / T_ref (T_ref = the
+/// larger end tension), the harmonic equations (A Phi')' + w^2 Mmat Phi = 0 become
+///
+///     dPhi^/dx = B(x) F^,   dF^/dx = -C(x) Phi^,
+///     B = T_ref A^{-1} = (T_ref/EA) t t^T + (T_ref (1+e)/T) n n^T,
+///     C = Omega^2 Mmat / M,  Omega^2 = w^2 L^2 M / T_ref,
+///
+/// in plane (Phi, F in R^2, D = 2) and dv^/dx = (T_ref (1+e)/T) G^, dG^/dx = -Omega^2 v^ out of
+/// plane (D = 1). B is finite for EA = inf (exact inextensible cable). The principal solutions
+/// start at Phi = 0, F = I: a 2D x D basis Y = [Phi; F].
+///
+/// Counting (Morse index / Sturm). For this Hamiltonian system with B >= 0, C > 0, the frame
+/// Z = Phi + i F is invertible and theta = arg det Z decreases monotonically along x:
+///
+///     d theta / dx = -tr[ G^{-1} (Phi^T C Phi + F^T B F) ],   G = Phi^T Phi + F^T F,
+///
+/// and the eigenvalues e^{i alpha_j} of the unitary U = conj(Z) Z^{-1} turn monotonically
+/// counter-clockwise, starting at -1 (alpha_j = pi) at x = 0. A conjugate point (det Phi = 0) is
+/// an eigenvalue of U passing -1, so the number of conjugate points on (0, x] -- which by Morse
+/// index theory equals the number of eigenfrequencies below w when x = 1 -- is
+///
+///     N = [ (2 pi D - 2 theta) - sum_j abar_j ] / (2 pi),   abar_j = arg e^{i alpha_j} in [pi, 3
+///     pi)
+///
+/// exactly an integer. theta is integrated as one extra ODE component (so it never needs
+/// unwrapping) and is reconciled with arg det Z at the end; the mismatch is reported.
+/// Out of plane this is Pruefer's angle and N the zero count of v (Sturm).
+///
+/// Loss of independence. The two in-plane columns can grow at different exponential rates (the
+/// "chain" solutions of a curved inextensible cable, or large lambda^2). After every CVODE step the
+/// Gram matrix G is checked; when its condition number exceeds `max_condition` (or the basis scale
+/// leaves [1e-6, 1e6]) the basis is replaced by the Q of its QR factorisation with positive
+/// diagonal R (so det R > 0: the sign of det Phi and theta are unchanged) and CVODE is restarted.
+/// The R factors are kept so that a combination of the final basis maps back to every segment.
+///
+/// Balancing. The shot integrates Phi~ = kappa Phi^, F~ = F^ / kappa with kappa^2 = max(Omega, 1)
+/// (a constant symplectic scaling: B -> kappa^2 B, C -> C / kappa^2). It balances B and C for the
+/// transverse wave so that the phase turns at a nearly uniform rate; unbalanced, the Pruefer-type
+/// phase turns in bursts and costs CVODE several times more steps. Results are unscaled.
+
+#include <Eigen/Core>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "catena/core/types.hpp"
+#include "catena/statics/elastic_catenary.hpp"
+
+namespace catena::internal {
+
+/// Static coefficients along the cable, in the closed forms of the shared statics.
+struct ShootingCoefficients {
+  double length_m = 1.0;
+  double H = 0.0;           ///< horizontal force [N]
+  double V_A = 0.0;         ///< vertical force at s = 0 [N]
+  double W0 = 0.0;          ///< weight per unstretched length [N/m]
+  double compliance = 0.0;  ///< 1/EA [1/N], 0 when inextensible
+  double m = 1.0;           ///< mass [kg/m] (tangential inertia)
+  double M = 1.0;           ///< normal mass m + ma [kg/m]
+  double t_ref = 1.0;       ///< tension scale [N]: max(T_A, T_B)
+
+  static ShootingCoefficients from_statics(const StaticSolution& statics);
+  /// T(s) [N].
+  double tension(double s) const;
+  /// Unit tangent and normal at s.
+  Vec2 tangent(double s) const;
+  Vec2 normal(double s) const;
+  /// Omega^2 = w^2 L^2 M / T_ref for omega [rad/s].
+  double scaled_omega2(double omega_rad_s) const;
+};
+
+/// Integrator settings of one ShootingIntegrator.
+struct IntegratorSettings {
+  double relative_tolerance = 1e-10;
+  double absolute_tolerance = 1e-12;
+  bool use_bdf = false;        ///< CV_BDF instead of CV_ADAMS
+  bool fixed_point = false;    ///< fixed-point nonlinear iteration instead of Newton + dense LU
+  long max_steps = 200000;     ///< per shot
+  double max_condition = 1e2;  ///< re-orthonormalise when cond(G) exceeds this
+  bool balance = true;         ///< rescale Phi, F by kappa^2 = max(Omega, 1) (off only for studies)
+};
+
+/// A CVODE failure (flag name, position) inside a shot; the solver turns it into a summary.
+class ShootingFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Result of one shot at one frequency.
+struct Shot {
+  double omega_rad_s = 0.0;
+  /// Scaled basis [Phi^; F^] (2D x D) at the far end.
+  Eigen::MatrixXd y_end;
+  /// det Phi / sqrt(det G) at the far end: invariant under Y -> Y R^{-1} (det R > 0), so a
+  /// smooth function of omega in [-1, 1], zero exactly at the natural frequencies.
+  double determinant = 0.0;
+  /// Conjugate points on (0, L]: eigenfrequencies below omega.
+  int count = 0;
+  /// Smallest and largest eigen-angle of U at the far end, in [pi, 3 pi) (shifted down by 1e-12
+  /// rad) [rad].
+  double angle_min = 0.0;
+  double angle_max = 0.0;
+  /// |theta_integrated - theta_exact| [rad]: integration error of the phase (must be << pi).
+  double phase_defect = 0.0;
+  /// Stations (when asked): the scaled basis there and the segment it belongs to.
+  std::vector<Eigen::MatrixXd> station_y;
+  std::vector<int> station_segment;
+  /// R factors of the re-orthonormalisations, in order (segment k starts after R_k).
+  std::vector<Eigen::MatrixXd> segment_r;
+  long steps = 0;
+  long rhs_evaluations = 0;
+  /// log of the product of det R over the re-orthonormalisations (growth of the basis volume).
+  double log_growth = 0.0;
+};
+
+/// Integrates principal solutions for one plane; holds CVODE's memory between shots.
+class ShootingIntegrator {
+ public:
+  ShootingIntegrator(Plane plane,
+                     const ShootingCoefficients& coefficients,
+                     const IntegratorSettings& settings);
+  ~ShootingIntegrator();
+  ShootingIntegrator(const ShootingIntegrator&) = delete;
+  ShootingIntegrator& operator=(const ShootingIntegrator&) = delete;
+
+  /// Shoots at `omega_rad_s` with the tolerances scaled by `tolerance_factor`. `from_b` starts
+  /// at s = L and integrates toward s = 0 (then F is returned with its physical sign). Stations
+  /// `stations_x` (x = s/L, in the order of integration) are recorded when given.
+  /// Throws ShootingFailure when CVODE fails.
+  Shot shoot(double omega_rad_s,
+             double tolerance_factor = 1.0,
+             const std::vector<double>* stations_x = nullptr,
+             bool from_b = false);
+
+  /// Totals over all shots.
+  long total_steps() const;
+  long total_rhs_evaluations() const;
+  long total_reorthonormalisations() const;
+  double max_log_growth() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The solution (scaled [Phi^; F^], a 2D-vector) at station j of a shot for the combination `c`
+/// (a D-vector) of the final basis, mapped back through the segment R factors.
+Eigen::VectorXd combine_at_station(const Shot& shot, std::size_t j, const Eigen::VectorXd& c);
+
+}  // namespace catena::internal
