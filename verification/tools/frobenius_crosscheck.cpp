@@ -5,6 +5,8 @@
 //   u' = w/C^2,  w' = phi - u/C^2,  tau' = phi/C - W2 u,  (C phi)' = -tau/C^2 - mu W2 w
 //   out of plane: v' = p/C, p' = -mu W2 v.
 // Usage: frobenius_crosscheck <xi1> <xi2> <inplane 0/1> <modes> [rel_tol]
+//        frobenius_crosscheck <xi1> <xi2> forced <wf>   (end xi2 driven tangentially by 0.01 a, xi1 fixed:
+//        prints max |T|/H over 2000 steps and T/H at both ends)
 // Prints the Omega of each mode. Used for the report's evidence on Table B-3/B-4 disagreements and
 // for the deep-sag values beyond the thesis.
 #include <boost/numeric/odeint.hpp>
@@ -12,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include "catena/models/problem_builders.hpp"
 
@@ -62,6 +65,25 @@ int main(int argc, char** argv) {
   }
   const double s1 = catena::gale_sigma_from_xi(std::atof(argv[1]));
   const double s2 = catena::gale_sigma_from_xi(std::atof(argv[2]));
+  if (std::string(argv[3]) == "forced") {
+    const double w2 = std::pow(std::atof(argv[4]), 2);
+    const auto a = integrate<4>({0, 0, 1, 0}, s1, s2, w2, 1.0);
+    const auto b = integrate<4>({0, 0, 0, 1}, s1, s2, w2, 1.0);
+    // alpha a + beta b: u(s2) = 0.01, w(s2) = 0.
+    const double det = a[0] * b[1] - a[1] * b[0];
+    const double alpha = (0.01 * b[1]) / det, beta = (-0.01 * a[1]) / det;
+    std::array<double, 4> y{0, 0, alpha, beta};
+    double smax = std::abs(beta), s = s1;
+    const int steps = 2000;
+    for (int i = 0; i < steps; ++i) {
+      const double next = s1 + (s2 - s1) * (i + 1) / steps;
+      y = integrate<4>(y, s, next, w2, 1.0);
+      s = next;
+      smax = std::max(smax, std::abs(y[3]));
+    }
+    std::printf("max|T| %.6f  T(xi1) %.6f  T(xi2) %.6f  u(xi2) %.6f w(xi2) %.2e\n", smax, beta, y[3], y[0], y[1]);
+    return 0;
+  }
   const bool inplane = std::atoi(argv[3]) != 0;
   const int modes = std::atoi(argv[4]);
   if (argc > 5) g_tol = std::atof(argv[5]);
