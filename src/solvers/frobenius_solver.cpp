@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -80,6 +81,8 @@ struct BoundaryMatrix {
   std::vector<std::vector<Real>> a;
   std::vector<std::vector<Real>> error;
   std::vector<Real> column_scale;
+  /// max_j (largest series term behind column j) / (column norm): digits lost to cancellation.
+  double cancellation = 1.0;
   long terms = 0;
   int centres = 0;
   bool converged = true;
@@ -100,9 +103,11 @@ BoundaryMatrix<Real> boundary_matrix(const PlaneSetup& setup, const Real& omega)
   // smooth in omega (they cannot all vanish), so the scaled det keeps its sign and zeros and stays
   // continuous, while its size becomes comparable across omega and precisions.
   m.column_scale.assign(static_cast<std::size_t>(n), Real(0));
+  std::vector<Real> largest(static_cast<std::size_t>(n), Real(0));
   int row = 0;
   for (double sigma : {setup.sigma1, setup.sigma2}) {
     const auto v = basis.evaluate(Real(sigma), n - 1);
+    for (int j = 0; j < n; ++j) largest[static_cast<std::size_t>(j)] = std::max(largest[static_cast<std::size_t>(j)], v.largest_term[static_cast<std::size_t>(j)]);
     for (int j = 0; j < n; ++j)
       for (int d = 0; d < n; ++d)
         m.column_scale[static_cast<std::size_t>(j)] += v.value[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)] *
@@ -116,6 +121,7 @@ BoundaryMatrix<Real> boundary_matrix(const PlaneSetup& setup, const Real& omega)
   for (int j = 0; j < n; ++j) {
     const Real big = sqrt(m.column_scale[static_cast<std::size_t>(j)]);
     m.column_scale[static_cast<std::size_t>(j)] = big > Real(0) ? big : Real(1);
+    m.cancellation = std::max(m.cancellation, static_cast<double>(largest[static_cast<std::size_t>(j)] / m.column_scale[static_cast<std::size_t>(j)]));
     for (int i = 0; i < n; ++i) {
       m.a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] /= m.column_scale[static_cast<std::size_t>(j)];
       m.error[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] /= m.column_scale[static_cast<std::size_t>(j)];
@@ -127,6 +133,7 @@ BoundaryMatrix<Real> boundary_matrix(const PlaneSetup& setup, const Real& omega)
 /// Counts of work done, for the summary.
 struct WorkCounter {
   long determinant_evaluations = 0;
+  double cancellation = 1.0;
   long terms = 0;
   int centres = 0;
   bool truncated = false;
@@ -139,6 +146,7 @@ double scaled_determinant(const PlaneSetup& setup, double omega, WorkCounter& wo
   work.terms = std::max(work.terms, m.terms);
   work.centres = std::max(work.centres, m.centres);
   work.truncated = work.truncated || !m.converged;
+  work.cancellation = std::max(work.cancellation, m.cancellation);
   return static_cast<double>(internal::determinant(m.a));
 }
 
@@ -184,37 +192,6 @@ struct FoundRoot {
   double truncation_estimate = 0.0;
 };
 
-/// Truncation/rounding estimate of the root from the entry errors: |delta omega| =
-/// sum_ij |cofactor_ij| err_ij / |d det / d omega|.
-template <class Real>
-double truncation_estimate(const PlaneSetup& setup, double omega, double slope) {
-  const auto m = boundary_matrix<Real>(setup, Real(omega));
-  const std::size_t n = m.a.size();
-  Real total(0);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      std::vector<std::vector<Real>> minor;
-      for (std::size_t r = 0; r < n; ++r) {
-        if (r == i) continue;
-        std::vector<Real> row;
-        for (std::size_t c = 0; c < n; ++c)
-          if (c != j) row.push_back(m.a[r][c]);
-        minor.push_back(row);
-      }
-      const Real cof = n == 1 ? Real(1) : internal::determinant(minor);
-      total += abs(cof) * m.error[i][j];
-    }
-  return static_cast<double>(total) / std::max(std::abs(slope), 1e-300);
-}
-
-double truncation_estimate_at(Precision p, const PlaneSetup& setup, double omega, double slope) {
-  switch (p) {
-    case Precision::Double: return truncation_estimate<double>(setup, omega, slope);
-    case Precision::LongDouble: return truncation_estimate<long double>(setup, omega, slope);
-    default: return truncation_estimate<Quad>(setup, omega, slope);
-  }
-}
-
 /// Frequencies of one plane.
 struct PlaneRoots {
   std::vector<FoundRoot> roots;
@@ -238,7 +215,23 @@ PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusS
   integral *= (setup.sigma2 - setup.sigma1) / panels;
   const double spacing = kPi / integral;
   const double step = options.scan_fraction * spacing;
-  auto f = [&](double omega) { return scaled_determinant_at(Precision::Double, setup, omega, result.work); };
+  // Cancellation (largest series term / column norm) at the top of the expected range decides the
+  // precision of the scan: double while it leaves 8 digits, then long double, then quad.
+  Precision scan_precision = Precision::Double;
+  {
+    WorkCounter probe;
+    (void)scaled_determinant_at(Precision::Double, setup, (count + 1.0) * spacing, probe);
+    result.work.determinant_evaluations += probe.determinant_evaluations;
+    result.work.cancellation = probe.cancellation;
+    if (probe.cancellation * std::numeric_limits<double>::epsilon() > 1e-8 && options.extended_precision)
+      scan_precision = probe.cancellation * std::numeric_limits<long double>::epsilon() > 1e-8 ? Precision::Quad
+                                                                                             : Precision::LongDouble;
+    std::ostringstream text;
+    text << "cancellation (largest series term / |sum|) at Omega = " << (count + 1.0) * spacing << ": "
+         << probe.cancellation << "; root scan in " << precision_name(scan_precision);
+    result.notes.push_back(text.str());
+  }
+  auto f = [&](double omega) { return scaled_determinant_at(scan_precision, setup, omega, result.work); };
 
   std::vector<std::pair<double, double>> brackets;
   double x0 = 0.02 * spacing, f0 = f(x0);
@@ -292,64 +285,36 @@ PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusS
     FoundRoot root;
     int iterations = 0;
     double omega = refine_root(f, lo, hi, f(lo), f(hi), rtol, iterations);
-    // Precision ladder: re-check the root one level up (secant Newton step with the higher
-    // precision determinant); when the levels disagree by more than the tolerance, re-solve there.
-    Precision p = Precision::Double;
-    double difference = 0.0;
-    double slope = 0.0;
-    for (;;) {
-      const Precision up = static_cast<Precision>(static_cast<int>(p) + 1);
+    // A-posteriori check of the root: secant-Newton steps with the series cut finer (1e-3 of the
+    // term tolerance per level, twice the term cap) and in higher precision (long double, then
+    // quad from the third level when allowed). Errors carried through the matched expansions and
+    // rounding lost to cancellation are both caught, which a per-entry tail estimate would miss.
+    // The last correction is the reported estimate (conservative: the returned root is the one
+    // after it).
+    PlaneSetup fine = setup;
+    Precision check = std::max(scan_precision, Precision::LongDouble);
+    double correction = 0.0;
+    bool double_was_enough = true;
+    for (int level = 0; level < 4; ++level) {
+      if (level == 2 && options.extended_precision && correction > 0.1 * options.tolerance) check = Precision::Quad;
+      fine.settings.term_tolerance = std::max(fine.settings.term_tolerance * 1e-3, 1e-40);
+      fine.settings.max_terms = std::min(2 * fine.settings.max_terms, 20000);
       const double h = std::max(1e-7, std::sqrt(options.tolerance)) * omega;
-      const double ga = scaled_determinant_at(up, setup, omega, result.work);
-      const double gb = scaled_determinant_at(up, setup, omega + h, result.work);
-      slope = (gb - ga) / h;
-      if (std::getenv("FROB_DEBUG")) std::fprintf(stderr, "ladder p=%d omega=%.15g ga=%g gb=%g h=%g\n", int(up), omega, ga, gb, h);
-      const double corrected = slope != 0.0 ? omega - ga / slope : omega;
-      difference = std::abs(corrected - omega) / omega;
-      if (difference <= 0.1 * options.tolerance || !options.extended_precision || up == Precision::Quad) {
-        if (difference > 0.1 * options.tolerance && up == Precision::Quad && options.extended_precision) {
-          // Double and long double were not enough: solve in quad.
-          auto fq = [&](double x) { return scaled_determinant_at(Precision::Quad, setup, x, result.work); };
-          double a = corrected * (1.0 - 4.0 * difference), b = corrected * (1.0 + 4.0 * difference);
-          double fa = fq(a), fb = fq(b);
-          for (int expand = 0; expand < 20 && (fa < 0.0) == (fb < 0.0); ++expand) {
-            a = corrected - 2.0 * (corrected - a);
-            b = corrected + 2.0 * (b - corrected);
-            fa = fq(a);
-            fb = fq(b);
-          }
-          if ((fa < 0.0) != (fb < 0.0)) {
-            int it = 0;
-            const double refined = refine_root(fq, a, b, fa, fb, rtol, it);
-            difference = std::abs(refined - omega) / omega;
-            omega = refined;
-            p = Precision::Quad;
-          } else {
-            omega = corrected;
-          }
-        }
-        break;
-      }
-      // Disagreement: refine at the higher precision, then check the next level.
-      auto fu = [&](double x) { return scaled_determinant_at(up, setup, x, result.work); };
-      double a = omega * (1.0 - 4.0 * difference), b = omega * (1.0 + 4.0 * difference);
-      double fa = fu(a), fb = fu(b);
-      for (int expand = 0; expand < 20 && (fa < 0.0) == (fb < 0.0); ++expand) {
-        a = omega - 2.0 * (omega - a);
-        b = omega + 2.0 * (b - omega);
-        fa = fu(a);
-        fb = fu(b);
-      }
-      if ((fa < 0.0) == (fb < 0.0)) break;
-      int it = 0;
-      omega = refine_root(fu, a, b, fa, fb, rtol, it);
-      p = up;
+      const double ga = scaled_determinant_at(check, fine, omega, result.work);
+      const double gb = scaled_determinant_at(check, fine, omega + h, result.work);
+      const double slope = (gb - ga) / h;
+      if (slope == 0.0) break;
+      const double corrected = omega - ga / slope;
+      correction = std::abs(corrected - omega) / omega;
+      omega = corrected;
+      if (level == 0 && correction > 0.1 * options.tolerance) double_was_enough = false;
+      if (correction <= 0.1 * options.tolerance) break;
     }
     root.omega = omega;
-    root.precision = p;
-    root.precision_difference = difference;
-    root.truncation_estimate = truncation_estimate_at(p, setup, omega, slope) / omega;
-    root.relative_error = std::max({root.truncation_estimate, p == Precision::Quad ? 0.0 : difference, rtol});
+    root.precision = double_was_enough ? scan_precision : check;
+    root.precision_difference = correction;
+    root.truncation_estimate = correction;
+    root.relative_error = std::max(correction, rtol);
     result.roots.push_back(root);
   }
   return result;
@@ -433,10 +398,10 @@ std::optional<std::vector<Real>> forced_coefficients(const PlaneSetup& setup, do
 
 }  // namespace
 
-SolverOutput solve_frobenius(const Problem& problem, const StaticSolution& statics, const DimensionlessGroups& groups,
-                             const SolveRequest& request, const FrobeniusSolverOptions& options) {
-  options.validate();
-  request.validate();
+namespace {
+
+SolverOutput solve_frobenius_impl(const Problem& problem, const StaticSolution& statics, const DimensionlessGroups& groups,
+                                  const SolveRequest& request, const FrobeniusSolverOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   SolverOutput output;
   output.solver = "frobenius";
@@ -656,6 +621,28 @@ SolverOutput solve_frobenius(const Problem& problem, const StaticSolution& stati
   summary.max_error_estimate = worst_error;
   summary.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return output;
+}
+
+}  // namespace
+
+SolverOutput solve_frobenius(const Problem& problem, const StaticSolution& statics, const DimensionlessGroups& groups,
+                             const SolveRequest& request, const FrobeniusSolverOptions& options) {
+  options.validate();
+  request.validate();
+  try {
+    return solve_frobenius_impl(problem, statics, groups, request, options);
+  } catch (const InvalidInput&) {
+    throw;
+  } catch (const std::exception& error) {
+    // Numerical trouble (e.g. a logarithmic Frobenius solution the engine does not build) is a
+    // result, not an exception.
+    SolverOutput output;
+    output.solver = "frobenius";
+    output.summary.solver = "frobenius";
+    output.summary.termination = Termination::NumericalFailure;
+    output.summary.message = std::string("series solution failed: ") + error.what();
+    return output;
+  }
 }
 
 namespace internal {

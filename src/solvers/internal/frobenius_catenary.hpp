@@ -114,12 +114,27 @@ Real determinant(std::vector<std::vector<Real>> A) {
   return det;
 }
 
+/// Singular points: roots of the leading coefficient. Multiple roots come out of the companion
+/// matrix only to ~sqrt(eps): snapped to nearby dyadic rationals (the coefficients are small
+/// integers).
+inline std::vector<std::complex<double>> leading_roots(const PolynomialOde<double>& ode) {
+  std::vector<std::complex<double>> result;
+  for (auto z : polynomial_roots(ode.p.back())) {
+    const double re = std::round(z.real() * 1024.0) / 1024.0;
+    if (std::abs(z - std::complex<double>(re, 0.0)) < 1e-6) z = re;
+    result.push_back(z);
+  }
+  return result;
+}
+
 /// D^k U_j (k = 0..3) of each basis function at one sigma, with absolute error estimates.
 template <class Real>
 struct BasisValues {
   int size = 0;
   std::array<std::array<Real, 4>, 4> value{};  // [j][k]
   std::array<std::array<Real, 4>, 4> error{};  // truncation + rounding estimate
+  /// Largest single term of the series sums behind basis function j (for max term / |sum|).
+  std::array<Real, 4> largest_term{};
 };
 
 /// The series basis of one plane at one frequency, valid for 0 <= eta <= eta_max.
@@ -132,15 +147,13 @@ class CatenaryBasis {
     const PolynomialOde<Real> ode = catenary_ode<Real>(inplane, omega * omega, mu);
     // Indicial roots (0, 1/2, 1, 3/2 in plane; 0, 1/2 out of plane) and singular points (roots of
     // the leading coefficient: 0, -1, -2 in plane; 0, -2 out of plane), both from the polynomials.
-    const PolynomialOde<double> ode_double = ode.template cast<double>();
-    roots_ = indicial_roots(ode_double);
-    // Multiple roots come out of the companion matrix only to ~sqrt(eps): snap to nearby dyadic
-    // rationals (the coefficients are small integers).
-    for (auto z : polynomial_roots(ode_double.p.back())) {
-      const double re = std::round(z.real() * 1024.0) / 1024.0;
-      if (std::abs(z - std::complex<double>(re, 0.0)) < 1e-6) z = re;
-      singular_.push_back(z);
-    }
+    // Neither depends on the frequency: computed once per plane.
+    static const std::vector<double> roots_in = indicial_roots(catenary_ode<double>(true, 1.0, 1.0));
+    static const std::vector<double> roots_out = indicial_roots(catenary_ode<double>(false, 1.0, 1.0));
+    static const std::vector<std::complex<double>> singular_in = leading_roots(catenary_ode<double>(true, 1.0, 1.0));
+    static const std::vector<std::complex<double>> singular_out = leading_roots(catenary_ode<double>(false, 1.0, 1.0));
+    roots_ = inplane ? roots_in : roots_out;
+    singular_ = inplane ? singular_in : singular_out;
     const double rho = settings.step_ratio;
     // Centre 0: the singular point.
     const double r0 = radius(0.0);
@@ -230,6 +243,7 @@ class CatenaryBasis {
         FrobeniusSeries<Real> g = singular_series_[static_cast<std::size_t>(j)];
         g.r = g.r - Real(0.5);
         const auto gv = evaluate_series(g, eta, max_derivative, Real(ratio_[0]));
+        for (const auto& x : gv.largest_term) out.largest_term[static_cast<std::size_t>(j)] = std::max(out.largest_term[static_cast<std::size_t>(j)], x);
         std::array<Real, 4> w{}, h{}, he{};
         const Real root = sqrt(Real(2) + eta);
         w[0] = Real(1) / root;
@@ -265,6 +279,7 @@ class CatenaryBasis {
                                                        Real(eta - Real(centres_[static_cast<std::size_t>(k)])), max_derivative,
                                                        Real(ratio_[static_cast<std::size_t>(k)]));
         std::array<Real, 4> F{}, Fe{};
+        for (const auto& x : v.largest_term) out.largest_term[static_cast<std::size_t>(j)] = std::max(out.largest_term[static_cast<std::size_t>(j)], x);
         for (int d = 0; d <= max_derivative; ++d) {
           F[static_cast<std::size_t>(d)] = v.derivative[static_cast<std::size_t>(d)];
           Fe[static_cast<std::size_t>(d)] = v.truncation[static_cast<std::size_t>(d)] + eps * v.largest_term[static_cast<std::size_t>(d)];

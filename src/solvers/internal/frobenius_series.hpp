@@ -109,6 +109,11 @@ class ShiftTable {
     for (int k = 0; k <= order_; ++k)
       for (int j = 0; j < static_cast<int>(ode.p[k].size()); ++j)
         if (ode.p[k][j] != Real(0)) at(j - k - d_min_, k) = ode.p[k][j];
+    for (int e = 1; e < width_; ++e) {
+      bool zero = true;
+      for (int k = 0; k <= order_; ++k) zero = zero && at(e, k) == Real(0);
+      if (!zero) active_.push_back(e);
+    }
   }
 
   int d_min() const { return d_min_; }
@@ -121,13 +126,15 @@ class ShiftTable {
 
   /// Q_{d_min + e}(nu) = sum_k p_{k,k+d} nu (nu-1) ... (nu-k+1).
   Real q(int e, const Real& nu) const {
-    Real sum(0), falling(1);
-    for (int k = 0; k <= order_; ++k) {
-      sum += at(e, k) * falling;
-      falling *= (nu - Real(k));
-    }
+    // Nested form a_0 + nu (a_1 + (nu - 1)(a_2 + (nu - 2)(...))): exact zeros of the falling
+    // factorials at small integers are kept (resonances are detected exactly).
+    Real sum = at(e, order_);
+    for (int k = order_ - 1; k >= 0; --k) sum = at(e, k) + (nu - Real(k)) * sum;
     return sum;
   }
+
+  /// The shifts e >= 1 whose Q_e is not identically zero.
+  const std::vector<int>& active_shifts() const { return active_; }
 
   /// Indicial polynomial Q_{d_min}(r) as coefficients in r (double, for root finding).
   std::vector<double> indicial_polynomial() const {
@@ -152,6 +159,7 @@ class ShiftTable {
   int d_min_;
   int width_;
   std::vector<Real> coefficient_;
+  std::vector<int> active_;
 };
 
 /// Real indicial roots about x = 0, ascending; snapped to the nearest multiple of 1/2^20 when within
@@ -204,7 +212,8 @@ FrobeniusSeries<Real> frobenius_series(const ShiftTable<Real>& table, const Real
   const Real tiny = Real(1e-9);
   for (int N = 0; N < num_terms; ++N) {
     Real rhs(0), scale(0);
-    for (int e = 1; e < table.width() && e <= N; ++e) {
+    for (const int e : table.active_shifts()) {
+      if (e > N) break;
       const Real term = table.q(e, Real(N - e) + r) * series.a[static_cast<std::size_t>(N - e)];
       rhs -= term;
       scale += abs(term);
@@ -237,77 +246,105 @@ SeriesValue<Real> evaluate_series(const FrobeniusSeries<Real>& series, const Rea
   value.largest_term.assign(static_cast<std::size_t>(max_derivative + 1), Real(0));
   value.truncation.assign(static_cast<std::size_t>(max_derivative + 1), Real(0));
   const int n = static_cast<int>(series.a.size());
-  for (int k = 0; k <= max_derivative; ++k) {
-    Real sum(0), largest(0), last(0);
-    // term_m = a_m nu (nu-1)...(nu-k+1) x^(nu-k), nu = m + r; x^(nu-k) = x^(r-k) x^m for x != 0.
-    const bool at_origin = x == Real(0);
-    const Real exponent = series.r - Real(k);
-    Real base(1);
-    if (!at_origin) {
-      using std::floor;
+  const int K = max_derivative;
+  // term_{m,k} = a_m nu (nu-1)...(nu-k+1) x^(nu-k), nu = m + r, computed as a_m ff_k x^m x^(r-k).
+  const bool at_origin = x == Real(0);
+  std::vector<Real> base(static_cast<std::size_t>(K + 1), Real(1));
+  if (!at_origin) {
+    using std::floor;
+    for (int k = 0; k <= K; ++k) {
+      const Real exponent = series.r - Real(k);
+      Real b(1);
       if (exponent == Real(floor(exponent))) {  // integer power: valid for negative x too
         const int p = static_cast<int>(exponent);
-        for (int i = 0; i < (p < 0 ? -p : p); ++i) base = p < 0 ? Real(base / x) : Real(base * x);
+        for (int i = 0; i < (p < 0 ? -p : p); ++i) b = p < 0 ? Real(b / x) : Real(b * x);
       } else {
-        base = pow(x, exponent);
+        b = pow(x, exponent);
       }
+      base[static_cast<std::size_t>(k)] = b;
     }
-    Real xm(1);
-    for (int m = 0; m < n; ++m, xm *= x) {
-      const Real& c = series.a[static_cast<std::size_t>(m)];
-      if (c == Real(0)) continue;
-      const Real nu = Real(m) + series.r;
-      Real falling(1);
-      for (int i = 0; i < k; ++i) falling *= (nu - Real(i));
+  }
+  std::vector<Real> last(static_cast<std::size_t>(K + 1), Real(0));
+  Real xm(1);
+  for (int m = 0; m < n; ++m, xm *= x) {
+    const Real& c = series.a[static_cast<std::size_t>(m)];
+    if (c == Real(0)) continue;
+    const Real nu = Real(m) + series.r;
+    Real falling(1);
+    for (int k = 0; k <= K; ++k) {
+      if (k > 0) falling *= (nu - Real(k - 1));
       if (falling == Real(0)) continue;
       Real term;
       if (at_origin) {
-        if (nu - Real(k) == Real(0)) term = c * falling;
-        else if (nu - Real(k) > Real(0)) term = Real(0);
-        else term = std::numeric_limits<Real>::infinity();
+        const Real power = nu - Real(k);
+        term = power == Real(0) ? Real(c * falling)
+                                : (power > Real(0) ? Real(0) : std::numeric_limits<Real>::infinity());
       } else {
-        term = c * falling * base * xm;
+        term = c * falling * xm * base[static_cast<std::size_t>(k)];
       }
-      sum += term;
-      largest = std::max(largest, Real(abs(term)));
-      if (m >= n - 3) last = std::max(last, Real(abs(term)));
+      value.derivative[static_cast<std::size_t>(k)] += term;
+      const Real magnitude = abs(term);
+      if (magnitude > value.largest_term[static_cast<std::size_t>(k)]) value.largest_term[static_cast<std::size_t>(k)] = magnitude;
+      if (m >= n - 3 && magnitude > last[static_cast<std::size_t>(k)]) last[static_cast<std::size_t>(k)] = magnitude;
     }
-    value.derivative[static_cast<std::size_t>(k)] = sum;
-    value.largest_term[static_cast<std::size_t>(k)] = largest;
-    value.truncation[static_cast<std::size_t>(k)] =
-        ratio < Real(1) ? last * ratio / (Real(1) - ratio) : std::numeric_limits<Real>::infinity();
   }
+  for (int k = 0; k <= K; ++k)
+    value.truncation[static_cast<std::size_t>(k)] =
+        ratio < Real(1) ? last[static_cast<std::size_t>(k)] * ratio / (Real(1) - ratio) : std::numeric_limits<Real>::infinity();
   return value;
 }
 
 /// Number of terms needed so that |a_m| rho^m stays below `tolerance` * max_m |a_m| rho^m for the
-/// last `window` terms, with rho the largest distance at which the series will be evaluated; grows
-/// the series in blocks up to `max_terms`. Returns the series and sets `converged`.
+/// last `window` terms, with rho the largest distance at which the series will be evaluated; the
+/// coefficients are generated one at a time (the recurrence of frobenius_series) up to
+/// `max_terms`. Returns the series and sets `converged`.
 template <class Real>
 FrobeniusSeries<Real> adaptive_series(const ShiftTable<Real>& table, const Real& r, const Real& rho,
                                       double tolerance, int max_terms, bool& converged,
                                       const std::vector<Real>& initial = {Real(1)}) {
   using std::abs;
-  int num_terms = std::min(max_terms, 24);
-  for (;;) {
-    FrobeniusSeries<Real> s = frobenius_series(table, r, num_terms, initial);
-    Real largest(0), tail(0), power(1);
-    for (int m = 0; m < num_terms; ++m) {
-      const Real t = abs(s.a[static_cast<std::size_t>(m)]) * power;
-      largest = std::max(largest, t);
-      if (m >= num_terms - 6) tail = std::max(tail, t);
-      power *= rho;
+  FrobeniusSeries<Real> series;
+  series.r = r;
+  series.a.reserve(static_cast<std::size_t>(std::min(max_terms, 256)));
+  const Real tiny = Real(1e-9);
+  const int window = 6;
+  const int minimum = 12;
+  Real largest(0), power(1);
+  std::vector<Real> recent(static_cast<std::size_t>(window), Real(0));
+  converged = false;
+  for (int N = 0; N < max_terms; ++N) {
+    Real rhs(0), scale(0);
+    for (const int e : table.active_shifts()) {
+      if (e > N) break;
+      const Real term = table.q(e, Real(N - e) + r) * series.a[static_cast<std::size_t>(N - e)];
+      rhs -= term;
+      scale += abs(term);
     }
-    if (tail <= Real(tolerance) * largest) {
-      converged = true;
-      return s;
+    const Real lead = table.q(0, Real(N) + r);
+    const Real lead_scale = abs(table.q(0, Real(N) + r + Real(1))) + Real(1);
+    Real value;
+    if (abs(lead) <= tiny * lead_scale) {
+      if (abs(rhs) > Real(1e-8) * (scale + Real(1e-300)) && abs(rhs) > Real(1e-12))
+        throw std::domain_error("logarithmic solution at resonant index " + std::to_string(N));
+      value = static_cast<std::size_t>(N) < initial.size() ? initial[static_cast<std::size_t>(N)] : Real(0);
+    } else {
+      value = rhs / lead;
     }
-    if (num_terms >= max_terms) {
-      converged = false;
-      return s;
+    series.a.push_back(value);
+    const Real t = abs(value) * power;
+    power *= rho;
+    largest = std::max(largest, t);
+    recent[static_cast<std::size_t>(N % window)] = t;
+    if (N + 1 >= minimum) {
+      Real tail(0);
+      for (const auto& x : recent) tail = std::max(tail, x);
+      if (tail <= Real(tolerance) * largest) {
+        converged = true;
+        break;
+      }
     }
-    num_terms = std::min(max_terms, num_terms + num_terms / 2 + 8);
   }
+  return series;
 }
 
 }  // namespace catena::internal
