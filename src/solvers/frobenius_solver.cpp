@@ -7,6 +7,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <Eigen/SVD>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -232,13 +233,17 @@ PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusS
     result.notes.push_back(text.str());
   }
   auto f = [&](double omega) { return scaled_determinant_at(scan_precision, setup, omega, result.work); };
+  // The scan needs only the sign of det away from its roots: series cut at 1e-9 (fewer terms).
+  PlaneSetup coarse = setup;
+  coarse.settings.term_tolerance = std::max(setup.settings.term_tolerance, 1e-9);
+  auto f_scan = [&](double omega) { return scaled_determinant_at(scan_precision, coarse, omega, result.work); };
 
   std::vector<std::pair<double, double>> brackets;
-  double x0 = 0.02 * spacing, f0 = f(x0);
-  double x1 = x0 + step, f1 = f(x1);
+  double x0 = 0.02 * spacing, f0 = f_scan(x0);
+  double x1 = x0 + step, f1 = f_scan(x1);
   const double limit = (3.0 * count + 20.0) * spacing;
   while (static_cast<int>(brackets.size()) < count && x1 < limit) {
-    const double x2 = x1 + step, f2 = f(x2);
+    const double x2 = x1 + step, f2 = f_scan(x2);
     if ((f0 < 0.0) != (f1 < 0.0)) brackets.emplace_back(x0, x1);
     // A local minimum of |det| without a sign change on either side may hide two close roots:
     // search it (golden section on the signed value) for a sign change.
@@ -249,15 +254,15 @@ PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusS
       double a = x0, b = x2;
       const double g = 0.5 * (std::sqrt(5.0) - 1.0);
       double c = b - g * (b - a), d = a + g * (b - a);
-      double fc = sign * f(c), fd = sign * f(d);
+      double fc = sign * f_scan(c), fd = sign * f_scan(d);
       std::optional<double> crossing;
       for (int it = 0; it < 60 && !crossing; ++it) {
         if (fc < 0.0) crossing = c;
         else if (fd < 0.0) crossing = d;
         else if (fc < fd) {
-          b = d; d = c; fd = fc; c = b - g * (b - a); fc = sign * f(c);
+          b = d; d = c; fd = fc; c = b - g * (b - a); fc = sign * f_scan(c);
         } else {
-          a = c; c = d; fc = fd; d = a + g * (b - a); fd = sign * f(d);
+          a = c; c = d; fc = fd; d = a + g * (b - a); fd = sign * f_scan(d);
         }
         if (b - a < 1e-14 * b) break;
       }
@@ -269,7 +274,7 @@ PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusS
         x0 = x2;
         f0 = f2;
         x1 = x2 + step;
-        f1 = f(x1);
+        f1 = f_scan(x1);
         continue;
       }
     }
@@ -280,11 +285,25 @@ PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusS
   std::sort(brackets.begin(), brackets.end());
   if (static_cast<int>(brackets.size()) > count) brackets.resize(static_cast<std::size_t>(count));
 
-  const double rtol = std::max(options.tolerance * 1e-2, 4e-16);
+  const double rtol = std::max(options.tolerance * 0.1, 4e-16);
   for (const auto& [lo, hi] : brackets) {
     FoundRoot root;
     int iterations = 0;
-    double omega = refine_root(f, lo, hi, f(lo), f(hi), rtol, iterations);
+    // The coarse scan may misplace a root lying within its truncation of a grid point: widen the
+    // bracket by a grid step until the accurate determinant changes sign on it.
+    double a = lo, b = hi, fa = f(a), fb = f(b);
+    for (int widen = 0; widen < 4 && (fa < 0.0) == (fb < 0.0); ++widen) {
+      a = std::max(0.5 * a, a - step);
+      b += step;
+      fa = f(a);
+      fb = f(b);
+    }
+    if ((fa < 0.0) == (fb < 0.0)) {
+      result.warnings.push_back("a root bracketed by the scan near Omega = " + std::to_string(lo) +
+                                " was lost when re-evaluated with the full series; skipped");
+      continue;
+    }
+    double omega = refine_root(f, a, b, fa, fb, rtol, iterations);
     // A-posteriori check of the root: secant-Newton steps with the series cut finer (1e-3 of the
     // term tolerance per level, twice the term cap) and in higher precision (long double, then
     // quad from the third level when allowed). Errors carried through the matched expansions and
@@ -333,6 +352,44 @@ std::vector<Real> null_vector(const PlaneSetup& setup, double omega) {
   std::vector<Real> c(static_cast<std::size_t>(n));
   for (int j = 0; j < n; ++j) c[static_cast<std::size_t>(j)] = Real(v(j)) / m.column_scale[static_cast<std::size_t>(j)];
   return c;
+}
+
+/// Number of zeros in (sigma1, sigma2] of det [[U_a, U_b], [DU_a, DU_b]] for the two solutions
+/// with U = DU = 0 at sigma1 (conjugate points of the clamped end), on `points` equal steps in
+/// sigma. For this self-adjoint (Hamiltonian) system it counts the natural frequencies below omega
+/// (Morse index); the solver uses it as an independent check of the in-plane root count.
+template <class Real>
+int conjugate_point_count(const PlaneSetup& setup, double omega, int points) {
+  CatenaryBasis<Real> basis(true, Real(omega), Real(setup.mu), setup.eta_max, setup.settings);
+  const auto start = basis.evaluate(Real(setup.sigma1), 3);
+  Eigen::MatrixXd a(2, 4);
+  Eigen::VectorXd scale(4);
+  for (int j = 0; j < 4; ++j) {
+    double norm = 0.0;
+    for (int d = 0; d < 4; ++d) norm += std::pow(static_cast<double>(start.value[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)]), 2);
+    scale(j) = std::sqrt(norm) > 0.0 ? std::sqrt(norm) : 1.0;
+    for (int d = 0; d < 2; ++d) a(d, j) = static_cast<double>(start.value[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)]) / scale(j);
+  }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullV);
+  std::array<std::array<Real, 4>, 2> c{};
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 4; ++j) c[static_cast<std::size_t>(k)][static_cast<std::size_t>(j)] = Real(svd.matrixV()(j, 2 + k) / scale(j));
+  int changes = 0;
+  double previous = 0.0;
+  for (int i = 1; i <= points; ++i) {
+    const double sigma = setup.sigma1 + (setup.sigma2 - setup.sigma1) * i / points;
+    const auto v = basis.evaluate(Real(sigma), 1);
+    Real u[2] = {Real(0), Real(0)}, du[2] = {Real(0), Real(0)};
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 4; ++j) {
+        u[k] += c[static_cast<std::size_t>(k)][static_cast<std::size_t>(j)] * v.value[static_cast<std::size_t>(j)][0];
+        du[k] += c[static_cast<std::size_t>(k)][static_cast<std::size_t>(j)] * v.value[static_cast<std::size_t>(j)][1];
+      }
+    const double det = static_cast<double>(u[0] * du[1] - u[1] * du[0]);
+    if (i > 1 && det != 0.0 && previous != 0.0 && (det < 0.0) != (previous < 0.0)) ++changes;
+    if (det != 0.0) previous = det;
+  }
+  return changes;
 }
 
 /// U, V = C^2 DU and T (Gale 2.36, 2.37, in units of a and H) of the combination c at sigma.
@@ -508,6 +565,22 @@ SolverOutput solve_frobenius_impl(const Problem& problem, const StaticSolution& 
       }
       modal.modes.push_back(mode);
     }
+    if (inplane && !found.roots.empty()) {
+      // Conjugate-point count just above the highest root: must equal the number of roots found.
+      const double top = found.roots.back().omega * (1.0 + 1e-7);
+      const int grid = 200 * static_cast<int>(found.roots.size()) + 400;
+      const int counted = found.roots.back().precision == Precision::Double
+                              ? conjugate_point_count<double>(setup, top, grid)
+                              : conjugate_point_count<long double>(setup, top, grid);
+      if (counted == static_cast<int>(found.roots.size())) {
+        modal.proved_count_below_top = counted;
+        found.notes.push_back("mode count checked by conjugate points (Morse index) on " + std::to_string(grid) +
+                              " steps: " + std::to_string(counted) + " frequencies below the highest returned");
+      } else {
+        found.warnings.push_back("conjugate-point count " + std::to_string(counted) + " differs from the " +
+                                 std::to_string(found.roots.size()) + " roots found: a root may be missing");
+      }
+    }
     if (!inplane && sturm_ok == static_cast<int>(found.roots.size()) && !found.roots.empty()) {
       modal.proved_count_below_top = static_cast<int>(found.roots.size());
       found.notes.push_back("mode count checked by Sturm oscillation: mode n has n - 1 interior nodes for n = 1.." +
@@ -538,8 +611,10 @@ SolverOutput solve_frobenius_impl(const Problem& problem, const StaticSolution& 
                             std::to_string(found.hidden_pairs_found) + " found");
     summary.warnings = found.warnings;
     if (plane_precision != Precision::Double)
-      summary.warnings.push_back(std::string("double precision was not enough (cancellation in the series); used ") +
-                                 precision_name(plane_precision));
+      summary.warnings.push_back(std::string("the double-precision roots needed corrections above tolerance/10 from the "
+                                             "finer-series re-evaluation in ") +
+                                 precision_name(plane_precision) +
+                                 " (truncation carried through the matched expansions and/or rounding); the returned roots include them");
     all_converged = all_converged && plane_converged;
     worst_error = std::max(worst_error, plane_worst);
     total_evaluations += found.work.determinant_evaluations;
