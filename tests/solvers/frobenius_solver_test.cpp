@@ -13,6 +13,7 @@
 #include "catena/io/csv_table.hpp"
 #include "catena/models/problem_builders.hpp"
 #include "catena/solvers/frobenius_solver.hpp"
+#include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 #include "test_utils.hpp"
@@ -239,6 +240,80 @@ TEST(FrobeniusSolverTest, ForcedResponseMeetsTheEndConditions) {
     EXPECT_NEAR(r.w(last), 0.0, 1e-12);
     EXPECT_GT(r.max_abs_tension_n, 0.0);
   }
+}
+
+TEST(FrobeniusSolverTest, ShapesAndTensionAreFiniteAtTheApexStation) {
+  // Symmetric cable, odd number of stations: the middle station is the apex (sigma = 0, xi = 0),
+  // where the half-integer Frobenius solutions have sqrt(|xi|) factors.
+  SolveRequest request = modes(4, 2);
+  request.shapes = true;
+  request.tension = true;
+  request.points = 101;
+  const Solved s = run(make_gale_xi_problem(-0.5, 0.5), request);
+  for (const auto& mode : s.output.inplane->modes) {
+    EXPECT_TRUE(mode.u.allFinite() && mode.w.allFinite() && mode.tension_n.allFinite()) << mode.index;
+    // Smooth through the apex: the second difference there continues its neighbours' (a kink or
+    // a wrong value at sigma = 0 would make it jump).
+    for (const Vector* f : {&mode.w, &mode.u, &mode.tension_n}) {
+      const Vector& y = *f;
+      const double d2_apex = y(51) - 2.0 * y(50) + y(49), d2_left = y(50) - 2.0 * y(49) + y(48),
+                   d2_right = y(52) - 2.0 * y(51) + y(50);
+      EXPECT_NEAR(d2_apex, 0.5 * (d2_left + d2_right), 0.05 * (std::abs(d2_left) + std::abs(d2_right)) + 1e-9)
+          << mode.index;
+    }
+  }
+  // Alternating antisymmetric / symmetric normal displacement (first in-plane mode antisymmetric).
+  for (const auto& mode : s.output.inplane->modes) {
+    const double parity = mode.index % 2 == 1 ? -1.0 : 1.0;
+    for (Index k = 0; k < 50; ++k) EXPECT_NEAR(mode.w(100 - k), parity * mode.w(k), 1e-9) << mode.index;
+  }
+  for (const auto& mode : s.output.outofplane->modes) EXPECT_TRUE(mode.v.allFinite());
+  EXPECT_EQ(s.output.inplane->proved_count_below_top, 4);
+}
+
+TEST(FrobeniusSolverTest, NormalAndOutOfPlaneForcingMeetTheirEndConditions) {
+  for (const ForcingDirection direction : {ForcingDirection::Normal, ForcingDirection::OutOfPlane}) {
+    SolveRequest request = modes(0, 0);
+    request.points = 41;
+    ForcedRequest forced;
+    forced.end = CableEnd::A;
+    forced.direction = direction;
+    forced.amplitude_m = 0.02;
+    forced.omegas_rad_s = {0.7, 4.1};
+    request.forced = forced;
+    const Solved s = run(make_gale_xi_problem(-0.4, 1.3), request);
+    for (const auto& r : s.output.forced) {
+      ASSERT_TRUE(r.diagnostic.empty()) << r.diagnostic;
+      const Index last = r.s_m.size() - 1;
+      if (direction == ForcingDirection::Normal) {
+        EXPECT_NEAR(r.w(0), 0.02, 1e-12);
+        EXPECT_NEAR(r.u(0), 0.0, 1e-12);
+        EXPECT_NEAR(r.u(last), 0.0, 1e-12);
+        EXPECT_NEAR(r.w(last), 0.0, 1e-12);
+      } else {
+        EXPECT_NEAR(r.v(0), 0.02, 1e-12);
+        EXPECT_NEAR(r.v(last), 0.0, 1e-12);
+      }
+    }
+  }
+}
+
+TEST(FrobeniusSolverTest, RegistryEntryReadsKnobsAndRejectsUnknownOnes) {
+  const SolverEntry* entry = find_solver("frobenius");
+  ASSERT_NE(entry, nullptr);
+  const Problem problem = make_gale_sag_problem(0.5, 0.8);
+  const StaticSolution statics = solve_statics(problem);
+  const DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
+  const SolveRequest request = modes(3, 3);
+  const SolveContext context{problem, statics, groups, request};
+  EXPECT_FALSE(entry->not_applicable_reason(context).has_value());
+  const SolverOutput output = entry->run(context, {{"tolerance", 1e-10}, {"max_terms", 300L}});
+  EXPECT_EQ(output.summary.termination, Termination::Converged) << output.summary.message;
+  // Table B-3 / B-4, h/b = 0.5, sag 0.80: in-plane 1.86, 3.16, 4.42; out-of-plane 1.22, 2.34, 3.48.
+  EXPECT_NEAR(*output.inplane->modes[2].gale_ratio, 4.42, 0.005);
+  EXPECT_NEAR(*output.outofplane->modes[2].gale_ratio, 3.48, 0.005);
+  EXPECT_THROW(entry->validate_knobs({{"terms", 10L}}), InvalidInput);
+  EXPECT_THROW(entry->validate_knobs({{"tolerance", 1.0}}), InvalidInput);
 }
 
 TEST(FrobeniusSolverTest, DeclinesExtensibleCables) {
