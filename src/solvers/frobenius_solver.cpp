@@ -305,7 +305,8 @@ PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusS
     }
     double omega = refine_root(f, a, b, fa, fb, rtol, iterations);
     // A-posteriori check of the root: secant-Newton steps with the series cut finer (1e-3 of the
-    // term tolerance per level, twice the term cap) and in higher precision (long double, then
+    // term tolerance per level, within the same max_terms: that knob is the user's resolution
+    // and is never exceeded) and in higher precision (long double, then
     // quad from the third level when allowed). Errors carried through the matched expansions and
     // rounding lost to cancellation are both caught, which a per-entry tail estimate would miss.
     // The last correction is the reported estimate (conservative: the returned root is the one
@@ -317,7 +318,6 @@ PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusS
     for (int level = 0; level < 4; ++level) {
       if (level == 2 && options.extended_precision && correction > 0.1 * options.tolerance) check = Precision::Quad;
       fine.settings.term_tolerance = std::max(fine.settings.term_tolerance * 1e-3, 1e-40);
-      fine.settings.max_terms = std::min(2 * fine.settings.max_terms, 20000);
       const double h = std::max(1e-7, std::sqrt(options.tolerance)) * omega;
       const double ga = scaled_determinant_at(check, fine, omega, result.work);
       const double gb = scaled_determinant_at(check, fine, omega + h, result.work);
