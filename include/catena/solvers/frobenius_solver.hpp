@@ -12,15 +12,28 @@
 /// verification/tools/frobenius_derive_odes.py), not copied from the OCR.
 ///
 /// Method: a general Frobenius engine builds the series from the coefficient polynomials; the
-/// expansion about the apex is continued by Taylor expansions about ordinary points (each within
-/// `step_ratio` of its radius of convergence), so any |xi| is reachable (the thesis stops at
-/// |xi| < 4). The number of terms follows `tolerance`. Frequencies are the roots of the boundary
-/// determinant (U = V = 0 at both ends in plane, 4x4; v = 0 out of plane, 2x2), bracketed on a grid
-/// in Omega a tenth of the asymptotic mode spacing apart, with every local minimum of |det| between
-/// sign changes searched for a hidden close pair, then refined by bisection/secant. Each root is
-/// re-checked in long double (and quad precision when long double and double disagree by more than
-/// the tolerance); the difference is part of the reported error estimate, together with the
-/// truncation estimate propagated through the determinant.
+/// expansion about the apex is continued by Taylor expansions about ordinary points, matched where
+/// both converge (each point at `step_ratio` of the radius of convergence of the expansion used),
+/// so any |xi| is reachable (the thesis stops at |xi| < 4). The number of terms follows
+/// `tolerance` (capped by `max_terms`). Frequencies are the roots of the boundary determinant
+/// (U = V = 0 at both ends in plane, 4x4; v = 0 out of plane, 2x2), columns scaled by a smooth
+/// positive norm so that the scaled determinant keeps its sign and zeros:
+///  - bracketed on a grid in Omega `scan_fraction` of the asymptotic mode spacing apart (WKB:
+///    pi / int sqrt(mu/C) dsigma), every local minimum of |det| between sign changes searched by
+///    golden section for a hidden close pair, then refined (Illinois regula falsi);
+///  - the count is checked independently: out of plane by Sturm oscillation (mode n has n - 1
+///    interior nodes), in plane by the conjugate points of the clamped end (Morse index: the zeros
+///    of det[U, V] of the two solutions clamped at xi1, counted along the cable just above the
+///    highest root); `proved_count_below_top` is set when the count agrees;
+///  - each root is corrected a posteriori by secant-Newton steps with series cut 1e-3 finer per
+///    step and evaluated in long double (quad from the third step); the last correction is the
+///    reported `relative_error_estimate` (it covers truncation carried through the matched
+///    expansions and rounding). The scan itself runs in long double or quad when the largest
+///    series term exceeds the sum by more than 1e8 (double) / 1e11 (long double).
+/// Modes: null vector of the boundary matrix, U, V and T at the request stations (converted from
+/// s through sigma = V(s)/H), normalised by mode_tools. Forced response: the fixed end clamped, the
+/// driven end given its displacement (tangential, normal, a given in-plane vector resolved on t and
+/// n, or out of plane), U, V, T along the cable (Gale 2.76-2.79).
 
 #include "catena/models/cable.hpp"
 #include "catena/solvers/modal_result.hpp"
