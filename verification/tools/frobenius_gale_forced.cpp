@@ -55,7 +55,8 @@ int main(int argc, char** argv) {
   out.comments = {"Gale (1976) Table C-2 vs the frobenius solver (verification/tools/frobenius_gale_forced.cpp).",
                   "End xi1 fixed, end xi2 driven tangentially, amplitude 0.01 a; tmax = max |T| / H over 4001 stations.",
                   "Problem from the printed (h_over_b, sag_param). nearest_mode: our in-plane natural frequency closest to wf.",
-                  "ratio = ours / printed."};
+                  "ratio = ours / printed. Rows with sag 0.70 (|xi| > 0.75 on the negative side) disagree: the printed maxima",
+                  "come from the erroneous negative-side tensions of Table C-3 (see frobenius-gale-forced-distribution.csv)."};
   out.columns = {"h_over_b", "sag_param", "wf", "printed_tmax", "ours_tmax", "ratio", "nearest_mode", "nearest_omega"};
   for (std::size_t row = 0; row < c2.rows.size(); ++row) {
     const double hb = *c2.number(row, "h_over_b"), sag = *c2.number(row, "sag_param"), wf = *c2.number(row, "wf");
@@ -82,7 +83,10 @@ int main(int argc, char** argv) {
   CsvTable dist;
   dist.comments = {"Gale (1976) Table C-3 vs the frobenius solver (verification/tools/frobenius_gale_forced.cpp).",
                    "h/b = 0, sag 0.70, end xi2 driven tangentially (0.01 a); U, V in units of a, T / H; ours interpolated",
-                   "linearly from 20001 stations equally spaced in s (interpolation error < 1e-6)."};
+                   "linearly from 20001 stations equally spaced in s (interpolation error < 1e-6).",
+                   "Printed V, T at xi <= -0.880 disagree (V sign, T ~5 H): verification/tools/frobenius_c3_hypothesis.cpp reproduces",
+                   "them to the printed digits by forming the sigma-derivatives on the negative side with |sigma| and d/d|xi| (the",
+                   "positive-side chain rule), i.e. a sign slip in the 1976 computation; T is continuous (direct integration agrees)."};
   dist.columns = {"wf", "xi", "U_printed", "U_ours", "V_printed", "V_ours", "T_printed", "T_ours"};
   const Problem problem = make_gale_sag_problem(0.0, 0.70);
   for (double wf : {1.32, 1.36}) {
