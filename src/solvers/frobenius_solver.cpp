@@ -509,6 +509,36 @@ SolverOutput solve_frobenius_impl(const Problem& problem, const StaticSolution& 
     setup.inplane = inplane;
     const auto plane_start = std::chrono::steady_clock::now();
     PlaneRoots found = find_frequencies(setup, count, options);
+    int proved_count = -1;
+    if (inplane) {
+      // Conjugate-point count just above the highest root must equal the number of roots found;
+      // when it does not, the scan is repeated on a 4x finer grid (twice at most).
+      FrobeniusSolverOptions retry = options;
+      for (int attempt = 0; attempt < 3 && !found.roots.empty(); ++attempt) {
+        const double top = found.roots.back().omega * (1.0 + 1e-7);
+        // Only signs along the cable are needed: double and ~100 steps per mode suffice.
+        const int grid = 100 * static_cast<int>(found.roots.size()) + 200;
+        const int counted = conjugate_point_count<double>(setup, top, grid);
+        if (counted == static_cast<int>(found.roots.size())) {
+          proved_count = counted;
+          found.notes.push_back("mode count checked by conjugate points (Morse index) on " + std::to_string(grid) +
+                                " steps: " + std::to_string(counted) + " frequencies below the highest returned");
+          break;
+        }
+        const std::string text = "conjugate-point count " + std::to_string(counted) + " differs from the " +
+                                 std::to_string(found.roots.size()) + " roots found with scan_fraction " +
+                                 std::to_string(retry.scan_fraction);
+        if (attempt == 2 || retry.scan_fraction / 4.0 < 0.001) {
+          found.warnings.push_back(text + ": a root may be missing");
+          break;
+        }
+        retry.scan_fraction /= 4.0;
+        const long evaluations = found.work.determinant_evaluations;
+        found = find_frequencies(setup, count, retry);
+        found.work.determinant_evaluations += evaluations;
+        found.notes.push_back(text + "; rescanned with scan_fraction " + std::to_string(retry.scan_fraction));
+      }
+    }
     ModalResult modal;
     modal.plane = inplane ? Plane::InPlane : Plane::OutOfPlane;
     modal.summary.solver = "frobenius";
@@ -565,22 +595,7 @@ SolverOutput solve_frobenius_impl(const Problem& problem, const StaticSolution& 
       }
       modal.modes.push_back(mode);
     }
-    if (inplane && !found.roots.empty()) {
-      // Conjugate-point count just above the highest root: must equal the number of roots found.
-      const double top = found.roots.back().omega * (1.0 + 1e-7);
-      const int grid = 200 * static_cast<int>(found.roots.size()) + 400;
-      const int counted = found.roots.back().precision == Precision::Double
-                              ? conjugate_point_count<double>(setup, top, grid)
-                              : conjugate_point_count<long double>(setup, top, grid);
-      if (counted == static_cast<int>(found.roots.size())) {
-        modal.proved_count_below_top = counted;
-        found.notes.push_back("mode count checked by conjugate points (Morse index) on " + std::to_string(grid) +
-                              " steps: " + std::to_string(counted) + " frequencies below the highest returned");
-      } else {
-        found.warnings.push_back("conjugate-point count " + std::to_string(counted) + " differs from the " +
-                                 std::to_string(found.roots.size()) + " roots found: a root may be missing");
-      }
-    }
+    if (inplane) modal.proved_count_below_top = proved_count;
     if (!inplane && sturm_ok == static_cast<int>(found.roots.size()) && !found.roots.empty()) {
       modal.proved_count_below_top = static_cast<int>(found.roots.size());
       found.notes.push_back("mode count checked by Sturm oscillation: mode n has n - 1 interior nodes for n = 1.." +
@@ -732,7 +747,7 @@ SolverEntry make_frobenius_entry() {
       {"tolerance", "target relative accuracy of each frequency [-], in [1e-15, 1e-3], default 1e-12"},
       {"max_terms", "cap on the terms of one expansion, in [8, 5000], default 600"},
       {"step_ratio", "expansion-centre spacing as a fraction of the radius of convergence, [0.1, 0.8], default 0.5"},
-      {"scan_fraction", "root-scan grid as a fraction of the mode spacing, [0.01, 0.5], default 0.1"},
+      {"scan_fraction", "root-scan grid as a fraction of the mode spacing, [0.01, 0.5], default 0.2"},
       {"extended_precision", "allow long double / quad when double loses digits (bool), default true"}};
   auto read = [](const SolverKnobs& knobs) {
     KnobReader reader("frobenius", knobs);

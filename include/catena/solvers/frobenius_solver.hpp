@@ -24,7 +24,8 @@
 ///  - the count is checked independently: out of plane by Sturm oscillation (mode n has n - 1
 ///    interior nodes), in plane by the conjugate points of the clamped end (Morse index: the zeros
 ///    of det[U, V] of the two solutions clamped at xi1, counted along the cable just above the
-///    highest root); `proved_count_below_top` is set when the count agrees;
+///    highest root; a disagreement triggers a finer rescan); `proved_count_below_top` is set when
+///    the count agrees;
 ///  - each root is corrected a posteriori by secant-Newton steps with series cut 1e-3 finer per
 ///    step and evaluated in long double (quad from the third step); the last correction is the
 ///    reported `relative_error_estimate` (it covers truncation carried through the matched
@@ -56,7 +57,9 @@ struct FrobeniusSolverOptions {
   /// the current expansion, in [0.1, 0.8]. Smaller: more centres, fewer terms each.
   double step_ratio = 0.5;
   /// Grid spacing of the root scan as a fraction of the asymptotic mode spacing, in [0.01, 0.5].
-  double scan_fraction = 0.1;
+  /// Close pairs inside one cell are searched at local minima of |det|; in plane, a conjugate-point
+  /// count that disagrees with the roots found triggers a rescan 4x finer (twice at most).
+  double scan_fraction = 0.2;
   /// Allow the precision ladder (long double, then 113-bit quad) when double is not enough.
   bool extended_precision = true;
 
