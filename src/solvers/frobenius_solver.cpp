@@ -201,6 +201,7 @@ struct PlaneRoots {
   WorkCounter work;
   int hidden_pairs_found = 0;
   int minima_checked = 0;
+  Precision scan_precision = Precision::Double;
 };
 
 PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusSolverOptions& options) {
@@ -232,61 +233,79 @@ PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusS
          << probe.cancellation << "; root scan in " << precision_name(scan_precision);
     result.notes.push_back(text.str());
   }
+  result.scan_precision = scan_precision;
   auto f = [&](double omega) { return scaled_determinant_at(scan_precision, setup, omega, result.work); };
-  // The scan needs only the sign of det away from its roots: series cut at 1e-9 (fewer terms).
+  // The scan needs only the sign of det away from its roots: series cut at 1e-9 (fewer terms),
+  // tightened by the cancellation factor so that the cut stays 1e-4 below the sums.
   PlaneSetup coarse = setup;
-  coarse.settings.term_tolerance = std::max(setup.settings.term_tolerance, 1e-9);
+  coarse.settings.term_tolerance =
+      std::max(setup.settings.term_tolerance, std::min(1e-9, 1e-4 / std::max(1.0, result.work.cancellation)));
   auto f_scan = [&](double omega) { return scaled_determinant_at(scan_precision, coarse, omega, result.work); };
 
+  // The coarse series must reproduce the determinant itself (which can be far smaller than the
+  // column norms when the basis is nearly dependent): checked at the top of the range.
+  {
+    const double top = (count + 1.0) * spacing;
+    const double full = f(top), cut = f_scan(top);
+    if (std::abs(cut - full) > 1e-2 * std::abs(full)) {
+      coarse = setup;
+      result.notes.push_back("coarse-series scan rejected (det differs by " +
+                             std::to_string(std::abs(cut - full) / std::max(std::abs(full), 1e-300)) +
+                             " relative at the top of the range): scan with the full series");
+    }
+  }
+
+  // Scan state, so that the scan can be resumed when a bracket is lost in refinement.
   std::vector<std::pair<double, double>> brackets;
   double x0 = 0.02 * spacing, f0 = f_scan(x0);
   double x1 = x0 + step, f1 = f_scan(x1);
   const double limit = (3.0 * count + 20.0) * spacing;
-  while (static_cast<int>(brackets.size()) < count && x1 < limit) {
-    const double x2 = x1 + step, f2 = f_scan(x2);
-    if ((f0 < 0.0) != (f1 < 0.0)) brackets.emplace_back(x0, x1);
-    // A local minimum of |det| without a sign change on either side may hide two close roots:
-    // search it (golden section on the signed value) for a sign change.
-    if ((f0 < 0.0) == (f1 < 0.0) && (f1 < 0.0) == (f2 < 0.0) && std::abs(f1) < std::abs(f0) &&
-        std::abs(f1) < std::abs(f2)) {
-      ++result.minima_checked;
-      const double sign = f1 < 0.0 ? -1.0 : 1.0;
-      double a = x0, b = x2;
-      const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-      double c = b - g * (b - a), d = a + g * (b - a);
-      double fc = sign * f_scan(c), fd = sign * f_scan(d);
-      std::optional<double> crossing;
-      for (int it = 0; it < 60 && !crossing; ++it) {
-        if (fc < 0.0) crossing = c;
-        else if (fd < 0.0) crossing = d;
-        else if (fc < fd) {
-          b = d; d = c; fd = fc; c = b - g * (b - a); fc = sign * f_scan(c);
-        } else {
-          a = c; c = d; fc = fd; d = a + g * (b - a); fd = sign * f_scan(d);
+  auto scan_more = [&](std::size_t wanted) {
+    while (brackets.size() < wanted && x1 < limit) {
+      const double x2 = x1 + step, f2 = f_scan(x2);
+      if ((f0 < 0.0) != (f1 < 0.0)) brackets.emplace_back(x0, x1);
+      // A local minimum of |det| without a sign change on either side may hide two close roots:
+      // search it (golden section on the signed value) for a sign change.
+      if ((f0 < 0.0) == (f1 < 0.0) && (f1 < 0.0) == (f2 < 0.0) && std::abs(f1) < std::abs(f0) &&
+          std::abs(f1) < std::abs(f2)) {
+        ++result.minima_checked;
+        const double sign = f1 < 0.0 ? -1.0 : 1.0;
+        double a = x0, b = x2;
+        const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+        double c = b - g * (b - a), d = a + g * (b - a);
+        double fc = sign * f_scan(c), fd = sign * f_scan(d);
+        std::optional<double> crossing;
+        for (int it = 0; it < 60 && !crossing; ++it) {
+          if (fc < 0.0) crossing = c;
+          else if (fd < 0.0) crossing = d;
+          else if (fc < fd) {
+            b = d; d = c; fd = fc; c = b - g * (b - a); fc = sign * f_scan(c);
+          } else {
+            a = c; c = d; fc = fd; d = a + g * (b - a); fd = sign * f_scan(d);
+          }
+          if (b - a < 1e-14 * b) break;
         }
-        if (b - a < 1e-14 * b) break;
+        if (crossing) {
+          ++result.hidden_pairs_found;
+          brackets.emplace_back(x0, *crossing);
+          brackets.emplace_back(*crossing, x2);
+          result.notes.push_back("close pair of roots found inside one scan cell near Omega = " + std::to_string(*crossing));
+          x0 = x2;
+          f0 = f2;
+          x1 = x2 + step;
+          f1 = f_scan(x1);
+          continue;
+        }
       }
-      if (crossing) {
-        ++result.hidden_pairs_found;
-        brackets.emplace_back(x0, *crossing);
-        brackets.emplace_back(*crossing, x2);
-        result.notes.push_back("close pair of roots found inside one scan cell near Omega = " + std::to_string(*crossing));
-        x0 = x2;
-        f0 = f2;
-        x1 = x2 + step;
-        f1 = f_scan(x1);
-        continue;
-      }
+      x0 = x1; f0 = f1;
+      x1 = x2; f1 = f2;
     }
-    x0 = x1; f0 = f1;
-    x1 = x2; f1 = f2;
-  }
-  if ((f0 < 0.0) != (f1 < 0.0) && static_cast<int>(brackets.size()) < count) brackets.emplace_back(x0, x1);
-  std::sort(brackets.begin(), brackets.end());
-  if (static_cast<int>(brackets.size()) > count) brackets.resize(static_cast<std::size_t>(count));
+  };
+  scan_more(static_cast<std::size_t>(count));
 
   const double rtol = std::max(options.tolerance * 0.1, 4e-16);
-  for (const auto& [lo, hi] : brackets) {
+  for (std::size_t index = 0; index < brackets.size() && static_cast<int>(result.roots.size()) < count; ++index) {
+    const double lo = brackets[index].first, hi = brackets[index].second;
     FoundRoot root;
     int iterations = 0;
     // The coarse scan may misplace a root lying within its truncation of a grid point: widen the
@@ -299,8 +318,9 @@ PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusS
       fb = f(b);
     }
     if ((fa < 0.0) == (fb < 0.0)) {
-      result.warnings.push_back("a root bracketed by the scan near Omega = " + std::to_string(lo) +
-                                " was lost when re-evaluated with the full series; skipped");
+      result.warnings.push_back("a sign change of the scan near Omega = " + std::to_string(lo) +
+                                " is not confirmed by the full series; skipped, scan resumed");
+      scan_more(brackets.size() + 1);
       continue;
     }
     double omega = refine_root(f, a, b, fa, fb, rtol, iterations);
@@ -515,10 +535,17 @@ SolverOutput solve_frobenius_impl(const Problem& problem, const StaticSolution& 
       // when it does not, the scan is repeated on a 4x finer grid (twice at most).
       FrobeniusSolverOptions retry = options;
       for (int attempt = 0; attempt < 3 && !found.roots.empty(); ++attempt) {
-        const double top = found.roots.back().omega * (1.0 + 1e-7);
-        // Only signs along the cable are needed: double and ~100 steps per mode suffice.
+        // Just above the highest root (1 % of the last gap): the last conjugate point then lies
+        // far enough inside the cable to be resolved.
+        const std::size_t n = found.roots.size();
+        const double gap = n > 1 ? found.roots[n - 1].omega - found.roots[n - 2].omega : found.roots[0].omega;
+        const double top = found.roots.back().omega + 0.01 * gap;
+        // Only signs along the cable are needed: ~100 steps per mode, in the scan's precision.
         const int grid = 100 * static_cast<int>(found.roots.size()) + 200;
-        const int counted = conjugate_point_count<double>(setup, top, grid);
+        const int counted = found.scan_precision == Precision::Double ? conjugate_point_count<double>(setup, top, grid)
+                            : found.scan_precision == Precision::LongDouble
+                                ? conjugate_point_count<long double>(setup, top, grid)
+                                : conjugate_point_count<Quad>(setup, top, grid);
         if (counted == static_cast<int>(found.roots.size())) {
           proved_count = counted;
           found.notes.push_back("mode count checked by conjugate points (Morse index) on " + std::to_string(grid) +
