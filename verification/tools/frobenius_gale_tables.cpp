@@ -40,6 +40,9 @@ Frequencies solve(const Problem& problem, int inplane, int outofplane) {
   result.xi1 = groups.xi1;
   result.xi2 = groups.xi2;
   const auto& modal = inplane > 0 ? output.inplane : output.outofplane;
+  if (modal && (modal->summary.termination != Termination::Converged || modal->proved_count_below_top != static_cast<int>(modal->modes.size())))
+    std::printf("attention: xi %.4f..%.4f %s: %s (proved count %d)\n", groups.xi1, groups.xi2,
+                inplane > 0 ? "in-plane" : "out-of-plane", modal->summary.message.c_str(), modal->proved_count_below_top);
   if (modal)
     for (const auto& mode : modal->modes) {
       result.omega.push_back(mode.gale_ratio.value_or(-1.0));
