@@ -335,13 +335,16 @@ PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const FrobeniusS
     Precision check = std::max(scan_precision, Precision::LongDouble);
     double correction = 0.0;
     bool double_was_enough = true;
-    for (int level = 0; level < 4; ++level) {
+    // Slope from the scan-precision determinant over h ~ sqrt(tolerance) omega: accurate to
+    // ~1e-6, so each Newton correction is accurate to ~1e-6 of itself (one evaluation per level).
+    const double h = std::max(1e-7, std::sqrt(options.tolerance)) * omega;
+    // Later levels (the root needed a correction) use the slope at the check precision.
+    double slope = (f(omega + h) - f(omega - h)) / (2.0 * h);
+    for (int level = 0; level < 4 && slope != 0.0; ++level) {
       if (level == 2 && options.extended_precision && correction > 0.1 * options.tolerance) check = Precision::Quad;
       fine.settings.term_tolerance = std::max(fine.settings.term_tolerance * 1e-3, 1e-40);
-      const double h = std::max(1e-7, std::sqrt(options.tolerance)) * omega;
       const double ga = scaled_determinant_at(check, fine, omega, result.work);
-      const double gb = scaled_determinant_at(check, fine, omega + h, result.work);
-      const double slope = (gb - ga) / h;
+      if (level > 0) slope = (scaled_determinant_at(check, fine, omega + h, result.work) - ga) / h;
       if (slope == 0.0) break;
       const double corrected = omega - ga / slope;
       correction = std::abs(corrected - omega) / omega;
