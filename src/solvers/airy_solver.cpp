@@ -360,7 +360,13 @@ std::optional<std::string> airy_not_applicable_reason(const Problem& problem,
                                                       const StaticSolution& statics,
                                                       const DimensionlessGroups& groups,
                                                       const AirySolverOptions& options) {
-  (void)problem;
+  // Like eq. (21), the Airy model linearises about a slightly stretched string.
+  constexpr double kMaxStaticStrain = 0.1;
+  const double strain = problem.cable.is_inextensible() ? 0.0 : groups.t0_n / problem.cable.axial_stiffness_n;
+  if (strain > kMaxStaticStrain) {
+    return fmt::format("static strain T0/EA = {:.3g} > {:.1g}: the small-strain Airy model does not apply",
+                       strain, kMaxStaticStrain);
+  }
   if (!(statics.horizontal_force_n() > 0.0) || std::abs(std::cos(groups.chord_angle_rad)) < 1e-9) {
     return fmt::format(
         "vertical chord (H = {:.3g} N): the static curvature vanishes and the Airy solution "

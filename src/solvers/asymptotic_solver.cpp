@@ -167,8 +167,17 @@ std::optional<std::string> asymptotic_not_applicable_reason(
     const StaticSolution& statics,
     const DimensionlessGroups& groups,
     const AsymptoticSolverOptions& options) {
-  (void)problem;
   const double cos_phi = std::cos(groups.chord_angle_rad);
+  // The theory linearises about a slightly stretched string: at a static strain T0/EA of order
+  // one (lambda^2 << eps^2) its frequencies are off by the strain itself.
+  constexpr double kMaxStaticStrain = 0.1;
+  const double strain = problem.cable.is_inextensible() ? 0.0 : groups.t0_n / problem.cable.axial_stiffness_n;
+  if (strain > kMaxStaticStrain) {
+    return fmt::format(
+        "static strain T0/EA = {:.3g} > {:.1g}: the small-strain theory of eq. (21) does not apply "
+        "(lambda^2 = {:.3g} is far below eps^2 = {:.3g})",
+        strain, kMaxStaticStrain, groups.lambda2, groups.eps * groups.eps);
+  }
   if (!(statics.horizontal_force_n() > 0.0) || std::abs(cos_phi) < 1e-9) {
     return fmt::format(
         "vertical chord (H = {:.3g} N, phi_a = {:.6g} deg): lambda^2 = 0 and Grinfogel's eq. (21) "
