@@ -113,6 +113,23 @@ TEST(Cli, VerifyRunsADirectoryAndWritesReport) {
   EXPECT_NE(run.output.find("1 scenes"), std::string::npos) << run.output;
 }
 
+TEST(Cli, ABrokenSolverMakesVerifyFailWithAReadableMessage) {
+  // One shooting frequency perturbed by 1e-3 on the mooring scene: the frequency checks against
+  // fe must fail, naming scene, check, solvers, mode, values and tolerance; exit code 1.
+  const std::string scenes = std::string(CATENA_SOURCE_DIR) + "/verification/scenes/physical";
+  const fs::path out = fs::temp_directory_path() / "catena_cli_perturb";
+  const CliRun run = run_cli("verify --scenes " + scenes + " --filter mooring-line-900m --out " + out.string() +
+                             " --perturb shooting:inplane:2:1e-3");
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("FAIL mooring-line-900m / frequency / fe vs shooting mode 2"), std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("measured 9.99"), std::string::npos) << run.output;  // 1e-3 / (1 + 1e-3)
+  EXPECT_NE(run.output.find("tolerance"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("rad/s"), std::string::npos) << run.output;          // both values shown
+  // Unperturbed, the same run passes.
+  EXPECT_EQ(run_cli("verify --scenes " + scenes + " --filter mooring-line-900m --out " + out.string()).exit_code, 0);
+}
+
 TEST(Cli, VerifyReportsEveryBadSceneAndExitsTwo) {
   const fs::path dir = fs::temp_directory_path() / "catena_cli_verify_bad";
   fs::create_directories(dir);

@@ -83,6 +83,7 @@ unit = "gale"
 modes = {fmt_list(str(m) for m in modes)}
 values = {fmt_list(values)}
 decimals = 2
+solvers = ["fe", "shooting", "frobenius"]
 ''')
             count += 1
     for row in read_table("gale-1976-table-B5-rayleigh.csv"):
@@ -111,6 +112,7 @@ unit = "gale"
 modes = [1]
 values = [{row["w1_exact"]}]
 decimals = 2
+solvers = ["fe", "shooting", "frobenius"]
 ''')
         count += 1
     return count
@@ -154,6 +156,7 @@ quantity = "forced_max_tension"
 modes = {fmt_list(str(i) for i in range(len(rows)))}
 values = {fmt_list(tmax)}
 decimals = 3
+solvers = ["fe", "shooting", "frobenius"]
 ''')
     rows = read_table("gale-1976-table-C3-forced-distribution.csv")
     freqs = sorted({r["wf"] for r in rows}, key=float)
@@ -188,6 +191,7 @@ quantity = "forced_max_tension"
 modes = [0, 1]
 values = [5.218, 3.422]
 decimals = 3
+solvers = ["fe", "shooting", "frobenius"]
 ''')
     return len(groups) + 1
 
