@@ -371,6 +371,34 @@ ReportFiles write_report(const std::filesystem::path& results_json, const Report
     else blocks.push_back(t);
   }
 
+  // --- stress suite: every outcome accurate (checks pass) or a clear diagnostic ---
+  {
+    Table t{{"stress scene", "solver", "outcome", "failed checks", "message"}, {}, "stress"};
+    for (const auto& scene : document["scenes"]) {
+      const auto tags = scene.value("tags", std::vector<std::string>{});
+      if (std::find(tags.begin(), tags.end(), "stress") == tags.end()) continue;
+      for (const auto& [solver, output] : scene["solvers"].items()) {
+        int failed = 0;
+        for (const auto& check : scene["checks"]) {
+          if (check.value("verdict", "") == "FAIL" && check.value("compare", "").find(solver) != std::string::npos) ++failed;
+        }
+        const std::string termination = output["summary"].value("termination", "");
+        const std::string outcome = termination == "converged" ? (failed ? "FAIL" : "accurate")
+                                    : termination == "not-applicable" ? "declined"
+                                                                      : "diagnosed";
+        std::string message = output["summary"].value("message", "");
+        if (message.size() > 160) message = message.substr(0, 157) + "...";
+        t.rows.push_back({scene.value("name", ""), solver, outcome, std::to_string(failed), message});
+      }
+    }
+    if (!t.rows.empty()) {
+      blocks.push_back(Heading{2, "Stress suite outcomes", "stress"});
+      blocks.push_back(Paragraph{"Each solver on each stress scene: accurate (all its checks pass), diagnosed (a "
+                                 "clear numerical diagnostic instead of a number), or declined (outside its model)."});
+      blocks.push_back(t);
+    }
+  }
+
   // --- figures ---
   std::vector<Image> images;
   if (options.figures) images = draw_figures(results_json, options, files.figures_note);

@@ -233,11 +233,47 @@ class Figures:
                       f"Table C-2 as open circles.")
 
 
+def pareto(figures, csv_path):
+    """Time against error per scene from benchmarks/results/time-vs-error.csv (issue 8)."""
+    path = pathlib.Path(csv_path)
+    if not path.exists():
+        return
+    rows = read_table(path)
+    scenes = []
+    for r in rows:
+        if r["scene"] not in scenes:
+            scenes.append(r["scene"])
+    fig, axes = plt.subplots(1, len(scenes), figsize=(4.2 * len(scenes), 4), squeeze=False)
+    for ax, scene in zip(axes[0], scenes):
+        for solver in STYLE:
+            pts = sorted((float(r["time_s"]) * 1e3, float(r["max_rel_error"])) for r in rows
+                         if r["scene"] == scene and r["solver"] == solver and r["max_rel_error"] not in ("nan", "")
+                         and float(r["max_rel_error"]) > 0)
+            if pts:
+                _, marker, color = STYLE[solver]
+                ax.plot(*zip(*pts), linestyle="none", marker=marker, color=color, label=solver)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_title(scene, fontsize=8)
+        ax.set_xlabel("wall time [ms]")
+        ax.grid(alpha=0.3)
+        for target in (1e-3, 1e-6, 1e-9):
+            ax.axhline(target, color="0.8", linewidth=0.7)
+        ax.legend(fontsize=7)
+    axes[0][0].set_ylabel("max relative error, first 6 in-plane frequencies")
+    figures.save(fig, "time-vs-error.png",
+                 "Time against error (benchmarks/results/time-vs-error.csv, 2-core machine): each solver's "
+                 "resolution knob swept (fe: N with and without Richardson; shooting: rtol; frobenius: "
+                 "tolerance), error against shooting at rtol 1e-13.")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", required=True)
     parser.add_argument("--published", required=True)
     parser.add_argument("--out", required=True)
+    parser.add_argument("--time-vs-error", default=str(pathlib.Path(__file__).resolve().parents[2] / "benchmarks" /
+                                                      "results" / "time-vs-error.csv"))
     args = parser.parse_args()
     with open(args.results) as f:
         results = json.load(f)
@@ -246,6 +282,7 @@ def main():
     for draw in (figures.grinfogel, figures.mode_shapes, figures.dynamic_tension, figures.gale_frequencies,
                  figures.gale_forced):
         draw()
+    pareto(figures, args.time_vs_error)
     with open(pathlib.Path(args.out) / "index.json", "w") as f:
         json.dump(figures.index, f, indent=1)
     print(f"drew {len(figures.index)} figures in {args.out}")
