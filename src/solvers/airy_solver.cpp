@@ -553,36 +553,8 @@ SolverOutput solve_airy(const Problem& problem,
   }
 
   if (request.outofplane_modes > 0) {
-    ModalResult result;
-    result.plane = Plane::OutOfPlane;
-    const auto omegas =
-        wkb_outofplane_omegas(statics, request.outofplane_modes, options.quadrature_panels);
-    for (std::size_t i = 0; i < omegas.size(); ++i) {
-      Mode mode;
-      mode.index = static_cast<int>(i) + 1;
-      internal::set_mode_frequency(mode, omegas[i], groups);
-      mode.relative_error_estimate = error_estimate;
-      if (need_shape) {
-        mode.s_m = stations;
-        mode.v = internal::wkb_outofplane_shape(statics, stations, omegas[i]);
-        internal::normalise_outofplane_mode(mode);
-        mode.modal_mass_kg = internal::outofplane_modal_mass(mode, M);
-        if (request.tension) {
-          mode.tension_n = Vector::Zero(stations.size());
-          mode.max_abs_tension_n = 0.0;
-        }
-        if (!request.shapes) {
-          mode.s_m = Vector();
-          mode.v = Vector();
-          mode.tension_n = Vector();
-          mode.modal_mass_kg = -1.0;
-        }
-      }
-      result.modes.push_back(std::move(mode));
-    }
-    result.proved_count_below_top = static_cast<int>(result.modes.size());
-    result.summary.solver = "airy";
-    result.summary.termination = Termination::Converged;
+    ModalResult result = internal::wkb_outofplane_modes(statics, groups, request, M, error_estimate,
+                                                        options.quadrature_panels, "airy");
     result.summary.message =
         fmt::format("Converged: {} out-of-plane WKB string modes (the Airy model is in-plane only)",
                     result.modes.size());

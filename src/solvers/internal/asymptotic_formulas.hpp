@@ -3,7 +3,10 @@
 /// Closed-form mode shapes of Grinfogel (1984) used by the asymptotic solver (notation in
 /// include/catena/solvers/asymptotic_solver.hpp), and the WKB out-of-plane shape.
 
+#include <string>
+
 #include "catena/solvers/asymptotic_solver.hpp"
+#include "catena/solvers/modal_result.hpp"
 
 namespace catena::internal {
 
@@ -35,5 +38,17 @@ AsymptoticModeShape asymptotic_mode_shape(const Vector& stations_m,
 Vector wkb_outofplane_shape(const StaticSolution& statics,
                             const Vector& stations_m,
                             double omega_rad_s);
+
+/// The out-of-plane WKB string modes (frequencies by wkb_outofplane_omegas, shapes by
+/// wkb_outofplane_shape, normalised; zero first-order tension) as a ModalResult, shared by the
+/// asymptotic and airy solvers, which both treat out-of-plane motion this way. Each mode carries
+/// `error_estimate`; the summary is Converged, for `solver`, without a message (the caller's).
+ModalResult wkb_outofplane_modes(const StaticSolution& statics,
+                                 const DimensionlessGroups& groups,
+                                 const SolveRequest& request,
+                                 double normal_mass_kg_per_m,
+                                 double error_estimate,
+                                 int quadrature_panels,
+                                 const std::string& solver);
 
 }  // namespace catena::internal
