@@ -9,7 +9,7 @@ packages=(
   libeigen3-dev libspectra-dev libsundials-dev libboost-dev
   libtoml11-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3 python3-matplotlib
+  python3 python3-matplotlib python3-scipy
   chromium            # the HTML report is checked in headless Chromium (test skipped without it)
 )
 

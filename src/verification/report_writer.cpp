@@ -399,6 +399,51 @@ ReportFiles write_report(const std::filesystem::path& results_json, const Report
     }
   }
 
+  // --- time to accuracy (benchmarks/results/time-vs-error.csv, when present) ---
+  {
+    const std::filesystem::path csv = options.tools_dir / ".." / ".." / "benchmarks" / "results" / "time-vs-error.csv";
+    std::ifstream timing_csv(csv);
+    std::string line;
+    std::map<std::string, std::map<std::string, std::map<double, double>>> best;  // scene -> solver -> target -> s
+    std::vector<std::string> order;
+    while (std::getline(timing_csv, line)) {
+      if (line.empty() || line[0] == '#' || line.rfind("scene,", 0) == 0) continue;
+      // "scene",solver,setting,time_s,max_rel_error,status
+      const auto close = line.find('"', 1);
+      if (line[0] != '"' || close == std::string::npos) continue;
+      const std::string scene = line.substr(1, close - 1);
+      std::vector<std::string> cells;
+      std::stringstream rest(line.substr(close + 2));
+      for (std::string cell; std::getline(rest, cell, ',');) cells.push_back(cell);
+      if (cells.size() < 4) continue;
+      const double time_s = std::atof(cells[2].c_str());
+      const double error = std::atof(cells[3].c_str());
+      if (std::find(order.begin(), order.end(), scene) == order.end()) order.push_back(scene);
+      for (double target : {1e-3, 1e-6, 1e-9}) {
+        if (!(error <= target)) continue;
+        auto& slot = best[scene][cells[0]];
+        if (!slot.count(target) || time_s < slot[target]) slot[target] = time_s;
+      }
+    }
+    if (!order.empty()) {
+      blocks.push_back(Heading{2, "Time to accuracy", "time-to-accuracy"});
+      blocks.push_back(Paragraph{"Fastest wall time for each solver to reach a relative error on the first six in-plane "
+                                 "frequencies (benchmarks/results/time-vs-error.csv; error against shooting at rtol "
+                                 "1e-13; 'cannot': no setting reached it)."});
+      Table t{{"case", "solver", "1e-3", "1e-6", "1e-9"}, {}, "timing"};
+      for (const auto& scene : order) {
+        for (const auto& [solver, targets] : best[scene]) {
+          std::vector<std::string> row = {scene, solver};
+          for (double target : {1e-3, 1e-6, 1e-9}) {
+            row.push_back(targets.count(target) ? fmt::format("{:.3g} ms", targets.at(target) * 1e3) : "cannot");
+          }
+          t.rows.push_back(row);
+        }
+      }
+      blocks.push_back(t);
+    }
+  }
+
   // --- figures ---
   std::vector<Image> images;
   if (options.figures) images = draw_figures(results_json, options, files.figures_note);
