@@ -361,11 +361,10 @@ std::optional<std::string> airy_not_applicable_reason(const Problem& problem,
                                                       const DimensionlessGroups& groups,
                                                       const AirySolverOptions& options) {
   // Like eq. (21), the Airy model linearises about a slightly stretched string.
-  constexpr double kMaxStaticStrain = 0.1;
-  const double strain = problem.cable.is_inextensible() ? 0.0 : groups.t0_n / problem.cable.axial_stiffness_n;
-  if (strain > kMaxStaticStrain) {
+  const double strain = internal::static_strain(problem, groups);
+  if (strain > internal::kMaxStaticStrain) {
     return fmt::format("static strain T0/EA = {:.3g} > {:.1g}: the small-strain Airy model does not apply",
-                       strain, kMaxStaticStrain);
+                       strain, internal::kMaxStaticStrain);
   }
   if (!(statics.horizontal_force_n() > 0.0) || std::abs(std::cos(groups.chord_angle_rad)) < 1e-9) {
     return fmt::format(
@@ -416,8 +415,7 @@ SolverOutput solve_airy(const Problem& problem,
   SolverSummary& summary = output.summary;
   const double eps = groups.eps;
   // O(eps^2) from the model, plus half the static strain T0/EA it neglects in k (see asymptotic).
-  const double static_strain =
-      problem.cable.is_inextensible() ? 0.0 : groups.t0_n / problem.cable.axial_stiffness_n;
+  const double static_strain = internal::static_strain(problem, groups);
   const double model_error = eps * eps + 0.5 * static_strain;
   const double root_error = std::ldexp(1.0, 1 - options.tolerance_bits);
   const double error_estimate = std::max(model_error, root_error);

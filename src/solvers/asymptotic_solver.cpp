@@ -170,13 +170,12 @@ std::optional<std::string> asymptotic_not_applicable_reason(
   const double cos_phi = std::cos(groups.chord_angle_rad);
   // The theory linearises about a slightly stretched string: at a static strain T0/EA of order
   // one (lambda^2 << eps^2) its frequencies are off by the strain itself.
-  constexpr double kMaxStaticStrain = 0.1;
-  const double strain = problem.cable.is_inextensible() ? 0.0 : groups.t0_n / problem.cable.axial_stiffness_n;
-  if (strain > kMaxStaticStrain) {
+  const double strain = internal::static_strain(problem, groups);
+  if (strain > internal::kMaxStaticStrain) {
     return fmt::format(
         "static strain T0/EA = {:.3g} > {:.1g}: the small-strain theory of eq. (21) does not apply "
         "(lambda^2 = {:.3g} is far below eps^2 = {:.3g})",
-        strain, kMaxStaticStrain, groups.lambda2, groups.eps * groups.eps);
+        strain, internal::kMaxStaticStrain, groups.lambda2, groups.eps * groups.eps);
   }
   if (!(statics.horizontal_force_n() > 0.0) || std::abs(cos_phi) < 1e-9) {
     return fmt::format(
@@ -215,7 +214,7 @@ SolverOutput solve_asymptotic(const Problem& problem,
   const double lambda2 = groups.lambda2;
   // Model error: O(eps^2) from the expansion, plus the static strain e0 = T0/EA that eq. (21)
   // leaves out of k = omega / sqrt(T0/M) (a pre-strained string is slower by 1/sqrt(1 + e0)).
-  const double static_strain = cable.is_inextensible() ? 0.0 : groups.t0_n / cable.axial_stiffness_n;
+  const double static_strain = internal::static_strain(problem, groups);
   const double error_estimate = eps * eps + 0.5 * static_strain;
   SolverSummary& summary = output.summary;
   summary.resolution = "closed form: eq. (21) roots to double precision (TOMS 748), WKB with " +

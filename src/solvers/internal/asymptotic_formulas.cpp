@@ -80,6 +80,10 @@ Vector wkb_outofplane_shape(const StaticSolution& statics,
   return v;
 }
 
+double static_strain(const Problem& problem, const DimensionlessGroups& groups) {
+  return problem.cable.is_inextensible() ? 0.0 : groups.t0_n / problem.cable.axial_stiffness_n;
+}
+
 ModalResult wkb_outofplane_modes(const StaticSolution& statics,
                                  const DimensionlessGroups& groups,
                                  const SolveRequest& request,

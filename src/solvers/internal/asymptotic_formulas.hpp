@@ -39,6 +39,12 @@ Vector wkb_outofplane_shape(const StaticSolution& statics,
                             const Vector& stations_m,
                             double omega_rad_s);
 
+/// Static strain e0 = T0/EA at the point of chord angle (0 when inextensible). Both analytic
+/// models linearise about a slightly stretched string: they neglect e0 in k = omega/sqrt(T0/M)
+/// (model error e0/2) and do not apply above kMaxStaticStrain.
+double static_strain(const Problem& problem, const DimensionlessGroups& groups);
+inline constexpr double kMaxStaticStrain = 0.1;
+
 /// The out-of-plane WKB string modes (frequencies by wkb_outofplane_omegas, shapes by
 /// wkb_outofplane_shape, normalised; zero first-order tension) as a ModalResult, shared by the
 /// asymptotic and airy solvers, which both treat out-of-plane motion this way. Each mode carries
