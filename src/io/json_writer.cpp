@@ -1,8 +1,6 @@
 #include "catena/io/json_writer.hpp"
 
-#include <chrono>
 #include <cmath>
-#include <ctime>
 #include <fmt/format.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -208,15 +206,6 @@ json scene_json(const SceneResult& result) {
   return out;
 }
 
-std::string utc_now() {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buffer[32];
-  std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buffer;
-}
-
 }  // namespace
 
 std::string results_to_json(const std::vector<SceneResult>& results, int indent) {
@@ -227,7 +216,7 @@ std::string results_to_json(const std::vector<SceneResult>& results, int indent)
                      {"git", git_hash()},
                      {"compiler", compiler()},
                      {"build_type", build_type()},
-                     {"generated_utc", utc_now()}}},
+                     {"generated_utc", utc_timestamp()}}},
                    {"scenes", scenes}};
   return document.dump(indent);
 }

@@ -13,7 +13,6 @@
 // clang-format on
 #include <fmt/format.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -27,12 +26,7 @@
 namespace {
 
 std::string generated_line() {
-  const auto days = std::chrono::floor<std::chrono::days>(std::chrono::system_clock::now());
-  const std::chrono::year_month_day date{days};
-  return fmt::format("generated: {:04}-{:02}-{:02} UTC, catena {} (git {}, {}, {})",
-                     static_cast<int>(date.year()), static_cast<unsigned>(date.month()),
-                     static_cast<unsigned>(date.day()), catena::version(), catena::git_hash(),
-                     catena::compiler(), catena::build_type());
+  return "generated: " + catena::utc_timestamp() + ", " + catena::provenance();
 }
 
 }  // namespace

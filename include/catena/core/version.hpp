@@ -14,5 +14,10 @@ std::string git_hash();
 std::string compiler();
 /// CMake build type, e.g. "Release".
 std::string build_type();
+/// "catena 0.1.0 (git 1a2b3c4d5e, GNU 12.2.0, Release)": the provenance every generated file
+/// and report carries.
+std::string provenance();
+/// The current time in UTC, ISO 8601: "2026-11-23T06:58:00Z".
+std::string utc_timestamp();
 
 }  // namespace catena
