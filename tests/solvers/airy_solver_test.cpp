@@ -22,6 +22,7 @@
 #include "catena/solvers/asymptotic_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "solvers/internal/airy_functions.hpp"
+#include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -29,17 +30,10 @@ namespace {
 
 using catena::testing::relative_error;
 
-struct Solved {
-  Problem problem;
-  StaticSolution statics;
-  DimensionlessGroups groups;
-};
+using Solved = catena::testing::SolvedProblem;
 
 Solved solve(double eps, double phi_deg, double lambda2, double mass_ratio = 1.0) {
-  Solved s{make_taut_inclined_problem(eps, phi_deg, lambda2, mass_ratio), {}, {}};
-  s.statics = solve_statics(s.problem);
-  s.groups = compute_dimensionless_groups(s.problem, s.statics);
-  return s;
+  return catena::testing::prepare(make_taut_inclined_problem(eps, phi_deg, lambda2, mass_ratio));
 }
 
 std::vector<double> airy_k_l_over_pi(const Solved& s, int count, AirySolverOptions options = {}) {
@@ -278,7 +272,7 @@ TEST(AirySolver, FallingChordHasTheSameFrequencies) {
   const DimensionlessGroups groups = compute_dimensionless_groups(falling, statics);
   ASSERT_LT(groups.chord_angle_rad, 0.0);
   const std::vector<double> up = airy_k_l_over_pi(rising, 4);
-  const std::vector<double> down = airy_k_l_over_pi(Solved{falling, statics, groups}, 4);
+  const std::vector<double> down = airy_k_l_over_pi(Solved{falling, statics, groups, {}}, 4);
   ASSERT_EQ(up.size(), 4u);
   ASSERT_EQ(down.size(), 4u);
   for (std::size_t i = 0; i < 4; ++i) EXPECT_LE(relative_error(up[i], down[i]), 1e-11) << i;

@@ -20,6 +20,7 @@
 #include "catena/solvers/airy_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -177,17 +178,10 @@ TEST(GrinfogelEq21, RejectsBadArguments) {
   EXPECT_THROW(grinfogel_eq21_roots(2, std::nan(""), 0.1, 10.0), InvalidInput);
 }
 
-struct Solved {
-  Problem problem;
-  StaticSolution statics;
-  DimensionlessGroups groups;
-};
+using Solved = catena::testing::SolvedProblem;
 
 Solved solve(double eps, double phi_deg, double lambda2, double mass_ratio = 1.0) {
-  Solved s{make_taut_inclined_problem(eps, phi_deg, lambda2, mass_ratio), {}, {}};
-  s.statics = solve_statics(s.problem);
-  s.groups = compute_dimensionless_groups(s.problem, s.statics);
-  return s;
+  return catena::testing::prepare(make_taut_inclined_problem(eps, phi_deg, lambda2, mass_ratio));
 }
 
 TEST(AsymptoticSolver, FrequenciesAreEq21RootsWithEpsSquaredErrorEstimate) {

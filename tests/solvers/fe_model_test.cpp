@@ -17,6 +17,7 @@
 #include "catena/solvers/fe_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "solvers/internal/fe_model.hpp"
+#include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -24,25 +25,11 @@ namespace {
 
 using catena::testing::relative_error;
 
-struct Solved {
-  Problem problem;
-  StaticSolution statics;
-  DimensionlessGroups groups;
-  SolverOutput output;
-};
+using Solved = catena::testing::SolvedProblem;
+using catena::testing::modes_request;
 
 Solved solve(const Problem& problem, const SolveRequest& request, const FeSolverOptions& options) {
-  Solved solved{problem, solve_statics(problem), {}, {}};
-  solved.groups = compute_dimensionless_groups(solved.problem, solved.statics);
-  solved.output = solve_fe(solved.problem, solved.statics, solved.groups, request, options);
-  return solved;
-}
-
-SolveRequest modes_request(int inplane, int outofplane) {
-  SolveRequest request;
-  request.inplane_modes = inplane;
-  request.outofplane_modes = outofplane;
-  return request;
+  return catena::testing::solve_problem(solve_fe, problem, request, options);
 }
 
 // The bounds for the eigenpairs: mass-orthogonality 1e-10, residual

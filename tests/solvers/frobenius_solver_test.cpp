@@ -16,6 +16,7 @@
 #include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -24,26 +25,13 @@ namespace {
 using testing::published_table;
 using testing::relative_error;
 
-struct Solved {
-  Problem problem;
-  StaticSolution statics;
-  DimensionlessGroups groups;
-  SolverOutput output;
-};
+using Solved = catena::testing::SolvedProblem;
 
 Solved run(const Problem& problem, const SolveRequest& request, const FrobeniusSolverOptions& options = {}) {
-  StaticSolution statics = solve_statics(problem);
-  DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
-  SolverOutput output = solve_frobenius(problem, statics, groups, request, options);
-  return {problem, statics, groups, output};
+  return catena::testing::solve_problem(solve_frobenius, problem, request, options);
 }
 
-SolveRequest modes(int inplane, int outofplane) {
-  SolveRequest request;
-  request.inplane_modes = inplane;
-  request.outofplane_modes = outofplane;
-  return request;
-}
+SolveRequest modes(int inplane, int outofplane) { return catena::testing::modes_request(inplane, outofplane); }
 
 // Direct integration in sigma of the inextensible equations (units a, H; C = sqrt(1 + s^2)):
 // u' = w/C^2, w' = phi - u/C^2, tau' = phi/C - W2 u, (C phi)' = -tau/C^2 - W2 w; state (u, w, phi, tau).

@@ -20,6 +20,7 @@
 #include "catena/core/error.hpp"
 #include "catena/models/problem_builders.hpp"
 #include "catena/solvers/solver_registry.hpp"
+#include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -31,20 +32,12 @@ using testing::relative_error;
 // convergence test); the issue asks for 1e-10 on the exact cases.
 constexpr double kRelTolExact = 1e-10;
 
-struct Solved {
-  Problem problem;
-  StaticSolution statics;
-  DimensionlessGroups groups;
-  SolverOutput output;
-};
+using Solved = catena::testing::SolvedProblem;
 
 Solved solve(const Problem& problem,
              const SolveRequest& request,
              const ShootingSolverOptions& options = {}) {
-  Solved solved{problem, solve_statics(problem), {}, {}};
-  solved.groups = compute_dimensionless_groups(problem, solved.statics);
-  solved.output = solve_shooting(problem, solved.statics, solved.groups, request, options);
-  return solved;
+  return catena::testing::solve_problem(solve_shooting, problem, request, options);
 }
 
 // Straight cable along x, span chosen for tension T at strain T/EA, weight 1e-9 N/m.

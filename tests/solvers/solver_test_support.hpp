@@ -1,0 +1,44 @@
+#pragma once
+// What every solver test does before asserting: the shared statics and groups of a problem, the
+// solver's output, and a modes-only request. One place, so the solver tests stay about the solver.
+
+#include "catena/models/cable.hpp"
+#include "catena/solvers/modal_result.hpp"
+#include "catena/solvers/solve_request.hpp"
+#include "catena/statics/dimensionless_groups.hpp"
+#include "catena/statics/elastic_catenary.hpp"
+
+namespace catena::testing {
+
+/// A problem with its statics and groups, and (once solved) a solver's output.
+struct SolvedProblem {
+  Problem problem;
+  StaticSolution statics;
+  DimensionlessGroups groups;
+  SolverOutput output;
+};
+
+/// Statics and groups of `problem`; no solver run.
+inline SolvedProblem prepare(const Problem& problem) {
+  SolvedProblem solved{problem, solve_statics(problem), {}, {}};
+  solved.groups = compute_dimensionless_groups(solved.problem, solved.statics);
+  return solved;
+}
+
+/// prepare(), then `solve(problem, statics, groups, request, options)` (solve_fe, solve_shooting, ...).
+template <typename Solve, typename Options>
+SolvedProblem solve_problem(Solve solve, const Problem& problem, const SolveRequest& request, const Options& options) {
+  SolvedProblem solved = prepare(problem);
+  solved.output = solve(solved.problem, solved.statics, solved.groups, request, options);
+  return solved;
+}
+
+/// A request for the lowest modes only (no shapes, tension or forcing).
+inline SolveRequest modes_request(int inplane, int outofplane) {
+  SolveRequest request;
+  request.inplane_modes = inplane;
+  request.outofplane_modes = outofplane;
+  return request;
+}
+
+}  // namespace catena::testing
