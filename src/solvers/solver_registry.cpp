@@ -1,9 +1,9 @@
 #include "catena/solvers/solver_registry.hpp"
 
 #include <chrono>
-#include <exception>
 
 #include "catena/core/error.hpp"
+#include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
 
 namespace catena {
@@ -24,11 +24,13 @@ const SolverEntry* find_solver(const std::string& name) {
   return nullptr;
 }
 
-SolverOutput run_solver(const SolverEntry& entry, const SolveContext& context, const SolverKnobs& knobs) {
+namespace {
+
+// Transitional: the old whole-run path, for solvers not yet on the driver.
+SolverOutput run_legacy(const SolverEntry& entry, const SolveContext& context, const SolverKnobs& knobs) {
   SolverOutput output;
   output.solver = entry.name;
   output.summary.solver = entry.name;
-  if (entry.validate_knobs) entry.validate_knobs(knobs);
   if (entry.not_applicable_reason) {
     if (auto reason = entry.not_applicable_reason(context)) {
       output.summary.termination = Termination::NotApplicable;
@@ -43,8 +45,6 @@ SolverOutput run_solver(const SolverEntry& entry, const SolveContext& context, c
   } catch (const InvalidInput&) {
     throw;
   } catch (const std::exception& error) {
-    // A solver should report numerical trouble in its summary; anything that still escapes is
-    // turned into a failure here rather than crashing the harness.
     output = SolverOutput{};
     output.summary.termination = Termination::NumericalFailure;
     output.summary.message = std::string("Numerical failure: ") + error.what();
@@ -54,6 +54,15 @@ SolverOutput run_solver(const SolverEntry& entry, const SolveContext& context, c
   output.summary.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return output;
+}
+
+}  // namespace
+
+SolverOutput run_solver(const SolverEntry& entry, const SolveContext& context, const SolverKnobs& knobs) {
+  entry.validate_knobs(knobs);
+  if (!entry.make_numerics) return run_legacy(entry, context, knobs);
+  const std::unique_ptr<internal::SolverNumerics> numerics = entry.make_numerics(context, knobs);
+  return internal::drive_solver(entry.name, context, *numerics);
 }
 
 }  // namespace catena

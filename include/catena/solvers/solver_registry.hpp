@@ -3,11 +3,14 @@
 /// The solvers behind `catena solve` and `catena verify`, by name, with their knobs.
 ///
 /// Each solver also has its own typed entry point and options struct (e.g. solve_fe with
-/// FeSolverOptions); the registry adapts scene knobs (TOML values) to those options so that the
-/// harness never needs to know a solver's internals.
+/// FeSolverOptions). Both paths run through one driver (src/solvers/internal/solver_driver.hpp):
+/// validation, applicability, the per-plane loop, timing, exception-to-status mapping and the rule
+/// that combines the plane summaries are written once; a solver supplies only its numerics
+/// (docs/architecture.md, "Solver skeleton").
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -20,6 +23,10 @@
 #include "catena/statics/elastic_catenary.hpp"
 
 namespace catena {
+
+namespace internal {
+class SolverNumerics;
+}
 
 /// A knob value as written in a scene: `elements = 400`, `richardson = true`, `rtol = 1e-10`.
 using KnobValue = std::variant<bool, long, double, std::string>;
@@ -34,10 +41,18 @@ struct SolveContext {
   const SolveRequest& request;
 };
 
-/// Description of one knob, for validation and `--help`.
+/// Description of one knob, generated from the solver's knob table: for `catena solvers`, the docs
+/// and error messages.
 struct KnobSpec {
   std::string name;
-  std::string description;  ///< meaning, unit, valid range, default
+  /// Meaning and unit.
+  std::string description;
+  /// "integer", "real", "flag" or "choice".
+  std::string type;
+  /// The default as a scene would write it ("400", "1e-10", "true", "\"adams\"").
+  std::string default_value;
+  /// The valid values in words ("[2, 1e7]", "(0, 0.01]", "\"adams\" or \"bdf\""); empty for flags.
+  std::string valid;
 };
 
 /// One solver as the harness sees it.
@@ -45,13 +60,16 @@ struct SolverEntry {
   std::string name;
   std::string description;
   std::vector<KnobSpec> knobs;
-  /// nullopt when the solver applies; otherwise the reason it does not.
-  std::function<std::optional<std::string>(const SolveContext&)> not_applicable_reason;
-  /// Runs the solver. Throws InvalidInput for bad knobs (naming the knob); numerical trouble goes
-  /// in the summaries.
-  std::function<SolverOutput(const SolveContext&, const SolverKnobs&)> run;
-  /// Throws InvalidInput for unknown knobs or bad values (used when a scene is read).
+  /// Throws InvalidInput for unknown knobs, wrong types or values out of range, naming
+  /// `[solvers.<name>].<knob>` (used when a scene is read, and before every run).
   std::function<void(const SolverKnobs&)> validate_knobs;
+  /// The solver's numerics for one problem, with its knobs read (they are validated first).
+  std::function<std::unique_ptr<internal::SolverNumerics>(const SolveContext&, const SolverKnobs&)>
+      make_numerics;
+
+  // Transitional (removed once every solver runs through the driver): the old whole-run entry.
+  std::function<std::optional<std::string>(const SolveContext&)> not_applicable_reason;
+  std::function<SolverOutput(const SolveContext&, const SolverKnobs&)> run;
 };
 
 /// All solvers, in a fixed order: fe, shooting, frobenius, asymptotic, airy.
@@ -59,9 +77,10 @@ const std::vector<SolverEntry>& solver_registry();
 /// The entry named `name`, or nullptr.
 const SolverEntry* find_solver(const std::string& name);
 
-/// Runs `entry` on the context: checks applicability (a NotApplicable output with the reason when
-/// it declines), times the run, and never lets a numerical exception escape (an unexpected
-/// std::exception becomes NumericalFailure with its message). InvalidInput propagates.
+/// Runs `entry` on the context through the driver: validates the knobs and the request, checks
+/// applicability (a NotApplicable output with the reason when the solver declines), runs each
+/// requested plane and the forced response, times them, and never lets a numerical exception
+/// escape (it becomes NumericalFailure with its message). InvalidInput propagates.
 SolverOutput run_solver(const SolverEntry& entry, const SolveContext& context, const SolverKnobs& knobs);
 
 }  // namespace catena

@@ -1,0 +1,134 @@
+// The one solver skeleton: see solver_driver.hpp for the steps and the combination rule.
+#include "solvers/internal/solver_driver.hpp"
+
+#include <chrono>
+#include <exception>
+
+#include <fmt/format.h>
+
+#include "catena/core/error.hpp"
+
+namespace catena::internal {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The forced plane follows the forcing direction: out of plane only when the end moves normal to
+// the plane of the supports.
+void run_parts(const SolveContext& context, SolverNumerics& numerics, SolverOutput& output,
+               std::optional<ForcedOutcome>& forced) {
+  const SolveRequest& request = context.request;
+  const std::pair<Plane, int> planes[] = {{Plane::InPlane, request.inplane_modes},
+                                          {Plane::OutOfPlane, request.outofplane_modes}};
+  for (const auto& [plane, count] : planes) {
+    if (count <= 0) continue;
+    const auto start = Clock::now();
+    ModalResult result = numerics.modes(plane, count);
+    result.plane = plane;
+    result.summary.solver = output.solver;
+    result.summary.wall_time_s = seconds_since(start);
+    (plane == Plane::InPlane ? output.inplane : output.outofplane) = std::move(result);
+  }
+  if (request.forced) {
+    const auto start = Clock::now();
+    forced = numerics.forced(*request.forced);
+    forced->summary.solver = output.solver;
+    forced->summary.wall_time_s = seconds_since(start);
+    output.forced = std::move(forced->responses);
+  }
+}
+
+}  // namespace
+
+ForcedOutcome SolverNumerics::forced(const ForcedRequest& request) {
+  ForcedOutcome outcome;
+  outcome.summary.termination = Termination::NoConvergence;
+  outcome.summary.message = fmt::format("forced response not computed ({} frequencies asked)",
+                                        request.omegas_rad_s.size());
+  outcome.summary.warnings.push_back("forced response is not part of this method: not computed");
+  return outcome;
+}
+
+SolverOutput drive_solver(const std::string& solver, const SolveContext& context,
+                          SolverNumerics& numerics) {
+  context.request.validate();
+  context.problem.validate();
+  const auto start = Clock::now();
+  SolverOutput output;
+  output.solver = solver;
+  SolverSummary& summary = output.summary;
+  summary.solver = solver;
+  std::optional<ForcedOutcome> forced;
+  try {
+    if (auto reason = numerics.not_applicable()) {
+      summary.termination = Termination::NotApplicable;
+      summary.message = *reason;
+      summary.wall_time_s = seconds_since(start);
+      return output;
+    }
+    numerics.describe(summary);
+    if (auto outcome = numerics.prepare()) {
+      summary.termination = outcome->termination;
+      summary.message = outcome->message;
+      summary.wall_time_s = seconds_since(start);
+      return output;
+    }
+    run_parts(context, numerics, output, forced);
+  } catch (const InvalidInput&) {
+    throw;
+  } catch (const std::exception& error) {
+    // Numerical trouble belongs in the summary; what still escapes is reported, not thrown.
+    output = SolverOutput{};
+    output.solver = solver;
+    output.summary.solver = solver;
+    output.summary.termination = Termination::NumericalFailure;
+    output.summary.message = std::string("Numerical failure: ") + error.what();
+    output.summary.wall_time_s = seconds_since(start);
+    return output;
+  }
+  std::vector<std::pair<std::string, const SolverSummary*>> parts;
+  if (output.inplane) parts.emplace_back("in-plane", &output.inplane->summary);
+  if (output.outofplane) parts.emplace_back("out-of-plane", &output.outofplane->summary);
+  if (forced) parts.emplace_back("forced", &forced->summary);
+  combine_summaries(parts, summary);
+  summary.wall_time_s = seconds_since(start);
+  return output;
+}
+
+void combine_summaries(const std::vector<std::pair<std::string, const SolverSummary*>>& parts,
+                       SolverSummary& overall) {
+  bool all_converged = true, any_usable = false;
+  long iterations = -1, operations = -1;
+  double max_error = -1.0, max_residual = -1.0;
+  std::string message;
+  for (const auto& [name, part] : parts) {
+    all_converged = all_converged && part->termination == Termination::Converged;
+    any_usable = any_usable || part->is_usable();
+    if (part->iterations >= 0) iterations = std::max(iterations, 0L) + part->iterations;
+    if (part->operations >= 0) operations = std::max(operations, 0L) + part->operations;
+    max_error = std::max(max_error, part->max_error_estimate);
+    max_residual = std::max(max_residual, part->max_residual);
+    message += (message.empty() ? "" : "; ") + part->message;
+    for (const auto& warning : part->warnings) overall.warnings.push_back(name + ": " + warning);
+  }
+  if (parts.empty()) {
+    overall.termination = Termination::Converged;
+    overall.message = "Converged: nothing was requested";
+    return;
+  }
+  overall.termination = all_converged ? Termination::Converged
+                        : any_usable  ? Termination::NoConvergence
+                                      : Termination::NumericalFailure;
+  overall.message = message;
+  overall.iterations = iterations;
+  overall.operations = operations;
+  overall.max_error_estimate = max_error;
+  overall.max_residual = max_residual;
+}
+
+}  // namespace catena::internal
