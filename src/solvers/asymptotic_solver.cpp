@@ -11,7 +11,8 @@
 
 #include "catena/core/error.hpp"
 #include "solvers/internal/asymptotic_formulas.hpp"
-#include "solvers/internal/knob_reader.hpp"
+#include "solvers/internal/knob_table.hpp"
+#include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/mode_tools.hpp"
 #include "solvers/internal/solver_entries.hpp"
 
@@ -99,20 +100,33 @@ std::optional<AsymptoticShapeFormula> parse_asymptotic_shape_formula(const std::
   return std::nullopt;
 }
 
+namespace internal {
+
+const KnobTable<AsymptoticSolverOptions>& asymptotic_knobs() {
+  using O = AsymptoticSolverOptions;
+  static const KnobTable<O> table(
+      "asymptotic",
+      {choice_knob("shape_formula", &O::shape_formula,
+                   {{"34", AsymptoticShapeFormula::Eq34}, {"28", AsymptoticShapeFormula::Eq28}},
+                   "transverse shape formula: eq. (34) uniformly valid, or eq. (28) zeroth order"),
+       real_knob("eps_warning_threshold", &O::eps_warning_threshold, Range::open_closed(0.0, 10.0),
+                 "eps above which a validity warning is given (at most max_eps)"),
+       real_knob("max_eps", &O::max_eps, Range::open_closed(0.0, 10.0),
+                 "eps above which the solver declines"),
+       integer_knob("quadrature_panels", &O::quadrature_panels, Range::closed(1, 1000),
+                    "panels of 20-point Gauss-Legendre for the WKB integral")});
+  return table;
+}
+
+}  // namespace internal
+
 void AsymptoticSolverOptions::validate() const {
-  require(std::isfinite(max_eps) && max_eps > 0.0 && max_eps <= 10.0,
-          fmt::format("Invalid AsymptoticSolverOptions::max_eps = {}. Violated constraint: "
-                      "0 < max_eps <= 10.",
-                      max_eps));
-  require(std::isfinite(eps_warning_threshold) && eps_warning_threshold > 0.0 &&
-              eps_warning_threshold <= max_eps,
-          fmt::format("Invalid AsymptoticSolverOptions::eps_warning_threshold = {}. Violated "
-                      "constraint: 0 < eps_warning_threshold <= max_eps = {}.",
-                      eps_warning_threshold, max_eps));
-  require(quadrature_panels >= 1 && quadrature_panels <= 1000,
-          fmt::format("Invalid AsymptoticSolverOptions::quadrature_panels = {}. Violated "
-                      "constraint: 1 <= quadrature_panels <= 1000.",
-                      quadrature_panels));
+  internal::asymptotic_knobs().validate(*this);
+  if (eps_warning_threshold > max_eps) {
+    throw InvalidInput(fmt::format(
+        "[solvers.asymptotic].eps_warning_threshold = {}: must be <= max_eps = {}",
+        eps_warning_threshold, max_eps));
+  }
 }
 
 double grinfogel_eq21(double kl, double eps, double phi_rad, double lambda2) {
@@ -192,222 +206,197 @@ std::optional<std::string> asymptotic_not_applicable_reason(
   return std::nullopt;
 }
 
+namespace internal {
+namespace {
+
+// The numerics of the asymptotic solver for one problem: eq. (21) in plane, WKB out of plane.
+class AsymptoticNumerics final : public SolverNumerics {
+ public:
+  AsymptoticNumerics(const SolveContext& context, const AsymptoticSolverOptions& options)
+      : context_(context),
+        options_(options),
+        // Model error: O(eps^2) from the expansion, plus the static strain e0 = T0/EA that eq. (21)
+        // leaves out of k = omega / sqrt(T0/M) (a pre-strained string is slower by 1/sqrt(1 + e0)).
+        static_strain_(static_strain(context.problem, context.groups)),
+        error_estimate_(context.groups.eps * context.groups.eps + 0.5 * static_strain_) {}
+
+  std::optional<std::string> not_applicable() const override {
+    return asymptotic_not_applicable_reason(context_.problem, context_.statics, context_.groups, options_);
+  }
+
+  void describe(SolverSummary& summary) const override;
+  ModalResult modes(Plane plane, int count) override {
+    return plane == Plane::InPlane ? inplane_modes(count) : outofplane_modes(count);
+  }
+
+ private:
+  ModalResult inplane_modes(int count) const;
+  ModalResult outofplane_modes(int count) const;
+  Mode inplane_mode(int index, double kl, const Vector& stations) const;
+  void add_character_notes(const std::vector<double>& roots, SolverSummary& summary) const;
+
+  const SolveContext& context_;
+  AsymptoticSolverOptions options_;
+  double static_strain_;
+  double error_estimate_;
+};
+
+void AsymptoticNumerics::describe(SolverSummary& summary) const {
+  const DimensionlessGroups& groups = context_.groups;
+  summary.resolution = "closed form: eq. (21) roots to double precision (TOMS 748), WKB with " +
+                       fmt::format("{} x 20-point Gauss-Legendre", options_.quadrature_panels);
+  summary.notes.push_back(fmt::format(
+      "model error O(eps^2): eps = {:.4g}, phi_a = {:.4g} deg, lambda^2 = {:.6g}, h = {:.4g}; every "
+      "frequency carries relative_error_estimate = eps^2 + e0/2 = {:.3g} (e0 = T0/EA = {:.3g}, the "
+      "static strain the theory neglects)",
+      groups.eps, groups.chord_angle_rad * 180.0 / kPi, groups.lambda2, groups.mass_ratio,
+      error_estimate_, static_strain_));
+  if (groups.eps > options_.eps_warning_threshold) {
+    summary.warnings.push_back(fmt::format(
+        "eps = {:.4g} > {:.3g}: outside the region where the O(eps^2) expansion is meaningful; "
+        "expect errors of order eps^2 = {:.2g} or worse (in the paper's eps = 0.49 table 'approx' "
+        "and 'exact' differ by up to 0.029 in kL/pi)",
+        groups.eps, options_.eps_warning_threshold, error_estimate_));
+  }
+  if (context_.problem.cable.is_inextensible()) {
+    summary.notes.push_back(
+        "inextensible cable: eq. (21) taken in the limit 1/lambda^2 = 0 (Irvine's inextensible "
+        "shallow cable, symmetric modes tan x = x)");
+  }
+}
+
+// One in-plane mode of root kL: frequency, and on request the shapes (34)/(28)/(37) and the
+// tension (38), normalised like every solver's.
+Mode AsymptoticNumerics::inplane_mode(int index, double kl, const Vector& stations) const {
+  const CableProperties& cable = context_.problem.cable;
+  const DimensionlessGroups& groups = context_.groups;
+  const SolveRequest& request = context_.request;
+  Mode mode;
+  mode.index = index;
+  set_mode_frequency(mode, groups.omega_from_k_l_over_pi(kl / kPi), groups);
+  mode.relative_error_estimate = error_estimate_;
+  if (!request.shapes && !request.tension) return mode;
+  const double eps = groups.eps, phi = groups.chord_angle_rad;
+  const AsymptoticModeShape shape = asymptotic_mode_shape(stations, cable.length_m, kl, eps, phi,
+                                                          groups.lambda2, options_.shape_formula);
+  mode.s_m = stations;
+  mode.w = shape.w;
+  mode.u = shape.u;
+  const double M = cable.normal_mass_kg_per_m();
+  if (request.tension) {
+    // Eq. (38): tau = -M omega^2 w_slow / alpha with w_slow = -(S2 + 7/4 e1) in the units of the
+    // shape functions and alpha = eps cos(phi_a) / L.
+    const double tau = M * mode.omega_rad_s * mode.omega_rad_s * shape.slow_amplitude *
+                       cable.length_m / (eps * std::cos(phi));
+    mode.tension_n = Vector::Constant(stations.size(), tau);
+  }
+  normalise_inplane_mode(mode);
+  mode.modal_mass_kg = inplane_modal_mass(mode, cable.mass_kg_per_m, M);
+  if (!request.shapes) {
+    mode.s_m = Vector();
+    mode.u = Vector();
+    mode.w = Vector();
+    mode.tension_n = Vector();
+    mode.modal_mass_kg = -1.0;
+  }
+  return mode;
+}
+
+// Notes on each mode's character (symmetric-like, antisymmetric-like, hybrid near cross-over).
+void AsymptoticNumerics::add_character_notes(const std::vector<double>& roots,
+                                             SolverSummary& summary) const {
+  const double eps = context_.groups.eps, phi = context_.groups.chord_angle_rad;
+  const double lambda2 = context_.groups.lambda2;
+  std::string character, hybrid;
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    const double kl = roots[i];
+    // Roots alternate between the '-' family (even i) and the '+' family; the family that
+    // carries Irvine's symmetric root is '-' above cross-over (kL > lambda) and '+' below.
+    const bool above_cross_over = !std::isinf(lambda2) && kl * kl > lambda2;
+    const bool symmetric_like = (i % 2 == 0) == above_cross_over;
+    const double detuning = std::isinf(lambda2) ? -1.0 : kl * kl / lambda2 - 1.0;
+    const bool in_hybrid_region = std::abs(detuning) < 2.0 * eps * std::abs(std::sin(phi));
+    if (in_hybrid_region) hybrid += fmt::format("{}{}", hybrid.empty() ? "" : ", ", i + 1);
+    character += fmt::format("{}{} {}", i ? ", " : "", i + 1,
+                             in_hybrid_region ? "H" : (symmetric_like ? "S" : "A"));
+  }
+  summary.notes.push_back(
+      "mode character (S symmetric-like, A antisymmetric-like, H hybrid: |k^2L^2/lambda^2 - 1| "
+      "< 2 eps sin(phi_a)): " + character);
+  if (!hybrid.empty()) {
+    summary.notes.push_back(fmt::format(
+        "modes in the hybrid (near-cross-over) region |k^2L^2/lambda^2 - 1| < 2 eps sin(phi_a): "
+        "{} (there the eps^2 term of eq. (21) is leading order)",
+        hybrid));
+  }
+}
+
+ModalResult AsymptoticNumerics::inplane_modes(int count) const {
+  const DimensionlessGroups& groups = context_.groups;
+  ModalResult result;
+  long iterations = 0;
+  const std::vector<double> roots =
+      eq21_roots_counted(count, groups.eps, groups.chord_angle_rad, groups.lambda2, iterations);
+  const Vector stations = context_.request.stations_m(context_.problem.cable.length_m);
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    result.modes.push_back(inplane_mode(static_cast<int>(i) + 1, roots[i], stations));
+  }
+  result.proved_count_below_top = static_cast<int>(result.modes.size());
+  SolverSummary& summary = result.summary;
+  summary.termination = Termination::Converged;
+  summary.message = fmt::format(
+      "Converged: {} of {} in-plane roots of eq. (21), count proved by the one-root-per-tan-"
+      "branch bracketing; top kL/pi = {:.6g}",
+      result.modes.size(), count, roots.empty() ? 0.0 : roots.back() / kPi);
+  summary.iterations = iterations;
+  summary.max_error_estimate = error_estimate_;
+  add_character_notes(roots, summary);
+  const double axial_kl =
+      first_axial_k_l(groups.eps, groups.chord_angle_rad, groups.lambda2, groups.mass_ratio);
+  if (!roots.empty() && roots.back() > 0.25 * axial_kl) {
+    summary.warnings.push_back(fmt::format(
+        "top kL/pi = {:.4g} exceeds a quarter of the first axial mode kL/pi = {:.4g}: eq. (21) "
+        "assumes quasi-static stretching and has no axial modes",
+        roots.back() / kPi, axial_kl / kPi));
+  }
+  return result;
+}
+
+ModalResult AsymptoticNumerics::outofplane_modes(int count) const {
+  const double M = context_.problem.cable.normal_mass_kg_per_m();
+  ModalResult result = wkb_outofplane_modes(context_.statics, context_.groups, context_.request, M,
+                                            error_estimate_, options_.quadrature_panels, "asymptotic");
+  result.summary.message = fmt::format(
+      "Converged: {} of {} out-of-plane WKB string modes omega_n = n pi / int sqrt(M(1+e)/T) ds",
+      result.modes.size(), count);
+  result.summary.max_error_estimate = error_estimate_;
+  return result;
+}
+
+
+}  // namespace
+
+SolverEntry make_asymptotic_entry() {
+  return make_solver_entry(
+      "Grinfogel (1984) perturbation solution for taut inclined cables: eq. (21) frequencies "
+      "(exact root count), WKB out-of-plane, shapes eq. (34)/(28)/(37), tension eq. (38); error "
+      "O(eps^2)",
+      asymptotic_knobs(), [](const SolveContext& context, const AsymptoticSolverOptions& options) {
+        return std::make_unique<AsymptoticNumerics>(context, options);
+      });
+}
+
+}  // namespace internal
+
 SolverOutput solve_asymptotic(const Problem& problem,
                               const StaticSolution& statics,
                               const DimensionlessGroups& groups,
                               const SolveRequest& request,
                               const AsymptoticSolverOptions& options) {
   options.validate();
-  request.validate();
-  SolverOutput output;
-  output.solver = "asymptotic";
-  output.summary.solver = "asymptotic";
-  if (auto reason = asymptotic_not_applicable_reason(problem, statics, groups, options)) {
-    output.summary.termination = Termination::NotApplicable;
-    output.summary.message = *reason;
-    return output;
-  }
-
-  const CableProperties& cable = problem.cable;
-  const double eps = groups.eps;
-  const double phi = groups.chord_angle_rad;
-  const double lambda2 = groups.lambda2;
-  // Model error: O(eps^2) from the expansion, plus the static strain e0 = T0/EA that eq. (21)
-  // leaves out of k = omega / sqrt(T0/M) (a pre-strained string is slower by 1/sqrt(1 + e0)).
-  const double static_strain = internal::static_strain(problem, groups);
-  const double error_estimate = eps * eps + 0.5 * static_strain;
-  SolverSummary& summary = output.summary;
-  summary.resolution = "closed form: eq. (21) roots to double precision (TOMS 748), WKB with " +
-                       fmt::format("{} x 20-point Gauss-Legendre", options.quadrature_panels);
-  summary.max_error_estimate = error_estimate;
-  summary.iterations = 0;
-  summary.notes.push_back(
-      fmt::format("model error O(eps^2): eps = {:.4g}, phi_a = {:.4g} deg, lambda^2 = {:.6g}, h = "
-                  "{:.4g}; every "
-                  "frequency carries relative_error_estimate = eps^2 + e0/2 = {:.3g} (e0 = T0/EA = {:.3g}, "
-                  "the static strain the theory neglects)",
-                  eps, phi * 180.0 / kPi, lambda2, groups.mass_ratio, error_estimate, static_strain));
-  if (eps > options.eps_warning_threshold) {
-    summary.warnings.push_back(fmt::format(
-        "eps = {:.4g} > {:.3g}: outside the region where the O(eps^2) expansion is meaningful; "
-        "expect errors of order eps^2 = {:.2g} or worse (in the paper's eps = 0.49 table 'approx' "
-        "and 'exact' differ by up to 0.029 in kL/pi)",
-        eps, options.eps_warning_threshold, error_estimate));
-  }
-  if (cable.is_inextensible()) {
-    summary.notes.push_back(
-        "inextensible cable: eq. (21) taken in the limit 1/lambda^2 = 0 (Irvine's inextensible "
-        "shallow cable, symmetric modes tan x = x)");
-  }
-  if (request.forced) {
-    summary.warnings.push_back(
-        "forced response is not part of the asymptotic theory: not computed");
-  }
-
-  const Vector stations = request.stations_m(cable.length_m);
-  const bool need_shape = request.shapes || request.tension;
-  const double M = cable.normal_mass_kg_per_m();
-
-  if (request.inplane_modes > 0) {
-    ModalResult result;
-    result.plane = Plane::InPlane;
-    long iterations = 0;
-    const std::vector<double> roots =
-        eq21_roots_counted(request.inplane_modes, eps, phi, lambda2, iterations);
-    summary.iterations += iterations;
-    const double axial_kl = first_axial_k_l(eps, phi, lambda2, groups.mass_ratio);
-    std::vector<int> hybrid;
-    std::string character;
-    for (std::size_t i = 0; i < roots.size(); ++i) {
-      const double kl = roots[i];
-      // Roots alternate between the '-' family (even i) and the '+' family; the family that
-      // carries Irvine's symmetric root is '-' above cross-over (kL > lambda) and '+' below.
-      const bool above_cross_over = !std::isinf(lambda2) && kl * kl > lambda2;
-      const bool symmetric_like = (i % 2 == 0) == above_cross_over;
-      Mode mode;
-      mode.index = static_cast<int>(i) + 1;
-      internal::set_mode_frequency(mode, groups.omega_from_k_l_over_pi(kl / kPi), groups);
-      mode.relative_error_estimate = error_estimate;
-      const double detuning = std::isinf(lambda2) ? -1.0 : kl * kl / lambda2 - 1.0;
-      const bool in_hybrid_region = std::abs(detuning) < 2.0 * eps * std::abs(std::sin(phi));
-      if (in_hybrid_region) hybrid.push_back(mode.index);
-      character += fmt::format("{}{} {}", i ? ", " : "", mode.index,
-                               in_hybrid_region ? "H" : (symmetric_like ? "S" : "A"));
-      if (need_shape) {
-        internal::AsymptoticModeShape shape = internal::asymptotic_mode_shape(
-            stations, cable.length_m, kl, eps, phi, lambda2, options.shape_formula);
-        mode.s_m = stations;
-        mode.w = shape.w;
-        mode.u = shape.u;
-        if (request.tension) {
-          // Eq. (38): tau = -M omega^2 w_slow / alpha with w_slow = -(S2 + 7/4 e1) in the units
-          // of the shape functions and alpha = eps cos(phi_a) / L.
-          const double tau = M * mode.omega_rad_s * mode.omega_rad_s * shape.slow_amplitude *
-                             cable.length_m / (eps * std::cos(phi));
-          mode.tension_n = Vector::Constant(stations.size(), tau);
-        }
-        internal::normalise_inplane_mode(mode);
-        mode.modal_mass_kg = internal::inplane_modal_mass(mode, cable.mass_kg_per_m, M);
-        if (!request.shapes) {
-          mode.s_m = Vector();
-          mode.u = Vector();
-          mode.w = Vector();
-          mode.tension_n = Vector();
-          mode.modal_mass_kg = -1.0;
-        }
-      }
-      result.modes.push_back(std::move(mode));
-    }
-    result.proved_count_below_top = static_cast<int>(result.modes.size());
-    result.summary.solver = "asymptotic";
-    result.summary.termination = Termination::Converged;
-    result.summary.message = fmt::format(
-        "Converged: {} of {} in-plane roots of eq. (21), count proved by the one-root-per-tan-"
-        "branch bracketing; top kL/pi = {:.6g}",
-        result.modes.size(), request.inplane_modes, roots.empty() ? 0.0 : roots.back() / kPi);
-    result.summary.iterations = iterations;
-    result.summary.max_error_estimate = error_estimate;
-    result.summary.resolution = summary.resolution;
-    result.summary.notes.push_back(
-        "mode character (S symmetric-like, A antisymmetric-like, H hybrid: |k^2L^2/lambda^2 - 1| "
-        "< 2 eps sin(phi_a)): " +
-        character);
-    if (!hybrid.empty()) {
-      std::string list;
-      for (int index : hybrid) list += (list.empty() ? "" : ", ") + std::to_string(index);
-      result.summary.notes.push_back(fmt::format(
-          "modes in the hybrid (near-cross-over) region |k^2L^2/lambda^2 - 1| < 2 eps sin(phi_a): "
-          "{} (there the eps^2 term of eq. (21) is leading order)",
-          list));
-    }
-    if (!roots.empty() && roots.back() > 0.25 * axial_kl) {
-      result.summary.warnings.push_back(fmt::format(
-          "top kL/pi = {:.4g} exceeds a quarter of the first axial mode kL/pi = {:.4g}: eq. (21) "
-          "assumes quasi-static stretching and has no axial modes",
-          roots.back() / kPi, axial_kl / kPi));
-      summary.warnings.push_back(result.summary.warnings.back());
-    }
-    result.summary.warnings.insert(result.summary.warnings.begin(), summary.warnings.begin(),
-                                   summary.warnings.end());
-    output.inplane = std::move(result);
-  }
-
-  if (request.outofplane_modes > 0) {
-    ModalResult result = internal::wkb_outofplane_modes(statics, groups, request, M, error_estimate,
-                                                        options.quadrature_panels, "asymptotic");
-    result.summary.message = fmt::format(
-        "Converged: {} of {} out-of-plane WKB string modes omega_n = n pi / int sqrt(M(1+e)/T) ds",
-        result.modes.size(), request.outofplane_modes);
-    result.summary.max_error_estimate = error_estimate;
-    result.summary.resolution = summary.resolution;
-    output.outofplane = std::move(result);
-  }
-
-  summary.termination = Termination::Converged;
-  summary.message = fmt::format(
-      "Converged: {} in-plane (eq. 21, count proved) and {} out-of-plane (WKB) modes; model error "
-      "O(eps^2) = {:.3g}",
-      output.inplane ? output.inplane->modes.size() : 0,
-      output.outofplane ? output.outofplane->modes.size() : 0, error_estimate);
-  return output;
+  const SolveContext context{problem, statics, groups, request};
+  internal::AsymptoticNumerics numerics(context, options);
+  return internal::drive_solver("asymptotic", context, numerics);
 }
 
-namespace internal {
-
-AsymptoticSolverOptions read_asymptotic_options(const SolverKnobs& knobs) {
-  KnobReader reader("asymptotic", knobs);
-  AsymptoticSolverOptions options;
-  const std::string formula = reader.get_string("shape_formula", to_string(options.shape_formula));
-  const auto parsed = parse_asymptotic_shape_formula(formula);
-  if (!parsed) {
-    throw InvalidInput(
-        fmt::format("{} = \"{}\": must be \"34\" or \"28\"", reader.key("shape_formula"), formula));
-  }
-  options.shape_formula = *parsed;
-  options.eps_warning_threshold =
-      reader.get_double("eps_warning_threshold", options.eps_warning_threshold);
-  options.max_eps = reader.get_double("max_eps", options.max_eps);
-  options.quadrature_panels =
-      static_cast<int>(reader.get_integer("quadrature_panels", options.quadrature_panels));
-  reader.reject_unknown();
-  try {
-    options.validate();
-  } catch (const InvalidInput& error) {
-    throw InvalidInput(fmt::format("[solvers.asymptotic]: {}", error.what()));
-  }
-  return options;
-}
-
-SolverEntry make_asymptotic_entry() {
-  SolverEntry entry;
-  entry.name = "asymptotic";
-  entry.description =
-      "Grinfogel (1984) perturbation solution for taut inclined cables: eq. (21) frequencies "
-      "(exact root count), WKB out-of-plane, shapes eq. (34)/(28)/(37), tension eq. (38); error "
-      "O(eps^2)";
-  entry.knobs = {
-      {"shape_formula",
-       "transverse shape formula: \"34\" (uniformly valid, default) or \"28\" "
-       "(zeroth order)"},
-      {"eps_warning_threshold", "eps above which a validity warning is given; default 0.3"},
-      {"max_eps", "eps above which the solver declines; default 1.0, in (0, 10]"},
-      {"quadrature_panels", "panels of 20-point Gauss-Legendre for the WKB integral; default 4"},
-  };
-  entry.not_applicable_reason = [](const SolveContext& context) -> std::optional<std::string> {
-    // Structural reasons only: the eps limit is a knob (max_eps, at most 10), which this hook
-    // cannot see; run() applies it and returns NotApplicable itself.
-    AsymptoticSolverOptions permissive;
-    permissive.max_eps = 10.0;
-    return asymptotic_not_applicable_reason(context.problem, context.statics, context.groups,
-                                            permissive);
-  };
-  entry.validate_knobs = [](const SolverKnobs& knobs) { read_asymptotic_options(knobs); };
-  entry.run = [](const SolveContext& context, const SolverKnobs& knobs) {
-    return solve_asymptotic(context.problem, context.statics, context.groups, context.request,
-                            read_asymptotic_options(knobs));
-  };
-  return entry;
-}
-
-}  // namespace internal
 }  // namespace catena

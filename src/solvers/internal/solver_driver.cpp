@@ -47,7 +47,7 @@ void run_parts(const SolveContext& context, SolverNumerics& numerics, SolverOutp
 
 ForcedOutcome SolverNumerics::forced(const ForcedRequest& request) {
   ForcedOutcome outcome;
-  outcome.summary.termination = Termination::NoConvergence;
+  outcome.summary.termination = Termination::NotApplicable;
   outcome.summary.message = fmt::format("forced response not computed ({} frequencies asked)",
                                         request.omegas_rad_s.size());
   outcome.summary.warnings.push_back("forced response is not part of this method: not computed");
@@ -107,7 +107,8 @@ void combine_summaries(const std::vector<std::pair<std::string, const SolverSumm
   double max_error = -1.0, max_residual = -1.0;
   std::string message;
   for (const auto& [name, part] : parts) {
-    all_converged = all_converged && part->termination == Termination::Converged;
+    const bool counts = part->termination != Termination::NotApplicable;
+    all_converged = all_converged && (!counts || part->termination == Termination::Converged);
     any_usable = any_usable || part->is_usable();
     if (part->iterations >= 0) iterations = std::max(iterations, 0L) + part->iterations;
     if (part->operations >= 0) operations = std::max(operations, 0L) + part->operations;
@@ -124,6 +125,7 @@ void combine_summaries(const std::vector<std::pair<std::string, const SolverSumm
   overall.termination = all_converged ? Termination::Converged
                         : any_usable  ? Termination::NoConvergence
                                       : Termination::NumericalFailure;
+  if (!any_usable && all_converged) overall.termination = Termination::NotApplicable;
   overall.message = message;
   overall.iterations = iterations;
   overall.operations = operations;

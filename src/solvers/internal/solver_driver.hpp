@@ -53,7 +53,8 @@ class SolverNumerics {
   /// error estimate, ...). The driver sets the plane, the solver name and the wall time.
   virtual ModalResult modes(Plane plane, int count) = 0;
 
-  /// The forced response at every requested frequency. The default: not computed, a warning.
+  /// The forced response at every requested frequency. The default: not computed (a NotApplicable
+  /// part with a warning).
   virtual ForcedOutcome forced(const ForcedRequest& request);
 
   /// Facts for the overall summary: resolution, notes, warnings that concern the whole run.
@@ -67,7 +68,9 @@ SolverOutput drive_solver(const std::string& solver, const SolveContext& context
 /// The one rule that combines the parts of a run (each plane and the forced response) into the
 /// overall summary:
 /// - termination: Converged when every part converged; NumericalFailure when no part is usable;
-///   otherwise NoConvergence (partial results);
+///   otherwise NoConvergence (partial results). A NotApplicable part (a quantity the method does
+///   not compute, e.g. the forced response of an analytic model) adds its message and warnings but
+///   does not change the termination; only NotApplicable parts make the run NotApplicable;
 /// - message: the parts' messages joined by "; ";
 /// - iterations, operations: sums of the counted ones (-1 when none counted);
 /// - max_error_estimate, max_residual: the largest over the parts (-1 when none);
