@@ -24,6 +24,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/solvers/solver_registry.hpp"
+#include "solvers/internal/solver_driver.hpp"
 
 namespace catena::internal {
 

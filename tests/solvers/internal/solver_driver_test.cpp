@@ -1,0 +1,166 @@
+// The one solver skeleton: the driver's steps and the rule that combines the parts of a run.
+#include "solvers/internal/solver_driver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "catena/core/error.hpp"
+#include "catena/models/problem_builders.hpp"
+#include "solvers/solver_test_support.hpp"
+
+namespace catena::internal {
+namespace {
+
+SolverSummary part(Termination termination, const std::string& message, long iterations = -1,
+                   double error = -1.0) {
+  SolverSummary summary;
+  summary.termination = termination;
+  summary.message = message;
+  summary.iterations = iterations;
+  summary.max_error_estimate = error;
+  return summary;
+}
+
+Termination combined(std::initializer_list<Termination> terminations) {
+  std::vector<SolverSummary> summaries;
+  for (Termination t : terminations) summaries.push_back(part(t, "x"));
+  std::vector<std::pair<std::string, const SolverSummary*>> parts;
+  for (const auto& s : summaries) parts.emplace_back("p", &s);
+  SolverSummary overall;
+  combine_summaries(parts, overall);
+  return overall.termination;
+}
+
+TEST(CombineSummaries, TerminationFollowsTheDocumentedRule) {
+  using T = Termination;
+  EXPECT_EQ(combined({T::Converged, T::Converged}), T::Converged);
+  EXPECT_EQ(combined({T::Converged, T::NoConvergence}), T::NoConvergence);
+  EXPECT_EQ(combined({T::Converged, T::NumericalFailure}), T::NoConvergence);
+  EXPECT_EQ(combined({T::NumericalFailure, T::NumericalFailure}), T::NumericalFailure);
+  EXPECT_EQ(combined({T::Converged, T::NotApplicable}), T::Converged);
+  EXPECT_EQ(combined({T::NumericalFailure, T::NotApplicable}), T::NumericalFailure);
+  EXPECT_EQ(combined({T::NotApplicable}), T::NotApplicable);
+  EXPECT_EQ(combined({}), T::Converged);
+}
+
+TEST(CombineSummaries, SumsCountsTakesLargestEstimatesAndPrefixesWarnings) {
+  SolverSummary a = part(Termination::Converged, "in ok", 3, 1e-9);
+  SolverSummary b = part(Termination::Converged, "out ok", -1, 1e-7);
+  b.warnings.push_back("close modes");
+  SolverSummary overall;
+  overall.warnings.push_back("from describe");
+  combine_summaries({{"in-plane", &a}, {"out-of-plane", &b}}, overall);
+  EXPECT_EQ(overall.message, "in ok; out ok");
+  EXPECT_EQ(overall.iterations, 3);
+  EXPECT_EQ(overall.operations, -1);
+  EXPECT_DOUBLE_EQ(overall.max_error_estimate, 1e-7);
+  ASSERT_EQ(overall.warnings.size(), 2u);
+  EXPECT_EQ(overall.warnings[0], "from describe");
+  EXPECT_EQ(overall.warnings[1], "out-of-plane: close modes");
+}
+
+// A scripted numerics: what each step does is set by the test.
+class ScriptedNumerics final : public SolverNumerics {
+ public:
+  std::optional<std::string> reason;
+  std::optional<Outcome> prepared;
+  bool throw_numerical = false, throw_input = false;
+  std::vector<Plane> asked;
+
+  std::optional<std::string> not_applicable() const override { return reason; }
+  std::optional<Outcome> prepare() override { return prepared; }
+  ModalResult modes(Plane plane, int count) override {
+    asked.push_back(plane);
+    if (throw_numerical) throw std::runtime_error("singular pivot");
+    if (throw_input) throw InvalidInput("[solvers.x].k = 0: must be > 0");
+    ModalResult result;
+    result.modes.resize(static_cast<std::size_t>(count));
+    result.summary = part(Termination::Converged, "ok");
+    return result;
+  }
+};
+
+class DriveSolver : public ::testing::Test {
+ protected:
+  testing::SolvedProblem solved = testing::prepare(make_taut_inclined_problem(0.1, 20.0, 10.0, 1.0));
+  SolveRequest request = testing::modes_request(3, 2);
+  SolverOutput drive(ScriptedNumerics& numerics) {
+    const SolveContext context{solved.problem, solved.statics, solved.groups, request};
+    return drive_solver("scripted", context, numerics);
+  }
+};
+
+TEST_F(DriveSolver, RunsEachRequestedPlaneInPlaneFirstAndNamesAndTimesThem) {
+  ScriptedNumerics numerics;
+  const SolverOutput output = drive(numerics);
+  ASSERT_EQ(numerics.asked, (std::vector<Plane>{Plane::InPlane, Plane::OutOfPlane}));
+  ASSERT_TRUE(output.inplane && output.outofplane);
+  EXPECT_EQ(output.inplane->modes.size(), 3u);
+  EXPECT_EQ(output.outofplane->plane, Plane::OutOfPlane);
+  EXPECT_EQ(output.outofplane->summary.solver, "scripted");
+  EXPECT_GE(output.inplane->summary.wall_time_s, 0.0);
+  EXPECT_EQ(output.solver, "scripted");
+  EXPECT_EQ(output.summary.termination, Termination::Converged);
+  EXPECT_GE(output.summary.wall_time_s, 0.0);
+}
+
+TEST_F(DriveSolver, SkipsPlanesNotAsked) {
+  request = testing::modes_request(0, 2);
+  ScriptedNumerics numerics;
+  const SolverOutput output = drive(numerics);
+  EXPECT_EQ(numerics.asked, (std::vector<Plane>{Plane::OutOfPlane}));
+  EXPECT_FALSE(output.inplane.has_value());
+}
+
+TEST_F(DriveSolver, NotApplicableStopsBeforeAnyWork) {
+  ScriptedNumerics numerics;
+  numerics.reason = "vertical chord";
+  const SolverOutput output = drive(numerics);
+  EXPECT_TRUE(numerics.asked.empty());
+  EXPECT_EQ(output.summary.termination, Termination::NotApplicable);
+  EXPECT_EQ(output.summary.message, "vertical chord");
+}
+
+TEST_F(DriveSolver, APreparedOutcomeEndsTheRunWithThatStatus) {
+  ScriptedNumerics numerics;
+  numerics.prepared = Outcome{Termination::NoConvergence, "No convergence: too stiff"};
+  const SolverOutput output = drive(numerics);
+  EXPECT_TRUE(numerics.asked.empty());
+  EXPECT_EQ(output.summary.termination, Termination::NoConvergence);
+  EXPECT_EQ(output.summary.message, "No convergence: too stiff");
+}
+
+TEST_F(DriveSolver, NumericalExceptionsBecomeAStatusAndBadInputPropagates) {
+  ScriptedNumerics failing;
+  failing.throw_numerical = true;
+  const SolverOutput output = drive(failing);
+  EXPECT_EQ(output.summary.termination, Termination::NumericalFailure);
+  EXPECT_NE(output.summary.message.find("singular pivot"), std::string::npos);
+  EXPECT_EQ(output.summary.solver, "scripted");
+  ScriptedNumerics bad;
+  bad.throw_input = true;
+  EXPECT_THROW(drive(bad), InvalidInput);
+}
+
+TEST_F(DriveSolver, ValidatesTheRequestBeforeAnything) {
+  request.points = 1;
+  ScriptedNumerics numerics;
+  EXPECT_THROW(drive(numerics), InvalidInput);
+  EXPECT_TRUE(numerics.asked.empty());
+}
+
+TEST_F(DriveSolver, AForcedRequestWithoutAForcedMethodIsReportedNotComputed) {
+  ForcedRequest forced;
+  forced.omegas_rad_s = {0.5, 1.0};
+  request.forced = forced;
+  ScriptedNumerics numerics;
+  const SolverOutput output = drive(numerics);
+  EXPECT_TRUE(output.forced.empty());
+  EXPECT_EQ(output.summary.termination, Termination::Converged);
+  ASSERT_FALSE(output.summary.warnings.empty());
+  EXPECT_NE(output.summary.warnings.back().find("forced: "), std::string::npos);
+}
+
+}  // namespace
+}  // namespace catena::internal
