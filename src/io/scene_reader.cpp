@@ -9,7 +9,7 @@
 #include <toml.hpp>
 
 #include "catena/core/error.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 
 namespace catena {
 namespace {

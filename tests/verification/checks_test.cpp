@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "catena/core/error.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/verification/tolerance_table.hpp"
 #include "verification/internal/checks.hpp"
 

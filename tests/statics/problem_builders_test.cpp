@@ -13,7 +13,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/csv_table.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 #include "test_utils.hpp"

@@ -5,6 +5,7 @@
 /// reproduces its inputs (tested to 1e-12).
 
 #include "catena/models/cable.hpp"
+#include "catena/statics/gale_coordinates.hpp"
 
 namespace catena {
 
@@ -28,10 +29,5 @@ Problem make_gale_sag_problem(double height_over_span, double sag_parameter);
 /// Gale's eq. 3.5: a/b from the sag parameter, i.e. the root u of u / sinh(u) = sag_parameter,
 /// a/b = 1 / (2u). sag_parameter in (0, 1); returns 0 for sag_parameter = 0.
 double gale_a_over_b(double sag_parameter);
-
-/// sigma(xi) = sign(xi) sqrt((1 + |xi|)^2 - 1), the inverse of xi = sign(sigma)(sqrt(1+sigma^2)-1).
-double gale_sigma_from_xi(double xi);
-/// xi(sigma) = sign(sigma)(sqrt(1 + sigma^2) - 1), computed without cancellation.
-double gale_xi_from_sigma(double sigma);
 
 }  // namespace catena
