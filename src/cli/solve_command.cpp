@@ -101,11 +101,8 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
       std::vector<SceneResult> results;
       SceneRunOptions options;
       options.only_solvers = arguments->solvers;
-      int exit_code = 0;
       for (const auto& scene : scenes) {
         results.push_back(run_scene(scene, options));
-        if (!results.back().error.empty()) exit_code = 2;
-        else if (results.back().failed_checks() > 0 && exit_code == 0) exit_code = 1;
         if (!arguments->quiet && arguments->json != "-") print_result(results.back());
       }
       if (arguments->json == "-") {
@@ -117,7 +114,7 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
       for (const auto& result : results) {
         if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
       }
-      return exit_code;
+      return exit_code_of(results);
     };
   });
 }

@@ -128,13 +128,10 @@ int run_verify(const VerifyArguments& arguments) {
              "threads; wrote {}\n",
              results.size(), total_checks, failed_checks, discrepancies, errors, elapsed, jobs,
              report.string());
-  if (errors > 0) {
-    for (const auto& result : results) {
-      if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
-    }
-    return 2;
+  for (const auto& result : results) {
+    if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
   }
-  return failed_checks > 0 ? 1 : 0;
+  return exit_code_of(results);
 }
 
 }  // namespace

@@ -84,7 +84,7 @@ CsvTable read_csv_table(const std::filesystem::path& path) {
 void write_csv_table(const std::filesystem::path& path, const CsvTable& table) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   std::ofstream out(path);
-  if (!out) throw Error(fmt::format("{}: cannot write CSV file", path.string()));
+  if (!out) throw InvalidInput(fmt::format("{}: cannot write CSV file", path.string()));
   for (const auto& comment : table.comments) out << "# " << comment << '\n';
   auto write_row = [&](const std::vector<std::string>& cells) {
     for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << cells[i];

@@ -224,9 +224,9 @@ std::string results_to_json(const std::vector<SceneResult>& results, int indent)
 void write_results_json(const std::filesystem::path& path, const std::vector<SceneResult>& results) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   std::ofstream out(path);
-  if (!out) throw Error(fmt::format("{}: cannot write JSON file", path.string()));
+  if (!out) throw InvalidInput(fmt::format("{}: cannot write JSON file", path.string()));
   out << results_to_json(results) << '\n';
-  if (!out) throw Error(fmt::format("{}: write failed", path.string()));
+  if (!out) throw InvalidInput(fmt::format("{}: write failed", path.string()));
 }
 
 }  // namespace catena

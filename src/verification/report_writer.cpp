@@ -538,7 +538,7 @@ ReportFiles write_report(const std::filesystem::path& results_json, const Report
   md << render_markdown(blocks, options.out_dir);
   std::ofstream html(files.html);
   html << render_html(blocks, "Catena verification report");
-  if (!md || !html) throw Error(fmt::format("{}: cannot write the report", options.out_dir.string()));
+  if (!md || !html) throw InvalidInput(fmt::format("{}: cannot write the report", options.out_dir.string()));
   return files;
 }
 

@@ -48,6 +48,24 @@ TEST(ElasticCatenary, ClosesOnSupportBForVariedGeometries) {
   }
 }
 
+TEST(ElasticCatenary, NewtonStallIsAStatusNotAnException) {
+  // One Newton step from the parabolic guess cannot close a 1000 m mooring line to 1e-14: the
+  // solve must report it (converged = false, with the closure error) instead of throwing.
+  StaticsOptions options;
+  options.max_iterations = 1;
+  StaticSolution s;
+  EXPECT_NO_THROW(s = solve_statics(mooring_problem(), options));
+  EXPECT_FALSE(s.converged);
+  EXPECT_EQ(s.iterations, 1);
+  EXPECT_GT(s.closure_error_m, 1e-11 * 1000.0);
+  EXPECT_NE(s.message.find("did not converge"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("1 Newton iterations"), std::string::npos) << s.message;
+
+  const StaticSolution converged = solve_statics(mooring_problem());
+  EXPECT_TRUE(converged.converged);
+  EXPECT_TRUE(converged.message.empty()) << converged.message;
+}
+
 TEST(ElasticCatenary, TangentIsDerivativeOfPositionOverStretch) {
   // r'(s) = (1 + e) t: check with a centred difference at interior points.
   const StaticSolution s = solve_statics(mooring_problem());

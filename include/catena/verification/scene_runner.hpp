@@ -16,6 +16,13 @@
 
 namespace catena {
 
+/// Why a scene could not be solved at all.
+enum class SceneError {
+  None,             ///< it was solved (its solvers may still have declined or failed: see outputs)
+  BadInput,         ///< bad input found at run time (e.g. an unreachable chord): CLI exit 2
+  NumericalFailure  ///< the shared statics did not converge: CLI exit 3, never "bad input"
+};
+
 struct SceneResult {
   Scene scene;
   /// Present when the statics solved.
@@ -25,9 +32,10 @@ struct SceneResult {
   SolveRequest request;
   std::vector<SolverOutput> outputs;
   std::vector<CheckResult> checks;
-  /// Non-empty when the scene could not be solved at all (bad input found at run time, e.g. an
-  /// unreachable chord); such a scene counts as bad input.
+  /// Non-empty when the scene could not be solved at all; `error_kind` says whether the input was
+  /// bad or the statics failed numerically.
   std::string error;
+  SceneError error_kind = SceneError::None;
   double wall_time_s = 0.0;
 
   /// Number of checks with verdict Fail.
@@ -54,8 +62,9 @@ struct SceneRunOptions {
   bool checks = true;
 };
 
-/// Runs the scene. Never throws for numerical trouble (it is in the outputs and checks); bad input
-/// discovered at run time is recorded in SceneResult::error.
+/// Runs the scene. Never throws: numerical trouble of a solver is in its output's summary and in
+/// the checks; bad input discovered at run time and a statics that does not converge are recorded
+/// in SceneResult::error with their SceneError kind.
 SceneResult run_scene(const Scene& scene, const SceneRunOptions& options = {});
 
 }  // namespace catena
