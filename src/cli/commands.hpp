@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "catena/verification/scene_runner.hpp"
@@ -16,6 +17,15 @@ void add_solve_command(CLI::App& app, std::function<int()>& run);
 void add_verify_command(CLI::App& app, std::function<int()>& run);
 void add_solvers_command(CLI::App& app, std::function<int()>& run);
 void add_report_command(CLI::App& app, std::function<int()>& run);
+
+/// --tolerances and --findings (empty: the tables built into the library).
+struct TableArguments {
+  std::string tolerances;
+  std::string findings;
+};
+void add_table_options(CLI::App& command, TableArguments& tables);
+/// Run options holding the chosen tables (ParseError/InvalidInput when a file is bad).
+SceneRunOptions run_options_with_tables(const TableArguments& tables);
 
 /// The exit code of a run of scenes: 2 if any scene had bad input, else 3 if any scene failed
 /// numerically, else 1 if any check failed, else 0.

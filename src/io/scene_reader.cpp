@@ -10,146 +10,12 @@
 
 #include "catena/core/error.hpp"
 #include "catena/statics/problem_builders.hpp"
+#include "io/internal/toml_table_reader.hpp"
 
 namespace catena {
 namespace {
 
-// Reads one TOML table strictly: every access records the key, and finish() rejects the rest.
-// Messages name "<file>: [<table>].<key>".
-class TableReader {
- public:
-  TableReader(const toml::value& table, std::string origin, std::string path)
-      : table_(table), origin_(std::move(origin)), path_(std::move(path)) {}
-
-  std::string where(const std::string& key) const {
-    return path_.empty() ? fmt::format("{}: {}", origin_, key)
-                         : fmt::format("{}: [{}].{}", origin_, path_, key);
-  }
-
-  bool has(const std::string& key) const { return table_.as_table().count(key) > 0; }
-
-  const toml::value* find(const std::string& key) {
-    used_.insert(key);
-    const auto& map = table_.as_table();
-    const auto it = map.find(key);
-    return it == map.end() ? nullptr : &it->second;
-  }
-
-  const toml::value& require(const std::string& key) {
-    const toml::value* value = find(key);
-    if (!value) throw ParseError(fmt::format("{}: missing required key", where(key)));
-    return *value;
-  }
-
-  double to_number(const toml::value& value, const std::string& key) const {
-    if (value.is_floating()) return value.as_floating();
-    if (value.is_integer()) return static_cast<double>(value.as_integer());
-    throw ParseError(fmt::format("{}: expected a number, got {}", where(key), type_name(value)));
-  }
-
-  double number(const std::string& key) { return to_number(require(key), key); }
-  double number(const std::string& key, double fallback) {
-    const toml::value* value = find(key);
-    return value ? to_number(*value, key) : fallback;
-  }
-
-  // A finite number that must satisfy `ok`; `rule` and `unit` go into the message.
-  double checked(const std::string& key, bool (*ok)(double), const char* rule, const char* unit,
-                 std::optional<double> fallback = std::nullopt) {
-    const double value = fallback && !has(key) ? number(key, *fallback) : number(key);
-    if (!std::isfinite(value) || !ok(value)) {
-      throw InvalidInput(fmt::format("{} = {}: must be {} [{}]", where(key), value, rule, unit));
-    }
-    return value;
-  }
-
-  long integer(const std::string& key, long fallback) {
-    const toml::value* value = find(key);
-    if (!value) return fallback;
-    if (!value->is_integer()) {
-      throw ParseError(fmt::format("{}: expected an integer, got {}", where(key), type_name(*value)));
-    }
-    return static_cast<long>(value->as_integer());
-  }
-
-  bool boolean(const std::string& key, bool fallback) {
-    const toml::value* value = find(key);
-    if (!value) return fallback;
-    if (!value->is_boolean()) {
-      throw ParseError(fmt::format("{}: expected true or false, got {}", where(key), type_name(*value)));
-    }
-    return value->as_boolean();
-  }
-
-  std::string string(const std::string& key, const std::string& fallback) {
-    const toml::value* value = find(key);
-    if (!value) return fallback;
-    if (!value->is_string()) {
-      throw ParseError(fmt::format("{}: expected a string, got {}", where(key), type_name(*value)));
-    }
-    return value->as_string().str;
-  }
-
-  std::vector<double> numbers(const std::string& key) {
-    const toml::value& value = require(key);
-    if (!value.is_array()) {
-      throw ParseError(fmt::format("{}: expected an array of numbers, got {}", where(key), type_name(value)));
-    }
-    std::vector<double> out;
-    for (const auto& item : value.as_array()) {
-      const double x = to_number(item, key);
-      if (!std::isfinite(x)) {
-        throw InvalidInput(fmt::format("{}: entry {} is not finite", where(key), x));
-      }
-      out.push_back(x);
-    }
-    return out;
-  }
-
-  Vec2 point(const std::string& key) {
-    const std::vector<double> xs = numbers(key);
-    if (xs.size() != 2) {
-      throw InvalidInput(fmt::format("{}: expected [x, z] (2 numbers) [m], got {} numbers", where(key), xs.size()));
-    }
-    return {xs[0], xs[1]};
-  }
-
-  TableReader subtable(const std::string& key) {
-    const toml::value& value = require(key);
-    if (!value.is_table()) {
-      throw ParseError(fmt::format("{}: expected a table, got {}", where(key), type_name(value)));
-    }
-    return TableReader(value, origin_, path_.empty() ? key : path_ + "." + key);
-  }
-
-  // Throws for keys never asked for.
-  void finish() const {
-    for (const auto& [key, value] : table_.as_table()) {
-      if (!used_.count(key)) {
-        std::string known;
-        for (const auto& k : used_) {
-          if (!known.empty()) known.append(", ");
-          known.append(k);
-        }
-        throw ParseError(fmt::format("{}: unknown key (known here: {})", where(key), known));
-      }
-    }
-  }
-
-  const toml::value& value() const { return table_; }
-
-  static std::string type_name(const toml::value& value) {
-    std::ostringstream out;
-    out << value.type();
-    return out.str();
-  }
-
- private:
-  const toml::value& table_;
-  std::string origin_;
-  std::string path_;
-  std::set<std::string> used_;
-};
+using internal::TableReader;
 
 bool positive(double x) { return x > 0.0; }
 bool non_negative(double x) { return x >= 0.0; }
@@ -370,19 +236,8 @@ void read_checks(TableReader& root, Scene& scene) {
   checks.finish();
 }
 
-void read_published(TableReader& root, Scene& scene, const std::string& origin) {
-  const toml::value* list = root.find("published");
-  if (!list) return;
-  if (!list->is_array()) {
-    throw ParseError(fmt::format("{}: published: expected an array of tables [[published]]", origin));
-  }
-  int index = 0;
-  for (const auto& item : list->as_array()) {
-    ++index;
-    if (!item.is_table()) {
-      throw ParseError(fmt::format("{}: [[published]] entry {}: expected a table", origin, index));
-    }
-    TableReader table(item, origin, fmt::format("published#{}", index));
+void read_published(TableReader& root, Scene& scene) {
+  for (TableReader& table : root.table_array("published")) {
     PublishedValues published;
     published.source = table.string("source", "");
     if (published.source.empty()) {
@@ -470,18 +325,12 @@ std::vector<Scene> read_document(const toml::value& document, const std::string&
   scene.file = file;
   scene.name = root.string("name", file.empty() ? origin : file.stem().string());
   scene.description = root.string("description", "");
-  if (const toml::value* tags = root.find("tags")) {
-    if (!tags->is_array()) throw ParseError(fmt::format("{}: tags: expected an array of strings", origin));
-    for (const auto& tag : tags->as_array()) {
-      if (!tag.is_string()) throw ParseError(fmt::format("{}: tags: expected strings", origin));
-      scene.tags.push_back(tag.as_string().str);
-    }
-  }
+  if (root.has("tags")) scene.tags = root.strings("tags");
   scene.problem = read_problem(root, origin);
   read_request(root, scene);
   read_solvers(root, scene);
   read_checks(root, scene);
-  read_published(root, scene, origin);
+  read_published(root, scene);
   root.finish();
   return {scene};
 }
@@ -489,22 +338,12 @@ std::vector<Scene> read_document(const toml::value& document, const std::string&
 }  // namespace
 
 std::vector<Scene> parse_scene_text(const std::string& text, const std::string& origin) {
-  std::istringstream stream(text);
-  toml::value document;
-  try {
-    document = toml::parse(stream, origin);
-  } catch (const std::exception& error) {
-    throw ParseError(fmt::format("{}: TOML syntax error: {}", origin, error.what()));
-  }
-  return read_document(document, origin, origin);
+  return read_document(internal::parse_toml(text, origin), origin, origin);
 }
 
 std::vector<Scene> read_scene_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw ParseError(fmt::format("{}: cannot open scene file", path.string()));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  std::vector<Scene> scenes = parse_scene_text(buffer.str(), path.string());
+  const std::string text = internal::read_text_file(path, "scene file");
+  std::vector<Scene> scenes = parse_scene_text(text, path.string());
   for (auto& scene : scenes) scene.file = path;
   return scenes;
 }

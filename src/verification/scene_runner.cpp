@@ -94,7 +94,16 @@ void apply_perturbation(const Perturbation& perturbation, std::vector<SolverOutp
 
 }  // namespace
 
+void SceneRunOptions::validate() const {
+  if (checks && tolerances.rules().empty()) {
+    throw InvalidInput(
+        "SceneRunOptions::tolerances is empty while checks are asked: pass builtin_tolerance_table() "
+        "or a table read by read_tolerance_file()");
+  }
+}
+
 SceneResult run_scene(const Scene& scene, const SceneRunOptions& options) {
+  options.validate();
   const auto start = std::chrono::steady_clock::now();
   SceneResult result;
   result.scene = scene;
@@ -104,7 +113,7 @@ SceneResult run_scene(const Scene& scene, const SceneRunOptions& options) {
   }
   run_solvers(result, options);
   if (options.perturbation) apply_perturbation(*options.perturbation, result.outputs);
-  if (options.checks && result.error.empty()) result.checks = internal::run_checks(result);
+  if (options.checks && result.error.empty()) result.checks = internal::run_checks(result, options.tolerances, options.findings);
   result.wall_time_s = seconds_since(start);
   return result;
 }
