@@ -39,6 +39,63 @@ double read_axial_stiffness(TableReader& cable) {
   return ea;
 }
 
+Problem read_physical(TableReader& root, const std::string& origin) {
+  Problem problem;
+  TableReader cable = root.subtable("cable");
+  problem.cable.length_m = cable.checked("length", positive, "finite and > 0", "m");
+  problem.cable.weight_n_per_m = cable.checked("weight", positive, "finite and > 0", "N/m");
+  problem.cable.axial_stiffness_n = read_axial_stiffness(cable);
+  problem.cable.mass_kg_per_m = cable.checked("mass", positive, "finite and > 0", "kg/m");
+  problem.cable.added_mass_kg_per_m = cable.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
+  problem.supports.a_m = cable.point("a");
+  problem.supports.b_m = cable.point("b");
+  cable.finish();
+  try {
+    problem.validate();
+  } catch (const InvalidInput& error) {
+    throw InvalidInput(fmt::format("{}: [cable]: {}", origin, error.what()));
+  }
+  return problem;
+}
+
+Problem read_taut_inclined(TableReader& root, const std::string& origin) {
+  TableReader form = root.subtable("taut_inclined");
+  const double eps = form.checked("eps", positive, "finite and > 0", "-");
+  const double phi = form.checked("phi_deg", any_value, "finite", "deg");
+  const double lambda2 = form.checked("lambda2", positive, "finite and > 0", "-");
+  const double h = form.checked("mass_ratio", positive, "finite and > 0", "-", 1.0);
+  form.finish();
+  try {
+    return make_taut_inclined_problem(eps, phi, lambda2, h);
+  } catch (const InvalidInput& error) {
+    throw InvalidInput(fmt::format("{}: [taut_inclined]: {}", origin, error.what()));
+  }
+}
+
+Problem read_gale(TableReader& root, const std::string& origin) {
+  TableReader form = root.subtable("gale");
+  const bool by_xi = form.has("xi1") || form.has("xi2");
+  const bool by_sag = form.has("h_over_b") || form.has("sag_param");
+  if (by_xi == by_sag) {
+    throw ParseError(fmt::format("{}: [gale] needs either (xi1, xi2) or (h_over_b, sag_param), not {}", origin,
+                                 by_xi ? "both" : "neither"));
+  }
+  try {
+    if (by_xi) {
+      const double xi1 = form.number("xi1");
+      const double xi2 = form.number("xi2");
+      form.finish();
+      return make_gale_xi_problem(xi1, xi2);
+    }
+    const double h_over_b = form.number("h_over_b");
+    const double sag = form.number("sag_param");
+    form.finish();
+    return make_gale_sag_problem(h_over_b, sag);
+  } catch (const InvalidInput& error) {
+    throw InvalidInput(fmt::format("{}: [gale]: {}", origin, error.what()));
+  }
+}
+
 // Reads the one cable form of the scene into a Problem.
 Problem read_problem(TableReader& root, const std::string& origin) {
   const bool physical = root.has("cable");
@@ -50,61 +107,9 @@ Problem read_problem(TableReader& root, const std::string& origin) {
         "{}: a scene needs exactly one of the tables [cable], [taut_inclined], [gale]; found {}",
         origin, forms));
   }
-  Problem problem;
-  if (physical) {
-    TableReader cable = root.subtable("cable");
-    problem.cable.length_m = cable.checked("length", positive, "finite and > 0", "m");
-    problem.cable.weight_n_per_m = cable.checked("weight", positive, "finite and > 0", "N/m");
-    problem.cable.axial_stiffness_n = read_axial_stiffness(cable);
-    problem.cable.mass_kg_per_m = cable.checked("mass", positive, "finite and > 0", "kg/m");
-    problem.cable.added_mass_kg_per_m =
-        cable.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
-    problem.supports.a_m = cable.point("a");
-    problem.supports.b_m = cable.point("b");
-    cable.finish();
-    try {
-      problem.validate();
-    } catch (const InvalidInput& error) {
-      throw InvalidInput(fmt::format("{}: [cable]: {}", origin, error.what()));
-    }
-  } else if (taut) {
-    TableReader form = root.subtable("taut_inclined");
-    const double eps = form.checked("eps", positive, "finite and > 0", "-");
-    const double phi = form.checked("phi_deg", any_value, "finite", "deg");
-    const double lambda2 = form.checked("lambda2", positive, "finite and > 0", "-");
-    const double h = form.checked("mass_ratio", positive, "finite and > 0", "-", 1.0);
-    form.finish();
-    try {
-      problem = make_taut_inclined_problem(eps, phi, lambda2, h);
-    } catch (const InvalidInput& error) {
-      throw InvalidInput(fmt::format("{}: [taut_inclined]: {}", origin, error.what()));
-    }
-  } else {
-    TableReader form = root.subtable("gale");
-    const bool by_xi = form.has("xi1") || form.has("xi2");
-    const bool by_sag = form.has("h_over_b") || form.has("sag_param");
-    if (by_xi == by_sag) {
-      throw ParseError(fmt::format(
-          "{}: [gale] needs either (xi1, xi2) or (h_over_b, sag_param), not {}", origin,
-          by_xi ? "both" : "neither"));
-    }
-    try {
-      if (by_xi) {
-        const double xi1 = form.number("xi1");
-        const double xi2 = form.number("xi2");
-        form.finish();
-        problem = make_gale_xi_problem(xi1, xi2);
-      } else {
-        const double h_over_b = form.number("h_over_b");
-        const double sag = form.number("sag_param");
-        form.finish();
-        problem = make_gale_sag_problem(h_over_b, sag);
-      }
-    } catch (const InvalidInput& error) {
-      throw InvalidInput(fmt::format("{}: [gale]: {}", origin, error.what()));
-    }
-  }
-  return problem;
+  if (physical) return read_physical(root, origin);
+  if (taut) return read_taut_inclined(root, origin);
+  return read_gale(root, origin);
 }
 
 FrequencyUnit read_frequency_unit(TableReader& table, const std::string& key, const std::string& fallback) {
@@ -115,6 +120,55 @@ FrequencyUnit read_frequency_unit(TableReader& table, const std::string& key, co
                                    table.where(key), text));
   }
   return *unit;
+}
+
+// [request.forced]: the driven end, direction, amplitude and forcing frequencies (in the scene's units;
+// resolve_request converts them).
+ForcedRequest read_forced(TableReader& forced, Scene& scene) {
+  ForcedRequest f;
+  const std::string end = forced.string("end", "b");
+  if (end != "a" && end != "b") {
+    throw InvalidInput(fmt::format("{} = \"{}\": must be \"a\" or \"b\"", forced.where("end"), end));
+  }
+  f.end = end == "a" ? CableEnd::A : CableEnd::B;
+  if (const toml::value* direction = forced.find("direction")) {
+    if (direction->is_array()) {
+      f.direction = ForcingDirection::GivenVector;
+      f.vector = forced.point("direction");
+      if (f.vector.norm() == 0.0) {
+        throw InvalidInput(fmt::format("{}: the direction vector must be non-zero", forced.where("direction")));
+      }
+    } else {
+      const std::string text = forced.string("direction", "tangential");
+      if (text == "tangential") f.direction = ForcingDirection::Tangential;
+      else if (text == "normal") f.direction = ForcingDirection::Normal;
+      else if (text == "out_of_plane") f.direction = ForcingDirection::OutOfPlane;
+      else {
+        throw InvalidInput(fmt::format(
+            "{} = \"{}\": must be \"tangential\", \"normal\", \"out_of_plane\" or [x, z]",
+            forced.where("direction"), text));
+      }
+    }
+  }
+  f.amplitude_m = forced.checked("amplitude", positive, "finite and > 0", "m or a", 0.01);
+  const std::string amplitude_unit = forced.string("amplitude_unit", "m");
+  if (amplitude_unit != "m" && amplitude_unit != "a") {
+    throw InvalidInput(fmt::format("{} = \"{}\": must be \"m\" or \"a\" (Gale's a = H/W0)",
+                                   forced.where("amplitude_unit"), amplitude_unit));
+  }
+  scene.forcing_amplitude_in_a = amplitude_unit == "a";
+  f.omegas_rad_s = forced.numbers("frequencies");
+  if (f.omegas_rad_s.empty()) {
+    throw InvalidInput(fmt::format("{}: at least one forcing frequency needed", forced.where("frequencies")));
+  }
+  for (double omega : f.omegas_rad_s) {
+    if (omega < 0.0) {
+      throw InvalidInput(fmt::format("{}: forcing frequency {} must be >= 0", forced.where("frequencies"), omega));
+    }
+  }
+  scene.forcing_frequency_unit = read_frequency_unit(forced, "frequency_unit", "rad/s");
+  forced.finish();
+  return f;
 }
 
 void read_request(TableReader& root, Scene& scene) {
@@ -134,50 +188,7 @@ void read_request(TableReader& root, Scene& scene) {
   scene.request.tension = request.boolean("tension", scene.request.tension);
   if (request.has("forced")) {
     TableReader forced = request.subtable("forced");
-    ForcedRequest f;
-    const std::string end = forced.string("end", "b");
-    if (end != "a" && end != "b") {
-      throw InvalidInput(fmt::format("{} = \"{}\": must be \"a\" or \"b\"", forced.where("end"), end));
-    }
-    f.end = end == "a" ? CableEnd::A : CableEnd::B;
-    if (const toml::value* direction = forced.find("direction")) {
-      if (direction->is_array()) {
-        f.direction = ForcingDirection::GivenVector;
-        f.vector = forced.point("direction");
-        if (f.vector.norm() == 0.0) {
-          throw InvalidInput(fmt::format("{}: the direction vector must be non-zero", forced.where("direction")));
-        }
-      } else {
-        const std::string text = forced.string("direction", "tangential");
-        if (text == "tangential") f.direction = ForcingDirection::Tangential;
-        else if (text == "normal") f.direction = ForcingDirection::Normal;
-        else if (text == "out_of_plane") f.direction = ForcingDirection::OutOfPlane;
-        else {
-          throw InvalidInput(fmt::format(
-              "{} = \"{}\": must be \"tangential\", \"normal\", \"out_of_plane\" or [x, z]",
-              forced.where("direction"), text));
-        }
-      }
-    }
-    f.amplitude_m = forced.checked("amplitude", positive, "finite and > 0", "m or a", 0.01);
-    const std::string amplitude_unit = forced.string("amplitude_unit", "m");
-    if (amplitude_unit != "m" && amplitude_unit != "a") {
-      throw InvalidInput(fmt::format("{} = \"{}\": must be \"m\" or \"a\" (Gale's a = H/W0)",
-                                     forced.where("amplitude_unit"), amplitude_unit));
-    }
-    scene.forcing_amplitude_in_a = amplitude_unit == "a";
-    f.omegas_rad_s = forced.numbers("frequencies");
-    if (f.omegas_rad_s.empty()) {
-      throw InvalidInput(fmt::format("{}: at least one forcing frequency needed", forced.where("frequencies")));
-    }
-    for (double omega : f.omegas_rad_s) {
-      if (omega < 0.0) {
-        throw InvalidInput(fmt::format("{}: forcing frequency {} must be >= 0", forced.where("frequencies"), omega));
-      }
-    }
-    scene.forcing_frequency_unit = read_frequency_unit(forced, "frequency_unit", "rad/s");
-    forced.finish();
-    scene.request.forced = f;
+    scene.request.forced = read_forced(forced, scene);
   }
   request.finish();
   if (scene.request.inplane_modes == 0 && scene.request.outofplane_modes == 0 && !scene.request.forced) {

@@ -1,6 +1,6 @@
-// Statics of the elastic catenary (DESIGN.md §1.2).
+// Statics of the elastic catenary (docs/physics.md).
 // Compared: the Newton solution against its own closure equations, against the inextensible
-// catenary (EA -> inf, observed rate), against Turchetto's touchdown form (seed 002), and against
+// catenary (EA -> inf, observed rate), against Turchetto's touchdown form (Turchetto 2016; docs/references.md), and against
 // itself after rescaling units. Expected values are properties of the exact solution, not numbers
 // copied from a run.
 #include <gtest/gtest.h>
@@ -155,7 +155,7 @@ TEST(ElasticCatenary, StretchedLengthMatchesIntegralOfStrain) {
   EXPECT_LT(relative_error(s.stretched_length_m(L), sum * h / 3.0), 1e-12);
 }
 
-// --- Turchetto's touchdown form (seed 002) against the general two-support solver ---
+// --- Turchetto's touchdown form (Turchetto 2016; docs/references.md) against the general two-support solver ---
 
 TEST(TouchdownCatenary, AgreesWithGeneralSolverFromLowestPoint) {
   // A line from its lowest point (V_A = 0) to the fairlead: the general solver given the same end

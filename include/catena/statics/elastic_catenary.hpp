@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Statics of a uniform elastic (or inextensible) cable hanging between two supports
-/// (DESIGN.md §1.2): the elastic catenary.
+/// (docs/physics.md): the elastic catenary.
 ///
 /// The internal force at unstretched arc length s is F(s) = (H, V(s)), V(s) = V_A + W0 s, with
 /// H >= 0 constant; tension T = |F|, unit tangent t = F/T, in-plane normal n = (-V, H)/T, static

@@ -15,7 +15,7 @@ namespace {
 // rounding floor near 1e-11); 1e-9 leaves room for ill-conditioned taut cables and still catches
 // a wrong equilibrium.
 constexpr double kStaticsClosureRel = 1e-9;
-// Whatever a tolerance says, a relative difference above this is a gross disagreement (STYLE §8).
+// Whatever a tolerance says, a relative difference above this is a gross disagreement (docs/verdicts.md).
 constexpr double kGrossRelative = 0.5;
 // Two solvers "confirm each other" against a published value when they differ by less than this
 // fraction of their distance to it.
