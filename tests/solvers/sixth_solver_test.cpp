@@ -6,7 +6,7 @@
 // shooting on a taut string, where it is exact to the sag (eps = 1e-6).
 #include <gtest/gtest.h>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
 #include "solver_test_support.hpp"
 #include "solvers/internal/knob_table.hpp"

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "catena/core/error.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/solver_test_support.hpp"
 
 namespace catena::internal {
