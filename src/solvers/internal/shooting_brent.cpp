@@ -59,7 +59,9 @@ std::pair<double, double> brent_zero(const std::function<double(double)>& f, dou
     const double tol1 = 2.0 * std::numeric_limits<double>::epsilon() * std::abs(b) +
                         0.25 * relative_tolerance * std::abs(b);
     const double xm = 0.5 * (c - b);
-    if (std::abs(xm) <= tol1 || fb == 0.0) break;
+    // An exact zero is its own bracket (the other end, c, may still be far away).
+    if (fb == 0.0) return {b, b};
+    if (std::abs(xm) <= tol1) break;
     choose_step(a, b, c, fa, fb, fc, tol1, xm, d, e);
     a = b;
     fa = fb;
