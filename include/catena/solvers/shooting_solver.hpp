@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// The `shooting` solver (DESIGN.md §2.2): the exact linear boundary-value solution of the cable
-/// equations, integrated along s with SUNDIALS CVODE. It is the project's accuracy reference.
+/// The `shooting` solver (docs/methods/shooting.md): the exact linear boundary-value solution of
+/// the cable equations, integrated along s with SUNDIALS CVODE. It is the project's accuracy
+/// reference.
 ///
-/// Model (DESIGN.md §1.3). About the static elastic catenary, harmonic motion D = Phi(s) e^{i w t}
+/// Model (docs/physics.md). About the static elastic catenary, harmonic motion D = Phi(s) e^{i w t}
 /// satisfies (A Phi')' + w^2 Mmat Phi = 0 with A = EA t t^T + (T/(1+e)) n n^T and
 /// Mmat = m t t^T + M n n^T; out of plane ((T/(1+e)) v')' + w^2 M v = 0. The solver integrates the
 /// first-order form Phi' = A^{-1} F, F' = -w^2 Mmat Phi, with
@@ -60,7 +61,7 @@
 /// from rtol = 1e-4 to 1e-12, and the estimate covers it (see the convergence test).
 ///
 /// References: Atkinson, Discrete and Continuous Boundary Problems (1964), ch. 10 (oscillation
-/// of Hamiltonian systems); Irvine, Cable Structures (1981); Gale (1976), seed 003.
+/// of Hamiltonian systems); Irvine, Cable Structures (1981); Gale (1976) (docs/references.md).
 
 #include <string>
 
@@ -114,7 +115,8 @@ struct ShootingSolverOptions {
   double effective_absolute_tolerance() const;
   /// root_tolerance with the default applied.
   double effective_root_tolerance() const;
-  /// Throws InvalidInput naming the field, its value and the violated constraint.
+  /// Throws InvalidInput naming the knob (`[solvers.shooting].<knob>`), its value and its range
+  /// (the ranges above, declared once in the solver's knob table).
   void validate() const;
 };
 
@@ -125,7 +127,8 @@ struct ShootingSolverOptions {
 /// \param request what to compute.
 /// \param options integrator and root-finding settings; throws InvalidInput when invalid.
 /// \return every quantity asked, with a summary per plane and an overall summary; numerical
-/// trouble is reported there (never thrown, never NaN).
+/// trouble is reported there (never thrown, never NaN). NotApplicable when the static tension
+/// vanishes inside the cable (H = 0 and V changes sign): the equations divide by T.
 SolverOutput solve_shooting(const Problem& problem,
                             const StaticSolution& statics,
                             const DimensionlessGroups& groups,

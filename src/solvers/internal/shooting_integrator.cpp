@@ -12,41 +12,10 @@
 #include <cmath>
 #include <complex>
 
+#include "solvers/internal/shooting_conjugate_count.hpp"
 #include "solvers/internal/shooting_sundials_handles.hpp"
 
 namespace catena::internal {
-
-ShootingCoefficients ShootingCoefficients::from_statics(const StaticSolution& statics) {
-  const CableProperties& cable = statics.cable();
-  ShootingCoefficients c;
-  c.length_m = cable.length_m;
-  c.H = statics.horizontal_force_n();
-  c.V_A = statics.vertical_force_a_n();
-  c.W0 = cable.weight_n_per_m;
-  c.compliance = cable.is_inextensible() ? 0.0 : 1.0 / cable.axial_stiffness_n;
-  c.m = cable.mass_kg_per_m;
-  c.M = cable.normal_mass_kg_per_m();
-  c.t_ref = std::max(statics.tension_n(0.0), statics.tension_n(cable.length_m));
-  return c;
-}
-
-double ShootingCoefficients::tension(double s) const { return std::hypot(H, V_A + W0 * s); }
-
-Vec2 ShootingCoefficients::tangent(double s) const {
-  const double V = V_A + W0 * s;
-  const double T = std::hypot(H, V);
-  return Vec2(H / T, V / T);
-}
-
-Vec2 ShootingCoefficients::normal(double s) const {
-  const double V = V_A + W0 * s;
-  const double T = std::hypot(H, V);
-  return Vec2(-V / T, H / T);
-}
-
-double ShootingCoefficients::scaled_omega2(double omega_rad_s) const {
-  return omega_rad_s * omega_rad_s * length_m * length_m * M / t_ref;
-}
 
 namespace {
 
@@ -129,63 +98,82 @@ int jacobian(
   return 0;
 }
 
-// Eigen-angles of U = conj(Z) Z^{-1}, Z = Phi + i F, mapped to [pi, 3 pi), ascending.
-// The quadratic formula on U loses half the digits at a double eigenvalue (a double root of the
-// cable), so the angles come from a real symmetric matrix instead: with e^{i beta} Z = P + i Q,
-// U = e^{2 i beta} (V - i)(V + i)^{-1}, V = P Q^{-1} symmetric, and each eigenvalue nu of V gives
-// alpha = 2 beta - 2 atan2(1, nu). beta is chosen from {0, pi/4, pi/2, 3 pi/4} to make Q best
-// conditioned; the symmetric eigenproblem is then accurate to rounding.
+// The basis at the requested stations of one shot, unscaled, with the segment each belongs to.
 template <int D>
-Eigen::Matrix<double, D, 1> unitary_angles(const Square<D>& Phi, const Square<D>& F) {
-  // Into [pi - delta, 3 pi - delta). An angle at pi to rounding is one that has not moved (the
-  // tangential angle of a nearly straight inextensible cable barely leaves pi, where every angle
-  // starts): it must count as not yet crossed. The shift delta moves the count threshold of a
-  // genuine crossing by 1e-12 rad, far inside the root brackets, which use the determinant.
-  constexpr double kDelta = 1e-12;
-  auto to_range = [](double alpha) {
-    while (alpha < kPi - kDelta) alpha += 2.0 * kPi;
-    while (alpha >= 3.0 * kPi - kDelta) alpha -= 2.0 * kPi;
-    return alpha;
-  };
-  Eigen::Matrix<double, D, 1> angles;
-  if constexpr (D == 1) {
-    angles(0) = to_range(-2.0 * std::atan2(F(0, 0), Phi(0, 0)));
-  } else {
-    double best_quality = -1.0, best_beta = 0.0;
-    const double scale = Phi.squaredNorm() + F.squaredNorm();
-    for (int k = 0; k < 4; ++k) {
-      const double beta = 0.25 * kPi * k;
-      const Square<D> Q = std::sin(beta) * Phi + std::cos(beta) * F;
-      const double quality = std::abs(Q.determinant()) / scale;
-      if (quality > best_quality) {
-        best_quality = quality;
-        best_beta = beta;
-      }
-    }
-    const Square<D> best_P = std::cos(best_beta) * Phi - std::sin(best_beta) * F;
-    const Square<D> best_Q = std::sin(best_beta) * Phi + std::cos(best_beta) * F;
-    Square<D> V = best_P * best_Q.inverse();
-    V = 0.5 * (V + V.transpose()).eval();
-    const Eigen::SelfAdjointEigenSolver<Square<D>> eig(V, Eigen::EigenvaluesOnly);
-    for (int j = 0; j < D; ++j) {
-      angles(j) = to_range(2.0 * best_beta - 2.0 * std::atan2(1.0, eig.eigenvalues()(j)));
-    }
-    if (angles(0) > angles(1)) std::swap(angles(0), angles(1));
+class StationRecorder {
+ public:
+  StationRecorder(Shot& shot, const std::vector<double>* stations, double kappa, bool from_b)
+      : shot_(shot), stations_(stations), kappa_(kappa), from_b_(from_b) {}
+
+  /// Whether the next station lies at or before x.
+  bool next_at_or_before(double x) const {
+    return stations_ && next_ < stations_->size() && (*stations_)[next_] <= x;
   }
-  return angles;
+  double next_station() const { return (*stations_)[next_]; }
+
+  /// Records `basis` at the next station.
+  void record(const Basis<D>& basis) {
+    Basis<D> out = basis;
+    // Undo the rescaling; from b the force was carried as -F^.
+    out.template topRows<D>() /= kappa_;
+    out.template bottomRows<D>() *= from_b_ ? -kappa_ : kappa_;
+    shot_.station_y.emplace_back(out);
+    shot_.station_segment.push_back(static_cast<int>(shot_.segment_r.size()));
+    ++next_;
+  }
+
+  /// Records `basis` at every station left (those at the far end).
+  void record_rest(const Basis<D>& basis) {
+    while (stations_ && next_ < stations_->size()) record(basis);
+  }
+
+ private:
+  Shot& shot_;
+  const std::vector<double>* stations_;
+  double kappa_;
+  bool from_b_;
+  std::size_t next_ = 0;
+};
+
+// Whether the basis has lost independence (cond(G) > max_condition) or left the scale
+// [1e-6, 1e6], so that it must be re-orthonormalised.
+template <int D>
+bool needs_restart(const Basis<D>& Y, double max_condition) {
+  const Square<D> G = Y.transpose() * Y;
+  if constexpr (D == 2) {
+    const Eigen::SelfAdjointEigenSolver<Square<D>> eig(G, Eigen::EigenvaluesOnly);
+    const double lo = eig.eigenvalues()(0), hi = eig.eigenvalues()(1);
+    return !(lo > 0.0) || hi > max_condition * lo || hi > 1e6 || lo < 1e-6;
+  } else {
+    return G(0, 0) > 1e6 || G(0, 0) < 1e-6;
+  }
 }
 
+// Replaces Y by the Q of Y = Q R with positive diagonal R (det R > 0: the sign of det Phi and the
+// phase are unchanged) and returns R.
 template <int D>
-double phase_of(const Square<D>& Phi, const Square<D>& F) {
-  using Complex = std::complex<double>;
-  if constexpr (D == 1) {
-    return std::arg(Complex(Phi(0, 0), F(0, 0)));
-  } else {
-    const Eigen::Matrix<Complex, 2, 2> Z =
-        Phi.template cast<Complex>() + Complex(0.0, 1.0) * F.template cast<Complex>();
-    return std::arg(Z.determinant());
+Square<D> orthonormalise(Eigen::Map<Basis<D>>& Y, double x) {
+  const Eigen::HouseholderQR<Basis<D>> qr(Y);
+  Square<D> R = qr.matrixQR().template topRows<D>().template triangularView<Eigen::Upper>();
+  Basis<D> Q = qr.householderQ() * Basis<D>::Identity();
+  for (int j = 0; j < D; ++j) {
+    if (R(j, j) < 0.0) {
+      R.row(j) *= -1.0;
+      Q.col(j) *= -1.0;
+    }
   }
+  if (!(R.diagonal().minCoeff() > 0.0)) {
+    throw ShootingFailure(fmt::format("principal solutions became dependent at s/L = {:.6g}", x));
+  }
+  Y = Q;
+  return R;
 }
+
+// CVODE's step and RHS counters of the finished segments of one shot (ReInit resets them).
+struct StepCounts {
+  long steps = 0;
+  long rhs = 0;
+};
 
 }  // namespace
 
@@ -237,6 +225,17 @@ struct ShootingIntegrator::Impl {
              double tolerance_factor,
              const std::vector<double>* stations,
              bool from_b);
+  template <int D>
+  double begin_shot(double omega, double tolerance_factor, bool from_b);
+  template <int D>
+  void integrate(Shot& shot, StationRecorder<D>& recorder, bool from_b);
+  template <int D>
+  void record_passed_stations(StationRecorder<D>& recorder, double x);
+  template <int D>
+  void restart(Shot& shot, double x, StepCounts& finished);
+  template <int D>
+  void finish_shot(Shot& shot, double kappa, bool from_b);
+  void add_segment_counts(StepCounts& counts) const;
 
   IntegratorSettings settings;
   int dimension;
@@ -256,119 +255,94 @@ struct ShootingIntegrator::Impl {
   double max_log_growth = 0.0;
 };
 
+// Sets the frequency and the balancing, starts the principal solutions at Phi = 0, F = I and
+// re-initialises CVODE with the tolerances scaled by `tolerance_factor`; returns kappa.
 template <int D>
-Shot ShootingIntegrator::Impl::shoot(double omega,
-                                     double tolerance_factor,
-                                     const std::vector<double>* stations,
-                                     bool from_b) {
-  Shot shot;
-  shot.omega_rad_s = omega;
+double ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor, bool from_b) {
   data.omega2 = data.coefficients.scaled_omega2(omega);
   data.kappa2 = settings.balance ? std::max(std::sqrt(data.omega2), 1.0) : 1.0;
   data.from_b = from_b;
-  const double kappa = std::sqrt(data.kappa2);
-
   double* state = y.data();
   Eigen::Map<Basis<D>> Y(state);
   Y.setZero();
   Y.template bottomRows<D>().setIdentity();
-  state[2 * D * D] = (D == 2) ? kPi : 0.5 * kPi;  // arg det(i I)
-
+  state[2 * D * D] = initial_phase(D);
   void* mem = cvode.get();
   const double rtol = settings.relative_tolerance * tolerance_factor;
   const double atol = settings.absolute_tolerance * tolerance_factor;
-  double x = 0.0;
   check(CVodeReInit(mem, 0.0, y.get()), "CVodeReInit");
-  {
-    // The phase only has to be right to well within pi (it fixes the winding; the fractional
-    // part comes from arg det Z at the end), so its absolute tolerance is looser: 1e-6 rad per
-    // step. Tight control of it cost ~20% more steps for nothing.
-    N_VConst(atol, scratch.get());
-    scratch.data()[2 * D * D] = std::max(atol, 1e-6);
-    check(CVodeSVtolerances(mem, rtol, scratch.get()), "CVodeSVtolerances");
-  }
+  // The phase only has to be right to well within pi (it fixes the winding; the fractional part
+  // comes from arg det Z at the end), so its absolute tolerance is looser: 1e-6 rad per step.
+  // Tight control of it cost ~20% more steps for nothing.
+  N_VConst(atol, scratch.get());
+  scratch.data()[2 * D * D] = std::max(atol, 1e-6);
+  check(CVodeSVtolerances(mem, rtol, scratch.get()), "CVodeSVtolerances");
   check(CVodeSetStopTime(mem, 1.0), "CVodeSetStopTime");
+  return std::sqrt(data.kappa2);
+}
 
-  std::size_t next_station = 0;
-  const std::size_t num_stations = stations ? stations->size() : 0;
-  auto record = [&](const Basis<D>& basis) {
-    Basis<D> out = basis;
-    // Undo the rescaling; from b the force was carried as -F^.
-    out.template topRows<D>() /= kappa;
-    out.template bottomRows<D>() *= from_b ? -kappa : kappa;
-    shot.station_y.emplace_back(out);
-    shot.station_segment.push_back(static_cast<int>(shot.segment_r.size()));
-  };
-  while (next_station < num_stations && (*stations)[next_station] <= 0.0) {
-    record(Y);
-    ++next_station;
+// Stations passed by the last step (ending at x), from CVODE's interpolant.
+template <int D>
+void ShootingIntegrator::Impl::record_passed_stations(StationRecorder<D>& recorder, double x) {
+  while (recorder.next_at_or_before(x)) {
+    const double xs = recorder.next_station();
+    if (xs >= x) {
+      recorder.record(Eigen::Map<const Basis<D>>(y.data()));
+    } else {
+      check(CVodeGetDky(cvode.get(), xs, 0, scratch.get()), "CVodeGetDky", xs);
+      recorder.record(Eigen::Map<const Basis<D>>(scratch.data()));
+    }
   }
+}
 
-  long steps_before = 0, rhs_before = 0;
-  long steps_this_segment = 0, rhs_this_segment = 0;
+void ShootingIntegrator::Impl::add_segment_counts(StepCounts& counts) const {
+  long steps = 0, evaluations = 0;
+  CVodeGetNumSteps(cvode.get(), &steps);
+  CVodeGetNumRhsEvals(cvode.get(), &evaluations);
+  counts.steps += steps;
+  counts.rhs += evaluations;
+}
+
+// Re-orthonormalises the basis at x, keeps R, and restarts CVODE there.
+template <int D>
+void ShootingIntegrator::Impl::restart(Shot& shot, double x, StepCounts& finished) {
+  Eigen::Map<Basis<D>> Y(y.data());
+  const Square<D> R = orthonormalise<D>(Y, x);
+  shot.log_growth += R.diagonal().array().log().sum();
+  shot.segment_r.emplace_back(R);
+  add_segment_counts(finished);
+  check(CVodeReInit(cvode.get(), x, y.get()), "CVodeReInit", x);
+  check(CVodeSetStopTime(cvode.get(), 1.0), "CVodeSetStopTime");
+}
+
+// CVODE one step at a time from x = 0 to 1, recording stations and guarding independence.
+template <int D>
+void ShootingIntegrator::Impl::integrate(Shot& shot, StationRecorder<D>& recorder, bool from_b) {
+  const Eigen::Map<const Basis<D>> Y(y.data());
+  StepCounts finished;
   long steps_total = 0;
+  double x = 0.0;
   while (x < 1.0) {
-    const int flag = CVode(mem, 1.0, y.get(), &x, CV_ONE_STEP);
+    const int flag = CVode(cvode.get(), 1.0, y.get(), &x, CV_ONE_STEP);
     check(flag, "CVode", from_b ? 1.0 - x : x);
-    ++steps_total;
-    if (steps_total > settings.max_steps) {
+    if (++steps_total > settings.max_steps) {
       throw ShootingFailure(fmt::format("more than {} CVODE steps (max_steps) at s/L = {:.6g}",
                                         settings.max_steps, from_b ? 1.0 - x : x));
     }
-    // Stations passed by this step, from CVODE's interpolant.
-    while (next_station < num_stations && (*stations)[next_station] <= x) {
-      const double xs = (*stations)[next_station];
-      if (xs >= x) {
-        record(Y);
-      } else {
-        check(CVodeGetDky(mem, xs, 0, scratch.get()), "CVodeGetDky", xs);
-        record(Eigen::Map<const Basis<D>>(scratch.data()));
-      }
-      ++next_station;
-    }
+    record_passed_stations(recorder, x);
     if (x >= 1.0) break;
-    // Loss of independence / growth guard.
-    const Square<D> G = Y.transpose() * Y;
-    bool restart = false;
-    if constexpr (D == 2) {
-      const Eigen::SelfAdjointEigenSolver<Square<D>> eig(G, Eigen::EigenvaluesOnly);
-      const double lo = eig.eigenvalues()(0), hi = eig.eigenvalues()(1);
-      restart = !(lo > 0.0) || hi > settings.max_condition * lo || hi > 1e6 || lo < 1e-6;
-    } else {
-      restart = G(0, 0) > 1e6 || G(0, 0) < 1e-6;
-    }
-    if (restart) {
-      const Eigen::HouseholderQR<Basis<D>> qr(Y);
-      Square<D> R = qr.matrixQR().template topRows<D>().template triangularView<Eigen::Upper>();
-      Basis<D> Q = qr.householderQ() * Basis<D>::Identity();
-      for (int j = 0; j < D; ++j) {
-        if (R(j, j) < 0.0) {
-          R.row(j) *= -1.0;
-          Q.col(j) *= -1.0;
-        }
-      }
-      if (!(R.diagonal().minCoeff() > 0.0)) {
-        throw ShootingFailure(
-            fmt::format("principal solutions became dependent at s/L = {:.6g}", x));
-      }
-      Y = Q;
-      shot.log_growth += R.diagonal().array().log().sum();
-      shot.segment_r.emplace_back(R);
-      long steps = 0, evaluations = 0;
-      CVodeGetNumSteps(mem, &steps);
-      CVodeGetNumRhsEvals(mem, &evaluations);
-      steps_before += steps;
-      rhs_before += evaluations;
-      check(CVodeReInit(mem, x, y.get()), "CVodeReInit", x);
-      check(CVodeSetStopTime(mem, 1.0), "CVodeSetStopTime");
-    }
+    if (needs_restart<D>(Y, settings.max_condition)) restart<D>(shot, x, finished);
   }
-  CVodeGetNumSteps(mem, &steps_this_segment);
-  CVodeGetNumRhsEvals(mem, &rhs_this_segment);
-  shot.steps = steps_before + steps_this_segment;
-  shot.rhs_evaluations = rhs_before + rhs_this_segment;
-  for (; next_station < num_stations; ++next_station) record(Y);
+  add_segment_counts(finished);
+  shot.steps = finished.steps;
+  shot.rhs_evaluations = finished.rhs;
+}
 
+// The unscaled end basis, the count and the determinant of the shot, and the running totals.
+template <int D>
+void ShootingIntegrator::Impl::finish_shot(Shot& shot, double kappa, bool from_b) {
+  const double* state = y.data();
+  const Eigen::Map<const Basis<D>> Y(state);
   Basis<D> end = Y;
   end.template topRows<D>() /= kappa;
   end.template bottomRows<D>() *= from_b ? -kappa : kappa;
@@ -376,27 +350,34 @@ Shot ShootingIntegrator::Impl::shoot(double omega,
   // Count and determinant use the carried (Hamiltonian-form) basis Y.
   const Square<D> Phi = Y.template topRows<D>();
   const Square<D> F = Y.template bottomRows<D>();
-  const Square<D> G = Phi.transpose() * Phi + F.transpose() * F;
-  shot.determinant = Phi.determinant() / std::sqrt(G.determinant());
-  const double theta_integrated = state[2 * D * D];
-  const double theta_mod = phase_of<D>(Phi, F);
-  const double winding = std::round((theta_integrated - theta_mod) / (2.0 * kPi));
-  const double theta = theta_mod + 2.0 * kPi * winding;
-  shot.phase_defect = std::abs(theta_integrated - theta);
-  const double total_alpha = 2.0 * kPi * D - 2.0 * theta;
-  const Eigen::Matrix<double, D, 1> angles = unitary_angles<D>(Phi, F);
-  const double count = (total_alpha - angles.sum()) / (2.0 * kPi);
-  shot.count = static_cast<int>(std::lround(count));
-  shot.angle_min = angles(0);
-  shot.angle_max = angles(D - 1);
-
+  const ConjugateCount count = count_conjugate_points<D>(Phi, F, state[2 * D * D]);
+  shot.determinant = count.determinant;
+  shot.phase_defect = count.phase_defect;
+  shot.count = count.count;
+  shot.angle_min = count.angle_min;
+  shot.angle_max = count.angle_max;
   total_steps += shot.steps;
   total_rhs += shot.rhs_evaluations;
   total_reorthonormalisations += static_cast<long>(shot.segment_r.size());
   max_log_growth = std::max(max_log_growth, shot.log_growth);
-  return shot;
 }
 
+template <int D>
+Shot ShootingIntegrator::Impl::shoot(double omega,
+                                     double tolerance_factor,
+                                     const std::vector<double>* stations,
+                                     bool from_b) {
+  Shot shot;
+  shot.omega_rad_s = omega;
+  const double kappa = begin_shot<D>(omega, tolerance_factor, from_b);
+  StationRecorder<D> recorder(shot, stations, kappa, from_b);
+  const Eigen::Map<const Basis<D>> Y(y.data());
+  while (recorder.next_at_or_before(0.0)) recorder.record(Y);
+  integrate<D>(shot, recorder, from_b);
+  recorder.record_rest(Y);
+  finish_shot<D>(shot, kappa, from_b);
+  return shot;
+}
 ShootingIntegrator::ShootingIntegrator(Plane plane,
                                        const ShootingCoefficients& coefficients,
                                        const IntegratorSettings& settings)

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The integration core of the `shooting` solver (DESIGN.md §2.2): one "shot" integrates the
+/// The integration core of the `shooting` solver (docs/methods/shooting.md): one "shot" integrates the
 /// principal solutions of the linearised cable equations along s with CVODE, for one frequency.
 ///
 /// Scaled first-order system. With x = s / L, Phi^ = Phi / L and F^ = F / T_ref (T_ref = the
@@ -14,22 +14,14 @@
 /// plane (D = 1). B is finite for EA = inf (exact inextensible cable). The principal solutions
 /// start at Phi = 0, F = I: a 2D x D basis Y = [Phi; F].
 ///
-/// Counting (Morse index / Sturm). For this Hamiltonian system with B >= 0, C > 0, the frame
-/// Z = Phi + i F is invertible and theta = arg det Z decreases monotonically along x:
+/// Counting (Morse index / Sturm). The phase theta = arg det(Phi + i F) decreases monotonically
+/// along x,
 ///
 ///     d theta / dx = -tr[ G^{-1} (Phi^T C Phi + F^T B F) ],   G = Phi^T Phi + F^T F,
 ///
-/// and the eigenvalues e^{i alpha_j} of the unitary U = conj(Z) Z^{-1} turn monotonically
-/// counter-clockwise, starting at -1 (alpha_j = pi) at x = 0. A conjugate point (det Phi = 0) is
-/// an eigenvalue of U passing -1, so the number of conjugate points on (0, x] -- which by Morse
-/// index theory equals the number of eigenfrequencies below w when x = 1 -- is
-///
-///     N = [ (2 pi D - 2 theta) - sum_j abar_j ] / (2 pi),   abar_j = arg e^{i alpha_j} in [pi, 3
-///     pi)
-///
-/// exactly an integer. theta is integrated as one extra ODE component (so it never needs
-/// unwrapping) and is reconciled with arg det Z at the end; the mismatch is reported.
-/// Out of plane this is Pruefer's angle and N the zero count of v (Sturm).
+/// and is integrated as one extra ODE component (so it never needs unwrapping). At the far end
+/// it gives the number of conjugate points, i.e. of eigenfrequencies below w, by
+/// count_conjugate_points (shooting_conjugate_count.hpp). Out of plane this is Pruefer's angle.
 ///
 /// Loss of independence. The two in-plane columns can grow at different exponential rates (the
 /// "chain" solutions of a curved inextensible cable, or large lambda^2). After every CVODE step the
@@ -50,30 +42,9 @@
 #include <vector>
 
 #include "catena/core/types.hpp"
-#include "catena/statics/elastic_catenary.hpp"
+#include "solvers/internal/shooting_coefficients.hpp"
 
 namespace catena::internal {
-
-/// Static coefficients along the cable, in the closed forms of the shared statics.
-struct ShootingCoefficients {
-  double length_m = 1.0;
-  double H = 0.0;           ///< horizontal force [N]
-  double V_A = 0.0;         ///< vertical force at s = 0 [N]
-  double W0 = 0.0;          ///< weight per unstretched length [N/m]
-  double compliance = 0.0;  ///< 1/EA [1/N], 0 when inextensible
-  double m = 1.0;           ///< mass [kg/m] (tangential inertia)
-  double M = 1.0;           ///< normal mass m + ma [kg/m]
-  double t_ref = 1.0;       ///< tension scale [N]: max(T_A, T_B)
-
-  static ShootingCoefficients from_statics(const StaticSolution& statics);
-  /// T(s) [N].
-  double tension(double s) const;
-  /// Unit tangent and normal at s.
-  Vec2 tangent(double s) const;
-  Vec2 normal(double s) const;
-  /// Omega^2 = w^2 L^2 M / T_ref for omega [rad/s].
-  double scaled_omega2(double omega_rad_s) const;
-};
 
 /// Integrator settings of one ShootingIntegrator.
 struct IntegratorSettings {

@@ -1,0 +1,19 @@
+#pragma once
+/// \file
+/// Brent's zero finder (Brent 1973, "zeroin") as the `shooting` solver uses it: a bracket that
+/// closes to a relative width, not a point.
+
+#include <functional>
+#include <utility>
+
+namespace catena::internal {
+
+/// Inverse quadratic / secant steps safeguarded by bisection, one evaluation of `f` per
+/// iteration (at most 300), every step at least the tolerance long so that the bracket closes.
+/// Needs f(a) f(b) < 0 (fa = f(a), fb = f(b)); returns the final bracket (ascending), of width
+/// <= ~relative_tolerance * |root|; when f is exactly zero at an iterate b, the search stops and
+/// returns [b, c] with c the other end of the current bracket (wider than the tolerance).
+std::pair<double, double> brent_zero(const std::function<double(double)>& f, double a, double b,
+                                     double fa, double fb, double relative_tolerance);
+
+}  // namespace catena::internal

@@ -1,0 +1,153 @@
+// Forced response by superposition of principal solutions: see shooting_forced.hpp.
+#include "solvers/internal/shooting_forced.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "solvers/internal/shooting_profile.hpp"
+
+namespace catena::internal {
+
+namespace {
+
+// The prescribed end displacement in the integration variables: which plane is integrated, the
+// scaled drive d (a D-vector), and why there is no response, if there is none.
+struct Drive {
+  Plane plane = Plane::InPlane;
+  Eigen::VectorXd d;
+  bool string_only = false;
+  std::optional<std::string> diagnostic;
+};
+
+Vec2 drive_direction(const ShootingCoefficients& k, const ForcedRequest& forced, double s_driven) {
+  switch (forced.direction) {
+    case ForcingDirection::Tangential:
+      return k.tangent(s_driven);
+    case ForcingDirection::Normal:
+      return k.normal(s_driven);
+    default:
+      return forced.vector.normalized();
+  }
+}
+
+Drive make_drive(const ShootingCoefficients& k, const ForcedRequest& forced) {
+  Drive drive;
+  const double s_driven = forced.end == CableEnd::B ? k.length_m : 0.0;
+  if (forced.direction == ForcingDirection::OutOfPlane) {
+    drive.plane = Plane::OutOfPlane;
+    drive.d = Eigen::VectorXd::Constant(1, forced.amplitude_m);
+    return drive;
+  }
+  const Vec2 direction = drive_direction(k, forced, s_driven);
+  drive.d = forced.amplitude_m * direction;
+  if (!is_straight_inextensible(k)) return drive;
+  // Only the normal part can move a straight inextensible cable (its axis is rigid).
+  const double axial = direction.dot(k.tangent(s_driven));
+  if (std::abs(axial) > 1e-12) {
+    drive.diagnostic = fmt::format(
+        "a straight inextensible cable cannot be displaced along its axis (axial part {:.3g} of "
+        "the drive): no finite response",
+        axial);
+    return drive;
+  }
+  drive.string_only = true;
+  drive.plane = Plane::OutOfPlane;
+  drive.d = Eigen::VectorXd::Constant(1, forced.amplitude_m * direction.dot(k.normal(s_driven)));
+  return drive;
+}
+
+void set_profiles(ForcedResponse& response, const Profile& p, const Vector& stations,
+                  bool inplane) {
+  response.s_m = stations;
+  if (inplane) {
+    response.u = p.u;
+    response.w = p.w;
+    response.tension_n = p.tension;
+  } else {
+    response.v = p.v;
+    response.tension_n = Vector::Zero(stations.size());
+  }
+  response.max_abs_tension_n = response.tension_n.cwiseAbs().maxCoeff();
+}
+
+}  // namespace
+
+ForcedResponse shooting_forced_response(ShootingIntegrator& integrator,
+                                        const ShootingCoefficients& k, const ForcedRequest& forced,
+                                        double omega, const Vector& stations,
+                                        double relative_tolerance, bool& near_resonance) {
+  ForcedResponse response;
+  response.omega_rad_s = omega;
+  const Drive drive = make_drive(k, forced);
+  if (drive.diagnostic) {
+    response.diagnostic = *drive.diagnostic;
+    return response;
+  }
+  const bool from_b = forced.end == CableEnd::A;  // start at the fixed end
+  const int D = drive.plane == Plane::InPlane ? 2 : 1;
+  const std::vector<double> x = scaled_stations(stations, k.length_m, from_b);
+  const Shot shot = integrator.shoot(omega, 1.0, &x, from_b);
+  // Resonance: the end determinant is at the level of the integration error.
+  const double resonance_level = 1e3 * relative_tolerance;
+  if (std::abs(shot.determinant) <= resonance_level) {
+    response.diagnostic = fmt::format(
+        "forcing at a natural frequency (resonance): |det Phi(L)| / sqrt(det G) = {:.2e} <= "
+        "{:.1e}, no finite response",
+        std::abs(shot.determinant), resonance_level);
+    return response;
+  }
+  near_resonance = std::abs(shot.determinant) < 1e-3;
+  const Eigen::MatrixXd phi_end = shot.y_end.topRows(D);
+  const Eigen::VectorXd c = phi_end.partialPivLu().solve(drive.d / k.length_m);
+  Profile p = evaluate_profile(shot, c, k, stations, from_b, drive.plane);
+  if (drive.string_only) p = string_as_inplane(p);
+  set_profiles(response, p, stations, drive.plane == Plane::InPlane || drive.string_only);
+  // The principal solutions carry a relative error ~rtol; the D x D solve for the combination
+  // amplifies it by the condition of Phi(L), ~1 / |normalised det| (large near resonance).
+  response.relative_error_estimate = relative_tolerance / std::abs(shot.determinant);
+  return response;
+}
+
+ForcedOutcome shooting_forced_responses(const ShootingCoefficients& k, const ForcedRequest& forced,
+                                        const Vector& stations, const IntegratorSettings& settings) {
+  ForcedOutcome outcome;
+  SolverSummary& summary = outcome.summary;
+  const std::size_t asked = forced.omegas_rad_s.size();
+  try {
+    const Plane plane = forced.direction == ForcingDirection::OutOfPlane || is_straight_inextensible(k)
+                            ? Plane::OutOfPlane
+                            : Plane::InPlane;
+    ShootingIntegrator integrator(plane, k, settings);
+    for (double omega : forced.omegas_rad_s) {
+      bool near_resonance = false;
+      outcome.responses.push_back(shooting_forced_response(
+          integrator, k, forced, omega, stations, settings.relative_tolerance, near_resonance));
+      if (!outcome.responses.back().diagnostic.empty()) {
+        summary.warnings.push_back(fmt::format("forced response at {:.10g} rad/s: {}", omega,
+                                               outcome.responses.back().diagnostic));
+      } else if (near_resonance) {
+        summary.warnings.push_back(fmt::format(
+            "forced response at {:.10g} rad/s is near a natural frequency (|det Phi(L)| / "
+            "sqrt(det G) < 1e-3): the response is resonance-amplified and sensitive to omega",
+            omega));
+      }
+    }
+    summary.termination = Termination::Converged;
+    summary.message = fmt::format("{} of {} forced frequencies", outcome.responses.size(), asked);
+    summary.iterations = static_cast<long>(asked);
+    summary.operations = integrator.total_rhs_evaluations();
+  } catch (const ShootingFailure& failure) {
+    summary.termination =
+        outcome.responses.empty() ? Termination::NumericalFailure : Termination::NoConvergence;
+    summary.message = fmt::format("{} of {} forced frequencies ({})", outcome.responses.size(),
+                                  asked, failure.what());
+    summary.warnings.push_back(fmt::format("forced response: {}", failure.what()));
+  }
+  return outcome;
+}
+
+}  // namespace catena::internal

@@ -1,0 +1,31 @@
+#pragma once
+/// \file
+/// Forced response of the `shooting` solver (docs/methods/shooting.md): one end of the cable is
+/// driven harmonically, the other is fixed. The principal solutions are shot from the fixed end
+/// and combined to meet the prescribed displacement at the driven end (one D x D solve per
+/// frequency). A frequency where the normalised det Phi(L) is at the integration-noise level is
+/// reported as resonance (no finite response); one with |det| < 1e-3 gets a near-resonance
+/// warning. A straight inextensible cable responds only to the normal part of the drive.
+
+#include "catena/solvers/solve_request.hpp"
+#include "solvers/internal/shooting_coefficients.hpp"
+#include "solvers/internal/shooting_integrator.hpp"
+#include "solvers/internal/solver_driver.hpp"
+
+namespace catena::internal {
+
+/// The response at one frequency; `near_resonance` is set when |det Phi(L)| < 1e-3. A response
+/// with a diagnostic (resonance, an axial drive of a rigid cable) has no profiles. Throws
+/// ShootingFailure when the shot fails.
+ForcedResponse shooting_forced_response(ShootingIntegrator& integrator,
+                                        const ShootingCoefficients& k, const ForcedRequest& forced,
+                                        double omega, const Vector& stations,
+                                        double relative_tolerance, bool& near_resonance);
+
+/// The response at every frequency of `forced`, with the summary of that part: Converged with
+/// warnings for resonances, or, when the integration fails, the responses computed before the
+/// failure (NoConvergence; NumericalFailure when there are none). Never throws ShootingFailure.
+ForcedOutcome shooting_forced_responses(const ShootingCoefficients& k, const ForcedRequest& forced,
+                                        const Vector& stations, const IntegratorSettings& settings);
+
+}  // namespace catena::internal

@@ -1,0 +1,99 @@
+#pragma once
+/// \file
+/// The root finder of the `shooting` solver (docs/methods/shooting.md): brackets each natural
+/// frequency by conjugate-point counts and refines it with Brent's method.
+///
+/// Mode n is the root of the count-aware function h_n (count_function in
+/// shooting_conjugate_count.hpp), bracketed by any two samples with counts < n and >= n: the sign
+/// of h_n certifies the count, so no mode can be skipped. New samples inside a count bracket are
+/// placed by a phase-extrapolated guess or bisection. For a one-component problem (out of plane,
+/// or a straight inextensible cable) h_n is smooth across the eigenvalue and Brent works on it
+/// directly; in plane Brent works on the normalised end determinant, which changes sign exactly
+/// once inside a bracket whose counts are n - 1 and n. Several eigenvalues inside a bracket
+/// narrower than the tolerance (an exactly double root, e.g. Irvine's cross-over) are returned
+/// as one root of that multiplicity.
+
+#include <functional>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "solvers/internal/shooting_integrator.hpp"
+
+namespace catena::internal {
+
+/// The part of the solver's options the root finder uses.
+struct RootFinderSettings {
+  /// The integrator's relative tolerance [-] (the noise level of the end function).
+  double relative_tolerance = 1e-10;
+  /// Relative width of the final root bracket [-].
+  double root_tolerance = 1e-10;
+  /// Estimate each root's integration error by one extra shot at 10x tighter tolerances.
+  bool error_estimate = true;
+};
+
+/// A frequency found (a cluster of `multiplicity` equal frequencies for a multiple root).
+struct Root {
+  double omega = 0.0;
+  int multiplicity = 1;
+  double relative_error = 0.0;
+  double residual = 0.0;  ///< smaller |determinant| at the final bracket ends
+};
+
+/// One shot at `omega` [rad/s] with the integrator's tolerances scaled by `tolerance_factor`.
+using ShotFunction = std::function<Shot(double omega, double tolerance_factor)>;
+
+/// Brackets and refines the lowest eigenfrequencies of one plane.
+class ShootingRootFinder {
+ public:
+  static constexpr long kMaxShots = 20000;
+  static constexpr double kMaxPhaseDefect = 0.5;  ///< [rad]: the phase must be right to << pi
+
+  /// `first_guess_rad_s`: a frequency expected above the wanted modes (enlarged until it is).
+  /// `scalar`: a one-component problem, whose continuous count is smooth across the eigenvalues.
+  ShootingRootFinder(ShotFunction shoot, const RootFinderSettings& settings,
+                     double first_guess_rad_s, bool scalar);
+
+  /// The lowest `num_modes` eigenfrequencies (a multiple root counts its multiplicity), with
+  /// warnings about counts that did not behave. Throws ShootingFailure when a shot fails or
+  /// more than kMaxShots are needed.
+  std::vector<Root> find(int num_modes, std::vector<std::string>& warnings);
+
+  long shots() const { return shots_; }
+  /// The count at the smallest sample above the top root (-1 when none).
+  int proved_count() const { return proved_count_; }
+  double max_phase_defect() const { return max_phase_defect_; }
+  long phase_retries() const { return phase_retries_; }
+
+ private:
+  // One evaluation of the end function: the count of eigenvalues below omega, the end
+  // eigen-angles (for the count-aware root function) and the smooth end determinant.
+  struct Sample {
+    int count = 0;
+    double angle_min = 0.0;
+    double angle_max = 0.0;
+    double determinant = 0.0;
+  };
+  static double count_function(const Sample& sample, int n);
+
+  const Sample& evaluate(double omega);
+  void raise_to_count(double& top, int num_modes);
+  std::pair<double, double> bracket(int n) const;
+  double trial_point(int n, double lo, double hi) const;
+  Root multiple_root(int n, double lo, double hi, std::vector<std::string>& warnings) const;
+  Root refine_scalar(int n, double lo, double hi);
+  Root refine(double lo, double hi);
+
+  ShotFunction shoot_;
+  RootFinderSettings settings_;
+  double first_guess_;
+  bool scalar_;
+  std::map<double, Sample> samples_;
+  long shots_ = 0;
+  int proved_count_ = -1;
+  double max_phase_defect_ = 0.0;
+  long phase_retries_ = 0;
+};
+
+}  // namespace catena::internal
