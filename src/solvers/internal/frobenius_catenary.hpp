@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Series solutions of the inextensible catenary's linear equations (Gale 1976, seed 003,
-/// sec. II.4) on the general engine of frobenius_series.hpp.
+/// Series solutions of the inextensible catenary's linear equations (Gale 1976, sec. II.4;
+/// docs/references.md) on the general engine of frobenius_series.hpp.
 ///
 /// Units: lengths in a = H/W0, sigma = (s - s_apex)/a, C = sqrt(1 + sigma^2), eta = |xi| = C - 1,
 /// q = sigma^2 = eta (2 + eta), Omega = w / sqrt(g/a) (g = W0/m), mu = M/m. D = d/dsigma.
