@@ -48,19 +48,22 @@ class FrequencyFinder {
 };
 
 // Cancellation (largest series term / column norm) at the top of the expected range decides the
-// precision of the scan: double while it leaves 8 digits, then long double, then quad.
+// precision of the scan: double while it leaves 8 digits, then long double, then quad. A
+// determinant that overflows double (high Omega on a shallow cable: the series terms grow like
+// Omega^n before they decay) needs long double's range at least.
 void FrequencyFinder::choose_scan_precision() {
   const double top = (count_ + 1.0) * spacing_;
   WorkCounter probe;
-  (void)scaled_determinant(Precision::Double, setup_, top, probe);
+  const bool overflow = !std::isfinite(scaled_determinant(Precision::Double, setup_, top, probe));
   result_.work.determinant_evaluations += probe.determinant_evaluations;
   result_.work.cancellation = probe.cancellation;
   Precision precision = Precision::Double;
-  if (probe.cancellation * std::numeric_limits<double>::epsilon() > 1e-8 && settings_.extended_precision)
+  if ((overflow || probe.cancellation * std::numeric_limits<double>::epsilon() > 1e-8) && settings_.extended_precision)
     precision = probe.cancellation * std::numeric_limits<long double>::epsilon() > 1e-8 ? Precision::Quad
                                                                                        : Precision::LongDouble;
-  result_.notes.push_back(fmt::format("cancellation (largest series term / |sum|) at Omega = {:g}: {:g}; root scan in {}",
-                                      top, probe.cancellation, precision_name(precision)));
+  result_.notes.push_back(fmt::format("cancellation (largest series term / |sum|) at Omega = {:g}: {:g}{}; root scan in {}",
+                                      top, probe.cancellation, overflow ? " (det not finite in double)" : "",
+                                      precision_name(precision)));
   result_.scan_precision = precision;
 }
 
@@ -169,7 +172,16 @@ void FrequencyFinder::refine_bracket(std::size_t index, double rtol) {
   }
   int iterations = 0;
   const double omega = refine_root([this](double x) { return full(x); }, a, b, fa, fb, rtol, iterations);
-  result_.roots.push_back(corrected_root(omega, rtol));
+  const FoundRoot root = corrected_root(omega, rtol);
+  if (!std::isfinite(root.omega) || !std::isfinite(root.relative_error)) {
+    // The determinant overflowed or lost every digit (NaN compares as positive, so the scan may
+    // even have bracketed it): not a frequency. The plane then has fewer roots than asked.
+    result_.warnings.push_back(fmt::format(
+        "the root bracketed in [{:g}, {:g}] came out non-finite in {} (series overflow): dropped", a, b,
+        precision_name(std::max(result_.scan_precision, Precision::LongDouble))));
+    return;
+  }
+  result_.roots.push_back(root);
 }
 
 // A-posteriori check of a root: secant-Newton steps with the series cut finer (1e-3 of the term
