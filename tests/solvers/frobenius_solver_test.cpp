@@ -7,6 +7,8 @@
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "catena/core/error.hpp"
@@ -119,6 +121,12 @@ TEST(FrobeniusSolverTest, InPlaneMatchesGaleTableB3RowsWithinPrintedRounding) {
 TEST(FrobeniusSolverTest, AgreesWithDirectIntegrationInSigma) {
   const Problem problem = make_gale_xi_problem(-0.524, 1.116);
   const Solved s = run(problem, modes(6, 6));
+  ASSERT_TRUE(s.output.inplane && s.output.outofplane);
+  EXPECT_EQ(s.output.inplane->summary.termination, Termination::Converged) << s.output.inplane->summary.message;
+  EXPECT_EQ(s.output.outofplane->summary.termination, Termination::Converged) << s.output.outofplane->summary.message;
+  // Six of each plane, every one of them compared below.
+  ASSERT_EQ(s.output.inplane->modes.size(), 6u);
+  ASSERT_EQ(s.output.outofplane->modes.size(), 6u);
   const double s1 = s.groups.sigma1, s2 = s.groups.sigma2;
   for (const auto& mode : s.output.inplane->modes) {
     const double omega = *mode.gale_ratio;
@@ -294,9 +302,13 @@ TEST(FrobeniusSolverTest, RegistryEntryReadsKnobsAndRejectsUnknownOnes) {
   const DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
   const SolveRequest request = modes(3, 3);
   const SolveContext context{problem, statics, groups, request};
-  EXPECT_FALSE(entry->not_applicable_reason(context).has_value());
-  const SolverOutput output = entry->run(context, {{"tolerance", 1e-10}, {"max_terms", 300L}});
+  EXPECT_FALSE(frobenius_not_applicable_reason(problem, groups).has_value());
+  const SolverOutput output = run_solver(*entry, context, {{"tolerance", 1e-10}, {"max_terms", 300L}});
+  EXPECT_EQ(output.solver, "frobenius");
   EXPECT_EQ(output.summary.termination, Termination::Converged) << output.summary.message;
+  ASSERT_TRUE(output.inplane && output.outofplane);
+  ASSERT_EQ(output.inplane->modes.size(), 3u);
+  ASSERT_EQ(output.outofplane->modes.size(), 3u);
   // Table B-3 / B-4, h/b = 0.5, sag 0.80: in-plane 1.86, 3.16, 4.42; out-of-plane 1.22, 2.34, 3.48.
   EXPECT_NEAR(*output.inplane->modes[2].gale_ratio, 4.42, 0.005);
   EXPECT_NEAR(*output.outofplane->modes[2].gale_ratio, 3.48, 0.005);
@@ -359,9 +371,19 @@ TEST(FrobeniusSolverTest, DeclinesExtensibleCables) {
   const Problem problem = make_taut_inclined_problem(0.2, 20.0, 40.0, 1.0);
   const StaticSolution statics = solve_statics(problem);
   const DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
-  EXPECT_NE(frobenius_not_applicable_reason(problem, groups).find("inextensible"), std::string::npos);
+  const std::optional<std::string> reason = frobenius_not_applicable_reason(problem, groups);
+  ASSERT_TRUE(reason.has_value());
+  EXPECT_NE(reason->find("inextensible"), std::string::npos);
   const SolverOutput output = solve_frobenius(problem, statics, groups, modes(2, 0));
   EXPECT_EQ(output.summary.termination, Termination::NotApplicable);
+  EXPECT_EQ(output.summary.message, *reason);
+  EXPECT_FALSE(output.inplane.has_value());
+  // The registry path declines the same way, with the same reason.
+  const SolveRequest request = modes(2, 0);
+  const SolverOutput through_registry =
+      run_solver(*find_solver("frobenius"), SolveContext{problem, statics, groups, request}, {});
+  EXPECT_EQ(through_registry.summary.termination, Termination::NotApplicable);
+  EXPECT_EQ(through_registry.summary.message, *reason);
 }
 
 TEST(FrobeniusSolverTest, RejectsBadOptions) {

@@ -1,14 +1,14 @@
 #pragma once
 /// \file
-/// The `frobenius` solver (DESIGN.md §2.3): Gale's power-series solution of the inextensible
-/// catenary (seed 003, Gale 1976, sec. II.4), extended.
+/// The `frobenius` solver (docs/methods/frobenius.md): Gale's power-series solution of the
+/// inextensible catenary (Gale 1976, sec. II.4; docs/references.md), extended.
 ///
 /// Model: EA = inf (inextensible), so the tangential strain of the motion vanishes. In Gale's
 /// variables (a = H/W0, sigma = (s - s_apex)/a, xi = sign(sigma)(sqrt(1+sigma^2) - 1),
 /// Omega = w / sqrt(g/a), g = W0/m, mu = M/m) the tangential displacement U obeys the fourth-order
 /// eq. 2.42 in |xi| (exponents 0, 1/2, 1, 3/2 at the apex xi = 0), the normal displacement is
 /// V = (1+sigma^2) dU/dsigma (2.36) and the dynamic tension T (2.37); out of plane the displacement
-/// obeys eq. 2.44 (exponents 0, 1/2). The equations were re-derived from DESIGN.md §1.3 (see
+/// obeys eq. 2.44 (exponents 0, 1/2). The equations were re-derived from the model of docs/physics.md (see
 /// verification/tools/frobenius_derive_odes.py), not copied from the OCR.
 ///
 /// Method: a general Frobenius engine builds the series from the coefficient polynomials; the
@@ -35,6 +35,9 @@
 /// s through sigma = V(s)/H), normalised by mode_tools. Forced response: the fixed end clamped, the
 /// driven end given its displacement (tangential, normal, a given in-plane vector resolved on t and
 /// n, or out of plane), U, V, T along the cable (Gale 2.76-2.79).
+
+#include <optional>
+#include <string>
 
 #include "catena/models/cable.hpp"
 #include "catena/solvers/modal_result.hpp"
@@ -63,18 +66,18 @@ struct FrobeniusSolverOptions {
   /// Allow the precision ladder (long double, then 113-bit quad) when double is not enough.
   bool extended_precision = true;
 
-  /// Throws InvalidInput naming the field and the violated range.
+  /// Throws InvalidInput naming the knob (`[solvers.frobenius].<knob>`) and its valid range.
   void validate() const;
 };
 
 /// Solves `request` for an inextensible catenary. Returns NotApplicable (with the reason) for an
 /// extensible cable or one without an apex parameterization (H = 0). Never throws for numerical
-/// trouble; throws InvalidInput for bad options.
+/// trouble (it is a status in the summaries); throws InvalidInput for bad options or request.
 SolverOutput solve_frobenius(const Problem& problem, const StaticSolution& statics,
                              const DimensionlessGroups& groups, const SolveRequest& request,
                              const FrobeniusSolverOptions& options = {});
 
-/// The reason the solver does not apply to `problem`, or an empty string when it does.
-std::string frobenius_not_applicable_reason(const Problem& problem, const DimensionlessGroups& groups);
+/// nullopt when the solver applies to `problem`; otherwise why not.
+std::optional<std::string> frobenius_not_applicable_reason(const Problem& problem, const DimensionlessGroups& groups);
 
 }  // namespace catena

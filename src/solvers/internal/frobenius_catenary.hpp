@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Series solutions of the inextensible catenary's linear equations (Gale 1976, seed 003,
-/// sec. II.4) on the general engine of frobenius_series.hpp.
+/// Series solutions of the inextensible catenary's linear equations (Gale 1976, sec. II.4;
+/// docs/references.md) on the general engine of frobenius_series.hpp.
 ///
 /// Units: lengths in a = H/W0, sigma = (s - s_apex)/a, C = sqrt(1 + sigma^2), eta = |xi| = C - 1,
 /// q = sigma^2 = eta (2 + eta), Omega = w / sqrt(g/a) (g = W0/m), mu = M/m. D = d/dsigma.
@@ -154,8 +154,39 @@ class CatenaryBasis {
     static const std::vector<std::complex<double>> singular_out = leading_roots(catenary_ode<double>(false, 1.0, 1.0));
     roots_ = inplane ? roots_in : roots_out;
     singular_ = inplane ? singular_in : singular_out;
+    add_apex_expansion(ode, settings);
+    // Ordinary centres until eta_max is covered.
+    while (centres_.back() + reach_.back() < eta_max) add_ordinary_expansion(ode, settings);
+  }
+
+  int size() const { return n_; }
+  bool converged() const { return converged_; }
+  long total_terms() const { return total_terms_; }
+  int num_centres() const { return static_cast<int>(centres_.size()); }
+  double exponent(int j) const { return roots_[static_cast<std::size_t>(j)]; }
+
+  /// D^k U_j(sigma), k = 0..max_derivative (<= 3).
+  BasisValues<Real> evaluate(const Real& sigma, int max_derivative) const {
+    using std::sqrt;
+    BasisValues<Real> out;
+    out.size = n_;
+    const Real q = sigma * sigma;
+    const Real eta = q / (sqrt(Real(1) + q) + Real(1));
+    const int k = centre_index(static_cast<double>(eta));
+    for (std::size_t j = 0; j < static_cast<std::size_t>(n_); ++j) {
+      const bool odd = roots_[j] != std::floor(roots_[j]);
+      if (k == 0 && odd)
+        odd_near_apex(j, sigma, eta, max_derivative, out);
+      else
+        from_series_in_eta(j, k, odd, sigma, eta, max_derivative, out);
+    }
+    return out;
+  }
+
+ private:
+  // Centre 0: the singular point (the apex), where the Frobenius series are built.
+  void add_apex_expansion(const PolynomialOde<Real>& ode, const CatenarySeriesSettings& settings) {
     const double rho = settings.step_ratio;
-    // Centre 0: the singular point.
     const double r0 = radius(0.0);
     centres_.push_back(0.0);
     reach_.push_back(rho * r0);
@@ -169,147 +200,153 @@ class CatenaryBasis {
     }
     ratio_.push_back(rho);
     lower_.push_back(0.0);
-    // Ordinary centres until eta_max is covered. Each new centre c is placed so that the matching
-    // point x_m (the right end of the previous disc, at rho of its radius) lies at rho of the new
-    // radius on its left: c - rho R(c) = x_m (Gale matches at a point where both series converge).
-    while (centres_.back() + reach_.back() < eta_max) {
-      const double x_m = centres_.back() + reach_.back();
-      double lo = x_m, hi = x_m + 1.0;
-      while (hi - rho * radius(hi) < x_m) hi = x_m + 2.0 * (hi - x_m);
-      for (int it = 0; it < 200 && hi - lo > 1e-14 * hi; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (mid - rho * radius(mid) < x_m ? lo : hi) = mid;
-      }
-      const double c = hi;
-      const double step = rho * radius(c);
-      const ShiftTable<Real> table(ode.shifted(Real(c)));
-      std::vector<FrobeniusSeries<Real>> unit;
-      std::size_t longest = 0;
-      for (int m = 0; m < n_; ++m) {
-        bool ok = false;
-        unit.push_back(adaptive_series(table, Real(m), Real(step), settings.term_tolerance, settings.max_terms, ok));
-        converged_ = converged_ && ok;
-        longest = std::max(longest, unit.back().a.size() + static_cast<std::size_t>(m));
-      }
-      // Matching at x_m: B[d][m] = b_m^(d)(x_m - c); solve B coef_j = F_j^(d)(x_m).
-      const Real t_m = Real(x_m) - Real(c);
-      std::vector<std::vector<Real>> B(static_cast<std::size_t>(n_), std::vector<Real>(static_cast<std::size_t>(n_)));
-      for (int m = 0; m < n_; ++m) {
-        const auto v = evaluate_series(unit[static_cast<std::size_t>(m)], t_m, n_ - 1, Real(rho));
-        for (int d = 0; d < n_; ++d) B[static_cast<std::size_t>(d)][static_cast<std::size_t>(m)] = v.derivative[static_cast<std::size_t>(d)];
-      }
-      std::vector<FrobeniusSeries<Real>> combined(static_cast<std::size_t>(n_));
-      for (int j = 0; j < n_; ++j) {
-        const auto d = raw_derivatives(static_cast<int>(centres_.size()) - 1, j, Real(x_m), n_ - 1);
-        const std::vector<Real> coef = solve_dense(B, d.derivative);
-        auto& s = combined[static_cast<std::size_t>(j)];
-        s.r = Real(0);
-        s.a.assign(longest, Real(0));
-        for (int m = 0; m < n_; ++m)
-          for (std::size_t i = 0; i < unit[static_cast<std::size_t>(m)].a.size(); ++i)
-            s.a[i + static_cast<std::size_t>(m)] += coef[static_cast<std::size_t>(m)] * unit[static_cast<std::size_t>(m)].a[i];
-        total_terms_ += static_cast<long>(longest);
-      }
-      centres_.push_back(c);
-      lower_.push_back(x_m);
-      reach_.push_back(step);
-      ratio_.push_back(rho);
-      ordinary_series_.push_back(combined);
-    }
   }
 
-  int size() const { return n_; }
-  bool converged() const { return converged_; }
-  long total_terms() const { return total_terms_; }
-  int num_centres() const { return static_cast<int>(centres_.size()); }
-  double exponent(int j) const { return roots_[static_cast<std::size_t>(j)]; }
+  // The next centre c is placed so that the matching point x_m (the right end of the previous
+  // disc, at rho of its radius) lies at rho of the new radius on its left: c - rho R(c) = x_m
+  // (Gale matches at a point where both series converge). Bisection on c.
+  double next_centre(double x_m, double rho) const {
+    double lo = x_m, hi = x_m + 1.0;
+    while (hi - rho * radius(hi) < x_m) hi = x_m + 2.0 * (hi - x_m);
+    for (int it = 0; it < 200 && hi - lo > 1e-14 * hi; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (mid - rho * radius(mid) < x_m ? lo : hi) = mid;
+    }
+    return hi;
+  }
 
-  /// D^k U_j(sigma), k = 0..max_derivative (<= 3).
-  BasisValues<Real> evaluate(const Real& sigma, int max_derivative) const {
+  // A Taylor expansion about the next ordinary centre, continuing every basis function: the
+  // unit solutions there are combined to match the previous expansion's derivatives at x_m.
+  void add_ordinary_expansion(const PolynomialOde<Real>& ode, const CatenarySeriesSettings& settings) {
+    const double rho = settings.step_ratio;
+    const double x_m = centres_.back() + reach_.back();
+    const double c = next_centre(x_m, rho);
+    const double step = rho * radius(c);
+    const ShiftTable<Real> table(ode.shifted(Real(c)));
+    std::vector<FrobeniusSeries<Real>> unit;
+    std::size_t longest = 0;
+    for (int m = 0; m < n_; ++m) {
+      bool ok = false;
+      unit.push_back(adaptive_series(table, Real(m), Real(step), settings.term_tolerance, settings.max_terms, ok));
+      converged_ = converged_ && ok;
+      longest = std::max(longest, unit.back().a.size() + static_cast<std::size_t>(m));
+    }
+    const std::size_t n = static_cast<std::size_t>(n_);
+    // Matching at x_m: B[d][m] = b_m^(d)(x_m - c); solve B coef_j = F_j^(d)(x_m).
+    const Real t_m = Real(x_m) - Real(c);
+    std::vector<std::vector<Real>> B(n, std::vector<Real>(n));
+    for (std::size_t m = 0; m < n; ++m) {
+      const auto v = evaluate_series(unit[m], t_m, n_ - 1, Real(rho));
+      for (std::size_t d = 0; d < n; ++d) B[d][m] = v.derivative[d];
+    }
+    std::vector<FrobeniusSeries<Real>> combined(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto d = raw_derivatives(static_cast<int>(centres_.size()) - 1, static_cast<int>(j), Real(x_m), n_ - 1);
+      const std::vector<Real> coef = solve_dense(B, d.derivative);
+      auto& s = combined[j];
+      s.r = Real(0);
+      s.a.assign(longest, Real(0));
+      for (std::size_t m = 0; m < n; ++m)
+        for (std::size_t i = 0; i < unit[m].a.size(); ++i) s.a[i + m] += coef[m] * unit[m].a[i];
+      total_terms_ += static_cast<long>(longest);
+    }
+    centres_.push_back(c);
+    lower_.push_back(x_m);
+    reach_.push_back(step);
+    ratio_.push_back(rho);
+    ordinary_series_.push_back(combined);
+  }
+
+  // An odd (half-integer exponent) basis function near the apex: U = sigma h(eta),
+  // h = g(eta) (2+eta)^(-1/2), g = eta^(r-1/2) S(eta) (integer powers), so that the
+  // sigma-derivatives have no cancelling eta^(-1/2) terms.
+  void odd_near_apex(std::size_t j, const Real& sigma, const Real& eta, int max_derivative,
+                     BasisValues<Real>& out) const {
     using std::abs;
     using std::sqrt;
-    BasisValues<Real> out;
-    out.size = n_;
-    const Real q = sigma * sigma;
-    const Real eta = q / (sqrt(Real(1) + q) + Real(1));
-    const Real C = Real(1) + eta;
-    const int k = centre_index(static_cast<double>(eta));
     const Real eps = std::numeric_limits<Real>::epsilon();
-    for (int j = 0; j < n_; ++j) {
-      const bool odd = roots_[static_cast<std::size_t>(j)] != std::floor(roots_[static_cast<std::size_t>(j)]);
-      std::array<Real, 4> f{}, fe{};
-      if (k == 0 && odd) {
-        // U = sigma h(eta), h = g(eta) (2+eta)^(-1/2), g = eta^(r-1/2) S(eta) (integer powers).
-        FrobeniusSeries<Real> g = singular_series_[static_cast<std::size_t>(j)];
-        g.r = g.r - Real(0.5);
-        const auto gv = evaluate_series(g, eta, max_derivative, Real(ratio_[0]));
-        for (const auto& x : gv.largest_term) out.largest_term[static_cast<std::size_t>(j)] = std::max(out.largest_term[static_cast<std::size_t>(j)], x);
-        std::array<Real, 4> w{}, h{}, he{};
-        const Real root = sqrt(Real(2) + eta);
-        w[0] = Real(1) / root;
-        for (int i = 1; i < 4; ++i) w[static_cast<std::size_t>(i)] = w[static_cast<std::size_t>(i - 1)] * (Real(0.5) - Real(i)) / (Real(2) + eta);
-        static const int binom[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
-        for (int d = 0; d <= max_derivative; ++d)
-          for (int i = 0; i <= d; ++i) {
-            h[static_cast<std::size_t>(d)] += Real(binom[d][i]) * gv.derivative[static_cast<std::size_t>(i)] * w[static_cast<std::size_t>(d - i)];
-            he[static_cast<std::size_t>(d)] += Real(binom[d][i]) * (gv.truncation[static_cast<std::size_t>(i)] + eps * gv.largest_term[static_cast<std::size_t>(i)]) * abs(w[static_cast<std::size_t>(d - i)]);
-          }
-        const Real qc = q / C, iC2 = Real(1) / (C * C), iC3 = iC2 / C;
-        f[0] = sigma * h[0];
-        fe[0] = abs(sigma) * he[0];
-        if (max_derivative >= 1) {
-          f[1] = h[0] + qc * h[1];
-          fe[1] = he[0] + qc * he[1];
-        }
-        const Real e1p = (Real(2) + iC2) * h[1] + qc * h[2];
-        const Real e1pe = (Real(2) + iC2) * he[1] + qc * he[2];
-        if (max_derivative >= 2) {
-          f[2] = sigma / C * e1p;
-          fe[2] = abs(sigma) / C * e1pe;
-        }
-        if (max_derivative >= 3) {
-          const Real e1pp = Real(-2) * iC3 * h[1] + (Real(3) + Real(2) * iC2) * h[2] + qc * h[3];
-          const Real e1ppe = Real(2) * iC3 * he[1] + (Real(3) + Real(2) * iC2) * he[2] + qc * he[3];
-          f[3] = iC3 * e1p + q * iC2 * e1pp;
-          fe[3] = iC3 * e1pe + q * iC2 * e1ppe;
-        }
-      } else {
-        SeriesValue<Real> v = k == 0 ? evaluate_series(singular_series_[static_cast<std::size_t>(j)], eta, max_derivative, Real(ratio_[0]))
-                                     : evaluate_series(ordinary_series_[static_cast<std::size_t>(k - 1)][static_cast<std::size_t>(j)],
-                                                       Real(eta - Real(centres_[static_cast<std::size_t>(k)])), max_derivative,
-                                                       Real(ratio_[static_cast<std::size_t>(k)]));
-        std::array<Real, 4> F{}, Fe{};
-        for (const auto& x : v.largest_term) out.largest_term[static_cast<std::size_t>(j)] = std::max(out.largest_term[static_cast<std::size_t>(j)], x);
-        for (int d = 0; d <= max_derivative; ++d) {
-          F[static_cast<std::size_t>(d)] = v.derivative[static_cast<std::size_t>(d)];
-          Fe[static_cast<std::size_t>(d)] = v.truncation[static_cast<std::size_t>(d)] + eps * v.largest_term[static_cast<std::size_t>(d)];
-        }
-        const Real sign = (odd && sigma < Real(0)) ? Real(-1) : Real(1);
-        const Real iC = Real(1) / C, iC2 = iC * iC, iC3 = iC2 * iC;
-        f[0] = sign * F[0];
-        fe[0] = Fe[0];
-        if (max_derivative >= 1) {
-          f[1] = sign * sigma * iC * F[1];
-          fe[1] = abs(sigma) * iC * Fe[1];
-        }
-        if (max_derivative >= 2) {
-          f[2] = sign * (q * iC2 * F[2] + iC3 * F[1]);
-          fe[2] = q * iC2 * Fe[2] + iC3 * Fe[1];
-        }
-        if (max_derivative >= 3) {
-          f[3] = sign * sigma * (q * iC3 * F[3] + Real(3) * iC2 * iC2 * F[2] - Real(3) * iC2 * iC3 * F[1]);
-          fe[3] = abs(sigma) * (q * iC3 * Fe[3] + Real(3) * iC2 * iC2 * Fe[2] + Real(3) * iC2 * iC3 * Fe[1]);
-        }
+    FrobeniusSeries<Real> g = singular_series_[j];
+    g.r = g.r - Real(0.5);
+    const auto gv = evaluate_series(g, eta, max_derivative, Real(ratio_[0]));
+    for (const auto& x : gv.largest_term) out.largest_term[j] = std::max(out.largest_term[j], x);
+    // Derivatives in eta of h by Leibniz's rule with w = (2+eta)^(-1/2).
+    std::array<Real, 4> w{}, h{}, he{};
+    const Real root = sqrt(Real(2) + eta);
+    w[0] = Real(1) / root;
+    for (std::size_t i = 1; i < 4; ++i) w[i] = w[i - 1] * (Real(0.5) - Real(static_cast<int>(i))) / (Real(2) + eta);
+    static const int binom[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
+    for (std::size_t d = 0; d <= static_cast<std::size_t>(max_derivative); ++d)
+      for (std::size_t i = 0; i <= d; ++i) {
+        h[d] += Real(binom[d][i]) * gv.derivative[i] * w[d - i];
+        he[d] += Real(binom[d][i]) * (gv.truncation[i] + eps * gv.largest_term[i]) * abs(w[d - i]);
       }
-      for (int d = 0; d <= max_derivative; ++d) {
-        out.value[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)] = f[static_cast<std::size_t>(d)];
-        out.error[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)] = fe[static_cast<std::size_t>(d)];
-      }
-    }
-    return out;
+    sigma_derivatives_of_odd(j, sigma, eta, h, he, max_derivative, out);
   }
 
- private:
+  // D^k (sigma h(eta)) from the eta-derivatives h, with their error bounds he.
+  void sigma_derivatives_of_odd(std::size_t j, const Real& sigma, const Real& eta, const std::array<Real, 4>& h,
+                                const std::array<Real, 4>& he, int max_derivative, BasisValues<Real>& out) const {
+    using std::abs;
+    const Real q = sigma * sigma;
+    const Real C = Real(1) + eta;
+    auto& f = out.value[j];
+    auto& fe = out.error[j];
+    const Real qc = q / C, iC2 = Real(1) / (C * C), iC3 = iC2 / C;
+    f[0] = sigma * h[0];
+    fe[0] = abs(sigma) * he[0];
+    if (max_derivative >= 1) {
+      f[1] = h[0] + qc * h[1];
+      fe[1] = he[0] + qc * he[1];
+    }
+    const Real e1p = (Real(2) + iC2) * h[1] + qc * h[2];
+    const Real e1pe = (Real(2) + iC2) * he[1] + qc * he[2];
+    if (max_derivative >= 2) {
+      f[2] = sigma / C * e1p;
+      fe[2] = abs(sigma) / C * e1pe;
+    }
+    if (max_derivative >= 3) {
+      const Real e1pp = Real(-2) * iC3 * h[1] + (Real(3) + Real(2) * iC2) * h[2] + qc * h[3];
+      const Real e1ppe = Real(2) * iC3 * he[1] + (Real(3) + Real(2) * iC2) * he[2] + qc * he[3];
+      f[3] = iC3 * e1p + q * iC2 * e1pp;
+      fe[3] = iC3 * e1pe + q * iC2 * e1ppe;
+    }
+  }
+
+  // Basis function j from expansion k as a series in eta, U_j = F_j(|xi|) (even) or
+  // sign(sigma) F_j(|xi|) (odd), converted to sigma-derivatives (D eta = sigma / C).
+  void from_series_in_eta(std::size_t j, int k, bool odd, const Real& sigma, const Real& eta, int max_derivative,
+                          BasisValues<Real>& out) const {
+    using std::abs;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const SeriesValue<Real> v = raw_derivatives(k, static_cast<int>(j), eta, max_derivative);
+    std::array<Real, 4> F{}, Fe{};
+    for (const auto& x : v.largest_term) out.largest_term[j] = std::max(out.largest_term[j], x);
+    for (std::size_t d = 0; d <= static_cast<std::size_t>(max_derivative); ++d) {
+      F[d] = v.derivative[d];
+      Fe[d] = v.truncation[d] + eps * v.largest_term[d];
+    }
+    const Real q = sigma * sigma;
+    const Real C = Real(1) + eta;
+    const Real sign = (odd && sigma < Real(0)) ? Real(-1) : Real(1);
+    const Real iC = Real(1) / C, iC2 = iC * iC, iC3 = iC2 * iC;
+    auto& f = out.value[j];
+    auto& fe = out.error[j];
+    f[0] = sign * F[0];
+    fe[0] = Fe[0];
+    if (max_derivative >= 1) {
+      f[1] = sign * sigma * iC * F[1];
+      fe[1] = abs(sigma) * iC * Fe[1];
+    }
+    if (max_derivative >= 2) {
+      f[2] = sign * (q * iC2 * F[2] + iC3 * F[1]);
+      fe[2] = q * iC2 * Fe[2] + iC3 * Fe[1];
+    }
+    if (max_derivative >= 3) {
+      f[3] = sign * sigma * (q * iC3 * F[3] + Real(3) * iC2 * iC2 * F[2] - Real(3) * iC2 * iC3 * F[1]);
+      fe[3] = abs(sigma) * (q * iC3 * Fe[3] + Real(3) * iC2 * iC2 * Fe[2] + Real(3) * iC2 * iC3 * Fe[1]);
+    }
+  }
+
   double radius(double c) const {
     double r = 1e300;
     for (const auto& s : singular_)

@@ -4,7 +4,7 @@
 ///
 ///     sum_{k=0}^{n} p_k(x) y^{(k)}(x) = 0,      p_k(x) = sum_j p_{k,j} x^j,
 ///
-/// used by the `frobenius` solver (Gale 1976, seed 003, sec. II.4) but independent of it.
+/// used by the `frobenius` solver (Gale 1976, sec. II.4; docs/references.md) but independent of it.
 ///
 /// About a regular singular (or ordinary) point x = 0, substituting y = sum_m a_m x^{m+r} and
 /// collecting the power x^{N + r + d_min} gives, with the shift polynomials
