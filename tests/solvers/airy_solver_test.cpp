@@ -132,7 +132,7 @@ TEST(AirySolver, ReproducesThePapersExactColumnForEpsPoint18) {
   // Grinfogel's 'exact' column (his program for the same Airy model), eps = 0.18 rows, h = 1
   // assumed (not stated). Measured: |airy - exact| <= 6.0e-4 in kL/pi (5 of 8 rows within
   // 1.3e-4); the eps = 0.49 rows differ by up to 1.2e-2 near cross-over and are reported in
-  // verification/reference/grinfogel-table-2-2-comparison.csv, not tested here.
+  // verification/comparisons/grinfogel-table-2-2-comparison.csv, not tested here.
   constexpr double kAbsTolKLOverPi = 1e-3;
   const CsvTable table =
       read_csv_table(catena::testing::published_table("grinfogel-1984-table-2-2-frequencies.csv"));

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "shooting_test_strings.hpp"
 #include "solvers/solver_test_support.hpp"
 

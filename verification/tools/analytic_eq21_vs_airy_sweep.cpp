@@ -1,4 +1,4 @@
-// Regenerates verification/reference/grinfogel-eq21-vs-airy-sweep.csv: Grinfogel's eq. (21)
+// Regenerates verification/comparisons/grinfogel-eq21-vs-airy-sweep.csv: Grinfogel's eq. (21)
 // (asymptotic solver) against Triantafyllou's Airy determinant (airy solver) over eps, phi and
 // lambda^2, first 8 in-plane modes. Both are asymptotic models of the same cable, so their
 // difference should be O(eps^2): the table gives, per (eps, phi), the largest relative frequency
@@ -6,11 +6,7 @@
 // occurs. Cases whose 8th mode reaches half the first axial frequency (which eq. 21 lacks) are
 // skipped and counted. A missing Airy root would show up as a difference of order one.
 //
-// Build and run (from the repository root, after building the library in build/):
-// clang-format off
-//   g++ -std=c++20 -O2 -Iinclude -Isrc -I/usr/include/eigen3 verification/tools/analytic_eq21_vs_airy_sweep.cpp build/libcatena.a -lfmt -o build/analytic_eq21_vs_airy_sweep
-//   build/analytic_eq21_vs_airy_sweep verification/reference/grinfogel-eq21-vs-airy-sweep.csv
-// clang-format on
+// Usage: catena_analytic_eq21_vs_airy_sweep [REPOSITORY_ROOT] (built with -DCATENA_BUILD_TOOLS=ON).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -22,30 +18,19 @@
 #include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
-
-namespace {
-
-std::string generated_line() {
-  return "generated: " + catena::utc_timestamp() + ", " + catena::provenance();
-}
-
-}  // namespace
+#include "common/repository_paths.hpp"
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: %s OUT.csv\n", argv[0]);
-    return 2;
-  }
+  const catena_tools::RepositoryPaths paths = catena_tools::repository_paths(argc, argv);
   constexpr int kModes = 8;
   constexpr int kLambdaPoints = 25;
   catena::CsvTable out;
   out.comments = {
-      "verification/reference/grinfogel-eq21-vs-airy-sweep.csv",
+      "verification/comparisons/grinfogel-eq21-vs-airy-sweep.csv",
       "source:    eq. (21) (asymptotic solver) vs Triantafyllou's Airy determinant (airy solver, "
       "defaults)",
-      "generator: verification/tools/analytic_eq21_vs_airy_sweep.cpp (build/run commands in its "
-      "header)",
-      generated_line(),
+      "generator: verification/tools/analytic_eq21_vs_airy_sweep.cpp (catena_analytic_eq21_vs_airy_sweep)",
+      catena_tools::generated_line(),
       "problem:   make_taut_inclined_problem(eps, phi_deg, lambda2, h = 1), lambda2 = 10^(-1 + 5 "
       "j/24), j = 0..24",
       "columns:   max_rel_diff_over_eps2 = max over lambda2 and modes 1..8 of |airy/eq21 - 1| / "
@@ -101,6 +86,6 @@ int main(int argc, char** argv) {
                           fmt::format("{}", skipped)});
     }
   }
-  catena::write_csv_table(argv[1], out);
+  catena::write_csv_table(paths.comparisons + "/grinfogel-eq21-vs-airy-sweep.csv", out);
   return 0;
 }

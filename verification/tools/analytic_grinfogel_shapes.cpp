@@ -1,20 +1,18 @@
 // Regenerates two comparison tables of Grinfogel's closed-form modes against the Airy model
 // (Triantafyllou's solution, the paper's own 'exact' reference, solved by catena's airy solver):
 //
-// 1. verification/reference/grinfogel-shapes-34-vs-airy.csv: max |w - w_airy| over the cable
+// 1. verification/comparisons/grinfogel-shapes-34-vs-airy.csv: max |w - w_airy| over the cable
 //    (both normalised to max|w| = 1, modal_result.hpp) for the transverse shapes of eq. (34),
 //    eq. (34) with its second-order bracket multiplied by eps^2 sin(phi) as printed (instead of
 //    eps^2 sin^2(phi) as in eqs. 29, 32), and eq. (28); same for u from eq. (37); and the dynamic
 //    tension of eq. (38) vs the Airy model's m w^2 v (per unit max normal amplitude).
-// 2. verification/reference/grinfogel-fig-4-3-2-tension.csv: the first mode's dynamic tension
+// 2. verification/comparisons/grinfogel-fig-4-3-2-tension.csv: the first mode's dynamic tension
 //    against lambda^2 through cross-over (the amplification of the paper's Fig. 4.3.2), eq. (38) vs
 //    the Airy model, eps = 0.18, phi = 23.46 deg, h = 1.
 //
-// Build and run (from the repository root, after building the library in build/):
-// clang-format off
-//   g++ -std=c++20 -O2 -Iinclude -Isrc -I/usr/include/eigen3 verification/tools/analytic_grinfogel_shapes.cpp build/libcatena.a -lfmt -o build/analytic_grinfogel_shapes
-//   build/analytic_grinfogel_shapes verification/reference
-// clang-format on
+// Usage: catena_analytic_grinfogel_shapes [REPOSITORY_ROOT] (built with -DCATENA_BUILD_TOOLS=ON).
+// Uses two private headers (an exception listed in verification/tools/CMakeLists.txt): the
+// printed reading of eq. (34) is not a solver option.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -26,6 +24,7 @@
 #include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
+#include "common/repository_paths.hpp"
 #include "solvers/internal/asymptotic_formulas.hpp"
 #include "solvers/internal/mode_tools.hpp"
 
@@ -68,19 +67,10 @@ Solved make(double eps, double phi_deg, double lambda2) {
   return s;
 }
 
-// "generated: <UTC date>, catena <version> (git <hash>, <compiler>, <build type>)".
-std::string generated_line() {
-  return "generated: " + catena::utc_timestamp() + ", " + catena::provenance();
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: %s OUTPUT_DIRECTORY\n", argv[0]);
-    return 2;
-  }
-  const std::string directory = argv[1];
+  const std::string directory = catena_tools::repository_paths(argc, argv).comparisons;
   catena::SolveRequest request;
   request.inplane_modes = 2;
   request.shapes = true;
@@ -89,13 +79,12 @@ int main(int argc, char** argv) {
 
   catena::CsvTable shapes;
   shapes.comments = {
-      "verification/reference/grinfogel-shapes-34-vs-airy.csv",
+      "verification/comparisons/grinfogel-shapes-34-vs-airy.csv",
       "source:    Grinfogel (1984) eqs. (34), (28), (37), (38) (asymptotic solver) vs "
       "Triantafyllou's Airy",
       "           model (airy solver, curvature_fit tangent); phi = 30 deg, h = 1, 401 stations",
-      "generator: verification/tools/analytic_grinfogel_shapes.cpp (build/run commands in its "
-      "header)",
-      generated_line(),
+      "generator: verification/tools/analytic_grinfogel_shapes.cpp (catena_analytic_grinfogel_shapes)",
+      catena_tools::generated_line(),
       "columns:   max_abs_dw_* = max_s |w - w_airy| with both normalised to max|w| = 1 [-]:",
       "           34 = eq. (34) with eps^2 sin^2(phi) (as in eqs. 29, 32; our reading),",
       "           34_printed = eq. (34) with eps^2 sin(phi) as printed, 28 = eq. (28);",
@@ -155,15 +144,14 @@ int main(int argc, char** argv) {
 
   catena::CsvTable sweep;
   sweep.comments = {
-      "verification/reference/grinfogel-fig-4-3-2-tension.csv",
+      "verification/comparisons/grinfogel-fig-4-3-2-tension.csv",
       "source:    Grinfogel (1984) Fig. 4.3.2: dynamic tension of the first mode vs lambda^2 near "
       "cross-over;",
       "           eq. (38) (asymptotic solver) vs Triantafyllou's Airy model (airy solver), eps = "
       "0.18,",
       "           phi = 23.46 deg, h = 1, L = 1 m, T0 = 1 N, M = 1 kg/m",
-      "generator: verification/tools/analytic_grinfogel_shapes.cpp (build/run commands in its "
-      "header)",
-      generated_line(),
+      "generator: verification/tools/analytic_grinfogel_shapes.cpp (catena_analytic_grinfogel_shapes)",
+      catena_tools::generated_line(),
       "columns:   tension = max_s |tau| per unit max normal amplitude [N/m] (modal_result.hpp "
       "normalisation)",
   };

@@ -1,14 +1,10 @@
-// Regenerates verification/reference/grinfogel-table-2-2-comparison.csv: every row of Grinfogel
+// Regenerates verification/comparisons/grinfogel-table-2-2-comparison.csv: every row of Grinfogel
 // (1984)'s tables after Fig. 2.2 (verification/reference/published/grinfogel-1984-table-2-2-
 // frequencies.csv) beside our `asymptotic` value (eq. 21; vs the 'approx' column) and our `airy`
 // value (Triantafyllou's Airy determinant; vs the 'exact' column), with the differences and
 // whether they exceed half a unit of the last printed digit (5e-5 in kL/pi).
 //
-// Build and run (from the repository root, after building the library in build/):
-// clang-format off
-//   g++ -std=c++20 -O2 -Iinclude -Isrc -I/usr/include/eigen3 verification/tools/analytic_grinfogel_table.cpp build/libcatena.a -lfmt -o build/analytic_grinfogel_table
-//   build/analytic_grinfogel_table verification/reference/published/grinfogel-1984-table-2-2-frequencies.csv verification/reference/grinfogel-table-2-2-comparison.csv
-// clang-format on
+// Usage: catena_analytic_grinfogel_table [REPOSITORY_ROOT] (built with -DCATENA_BUILD_TOOLS=ON).
 //
 // The paper gives no mass ratio for these tables; h = m/M = 1 (no added mass) is used (eq. 21
 // does not depend on h; the Airy model does, weakly, through Q = h (M w^2/EA - alpha^2)), and a
@@ -26,6 +22,7 @@
 #include "catena/solvers/asymptotic_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "common/repository_paths.hpp"
 
 namespace {
 
@@ -68,29 +65,21 @@ std::string verdict(double difference, int digits) {
   return "disagree";
 }
 
-// "generated: <UTC date>, catena <version> (git <hash>, <compiler>, <build type>)".
-std::string generated_line() {
-  return "generated: " + catena::utc_timestamp() + ", " + catena::provenance();
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: %s PUBLISHED.csv OUT.csv\n", argv[0]);
-    return 2;
-  }
-  const catena::CsvTable published = catena::read_csv_table(argv[1]);
+  const catena_tools::RepositoryPaths paths = catena_tools::repository_paths(argc, argv);
+  const catena::CsvTable published =
+      catena::read_csv_table(paths.published + "/grinfogel-1984-table-2-2-frequencies.csv");
   catena::CsvTable out;
   out.comments = {
-      "verification/reference/grinfogel-table-2-2-comparison.csv",
+      "verification/comparisons/grinfogel-table-2-2-comparison.csv",
       "source:    Grinfogel (1984) tables after Fig. 2.2 "
       "(published/grinfogel-1984-table-2-2-frequencies.csv)",
       "           beside catena's asymptotic (eq. 21) and airy (Triantafyllou's Airy determinant) "
       "solvers",
-      "generator: verification/tools/analytic_grinfogel_table.cpp (build/run commands in its "
-      "header)",
-      generated_line(),
+      "generator: verification/tools/analytic_grinfogel_table.cpp (catena_analytic_grinfogel_table)",
+      catena_tools::generated_line(),
       "problem:   make_taut_inclined_problem(eps, phi_deg, lambda2, h = 1); frequencies as kL/pi",
       "columns:   asymptotic_minus_approx, airy_minus_exact = ours - published; *_verdict: 'agree' "
       "when",
@@ -154,6 +143,6 @@ int main(int argc, char** argv) {
          fmt::format("{:.6f}", airy_h05), fmt::format("{:+.4f}", approx - exact),
          fmt::format("{:+.6f}", asymptotic - airy)});
   }
-  catena::write_csv_table(argv[2], out);
+  catena::write_csv_table(paths.comparisons + "/grinfogel-table-2-2-comparison.csv", out);
   return 0;
 }

@@ -1,4 +1,4 @@
-// Regenerates verification/reference/fe-gale-B3-B4-comparison.csv: every printed entry of Gale
+// Regenerates verification/comparisons/fe-gale-B3-B4-comparison.csv: every printed entry of Gale
 // (1976) Tables B-3 (in-plane) and B-4 (out-of-plane) frequency ratios w / sqrt(g/a) of the
 // inextensible catenary, against the `fe` solver (N = 800 and 1600 with Richardson, penalty
 // kappa = 1e-6 and 2e-6 extrapolated to 0).
@@ -16,9 +16,7 @@
 // 0.005 half a unit of the printed frequency and err our own error estimate. Never tune anything
 // to these flags: they are findings (see the fe report for the evidence on the large ones).
 //
-// Build and run (from the build tree, benchmarks enabled):
-//   cmake -S . -B build -DCATENA_BUILD_BENCHMARKS=ON && cmake --build build --target catena_fe_gale_comparison
-//   ./build/benchmarks/catena_fe_gale_comparison verification/reference
+// Usage: catena_fe_gale_comparison [REPOSITORY_ROOT] (built with -DCATENA_BUILD_TOOLS=ON).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -29,6 +27,7 @@
 #include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
+#include "common/repository_paths.hpp"
 
 using namespace catena;
 
@@ -61,19 +60,19 @@ Solved solve_row(const Problem& problem, Plane plane, const FeSolverOptions& opt
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string directory = argc > 1 ? argv[1] : "verification/reference";
+  const catena_tools::RepositoryPaths paths = catena_tools::repository_paths(argc, argv);
   FeSolverOptions options;
   options.elements = 800;
   options.richardson = true;
 
   CsvTable out;
   out.comments = {
-      "verification/reference/fe-gale-B3-B4-comparison.csv",
+      "verification/comparisons/fe-gale-B3-B4-comparison.csv",
       "source:    Gale (1976) Tables B-3 (in-plane) and B-4 (out-of-plane), published/gale-1976-table-B3-inplane.csv "
       "and -B4-outofplane.csv, as printed",
       "ours:      catena fe solver, N = 800 and 1600 elements with Richardson, penalty kappa = 1e-6 and 2e-6 "
       "extrapolated to 0; geometry from (h_over_b, sag_param); omega_from_printed_xi uses the printed xi1, xi2",
-      "generator: verification/tools/fe_gale_comparison.cpp (see its header for the command)",
+      "generator: verification/tools/fe_gale_comparison.cpp (catena_fe_gale_comparison)",
       "columns:   table, h_over_b, sag_param, printed xi1 xi2, our xi1 xi2 from (h/b, sag), mode, printed w_n, "
       "ours (from h/b, sag), ours - printed, our relative error estimate, ours from the printed xi, its "
       "difference, xi_rounding_band (change of ours for xi1, xi2 + 0.0005), beyond_rounding = yes when neither "
@@ -87,7 +86,7 @@ int main(int argc, char** argv) {
   for (const auto& [table_name, file, plane] :
        {std::tuple{"B-3", "gale-1976-table-B3-inplane.csv", Plane::InPlane},
         std::tuple{"B-4", "gale-1976-table-B4-outofplane.csv", Plane::OutOfPlane}}) {
-    const CsvTable table = read_csv_table(directory + "/published/" + file);
+    const CsvTable table = read_csv_table(paths.published + "/" + file);
     for (std::size_t row = 0; row < table.rows.size(); ++row) {
       const double h_over_b = *table.number(row, "h_over_b");
       const double sag = *table.number(row, "sag_param");
@@ -131,7 +130,7 @@ int main(int argc, char** argv) {
   }
   out.comments.push_back(fmt::format("summary:   {} of {} printed entries differ by more than the printed rounding",
                                      flagged, total));
-  write_csv_table(directory + "/fe-gale-B3-B4-comparison.csv", out);
+  write_csv_table(paths.comparisons + "/fe-gale-B3-B4-comparison.csv", out);
   std::printf("%d of %d printed entries beyond rounding\n", flagged, total);
   return 0;
 }

@@ -1,4 +1,4 @@
-// Regenerates verification/reference/fe-gale-C2-comparison.csv: every row of Gale (1976)
+// Regenerates verification/comparisons/fe-gale-C2-comparison.csv: every row of Gale (1976)
 // Table C-2 (in-plane forced motion of the inextensible catenary: end xi1 fixed, end xi2 driven
 // tangentially with amplitude 0.01 a; printed: the maximum |dynamic tension| / S0, S0 = H) against
 // the `fe` solver's forced response (one sparse solve of (K - w^2 M) x = -K_ib d per frequency, on
@@ -10,9 +10,7 @@
 // frequency and its own rounding (the column sensitivity gives the change of ours for
 // wf + 0.005, half a unit of the printed frequency). Never tune anything to these flags.
 //
-// Build and run (from the build tree, benchmarks enabled):
-//   cmake -S . -B build -DCATENA_BUILD_BENCHMARKS=ON && cmake --build build --target catena_fe_gale_forced_comparison
-//   ./build/benchmarks/catena_fe_gale_forced_comparison verification/reference
+// Usage: catena_fe_gale_forced_comparison [REPOSITORY_ROOT] (built with -DCATENA_BUILD_TOOLS=ON).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -24,6 +22,7 @@
 #include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
+#include "common/repository_paths.hpp"
 
 using namespace catena;
 
@@ -73,16 +72,16 @@ double static_tension_check(const Problem& problem) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string directory = argc > 1 ? argv[1] : "verification/reference";
-  const CsvTable table = read_csv_table(directory + "/published/gale-1976-table-C2-forced-max-tension.csv");
+  const catena_tools::RepositoryPaths paths = catena_tools::repository_paths(argc, argv);
+  const CsvTable table = read_csv_table(paths.published + "/gale-1976-table-C2-forced-max-tension.csv");
   CsvTable out;
   out.comments = {
-      "verification/reference/fe-gale-C2-comparison.csv",
+      "verification/comparisons/fe-gale-C2-comparison.csv",
       "source:    Gale (1976) Table C-2, published/gale-1976-table-C2-forced-max-tension.csv, as printed",
       "ours:      catena fe solver forced response, tangential end displacement 0.01 a at end b, N = 1600 "
       "elements (the finer Richardson mesh; no extrapolation of the response), kappa = 1e-6 and 2e-6 "
       "extrapolated to 0, tension sampled on 401 stations",
-      "generator: verification/tools/fe_gale_forced_comparison.cpp (see its header for the command)",
+      "generator: verification/tools/fe_gale_forced_comparison.cpp (catena_fe_gale_forced_comparison)",
       "columns:   h_over_b, sag_param, wf (forcing w / sqrt(g/a)), printed tmax, ours, ours - printed, "
       "sensitivity = ours(wf + 0.005) - ours(wf), beyond_rounding = |ours - printed| > 0.0005 + |sensitivity|, "
       "static_check (wf = 0 only) = the same quantity from finite differences of the exact nonlinear statics "
@@ -111,7 +110,7 @@ int main(int argc, char** argv) {
   }
   out.comments.push_back(fmt::format("summary:   {} of {} printed entries differ by more than the printed rounding",
                                      flagged, table.rows.size()));
-  write_csv_table(directory + "/fe-gale-C2-comparison.csv", out);
+  write_csv_table(paths.comparisons + "/fe-gale-C2-comparison.csv", out);
   std::printf("%d of %zu printed entries beyond rounding\n", flagged, table.rows.size());
   return 0;
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # Naive, independent check of the out-of-plane frequency ratios of Gale's inextensible catenary
 # (used as evidence for the Table B-4 entries that disagree with the fe solver; see
-# verification/reference/fe-gale-B3-B4-comparison.csv). Pure Python, no dependencies:
+# verification/comparisons/fe-gale-B3-B4-comparison.csv). Pure Python, no dependencies:
 # shooting on (T v')' + w^2 v = 0 with T = sqrt(1 + s^2) (a = H/W0 = 1 m, W0 = 1 N/m, m = 1 kg/m,
 # so w is Gale's ratio), s = sigma in [sigma(xi1), sigma(xi2)], v(sigma1) = 0, classical RK4 with
 # 3000 steps (error ~1e-6 here), roots of v(sigma2; w) by scan (step 0.02) and bisection.

@@ -4,7 +4,8 @@
 // as on the positive side, i.e. with |sigma| and derivatives in |xi| (the sign of d/dxi = -d/d|xi|
 // lost). Prints, at the printed stations, our U, V, T and the "positive-side formula" V_G, T_G
 // (with sigma or |sigma| in the explicit factors of eq. 2.37) beside the printed values.
-// Run: verification/tools/frobenius_run_tool.sh frobenius_c3_hypothesis
+// Usage: catena_frobenius_c3_hypothesis (built with -DCATENA_BUILD_TOOLS=ON). Uses a private header
+// (an exception listed in verification/tools/CMakeLists.txt): it needs the series basis itself.
 #include <cmath>
 #include <cstdio>
 #include <vector>

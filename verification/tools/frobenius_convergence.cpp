@@ -1,12 +1,10 @@
 // Deep sag beyond Gale's thesis and convergence in the number of series terms.
-// Writes verification/reference/frobenius-deep-sag.csv (h/b = 0, xi2 = -xi1 in {4, 6, 8}: six in-plane
+// Writes verification/comparisons/frobenius-deep-sag.csv (h/b = 0, xi2 = -xi1 in {4, 6, 8}: six in-plane
 // and six out-of-plane frequencies at tolerance 1e-12 and 1e-15, their difference, and an
-// independent Boost.Odeint direct integration in sigma) and verification/reference/
+// independent Boost.Odeint direct integration in sigma) and verification/comparisons/
 // frobenius-convergence.csv (relative error of modes 1 and 6 vs the cap on terms per expansion,
 // for a shallow case, h/b = 0, sag 0.90, and a deep one, xi = +-8).
-// Run: verification/tools/frobenius_run_tool.sh frobenius_convergence .
-#include <array>
-#include <boost/numeric/odeint.hpp>
+// Usage: catena_frobenius_convergence [REPOSITORY_ROOT] (built with -DCATENA_BUILD_TOOLS=ON).
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -17,6 +15,8 @@
 #include "catena/solvers/frobenius_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "common/repository_paths.hpp"
+#include "common/sigma_ode.hpp"
 
 using namespace catena;
 
@@ -57,55 +57,19 @@ Run solve(const Problem& problem, int modes, double tolerance, int max_terms) {
   return run;
 }
 
-// Independent: direct integration in sigma (u, w, phi, tau) / (v, C v'), bisection near a guess.
-template <int N>
-std::array<double, N> integrate(std::array<double, N> y, double s1, double s2, double w2) {
-  namespace odeint = boost::numeric::odeint;
-  auto rhs = [w2](const std::array<double, N>& x, std::array<double, N>& dx, double s) {
-    const double C = std::sqrt(1.0 + s * s);
-    if constexpr (N == 4) {
-      dx[0] = x[1] / (C * C);
-      dx[1] = x[2] - x[0] / (C * C);
-      dx[2] = (-x[3] / (C * C) - w2 * x[1] - (s / C) * x[2]) / C;
-      dx[3] = x[2] / C - w2 * x[0];
-    } else {
-      dx[0] = x[1] / C;
-      dx[1] = -w2 * x[0];
-    }
-  };
-  odeint::integrate_adaptive(odeint::make_controlled(1e-15, 1e-14, odeint::runge_kutta_fehlberg78<std::array<double, N>>()),
-                             rhs, y, s1, s2, (s2 - s1) / 400.0);
-  return y;
-}
-
-double shooting(bool inplane, double s1, double s2, double omega) {
-  if (inplane) {
-    const auto a = integrate<4>({0, 0, 1, 0}, s1, s2, omega * omega);
-    const auto b = integrate<4>({0, 0, 0, 1}, s1, s2, omega * omega);
-    return a[0] * b[1] - a[1] * b[0];
-  }
-  return integrate<2>({0, 1}, s1, s2, omega * omega)[0];
-}
-
+// Independent: direct RKF78 integration in sigma (common/sigma_ode.hpp), bisection near a guess.
 double odeint_root(bool inplane, double s1, double s2, double guess) {
-  double lo = guess * (1 - 2e-3), hi = guess * (1 + 2e-3), flo = shooting(inplane, s1, s2, lo);
-  if ((flo < 0) == (shooting(inplane, s1, s2, hi) < 0)) return NAN;
-  for (int it = 0; it < 55; ++it) {
-    const double mid = 0.5 * (lo + hi), fm = shooting(inplane, s1, s2, mid);
-    if ((fm < 0) == (flo < 0)) {
-      lo = mid;
-      flo = fm;
-    } else {
-      hi = mid;
-    }
-  }
-  return 0.5 * (lo + hi);
+  catena_tools::SigmaOdeSettings settings;
+  settings.abs_tol = 1e-15;
+  settings.rel_tol = 1e-14;
+  settings.initial_divisions = 400.0;
+  return catena_tools::bisect_natural_frequency(inplane, s1, s2, guess, 2e-3, 55, settings);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string root = argc > 1 ? argv[1] : ".";
+  const catena_tools::RepositoryPaths paths = catena_tools::repository_paths(argc, argv);
   CsvTable deep;
   deep.comments = {"Deep sag beyond Gale (1976): h/b = 0, xi2 = -xi1 (verification/tools/frobenius_convergence.cpp).",
                    "omega = w / sqrt(g/a). tol12 / tol15: solver tolerance 1e-12 / 1e-15 (more terms);",
@@ -131,7 +95,7 @@ int main(int argc, char** argv) {
                              fmt(std::abs(r - y) / y, "%.1e")});
       }
   }
-  write_csv_table(root + "/verification/reference/frobenius-deep-sag.csv", deep);
+  write_csv_table(paths.comparisons + "/frobenius-deep-sag.csv", deep);
 
   CsvTable conv;
   conv.comments = {"Convergence of the frobenius solver in the number of series terms (verification/tools/frobenius_convergence.cpp).",
@@ -156,6 +120,6 @@ int main(int argc, char** argv) {
       conv.rows.push_back({c.name, std::to_string(terms), fmt(e1, "%.1e"), fmt(e6, "%.1e"), fmt(o1, "%.1e"), fmt(o6, "%.1e")});
     }
   }
-  write_csv_table(root + "/verification/reference/frobenius-convergence.csv", conv);
+  write_csv_table(paths.comparisons + "/frobenius-convergence.csv", conv);
   return 0;
 }

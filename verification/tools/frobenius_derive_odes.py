@@ -3,7 +3,7 @@
 Gale (1976) eqs. 2.35, 2.37, 2.42, 2.44, and prints the polynomial coefficients of the equations in
 eta = |xi| that src/solvers/internal/frobenius_odes.cpp encodes.
 
-Model (DESIGN.md 1.3, EA = inf), lengths in units of a = H/W0, tension in units of H, sigma = s/a
+Model (docs/physics.md, "Linear dynamics", EA = inf), lengths in units of a = H/W0, tension in units of H, sigma = s/a
 measured from the apex, C = sqrt(1+sigma^2) (static tension / H), curvature 1/(a C^2).
 Unknowns: u (tangential), w (normal), phi = rotation of the tangent, tau = dynamic tension.
   inextensibility          u' = w / C^2

@@ -1,9 +1,9 @@
-// Regenerates verification/reference/frobenius-gale-forced-comparison.csv (Gale 1976 Table C-2: max
+// Regenerates verification/comparisons/frobenius-gale-forced-comparison.csv (Gale 1976 Table C-2: max
 // dynamic tension / H for end xi2 driven tangentially with amplitude 0.01 a, xi1 fixed) and
-// verification/reference/frobenius-gale-forced-distribution.csv (Table C-3: U, V, T along the cable,
+// verification/comparisons/frobenius-gale-forced-distribution.csv (Table C-3: U, V, T along the cable,
 // h/b = 0, sag 0.70, wf = 1.32 and 1.36), and prints the in-plane natural frequencies near the
 // forcing frequencies (resonances explain the large printed tensions).
-// Run: verification/tools/frobenius_run_tool.sh frobenius_gale_forced .
+// Usage: catena_frobenius_gale_forced [REPOSITORY_ROOT] (built with -DCATENA_BUILD_TOOLS=ON).
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -14,6 +14,7 @@
 #include "catena/solvers/frobenius_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "common/repository_paths.hpp"
 
 using namespace catena;
 
@@ -49,8 +50,8 @@ Forced forced(const Problem& problem, const std::vector<double>& omegas, int poi
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string root = argc > 1 ? argv[1] : ".";
-  const CsvTable c2 = read_csv_table(root + "/verification/reference/published/gale-1976-table-C2-forced-max-tension.csv");
+  const catena_tools::RepositoryPaths paths = catena_tools::repository_paths(argc, argv);
+  const CsvTable c2 = read_csv_table(paths.published + "/gale-1976-table-C2-forced-max-tension.csv");
   CsvTable out;
   out.comments = {"Gale (1976) Table C-2 vs the frobenius solver (verification/tools/frobenius_gale_forced.cpp).",
                   "End xi1 fixed, end xi2 driven tangentially, amplitude 0.01 a; tmax = max |T| / H over 4001 stations.",
@@ -76,10 +77,10 @@ int main(int argc, char** argv) {
     std::printf("C-2 h/b=%.2f sag=%.2f wf=%.3f printed %.3f ours %.4f (nearest mode %d at %.5f)\n", hb, sag, wf, printed,
                 ours, nearest, nearest_omega);
   }
-  write_csv_table(root + "/verification/reference/frobenius-gale-forced-comparison.csv", out);
+  write_csv_table(paths.comparisons + "/frobenius-gale-forced-comparison.csv", out);
 
   // Table C-3: along the cable at 12 points equally spaced in xi, interpolated from 20001 stations.
-  const CsvTable c3 = read_csv_table(root + "/verification/reference/published/gale-1976-table-C3-forced-distribution.csv");
+  const CsvTable c3 = read_csv_table(paths.published + "/gale-1976-table-C3-forced-distribution.csv");
   CsvTable dist;
   dist.comments = {"Gale (1976) Table C-3 vs the frobenius solver (verification/tools/frobenius_gale_forced.cpp).",
                    "h/b = 0, sag 0.70, end xi2 driven tangentially (0.01 a); U, V in units of a, T / H; ours interpolated",
@@ -114,6 +115,6 @@ int main(int argc, char** argv) {
     for (const auto& mode : r.output.inplane->modes) std::printf(" %.5f", *mode.gale_ratio);
     std::printf("\n");
   }
-  write_csv_table(root + "/verification/reference/frobenius-gale-forced-distribution.csv", dist);
+  write_csv_table(paths.comparisons + "/frobenius-gale-forced-distribution.csv", dist);
   return 0;
 }

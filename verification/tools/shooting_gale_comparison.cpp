@@ -1,4 +1,4 @@
-// Generates verification/reference/shooting-gale-B3-B4-comparison.csv: every printed entry of
+// Generates verification/comparisons/shooting-gale-B3-B4-comparison.csv: every printed entry of
 // Gale (1976) Tables B-3 (in-plane) and B-4 (out-of-plane), w / sqrt(g/a) for the inextensible
 // catenary, against the `shooting` solver run with EA = inf exactly.
 //
@@ -9,12 +9,7 @@
 // column shows up. An entry is flagged when |published - ours (geometry)| exceeds the printed
 // rounding, 0.005 (two decimals).
 //
-// Build and run from the repository root after building the library (Release):
-//   g++ -O2 -std=c++20 -Iinclude -Isrc -I/usr/include/eigen3 \
-//       verification/tools/shooting_gale_comparison.cpp -o build/shooting_gale_comparison \
-//       -Lbuild -lcatena -lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense \
-//       -lsundials_sunlinsoldense -lfmt
-//   build/shooting_gale_comparison verification/reference
+// Usage: catena_shooting_gale_comparison [REPOSITORY_ROOT] (built with -DCATENA_BUILD_TOOLS=ON).
 // rtol 1e-12: the frequencies are exact to ~1e-11, far below the printed two decimals.
 #include <fmt/format.h>
 
@@ -25,6 +20,7 @@
 #include "catena/io/csv_table.hpp"
 #include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
+#include "common/repository_paths.hpp"
 
 namespace {
 
@@ -66,10 +62,10 @@ PlaneSolution solve(const Problem& problem, bool inplane, int modes) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string reference = argc > 1 ? argv[1] : "verification/reference";
+  const catena_tools::RepositoryPaths paths = catena_tools::repository_paths(argc, argv);
   CsvTable out;
   out.comments = {
-      "verification/reference/shooting-gale-B3-B4-comparison.csv",
+      "verification/comparisons/shooting-gale-B3-B4-comparison.csv",
       "source:    Gale (1976) Tables B-3 (in-plane) and B-4 (out-of-plane), transcribed in "
       "published/gale-1976-table-B3-inplane.csv and published/gale-1976-table-B4-outofplane.csv",
       "method:    shooting solver (CVODE Adams, rtol 1e-12, EA = inf exactly), cable from "
@@ -78,7 +74,7 @@ int main(int argc, char** argv) {
       "published w/sqrt(g/a), ours from the geometry, ours from the printed xi, difference "
       "(published - ours geometry), beyond_rounding (|difference| > 0.005), our relative error "
       "estimate",
-      "generator: verification/tools/shooting_gale_comparison.cpp (build command in its header)",
+      "generator: verification/tools/shooting_gale_comparison.cpp (catena_shooting_gale_comparison)",
   };
   out.columns = {"table",
                  "h_over_b",
@@ -98,7 +94,7 @@ int main(int argc, char** argv) {
   for (const auto& [name, file, inplane] :
        {std::tuple{"B-3", "gale-1976-table-B3-inplane.csv", true},
         std::tuple{"B-4", "gale-1976-table-B4-outofplane.csv", false}}) {
-    const CsvTable table = read_csv_table(reference + "/published/" + file);
+    const CsvTable table = read_csv_table(paths.published + "/" + file);
     for (std::size_t row = 0; row < table.rows.size(); ++row) {
       const double h_over_b = *table.number(row, "h_over_b");
       const double sag = *table.number(row, "sag_param");
@@ -131,7 +127,7 @@ int main(int argc, char** argv) {
       }
     }
   }
-  write_csv_table(reference + "/shooting-gale-B3-B4-comparison.csv", out);
+  write_csv_table(paths.comparisons + "/shooting-gale-B3-B4-comparison.csv", out);
   std::printf("%d of %d published entries differ from shooting by more than %.3f\n", flagged, total,
               kPrintedRounding);
   return 0;

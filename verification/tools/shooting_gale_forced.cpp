@@ -1,4 +1,4 @@
-// Generates verification/reference/shooting-gale-C2-comparison.csv: Gale (1976) Table C-2, the
+// Generates verification/comparisons/shooting-gale-C2-comparison.csv: Gale (1976) Table C-2, the
 // maximum dynamic tension |tau|max / S0 (S0 = H) of an inextensible catenary whose end xi2 is
 // driven tangentially with amplitude 0.01 a, against the `shooting` solver's forced response
 // (EA = inf exactly, rtol 1e-12, tension sampled on 2001 stations).
@@ -7,14 +7,9 @@
 // m = 1 kg/m, so omega [rad/s] = Gale's ratio and S0 = 1 N). An entry is flagged when
 // |published - ours| exceeds the printed rounding (0.0005) by more than 1% of the value.
 //
-// Build and run from the repository root after building the library (Release):
-//   g++ -O2 -std=c++20 -Iinclude -Isrc -I/usr/include/eigen3 \
-//       verification/tools/shooting_gale_forced.cpp -o build/shooting_gale_forced \
-//       -Lbuild -lcatena -lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense \
-//       -lsundials_sunlinsoldense -lfmt
-//   build/shooting_gale_forced verification/reference
+// Usage: catena_shooting_gale_forced [REPOSITORY_ROOT] (built with -DCATENA_BUILD_TOOLS=ON).
 //
-// Also writes verification/reference/shooting-gale-C3-comparison.csv: Table C-3, the response
+// Also writes verification/comparisons/shooting-gale-C3-comparison.csv: Table C-3, the response
 // along the cable (h/b = 0, sag 0.70, xi = -1.383 ... 1.383) at the printed forcing frequencies:
 // U (tangential) and V (normal) displacement [units of a] and dynamic tension T / S0, ours
 // interpolated linearly between 20001 stations (error ~1e-9).
@@ -27,21 +22,22 @@
 #include "catena/io/csv_table.hpp"
 #include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
+#include "common/repository_paths.hpp"
 
 int main(int argc, char** argv) {
   using namespace catena;
-  const std::string reference = argc > 1 ? argv[1] : "verification/reference";
+  const catena_tools::RepositoryPaths paths = catena_tools::repository_paths(argc, argv);
   const CsvTable table =
-      read_csv_table(reference + "/published/gale-1976-table-C2-forced-max-tension.csv");
+      read_csv_table(paths.published + "/gale-1976-table-C2-forced-max-tension.csv");
   CsvTable out;
   out.comments = {
-      "verification/reference/shooting-gale-C2-comparison.csv",
+      "verification/comparisons/shooting-gale-C2-comparison.csv",
       "source:    Gale (1976) Table C-2 (published/gale-1976-table-C2-forced-max-tension.csv)",
       "method:    shooting forced response, end b driven tangentially, amplitude 0.01 m, rtol "
       "1e-12, 2001 stations; cable from the printed (xi1, xi2)",
       "columns:   h_over_b, sag_param, xi1, xi2, wf, published tmax, shooting tmax, difference, "
       "flag (|difference| > 0.0005 + 1% of the value), diagnostic",
-      "generator: verification/tools/shooting_gale_forced.cpp (build command in its header)",
+      "generator: verification/tools/shooting_gale_forced.cpp (catena_shooting_gale_forced)",
   };
   out.columns = {"h_over_b",  "sag_param", "xi1",        "xi2",  "wf",
                  "published", "shooting",  "difference", "flag", "diagnostic"};
@@ -78,20 +74,20 @@ int main(int argc, char** argv) {
                         fmt::format("{:+.5f}", difference), flag ? "yes" : "no",
                         response.diagnostic});
   }
-  write_csv_table(reference + "/shooting-gale-C2-comparison.csv", out);
+  write_csv_table(paths.comparisons + "/shooting-gale-C2-comparison.csv", out);
 
   const CsvTable c3 =
-      read_csv_table(reference + "/published/gale-1976-table-C3-forced-distribution.csv");
+      read_csv_table(paths.published + "/gale-1976-table-C3-forced-distribution.csv");
   CsvTable along;
   along.comments = {
-      "verification/reference/shooting-gale-C3-comparison.csv",
+      "verification/comparisons/shooting-gale-C3-comparison.csv",
       "source:    Gale (1976) Table C-3 (published/gale-1976-table-C3-forced-distribution.csv)",
       "method:    shooting forced response (as shooting-gale-C2-comparison.csv), xi1 = -1.383, "
       "xi2 = 1.383, linear interpolation between 20001 stations",
       "columns:   wf, xi, published U, V, T and ours (U = u tangential, V = w normal [a], T = tau "
       "/ "
       "S0)",
-      "generator: verification/tools/shooting_gale_forced.cpp",
+      "generator: verification/tools/shooting_gale_forced.cpp (catena_shooting_gale_forced)",
   };
   along.columns = {"wf",          "xi",         "U_published", "U_shooting",
                    "V_published", "V_shooting", "T_published", "T_shooting"};
@@ -122,7 +118,7 @@ int main(int argc, char** argv) {
                           fmt::format("{:.4f}", at(r.w)), c3.text(row, "T"),
                           fmt::format("{:.4f}", at(r.tension_n) / statics.horizontal_force_n())});
   }
-  write_csv_table(reference + "/shooting-gale-C3-comparison.csv", along);
+  write_csv_table(paths.comparisons + "/shooting-gale-C3-comparison.csv", along);
   std::printf("%d of %zu entries flagged\n", flagged, table.rows.size());
   return 0;
 }

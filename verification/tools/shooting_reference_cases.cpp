@@ -1,4 +1,4 @@
-// Generates verification/reference/shooting-issue4-cases.csv: the six lowest in-plane and
+// Generates verification/comparisons/shooting-issue4-cases.csv: the six lowest in-plane and
 // out-of-plane natural frequencies, by the `shooting` solver at rtol 1e-12, of the cases issue 4
 // names for the cross-check against `fe` (Richardson, N = 2000, expected agreement 1e-7):
 //   - the mooring line L = 1000 m, W0 = 1000 N/m, EA = 5e8 N, m = 120 kg/m, ma = 80 kg/m,
@@ -7,16 +7,11 @@
 //     phi in {10, 45, 80} deg, lambda^2 in {1, 40, 400}, mass ratio 1.
 // Each frequency carries the solver's relative error estimate and the conjugate-point count that
 // proves no mode below it was skipped.
-// Also writes verification/reference/shooting-grinfogel-2-2-comparison.csv: Grinfogel's (1984)
+// Also writes verification/comparisons/shooting-grinfogel-2-2-comparison.csv: Grinfogel's (1984)
 // 'exact' (Triantafyllou's Airy solution, asymptotic in eps) and 'approx' (his eq. 21) kL/pi
 // beside the exact linear solution by shooting.
 //
-// Build and run from the repository root after building the library (Release):
-//   g++ -O2 -std=c++20 -Iinclude -Isrc -I/usr/include/eigen3 \
-//       verification/tools/shooting_reference_cases.cpp -o build/shooting_reference_cases \
-//       -Lbuild -lcatena -lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixdense \
-//       -lsundials_sunlinsoldense -lfmt
-//   build/shooting_reference_cases verification/reference
+// Usage: catena_shooting_reference_cases [REPOSITORY_ROOT] (built with -DCATENA_BUILD_TOOLS=ON).
 #include <fmt/format.h>
 
 #include <cstdio>
@@ -25,10 +20,11 @@
 #include "catena/io/csv_table.hpp"
 #include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
+#include "common/repository_paths.hpp"
 
 int main(int argc, char** argv) {
   using namespace catena;
-  const std::string reference = argc > 1 ? argv[1] : "verification/reference";
+  const catena_tools::RepositoryPaths paths = catena_tools::repository_paths(argc, argv);
   struct Case {
     std::string name;
     Problem problem;
@@ -52,12 +48,12 @@ int main(int argc, char** argv) {
   }
   CsvTable out;
   out.comments = {
-      "verification/reference/shooting-issue4-cases.csv",
+      "verification/comparisons/shooting-issue4-cases.csv",
       "source:    shooting solver (CVODE Adams, rtol 1e-12, conjugate-point counting), issue 4 "
       "cross-check cases",
       "columns:   case, plane (in/out), mode, omega [rad/s], kL/pi [-], relative error estimate, "
       "count (eigenvalues proved below the top bracket of the plane)",
-      "generator: verification/tools/shooting_reference_cases.cpp (build command in its header)",
+      "generator: verification/tools/shooting_reference_cases.cpp (catena_shooting_reference_cases)",
   };
   out.columns = {"case",        "plane",       "mode",
                  "omega_rad_s", "k_l_over_pi", "relative_error_estimate",
@@ -85,20 +81,20 @@ int main(int argc, char** argv) {
       }
     }
   }
-  write_csv_table(reference + "/shooting-issue4-cases.csv", out);
+  write_csv_table(paths.comparisons + "/shooting-issue4-cases.csv", out);
 
   const CsvTable grinfogel =
-      read_csv_table(reference + "/published/grinfogel-1984-table-2-2-frequencies.csv");
+      read_csv_table(paths.published + "/grinfogel-1984-table-2-2-frequencies.csv");
   CsvTable comparison;
   comparison.comments = {
-      "verification/reference/shooting-grinfogel-2-2-comparison.csv",
+      "verification/comparisons/shooting-grinfogel-2-2-comparison.csv",
       "source:    Grinfogel (1984) tables after Fig. 2.2 (published/grinfogel-1984-table-2-2-"
       "frequencies.csv): 'exact' = Triantafyllou's Airy solution (asymptotic in eps), 'approx' = "
       "eq. (21)",
       "method:    shooting solver, rtol 1e-12, make_taut_inclined_problem(eps, phi, lambda2, 1)",
       "columns:   eps, phi_deg, lambda2, mode, published exact and approx kL/pi, shooting kL/pi, "
       "exact - shooting, approx - shooting",
-      "generator: verification/tools/shooting_reference_cases.cpp",
+      "generator: verification/tools/shooting_reference_cases.cpp (catena_shooting_reference_cases)",
   };
   comparison.columns = {"eps",
                         "phi_deg",
@@ -131,7 +127,7 @@ int main(int argc, char** argv) {
                                fmt::format("{:+.4f}", *grinfogel.number(row, "exact") - ours),
                                fmt::format("{:+.4f}", *grinfogel.number(row, "approx") - ours)});
   }
-  write_csv_table(reference + "/shooting-grinfogel-2-2-comparison.csv", comparison);
+  write_csv_table(paths.comparisons + "/shooting-grinfogel-2-2-comparison.csv", comparison);
   std::printf("%zu cases written\n", cases.size());
   return 0;
 }
