@@ -1,8 +1,6 @@
 // Tests of the `airy` solver (Triantafyllou's Airy-function solution, Grinfogel 1984 eqs. 7-16).
 //
 // Compared with:
-// - Boost.Math's unscaled Airy functions and the Wronskian Ai Bi' - Ai' Bi = 1/pi (the scaled
-//   functions, up to arguments 1e6);
 // - roots of the same 4x4 determinant computed independently in 30-digit arithmetic with mpmath
 //   (naive: unscaled airyai/airybi, mp.det, findroot; script in the comment of kMpmathRoots);
 // - Grinfogel's eq. (21) (asymptotic solver), which shares the model to O(eps^2): at small eps the
@@ -13,7 +11,6 @@
 
 #include <gtest/gtest.h>
 
-#include <boost/math/special_functions/airy.hpp>
 #include <cmath>
 
 #include "catena/core/error.hpp"
@@ -21,7 +18,6 @@
 #include "catena/models/problem_builders.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
-#include "solvers/internal/airy_functions.hpp"
 #include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
 
@@ -45,60 +41,6 @@ std::vector<double> airy_k_l_over_pi(const Solved& s, int count, AirySolverOptio
     for (const Mode& mode : out.inplane->modes) values.push_back(mode.k_l_over_pi);
   }
   return values;
-}
-
-TEST(ScaledAiry, MatchesBoostAcrossTheSeriesThreshold) {
-  // Boost's values are still representable up to x = 40 (Ai ~ 1e-74): compare the series branch
-  // with them. Boost's own accuracy is a few ulp; 1e-13 allows for the exp() of zeta ~ 170.
-  constexpr double kRelTol = 1e-13;
-  for (double x :
-       {internal::kAirySeriesThreshold - 1.0, internal::kAirySeriesThreshold + 1e-3, 30.0, 40.0}) {
-    const internal::ScaledAiry a = internal::scaled_airy(x);
-    const double grow = std::exp(a.zeta);
-    EXPECT_LE(relative_error(a.ai / grow, boost::math::airy_ai(x)), kRelTol) << x;
-    EXPECT_LE(relative_error(a.ai_prime / grow, boost::math::airy_ai_prime(x)), kRelTol) << x;
-    EXPECT_LE(relative_error(a.bi * grow, boost::math::airy_bi(x)), kRelTol) << x;
-    EXPECT_LE(relative_error(a.bi_prime * grow, boost::math::airy_bi_prime(x)), kRelTol) << x;
-  }
-}
-
-TEST(ScaledAiry, MaclaurinFastPathMatchesBoost) {
-  // Error measured against the size of the functions (their envelope |x|^(-1/4)/sqrt(pi) and
-  // |x|^(1/4)/sqrt(pi) for the derivatives, at least 1), not pointwise near the zeros of Ai.
-  constexpr double kTol = 2e-13;
-  for (double x = internal::kAiryMaclaurinLow; x <= internal::kAiryMaclaurinHigh; x += 0.01) {
-    const internal::ScaledAiry fast = internal::scaled_airy(x);
-    const internal::ScaledAiry ref = internal::scaled_airy_boost(x);
-    const double size = std::max(1.0, std::pow(std::abs(x), 0.25));
-    EXPECT_NEAR(fast.ai, ref.ai, kTol * size) << x;
-    EXPECT_NEAR(fast.bi, ref.bi, kTol * size) << x;
-    EXPECT_NEAR(fast.ai_prime, ref.ai_prime, kTol * size) << x;
-    EXPECT_NEAR(fast.bi_prime, ref.bi_prime, kTol * size) << x;
-    EXPECT_EQ(fast.zeta, ref.zeta);
-  }
-}
-
-TEST(ScaledAiry, TaylorFastPathMatchesBoost) {
-  // Nodes every 0.5 from Boost; Taylor to |h| <= 0.25. Same envelope-relative measure.
-  constexpr double kTol = 2e-13;
-  for (double x = internal::kAiryTaylorLow; x <= internal::kAirySeriesThreshold; x += 0.0137) {
-    const internal::ScaledAiry fast = internal::scaled_airy(x);
-    const internal::ScaledAiry ref = internal::scaled_airy_boost(x);
-    const double size = std::max(1.0, std::pow(std::abs(x), 0.25));
-    EXPECT_NEAR(fast.ai, ref.ai, kTol * size) << x;
-    EXPECT_NEAR(fast.bi, ref.bi, kTol * size) << x;
-    EXPECT_NEAR(fast.ai_prime, ref.ai_prime, kTol * size) << x;
-    EXPECT_NEAR(fast.bi_prime, ref.bi_prime, kTol * size) << x;
-  }
-}
-
-TEST(ScaledAiry, WronskianHoldsWhereTheUnscaledFunctionsOverflow) {
-  // Ai Bi' - Ai' Bi = 1/pi: the exponents cancel, so the scaled values must satisfy it exactly.
-  for (double x : {-50.0, -3.0, 0.0, 0.5, 5.0, 24.0, 26.0, 100.0, 1e3, 1e4, 1e6}) {
-    const internal::ScaledAiry a = internal::scaled_airy(x);
-    const double wronskian = a.ai * a.bi_prime - a.ai_prime * a.bi;
-    EXPECT_LE(relative_error(wronskian, 1.0 / kPi), 1e-13) << "x " << x;
-  }
 }
 
 TEST(AirySolver, RootsMatchAnIndependent30DigitComputation) {
