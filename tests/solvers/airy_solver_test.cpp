@@ -283,5 +283,71 @@ TEST(AirySolver, RegistryEntryRunsAndRejectsBadKnobs) {
   EXPECT_THROW(options.validate(), InvalidInput);
 }
 
+// The rejection message of a scene's knobs ("" when accepted).
+std::string knob_error(const SolverKnobs& knobs) {
+  try {
+    find_solver("airy")->validate_knobs(knobs);
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(AirySolver, KnobTableNamesTheKnobAndKeepsTheRanges) {
+  // Open ends: cutoff_fraction in (0, 1); the eps warning threshold at most max_eps.
+  EXPECT_NE(knob_error({{"cutoff_fraction", 1.0}}).find("[solvers.airy].cutoff_fraction"), std::string::npos);
+  EXPECT_NE(knob_error({{"cutoff_fraction", 0.0}}).find("[solvers.airy].cutoff_fraction"), std::string::npos);
+  EXPECT_NE(knob_error({{"tolerance_bits", 19L}}).find("[solvers.airy].tolerance_bits"), std::string::npos);
+  EXPECT_NE(knob_error({{"max_k_l_over_pi", -1.0}}).find("[solvers.airy].max_k_l_over_pi"), std::string::npos);
+  EXPECT_NE(knob_error({{"eps_warning_threshold", 0.6}, {"max_eps", 0.5}})
+                .find("[solvers.airy].eps_warning_threshold"),
+            std::string::npos);
+  EXPECT_EQ(knob_error({{"cutoff_fraction", 0.5}, {"scan_step", 1e-4}, {"tolerance_bits", 53L},
+                        {"max_eps", 10.0}, {"quadrature_panels", 1000L}}),
+            "");
+  // Defaults as `catena solvers` prints them come from the options struct.
+  const SolverEntry* entry = find_solver("airy");
+  ASSERT_NE(entry, nullptr);
+  ASSERT_EQ(entry->knobs.size(), 8u);
+  EXPECT_EQ(entry->knobs[0].name, "curvature_fit");
+  EXPECT_EQ(entry->knobs[0].default_value, "\"tangent\"");
+  EXPECT_EQ(entry->knobs[1].name, "scan_step");
+  EXPECT_EQ(entry->knobs[1].default_value, "0.05");
+}
+
+TEST(AirySolver, AScanLimitBelowTheRequestedModesIsAPartialResult) {
+  // Six in-plane modes asked, the scan stopped at kL/pi = 2.5: the in-plane part reports the
+  // roots it found as NoConvergence; out of plane converges; the run is NoConvergence (usable).
+  const Solved s = solve(0.18, 23.46, 38.0);
+  AirySolverOptions options;
+  options.max_k_l_over_pi = 2.5;
+  const SolverOutput out =
+      solve_airy(s.problem, s.statics, s.groups, catena::testing::modes_request(6, 2), options);
+  ASSERT_TRUE(out.inplane && out.outofplane);
+  EXPECT_EQ(out.inplane->summary.termination, Termination::NoConvergence);
+  EXPECT_GE(out.inplane->modes.size(), 1u);
+  EXPECT_LT(out.inplane->modes.size(), 6u);
+  EXPECT_EQ(out.outofplane->summary.termination, Termination::Converged);
+  EXPECT_EQ(out.summary.termination, Termination::NoConvergence);
+  EXPECT_EQ(out.summary.solver, "airy");
+  EXPECT_EQ(out.summary.operations, out.inplane->summary.operations);
+  EXPECT_GT(out.summary.operations, 0);
+}
+
+TEST(AirySolver, ForcedResponseIsNotComputedButDoesNotSpoilTheModes) {
+  const Solved s = solve(0.18, 23.46, 38.0);
+  SolveRequest request = catena::testing::modes_request(2, 0);
+  request.forced = ForcedRequest{};
+  request.forced->omegas_rad_s = {1.0, 2.0};
+  const SolverOutput out = solve_airy(s.problem, s.statics, s.groups, request);
+  EXPECT_EQ(out.summary.termination, Termination::Converged) << out.summary.message;
+  ASSERT_TRUE(out.inplane);
+  EXPECT_EQ(out.inplane->modes.size(), 2u);
+  EXPECT_TRUE(out.forced.empty());
+  bool warned = false;
+  for (const auto& warning : out.summary.warnings) warned = warned || warning.find("forced") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
 }  // namespace
 }  // namespace catena
