@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
 
 namespace {

@@ -8,7 +8,7 @@
 // clang-format on
 #include <benchmark/benchmark.h>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
 
 namespace {

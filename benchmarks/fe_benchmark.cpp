@@ -16,7 +16,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
 #include "solvers/internal/fe_model.hpp"
 

@@ -7,7 +7,7 @@
 // h/b=0, sag 0.50: 6.4 ms; xi=+-8: 8.4 ms; six out-of-plane (B-4 row): 1.8 ms.
 #include <benchmark/benchmark.h>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/frobenius_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"

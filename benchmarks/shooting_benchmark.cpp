@@ -8,7 +8,7 @@
 // Counters: shots (integrations), CVODE RHS evaluations, the largest error estimate.
 #include <benchmark/benchmark.h>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
 
 namespace catena {

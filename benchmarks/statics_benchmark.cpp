@@ -2,7 +2,7 @@
 // the static state along the cable. Counters: Newton iterations and the closure error reached.
 #include <benchmark/benchmark.h>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 
 namespace {

@@ -1,9 +1,14 @@
 #pragma once
 // The `catena` subcommands. Each returns the process exit code:
-// 0 ok, 1 a verification check failed, 2 bad input or usage, 3 internal error.
+// 0 ok, 1 a verification check failed, 2 bad input or usage, 3 internal error or a numerical
+// failure that left a scene without a solution (e.g. statics that do not converge).
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
+#include <vector>
+
+#include "catena/verification/scene_runner.hpp"
 
 namespace catena::cli {
 
@@ -12,5 +17,18 @@ void add_solve_command(CLI::App& app, std::function<int()>& run);
 void add_verify_command(CLI::App& app, std::function<int()>& run);
 void add_solvers_command(CLI::App& app, std::function<int()>& run);
 void add_report_command(CLI::App& app, std::function<int()>& run);
+
+/// --tolerances and --findings (empty: the tables built into the library).
+struct TableArguments {
+  std::string tolerances;
+  std::string findings;
+};
+void add_table_options(CLI::App& command, TableArguments& tables);
+/// Run options holding the chosen tables (ParseError/InvalidInput when a file is bad).
+SceneRunOptions run_options_with_tables(const TableArguments& tables);
+
+/// The exit code of a run of scenes: 2 if any scene had bad input, else 3 if any scene failed
+/// numerically, else 1 if any check failed, else 0.
+int exit_code_of(const std::vector<SceneResult>& results);
 
 }  // namespace catena::cli

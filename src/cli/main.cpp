@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
       "catena: linear dynamics of cables (natural frequencies, mode shapes, dynamic tension,\n"
       "forced response) by independent methods, cross-checked against each other and against\n"
       "published tables.\n\n"
-      "Exit codes: 0 ok, 1 a verification check failed, 2 bad input or usage, 3 internal error.",
+      "Exit codes: 0 ok, 1 a verification check failed, 2 bad input or usage, 3 internal error\n"
+      "or a numerical failure that left a scene unsolved (e.g. statics that do not converge).",
       "catena"};
   app.set_version_flag("--version", fmt::format("catena {} (git {}, {}, {})", catena::version(),
                                                 catena::git_hash(), catena::compiler(),

@@ -4,12 +4,8 @@
 #include <fmt/format.h>
 
 #include "catena/core/error.hpp"
-#include "catena/verification/report.hpp"
+#include "catena/io/report.hpp"
 #include "cli/commands.hpp"
-
-#ifndef CATENA_TOOLS_DIR
-#define CATENA_TOOLS_DIR "verification/tools"
-#endif
 
 namespace catena::cli {
 namespace {
@@ -17,7 +13,8 @@ namespace {
 struct ReportArguments {
   std::string from = "build/report/report.json";
   std::string out = "build/report";
-  std::string tools = CATENA_TOOLS_DIR;
+  std::string data;
+  std::string tools;
   // Debian's interpreter, where python3-matplotlib installs (a python3 earlier on PATH, e.g.
   // pyenv's, may not have it).
   std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
@@ -35,13 +32,17 @@ void add_report_command(CLI::App& app, std::function<int()>& run) {
       "Figures need python3 with matplotlib; without them the report says so.");
   command->add_option("--from", arguments->from, "Results JSON written by `catena verify`")->capture_default_str();
   command->add_option("--out", arguments->out, "Output directory")->capture_default_str();
-  command->add_option("--tools", arguments->tools, "Directory of figures.py")->capture_default_str();
+  command->add_option("--data", arguments->data,
+                      "Data dir: figures.py, reference/published, benchmarks (default: share/catena next to\n"
+                      "the executable, else the build tree's)");
+  command->add_option("--tools", arguments->tools, "Directory of figures.py (default: the data dir)");
   command->add_option("--python", arguments->python, "Python interpreter for the figures")->capture_default_str();
   command->add_flag("--no-figures", arguments->no_figures, "Skip the figures");
   command->callback([arguments, &run] {
     run = [arguments] {
       ReportOptions options;
       options.out_dir = arguments->out;
+      options.data_dir = arguments->data;
       options.tools_dir = arguments->tools;
       options.python = arguments->python;
       options.figures = !arguments->no_figures;

@@ -19,6 +19,7 @@ struct SolveArguments {
   std::string json;
   std::vector<std::string> solvers;
   bool quiet = false;
+  TableArguments tables;
 };
 
 void print_modes(const ModalResult& result, const char* title) {
@@ -92,6 +93,7 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
   command->add_option("--solver", arguments->solvers,
                       "Run only this solver (repeatable): fe, shooting, frobenius, asymptotic, airy");
   command->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
+  add_table_options(*command, arguments->tables);
   command->callback([arguments, &run] {
     run = [arguments] {
       for (const auto& name : arguments->solvers) {
@@ -99,13 +101,10 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
       }
       const std::vector<Scene> scenes = read_scene_file(arguments->scene);
       std::vector<SceneResult> results;
-      SceneRunOptions options;
+      SceneRunOptions options = run_options_with_tables(arguments->tables);
       options.only_solvers = arguments->solvers;
-      int exit_code = 0;
       for (const auto& scene : scenes) {
         results.push_back(run_scene(scene, options));
-        if (!results.back().error.empty()) exit_code = 2;
-        else if (results.back().failed_checks() > 0 && exit_code == 0) exit_code = 1;
         if (!arguments->quiet && arguments->json != "-") print_result(results.back());
       }
       if (arguments->json == "-") {
@@ -117,7 +116,7 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
       for (const auto& result : results) {
         if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
       }
-      return exit_code;
+      return exit_code_of(results);
     };
   });
 }

@@ -24,6 +24,7 @@ struct VerifyArguments {
   int jobs = 0;
   bool quiet = false;
   std::string perturb;
+  TableArguments tables;
 };
 
 // "--perturb fe:inplane:2:1e-3" -> Perturbation.
@@ -89,7 +90,7 @@ int run_verify(const VerifyArguments& arguments) {
   const int jobs = arguments.jobs > 0 ? arguments.jobs
                                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const bool progress = !arguments.quiet && isatty(STDERR_FILENO);
-  SceneRunOptions run_options;
+  SceneRunOptions run_options = run_options_with_tables(arguments.tables);
   run_options.perturbation = parse_perturbation(arguments.perturb);
   const std::vector<SceneResult> results =
       run_scenes(scenes, jobs, run_options, [&](std::size_t done, std::size_t total, const std::string& name) {
@@ -128,13 +129,10 @@ int run_verify(const VerifyArguments& arguments) {
              "threads; wrote {}\n",
              results.size(), total_checks, failed_checks, discrepancies, errors, elapsed, jobs,
              report.string());
-  if (errors > 0) {
-    for (const auto& result : results) {
-      if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
-    }
-    return 2;
+  for (const auto& result : results) {
+    if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
   }
-  return failed_checks > 0 ? 1 : 0;
+  return exit_code_of(results);
 }
 
 }  // namespace
@@ -154,6 +152,7 @@ void add_verify_command(CLI::App& app, std::function<int()>& run) {
   command->add_option("--perturb", arguments->perturb,
                       "Testing the harness: multiply one frequency of one solver by (1 + RELATIVE),\n"
                       "as SOLVER:inplane|outofplane:MODE:RELATIVE; the run must then fail");
+  add_table_options(*command, arguments->tables);
   command->callback([arguments, &run] { run = [arguments] { return run_verify(*arguments); }; });
 }
 

@@ -10,13 +10,33 @@
 namespace catena {
 namespace {
 
+// Cells of one line. A cell in double quotes may hold commas, and "" inside it is one quote
+// (RFC 4180, without line breaks inside cells).
 std::vector<std::string> split_cells(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream stream(line);
-  while (std::getline(stream, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      cells.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      cells.emplace_back();
+    } else {
+      cells.back() += c;
+    }
+  }
   return cells;
+}
+
+// A cell as written: quoted when it holds a comma, a quote or a line break.
+std::string csv_cell(const std::string& cell) {
+  if (cell.find_first_of(",\"\n") == std::string::npos) return cell;
+  std::string quoted = "\"";
+  for (char c : cell) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
 }
 
 std::string trim(const std::string& text) {
@@ -84,10 +104,10 @@ CsvTable read_csv_table(const std::filesystem::path& path) {
 void write_csv_table(const std::filesystem::path& path, const CsvTable& table) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   std::ofstream out(path);
-  if (!out) throw Error(fmt::format("{}: cannot write CSV file", path.string()));
+  if (!out) throw InvalidInput(fmt::format("{}: cannot write CSV file", path.string()));
   for (const auto& comment : table.comments) out << "# " << comment << '\n';
   auto write_row = [&](const std::vector<std::string>& cells) {
-    for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << cells[i];
+    for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << csv_cell(cells[i]);
     out << '\n';
   };
   write_row(table.columns);

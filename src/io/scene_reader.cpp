@@ -9,147 +9,13 @@
 #include <toml.hpp>
 
 #include "catena/core/error.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
+#include "io/internal/toml_table_reader.hpp"
 
 namespace catena {
 namespace {
 
-// Reads one TOML table strictly: every access records the key, and finish() rejects the rest.
-// Messages name "<file>: [<table>].<key>".
-class TableReader {
- public:
-  TableReader(const toml::value& table, std::string origin, std::string path)
-      : table_(table), origin_(std::move(origin)), path_(std::move(path)) {}
-
-  std::string where(const std::string& key) const {
-    return path_.empty() ? fmt::format("{}: {}", origin_, key)
-                         : fmt::format("{}: [{}].{}", origin_, path_, key);
-  }
-
-  bool has(const std::string& key) const { return table_.as_table().count(key) > 0; }
-
-  const toml::value* find(const std::string& key) {
-    used_.insert(key);
-    const auto& map = table_.as_table();
-    const auto it = map.find(key);
-    return it == map.end() ? nullptr : &it->second;
-  }
-
-  const toml::value& require(const std::string& key) {
-    const toml::value* value = find(key);
-    if (!value) throw ParseError(fmt::format("{}: missing required key", where(key)));
-    return *value;
-  }
-
-  double to_number(const toml::value& value, const std::string& key) const {
-    if (value.is_floating()) return value.as_floating();
-    if (value.is_integer()) return static_cast<double>(value.as_integer());
-    throw ParseError(fmt::format("{}: expected a number, got {}", where(key), type_name(value)));
-  }
-
-  double number(const std::string& key) { return to_number(require(key), key); }
-  double number(const std::string& key, double fallback) {
-    const toml::value* value = find(key);
-    return value ? to_number(*value, key) : fallback;
-  }
-
-  // A finite number that must satisfy `ok`; `rule` and `unit` go into the message.
-  double checked(const std::string& key, bool (*ok)(double), const char* rule, const char* unit,
-                 std::optional<double> fallback = std::nullopt) {
-    const double value = fallback && !has(key) ? number(key, *fallback) : number(key);
-    if (!std::isfinite(value) || !ok(value)) {
-      throw InvalidInput(fmt::format("{} = {}: must be {} [{}]", where(key), value, rule, unit));
-    }
-    return value;
-  }
-
-  long integer(const std::string& key, long fallback) {
-    const toml::value* value = find(key);
-    if (!value) return fallback;
-    if (!value->is_integer()) {
-      throw ParseError(fmt::format("{}: expected an integer, got {}", where(key), type_name(*value)));
-    }
-    return static_cast<long>(value->as_integer());
-  }
-
-  bool boolean(const std::string& key, bool fallback) {
-    const toml::value* value = find(key);
-    if (!value) return fallback;
-    if (!value->is_boolean()) {
-      throw ParseError(fmt::format("{}: expected true or false, got {}", where(key), type_name(*value)));
-    }
-    return value->as_boolean();
-  }
-
-  std::string string(const std::string& key, const std::string& fallback) {
-    const toml::value* value = find(key);
-    if (!value) return fallback;
-    if (!value->is_string()) {
-      throw ParseError(fmt::format("{}: expected a string, got {}", where(key), type_name(*value)));
-    }
-    return value->as_string().str;
-  }
-
-  std::vector<double> numbers(const std::string& key) {
-    const toml::value& value = require(key);
-    if (!value.is_array()) {
-      throw ParseError(fmt::format("{}: expected an array of numbers, got {}", where(key), type_name(value)));
-    }
-    std::vector<double> out;
-    for (const auto& item : value.as_array()) {
-      const double x = to_number(item, key);
-      if (!std::isfinite(x)) {
-        throw InvalidInput(fmt::format("{}: entry {} is not finite", where(key), x));
-      }
-      out.push_back(x);
-    }
-    return out;
-  }
-
-  Vec2 point(const std::string& key) {
-    const std::vector<double> xs = numbers(key);
-    if (xs.size() != 2) {
-      throw InvalidInput(fmt::format("{}: expected [x, z] (2 numbers) [m], got {} numbers", where(key), xs.size()));
-    }
-    return {xs[0], xs[1]};
-  }
-
-  TableReader subtable(const std::string& key) {
-    const toml::value& value = require(key);
-    if (!value.is_table()) {
-      throw ParseError(fmt::format("{}: expected a table, got {}", where(key), type_name(value)));
-    }
-    return TableReader(value, origin_, path_.empty() ? key : path_ + "." + key);
-  }
-
-  // Throws for keys never asked for.
-  void finish() const {
-    for (const auto& [key, value] : table_.as_table()) {
-      if (!used_.count(key)) {
-        std::string known;
-        for (const auto& k : used_) {
-          if (!known.empty()) known.append(", ");
-          known.append(k);
-        }
-        throw ParseError(fmt::format("{}: unknown key (known here: {})", where(key), known));
-      }
-    }
-  }
-
-  const toml::value& value() const { return table_; }
-
-  static std::string type_name(const toml::value& value) {
-    std::ostringstream out;
-    out << value.type();
-    return out.str();
-  }
-
- private:
-  const toml::value& table_;
-  std::string origin_;
-  std::string path_;
-  std::set<std::string> used_;
-};
+using internal::TableReader;
 
 bool positive(double x) { return x > 0.0; }
 bool non_negative(double x) { return x >= 0.0; }
@@ -173,6 +39,63 @@ double read_axial_stiffness(TableReader& cable) {
   return ea;
 }
 
+Problem read_physical(TableReader& root, const std::string& origin) {
+  Problem problem;
+  TableReader cable = root.subtable("cable");
+  problem.cable.length_m = cable.checked("length", positive, "finite and > 0", "m");
+  problem.cable.weight_n_per_m = cable.checked("weight", positive, "finite and > 0", "N/m");
+  problem.cable.axial_stiffness_n = read_axial_stiffness(cable);
+  problem.cable.mass_kg_per_m = cable.checked("mass", positive, "finite and > 0", "kg/m");
+  problem.cable.added_mass_kg_per_m = cable.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
+  problem.supports.a_m = cable.point("a");
+  problem.supports.b_m = cable.point("b");
+  cable.finish();
+  try {
+    problem.validate();
+  } catch (const InvalidInput& error) {
+    throw InvalidInput(fmt::format("{}: [cable]: {}", origin, error.what()));
+  }
+  return problem;
+}
+
+Problem read_taut_inclined(TableReader& root, const std::string& origin) {
+  TableReader form = root.subtable("taut_inclined");
+  const double eps = form.checked("eps", positive, "finite and > 0", "-");
+  const double phi = form.checked("phi_deg", any_value, "finite", "deg");
+  const double lambda2 = form.checked("lambda2", positive, "finite and > 0", "-");
+  const double h = form.checked("mass_ratio", positive, "finite and > 0", "-", 1.0);
+  form.finish();
+  try {
+    return make_taut_inclined_problem(eps, phi, lambda2, h);
+  } catch (const InvalidInput& error) {
+    throw InvalidInput(fmt::format("{}: [taut_inclined]: {}", origin, error.what()));
+  }
+}
+
+Problem read_gale(TableReader& root, const std::string& origin) {
+  TableReader form = root.subtable("gale");
+  const bool by_xi = form.has("xi1") || form.has("xi2");
+  const bool by_sag = form.has("h_over_b") || form.has("sag_param");
+  if (by_xi == by_sag) {
+    throw ParseError(fmt::format("{}: [gale] needs either (xi1, xi2) or (h_over_b, sag_param), not {}", origin,
+                                 by_xi ? "both" : "neither"));
+  }
+  try {
+    if (by_xi) {
+      const double xi1 = form.number("xi1");
+      const double xi2 = form.number("xi2");
+      form.finish();
+      return make_gale_xi_problem(xi1, xi2);
+    }
+    const double h_over_b = form.number("h_over_b");
+    const double sag = form.number("sag_param");
+    form.finish();
+    return make_gale_sag_problem(h_over_b, sag);
+  } catch (const InvalidInput& error) {
+    throw InvalidInput(fmt::format("{}: [gale]: {}", origin, error.what()));
+  }
+}
+
 // Reads the one cable form of the scene into a Problem.
 Problem read_problem(TableReader& root, const std::string& origin) {
   const bool physical = root.has("cable");
@@ -184,61 +107,9 @@ Problem read_problem(TableReader& root, const std::string& origin) {
         "{}: a scene needs exactly one of the tables [cable], [taut_inclined], [gale]; found {}",
         origin, forms));
   }
-  Problem problem;
-  if (physical) {
-    TableReader cable = root.subtable("cable");
-    problem.cable.length_m = cable.checked("length", positive, "finite and > 0", "m");
-    problem.cable.weight_n_per_m = cable.checked("weight", positive, "finite and > 0", "N/m");
-    problem.cable.axial_stiffness_n = read_axial_stiffness(cable);
-    problem.cable.mass_kg_per_m = cable.checked("mass", positive, "finite and > 0", "kg/m");
-    problem.cable.added_mass_kg_per_m =
-        cable.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
-    problem.supports.a_m = cable.point("a");
-    problem.supports.b_m = cable.point("b");
-    cable.finish();
-    try {
-      problem.validate();
-    } catch (const InvalidInput& error) {
-      throw InvalidInput(fmt::format("{}: [cable]: {}", origin, error.what()));
-    }
-  } else if (taut) {
-    TableReader form = root.subtable("taut_inclined");
-    const double eps = form.checked("eps", positive, "finite and > 0", "-");
-    const double phi = form.checked("phi_deg", any_value, "finite", "deg");
-    const double lambda2 = form.checked("lambda2", positive, "finite and > 0", "-");
-    const double h = form.checked("mass_ratio", positive, "finite and > 0", "-", 1.0);
-    form.finish();
-    try {
-      problem = make_taut_inclined_problem(eps, phi, lambda2, h);
-    } catch (const InvalidInput& error) {
-      throw InvalidInput(fmt::format("{}: [taut_inclined]: {}", origin, error.what()));
-    }
-  } else {
-    TableReader form = root.subtable("gale");
-    const bool by_xi = form.has("xi1") || form.has("xi2");
-    const bool by_sag = form.has("h_over_b") || form.has("sag_param");
-    if (by_xi == by_sag) {
-      throw ParseError(fmt::format(
-          "{}: [gale] needs either (xi1, xi2) or (h_over_b, sag_param), not {}", origin,
-          by_xi ? "both" : "neither"));
-    }
-    try {
-      if (by_xi) {
-        const double xi1 = form.number("xi1");
-        const double xi2 = form.number("xi2");
-        form.finish();
-        problem = make_gale_xi_problem(xi1, xi2);
-      } else {
-        const double h_over_b = form.number("h_over_b");
-        const double sag = form.number("sag_param");
-        form.finish();
-        problem = make_gale_sag_problem(h_over_b, sag);
-      }
-    } catch (const InvalidInput& error) {
-      throw InvalidInput(fmt::format("{}: [gale]: {}", origin, error.what()));
-    }
-  }
-  return problem;
+  if (physical) return read_physical(root, origin);
+  if (taut) return read_taut_inclined(root, origin);
+  return read_gale(root, origin);
 }
 
 FrequencyUnit read_frequency_unit(TableReader& table, const std::string& key, const std::string& fallback) {
@@ -249,6 +120,55 @@ FrequencyUnit read_frequency_unit(TableReader& table, const std::string& key, co
                                    table.where(key), text));
   }
   return *unit;
+}
+
+// [request.forced]: the driven end, direction, amplitude and forcing frequencies (in the scene's units;
+// resolve_request converts them).
+ForcedRequest read_forced(TableReader& forced, Scene& scene) {
+  ForcedRequest f;
+  const std::string end = forced.string("end", "b");
+  if (end != "a" && end != "b") {
+    throw InvalidInput(fmt::format("{} = \"{}\": must be \"a\" or \"b\"", forced.where("end"), end));
+  }
+  f.end = end == "a" ? CableEnd::A : CableEnd::B;
+  if (const toml::value* direction = forced.find("direction")) {
+    if (direction->is_array()) {
+      f.direction = ForcingDirection::GivenVector;
+      f.vector = forced.point("direction");
+      if (f.vector.norm() == 0.0) {
+        throw InvalidInput(fmt::format("{}: the direction vector must be non-zero", forced.where("direction")));
+      }
+    } else {
+      const std::string text = forced.string("direction", "tangential");
+      if (text == "tangential") f.direction = ForcingDirection::Tangential;
+      else if (text == "normal") f.direction = ForcingDirection::Normal;
+      else if (text == "out_of_plane") f.direction = ForcingDirection::OutOfPlane;
+      else {
+        throw InvalidInput(fmt::format(
+            "{} = \"{}\": must be \"tangential\", \"normal\", \"out_of_plane\" or [x, z]",
+            forced.where("direction"), text));
+      }
+    }
+  }
+  f.amplitude_m = forced.checked("amplitude", positive, "finite and > 0", "m or a", 0.01);
+  const std::string amplitude_unit = forced.string("amplitude_unit", "m");
+  if (amplitude_unit != "m" && amplitude_unit != "a") {
+    throw InvalidInput(fmt::format("{} = \"{}\": must be \"m\" or \"a\" (Gale's a = H/W0)",
+                                   forced.where("amplitude_unit"), amplitude_unit));
+  }
+  scene.forcing_amplitude_in_a = amplitude_unit == "a";
+  f.omegas_rad_s = forced.numbers("frequencies");
+  if (f.omegas_rad_s.empty()) {
+    throw InvalidInput(fmt::format("{}: at least one forcing frequency needed", forced.where("frequencies")));
+  }
+  for (double omega : f.omegas_rad_s) {
+    if (omega < 0.0) {
+      throw InvalidInput(fmt::format("{}: forcing frequency {} must be >= 0", forced.where("frequencies"), omega));
+    }
+  }
+  scene.forcing_frequency_unit = read_frequency_unit(forced, "frequency_unit", "rad/s");
+  forced.finish();
+  return f;
 }
 
 void read_request(TableReader& root, Scene& scene) {
@@ -268,50 +188,7 @@ void read_request(TableReader& root, Scene& scene) {
   scene.request.tension = request.boolean("tension", scene.request.tension);
   if (request.has("forced")) {
     TableReader forced = request.subtable("forced");
-    ForcedRequest f;
-    const std::string end = forced.string("end", "b");
-    if (end != "a" && end != "b") {
-      throw InvalidInput(fmt::format("{} = \"{}\": must be \"a\" or \"b\"", forced.where("end"), end));
-    }
-    f.end = end == "a" ? CableEnd::A : CableEnd::B;
-    if (const toml::value* direction = forced.find("direction")) {
-      if (direction->is_array()) {
-        f.direction = ForcingDirection::GivenVector;
-        f.vector = forced.point("direction");
-        if (f.vector.norm() == 0.0) {
-          throw InvalidInput(fmt::format("{}: the direction vector must be non-zero", forced.where("direction")));
-        }
-      } else {
-        const std::string text = forced.string("direction", "tangential");
-        if (text == "tangential") f.direction = ForcingDirection::Tangential;
-        else if (text == "normal") f.direction = ForcingDirection::Normal;
-        else if (text == "out_of_plane") f.direction = ForcingDirection::OutOfPlane;
-        else {
-          throw InvalidInput(fmt::format(
-              "{} = \"{}\": must be \"tangential\", \"normal\", \"out_of_plane\" or [x, z]",
-              forced.where("direction"), text));
-        }
-      }
-    }
-    f.amplitude_m = forced.checked("amplitude", positive, "finite and > 0", "m or a", 0.01);
-    const std::string amplitude_unit = forced.string("amplitude_unit", "m");
-    if (amplitude_unit != "m" && amplitude_unit != "a") {
-      throw InvalidInput(fmt::format("{} = \"{}\": must be \"m\" or \"a\" (Gale's a = H/W0)",
-                                     forced.where("amplitude_unit"), amplitude_unit));
-    }
-    scene.forcing_amplitude_in_a = amplitude_unit == "a";
-    f.omegas_rad_s = forced.numbers("frequencies");
-    if (f.omegas_rad_s.empty()) {
-      throw InvalidInput(fmt::format("{}: at least one forcing frequency needed", forced.where("frequencies")));
-    }
-    for (double omega : f.omegas_rad_s) {
-      if (omega < 0.0) {
-        throw InvalidInput(fmt::format("{}: forcing frequency {} must be >= 0", forced.where("frequencies"), omega));
-      }
-    }
-    scene.forcing_frequency_unit = read_frequency_unit(forced, "frequency_unit", "rad/s");
-    forced.finish();
-    scene.request.forced = f;
+    scene.request.forced = read_forced(forced, scene);
   }
   request.finish();
   if (scene.request.inplane_modes == 0 && scene.request.outofplane_modes == 0 && !scene.request.forced) {
@@ -370,19 +247,8 @@ void read_checks(TableReader& root, Scene& scene) {
   checks.finish();
 }
 
-void read_published(TableReader& root, Scene& scene, const std::string& origin) {
-  const toml::value* list = root.find("published");
-  if (!list) return;
-  if (!list->is_array()) {
-    throw ParseError(fmt::format("{}: published: expected an array of tables [[published]]", origin));
-  }
-  int index = 0;
-  for (const auto& item : list->as_array()) {
-    ++index;
-    if (!item.is_table()) {
-      throw ParseError(fmt::format("{}: [[published]] entry {}: expected a table", origin, index));
-    }
-    TableReader table(item, origin, fmt::format("published#{}", index));
+void read_published(TableReader& root, Scene& scene) {
+  for (TableReader& table : root.table_array("published")) {
     PublishedValues published;
     published.source = table.string("source", "");
     if (published.source.empty()) {
@@ -470,18 +336,12 @@ std::vector<Scene> read_document(const toml::value& document, const std::string&
   scene.file = file;
   scene.name = root.string("name", file.empty() ? origin : file.stem().string());
   scene.description = root.string("description", "");
-  if (const toml::value* tags = root.find("tags")) {
-    if (!tags->is_array()) throw ParseError(fmt::format("{}: tags: expected an array of strings", origin));
-    for (const auto& tag : tags->as_array()) {
-      if (!tag.is_string()) throw ParseError(fmt::format("{}: tags: expected strings", origin));
-      scene.tags.push_back(tag.as_string().str);
-    }
-  }
+  if (root.has("tags")) scene.tags = root.strings("tags");
   scene.problem = read_problem(root, origin);
   read_request(root, scene);
   read_solvers(root, scene);
   read_checks(root, scene);
-  read_published(root, scene, origin);
+  read_published(root, scene);
   root.finish();
   return {scene};
 }
@@ -489,22 +349,12 @@ std::vector<Scene> read_document(const toml::value& document, const std::string&
 }  // namespace
 
 std::vector<Scene> parse_scene_text(const std::string& text, const std::string& origin) {
-  std::istringstream stream(text);
-  toml::value document;
-  try {
-    document = toml::parse(stream, origin);
-  } catch (const std::exception& error) {
-    throw ParseError(fmt::format("{}: TOML syntax error: {}", origin, error.what()));
-  }
-  return read_document(document, origin, origin);
+  return read_document(internal::parse_toml(text, origin), origin, origin);
 }
 
 std::vector<Scene> read_scene_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw ParseError(fmt::format("{}: cannot open scene file", path.string()));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  std::vector<Scene> scenes = parse_scene_text(buffer.str(), path.string());
+  const std::string text = internal::read_text_file(path, "scene file");
+  std::vector<Scene> scenes = parse_scene_text(text, path.string());
   for (auto& scene : scenes) scene.file = path;
   return scenes;
 }

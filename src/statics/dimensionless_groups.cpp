@@ -4,7 +4,7 @@
 #include <fmt/format.h>
 
 #include "catena/core/error.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/gale_coordinates.hpp"
 
 namespace catena {
 

@@ -113,6 +113,103 @@ StaticSolution solve_vertical(const Problem& problem) {
   return solution;
 }
 
+// Tension-specified: the state is given; the closure error against support b is checked.
+StaticSolution solve_prescribed(const Problem& problem) {
+  const EndForces& forces = *problem.prescribed_forces;
+  if (!std::isfinite(forces.horizontal_n) || forces.horizontal_n < 0.0 ||
+      !std::isfinite(forces.vertical_a_n)) {
+    throw InvalidInput(fmt::format(
+        "Invalid Problem::prescribed_forces = (H = {}, V_A = {}): H must be finite and >= 0, "
+        "V_A finite [N]",
+        forces.horizontal_n, forces.vertical_a_n));
+  }
+  const double L = problem.cable.length_m;
+  const Vec2 chord = problem.supports.chord_m();
+  StaticSolution solution(problem.cable, problem.supports.a_m, forces.horizontal_n,
+                          forces.vertical_a_n);
+  solution.iterations = 0;
+  solution.closure_error_m = (solution.offset_m(L) - chord).norm();
+  if (!(solution.closure_error_m <= 1e-9 * std::max(L, chord.norm()))) {
+    throw InvalidInput(fmt::format(
+        "Invalid Problem::prescribed_forces: the forces (H = {}, V_A = {}) put the end of the "
+        "cable {:.3e} m away from support b",
+        forces.horizontal_n, forces.vertical_a_n, solution.closure_error_m));
+  }
+  return solution;
+}
+
+// Initial guess (after Peyrot & Goulois 1979): parabolic sag for a slack cable; a straight
+// stretched estimate when the chord exceeds L (possible only when EA is finite). Returns (H, V_A).
+Vec2 initial_end_forces(const CableProperties& cable, const Vec2& chord) {
+  const double L = cable.length_m;
+  const double W0 = cable.weight_n_per_m;
+  const double dx = chord.x();
+  const double dz = chord.y();
+  const double d = chord.norm();
+  const double slack_ratio = (L * L - dz * dz) / (dx * dx) - 1.0;
+  const double lambda0 = slack_ratio > 0.0 ? std::sqrt(3.0 * slack_ratio) : 0.2;
+  double H = std::abs(W0 * dx / (2.0 * std::max(lambda0, 1e-6)));
+  if (!cable.is_inextensible() && d > L) {
+    const double stretched_tension = cable.axial_stiffness_n * (d / L - 1.0);
+    H = std::max(H, stretched_tension * dx / d);
+  }
+  return {H, H * dz / dx - 0.5 * W0 * L};
+}
+
+// Newton on (H, V_A) with the analytic Jacobian and a backtracking line search that keeps H > 0.
+// A stall is reported in the solution (converged = false), never thrown.
+StaticSolution solve_newton(const Problem& problem, const StaticsOptions& options) {
+  const CableProperties& cable = problem.cable;
+  const double L = cable.length_m;
+  const Vec2 chord = problem.supports.chord_m();
+  const double d = chord.norm();
+  Vec2 forces = initial_end_forces(cable, chord);
+  double& H = forces.x();
+  double& V_A = forces.y();
+
+  const double tolerance = options.relative_tolerance * std::max(L, d);
+  auto residual = [&](double h, double v) { return (offset(cable, h, v, L) - chord).eval(); };
+  Vec2 r = residual(H, V_A);
+  int iteration = 0;
+  for (; iteration < options.max_iterations && r.norm() > tolerance; ++iteration) {
+    const Eigen::Matrix2d J = offset_jacobian(cable, H, V_A);
+    const Vec2 step = J.fullPivLu().solve(-r);
+    if (!step.allFinite()) break;
+    // Backtracking: keep H > 0 (the catenary is undefined otherwise) and decrease |r|.
+    double alpha = 1.0;
+    bool accepted = false;
+    for (int halving = 0; halving < 60; ++halving, alpha *= 0.5) {
+      const double H_trial = H + alpha * step.x();
+      if (!(H_trial > 0.0)) continue;
+      const double V_trial = V_A + alpha * step.y();
+      const Vec2 r_trial = residual(H_trial, V_trial);
+      if (r_trial.allFinite() && r_trial.norm() < (1.0 - 1e-4 * alpha) * r.norm()) {
+        H = H_trial;
+        V_A = V_trial;
+        r = r_trial;
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;
+  }
+  StaticSolution solution(cable, problem.supports.a_m, H, V_A);
+  solution.iterations = iteration;
+  solution.closure_error_m = r.norm();
+  // Newton can stall a few ulps above a very tight tolerance: the closure is then at the rounding
+  // floor of evaluating r(L), which is accepted (and reported as the closure error).
+  const double rounding_floor = 1e-11 * std::max(L, d);
+  if (!(r.norm() <= std::max(tolerance, rounding_floor)) || !std::isfinite(H) ||
+      !std::isfinite(V_A)) {
+    solution.converged = false;
+    solution.message = fmt::format(
+        "Statics did not converge: closure error {:.3e} m > {:.3e} m after {} Newton iterations "
+        "(H = {:.6g} N, V_A = {:.6g} N)",
+        r.norm(), tolerance, iteration, H, V_A);
+  }
+  return solution;
+}
+
 }  // namespace
 
 void StaticsOptions::validate() const {
@@ -178,95 +275,17 @@ StaticSolution solve_statics(const Problem& problem, const StaticsOptions& optio
   problem.validate();
   options.validate();
   const CableProperties& cable = problem.cable;
-  const double L = cable.length_m;
-  const double W0 = cable.weight_n_per_m;
   const Vec2 chord = problem.supports.chord_m();
-  const double dx = chord.x();
-  const double dz = chord.y();
   const double d = chord.norm();
-
-  if (problem.prescribed_forces) {
-    // Tension-specified: the state is given; report how well b matches it.
-    const EndForces& forces = *problem.prescribed_forces;
-    if (!std::isfinite(forces.horizontal_n) || forces.horizontal_n < 0.0 ||
-        !std::isfinite(forces.vertical_a_n)) {
-      throw InvalidInput(fmt::format(
-          "Invalid Problem::prescribed_forces = (H = {}, V_A = {}): H must be finite and >= 0, "
-          "V_A finite [N]",
-          forces.horizontal_n, forces.vertical_a_n));
-    }
-    StaticSolution solution(cable, problem.supports.a_m, forces.horizontal_n, forces.vertical_a_n);
-    solution.iterations = 0;
-    solution.closure_error_m = (solution.offset_m(L) - chord).norm();
-    if (!(solution.closure_error_m <= 1e-9 * std::max(L, d))) {
-      throw InvalidInput(fmt::format(
-          "Invalid Problem::prescribed_forces: the forces (H = {}, V_A = {}) put the end of the "
-          "cable {:.3e} m away from support b",
-          forces.horizontal_n, forces.vertical_a_n, solution.closure_error_m));
-    }
-    return solution;
-  }
-
-  if (dx <= 1e-14 * d) return solve_vertical(problem);
-
-  if (cable.is_inextensible() && L <= d * (1.0 + 1e-14)) {
+  if (problem.prescribed_forces) return solve_prescribed(problem);
+  if (chord.x() <= 1e-14 * d) return solve_vertical(problem);
+  if (cable.is_inextensible() && cable.length_m <= d * (1.0 + 1e-14)) {
     throw InvalidInput(fmt::format(
         "No static equilibrium: the chord |b - a| = {:.10g} m is {} the inextensible cable length "
         "L = {:.10g} m (the ends are farther apart than the cable can reach)",
-        d, L < d ? "longer than" : "equal to", L));
+        d, cable.length_m < d ? "longer than" : "equal to", cable.length_m));
   }
-
-  // Initial guess (after Peyrot & Goulois 1979): parabolic sag for a slack cable; a straight
-  // stretched estimate when the chord exceeds L (possible only when EA is finite).
-  const double slack_ratio = (L * L - dz * dz) / (dx * dx) - 1.0;
-  const double lambda0 = slack_ratio > 0.0 ? std::sqrt(3.0 * slack_ratio) : 0.2;
-  double H = std::abs(W0 * dx / (2.0 * std::max(lambda0, 1e-6)));
-  if (!cable.is_inextensible() && d > L) {
-    const double stretched_tension = cable.axial_stiffness_n * (d / L - 1.0);
-    H = std::max(H, stretched_tension * dx / d);
-  }
-  double V_A = H * dz / dx - 0.5 * W0 * L;
-
-  const double tolerance = options.relative_tolerance * std::max(L, d);
-  auto residual = [&](double h, double v) { return (offset(cable, h, v, L) - chord).eval(); };
-  Vec2 r = residual(H, V_A);
-  int iteration = 0;
-  for (; iteration < options.max_iterations && r.norm() > tolerance; ++iteration) {
-    const Eigen::Matrix2d J = offset_jacobian(cable, H, V_A);
-    const Vec2 step = J.fullPivLu().solve(-r);
-    if (!step.allFinite()) break;
-    // Backtracking: keep H > 0 (the catenary is undefined otherwise) and decrease |r|.
-    double alpha = 1.0;
-    bool accepted = false;
-    for (int halving = 0; halving < 60; ++halving, alpha *= 0.5) {
-      const double H_trial = H + alpha * step.x();
-      if (!(H_trial > 0.0)) continue;
-      const double V_trial = V_A + alpha * step.y();
-      const Vec2 r_trial = residual(H_trial, V_trial);
-      if (r_trial.allFinite() && r_trial.norm() < (1.0 - 1e-4 * alpha) * r.norm()) {
-        H = H_trial;
-        V_A = V_trial;
-        r = r_trial;
-        accepted = true;
-        break;
-      }
-    }
-    if (!accepted) break;
-  }
-  // Newton can stall a few ulps above a very tight tolerance: the closure is then at the rounding
-  // floor of evaluating r(L), which is accepted (and reported as the closure error).
-  const double rounding_floor = 1e-11 * std::max(L, d);
-  if (!(r.norm() <= std::max(tolerance, rounding_floor)) || !std::isfinite(H) ||
-      !std::isfinite(V_A)) {
-    throw InvalidInput(fmt::format(
-        "Statics did not converge: closure error {:.3e} m > {:.3e} m after {} Newton iterations "
-        "(H = {:.6g} N, V_A = {:.6g} N); check that the supports are reachable by the cable",
-        r.norm(), tolerance, iteration, H, V_A));
-  }
-  StaticSolution solution(cable, problem.supports.a_m, H, V_A);
-  solution.iterations = iteration;
-  solution.closure_error_m = r.norm();
-  return solution;
+  return solve_newton(problem, options);
 }
 
 }  // namespace catena

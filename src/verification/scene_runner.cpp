@@ -26,50 +26,95 @@ int SceneResult::failed_checks() const {
   return failed;
 }
 
-SceneResult run_scene(const Scene& scene, const SceneRunOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  SceneResult result;
-  result.scene = scene;
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void record_error(SceneResult& result, SceneError kind, const std::string& message) {
+  result.error = fmt::format("{}: {}", result.scene.file.string(), message);
+  result.error_kind = kind;
+}
+
+// Statics, groups and the SI request, shared by every solver. False (with the error recorded)
+// when the scene cannot go further.
+bool prepare(SceneResult& result) {
+  const Scene& scene = result.scene;
   try {
-    result.statics = solve_statics(scene.problem);
-    result.groups = compute_dimensionless_groups(scene.problem, *result.statics);
+    StaticSolution statics = solve_statics(scene.problem);
+    if (!statics.converged) {
+      record_error(result, SceneError::NumericalFailure, statics.message);
+      return false;
+    }
+    result.groups = compute_dimensionless_groups(scene.problem, statics);
+    result.statics = std::move(statics);
     result.request = resolve_request(scene, *result.groups);
   } catch (const Error& error) {
-    result.error = fmt::format("{}: {}", scene.file.string(), error.what());
+    record_error(result, SceneError::BadInput, error.what());
     result.statics.reset();
     result.groups.reset();
-    result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result;
+    return false;
   }
+  return true;
+}
 
+bool selected(const SceneRunOptions& options, const std::string& name) {
+  return options.only_solvers.empty() ||
+         std::find(options.only_solvers.begin(), options.only_solvers.end(), name) !=
+             options.only_solvers.end();
+}
+
+void run_solvers(SceneResult& result, const SceneRunOptions& options) {
+  const Scene& scene = result.scene;
   const SolveContext context{scene.problem, *result.statics, *result.groups, result.request};
   for (const std::string& name : scene.solver_names()) {
-    if (!options.only_solvers.empty() &&
-        std::find(options.only_solvers.begin(), options.only_solvers.end(), name) ==
-            options.only_solvers.end()) {
-      continue;
-    }
+    if (!selected(options, name)) continue;
     const SolverEntry* entry = find_solver(name);
     const auto knobs = scene.solvers.count(name) ? scene.solvers.at(name) : SolverKnobs{};
     try {
       result.outputs.push_back(run_solver(*entry, context, knobs));
     } catch (const InvalidInput& error) {
-      result.error = fmt::format("{}: solver {}: {}", scene.file.string(), name, error.what());
+      record_error(result, SceneError::BadInput, fmt::format("solver {}: {}", name, error.what()));
       break;
     }
   }
-  if (options.perturbation) {
-    for (auto& output : result.outputs) {
-      if (output.solver != options.perturbation->solver) continue;
-      auto& modal = options.perturbation->plane == Plane::InPlane ? output.inplane : output.outofplane;
-      if (!modal) continue;
-      for (auto& mode : modal->modes) {
-        if (mode.index == options.perturbation->mode) mode.omega_rad_s *= 1.0 + options.perturbation->relative;
-      }
+}
+
+void apply_perturbation(const Perturbation& perturbation, std::vector<SolverOutput>& outputs) {
+  for (auto& output : outputs) {
+    if (output.solver != perturbation.solver) continue;
+    auto& modal = perturbation.plane == Plane::InPlane ? output.inplane : output.outofplane;
+    if (!modal) continue;
+    for (auto& mode : modal->modes) {
+      if (mode.index == perturbation.mode) mode.omega_rad_s *= 1.0 + perturbation.relative;
     }
   }
-  if (options.checks && result.error.empty()) result.checks = internal::run_checks(result);
-  result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+void SceneRunOptions::validate() const {
+  if (checks && tolerances.rules().empty()) {
+    throw InvalidInput(
+        "SceneRunOptions::tolerances is empty while checks are asked: pass builtin_tolerance_table() "
+        "or a table read by read_tolerance_file()");
+  }
+}
+
+SceneResult run_scene(const Scene& scene, const SceneRunOptions& options) {
+  options.validate();
+  const auto start = std::chrono::steady_clock::now();
+  SceneResult result;
+  result.scene = scene;
+  if (!prepare(result)) {
+    result.wall_time_s = seconds_since(start);
+    return result;
+  }
+  run_solvers(result, options);
+  if (options.perturbation) apply_perturbation(*options.perturbation, result.outputs);
+  if (options.checks && result.error.empty()) result.checks = internal::run_checks(result, options.tolerances, options.findings);
+  result.wall_time_s = seconds_since(start);
   return result;
 }
 

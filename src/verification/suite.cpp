@@ -11,6 +11,7 @@ std::vector<SceneResult> run_scenes(const std::vector<Scene>& scenes,
                                     int jobs,
                                     const SceneRunOptions& options,
                                     const SuiteProgress& progress) {
+  options.validate();  // before the workers: an exception must not escape a thread
   const int threads = jobs > 0 ? jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   std::vector<SceneResult> results(scenes.size());
   // Scenes are independent: a shared counter hands them out, each worker writes its own slots.

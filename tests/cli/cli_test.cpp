@@ -1,6 +1,6 @@
-// The `catena` executable: exit codes (0 ok, 1 failed check, 2 bad input/usage), error messages on
-// stderr naming file/table/key, and JSON without NaN. Runs the built binary on scenes written to
-// a temporary directory.
+// The `catena` executable: exit codes (0 ok, 1 failed check, 2 bad input/usage, 3 numerical
+// failure of a scene), error messages on stderr naming file/table/key, and JSON without NaN. Runs
+// the built binary on scenes written to a temporary directory.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -91,6 +91,34 @@ b = [150.0, 0.0]
   const CliRun run = run_cli("solve " + scene.string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("farther apart than the cable can reach"), std::string::npos) << run.output;
+}
+
+// A heavy (W0 L = 1e9 N), very compliant (EA = 1e3 N) line on a nearly vertical chord: the
+// stretched cable is ~1e6 times its length, and Newton stalls at a closure error of ~1e-8 m, far
+// above its 1e-11 m target. That is a numerical failure of a valid problem, not bad input.
+const std::string kStaticsStall = R"(
+[cable]
+length = 1000.0
+weight = 1.0e6
+EA = 1.0e3
+mass = 1.0
+a = [0.0, 0.0]
+b = [1.0, 999.0]
+)";
+
+TEST(Cli, StaticsThatDoNotConvergeExitThreeNotTwo) {
+  const fs::path scene = write_scene("stall.toml", kStaticsStall);
+  const CliRun run = run_cli("solve " + scene.string());
+  EXPECT_EQ(run.exit_code, 3) << run.output;
+  EXPECT_NE(run.output.find("Statics did not converge"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("stall.toml"), std::string::npos) << run.output;
+
+  const fs::path dir = fs::temp_directory_path() / "catena_cli_verify_stall";
+  fs::create_directories(dir / "scenes");
+  std::ofstream(dir / "scenes" / "stall.toml") << kStaticsStall;
+  const CliRun verify = run_cli("verify --scenes " + (dir / "scenes").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(verify.exit_code, 3) << verify.output;
+  EXPECT_NE(verify.output.find("1 scene errors"), std::string::npos) << verify.output;
 }
 
 TEST(Cli, UsageErrorsExitTwo) {

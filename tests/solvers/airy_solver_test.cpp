@@ -15,7 +15,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/csv_table.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "solvers/solver_test_support.hpp"

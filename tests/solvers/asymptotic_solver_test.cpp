@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/elastic_catenary.hpp"

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "solvers/internal/fe_model.hpp"

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
 

@@ -11,7 +11,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/csv_table.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/frobenius_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/dimensionless_groups.hpp"

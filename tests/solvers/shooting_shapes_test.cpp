@@ -18,7 +18,7 @@
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
 #include "solvers/internal/mode_tools.hpp"
 #include "test_utils.hpp"

@@ -18,7 +18,7 @@
 #include <cstdio>
 
 #include "catena/core/error.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"

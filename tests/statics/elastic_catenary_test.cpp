@@ -1,6 +1,6 @@
-// Statics of the elastic catenary (DESIGN.md §1.2).
+// Statics of the elastic catenary (docs/physics.md).
 // Compared: the Newton solution against its own closure equations, against the inextensible
-// catenary (EA -> inf, observed rate), against Turchetto's touchdown form (seed 002), and against
+// catenary (EA -> inf, observed rate), against Turchetto's touchdown form (Turchetto 2016; docs/references.md), and against
 // itself after rescaling units. Expected values are properties of the exact solution, not numbers
 // copied from a run.
 #include <gtest/gtest.h>
@@ -46,6 +46,24 @@ TEST(ElasticCatenary, ClosesOnSupportBForVariedGeometries) {
     EXPECT_GT(s.horizontal_force_n(), 0.0);
     EXPECT_LT(s.iterations, 60) << s.brief_report();
   }
+}
+
+TEST(ElasticCatenary, NewtonStallIsAStatusNotAnException) {
+  // One Newton step from the parabolic guess cannot close a 1000 m mooring line to 1e-14: the
+  // solve must report it (converged = false, with the closure error) instead of throwing.
+  StaticsOptions options;
+  options.max_iterations = 1;
+  StaticSolution s;
+  EXPECT_NO_THROW(s = solve_statics(mooring_problem(), options));
+  EXPECT_FALSE(s.converged);
+  EXPECT_EQ(s.iterations, 1);
+  EXPECT_GT(s.closure_error_m, 1e-11 * 1000.0);
+  EXPECT_NE(s.message.find("did not converge"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("1 Newton iterations"), std::string::npos) << s.message;
+
+  const StaticSolution converged = solve_statics(mooring_problem());
+  EXPECT_TRUE(converged.converged);
+  EXPECT_TRUE(converged.message.empty()) << converged.message;
 }
 
 TEST(ElasticCatenary, TangentIsDerivativeOfPositionOverStretch) {
@@ -137,7 +155,7 @@ TEST(ElasticCatenary, StretchedLengthMatchesIntegralOfStrain) {
   EXPECT_LT(relative_error(s.stretched_length_m(L), sum * h / 3.0), 1e-12);
 }
 
-// --- Turchetto's touchdown form (seed 002) against the general two-support solver ---
+// --- Turchetto's touchdown form (Turchetto 2016; docs/references.md) against the general two-support solver ---
 
 TEST(TouchdownCatenary, AgreesWithGeneralSolverFromLowestPoint) {
   // A line from its lowest point (V_A = 0) to the fairlead: the general solver given the same end

@@ -21,7 +21,7 @@
 
 #include "catena/core/version.hpp"
 #include "catena/io/csv_table.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"

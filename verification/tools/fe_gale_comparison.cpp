@@ -26,7 +26,7 @@
 #include <string>
 
 #include "catena/io/csv_table.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 

@@ -2,7 +2,8 @@
 """Figures of the Catena report, drawn with matplotlib from the results JSON of `catena verify`.
 
     /usr/bin/python3 verification/tools/figures.py --results build/report/report.json \
-        --published verification/reference/published --out build/report/figures
+        --published verification/reference/published --out build/report/figures \
+        --time-vs-error benchmarks/results/time-vs-error.csv
 
 Writes PNG files and index.json ([{file, caption}], in report order). A figure whose scenes are
 not in the results (e.g. a filtered run) is skipped. Published points are read from the
@@ -12,7 +13,10 @@ import argparse
 import csv
 import json
 import math
+import os
 import pathlib
+import sys
+import types
 
 import matplotlib
 
@@ -21,7 +25,27 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 STYLE = {"shooting": ("-", "o", "C0"), "fe": ("--", "s", "C1"), "frobenius": (":", "^", "C2"),
          "asymptotic": ("-.", "v", "C3"), "airy": ((0, (3, 1, 1, 1)), "D", "C4")}
-PLANES = {"inplane": "in-plane", "outofplane": "out-of-plane"}
+# The data dir (share/catena, or <build>/share/catena where this script is a link): the directory
+# the script was started from, links not resolved.
+DATA_DIR = pathlib.Path(os.path.abspath(sys.argv[0])).parent
+
+
+def load_keys():
+    """The JSON key names (src/io/results_keys.txt, the list the C++ writer uses too): the generated
+    module results_keys.py of the data dir, or, run from the source tree, the list itself."""
+    sys.path.insert(0, str(DATA_DIR))
+    try:
+        import results_keys
+        return results_keys
+    except ImportError:
+        listing = pathlib.Path(__file__).resolve().parents[2] / "src" / "io" / "results_keys.txt"
+        names = [line.strip() for line in listing.read_text().splitlines()
+                 if line.strip() and not line.startswith("#")]
+        return types.SimpleNamespace(**{name: name for name in names})
+
+
+K = load_keys()
+PLANES = {K.inplane: "in-plane", K.outofplane: "out-of-plane"}
 
 
 def read_table(path):
@@ -31,7 +55,7 @@ def read_table(path):
 
 class Figures:
     def __init__(self, results, published, out):
-        self.scenes = results["scenes"]
+        self.scenes = results[K.scenes]
         self.published = pathlib.Path(published)
         self.out = pathlib.Path(out)
         self.index = []
@@ -40,24 +64,24 @@ class Figures:
         fig.tight_layout()
         fig.savefig(self.out / name, dpi=110)
         plt.close(fig)
-        self.index.append({"file": name, "caption": caption})
+        self.index.append({K.file: name, K.caption: caption})
 
     def sweep(self, prefix):
         """Scenes of one sweep (name starts with prefix + '['), sorted by the swept value."""
-        members = [s for s in self.scenes if s["name"].startswith(prefix + "[") and s.get("sweep")]
-        return sorted(members, key=lambda s: s["sweep"]["value"])
+        members = [s for s in self.scenes if s[K.name].startswith(prefix + "[") and s.get(K.sweep)]
+        return sorted(members, key=lambda s: s[K.sweep][K.value])
 
     @staticmethod
     def modes(scene, solver, plane):
-        out = scene["solvers"].get(solver, {})
-        return out.get(plane, {}).get("modes", []) if out.get("summary", {}).get("termination") in (
+        out = scene[K.solvers].get(solver, {})
+        return out.get(plane, {}).get(K.modes, []) if out.get(K.summary, {}).get(K.termination) in (
             "converged", "no-convergence") else []
 
     def solvers_in(self, scenes):
         names = []
         for s in scenes:
-            for name, out in s["solvers"].items():
-                if out["summary"]["termination"] in ("converged", "no-convergence") and name not in names:
+            for name, out in s[K.solvers].items():
+                if out[K.summary][K.termination] in ("converged", "no-convergence") and name not in names:
                     names.append(name)
         return [n for n in STYLE if n in names]
 
@@ -66,12 +90,12 @@ class Figures:
         if not scenes:
             return
         fig, ax = plt.subplots(figsize=(7.5, 4.8))
-        x = [s["sweep"]["value"] for s in scenes]
+        x = [s[K.sweep][K.value] for s in scenes]
         for solver in self.solvers_in(scenes):
             ls, marker, color = STYLE[solver]
-            count = max(len(self.modes(s, solver, "inplane")) for s in scenes)
+            count = max(len(self.modes(s, solver, K.inplane)) for s in scenes)
             for k in range(count if modes_shown is None else min(count, modes_shown)):
-                y = [self.modes(s, solver, "inplane")[k][unit_key] if k < len(self.modes(s, solver, "inplane"))
+                y = [self.modes(s, solver, K.inplane)[k][unit_key] if k < len(self.modes(s, solver, K.inplane))
                      else math.nan for s in scenes]
                 ax.plot(x, y, linestyle=ls, marker=marker, markersize=3, color=color,
                         label=solver if k == 0 else None)
@@ -80,18 +104,18 @@ class Figures:
                     markerfacecolor="none", color="k", label=label)
         ax.set_xscale("log")
         ax.set_xlabel("lambda^2")
-        ax.set_ylabel("kL/pi" if unit_key == "k_l_over_pi" else unit_key)
+        ax.set_ylabel("kL/pi" if unit_key == K.k_l_over_pi else unit_key)
         ax.axvline(4 * math.pi ** 2, color="0.7", linewidth=0.8)
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
         self.save(fig, name, caption)
 
     def grinfogel(self):
-        self.frequency_sweep("irvine-horizontal", "k_l_over_pi", "irvine-horizontal.png",
+        self.frequency_sweep("irvine-horizontal", K.k_l_over_pi, "irvine-horizontal.png",
                              "Grinfogel Fig. 1.2.5 regenerated: in-plane kL/pi against lambda^2 of a horizontal "
                              "cable (eps = 0.01); symmetric and antisymmetric families cross at lambda^2 = 4 pi^2 "
                              "(grey line).")
-        self.frequency_sweep("inclined-crossover", "k_l_over_pi", "inclined-crossover.png",
+        self.frequency_sweep("inclined-crossover", K.k_l_over_pi, "inclined-crossover.png",
                              "Grinfogel Fig. 1.2.6.2 regenerated: in-plane kL/pi against lambda^2 of an inclined "
                              "cable (phi = 20 deg, eps = 0.1): the families veer instead of crossing.")
         table = self.published / "grinfogel-1984-table-2-2-frequencies.csv"
@@ -100,7 +124,7 @@ class Figures:
             sel = [r for r in rows if r["eps"] == eps and r["phi_deg"] == phi]
             exact = [(float(r["lambda2"]), float(r["exact"])) for r in sel]
             approx = [(float(r["lambda2"]), float(r["approx"])) for r in sel]
-            self.frequency_sweep(f"grinfogel-curve-eps{eps}-phi{phi}", "k_l_over_pi",
+            self.frequency_sweep(f"grinfogel-curve-eps{eps}-phi{phi}", K.k_l_over_pi,
                                  f"grinfogel-eps{eps}-phi{phi}.png",
                                  f"Grinfogel Table 2.2 / Fig. 2.2, eps = {eps}, phi = {phi} deg: our solvers' "
                                  f"kL/pi against lambda^2, with the published 'exact' (circles) and 'approx' "
@@ -108,7 +132,7 @@ class Figures:
                                  [("published exact", exact, "o"), ("published approx", approx, "s")])
 
     def mode_shapes(self):
-        scenes = [s for s in self.sweep("inclined-crossover") if s["sweep"]["value"] in (10.0, 45.0, 120.0)]
+        scenes = [s for s in self.sweep("inclined-crossover") if s[K.sweep][K.value] in (10.0, 45.0, 120.0)]
         if not scenes:
             return
         fig, axes = plt.subplots(len(scenes), 2, figsize=(9, 2.6 * len(scenes)), squeeze=False)
@@ -116,13 +140,13 @@ class Figures:
             for k in range(2):
                 ax = axes[row][k]
                 for solver in self.solvers_in([scene]):
-                    modes = self.modes(scene, solver, "inplane")
-                    if k < len(modes) and "shape" in modes[k] and "w" in modes[k]["shape"]:
-                        shape = modes[k]["shape"]
+                    modes = self.modes(scene, solver, K.inplane)
+                    if k < len(modes) and K.shape in modes[k] and K.w in modes[k][K.shape]:
+                        shape = modes[k][K.shape]
                         ls, _, color = STYLE[solver]
-                        s = [v / shape["s_m"][-1] for v in shape["s_m"]]
-                        ax.plot(s, shape["w"], linestyle=ls, color=color, label=solver)
-                ax.set_title(f"lambda^2 = {scene['sweep']['value']:g}, mode {k + 1}: w(s)", fontsize=9)
+                        s = [v / shape[K.s_m][-1] for v in shape[K.s_m]]
+                        ax.plot(s, shape[K.w], linestyle=ls, color=color, label=solver)
+                ax.set_title(f"lambda^2 = {scene[K.sweep][K.value]:g}, mode {k + 1}: w(s)", fontsize=9)
                 ax.grid(alpha=0.3)
                 if row == 0 and k == 0:
                     ax.legend(fontsize=7)
@@ -138,15 +162,15 @@ class Figures:
         if not scenes:
             return
         fig, ax = plt.subplots(figsize=(7.5, 4.5))
-        x = [s["sweep"]["value"] for s in scenes]
+        x = [s[K.sweep][K.value] for s in scenes]
         drawn = False
         for solver in self.solvers_in(scenes):
             ls, marker, color = STYLE[solver]
             for k in range(2):
                 y = []
                 for s in scenes:
-                    m = self.modes(s, solver, "inplane")
-                    y.append(m[k].get("max_abs_tension_n", math.nan) if k < len(m) else math.nan)
+                    m = self.modes(s, solver, K.inplane)
+                    y.append(m[k].get(K.max_abs_tension_n, math.nan) if k < len(m) else math.nan)
                 if all(math.isnan(v) for v in y):
                     continue
                 drawn = True
@@ -167,22 +191,22 @@ class Figures:
                   "eps = 0.1); the tension of the first modes is amplified near cross-over.")
 
     def gale_frequencies(self):
-        for table, label, plane in [("gale-1976-table-B3-inplane.csv", "b-3", "inplane"),
-                                    ("gale-1976-table-B4-outofplane.csv", "b-4", "outofplane")]:
+        for table, label, plane in [("gale-1976-table-B3-inplane.csv", "b-3", K.inplane),
+                                    ("gale-1976-table-B4-outofplane.csv", "b-4", K.outofplane)]:
             path = self.published / table
             if not path.exists():
                 continue
             rows = read_table(path)
             for hb in sorted({r["h_over_b"] for r in rows}, key=float):
-                scenes = [s for s in self.scenes if s["name"].startswith(f"gale-{label}-hb{float(hb):.2f}-sag")]
+                scenes = [s for s in self.scenes if s[K.name].startswith(f"gale-{label}-hb{float(hb):.2f}-sag")]
                 if not scenes:
                     continue
-                scenes.sort(key=lambda s: s["groups"]["gale"]["sag_param"] or 0)
+                scenes.sort(key=lambda s: s[K.groups][K.gale][K.sag_param] or 0)
                 fig, ax = plt.subplots(figsize=(7, 4.5))
                 for solver in self.solvers_in(scenes):
                     ls, marker, color = STYLE[solver]
                     for k in range(6):
-                        pts = [(s["groups"]["gale"]["sag_param"], self.modes(s, solver, plane)[k]["gale_ratio"])
+                        pts = [(s[K.groups][K.gale][K.sag_param], self.modes(s, solver, plane)[k][K.gale_ratio])
                                for s in scenes if k < len(self.modes(s, solver, plane))]
                         if pts:
                             ax.plot(*zip(*pts), linestyle=ls, marker=marker, markersize=3, color=color,
@@ -204,19 +228,19 @@ class Figures:
     def gale_forced(self):
         table = self.published / "gale-1976-table-C2-forced-max-tension.csv"
         rows = read_table(table) if table.exists() else []
-        for scene in [s for s in self.scenes if s["name"].startswith("gale-c-2-curve-")]:
-            H = scene["statics"]["horizontal_force_n"]
-            scale = scene["groups"]["gale"]["frequency_scale_rad_s"]
+        for scene in [s for s in self.scenes if s[K.name].startswith("gale-c-2-curve-")]:
+            H = scene[K.statics][K.horizontal_force_n]
+            scale = scene[K.groups][K.gale][K.frequency_scale_rad_s]
             fig, ax = plt.subplots(figsize=(7.5, 4.5))
             for solver in self.solvers_in([scene]):
-                forced = scene["solvers"][solver].get("forced", [])
-                pts = [(f["omega_rad_s"] / scale, f["max_abs_tension_n"] / H) for f in forced
-                       if not f.get("diagnostic") and f.get("max_abs_tension_n") is not None]
+                forced = scene[K.solvers][solver].get(K.forced, [])
+                pts = [(f[K.omega_rad_s] / scale, f[K.max_abs_tension_n] / H) for f in forced
+                       if not f.get(K.diagnostic) and f.get(K.max_abs_tension_n) is not None]
                 if pts:
                     ls, _, color = STYLE[solver]
                     ax.plot(*zip(*pts), linestyle=ls, color=color, label=solver)
-            hb = f"{scene['groups']['gale']['h_over_b']:.2f}"
-            sag = scene["name"].split("-sag")[-1]
+            hb = f"{scene[K.groups][K.gale][K.h_over_b]:.2f}"
+            sag = scene[K.name].split("-sag")[-1]
             pub = [(float(r["wf"]), float(r["tmax"])) for r in rows
                    if f"{float(r['h_over_b']):.2f}" == hb and r["sag_param"] == sag]
             if pub:
@@ -227,7 +251,7 @@ class Figures:
             ax.set_ylabel("max |dynamic tension| / H")
             ax.legend(fontsize=8)
             ax.grid(alpha=0.3)
-            self.save(fig, f"{scene['name']}.png",
+            self.save(fig, f"{scene[K.name]}.png",
                       f"Gale Figs. 3.14-3.15 regenerated: maximum dynamic tension along the cable against the "
                       f"forcing frequency, tangential end motion 0.01 a, h/b = {hb}, sag parameter {sag}; "
                       f"Table C-2 as open circles.")
@@ -272,8 +296,7 @@ def main():
     parser.add_argument("--results", required=True)
     parser.add_argument("--published", required=True)
     parser.add_argument("--out", required=True)
-    parser.add_argument("--time-vs-error", default=str(pathlib.Path(__file__).resolve().parents[2] / "benchmarks" /
-                                                      "results" / "time-vs-error.csv"))
+    parser.add_argument("--time-vs-error", default=str(DATA_DIR / "benchmarks" / "time-vs-error.csv"))
     args = parser.parse_args()
     with open(args.results) as f:
         results = json.load(f)

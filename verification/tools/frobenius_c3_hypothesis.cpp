@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/internal/frobenius_catenary.hpp"
 
 using namespace catena;

@@ -16,7 +16,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 
 namespace {
 

@@ -25,7 +25,7 @@
 #include <string>
 
 #include "catena/io/csv_table.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
 
 int main(int argc, char** argv) {

@@ -1,8 +1,10 @@
 #pragma once
 /// \file
-/// The three kinds of failure (STYLE.md §5). Bad input and unreadable files throw one of these
-/// before any work is done; numerical outcomes are never exceptions (they go in SolverSummary);
-/// broken internal invariants are assert()s.
+/// The exceptions Catena throws (docs/architecture.md, "Errors"). Only bad input throws, before
+/// any work is done: InvalidInput for a value that violates a documented constraint (including an
+/// output path that cannot be written), ParseError for a file that cannot be read or parsed.
+/// Numerical outcomes are never exceptions: they are statuses (SolverSummary::termination,
+/// StaticSolution::converged). Broken internal invariants are assert()s.
 
 #include <stdexcept>
 #include <string>

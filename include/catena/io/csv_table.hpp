@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Reading and writing the small CSV tables of verification/reference/: '#' lines are provenance
-/// comments, the first other line is the header, empty cells are missing values.
+/// comments, the first other line is the header, empty cells are missing values. A cell in double
+/// quotes may hold commas ("" is a quote inside it); the writer quotes such cells.
 
 #include <filesystem>
 #include <optional>
@@ -27,7 +28,8 @@ struct CsvTable {
 /// Reads `path`. Throws ParseError (with file and line) when unreadable or ragged.
 CsvTable read_csv_table(const std::filesystem::path& path);
 
-/// Writes `table` with its comments as '# ' lines. Throws Error when the file cannot be written.
+/// Writes `table` with its comments as '# ' lines. Throws InvalidInput when the file cannot be
+/// written.
 void write_csv_table(const std::filesystem::path& path, const CsvTable& table);
 
 }  // namespace catena

@@ -5,7 +5,7 @@
 /// the table and the key, e.g.
 ///     "scenes/x.toml: [cable].mass = -1: must be > 0 [kg/m]"
 ///
-/// Format (DESIGN.md §3; documented with examples in verification/README.md):
+/// Format (docs/scene-format.md; documented with examples in verification/README.md):
 ///
 ///     name = "mooring-line"            # optional (default: file stem)
 ///     description = "..."              # optional

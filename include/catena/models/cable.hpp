@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The cable and its supports in SI units (DESIGN.md §1.1), and the Problem every solver answers.
+/// The cable and its supports in SI units (docs/physics.md), and the Problem every solver answers.
 
 #include <optional>
 #include <string>

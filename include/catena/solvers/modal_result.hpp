@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "catena/core/types.hpp"
-#include "catena/solvers/solve_request.hpp"
 #include "catena/solvers/solver_summary.hpp"
 
 namespace catena {

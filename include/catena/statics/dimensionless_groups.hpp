@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The dimensionless groups of DESIGN.md §1.4, computed for any problem, and the frequency
+/// The dimensionless groups of docs/physics.md ("Dimensionless groups"), computed for any problem, and the frequency
 /// conversions between rad/s, kL/pi (Grinfogel) and w / sqrt(g/a) (Gale).
 
 #include <optional>
@@ -11,10 +11,10 @@
 
 namespace catena {
 
-/// Groups of the taut inclined cable (Grinfogel 1984, seed 000) and of the suspended catenary
-/// (Gale 1976, seed 003).
+/// Groups of the taut inclined cable (Grinfogel 1984; docs/references.md) and of the suspended catenary
+/// (Gale 1976; docs/references.md).
 struct DimensionlessGroups {
-  // --- taut inclined cable (seed 000) ---
+  // --- taut inclined cable (Grinfogel 1984) ---
   /// phi_a: inclination of the chord a -> b above the horizontal [rad], in (-pi/2, pi/2].
   double chord_angle_rad = 0.0;
   /// s_a: arc length where the static angle equals phi_a [m].
@@ -28,7 +28,7 @@ struct DimensionlessGroups {
   /// h = m / M [-].
   double mass_ratio = 1.0;
 
-  // --- Gale's catenary parameterization (seed 003), defined when H > 0 ---
+  // --- Gale's catenary parameterization (Gale 1976), defined when H > 0 ---
   bool has_apex_parameterization = false;
   /// a = H / W0 [m].
   double catenary_parameter_m = 0.0;

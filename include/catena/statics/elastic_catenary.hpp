@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Statics of a uniform elastic (or inextensible) cable hanging between two supports
-/// (DESIGN.md §1.2): the elastic catenary.
+/// (docs/physics.md): the elastic catenary.
 ///
 /// The internal force at unstretched arc length s is F(s) = (H, V(s)), V(s) = V_A + W0 s, with
 /// H >= 0 constant; tension T = |F|, unit tangent t = F/T, in-plane normal n = (-V, H)/T, static
@@ -69,6 +69,13 @@ class StaticSolution {
   int iterations = 0;
   /// |r(L) - (B - A)| at the solution [m].
   double closure_error_m = 0.0;
+  /// False when solve_statics stopped without closing the chord to its tolerance: a numerical
+  /// outcome, reported here and never thrown. The forces are then the last Newton iterate and must
+  /// not be used for dynamics.
+  bool converged = true;
+  /// Why solve_statics stopped when !converged (closure error, tolerance, iterations, forces);
+  /// empty when converged.
+  std::string message;
   /// One line: "H = ... N, V_A = ... N, T_A = ..., T_B = ..., 5 Newton iterations, closure 1e-16 m".
   std::string brief_report() const;
 
@@ -89,9 +96,14 @@ Vec2 catenary_end_offset(const CableProperties& cable, double H, double V_A);
 /// A vertical chord (B - A along z) is solved in the one unknown V_A with H = 0.
 /// When the problem has prescribed_forces, they are the solution (no Newton; the closure error
 /// against support b is checked and reported).
-/// Throws InvalidInput when no equilibrium exists (e.g. an inextensible cable shorter than the
-/// chord, or a vertical chord longer than the cable hanging straight) or Newton fails (with the
-/// residual and iteration count in the message).
+///
+/// Errors, in two kinds (docs/architecture.md, "Errors"):
+/// - bad input throws InvalidInput before any iteration: an invalid problem or options, no
+///   equilibrium (an inextensible cable shorter than the chord, a vertical chord that leaves the
+///   cable slack), prescribed forces that miss support b;
+/// - a Newton iteration that does not close the chord is a numerical outcome: the result is
+///   returned with `converged == false` and `message` saying why (closure error, tolerance,
+///   iterations). Callers check `converged` before using the solution.
 StaticSolution solve_statics(const Problem& problem, const StaticsOptions& options = {});
 
 }  // namespace catena

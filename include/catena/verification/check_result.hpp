@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// One cross-check and its verdict (DESIGN.md §3, STYLE.md §8).
+/// One cross-check and its verdict (docs/verdicts.md).
 
 #include <string>
 

@@ -30,11 +30,14 @@ struct Finding {
   std::string diagnosis;
 };
 
+/// The reviewed findings. Plain data with one lookup; reading it from TOML is io's job
+/// (catena/io/findings_reader.hpp), and a run receives it in SceneRunOptions.
 class FindingsTable {
  public:
-  static FindingsTable parse(const std::string& text, const std::string& origin);
-  /// verification/findings.toml as it was when the library was built.
-  static const FindingsTable& builtin();
+  FindingsTable() = default;
+  explicit FindingsTable(std::vector<Finding> findings) : findings_(std::move(findings)) {}
+
+  /// The finding for this scene, quantity, mode and solver, or nullptr.
   const Finding* find(const std::string& scene, const std::string& quantity, int mode,
                       const std::string& solver) const;
   const std::vector<Finding>& findings() const { return findings_; }

@@ -12,9 +12,18 @@
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 #include "catena/verification/check_result.hpp"
+#include "catena/verification/findings.hpp"
 #include "catena/verification/scene.hpp"
+#include "catena/verification/tolerance_table.hpp"
 
 namespace catena {
+
+/// Why a scene could not be solved at all.
+enum class SceneError {
+  None,             ///< it was solved (its solvers may still have declined or failed: see outputs)
+  BadInput,         ///< bad input found at run time (e.g. an unreachable chord): CLI exit 2
+  NumericalFailure  ///< the shared statics did not converge: CLI exit 3, never "bad input"
+};
 
 struct SceneResult {
   Scene scene;
@@ -25,9 +34,10 @@ struct SceneResult {
   SolveRequest request;
   std::vector<SolverOutput> outputs;
   std::vector<CheckResult> checks;
-  /// Non-empty when the scene could not be solved at all (bad input found at run time, e.g. an
-  /// unreachable chord); such a scene counts as bad input.
+  /// Non-empty when the scene could not be solved at all; `error_kind` says whether the input was
+  /// bad or the statics failed numerically.
   std::string error;
+  SceneError error_kind = SceneError::None;
   double wall_time_s = 0.0;
 
   /// Number of checks with verdict Fail.
@@ -52,10 +62,23 @@ struct SceneRunOptions {
   std::vector<std::string> only_solvers;
   /// Compute the checks (otherwise statics and solvers only).
   bool checks = true;
+  /// The expected agreement of each check. Required when `checks` is set (run_scene throws
+  /// InvalidInput for an empty table, which would skip every check): pass
+  /// builtin_tolerance_table() (catena/io/tolerance_reader.hpp, the compiled-in
+  /// verification/tolerances.toml) or a table read by read_tolerance_file().
+  ToleranceTable tolerances;
+  /// Reviewed findings about published tables (may be empty: an unexplained disagreement with a
+  /// published value then fails). Default of the CLI: builtin_findings_table().
+  FindingsTable findings;
+
+  /// Throws InvalidInput when checks are asked without a tolerance table.
+  void validate() const;
 };
 
-/// Runs the scene. Never throws for numerical trouble (it is in the outputs and checks); bad input
-/// discovered at run time is recorded in SceneResult::error.
+/// Runs the scene. Never throws: numerical trouble of a solver is in its output's summary and in
+/// the checks; bad input discovered at run time and a statics that does not converge are recorded
+/// in SceneResult::error with their SceneError kind. Throws InvalidInput, before any work, only
+/// when `options` asks for checks without a tolerance table.
 SceneResult run_scene(const Scene& scene, const SceneRunOptions& options = {});
 
 }  // namespace catena

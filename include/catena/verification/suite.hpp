@@ -14,7 +14,8 @@ namespace catena {
 /// serialised (never concurrent).
 using SuiteProgress = std::function<void(std::size_t, std::size_t, const std::string&)>;
 
-/// Runs `scenes` on `jobs` threads (0: all cores); results in the order of `scenes`.
+/// Runs `scenes` on `jobs` threads (0: all cores); results in the order of `scenes`. Throws
+/// InvalidInput (before any work) when `options` is invalid (SceneRunOptions::validate).
 std::vector<SceneResult> run_scenes(const std::vector<Scene>& scenes,
                                     int jobs,
                                     const SceneRunOptions& options = {},

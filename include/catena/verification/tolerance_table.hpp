@@ -36,13 +36,12 @@ struct ToleranceRule {
   std::string reason;
 };
 
+/// The rules in order. Plain data with one lookup; reading it from TOML is io's job
+/// (catena/io/tolerance_reader.hpp), and a run receives it in SceneRunOptions.
 class ToleranceTable {
  public:
-  /// Parses the TOML text; `origin` names it in errors (ParseError/InvalidInput).
-  static ToleranceTable parse(const std::string& text, const std::string& origin);
-  static ToleranceTable load(const std::string& path);
-  /// verification/tolerances.toml as it was when the library was built.
-  static const ToleranceTable& builtin();
+  ToleranceTable() = default;
+  explicit ToleranceTable(std::vector<ToleranceRule> rules) : rules_(std::move(rules)) {}
 
   /// The first rule for `check` comparing `a` with `b` in `scene` (with `tags`), or nullptr.
   const ToleranceRule* find(const std::string& check,

@@ -15,7 +15,7 @@ namespace {
 // rounding floor near 1e-11); 1e-9 leaves room for ill-conditioned taut cables and still catches
 // a wrong equilibrium.
 constexpr double kStaticsClosureRel = 1e-9;
-// Whatever a tolerance says, a relative difference above this is a gross disagreement (STYLE §8).
+// Whatever a tolerance says, a relative difference above this is a gross disagreement (docs/verdicts.md).
 constexpr double kGrossRelative = 0.5;
 // Two solvers "confirm each other" against a published value when they differ by less than this
 // fraction of their distance to it.
@@ -32,7 +32,11 @@ double estimate(const Mode& mode) { return std::max(0.0, mode.relative_error_est
 
 class CheckBuilder {
  public:
-  explicit CheckBuilder(const SceneResult& result) : result_(result) {}
+  CheckBuilder(const SceneResult& result, const ToleranceTable& tolerances, const FindingsTable& findings)
+      : result_(result), tolerances_(tolerances), findings_(findings) {}
+
+  const ToleranceTable& tolerances() const { return tolerances_; }
+  const FindingsTable& findings() const { return findings_; }
 
   const std::vector<CheckResult>& checks() const { return checks_; }
 
@@ -46,7 +50,7 @@ class CheckBuilder {
   std::optional<Tolerance> tolerance(const std::string& check, const std::string& a, const std::string& b,
                                      double estimate_sum, std::optional<double> scene_override) {
     if (scene_override) return Tolerance{*scene_override, "scene [checks] override"};
-    const ToleranceRule* rule = ToleranceTable::builtin().find(check, a, b, result_.scene.name, result_.scene.tags);
+    const ToleranceRule* rule = tolerances_.find(check, a, b, result_.scene.name, result_.scene.tags);
     if (!rule) return std::nullopt;
     return Tolerance{std::max(rule->max, rule->estimate_factor * estimate_sum), rule->reason, rule->warn_only};
   }
@@ -87,6 +91,8 @@ class CheckBuilder {
 
  private:
   const SceneResult& result_;
+  const ToleranceTable& tolerances_;
+  const FindingsTable& findings_;
   std::vector<CheckResult> checks_;
 };
 
@@ -312,71 +318,94 @@ std::optional<std::pair<double, double>> solver_value(const SceneResult& result,
   return std::nullopt;
 }
 
+// Every usable solver's value for one published entry: solver -> (value, error estimate).
+using PublishedCandidates = std::map<std::string, std::pair<double, double>>;
+
+// A second solver that confirms `solver`'s value: it agrees with ours within their pair tolerance
+// and far better (kConfirmationRatio) than ours agrees with the print. Empty when none does.
+std::string confirming_solver(const SceneResult& result, const CheckBuilder& builder, const std::string& quantity,
+                              const std::string& solver, const PublishedCandidates& values, double measured) {
+  const auto [ours, est] = values.at(solver);
+  std::string partner;
+  for (const auto& [other, other_value] : values) {
+    if (other == solver) continue;
+    const double between = std::abs(other_value.first - ours);
+    const ToleranceRule* pair_rule = builder.tolerances().find(
+        quantity == "forced_max_tension" ? "forced" : "frequency", solver, other, result.scene.name,
+        result.scene.tags);
+    const double pair_tol =
+        pair_rule ? std::max(pair_rule->max, pair_rule->estimate_factor * (est + other_value.second)) : 0.0;
+    if (between <= pair_tol * std::abs(ours) && between <= kConfirmationRatio * measured) partner = other;
+  }
+  return partner;
+}
+
+// Beyond the printed digits: a source discrepancy when confirmed by a second solver or by a
+// reviewed finding that still matches our value; a failure otherwise.
+void judge_disagreement(const SceneResult& result, const CheckBuilder& builder, const std::string& quantity,
+                        const std::string& solver, const PublishedCandidates& values, int mode,
+                        CheckResult& check) {
+  const double ours = values.at(solver).first;
+  const std::string partner = confirming_solver(result, builder, quantity, solver, values, check.measured);
+  const Finding* finding = builder.findings().find(result.scene.name, quantity, mode, solver);
+  if (!partner.empty()) {
+    check.verdict = Verdict::SourceDiscrepancy;
+    check.detail += fmt::format("; confirmed by {} = {:.8g}", partner, values.at(partner).first);
+  } else if (finding && relative_difference(finding->ours, ours) <= 1e-6) {
+    check.verdict = Verdict::SourceDiscrepancy;
+    check.detail += "; reviewed finding: " + finding->diagnosis;
+  } else if (finding) {
+    check.verdict = Verdict::Fail;
+    check.detail += fmt::format("; stale finding (reviewed value {:.8g})", finding->ours);
+  } else {
+    check.verdict = Verdict::Fail;
+  }
+}
+
+void published_entry(const SceneResult& result, CheckBuilder& builder, const PublishedValues& published,
+                     const std::string& solver, const PublishedCandidates& values, int mode, double printed) {
+  const std::string quantity = to_string(published.quantity);
+  const double half_unit = published.decimals >= 0 ? 0.5 * std::pow(10.0, -published.decimals) : 0.0;
+  const auto [ours, est] = values.at(solver);
+  const ToleranceRule* rule =
+      builder.tolerances().find("published", solver, "published", result.scene.name, result.scene.tags);
+  const double slack = rule ? std::max(rule->max, rule->estimate_factor * est * std::abs(ours)) : 0.0;
+  const bool forced = quantity == "forced_max_tension";
+  CheckResult check = builder.base("published", solver + " vs " + published.source,
+                                   forced                                 ? "forced"
+                                   : quantity == "inplane_frequency" ? "in-plane"
+                                                                          : "out-of-plane",
+                                   forced ? mode + 1 : mode);
+  check.value_a = ours;
+  check.value_b = printed;
+  check.measured = std::abs(ours - printed);
+  check.tolerance = half_unit + slack;
+  check.detail = fmt::format("ours {:.8g}, printed {} ({} decimals; absolute difference, in the table's unit)",
+                             ours, printed, published.decimals);
+  if (!std::isfinite(ours)) {
+    check.verdict = Verdict::Fail;
+  } else if (check.measured <= check.tolerance) {
+    check.verdict = Verdict::Pass;
+  } else {
+    judge_disagreement(result, builder, quantity, solver, values, mode, check);
+  }
+  builder.add(check);
+}
+
 void published_values(const SceneResult& result, CheckBuilder& builder) {
   for (const auto& published : result.scene.published) {
-    const std::string quantity = to_string(published.quantity);
-    const double half_unit = published.decimals >= 0 ? 0.5 * std::pow(10.0, -published.decimals) : 0.0;
     for (std::size_t k = 0; k < published.values.size(); ++k) {
       const int mode = published.modes[k];
-      const double printed = published.values[k];
       // Every usable solver's value (for confirmation), and the designated ones (to check).
-      std::map<std::string, std::pair<double, double>> values;
+      PublishedCandidates values;
       for (const auto& output : result.outputs) {
         if (!output.summary.is_usable()) continue;
         if (auto v = solver_value(result, output, published, mode)) values[output.solver] = *v;
       }
       for (const auto& [solver, value_and_estimate] : values) {
-        const bool designated = published.compare_with.empty() ||
-                                std::find(published.compare_with.begin(), published.compare_with.end(), solver) !=
-                                    published.compare_with.end();
-        if (!designated) continue;
-        const auto [ours, est] = value_and_estimate;
-        const ToleranceRule* rule =
-            ToleranceTable::builtin().find("published", solver, "published", result.scene.name, result.scene.tags);
-        const double slack = rule ? std::max(rule->max, rule->estimate_factor * est * std::abs(ours)) : 0.0;
-        CheckResult check = builder.base("published", solver + " vs " + published.source,
-                                         quantity == "forced_max_tension" ? "forced"
-                                         : quantity == "inplane_frequency" ? "in-plane"
-                                                                           : "out-of-plane",
-                                         quantity == "forced_max_tension" ? mode + 1 : mode);
-        check.value_a = ours;
-        check.value_b = printed;
-        check.measured = std::abs(ours - printed);
-        check.tolerance = half_unit + slack;
-        check.detail = fmt::format("ours {:.8g}, printed {} ({} decimals; absolute difference, in the table's unit)",
-                                   ours, printed, published.decimals);
-        if (!std::isfinite(ours)) {
-          check.verdict = Verdict::Fail;
-        } else if (check.measured <= check.tolerance) {
-          check.verdict = Verdict::Pass;
-        } else {
-          // Confirmed by a second, independent solver that agrees with ours far better than with print?
-          std::string partner;
-          for (const auto& [other, other_value] : values) {
-            if (other == solver) continue;
-            const double between = std::abs(other_value.first - ours);
-            const ToleranceRule* pair_rule = ToleranceTable::builtin().find(
-                quantity == "forced_max_tension" ? "forced" : "frequency", solver, other, result.scene.name,
-                result.scene.tags);
-            const double pair_tol =
-                pair_rule ? std::max(pair_rule->max, pair_rule->estimate_factor * (est + other_value.second)) : 0.0;
-            if (between <= pair_tol * std::abs(ours) && between <= kConfirmationRatio * check.measured) partner = other;
-          }
-          const Finding* finding = FindingsTable::builtin().find(result.scene.name, quantity, mode, solver);
-          if (!partner.empty()) {
-            check.verdict = Verdict::SourceDiscrepancy;
-            check.detail += fmt::format("; confirmed by {} = {:.8g}", partner, values.at(partner).first);
-          } else if (finding && relative_difference(finding->ours, ours) <= 1e-6) {
-            check.verdict = Verdict::SourceDiscrepancy;
-            check.detail += "; reviewed finding: " + finding->diagnosis;
-          } else if (finding) {
-            check.verdict = Verdict::Fail;
-            check.detail += fmt::format("; stale finding (reviewed value {:.8g})", finding->ours);
-          } else {
-            check.verdict = Verdict::Fail;
-          }
-        }
-        builder.add(check);
+        const auto& only = published.compare_with;
+        if (!only.empty() && std::find(only.begin(), only.end(), solver) == only.end()) continue;
+        published_entry(result, builder, published, solver, values, mode, published.values[k]);
       }
     }
   }
@@ -384,8 +413,9 @@ void published_values(const SceneResult& result, CheckBuilder& builder) {
 
 }  // namespace
 
-std::vector<CheckResult> run_checks(const SceneResult& result) {
-  CheckBuilder builder(result);
+std::vector<CheckResult> run_checks(const SceneResult& result, const ToleranceTable& tolerances,
+                                    const FindingsTable& findings) {
+  CheckBuilder builder(result, tolerances, findings);
   if (!result.statics) return {};
   statics_closure(result, builder);
   for (const auto& output : result.outputs) solver_status(output, builder);

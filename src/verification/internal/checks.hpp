@@ -1,15 +1,20 @@
 #pragma once
 /// \file
-/// The checks of a solved scene (DESIGN.md §3).
+/// The checks of a solved scene (docs/verdicts.md).
 
 #include <vector>
 
+#include "catena/verification/findings.hpp"
 #include "catena/verification/scene_runner.hpp"
+#include "catena/verification/tolerance_table.hpp"
 
 namespace catena::internal {
 
 /// All checks for `result` (statics closure, solver status, cross-solver and published
 /// comparisons as they are available).
-std::vector<CheckResult> run_checks(const SceneResult& result);
+/// Tolerances come from `tolerances` (first matching rule) unless the scene overrides them;
+/// `findings` turns a reviewed disagreement with a published value into a source discrepancy.
+std::vector<CheckResult> run_checks(const SceneResult& result, const ToleranceTable& tolerances,
+                                    const FindingsTable& findings);
 
 }  // namespace catena::internal

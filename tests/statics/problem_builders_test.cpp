@@ -1,4 +1,4 @@
-// Problem builders and dimensionless groups (DESIGN.md §1.4).
+// Problem builders and dimensionless groups (docs/physics.md, "Dimensionless groups").
 // Compared: (1) Gale's Table A-1 (a/b from the sag parameter, eq. 3.5) and the xi1, xi2 columns of
 // Tables B-3/B-4 (from h/b and the sag parameter), each to its printed precision; (2) a problem
 // built from (eps, phi, lambda2, h) reproduces those groups to 1e-12 after the statics; (3) the
@@ -13,7 +13,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/csv_table.hpp"
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 #include "test_utils.hpp"
@@ -131,7 +131,7 @@ TEST(TautInclinedProblem, ReproducesItsGroupsToTwelveDigits) {
 }
 
 TEST(TautInclinedProblem, PointOfChordAngleSitsNearMidLength) {
-  // DESIGN.md §1.4: s_a / L is near 1/2 - eps sin(phi) / 12 (to O(eps^2)).
+  // docs/physics.md ("Dimensionless groups"): s_a / L is near 1/2 - eps sin(phi) / 12 (to O(eps^2)).
   for (double eps : {0.01, 0.05, 0.1}) {
     const Problem p = make_taut_inclined_problem(eps, 30.0, 10.0, 1.0);
     const DimensionlessGroups g = compute_dimensionless_groups(p, solve_statics(p));

@@ -1,4 +1,4 @@
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
@@ -15,16 +15,6 @@ void require(bool ok, const std::string& message) {
 }
 
 }  // namespace
-
-double gale_xi_from_sigma(double sigma) {
-  // sqrt(1 + s^2) - 1 = s^2 / (sqrt(1 + s^2) + 1): no cancellation for small sigma.
-  return std::copysign(sigma * sigma / (std::sqrt(1.0 + sigma * sigma) + 1.0), sigma);
-}
-
-double gale_sigma_from_xi(double xi) {
-  const double x = std::abs(xi);
-  return std::copysign(std::sqrt(x * (x + 2.0)), xi);
-}
 
 Problem make_taut_inclined_problem(double eps, double phi_deg, double lambda2, double mass_ratio) {
   require(std::isfinite(eps) && eps > 0.0 && eps <= 10.0,

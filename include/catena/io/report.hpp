@@ -2,9 +2,11 @@
 /// \file
 /// The comparison report (`catena report`): from the results JSON of `catena verify`
 /// (report.json), a Markdown report, a self-contained HTML report (figures embedded), and CSV data
-/// (frequencies, published comparisons, checks). Figures are drawn by
-/// verification/tools/figures.py (matplotlib) from the same JSON; when Python or matplotlib is
-/// missing the report says so and is written without them.
+/// (frequencies, published comparisons, checks). Figures are drawn by figures.py (matplotlib) from
+/// the same JSON, run without a shell; the script, the published tables it overlays and the
+/// benchmark baselines are read from the data dir (installed share/catena, found from the
+/// executable; the build tree's otherwise). When Python or matplotlib is missing the report says
+/// so and is written without figures.
 
 #include <filesystem>
 #include <string>
@@ -14,11 +16,15 @@ namespace catena {
 struct ReportOptions {
   /// Directory for report.md, report.html, data/*.csv and figures/*.png.
   std::filesystem::path out_dir = "build/report";
-  /// Directory holding figures.py and the published tables' folder (../reference/published).
+  /// The data dir: figures.py, results_keys.py, reference/published/*.csv and
+  /// benchmarks/time-vs-error.csv. Empty: found from the executable (see the file comment).
+  std::filesystem::path data_dir;
+  /// Directory of figures.py when it is not the data dir's (e.g. a source tree's
+  /// verification/tools). Empty: the data dir.
   std::filesystem::path tools_dir;
   /// Draw figures (needs python3 with matplotlib).
   bool figures = true;
-  /// Python interpreter for the figures.
+  /// Python interpreter for the figures (searched on PATH when it has no '/').
   std::string python = "python3";
 };
 
@@ -33,7 +39,7 @@ struct ReportFiles {
 };
 
 /// Writes the report from `results_json` (a file written by write_results_json). Throws
-/// ParseError when the JSON cannot be read, Error when files cannot be written.
+/// ParseError when the JSON cannot be read, InvalidInput when files cannot be written.
 ReportFiles write_report(const std::filesystem::path& results_json, const ReportOptions& options);
 
 }  // namespace catena

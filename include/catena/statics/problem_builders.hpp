@@ -1,14 +1,15 @@
 #pragma once
 /// \file
-/// Builders of a physical Problem from the dimensionless forms of the seed papers (DESIGN.md §1.4).
+/// Builders of a physical Problem from the dimensionless forms of the published papers (docs/physics.md, "Dimensionless groups").
 /// Each builder's output, passed through solve_statics and compute_dimensionless_groups,
 /// reproduces its inputs (tested to 1e-12).
 
 #include "catena/models/cable.hpp"
+#include "catena/statics/gale_coordinates.hpp"
 
 namespace catena {
 
-/// Taut inclined cable from Grinfogel's groups (seed 000): L = 1 m, T0 = 1 N, M = 1 kg/m,
+/// Taut inclined cable from Grinfogel's groups (Grinfogel 1984; docs/references.md): L = 1 m, T0 = 1 N, M = 1 kg/m,
 /// m = mass_ratio, W0 = eps, EA = lambda2 / (eps^2 cos^2 phi), H = cos phi; the point where the
 /// static angle equals phi sits at s_a, found by a 1-D root so that the chord has angle phi.
 /// \param eps W0 L / T0, in (0, 10].
@@ -17,7 +18,7 @@ namespace catena {
 /// \param mass_ratio h = m / M, in (0, 1].
 Problem make_taut_inclined_problem(double eps, double phi_deg, double lambda2, double mass_ratio);
 
-/// Inextensible catenary from Gale's end coordinates xi1 < xi2 (seed 003): a = H/W0 = 1 m,
+/// Inextensible catenary from Gale's end coordinates xi1 < xi2 (Gale 1976; docs/references.md): a = H/W0 = 1 m,
 /// W0 = 1 N/m, m = 1 kg/m (so sqrt(g/a) = 1 rad/s and omega is Gale's ratio), no added mass.
 Problem make_gale_xi_problem(double xi1, double xi2);
 
@@ -28,10 +29,5 @@ Problem make_gale_sag_problem(double height_over_span, double sag_parameter);
 /// Gale's eq. 3.5: a/b from the sag parameter, i.e. the root u of u / sinh(u) = sag_parameter,
 /// a/b = 1 / (2u). sag_parameter in (0, 1); returns 0 for sag_parameter = 0.
 double gale_a_over_b(double sag_parameter);
-
-/// sigma(xi) = sign(xi) sqrt((1 + |xi|)^2 - 1), the inverse of xi = sign(sigma)(sqrt(1+sigma^2)-1).
-double gale_sigma_from_xi(double xi);
-/// xi(sigma) = sign(sigma)(sqrt(1 + sigma^2) - 1), computed without cancellation.
-double gale_xi_from_sigma(double sigma);
 
 }  // namespace catena

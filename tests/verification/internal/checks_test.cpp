@@ -4,10 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
-#include "catena/core/error.hpp"
-#include "catena/models/problem_builders.hpp"
-#include "catena/verification/tolerance_table.hpp"
+#include "catena/io/findings_reader.hpp"
+#include "catena/io/tolerance_reader.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "verification/internal/checks.hpp"
 
 namespace catena {
@@ -47,6 +48,13 @@ SolverOutput output_with(const std::string& solver, std::vector<double> omegas, 
   return out;
 }
 
+// The checks of `result` against the reviewed tables built into the library.
+std::vector<CheckResult> run_checks(const SceneResult& result) {
+  static const ToleranceTable tolerances = builtin_tolerance_table();
+  static const FindingsTable findings = builtin_findings_table();
+  return internal::run_checks(result, tolerances, findings);
+}
+
 const CheckResult* find(const std::vector<CheckResult>& checks, const std::string& kind, int mode) {
   for (const auto& c : checks) {
     if (c.check == kind && c.mode == mode) return &c;
@@ -54,20 +62,27 @@ const CheckResult* find(const std::vector<CheckResult>& checks, const std::strin
   return nullptr;
 }
 
+// The verdict of the check, or nullopt when it was not made: comparing with an expected verdict
+// therefore also asserts that the check exists.
+std::optional<Verdict> verdict_of(const std::vector<CheckResult>& checks, const std::string& kind, int mode) {
+  const CheckResult* check = find(checks, kind, mode);
+  return check ? std::optional(check->verdict) : std::nullopt;
+}
+
 TEST(Checks, FrequencyAgreementWithinEstimatesPasses) {
   SceneResult r = gale_result();
   r.outputs = {output_with("fe", {1.0, 2.0}, 1e-9), output_with("shooting", {1.0 + 1e-9, 2.0}, 1e-10)};
-  const auto checks = internal::run_checks(r);
+  const auto checks = run_checks(r);
   ASSERT_NE(find(checks, "frequency", 1), nullptr);
-  EXPECT_EQ(find(checks, "frequency", 1)->verdict, Verdict::Pass);
-  EXPECT_EQ(find(checks, "statics-closure", 0)->verdict, Verdict::Pass);
-  EXPECT_EQ(find(checks, "mode-count", 0)->verdict, Verdict::Pass);
+  EXPECT_EQ(verdict_of(checks, "frequency", 1), Verdict::Pass);
+  EXPECT_EQ(verdict_of(checks, "statics-closure", 0), Verdict::Pass);
+  EXPECT_EQ(verdict_of(checks, "mode-count", 0), Verdict::Pass);
 }
 
 TEST(Checks, APerturbedFrequencyFailsNamingEverything) {
   SceneResult r = gale_result();
   r.outputs = {output_with("fe", {1.0, 2.0 * (1 + 1e-3)}, 1e-9), output_with("shooting", {1.0, 2.0}, 1e-10)};
-  const auto checks = internal::run_checks(r);
+  const auto checks = run_checks(r);
   const CheckResult* c = find(checks, "frequency", 2);
   ASSERT_NE(c, nullptr);
   EXPECT_EQ(c->verdict, Verdict::Fail);
@@ -81,14 +96,14 @@ TEST(Checks, APerturbedFrequencyFailsNamingEverything) {
 TEST(Checks, NonFiniteFrequencyFailsWhateverTheTolerance) {
   SceneResult r = gale_result();
   r.outputs = {output_with("fe", {std::nan("")}, 1e-9), output_with("shooting", {1.0}, 1e-10)};
-  EXPECT_EQ(find(internal::run_checks(r), "frequency", 1)->verdict, Verdict::Fail);
+  EXPECT_EQ(verdict_of(run_checks(r), "frequency", 1), Verdict::Fail);
 }
 
 TEST(Checks, MissingModeShowsAsModeCountFailure) {
   SceneResult r = gale_result();
   r.outputs = {output_with("fe", {1.0, 2.0}, 1e-9)};
   r.outputs[0].inplane->proved_count_below_top = 3;
-  EXPECT_EQ(find(internal::run_checks(r), "mode-count", 0)->verdict, Verdict::Fail);
+  EXPECT_EQ(verdict_of(run_checks(r), "mode-count", 0), Verdict::Fail);
 }
 
 TEST(Checks, PublishedValueWithinPrintedRoundingPasses) {
@@ -101,9 +116,9 @@ TEST(Checks, PublishedValueWithinPrintedRoundingPasses) {
   p.decimals = 2;
   r.scene.published = {p};
   r.outputs = {output_with("shooting", {1.9149}, 1e-10)};
-  EXPECT_EQ(find(internal::run_checks(r), "published", 1)->verdict, Verdict::Pass);
+  EXPECT_EQ(verdict_of(run_checks(r), "published", 1), Verdict::Pass);
   r.outputs = {output_with("shooting", {1.9151}, 1e-10)};
-  EXPECT_EQ(find(internal::run_checks(r), "published", 1)->verdict, Verdict::Fail);
+  EXPECT_EQ(verdict_of(run_checks(r), "published", 1), Verdict::Fail);
 }
 
 TEST(Checks, PublishedValueContradictedByTwoAgreeingSolversIsASourceDiscrepancy) {
@@ -116,43 +131,29 @@ TEST(Checks, PublishedValueContradictedByTwoAgreeingSolversIsASourceDiscrepancy)
   p.decimals = 2;
   r.scene.published = {p};
   r.outputs = {output_with("frobenius", {1.9149}, 1e-12), output_with("shooting", {1.9149 + 1e-10}, 1e-10)};
-  const auto checks = internal::run_checks(r);
+  const auto checks = run_checks(r);
+  // Both solvers are designated (no `solvers` list): one published check each, each confirmed by
+  // the other.
+  int published = 0;
   for (const auto& c : checks) {
-    if (c.check == "published") {
-      EXPECT_EQ(c.verdict, Verdict::SourceDiscrepancy) << c.compare << ": " << c.detail;
-      EXPECT_NE(c.detail.find("confirmed by"), std::string::npos);
-    }
+    if (c.check != "published") continue;
+    ++published;
+    EXPECT_EQ(c.verdict, Verdict::SourceDiscrepancy) << c.compare << ": " << c.detail;
+    EXPECT_NE(c.detail.find("confirmed by"), std::string::npos) << c.detail;
   }
+  EXPECT_EQ(published, 2);
 }
 
 TEST(Checks, IdenticalShapesPassMacAndOrthogonalModesPassOrthogonality) {
   SceneResult r = gale_result();
   r.outputs = {output_with("fe", {1.0, 2.0, 3.0}, 1e-9, true), output_with("shooting", {1.0, 2.0, 3.0}, 1e-10, true)};
-  const auto checks = internal::run_checks(r);
-  EXPECT_EQ(find(checks, "mac", 3)->verdict, Verdict::Pass);
-  EXPECT_EQ(find(checks, "shape", 3)->verdict, Verdict::Pass);
-  EXPECT_EQ(find(checks, "orthogonality", 0)->verdict, Verdict::Pass);
+  const auto checks = run_checks(r);
+  EXPECT_EQ(verdict_of(checks, "mac", 3), Verdict::Pass);
+  EXPECT_EQ(verdict_of(checks, "shape", 3), Verdict::Pass);
+  EXPECT_EQ(verdict_of(checks, "orthogonality", 0), Verdict::Pass);
   // A swapped pair of shapes fails the MAC.
   std::swap(r.outputs[0].inplane->modes[0].w, r.outputs[0].inplane->modes[1].w);
-  EXPECT_EQ(find(internal::run_checks(r), "mac", 1)->verdict, Verdict::Fail);
-}
-
-TEST(ToleranceTable, FirstMatchingRuleWinsAndEveryRuleHasAReason) {
-  const ToleranceTable& table = ToleranceTable::builtin();
-  ASSERT_FALSE(table.rules().empty());
-  for (const auto& rule : table.rules()) EXPECT_FALSE(rule.reason.empty()) << rule.check;
-  const ToleranceRule* rule = table.find("frequency", "shooting", "frobenius", "any", {});
-  ASSERT_NE(rule, nullptr);
-  EXPECT_EQ(rule->max, 1e-8);
-  EXPECT_NE(table.find("frequency", "asymptotic", "shooting", "any", {}), nullptr);
-}
-
-TEST(ToleranceTable, RejectsMalformedRules) {
-  EXPECT_THROW(ToleranceTable::parse("[[tolerance]]\ncheck = \"frequency\"\n", "t.toml"), ParseError);
-  EXPECT_THROW(ToleranceTable::parse("[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = -1.0\nreason = \"r\"\n", "t.toml"),
-               InvalidInput);
-  EXPECT_THROW(ToleranceTable::parse("[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = 1.0\nreason = \"r\"\nfoo = 1\n", "t.toml"),
-               ParseError);
+  EXPECT_EQ(verdict_of(run_checks(r), "mac", 1), Verdict::Fail);
 }
 
 }  // namespace

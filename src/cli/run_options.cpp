@@ -1,0 +1,37 @@
+// What `catena solve` and `catena verify` share: the tables a run checks against, and one rule for
+// the exit code.
+#include "cli/commands.hpp"
+
+#include "catena/io/findings_reader.hpp"
+#include "catena/io/tolerance_reader.hpp"
+
+namespace catena::cli {
+
+void add_table_options(CLI::App& command, TableArguments& tables) {
+  command.add_option("--tolerances", tables.tolerances,
+                     "Tolerance table (TOML) instead of the built-in verification/tolerances.toml");
+  command.add_option("--findings", tables.findings,
+                     "Reviewed findings (TOML) instead of the built-in verification/findings.toml");
+}
+
+SceneRunOptions run_options_with_tables(const TableArguments& tables) {
+  SceneRunOptions options;
+  options.tolerances =
+      tables.tolerances.empty() ? builtin_tolerance_table() : read_tolerance_file(tables.tolerances);
+  options.findings = tables.findings.empty() ? builtin_findings_table() : read_findings_file(tables.findings);
+  return options;
+}
+
+int exit_code_of(const std::vector<SceneResult>& results) {
+  bool bad_input = false, numerical_failure = false, failed_checks = false;
+  for (const auto& result : results) {
+    bad_input |= result.error_kind == SceneError::BadInput;
+    numerical_failure |= result.error_kind == SceneError::NumericalFailure;
+    failed_checks |= result.failed_checks() > 0;
+  }
+  if (bad_input) return 2;
+  if (numerical_failure) return 3;
+  return failed_checks ? 1 : 0;
+}
+
+}  // namespace catena::cli

@@ -1,0 +1,41 @@
+#include "catena/io/findings_reader.hpp"
+
+#include "io/internal/builtin_findings.hpp"
+#include "io/internal/toml_table_reader.hpp"
+
+namespace catena {
+namespace {
+
+Finding read_finding(internal::TableReader& item) {
+  Finding finding;
+  finding.scene = item.string("scene");
+  finding.quantity = item.string("quantity");
+  finding.mode = static_cast<int>(item.integer("mode"));
+  finding.solver = item.string("solver");
+  finding.printed = item.number("printed");
+  finding.ours = item.number("ours");
+  finding.diagnosis = item.string("diagnosis");
+  item.finish();
+  return finding;
+}
+
+}  // namespace
+
+FindingsTable parse_findings_table(const std::string& text, const std::string& origin) {
+  const toml::value document = internal::parse_toml(text, origin);
+  internal::TableReader root(document, origin, "");
+  std::vector<Finding> findings;
+  for (internal::TableReader& item : root.table_array("finding")) findings.push_back(read_finding(item));
+  root.finish();
+  return FindingsTable(std::move(findings));
+}
+
+FindingsTable read_findings_file(const std::filesystem::path& path) {
+  return parse_findings_table(internal::read_text_file(path, "findings file"), path.string());
+}
+
+FindingsTable builtin_findings_table() {
+  return parse_findings_table(internal::kBuiltinFindings, "verification/findings.toml (built in)");
+}
+
+}  // namespace catena

@@ -1,0 +1,70 @@
+#pragma once
+// Strict reading of TOML tables, shared by every TOML format of io/ (scenes, the tolerance table,
+// the findings): every key a reader asks for is recorded and finish() rejects the rest, so an
+// unknown or misspelt key is an error naming "<file>: [<table>].<key>", never silently ignored.
+
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <string>
+#include <toml.hpp>
+#include <vector>
+
+#include "catena/core/types.hpp"
+
+namespace catena::internal {
+
+/// Parses TOML text; a syntax error is a ParseError naming `origin`.
+toml::value parse_toml(const std::string& text, const std::string& origin);
+
+/// The whole file as text; ParseError "<path>: cannot open <what>" when unreadable.
+std::string read_text_file(const std::filesystem::path& path, const std::string& what);
+
+/// Reads one TOML table strictly. Messages name "<origin>: [<path>].<key>".
+class TableReader {
+ public:
+  /// `table` must outlive the reader.
+  TableReader(const toml::value& table, std::string origin, std::string path);
+
+  std::string where(const std::string& key) const;
+  bool has(const std::string& key) const;
+  /// The value of `key` (recorded as used), or nullptr.
+  const toml::value* find(const std::string& key);
+  /// The value of `key`; ParseError when missing.
+  const toml::value& require(const std::string& key);
+
+  double to_number(const toml::value& value, const std::string& key) const;
+  double number(const std::string& key);
+  double number(const std::string& key, double fallback);
+  /// A finite number that must satisfy `ok`; `rule` and `unit` go into the InvalidInput message.
+  double checked(const std::string& key, bool (*ok)(double), const char* rule, const char* unit,
+                 std::optional<double> fallback = std::nullopt);
+  long integer(const std::string& key);
+  long integer(const std::string& key, long fallback);
+  bool boolean(const std::string& key, bool fallback);
+  std::string string(const std::string& key);
+  std::string string(const std::string& key, const std::string& fallback);
+  /// An array of finite numbers (required).
+  std::vector<double> numbers(const std::string& key);
+  /// An array of strings (required).
+  std::vector<std::string> strings(const std::string& key);
+  /// [x, z] [m].
+  Vec2 point(const std::string& key);
+  TableReader subtable(const std::string& key);
+  /// The tables of an array of tables `[[key]]` (empty when absent), each named "<key>#<n>".
+  std::vector<TableReader> table_array(const std::string& key);
+
+  /// Throws ParseError for the first key never asked for.
+  void finish() const;
+
+  const toml::value& value() const { return table_; }
+  static std::string type_name(const toml::value& value);
+
+ private:
+  const toml::value& table_;
+  std::string origin_;
+  std::string path_;
+  std::set<std::string> used_;
+};
+
+}  // namespace catena::internal

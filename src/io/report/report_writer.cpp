@@ -1,0 +1,87 @@
+#include "catena/io/report.hpp"
+
+#include <fmt/format.h>
+#include <fstream>
+
+#include "catena/core/error.hpp"
+#include "io/internal/data_dir.hpp"
+#include "io/report/figures.hpp"
+#include "io/report/sections.hpp"
+
+namespace catena {
+namespace {
+
+using internal::json;
+
+json read_results(const std::filesystem::path& results_json) {
+  std::ifstream in(results_json);
+  if (!in) throw ParseError(fmt::format("{}: cannot open results JSON", results_json.string()));
+  json document = json::parse(in, nullptr, false);
+  if (document.is_discarded() || !document.contains(internal::key::scenes)) {
+    throw ParseError(fmt::format("{}: not a catena results JSON (no \"scenes\")", results_json.string()));
+  }
+  return document;
+}
+
+// The data dir given, else the one found from the executable (empty when none).
+std::filesystem::path resolve_data_dir(const ReportOptions& options) {
+  if (!options.data_dir.empty()) return options.data_dir;
+  return internal::data_dir().value_or(std::filesystem::path());
+}
+
+void add_figures(internal::Document& out, const std::filesystem::path& results_json, const ReportOptions& options,
+                 ReportFiles& files) {
+  std::vector<internal::Image> images;
+  const std::filesystem::path data = resolve_data_dir(options);
+  if (!options.figures) {
+    files.figures_note = "figures not drawn (--no-figures)";
+  } else if (data.empty() && options.tools_dir.empty()) {
+    files.figures_note = "figures not drawn: no data dir (share/catena) found next to the executable";
+  } else {
+    const internal::FigureInputs inputs{(options.tools_dir.empty() ? data : options.tools_dir) / "figures.py",
+                                        data / "reference" / "published",
+                                        data / "benchmarks" / "time-vs-error.csv", options.python};
+    images = internal::draw_figures(results_json, inputs, options.out_dir / "figures", files.figures_note);
+  }
+  files.figures = static_cast<int>(images.size());
+  out.push_back(internal::Heading{2, "Figures", "figures"});
+  if (!files.figures_note.empty()) out.push_back(internal::Paragraph{files.figures_note});
+  for (const auto& image : images) out.push_back(image);
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  if (!out) throw InvalidInput(fmt::format("{}: cannot write the report", path.string()));
+}
+
+}  // namespace
+
+ReportFiles write_report(const std::filesystem::path& results_json, const ReportOptions& options) {
+  const json document = read_results(results_json);
+  std::filesystem::create_directories(options.out_dir);
+  ReportFiles files;
+  files.data_dir = options.out_dir / "data";
+  internal::write_data_tables(document, files.data_dir);
+
+  internal::Document report;
+  internal::add_summary(report, document);
+  internal::add_solvers(report, document);
+  internal::add_discrepancies(report, document);
+  internal::add_failures(report, document);
+  internal::add_stress_outcomes(report, document);
+  const std::filesystem::path data = resolve_data_dir(options);
+  if (!data.empty()) {
+    internal::add_time_to_accuracy(report, internal::read_time_to_accuracy(data / "benchmarks" / "time-vs-error.csv"));
+  }
+  add_figures(report, results_json, options, files);
+  internal::add_scenes(report, document);
+
+  files.markdown = options.out_dir / "report.md";
+  files.html = options.out_dir / "report.html";
+  write_text(files.markdown, internal::render_markdown(report, options.out_dir));
+  write_text(files.html, internal::render_html(report, "Catena verification report"));
+  return files;
+}
+
+}  // namespace catena

@@ -1,0 +1,24 @@
+#pragma once
+// The sections of the report, each built from the results JSON into the document model.
+
+#include "io/report/document.hpp"
+#include "io/report/report_data.hpp"
+
+namespace catena::internal {
+
+/// Title, provenance line and the count of each verdict.
+void add_summary(Document& out, const json& document);
+/// Per solver: scenes run, converged, failed, declined, times, largest error estimate.
+void add_solvers(Document& out, const json& document);
+/// Published entries we believe wrong (SOURCE verdicts).
+void add_discrepancies(Document& out, const json& document);
+/// Scene errors and FAIL/WARN checks.
+void add_failures(Document& out, const json& document);
+/// Each solver's outcome on each stress scene (nothing when the run has none).
+void add_stress_outcomes(Document& out, const json& document);
+/// Fastest time to each accuracy target (nothing when there is no baseline).
+void add_time_to_accuracy(Document& out, const TimeToAccuracy& timing);
+/// Per scene: groups, every solver's frequencies beside the published ones, forced maxima.
+void add_scenes(Document& out, const json& document);
+
+}  // namespace catena::internal

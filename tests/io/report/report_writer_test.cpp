@@ -1,0 +1,93 @@
+// write_report on a small results JSON: the Markdown and HTML reports, the data tables read back
+// with csv_table, the figure note when figures are off, and a clear error for a bad input file.
+#include "catena/io/report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "catena/core/error.hpp"
+#include "catena/io/csv_table.hpp"
+#include "catena/io/json_writer.hpp"
+#include "catena/io/scene_reader.hpp"
+#include "catena/io/tolerance_reader.hpp"
+#include "io/report/report_data.hpp"
+
+namespace catena {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+fs::path results_json(const fs::path& dir) {
+  SceneRunOptions options;
+  options.tolerances = builtin_tolerance_table();
+  options.only_solvers = {"fe", "shooting"};
+  const Scene scene = parse_scene_text(
+      "name = \"report, test\"\n[cable]\nlength = 10.0\nweight = 1.0\nEA = 1e6\nmass = 1.0\n"
+      "a = [0.0, 0.0]\nb = [8.0, 1.0]\n[request]\ninplane_modes = 2\n",
+      "r.toml").front();
+  fs::create_directories(dir);
+  write_results_json(dir / "report.json", {run_scene(scene, options)});
+  return dir / "report.json";
+}
+
+TEST(ReportWriter, WritesMarkdownHtmlAndDataTables) {
+  const fs::path dir = fs::temp_directory_path() / "catena_report_test";
+  fs::remove_all(dir);
+  ReportOptions options;
+  options.out_dir = dir;
+  options.figures = false;
+  const ReportFiles files = write_report(results_json(dir), options);
+  const std::string md = read(files.markdown);
+  EXPECT_NE(md.find("# Catena verification report"), std::string::npos);
+  EXPECT_NE(md.find("### report, test"), std::string::npos);
+  EXPECT_NE(md.find("figures not drawn (--no-figures)"), std::string::npos);
+  EXPECT_EQ(files.figures, 0);
+  EXPECT_NE(read(files.html).find("<!DOCTYPE html>"), std::string::npos);
+  // The scene name holds a comma: the CSV quotes it and reads back whole.
+  const CsvTable frequencies = read_csv_table(files.data_dir / "frequencies.csv");
+  ASSERT_EQ(frequencies.rows.size(), 4u);  // 2 solvers x 2 modes
+  EXPECT_EQ(frequencies.text(0, "scene"), "report, test");
+  EXPECT_GT(*frequencies.number(0, "omega_rad_s"), 0.0);
+  const CsvTable checks = read_csv_table(files.data_dir / "checks.csv");
+  EXPECT_FALSE(checks.rows.empty());
+}
+
+TEST(ReportWriter, TimeToAccuracyKeepsTheFastestSettingPerTarget) {
+  const fs::path csv = fs::temp_directory_path() / "catena_report_timing.csv";
+  std::ofstream(csv) << "# test\nscene,solver,setting,time_s,max_rel_error,status\n"
+                        "\"case, one\",fe,N=10,1e-3,1e-4,converged\n"
+                        "\"case, one\",fe,N=20,2e-3,1e-7,converged\n"
+                        "\"case, one\",fe,N=5,5e-4,1e-2,converged\n"
+                        "\"case, one\",airy,-,1e-4,nan,not-applicable\n";
+  const internal::TimeToAccuracy timing = internal::read_time_to_accuracy(csv);
+  ASSERT_EQ(timing.cases, std::vector<std::string>{"case, one"});
+  const auto& fe = timing.best_time_s.at("case, one").at("fe");
+  EXPECT_EQ(fe.at(1e-3), 1e-3);  // N=10 reaches 1e-3 and is faster than N=20
+  EXPECT_EQ(fe.at(1e-6), 2e-3);
+  EXPECT_FALSE(fe.count(1e-9));
+  EXPECT_FALSE(timing.best_time_s.at("case, one").count("airy"));
+  EXPECT_TRUE(internal::read_time_to_accuracy("/nonexistent.csv").cases.empty());
+}
+
+TEST(ReportWriter, BadResultsFileIsAParseError) {
+  const fs::path bad = fs::temp_directory_path() / "catena_report_bad.json";
+  std::ofstream(bad) << "{\"not\": \"results\"}";
+  ReportOptions options;
+  options.out_dir = fs::temp_directory_path() / "catena_report_bad";
+  options.figures = false;
+  EXPECT_THROW(write_report(bad, options), ParseError);
+  EXPECT_THROW(write_report("/nonexistent.json", options), ParseError);
+}
+
+}  // namespace
+}  // namespace catena
