@@ -9,7 +9,7 @@
 #include <Eigen/LU>
 #include <cmath>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/internal/airy_functions.hpp"
 #include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"

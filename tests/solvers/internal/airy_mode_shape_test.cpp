@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/internal/airy_root_scan.hpp"
 #include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"

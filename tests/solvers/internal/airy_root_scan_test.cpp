@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "catena/models/problem_builders.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/internal/airy_boundary_system.hpp"
 #include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
