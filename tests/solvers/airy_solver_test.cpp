@@ -1,8 +1,6 @@
 // Tests of the `airy` solver (Triantafyllou's Airy-function solution, Grinfogel 1984 eqs. 7-16).
 //
 // Compared with:
-// - Boost.Math's unscaled Airy functions and the Wronskian Ai Bi' - Ai' Bi = 1/pi (the scaled
-//   functions, up to arguments 1e6);
 // - roots of the same 4x4 determinant computed independently in 30-digit arithmetic with mpmath
 //   (naive: unscaled airyai/airybi, mp.det, findroot; script in the comment of kMpmathRoots);
 // - Grinfogel's eq. (21) (asymptotic solver), which shares the model to O(eps^2): at small eps the
@@ -13,7 +11,6 @@
 
 #include <gtest/gtest.h>
 
-#include <boost/math/special_functions/airy.hpp>
 #include <cmath>
 
 #include "catena/core/error.hpp"
@@ -21,7 +18,6 @@
 #include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
-#include "solvers/internal/airy_functions.hpp"
 #include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
 
@@ -45,60 +41,6 @@ std::vector<double> airy_k_l_over_pi(const Solved& s, int count, AirySolverOptio
     for (const Mode& mode : out.inplane->modes) values.push_back(mode.k_l_over_pi);
   }
   return values;
-}
-
-TEST(ScaledAiry, MatchesBoostAcrossTheSeriesThreshold) {
-  // Boost's values are still representable up to x = 40 (Ai ~ 1e-74): compare the series branch
-  // with them. Boost's own accuracy is a few ulp; 1e-13 allows for the exp() of zeta ~ 170.
-  constexpr double kRelTol = 1e-13;
-  for (double x :
-       {internal::kAirySeriesThreshold - 1.0, internal::kAirySeriesThreshold + 1e-3, 30.0, 40.0}) {
-    const internal::ScaledAiry a = internal::scaled_airy(x);
-    const double grow = std::exp(a.zeta);
-    EXPECT_LE(relative_error(a.ai / grow, boost::math::airy_ai(x)), kRelTol) << x;
-    EXPECT_LE(relative_error(a.ai_prime / grow, boost::math::airy_ai_prime(x)), kRelTol) << x;
-    EXPECT_LE(relative_error(a.bi * grow, boost::math::airy_bi(x)), kRelTol) << x;
-    EXPECT_LE(relative_error(a.bi_prime * grow, boost::math::airy_bi_prime(x)), kRelTol) << x;
-  }
-}
-
-TEST(ScaledAiry, MaclaurinFastPathMatchesBoost) {
-  // Error measured against the size of the functions (their envelope |x|^(-1/4)/sqrt(pi) and
-  // |x|^(1/4)/sqrt(pi) for the derivatives, at least 1), not pointwise near the zeros of Ai.
-  constexpr double kTol = 2e-13;
-  for (double x = internal::kAiryMaclaurinLow; x <= internal::kAiryMaclaurinHigh; x += 0.01) {
-    const internal::ScaledAiry fast = internal::scaled_airy(x);
-    const internal::ScaledAiry ref = internal::scaled_airy_boost(x);
-    const double size = std::max(1.0, std::pow(std::abs(x), 0.25));
-    EXPECT_NEAR(fast.ai, ref.ai, kTol * size) << x;
-    EXPECT_NEAR(fast.bi, ref.bi, kTol * size) << x;
-    EXPECT_NEAR(fast.ai_prime, ref.ai_prime, kTol * size) << x;
-    EXPECT_NEAR(fast.bi_prime, ref.bi_prime, kTol * size) << x;
-    EXPECT_EQ(fast.zeta, ref.zeta);
-  }
-}
-
-TEST(ScaledAiry, TaylorFastPathMatchesBoost) {
-  // Nodes every 0.5 from Boost; Taylor to |h| <= 0.25. Same envelope-relative measure.
-  constexpr double kTol = 2e-13;
-  for (double x = internal::kAiryTaylorLow; x <= internal::kAirySeriesThreshold; x += 0.0137) {
-    const internal::ScaledAiry fast = internal::scaled_airy(x);
-    const internal::ScaledAiry ref = internal::scaled_airy_boost(x);
-    const double size = std::max(1.0, std::pow(std::abs(x), 0.25));
-    EXPECT_NEAR(fast.ai, ref.ai, kTol * size) << x;
-    EXPECT_NEAR(fast.bi, ref.bi, kTol * size) << x;
-    EXPECT_NEAR(fast.ai_prime, ref.ai_prime, kTol * size) << x;
-    EXPECT_NEAR(fast.bi_prime, ref.bi_prime, kTol * size) << x;
-  }
-}
-
-TEST(ScaledAiry, WronskianHoldsWhereTheUnscaledFunctionsOverflow) {
-  // Ai Bi' - Ai' Bi = 1/pi: the exponents cancel, so the scaled values must satisfy it exactly.
-  for (double x : {-50.0, -3.0, 0.0, 0.5, 5.0, 24.0, 26.0, 100.0, 1e3, 1e4, 1e6}) {
-    const internal::ScaledAiry a = internal::scaled_airy(x);
-    const double wronskian = a.ai * a.bi_prime - a.ai_prime * a.bi;
-    EXPECT_LE(relative_error(wronskian, 1.0 / kPi), 1e-13) << "x " << x;
-  }
 }
 
 TEST(AirySolver, RootsMatchAnIndependent30DigitComputation) {
@@ -339,6 +281,72 @@ TEST(AirySolver, RegistryEntryRunsAndRejectsBadKnobs) {
   AirySolverOptions options;
   options.tolerance_bits = 60;
   EXPECT_THROW(options.validate(), InvalidInput);
+}
+
+// The rejection message of a scene's knobs ("" when accepted).
+std::string knob_error(const SolverKnobs& knobs) {
+  try {
+    find_solver("airy")->validate_knobs(knobs);
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(AirySolver, KnobTableNamesTheKnobAndKeepsTheRanges) {
+  // Open ends: cutoff_fraction in (0, 1); the eps warning threshold at most max_eps.
+  EXPECT_NE(knob_error({{"cutoff_fraction", 1.0}}).find("[solvers.airy].cutoff_fraction"), std::string::npos);
+  EXPECT_NE(knob_error({{"cutoff_fraction", 0.0}}).find("[solvers.airy].cutoff_fraction"), std::string::npos);
+  EXPECT_NE(knob_error({{"tolerance_bits", 19L}}).find("[solvers.airy].tolerance_bits"), std::string::npos);
+  EXPECT_NE(knob_error({{"max_k_l_over_pi", -1.0}}).find("[solvers.airy].max_k_l_over_pi"), std::string::npos);
+  EXPECT_NE(knob_error({{"eps_warning_threshold", 0.6}, {"max_eps", 0.5}})
+                .find("[solvers.airy].eps_warning_threshold"),
+            std::string::npos);
+  EXPECT_EQ(knob_error({{"cutoff_fraction", 0.5}, {"scan_step", 1e-4}, {"tolerance_bits", 53L},
+                        {"max_eps", 10.0}, {"quadrature_panels", 1000L}}),
+            "");
+  // Defaults as `catena solvers` prints them come from the options struct.
+  const SolverEntry* entry = find_solver("airy");
+  ASSERT_NE(entry, nullptr);
+  ASSERT_EQ(entry->knobs.size(), 8u);
+  EXPECT_EQ(entry->knobs[0].name, "curvature_fit");
+  EXPECT_EQ(entry->knobs[0].default_value, "\"tangent\"");
+  EXPECT_EQ(entry->knobs[1].name, "scan_step");
+  EXPECT_EQ(entry->knobs[1].default_value, "0.05");
+}
+
+TEST(AirySolver, AScanLimitBelowTheRequestedModesIsAPartialResult) {
+  // Six in-plane modes asked, the scan stopped at kL/pi = 2.5: the in-plane part reports the
+  // roots it found as NoConvergence; out of plane converges; the run is NoConvergence (usable).
+  const Solved s = solve(0.18, 23.46, 38.0);
+  AirySolverOptions options;
+  options.max_k_l_over_pi = 2.5;
+  const SolverOutput out =
+      solve_airy(s.problem, s.statics, s.groups, catena::testing::modes_request(6, 2), options);
+  ASSERT_TRUE(out.inplane && out.outofplane);
+  EXPECT_EQ(out.inplane->summary.termination, Termination::NoConvergence);
+  EXPECT_GE(out.inplane->modes.size(), 1u);
+  EXPECT_LT(out.inplane->modes.size(), 6u);
+  EXPECT_EQ(out.outofplane->summary.termination, Termination::Converged);
+  EXPECT_EQ(out.summary.termination, Termination::NoConvergence);
+  EXPECT_EQ(out.summary.solver, "airy");
+  EXPECT_EQ(out.summary.operations, out.inplane->summary.operations);
+  EXPECT_GT(out.summary.operations, 0);
+}
+
+TEST(AirySolver, ForcedResponseIsNotComputedButDoesNotSpoilTheModes) {
+  const Solved s = solve(0.18, 23.46, 38.0);
+  SolveRequest request = catena::testing::modes_request(2, 0);
+  request.forced = ForcedRequest{};
+  request.forced->omegas_rad_s = {1.0, 2.0};
+  const SolverOutput out = solve_airy(s.problem, s.statics, s.groups, request);
+  EXPECT_EQ(out.summary.termination, Termination::Converged) << out.summary.message;
+  ASSERT_TRUE(out.inplane);
+  EXPECT_EQ(out.inplane->modes.size(), 2u);
+  EXPECT_TRUE(out.forced.empty());
+  bool warned = false;
+  for (const auto& warning : out.summary.warnings) warned = warned || warning.find("forced") != std::string::npos;
+  EXPECT_TRUE(warned);
 }
 
 }  // namespace

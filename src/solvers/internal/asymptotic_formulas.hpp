@@ -1,12 +1,16 @@
 #pragma once
 /// \file
-/// Closed-form mode shapes of Grinfogel (1984) used by the asymptotic solver (notation in
-/// include/catena/solvers/asymptotic_solver.hpp), and the WKB out-of-plane shape.
+/// Closed-form in-plane mode shapes of Grinfogel (1984) used by the asymptotic solver (notation
+/// in include/catena/solvers/asymptotic_solver.hpp and docs/methods/asymptotic.md). What the
+/// asymptotic and airy solvers share (WKB out of plane, static strain) is in taut_cable_theory.hpp.
 
-#include <string>
+#include "catena/core/types.hpp"
 
-#include "catena/solvers/asymptotic_solver.hpp"
-#include "catena/solvers/modal_result.hpp"
+namespace catena {
+/// Defined in catena/solvers/asymptotic_solver.hpp (the option that picks eq. 34 or 28); only
+/// declared here so that this internal header does not depend on the solver's public API.
+enum class AsymptoticShapeFormula;
+}  // namespace catena
 
 namespace catena::internal {
 
@@ -32,29 +36,5 @@ AsymptoticModeShape asymptotic_mode_shape(const Vector& stations_m,
                                           double phi_rad,
                                           double lambda2,
                                           AsymptoticShapeFormula formula);
-
-/// WKB out-of-plane shape (P M)^(-1/4) sin(omega int_0^s sqrt(M/P) ds) with P = T/(1+e), at the
-/// stations [m] (not normalised).
-Vector wkb_outofplane_shape(const StaticSolution& statics,
-                            const Vector& stations_m,
-                            double omega_rad_s);
-
-/// Static strain e0 = T0/EA at the point of chord angle (0 when inextensible). Both analytic
-/// models linearise about a slightly stretched string: they neglect e0 in k = omega/sqrt(T0/M)
-/// (model error e0/2) and do not apply above kMaxStaticStrain.
-double static_strain(const Problem& problem, const DimensionlessGroups& groups);
-inline constexpr double kMaxStaticStrain = 0.1;
-
-/// The out-of-plane WKB string modes (frequencies by wkb_outofplane_omegas, shapes by
-/// wkb_outofplane_shape, normalised; zero first-order tension) as a ModalResult, shared by the
-/// asymptotic and airy solvers, which both treat out-of-plane motion this way. Each mode carries
-/// `error_estimate`; the summary is Converged, for `solver`, without a message (the caller's).
-ModalResult wkb_outofplane_modes(const StaticSolution& statics,
-                                 const DimensionlessGroups& groups,
-                                 const SolveRequest& request,
-                                 double normal_mass_kg_per_m,
-                                 double error_estimate,
-                                 int quadrature_panels,
-                                 const std::string& solver);
 
 }  // namespace catena::internal
