@@ -16,7 +16,7 @@
 #include "catena/models/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
-#include "solvers/internal/fe_model.hpp"
+#include "solvers/internal/fe_eigen.hpp"
 #include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
 
