@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "catena/statics/elastic_catenary.hpp"
-#include "solvers/internal/fe_model.hpp"
+#include "solvers/internal/fe_eigen.hpp"
 
 namespace {
 

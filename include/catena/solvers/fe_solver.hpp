@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The `fe` solver (DESIGN.md §2.1): the cable as a chain of N two-node axial bar elements with
+/// The `fe` solver (docs/methods/fe.md): the cable as a chain of N two-node axial bar elements with
 /// lumped nodal masses, linearised about the chain's own exact static equilibrium, and solved as
 /// the sparse generalized eigenproblem K phi = omega^2 Mmat phi.
 ///
@@ -20,7 +20,7 @@
 /// discretisation error that Richardson extrapolation removes.
 ///
 /// Dynamics. Element tangent stiffness k_j = (EA/l0) t_j t_j^T + (T_j/l_j)(I - t_j t_j^T)
-/// (DESIGN.md §1.3, A = EA t t^T + T/(1+e) n n^T, integrated over one element); lumped node masses
+/// (docs/physics.md, A = EA t t^T + T/(1+e) n n^T, integrated over one element); lumped node masses
 /// l0 (m t_i t_i^T + M n_i n_i^T), with the node tangent t_i the bisector of the two adjacent
 /// element tangents; the fixed end nodes are removed. In plane: 2 (N-1) unknowns, block
 /// tridiagonal. Out of plane: k_j = T_j / l_j, node mass M l0: N-1 unknowns, tridiagonal.
@@ -68,7 +68,15 @@
 /// frequency; a forcing frequency at a natural frequency (within the frequency's own error
 /// estimate) gets a diagnostic instead of a response.
 ///
-/// Everything that is not bad input is reported in the summaries, never thrown.
+/// Everything that is not bad input is reported in the summaries, never thrown: a chain too stiff
+/// for double precision in plane (rounding floor of mode 1 above 1e-2) is declined as
+/// no-convergence before any eigen solve, and a discrete statics that does not close (or a slack
+/// element) is a numerical failure.
+///
+/// Code: the stages are in src/solvers/internal/fe_*: discrete statics (fe_chain_statics),
+/// operators (fe_operators), the eigenpairs of one (mesh, penalty) level (fe_eigen), the plan and
+/// its levels (fe_levels), stations (fe_shapes), extrapolation (fe_extrapolation), forced response
+/// (fe_forced) and summary text (fe_summary); fe_solver.cpp runs them through the solver skeleton.
 
 #include "catena/models/cable.hpp"
 #include "catena/solvers/modal_result.hpp"
@@ -78,9 +86,10 @@
 
 namespace catena {
 
-/// Options of the `fe` solver. Scene knobs: `elements`, `richardson`, `kappa`.
+/// Options of the `fe` solver. Scene knobs: `elements`, `richardson`, `kappa`, `observed_order`;
+/// `eigen_tolerance` and `max_restarts` are set through this struct only.
 struct FeSolverOptions {
-  /// Number of bar elements N (the coarse mesh when Richardson is on). >= 2; also the number of
+  /// Number of bar elements N (the coarse mesh when Richardson is on). In [2, 5e7]; also the number of
   /// requested modes must fit: in plane 2 (N - 1) - 1 >= modes, out of plane (N - 1) - 1 >= modes.
   /// The discretisation error of mode n is about (n pi / 2N)^2 / 6 relative without Richardson.
   int elements = 400;

@@ -1,0 +1,309 @@
+// The lowest eigenpairs of one fe operator pair: see fe_eigen.hpp and docs/methods/fe.md.
+#include "solvers/internal/fe_eigen.hpp"
+
+#include <fmt/format.h>
+
+#include <Spectra/SymEigsShiftSolver.h>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "solvers/internal/fe_banded_ldlt.hpp"
+
+namespace catena::internal {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Spectra operator y = (K - sigma M)^{-1} x through a banded sparse LDLT.
+class ShiftInvertOperator {
+ public:
+  using Scalar = double;
+  ShiftInvertOperator(const SparseMatrix& stiffness, const SparseMatrix& mass)
+      : stiffness_(stiffness), mass_(mass) {}
+  Eigen::Index rows() const { return stiffness_.rows(); }
+  Eigen::Index cols() const { return stiffness_.cols(); }
+  void set_shift(double sigma) {
+    const auto start = Clock::now();
+    shifted_ = stiffness_ - sigma * mass_;
+    bool ok = ldlt_.factorize(shifted_);
+    factorization_time_s += seconds_since(start);
+    ok = ok && ldlt_.pivot_ratio() > 1e-14;
+    // Same exception type as Spectra's own SymShiftInvert, so callers handle both alike.
+    if (!ok) throw std::invalid_argument(fmt::format("K - sigma M is singular at sigma = {:.6e}", sigma));
+  }
+  /// Solves (K - sigma M) Y = X for a block of right-hand sides.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& X) const {
+    Eigen::MatrixXd Y = X;
+    ldlt_.solve_in_place(Y);
+    return Y;
+  }
+  void perform_op(const double* x_in, double* y_out) const {
+    std::copy(x_in, x_in + rows(), y_out);
+    ldlt_.solve_in_place(y_out);
+  }
+  double factorization_time_s = 0.0;
+
+ private:
+  const SparseMatrix& stiffness_;
+  const SparseMatrix& mass_;
+  SparseMatrix shifted_;
+  BandedLdlt ldlt_;
+};
+
+// The block-diagonal Cholesky factor L of the lumped mass (M = L L^T, 2x2 blocks in plane,
+// diagonal out of plane) and L^{-T}.
+struct MassFactor {
+  SparseMatrix lower;              // L
+  SparseMatrix inverse_transpose;  // L^{-T}
+};
+MassFactor factor_mass(const SparseMatrix& mass, int dofs_per_node) {
+  const Eigen::Index n = mass.rows();
+  std::vector<Eigen::Triplet<double>> l_entries, inv_entries;
+  l_entries.reserve(static_cast<std::size_t>(3 * n));
+  inv_entries.reserve(static_cast<std::size_t>(3 * n));
+  for (Eigen::Index i = 0; i < n; i += dofs_per_node) {
+    if (dofs_per_node == 1) {
+      const double l = std::sqrt(mass.coeff(i, i));
+      l_entries.emplace_back(i, i, l);
+      inv_entries.emplace_back(i, i, 1.0 / l);
+    } else {
+      const double a = mass.coeff(i, i), b = mass.coeff(i + 1, i), c = mass.coeff(i + 1, i + 1);
+      const double l11 = std::sqrt(a), l21 = b / l11, l22 = std::sqrt(c - l21 * l21);
+      l_entries.emplace_back(i, i, l11);
+      l_entries.emplace_back(i + 1, i, l21);
+      l_entries.emplace_back(i + 1, i + 1, l22);
+      // L^{-1} = [1/l11, 0; -l21/(l11 l22), 1/l22]; stored transposed.
+      inv_entries.emplace_back(i, i, 1.0 / l11);
+      inv_entries.emplace_back(i, i + 1, -l21 / (l11 * l22));
+      inv_entries.emplace_back(i + 1, i + 1, 1.0 / l22);
+    }
+  }
+  MassFactor factor;
+  factor.lower.resize(n, n);
+  factor.lower.setFromTriplets(l_entries.begin(), l_entries.end());
+  factor.inverse_transpose.resize(n, n);
+  factor.inverse_transpose.setFromTriplets(inv_entries.begin(), inv_entries.end());
+  return factor;
+}
+
+// The standard-form operator for Spectra: with A = L^{-1} K L^{-T},
+// (A - sigma I)^{-1} x = L^T (K - sigma M)^{-1} L x. A standard symmetric Lanczos avoids the
+// M-inner products of the generalized solver (which cost more than the banded solves here).
+class StandardFormOperator {
+ public:
+  using Scalar = double;
+  StandardFormOperator(ShiftInvertOperator& inner, const MassFactor& factor)
+      : inner_(inner), factor_(factor), work_(inner.rows()), solved_(inner.rows()) {}
+  Eigen::Index rows() const { return inner_.rows(); }
+  Eigen::Index cols() const { return inner_.cols(); }
+  void set_shift(double sigma) { inner_.set_shift(sigma); }
+  void perform_op(const double* x_in, double* y_out) const {
+    Eigen::Map<const Vector> x(x_in, rows());
+    Eigen::Map<Vector> y(y_out, rows());
+    work_.noalias() = factor_.lower * x;
+    inner_.perform_op(work_.data(), solved_.data());
+    y.noalias() = factor_.lower.transpose() * solved_;
+  }
+
+ private:
+  ShiftInvertOperator& inner_;
+  const MassFactor& factor_;
+  mutable Vector work_, solved_;
+};
+
+// Residual and M-orthogonality of M-normalised eigenvectors.
+void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
+  const Eigen::MatrixXd K_phi = matrices.stiffness * out.eigenvectors;
+  const Eigen::MatrixXd M_phi = matrices.mass * out.eigenvectors;
+  out.max_residual = 0.0;
+  out.max_backward_error = 0.0;
+  // ||.||_1 of a symmetric matrix: the largest absolute column sum.
+  auto norm1 = [](const SparseMatrix& A) {
+    double best = 0.0;
+    for (Eigen::Index c = 0; c < A.outerSize(); ++c) {
+      double sum = 0.0;
+      for (SparseMatrix::InnerIterator it(A, c); it; ++it) sum += std::abs(it.value());
+      best = std::max(best, sum);
+    }
+    return best;
+  };
+  const double k_norm = norm1(matrices.stiffness), m_norm = norm1(matrices.mass);
+  for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
+    const double denominator = K_phi.col(i).norm();
+    const double r = (K_phi.col(i) - out.eigenvalues[i] * M_phi.col(i)).norm();
+    out.max_residual = std::max(out.max_residual, denominator > 0.0 ? r / denominator : r);
+    out.max_backward_error = std::max(
+        out.max_backward_error,
+        r / ((k_norm + std::abs(out.eigenvalues[i]) * m_norm) * out.eigenvectors.col(i).norm()));
+  }
+  const Eigen::MatrixXd gram = out.eigenvectors.transpose() * M_phi;
+  out.max_orthogonality_error =
+      (gram - Eigen::MatrixXd::Identity(gram.rows(), gram.cols())).cwiseAbs().maxCoeff();
+}
+
+// Normwise backward error at which the eigenpairs are as good as double precision allows.
+constexpr double kBackwardErrorGoal = 1e-14;
+
+// M-normalises the vectors (the Ritz vectors are M-orthonormal already; this removes rounding
+// drift) and measures residual, backward error and M-orthogonality.
+void normalise_and_check(const FeMatrices& matrices, FeEigenSolution& out) {
+  for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
+    const double norm2 = out.eigenvectors.col(i).dot(matrices.mass * out.eigenvectors.col(i));
+    out.eigenvectors.col(i) /= std::sqrt(norm2);
+  }
+  check_eigenpairs(matrices, out);
+}
+
+// Subspace (inverse) iteration with Rayleigh-Ritz on the converged Ritz vectors, with the
+// factorisation Spectra already used. Lanczos leaves components along the stiff axial directions
+// of size ~ tolerance; K amplifies them by EA/l0 into the residual. One inverse-iteration step
+// damps them by lambda/lambda_axial (<= 1e-4 here), so one or two steps reach the rounding floor.
+void refine(const FeMatrices& matrices, const ShiftInvertOperator& op, FeEigenSolution& out) {
+  {
+    const Eigen::MatrixXd Y = op.solve(matrices.mass * out.eigenvectors);
+    const Eigen::MatrixXd KY = matrices.stiffness * Y;
+    const Eigen::MatrixXd MY = matrices.mass * Y;
+    Eigen::MatrixXd Kr = Y.transpose() * KY, Mr = Y.transpose() * MY;
+    Kr = 0.5 * (Kr + Kr.transpose()).eval();
+    Mr = 0.5 * (Mr + Mr.transpose()).eval();
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ritz(Kr, Mr);
+    if (ritz.info() != Eigen::Success) return;
+    out.eigenvalues = ritz.eigenvalues();
+    out.eigenvectors = Y * ritz.eigenvectors();
+    out.operations += Y.cols();
+  }
+}
+
+// Small problems: a dense generalized solve is exact and avoids Lanczos' nev < ncv <= n limits.
+void solve_dense(const FeMatrices& matrices, int modes, FeEigenSolution& out) {
+  const auto start = Clock::now();
+  const Eigen::MatrixXd K(matrices.stiffness), M(matrices.mass);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(K, M);
+  out.iteration_time_s = seconds_since(start);
+  if (dense.info() != Eigen::Success) {
+    out.termination = Termination::NumericalFailure;
+    out.message = "dense generalized eigensolver failed";
+    return;
+  }
+  out.eigenvalues = dense.eigenvalues().head(modes);
+  out.eigenvectors = dense.eigenvectors().leftCols(modes);
+  out.termination = Termination::Converged;
+}
+
+
+// Spectra's shift-invert Lanczos, polished. Shift 0 targets the lowest modes (K is positive
+// definite for a taut chain); if it is singular (a chain with a zero-stiffness mode), the shift is
+// moved below the bottom of the spectrum, and the move reported.
+void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, double tolerance,
+                       int max_restarts, FeEigenSolution& out) {
+  ShiftInvertOperator op(matrices.stiffness, matrices.mass);
+  const MassFactor factor = factor_mass(matrices.mass, matrices.dofs_per_node);
+  StandardFormOperator standard(op, factor);
+  double sigma = 0.0;
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    try {
+      const auto start = Clock::now();
+      Spectra::SymEigsShiftSolver<StandardFormOperator> eigs(standard, modes, subspace, sigma);
+      eigs.init();
+      eigs.compute(Spectra::SortRule::LargestMagn, max_restarts, tolerance,
+                   Spectra::SortRule::SmallestAlge);
+      out.iteration_time_s += seconds_since(start);
+      out.restarts += eigs.num_iterations();
+      out.operations += eigs.num_operations();
+      if (eigs.info() == Spectra::CompInfo::Successful) {
+        out.eigenvalues = eigs.eigenvalues();
+        out.eigenvectors = factor.inverse_transpose * eigs.eigenvectors();
+        out.termination = Termination::Converged;
+        // Refine only what needs it: one or two inverse-iteration steps until the normwise
+        // backward error is at rounding level.
+        const auto start_refine = Clock::now();
+        for (int step = 0; step < 3; ++step) {
+          normalise_and_check(matrices, out);
+          if (out.max_backward_error <= kBackwardErrorGoal || step == 2) break;
+          refine(matrices, op, out);
+        }
+        out.iteration_time_s += seconds_since(start_refine);
+      } else {
+        out.termination = Termination::NoConvergence;
+        out.message = fmt::format("Spectra did not converge: {} restarts, {} operator applications",
+                                  eigs.num_iterations(), eigs.num_operations());
+      }
+      break;
+    } catch (const std::invalid_argument& error) {
+      // A singular shift (ShiftInvertOperator and Spectra both say so by invalid_argument).
+      const double scale = (matrices.stiffness.diagonal().array() /
+                            matrices.mass.diagonal().array()).abs().maxCoeff();
+      const double moved = -1e-8 * scale * std::pow(100.0, attempt);
+      out.warnings.push_back(fmt::format("shift {:.3e} rejected ({}); moved to {:.3e}", sigma,
+                                         error.what(), moved));
+      sigma = moved;
+      out.termination = Termination::NumericalFailure;
+      out.message = error.what();
+    }
+  }
+  out.factorization_time_s += op.factorization_time_s;
+  out.iteration_time_s -= op.factorization_time_s;
+}
+
+// Sylvester: the negative pivots of LDLT(K - sigma_top M) count the eigenvalues below sigma_top.
+// sigma_top sits a relative max(1e-9, 10 r) above the top eigenvalue (r the relative residual):
+// above the eigenvalue's rounding error, which for a stiff penalised chain is set by the residual
+// floor eps ||K|| / ||K phi|| rather than by the convergence tolerance, and far below any physical
+// gap between modes.
+void prove_mode_count(const FeMatrices& matrices, int modes, FeEigenSolution& out) {
+  const auto start = Clock::now();
+  const double top = out.eigenvalues[out.eigenvalues.size() - 1];
+  out.inertia_shift = top + std::max(1e-9, 10.0 * out.max_residual) * std::abs(top);
+  out.inertia_count = count_eigenvalues_below(matrices, out.inertia_shift);
+  out.factorization_time_s += seconds_since(start);
+  if (out.inertia_count != modes) {
+    out.termination = Termination::NoConvergence;
+    out.message = fmt::format(
+        "mode count not proved: LDLT(K - sigma M) at sigma = {:.9e} has {} negative pivots, but "
+        "{} modes were found below it",
+        out.inertia_shift, out.inertia_count, modes);
+  } else {
+    out.message = fmt::format("{} modes, inertia count {} below sigma = {:.9e}", modes,
+                              out.inertia_count, out.inertia_shift);
+  }
+}
+
+}  // namespace
+
+int count_eigenvalues_below(const FeMatrices& matrices, double shift) {
+  const SparseMatrix shifted = matrices.stiffness - shift * matrices.mass;
+  BandedLdlt ldlt;
+  if (!ldlt.factorize(shifted)) return -1;
+  return ldlt.negative_pivots();
+}
+
+FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
+                                   int modes,
+                                   double tolerance,
+                                   int max_restarts) {
+  FeEigenSolution out;
+  const auto n = static_cast<int>(matrices.stiffness.rows());
+  if (modes <= 0) {
+    out.termination = Termination::Converged;
+    out.message = "no modes asked";
+    return out;
+  }
+  const int subspace = std::min(n, std::max(2 * modes + 1, modes + 20));
+  const bool dense = n <= 64 || subspace <= modes;
+  if (dense) {
+    solve_dense(matrices, modes, out);
+  } else {
+    solve_iteratively(matrices, modes, subspace, tolerance, max_restarts, out);
+  }
+  if (out.termination != Termination::Converged) return out;
+  if (dense) normalise_and_check(matrices, out);
+  prove_mode_count(matrices, modes, out);
+  return out;
+}
+
+}  // namespace catena::internal

@@ -1,0 +1,62 @@
+#pragma once
+/// \file
+/// The `fe` solver's forced response (docs/methods/fe.md): a harmonic end displacement d imposed by
+/// one banded solve of (K - omega^2 M) x = -K_ib d per forcing frequency on the finest main mesh
+/// (each penalty, extrapolated to kappa = 0 when the cable is inextensible); the coarse mesh of the
+/// pair gives the error estimate of the peak tension. A forcing frequency at a natural frequency
+/// (within the frequency's own error estimate) or at a singular K - omega^2 M gets a diagnostic
+/// instead of a response.
+
+#include <vector>
+
+#include "catena/solvers/modal_result.hpp"
+#include "catena/solvers/solve_request.hpp"
+#include "solvers/internal/fe_levels.hpp"
+#include "solvers/internal/fe_shapes.hpp"
+#include "solvers/internal/solver_driver.hpp"
+
+namespace catena::internal {
+
+/// A computed natural frequency of the forced plane, for the resonance check.
+struct FeNaturalFrequency {
+  int index = 0;
+  double omega_rad_s = 0.0;
+  double relative_error_estimate = -1.0;
+};
+
+/// The plane a forcing moves: out of plane only for a displacement normal to the supports' plane.
+Plane forced_plane(const ForcedRequest& request);
+
+/// The resonance diagnostic when `omega` lies within max(1e-9, 3 x relative error estimate) of a
+/// natural frequency (relative); empty otherwise.
+std::string resonance_diagnostic(double omega, Plane plane, const std::vector<FeNaturalFrequency>& naturals);
+
+/// The response of one level (a chain and its operators) at `omega` to end displacements
+/// `end_a`, `end_b`, on the stations; `diagnostic` set (and no response) when K - omega^2 M is
+/// singular to rounding.
+struct FeLevelResponse {
+  bool ok = false;
+  std::string diagnostic;
+  FeSampled sampled;
+};
+FeLevelResponse respond_on_level(Plane plane,
+                                 const FeChain& chain,
+                                 const FeMatrices& matrices,
+                                 double omega,
+                                 const Vec2& end_a,
+                                 const Vec2& end_b,
+                                 const Vector& stations,
+                                 const StaticSolution& statics);
+
+/// The forced response at every requested frequency, with its summary (Converged: every
+/// frequency has a response or a resonance diagnostic, which is the discrete model's answer).
+/// Assembles the operators of the forced plane where the levels lack them. `naturals`: the natural
+/// frequencies computed for the forced plane (empty when that plane was not asked).
+ForcedOutcome fe_forced_response(const ForcedRequest& request,
+                                 const SolveContext& context,
+                                 const FePlan& plan,
+                                 FeLevels& levels,
+                                 const std::vector<FeNaturalFrequency>& naturals,
+                                 FeTimings& timings);
+
+}  // namespace catena::internal

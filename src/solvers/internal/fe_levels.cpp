@@ -1,0 +1,160 @@
+// The fe solver's plan and levels: see fe_levels.hpp and docs/methods/fe.md.
+#include "solvers/internal/fe_levels.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "catena/core/types.hpp"
+#include "catena/solvers/fe_solver.hpp"
+
+namespace catena::internal {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The meshes: N and 2N with Richardson; otherwise N alone, with N/2 for the error estimate when it
+// holds the modes asked. observed_order adds one mesh twice as fine as the finest.
+void plan_meshes(FePlan& plan, const FeSolverOptions& options, int max_modes_in_plane,
+                 int max_modes_out_of_plane) {
+  const int N = options.elements;
+  auto fits = [&](int elements) {
+    return elements >= 2 && fe_unknowns(Plane::InPlane, elements) >= max_modes_in_plane &&
+           fe_unknowns(Plane::OutOfPlane, elements) >= max_modes_out_of_plane;
+  };
+  if (options.richardson) {
+    plan.meshes = {N, 2 * N};
+    plan.main_coarse = 0;
+    plan.main_fine = 1;
+    plan.richardson = true;
+    if (options.observed_order) plan.meshes.push_back(4 * N);
+  } else {
+    if (fits(N / 2)) {
+      plan.meshes = {N / 2, N};
+      plan.main_coarse = 0;
+      plan.main_fine = 1;
+    } else {
+      plan.meshes = {N};
+      plan.main_fine = 0;
+    }
+    if (options.observed_order) plan.meshes.push_back(2 * N);
+  }
+}
+
+}  // namespace
+
+double FePlan::rounding_floor(double t0_n, int mode_number) const {
+  const double stiffness_ratio = axial_stiffness_n[0] / std::max(t0_n, 1e-300);
+  const double n = static_cast<double>(mode_number);
+  const auto finest = static_cast<double>(finest_elements());
+  return 0.5 * std::numeric_limits<double>::epsilon() * stiffness_ratio * finest * finest /
+         (kPi * kPi * n * n);
+}
+
+FePlan make_fe_plan(const Problem& problem,
+                    const StaticSolution& statics,
+                    const FeSolverOptions& options,
+                    int max_modes_in_plane,
+                    int max_modes_out_of_plane) {
+  FePlan plan;
+  plan_meshes(plan, options, max_modes_in_plane, max_modes_out_of_plane);
+  plan.inextensible = problem.cable.is_inextensible();
+  if (plan.inextensible) {
+    // The penalty EA = H / kappa, with the larger end tension for a vertical chord (H = 0).
+    double reference = statics.horizontal_force_n();
+    if (!(reference > 0.0))
+      reference = std::max(statics.tension_n(0.0), statics.tension_n(problem.cable.length_m));
+    plan.kappas = {options.kappa, 2.0 * options.kappa};
+    for (double kappa : plan.kappas) plan.axial_stiffness_n.push_back(reference / kappa);
+  } else {
+    plan.axial_stiffness_n = {problem.cable.axial_stiffness_n};
+  }
+  return plan;
+}
+
+FeLevels solve_level_statics(const Problem& problem,
+                             const StaticSolution& statics,
+                             const FePlan& plan,
+                             FeTimings& timings,
+                             std::string& failure) {
+  FeLevels levels(plan.meshes.size(), std::vector<FeLevel>(plan.penalties()));
+  for (std::size_t m = 0; m < plan.meshes.size(); ++m) {
+    for (std::size_t k = 0; k < plan.penalties(); ++k) {
+      const auto start = Clock::now();
+      levels[m][k].chain = solve_chain_statics(problem, statics, plan.meshes[m], plan.axial_stiffness_n[k]);
+      timings.statics_s += seconds_since(start);
+      if (!levels[m][k].chain.in_equilibrium()) {
+        failure = levels[m][k].chain.failure;
+        return levels;
+      }
+    }
+  }
+  return levels;
+}
+
+FePlaneEigenReport solve_level_modes(FeLevels& levels,
+                                     Plane plane,
+                                     int modes,
+                                     const FeSolverOptions& options,
+                                     FeTimings& timings) {
+  FePlaneEigenReport report;
+  for (auto& row : levels) {
+    for (FeLevel& level : row) {
+      const auto start = Clock::now();
+      level.matrices[plane] = assemble(plane, level.chain);
+      timings.assembly_s += seconds_since(start);
+      FeEigenSolution eigen =
+          solve_lowest_modes(level.matrices[plane], modes, options.eigen_tolerance, options.max_restarts);
+      timings.factorization_s += eigen.factorization_time_s;
+      timings.eigen_iterations_s += eigen.iteration_time_s;
+      report.restarts += eigen.restarts;
+      report.operations += eigen.operations;
+      const int N = level.chain.elements;
+      for (const auto& warning : eigen.warnings) report.warnings.push_back(fmt::format("N = {}: {}", N, warning));
+      if (eigen.termination != Termination::Converged) {
+        // A numerical failure on any level outweighs a level that did not converge.
+        if (report.termination != Termination::NumericalFailure) report.termination = eigen.termination;
+        report.warnings.push_back(fmt::format("N = {}: {}", N, eigen.message));
+      } else {
+        report.max_residual = std::max(report.max_residual, eigen.max_residual);
+        report.max_orthogonality_error = std::max(report.max_orthogonality_error, eigen.max_orthogonality_error);
+        report.max_backward_error = std::max(report.max_backward_error, eigen.max_backward_error);
+      }
+      level.eigen[plane] = std::move(eigen);
+    }
+  }
+  return report;
+}
+
+void assemble_missing(FeLevels& levels, Plane plane, const std::vector<std::size_t>& meshes) {
+  for (std::size_t m : meshes) {
+    for (FeLevel& level : levels[m]) {
+      if (!level.matrices.count(plane)) level.matrices[plane] = assemble(plane, level.chain);
+    }
+  }
+}
+
+int modes_on_every_level(const FeLevels& levels, Plane plane, int modes) {
+  int available = modes;
+  for (const auto& row : levels)
+    for (const FeLevel& level : row)
+      available = std::min(available, static_cast<int>(level.eigen.at(plane).eigenvalues.size()));
+  return available;
+}
+
+bool inertia_proved_on_every_level(const FeLevels& levels, Plane plane) {
+  bool all_proved = true;
+  for (const auto& row : levels)
+    for (const FeLevel& level : row)
+      all_proved = all_proved && level.eigen.at(plane).inertia_count ==
+                                     static_cast<int>(level.eigen.at(plane).eigenvalues.size());
+  return all_proved;
+}
+
+}  // namespace catena::internal

@@ -1,0 +1,110 @@
+#pragma once
+/// \file
+/// The `fe` solver's levels (docs/methods/fe.md): the plan of meshes (N and 2N for Richardson, N/2
+/// and N for an estimate without it, one finer mesh for an observed order) and penalties (kappa and
+/// 2 kappa for an inextensible cable), and for every (mesh, penalty) pair its discrete statics,
+/// its operators and its lowest eigenpairs (shift-invert, polish, inertia count).
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "catena/solvers/solver_summary.hpp"
+#include "solvers/internal/fe_chain_statics.hpp"
+#include "solvers/internal/fe_eigen.hpp"
+#include "solvers/internal/fe_operators.hpp"
+
+namespace catena {
+struct FeSolverOptions;
+}  // namespace catena
+
+namespace catena::internal {
+
+/// Wall time of each stage of one fe solve, summed over levels and planes [s].
+struct FeTimings {
+  double statics_s = 0.0;
+  double assembly_s = 0.0;
+  double factorization_s = 0.0;
+  double eigen_iterations_s = 0.0;
+  double postprocessing_s = 0.0;
+  double forced_s = 0.0;
+};
+
+/// The meshes and penalties of one solve.
+struct FePlan {
+  std::vector<int> meshes;  // ascending
+  int main_coarse = -1;     // index in meshes of the pair used for the result (-1: no coarse mesh)
+  int main_fine = -1;
+  bool richardson = false;
+  bool inextensible = false;
+  std::vector<double> axial_stiffness_n;  // one per penalty (1 value when extensible)
+  std::vector<double> kappas;             // the penalties kappa, 2 kappa (inextensible only)
+
+  bool has_coarse() const { return main_coarse >= 0; }
+  int finest_elements() const { return meshes[static_cast<std::size_t>(main_fine)]; }
+  std::size_t penalties() const { return axial_stiffness_n.size(); }
+
+  /// Rounding floor of the in-plane chain, relative, for mode `mode_number`: K holds axial springs
+  /// EA/l0 beside geometric ones T/l0, so an eigenvalue's backward error eps_mach ||K|| is,
+  /// relative to omega_n^2, about eps_mach (EA/T0) N^2 / (pi n)^2 (half of that in omega), with EA
+  /// the first penalty's stiffness. A conservative bound: observed errors are 10-200x smaller.
+  double rounding_floor(double t0_n, int mode_number) const;
+};
+
+/// The plan for `options`, with the modes asked per plane (the N/2 estimate mesh is used only
+/// when it holds them).
+FePlan make_fe_plan(const Problem& problem,
+                    const StaticSolution& statics,
+                    const FeSolverOptions& options,
+                    int max_modes_in_plane,
+                    int max_modes_out_of_plane);
+
+/// Everything computed for one (mesh, penalty) pair.
+struct FeLevel {
+  FeChain chain;
+  std::map<Plane, FeMatrices> matrices;
+  std::map<Plane, FeEigenSolution> eigen;
+};
+
+/// levels[mesh][penalty], in the plan's order.
+using FeLevels = std::vector<std::vector<FeLevel>>;
+
+/// The discrete statics of every level. The first chain not in equilibrium (mesh-major order)
+/// ends the work: `failure` gets its reason and the levels are incomplete.
+FeLevels solve_level_statics(const Problem& problem,
+                             const StaticSolution& statics,
+                             const FePlan& plan,
+                             FeTimings& timings,
+                             std::string& failure);
+
+/// What the eigen solves of one plane on every level add up to.
+struct FePlaneEigenReport {
+  Termination termination = Termination::Converged;
+  long restarts = 0;
+  long operations = 0;
+  /// Over the converged levels: the largest relative residual (-1: none), mass-orthogonality error
+  /// and normwise backward error.
+  double max_residual = -1.0;
+  double max_orthogonality_error = 0.0;
+  double max_backward_error = 0.0;
+  /// Each level's warnings and failures, prefixed "N = <elements>: ".
+  std::vector<std::string> warnings;
+};
+
+/// Assembles the operators of `plane` and solves its lowest `modes` eigenpairs on every level.
+FePlaneEigenReport solve_level_modes(FeLevels& levels,
+                                     Plane plane,
+                                     int modes,
+                                     const FeSolverOptions& options,
+                                     FeTimings& timings);
+
+/// The operators of `plane` on the levels that do not hold them yet, for mesh indices `meshes`.
+void assemble_missing(FeLevels& levels, Plane plane, const std::vector<std::size_t>& meshes);
+
+/// The number of modes every level delivered in `plane` (at most `modes`).
+int modes_on_every_level(const FeLevels& levels, Plane plane, int modes);
+
+/// True when, on every level, the inertia count equals the number of modes returned.
+bool inertia_proved_on_every_level(const FeLevels& levels, Plane plane);
+
+}  // namespace catena::internal

@@ -1,0 +1,37 @@
+#pragma once
+/// \file
+/// The `fe` chain's operators (docs/methods/fe.md): sparse stiffness K and lumped mass M of one
+/// plane on the free (interior) nodes, and the coupling of the free unknowns to the end nodes
+/// (for an imposed end displacement). In plane the element tangent stiffness is
+/// (EA/l0) t t^T + (T/l)(I - t t^T) and the node mass l0 (m t t^T + M n n^T) about the bisecting
+/// node tangent (block tridiagonal, 2x2 blocks); out of plane T/l and M l0 (tridiagonal).
+
+#include <Eigen/Sparse>
+
+#include "catena/core/types.hpp"
+#include "solvers/internal/fe_chain_statics.hpp"
+
+namespace catena::internal {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+/// Stiffness and mass of one plane on the free (interior) nodes.
+struct FeMatrices {
+  /// Unknowns per node: 2 in plane (x, z), 1 out of plane.
+  int dofs_per_node = 2;
+  SparseMatrix stiffness;
+  SparseMatrix mass;
+  /// Coupling K_ib of the free unknowns to the end node's unknowns (columns: node a then node b,
+  /// dofs_per_node each), for the forced response.
+  SparseMatrix boundary_coupling;
+};
+
+FeMatrices assemble_inplane(const FeChain& chain);
+FeMatrices assemble_outofplane(const FeChain& chain);
+/// assemble_inplane or assemble_outofplane.
+FeMatrices assemble(Plane plane, const FeChain& chain);
+
+/// Number of free unknowns of a chain of `elements` elements in `plane`: 2 (N - 1) or N - 1.
+int fe_unknowns(Plane plane, int elements);
+
+}  // namespace catena::internal

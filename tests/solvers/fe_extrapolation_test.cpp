@@ -1,0 +1,100 @@
+// fe extrapolation (src/solvers/internal/fe_extrapolation.cpp): pairing modes across meshes by
+// shape, Richardson in the mesh, linear extrapolation in the penalty, the observed order.
+#include "solvers/internal/fe_extrapolation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "solvers/internal/mode_tools.hpp"
+
+namespace catena {
+namespace {
+
+// Out-of-plane string shapes sin(n pi i / N) on the free nodes i = 1..N-1, columns in `order`.
+Eigen::MatrixXd string_shapes(int elements, const std::vector<int>& order) {
+  Eigen::MatrixXd shapes(elements - 1, static_cast<Index>(order.size()));
+  for (Index c = 0; c < shapes.cols(); ++c)
+    for (int i = 1; i < elements; ++i)
+      shapes(i - 1, c) = std::sin(order[static_cast<std::size_t>(c)] * kPi * i / elements);
+  return shapes;
+}
+
+TEST(FeExtrapolation, ModesArePairedByShapeNotByRank) {
+  const Eigen::MatrixXd reference = string_shapes(40, {1, 2, 3});
+  // On a mesh twice as coarse, with modes 1 and 2 swapped and mode 3 first.
+  const Eigen::MatrixXd other = string_shapes(20, {3, 2, 1});
+  EXPECT_EQ(internal::match_modes(reference, 40, other, 20, Plane::OutOfPlane), (std::vector<int>{2, 1, 0}));
+  // And the other way round (the coarse mesh's nodes are the common ones).
+  EXPECT_EQ(internal::match_modes(other, 20, reference, 40, Plane::OutOfPlane), (std::vector<int>{2, 1, 0}));
+}
+
+internal::FePlan two_mesh_plan(bool richardson, bool inextensible) {
+  internal::FePlan plan;
+  plan.meshes = {100, 200};
+  plan.main_coarse = 0;
+  plan.main_fine = 1;
+  plan.richardson = richardson;
+  plan.inextensible = inextensible;
+  plan.axial_stiffness_n = inextensible ? std::vector<double>{2e6, 1e6} : std::vector<double>{1e6};
+  return plan;
+}
+
+TEST(FeExtrapolation, RichardsonRemovesTheSecondOrderTerm) {
+  // omega(h) = 5 + 3 h^2 at h = 1/100 and 1/200.
+  const double coarse = 5.0 + 3e-4, fine = 5.0 + 0.75e-4;
+  const auto on = internal::extrapolate_frequency(two_mesh_plan(true, false), {{coarse}, {fine}});
+  EXPECT_NEAR(on.omega_rad_s, 5.0, 1e-14);
+  EXPECT_NEAR(on.error_rad_s, 0.75e-4, 1e-15);
+  // Without Richardson the fine value is kept, with the same estimate.
+  const auto off = internal::extrapolate_frequency(two_mesh_plan(false, false), {{coarse}, {fine}});
+  EXPECT_EQ(off.omega_rad_s, fine);
+  EXPECT_NEAR(off.error_rad_s, 0.75e-4, 1e-15);
+  // No coarse mesh: no estimate.
+  internal::FePlan single = two_mesh_plan(false, false);
+  single.meshes = {200};
+  single.main_coarse = -1;
+  single.main_fine = 0;
+  EXPECT_EQ(internal::extrapolate_frequency(single, {{fine}}).error_rad_s, -1.0);
+}
+
+TEST(FeExtrapolation, PenaltyIsExtrapolatedLinearlyToZero) {
+  // omega(h, kappa) = 7 + 2 h^2 + 40 kappa, kappa = 1e-3 and 2e-3.
+  auto omega = [](double h, double kappa) { return 7.0 + 2.0 * h * h + 40.0 * kappa; };
+  const std::vector<std::vector<double>> table = {{omega(0.01, 1e-3), omega(0.01, 2e-3)},
+                                                  {omega(0.005, 1e-3), omega(0.005, 2e-3)}};
+  const auto result = internal::extrapolate_frequency(two_mesh_plan(true, true), table);
+  EXPECT_NEAR(result.omega_rad_s, 7.0, 1e-13);
+  // The estimate: the Richardson correction plus the kappa correction.
+  EXPECT_NEAR(result.error_rad_s, 2.0 * 0.75e-4 / 3.0 + 0.04, 1e-12);
+}
+
+TEST(FeExtrapolation, ObservedOrderOfASecondOrderSequence) {
+  auto omega = [](double h) { return 1.0 + 0.5 * h * h; };
+  EXPECT_NEAR(internal::observed_order(omega(0.1), omega(0.05), omega(0.025)), 2.0, 1e-9);
+  EXPECT_EQ(internal::observed_order(1.0, 2.0, 1.5), 0.0);  // not monotone: no order
+}
+
+TEST(FeExtrapolation, ModeShapesAreExtrapolatedInKappaAfterAlignment) {
+  // a = x + kappa y, b = x + 2 kappa y, b stored with the opposite sign: the result is x.
+  const Index n = 11;
+  Vector x(n), y(n);
+  for (Index i = 0; i < n; ++i) {
+    x[i] = std::sin(kPi * i / (n - 1));
+    y[i] = 1e-4 * std::cos(3.0 * i);
+  }
+  Mode a, b;
+  a.s_m = b.s_m = Vector::LinSpaced(n, 0.0, 1.0);
+  a.v = x + y;
+  b.v = -(x + 2.0 * y);
+  internal::extrapolate_mode_in_kappa(a, b);
+  Mode expected;
+  expected.v = x;
+  internal::normalise_outofplane_mode(expected);
+  // Unextrapolated, a would be off by |y| ~ 1e-4; the alignment leaves O(|y|^2 / |x|^2).
+  EXPECT_LE((a.v - expected.v).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_EQ(a.normalised_by, "v");
+}
+
+}  // namespace
+}  // namespace catena
