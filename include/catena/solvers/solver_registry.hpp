@@ -11,7 +11,6 @@
 #include <functional>
 #include <map>
 #include <memory>
-#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -66,10 +65,6 @@ struct SolverEntry {
   /// The solver's numerics for one problem, with its knobs read (they are validated first).
   std::function<std::unique_ptr<internal::SolverNumerics>(const SolveContext&, const SolverKnobs&)>
       make_numerics;
-
-  // Transitional (removed once every solver runs through the driver): the old whole-run entry.
-  std::function<std::optional<std::string>(const SolveContext&)> not_applicable_reason;
-  std::function<SolverOutput(const SolveContext&, const SolverKnobs&)> run;
 };
 
 /// All solvers, in a fixed order: fe, shooting, frobenius, asymptotic, airy.

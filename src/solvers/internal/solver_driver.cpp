@@ -71,14 +71,15 @@ SolverOutput drive_solver(const std::string& solver, const SolveContext& context
       summary.wall_time_s = seconds_since(start);
       return output;
     }
-    numerics.describe(summary);
     if (auto outcome = numerics.prepare()) {
+      numerics.describe(summary);
       summary.termination = outcome->termination;
       summary.message = outcome->message;
       summary.wall_time_s = seconds_since(start);
       return output;
     }
     run_parts(context, numerics, output, forced);
+    numerics.describe(summary);
   } catch (const InvalidInput&) {
     throw;
   } catch (const std::exception& error) {
@@ -116,6 +117,10 @@ void combine_summaries(const std::vector<std::pair<std::string, const SolverSumm
     max_residual = std::max(max_residual, part->max_residual);
     message += (message.empty() ? "" : "; ") + part->message;
     for (const auto& warning : part->warnings) overall.warnings.push_back(name + ": " + warning);
+    if (name == "forced") {
+      // A plane's notes stay in its own summary; the forced part has no other place for them.
+      for (const auto& note : part->notes) overall.notes.push_back(name + ": " + note);
+    }
   }
   if (parts.empty()) {
     overall.termination = Termination::Converged;

@@ -9,7 +9,8 @@
 ///   3. prepare(): work shared by the planes; a returned Outcome ends the run with that status;
 ///   4. modes(plane, count) for each requested plane (in-plane first), timed per plane;
 ///   5. forced(request) when a forced response is asked;
-///   6. combine the parts' summaries by combine_summaries() and time the whole.
+///   6. describe(): the overall resolution, notes and warnings (also after a prepare() Outcome);
+///   7. combine the parts' summaries by combine_summaries() and time the whole.
 ///
 /// Any std::exception other than InvalidInput that escapes steps 2-5 becomes NumericalFailure with
 /// its message: numerical outcomes are statuses, never exceptions.
@@ -57,7 +58,8 @@ class SolverNumerics {
   /// part with a warning).
   virtual ForcedOutcome forced(const ForcedRequest& request);
 
-  /// Facts for the overall summary: resolution, notes, warnings that concern the whole run.
+  /// Facts for the overall summary: resolution, notes, warnings that concern the whole run. Called
+  /// after the parts (or after prepare() ended the run), so it may report what they learned.
   virtual void describe(SolverSummary& summary) const { (void)summary; }
 };
 
@@ -74,7 +76,9 @@ SolverOutput drive_solver(const std::string& solver, const SolveContext& context
 /// - message: the parts' messages joined by "; ";
 /// - iterations, operations: sums of the counted ones (-1 when none counted);
 /// - max_error_estimate, max_residual: the largest over the parts (-1 when none);
-/// - warnings: every part's warnings, prefixed with the part ("in-plane: ...").
+/// - warnings: every part's warnings, prefixed with the part ("in-plane: ...");
+/// - notes: a plane's notes stay in the plane's summary; the forced part's are copied, prefixed
+///   "forced: " (it has no summary of its own in SolverOutput).
 /// `overall` keeps its resolution, notes and warnings (from describe()) and gains the rest.
 void combine_summaries(const std::vector<std::pair<std::string, const SolverSummary*>>& parts,
                        SolverSummary& overall);
