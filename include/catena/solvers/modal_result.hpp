@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Results every solver returns, in the same structures (DESIGN.md §2, §3).
+/// Results every solver returns, in the same structures (docs/json-layout.md).
 ///
 /// Shape normalisation (the common convention every solver follows, so that shapes compare
 /// directly): in-plane shapes are scaled so that max_j |w(s_j)| = 1 and w is positive where |w| is

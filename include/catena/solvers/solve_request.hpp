@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// What a scene asks the solvers to compute (DESIGN.md §3). Only what is asked is computed.
+/// What a scene asks the solvers to compute (docs/scene-format.md, `[request]`). Only what is asked is computed.
 
 #include <optional>
 #include <string>

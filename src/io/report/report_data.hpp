@@ -26,7 +26,7 @@ bool has_tag(const json& scene, const std::string& tag);
 void write_data_tables(const json& document, const std::filesystem::path& dir);
 
 /// Fastest wall time [s] for each case, solver and error target (1e-3, 1e-6, 1e-9), from
-/// benchmarks/time-vs-error.csv; cases in file order.
+/// the data dir's copy of benchmarks/results/time-vs-error.csv; cases in file order.
 struct TimeToAccuracy {
   std::vector<std::string> cases;
   std::map<std::string, std::map<std::string, std::map<double, double>>> best_time_s;
