@@ -45,28 +45,25 @@ namespace internal {
 
 const KnobTable<AirySolverOptions>& airy_knobs() {
   using O = AirySolverOptions;
-  static const KnobTable<O> table(
-      "airy",
-      {choice_knob("curvature_fit", &O::curvature_fit,
-                   {{"tangent", AiryCurvatureFit::Tangent},
-                    {"secant", AiryCurvatureFit::Secant},
-                    {"paper", AiryCurvatureFit::Paper}},
-                   "linearisation of Q(s): tangent at s_a, secant through the ends, or the "
-                   "paper's eqs. (17)-(18)"),
-       real_knob("scan_step", &O::scan_step_k_l_over_pi, Range::closed(1e-4, 0.5),
-                 "scan step in kL/pi"),
-       real_knob("cutoff_fraction", &O::cutoff_fraction, Range{0.0, 1.0, true, true},
-                 "spurious-root cutoff as a fraction of the string bound"),
-       real_knob("max_k_l_over_pi", &O::max_k_l_over_pi, Range::at_least(0.0),
-                 "scan limit in kL/pi (0: 2 modes + 20)"),
-       integer_knob("tolerance_bits", &O::tolerance_bits, Range::closed(20, 53),
-                    "root tolerance in bits"),
-       real_knob("eps_warning_threshold", &O::eps_warning_threshold, Range::open_closed(0.0, 10.0),
-                 "eps above which a validity warning is given (at most max_eps)"),
-       real_knob("max_eps", &O::max_eps, Range::open_closed(0.0, 10.0),
-                 "eps above which the solver declines"),
-       integer_knob("quadrature_panels", &O::quadrature_panels, Range::closed(1, 1000),
-                    "panels of 20-point Gauss-Legendre for the travel time")});
+  static const KnobTable<O> table("airy", [] {
+    std::vector<KnobBinding<O>> knobs{
+        choice_knob("curvature_fit", &O::curvature_fit,
+                    {{"tangent", AiryCurvatureFit::Tangent},
+                     {"secant", AiryCurvatureFit::Secant},
+                     {"paper", AiryCurvatureFit::Paper}},
+                    "linearisation of Q(s): tangent at s_a, secant through the ends, or the "
+                    "paper's eqs. (17)-(18)"),
+        real_knob("scan_step", &O::scan_step_k_l_over_pi, Range::closed(1e-4, 0.5),
+                  "scan step in kL/pi"),
+        real_knob("cutoff_fraction", &O::cutoff_fraction, Range{0.0, 1.0, true, true},
+                  "spurious-root cutoff as a fraction of the string bound"),
+        real_knob("max_k_l_over_pi", &O::max_k_l_over_pi, Range::at_least(0.0),
+                  "scan limit in kL/pi (0: 2 modes + 20)"),
+        integer_knob("tolerance_bits", &O::tolerance_bits, Range::closed(20, 53),
+                     "root tolerance in bits")};
+    for (auto& knob : taut_theory_knobs<O>("the travel time")) knobs.push_back(std::move(knob));
+    return knobs;
+  }());
   return table;
 }
 
@@ -74,11 +71,7 @@ const KnobTable<AirySolverOptions>& airy_knobs() {
 
 void AirySolverOptions::validate() const {
   internal::airy_knobs().validate(*this);
-  if (eps_warning_threshold > max_eps) {
-    throw InvalidInput(fmt::format(
-        "[solvers.airy].eps_warning_threshold = {}: must be <= max_eps = {}",
-        eps_warning_threshold, max_eps));
-  }
+  internal::require_warning_below_max_eps("airy", eps_warning_threshold, max_eps);
 }
 
 std::optional<std::string> airy_not_applicable_reason(const Problem& problem,

@@ -105,17 +105,14 @@ namespace internal {
 
 const KnobTable<AsymptoticSolverOptions>& asymptotic_knobs() {
   using O = AsymptoticSolverOptions;
-  static const KnobTable<O> table(
-      "asymptotic",
-      {choice_knob("shape_formula", &O::shape_formula,
-                   {{"34", AsymptoticShapeFormula::Eq34}, {"28", AsymptoticShapeFormula::Eq28}},
-                   "transverse shape formula: eq. (34) uniformly valid, or eq. (28) zeroth order"),
-       real_knob("eps_warning_threshold", &O::eps_warning_threshold, Range::open_closed(0.0, 10.0),
-                 "eps above which a validity warning is given (at most max_eps)"),
-       real_knob("max_eps", &O::max_eps, Range::open_closed(0.0, 10.0),
-                 "eps above which the solver declines"),
-       integer_knob("quadrature_panels", &O::quadrature_panels, Range::closed(1, 1000),
-                    "panels of 20-point Gauss-Legendre for the WKB integral")});
+  static const KnobTable<O> table("asymptotic", [] {
+    std::vector<KnobBinding<O>> knobs{choice_knob(
+        "shape_formula", &O::shape_formula,
+        {{"34", AsymptoticShapeFormula::Eq34}, {"28", AsymptoticShapeFormula::Eq28}},
+        "transverse shape formula: eq. (34) uniformly valid, or eq. (28) zeroth order")};
+    for (auto& knob : taut_theory_knobs<O>("the WKB integral")) knobs.push_back(std::move(knob));
+    return knobs;
+  }());
   return table;
 }
 
@@ -123,11 +120,7 @@ const KnobTable<AsymptoticSolverOptions>& asymptotic_knobs() {
 
 void AsymptoticSolverOptions::validate() const {
   internal::asymptotic_knobs().validate(*this);
-  if (eps_warning_threshold > max_eps) {
-    throw InvalidInput(fmt::format(
-        "[solvers.asymptotic].eps_warning_threshold = {}: must be <= max_eps = {}",
-        eps_warning_threshold, max_eps));
-  }
+  internal::require_warning_below_max_eps("asymptotic", eps_warning_threshold, max_eps);
 }
 
 double grinfogel_eq21(double kl, double eps, double phi_rad, double lambda2) {

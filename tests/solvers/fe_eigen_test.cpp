@@ -10,9 +10,12 @@
 
 #include "catena/statics/problem_builders.hpp"
 #include "test_utils.hpp"
+#include "solvers/fe_test_support.hpp"
 
 namespace catena {
 namespace {
+
+using catena::testing::straight_bar;
 
 using catena::testing::relative_error;
 
@@ -92,17 +95,6 @@ internal::FeEigenSolution lowest_modes(const Problem& problem, Plane plane, int 
   const internal::FeChain chain =
       internal::solve_chain_statics(problem, statics, elements, problem.cable.axial_stiffness_n);
   return internal::solve_lowest_modes(internal::assemble(plane, chain), 10, 1e-13, 1000);
-}
-
-// A straight bar: L = 1 m, EA = 10 N, m = 1 kg/m, stretched to 1.1 m (T = 1 N), weight 1e-9 N/m.
-Problem straight_bar() {
-  Problem problem;
-  problem.cable.length_m = 1.0;
-  problem.cable.weight_n_per_m = 1e-9;
-  problem.cable.axial_stiffness_n = 10.0;
-  problem.cable.mass_kg_per_m = 1.0;
-  problem.supports.b_m = Vec2(1.1, 0.0);
-  return problem;
 }
 
 TEST(FeEigen, ModesAreMassOrthogonalWithSmallResidualAndBackwardError) {

@@ -12,9 +12,12 @@
 #include "catena/solvers/fe_solver.hpp"
 #include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
+#include "solvers/fe_test_support.hpp"
 
 namespace catena {
 namespace {
+
+using catena::testing::straight_bar;
 
 using catena::testing::modes_request;
 using catena::testing::relative_error;
@@ -45,17 +48,6 @@ TEST(FeForced, ResonanceWindowIsThreeErrorEstimatesOrOnePartPerBillion) {
   EXPECT_NE(internal::resonance_diagnostic(20.0 + 1e-8, Plane::OutOfPlane, naturals).find("out-of-plane"),
             std::string::npos);
   EXPECT_TRUE(internal::resonance_diagnostic(20.0 + 1e-7, Plane::OutOfPlane, naturals).empty());
-}
-
-// A straight bar: L = 1 m, EA = 10 N, m = 1 kg/m, stretched to 1.1 m (T = 1 N), weight 1e-9 N/m.
-Problem straight_bar() {
-  Problem problem;
-  problem.cable.length_m = 1.0;
-  problem.cable.weight_n_per_m = 1e-9;
-  problem.cable.axial_stiffness_n = 10.0;
-  problem.cable.mass_kg_per_m = 1.0;
-  problem.supports.b_m = Vec2(1.1, 0.0);
-  return problem;
 }
 
 // Linear interpolation of sin between nodes: (pi h)^2 / 8 ~ 2e-6 at h = 1/800; tension at the end

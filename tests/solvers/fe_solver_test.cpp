@@ -30,9 +30,12 @@
 #include "catena/solvers/solver_registry.hpp"
 #include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
+#include "solvers/fe_test_support.hpp"
 
 namespace catena {
 namespace {
+
+using catena::testing::straight_bar;
 
 using catena::testing::relative_error;
 
@@ -99,18 +102,6 @@ TEST(FeSolver, ObservedOrderIsReportedWhenAsked) {
     found = found || note.find("observed order of the unextrapolated frequencies from N = 200, 400, 800") !=
                          std::string::npos;
   EXPECT_TRUE(found) << solved.output.inplane->summary.full_report();
-}
-
-// A straight bar: L = 1 m, EA = 10 N, m = 1 kg/m, stretched to 1.1 m (T = 1 N), weight 1e-9 N/m.
-Problem straight_bar() {
-  Problem problem;
-  problem.cable.length_m = 1.0;
-  problem.cable.weight_n_per_m = 1e-9;
-  problem.cable.axial_stiffness_n = 10.0;
-  problem.cable.mass_kg_per_m = 1.0;
-  problem.supports.a_m = Vec2(0.0, 0.0);
-  problem.supports.b_m = Vec2(1.1, 0.0);
-  return problem;
 }
 
 // Richardson leaves (n pi / 2N)^4 / 480 ~ 1e-12 for the axial modes; the weight couples them to

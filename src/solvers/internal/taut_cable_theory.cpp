@@ -2,6 +2,9 @@
 // the asymptotic and airy solvers (see taut_cable_theory.hpp).
 #include "solvers/internal/taut_cable_theory.hpp"
 
+#include "catena/core/error.hpp"
+#include <fmt/format.h>
+
 #include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
 
@@ -85,6 +88,13 @@ std::vector<double> eq21_root_k_ls(int count, double eps, double phi_rad, double
 
 double first_axial_mode_k_l(double eps, double phi_rad, double lambda2, double mass_ratio) {
   return first_axial_k_l(eps, phi_rad, lambda2, mass_ratio);
+}
+
+void require_warning_below_max_eps(const std::string& solver, double eps_warning_threshold, double max_eps) {
+  if (eps_warning_threshold > max_eps) {
+    throw InvalidInput(fmt::format("[solvers.{}].eps_warning_threshold = {}: must be <= max_eps = {}",
+                                   solver, eps_warning_threshold, max_eps));
+  }
 }
 
 }  // namespace catena::internal

@@ -17,6 +17,7 @@
 #include "catena/solvers/solve_request.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "solvers/internal/knob_table.hpp"
 
 namespace catena::internal {
 
@@ -25,6 +26,21 @@ namespace catena::internal {
 /// (model error e0/2) and do not apply above kMaxStaticStrain.
 double static_strain(const Problem& problem, const DimensionlessGroups& groups);
 inline constexpr double kMaxStaticStrain = 0.1;
+
+/// The knobs both analytic solvers declare alike: the eps of a validity warning, the eps above
+/// which they decline, and the Gauss-Legendre panels of a travel-time integral (`what`).
+template <class Options>
+std::vector<KnobBinding<Options>> taut_theory_knobs(const std::string& what) {
+  return {real_knob("eps_warning_threshold", &Options::eps_warning_threshold, Range::open_closed(0.0, 10.0),
+                    "eps above which a validity warning is given (at most max_eps)"),
+          real_knob("max_eps", &Options::max_eps, Range::open_closed(0.0, 10.0),
+                    "eps above which the solver declines"),
+          integer_knob("quadrature_panels", &Options::quadrature_panels, Range::closed(1, 1000),
+                       "panels of 20-point Gauss-Legendre for " + what)};
+}
+
+/// Throws InvalidInput naming `[solvers.<solver>].eps_warning_threshold` unless it is <= max_eps.
+void require_warning_below_max_eps(const std::string& solver, double eps_warning_threshold, double max_eps);
 
 /// WKB out-of-plane shape (P M)^(-1/4) sin(omega int_0^s sqrt(M/P) ds) with P = T/(1+e), at the
 /// stations [m] (not normalised).
