@@ -1,16 +1,14 @@
 // Statics of the elastic catenary (docs/physics.md).
 // Compared: the Newton solution against its own closure equations, against the inextensible
-// catenary (EA -> inf, observed rate), against Turchetto's touchdown form (Turchetto 2016; docs/references.md), and against
-// itself after rescaling units. Expected values are properties of the exact solution, not numbers
-// copied from a run.
+// catenary (EA -> inf, observed rate), and against itself after rescaling units. Expected values
+// are properties of the exact solution, not numbers copied from a run. Turchetto's touchdown form
+// is tested in touchdown_catenary_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "catena/core/error.hpp"
 #include "catena/statics/elastic_catenary.hpp"
-#include "catena/statics/touchdown_catenary.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -153,51 +151,6 @@ TEST(ElasticCatenary, StretchedLengthMatchesIntegralOfStrain) {
     sum += weight * (1.0 + s.strain(i * h));
   }
   EXPECT_LT(relative_error(s.stretched_length_m(L), sum * h / 3.0), 1e-12);
-}
-
-// --- Turchetto's touchdown form (Turchetto 2016; docs/references.md) against the general two-support solver ---
-
-TEST(TouchdownCatenary, AgreesWithGeneralSolverFromLowestPoint) {
-  // A line from its lowest point (V_A = 0) to the fairlead: the general solver given the same end
-  // points must find H = T_H and V_A = 0, and the same shape and tensions, to 1e-10.
-  for (double ea : {5e8, 1e7, kInfinity}) {
-    CableProperties cable{1.0, 1000.0, ea, 120.0, 80.0};
-    const TouchdownLine line = touchdown_from_depth_and_tension(cable, 300.0, 7.5e5);
-    Problem p;
-    p.cable = cable;
-    p.cable.length_m = line.suspended_length_m;
-    p.supports.b_m = Vec2(line.horizontal_reach_m, line.depth_m);
-    const StaticSolution s = solve_statics(p);
-    EXPECT_LT(relative_error(s.horizontal_force_n(), line.horizontal_tension_n), 1e-10) << "EA " << ea;
-    EXPECT_LT(std::abs(s.vertical_force_a_n()) / line.horizontal_tension_n, 1e-10) << "EA " << ea;
-    EXPECT_LT(relative_error(s.tension_n(p.cable.length_m), line.fairlead_tension_n), 1e-10);
-    EXPECT_LT(relative_error(s.angle_rad(p.cable.length_m), line.fairlead_angle_rad), 1e-10);
-    EXPECT_LT(relative_error(s.stretched_length_m(p.cable.length_m), line.suspended_stretched_length_m), 1e-10);
-  }
-}
-
-TEST(TouchdownCatenary, EquationOneTenHolds) {
-  // (1.10): depth = y(theta_max) - y(0), checked with y from (1.8) written out independently.
-  CableProperties cable{1.0, 800.0, 2e8, 100.0, 0.0};
-  const double depth = 150.0, T_H = 4e5;
-  const TouchdownLine line = touchdown_from_depth_and_tension(cable, depth, T_H);
-  const double c = T_H / 800.0, k = T_H / 2e8, sec = 1.0 / std::cos(line.fairlead_angle_rad);
-  const double y_top = c * sec * (1.0 + 0.5 * k * sec), y_bottom = c * (1.0 + 0.5 * k);
-  EXPECT_LT(relative_error(y_top - y_bottom, depth), 1e-12);
-}
-
-TEST(TouchdownCatenary, InverseFromReachRecoversTension) {
-  CableProperties cable{1.0, 1000.0, 5e8, 120.0, 0.0};
-  const TouchdownLine forward = touchdown_from_depth_and_tension(cable, 300.0, 7.5e5);
-  const TouchdownLine inverse = touchdown_from_depth_and_reach(cable, 300.0, forward.horizontal_reach_m);
-  EXPECT_LT(relative_error(inverse.horizontal_tension_n, 7.5e5), 1e-12);
-}
-
-TEST(TouchdownCatenary, RejectsNonPositiveDepthAndTension) {
-  CableProperties cable{1.0, 1000.0, 5e8, 120.0, 0.0};
-  EXPECT_THROW(touchdown_from_depth_and_tension(cable, 0.0, 1e5), InvalidInput);
-  EXPECT_THROW(touchdown_from_depth_and_tension(cable, 100.0, -1.0), InvalidInput);
-  EXPECT_THROW(touchdown_from_depth_and_reach(cable, 100.0, std::nan("")), InvalidInput);
 }
 
 }  // namespace
