@@ -13,7 +13,6 @@
 #include "catena/io/json_writer.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/io/tolerance_reader.hpp"
-#include "io/report/report_data.hpp"
 
 namespace catena {
 namespace {
@@ -60,23 +59,6 @@ TEST(ReportWriter, WritesMarkdownHtmlAndDataTables) {
   EXPECT_GT(*frequencies.number(0, "omega_rad_s"), 0.0);
   const CsvTable checks = read_csv_table(files.data_dir / "checks.csv");
   EXPECT_FALSE(checks.rows.empty());
-}
-
-TEST(ReportWriter, TimeToAccuracyKeepsTheFastestSettingPerTarget) {
-  const fs::path csv = fs::temp_directory_path() / "catena_report_timing.csv";
-  std::ofstream(csv) << "# test\nscene,solver,setting,time_s,max_rel_error,status\n"
-                        "\"case, one\",fe,N=10,1e-3,1e-4,converged\n"
-                        "\"case, one\",fe,N=20,2e-3,1e-7,converged\n"
-                        "\"case, one\",fe,N=5,5e-4,1e-2,converged\n"
-                        "\"case, one\",airy,-,1e-4,nan,not-applicable\n";
-  const internal::TimeToAccuracy timing = internal::read_time_to_accuracy(csv);
-  ASSERT_EQ(timing.cases, std::vector<std::string>{"case, one"});
-  const auto& fe = timing.best_time_s.at("case, one").at("fe");
-  EXPECT_EQ(fe.at(1e-3), 1e-3);  // N=10 reaches 1e-3 and is faster than N=20
-  EXPECT_EQ(fe.at(1e-6), 2e-3);
-  EXPECT_FALSE(fe.count(1e-9));
-  EXPECT_FALSE(timing.best_time_s.at("case, one").count("airy"));
-  EXPECT_TRUE(internal::read_time_to_accuracy("/nonexistent.csv").cases.empty());
 }
 
 TEST(ReportWriter, BadResultsFileIsAParseError) {
