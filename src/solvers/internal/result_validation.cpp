@@ -34,7 +34,10 @@ std::optional<std::string> mode_violation(const Mode& mode, std::size_t position
   if (!std::isfinite(mode.frequency_hz) || !std::isfinite(mode.k_l_over_pi) ||
       (mode.gale_ratio && !std::isfinite(*mode.gale_ratio)))
     return fmt::format("mode {}: a frequency unit conversion of omega = {} rad/s is not finite", mode.index, omega);
-  if (previous && !(omega > previous->omega_rad_s))
+  // Within a multiple root the solver proved, the modes share one frequency.
+  const bool proved_multiple = previous && mode.multiplicity > 1 && previous->multiplicity > 1 &&
+                               omega == previous->omega_rad_s;
+  if (previous && !(omega > previous->omega_rad_s) && !proved_multiple)
     return fmt::format("mode {}: omega = {:.12g} rad/s is not above mode {} ({:.12g} rad/s): frequencies must be "
                        "strictly ascending",
                        mode.index, omega, previous->index, previous->omega_rad_s);
@@ -112,21 +115,27 @@ void validate_modal_result(ModalResult& result, int requested) {
   }
 }
 
+double amplitude_mantissa(double amplitude_m) {
+  int exponent = 0;
+  return std::frexp(amplitude_m, &exponent);
+}
+
 void scale_forced_outcome(ForcedOutcome& outcome, double amplitude_m) {
+  int exponent = 0;
+  const double mantissa = std::frexp(amplitude_m, &exponent);
+  const auto scale = [exponent](double x) { return std::ldexp(x, exponent); };
   int overflowed = 0;
   for (ForcedResponse& response : outcome.responses) {
     const bool was_finite = response_finite(response);
-    const double unit_tension = response.max_abs_tension_n;
-    response.u *= amplitude_m;
-    response.w *= amplitude_m;
-    response.v *= amplitude_m;
-    response.tension_n *= amplitude_m;
-    response.max_abs_tension_n *= amplitude_m;
+    const double per_metre = response.max_abs_tension_n / mantissa;
+    for (Vector* values : {&response.u, &response.w, &response.v, &response.tension_n})
+      *values = values->unaryExpr(scale);
+    response.max_abs_tension_n = scale(response.max_abs_tension_n);
     if (!was_finite || response_finite(response)) continue;
     ++overflowed;
     clear_response(response, fmt::format("the response to amplitude {:.6g} m overflows double precision "
                                          "(max |tau| = {:.6g} N per metre of amplitude): not representable",
-                                         amplitude_m, unit_tension));
+                                         amplitude_m, per_metre));
     outcome.summary.warnings.push_back(fmt::format("forced response at {:.10g} rad/s: {}", response.omega_rad_s,
                                                    response.diagnostic));
   }

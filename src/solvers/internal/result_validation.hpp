@@ -7,8 +7,9 @@
 /// Modes of one plane, in the order returned:
 ///   - index = position + 1 (1-based, lowest first);
 ///   - omega finite and > 0, frequency_hz and k_l_over_pi finite;
-///   - strictly ascending: no solver proves the multiplicity of a root, so two equal frequencies
-///     are read as one root returned twice (and another one missing);
+///   - strictly ascending, except equal within a multiple root whose multiplicity the solver
+///     proved (Mode::multiplicity > 1 on both); any other tie is read as one root returned twice
+///     (and another one missing);
 ///   - relative_error_estimate finite and >= 0, or exactly -1 ("none");
 ///   - every shape, tension and modal-mass value finite;
 ///   - no more modes than asked;
@@ -34,9 +35,14 @@ namespace catena::internal {
 /// Applies the mode rules above to `result`, asked for `requested` modes.
 void validate_modal_result(ModalResult& result, int requested);
 
-/// The response of the linear model to amplitude A is A times its response to a unit amplitude:
-/// the driver asks the solvers for the unit response and this scales it (displacements and
-/// tension, not the stations or the relative error). A response whose scaled values overflow
+/// The response of the linear model to amplitude A is A times its response to a unit amplitude.
+/// The driver asks the solvers for the mantissa m in [0.5, 1) of A = m 2^e (so nothing overflows in
+/// a solve) and scale_forced_outcome() multiplies by 2^e, which is exact in binary floating point:
+/// the results are bit for bit those of a solve at A whenever that solve does not overflow.
+double amplitude_mantissa(double amplitude_m);
+
+/// Scales `outcome`, solved for amplitude_mantissa(amplitude_m), to amplitude_m (displacements and
+/// tension; not the stations or the relative error). A response whose scaled values overflow
 /// double precision gets a diagnostic naming the amplitude (its arrays cleared) and the forced
 /// part becomes NoConvergence.
 void scale_forced_outcome(ForcedOutcome& outcome, double amplitude_m);

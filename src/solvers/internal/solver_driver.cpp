@@ -38,9 +38,10 @@ void run_parts(const SolveContext& context, SolverNumerics& numerics, SolverOutp
   }
   if (request.forced) {
     const auto start = Clock::now();
-    // The model is linear in the amplitude: solved for 1 m, scaled here (result_validation.hpp).
+    // The model is linear in the amplitude: solved for its mantissa, scaled exactly by a power of
+    // two here, so that no amplitude overflows a solve (result_validation.hpp).
     ForcedRequest unit = *request.forced;
-    unit.amplitude_m = 1.0;
+    unit.amplitude_m = amplitude_mantissa(request.forced->amplitude_m);
     forced = numerics.forced(unit);
     scale_forced_outcome(*forced, request.forced->amplitude_m);
     validate_forced_outcome(*forced);

@@ -89,6 +89,20 @@ TEST(ValidateModalResult, EachViolatedPropertyIsNamedAndTheValidPrefixKept) {
   for (const Violation& violation : violations) expect_rejected(violation);
 }
 
+TEST(ValidateModalResult, EqualFrequenciesAreAcceptedOnlyWithinAProvedMultipleRoot) {
+  ModalResult result = valid_result(4);
+  result.modes[2].omega_rad_s = 2.0;
+  result.modes[1].multiplicity = result.modes[2].multiplicity = 2;
+  validate_modal_result(result, 4);
+  EXPECT_EQ(result.summary.termination, Termination::Converged) << result.summary.message;
+  EXPECT_EQ(result.modes.size(), 4u);
+  ModalResult one_sided = valid_result(4);
+  one_sided.modes[2].omega_rad_s = 2.0;
+  one_sided.modes[2].multiplicity = 2;
+  validate_modal_result(one_sided, 4);
+  EXPECT_EQ(one_sided.modes.size(), 2u);
+}
+
 TEST(ValidateModalResult, NoneAsAnEstimateIsAccepted) {
   ModalResult result = valid_result(3);
   result.modes[1].relative_error_estimate = -1.0;
@@ -143,20 +157,25 @@ ForcedOutcome unit_outcome(double unit_tension_n) {
   return outcome;
 }
 
-TEST(ScaleForcedOutcome, ScalesDisplacementsAndTensionNotStationsOrTheRelativeError) {
-  ForcedOutcome outcome = unit_outcome(4.0);
-  scale_forced_outcome(outcome, 0.25);
+TEST(ScaleForcedOutcome, ScalesByThePowerOfTwoLeftOutOfTheMantissa) {
+  // 0.75 m = 0.75 x 2^0, 3 m = 0.75 x 2^2: the response at 0.75 scaled by 4, exactly.
+  EXPECT_EQ(amplitude_mantissa(0.75), 0.75);
+  EXPECT_EQ(amplitude_mantissa(3.0), 0.75);
+  EXPECT_EQ(amplitude_mantissa(0.01), 0.64);
+  ForcedOutcome outcome = unit_outcome(0.3);
+  scale_forced_outcome(outcome, 3.0);
   const ForcedResponse& response = outcome.responses[0];
-  EXPECT_EQ(response.max_abs_tension_n, 1.0);
-  EXPECT_EQ(response.tension_n[1], 1.0);
-  EXPECT_EQ(response.u[0], 0.125);
-  EXPECT_EQ(response.w[2], 0.25);
+  EXPECT_EQ(response.max_abs_tension_n, 1.2);
+  EXPECT_EQ(response.tension_n[1], 1.2);
+  EXPECT_EQ(response.u[0], 2.0);
+  EXPECT_EQ(response.w[2], 4.0);
   EXPECT_EQ(response.s_m[2], 2.0);
   EXPECT_EQ(response.relative_error_estimate, 1e-8);
   EXPECT_EQ(outcome.summary.termination, Termination::Converged);
 }
 
 TEST(ScaleForcedOutcome, AnOverflowBecomesADiagnosticNamingTheAmplitude) {
+  // 1e308 = 0.5563 x 2^1024: a response of 10 N at the mantissa is 1.8e309 N.
   ForcedOutcome outcome = unit_outcome(10.0);
   scale_forced_outcome(outcome, 1e308);
   const ForcedResponse& response = outcome.responses[0];
@@ -165,11 +184,12 @@ TEST(ScaleForcedOutcome, AnOverflowBecomesADiagnosticNamingTheAmplitude) {
   EXPECT_EQ(response.max_abs_tension_n, 0.0);
   EXPECT_EQ(response.s_m.size(), 3);
   EXPECT_EQ(outcome.summary.termination, Termination::NoConvergence);
-  // 1e308 times a response below 1.7 is still representable.
-  ForcedOutcome small = unit_outcome(1.5);
+  // 0.5 N and 0.5 m at the mantissa are still representable: 9.0e307.
+  ForcedOutcome small = unit_outcome(0.5);
+  small.responses[0].w.setConstant(0.5);
   scale_forced_outcome(small, 1e308);
   EXPECT_TRUE(small.responses[0].diagnostic.empty());
-  EXPECT_DOUBLE_EQ(small.responses[0].max_abs_tension_n, 1.5e308);
+  EXPECT_DOUBLE_EQ(small.responses[0].max_abs_tension_n, 0.5 / amplitude_mantissa(1e308) * 1e308);
 }
 
 TEST(ValidateForcedOutcome, ASilentNonFiniteResponseGetsADiagnostic) {

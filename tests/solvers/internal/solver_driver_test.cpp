@@ -218,7 +218,7 @@ TEST_F(DriveSolver, AnInvalidFirstModeFailsThePlane) {
   EXPECT_EQ(output.summary.termination, Termination::NumericalFailure);
 }
 
-TEST_F(DriveSolver, ForcedResponseIsSolvedForUnitAmplitudeAndScaled) {
+TEST_F(DriveSolver, ForcedResponseIsSolvedForTheAmplitudesMantissaAndScaled) {
   ForcedRequest forced;
   forced.amplitude_m = 0.02;
   forced.omegas_rad_s = {0.5, 1.0};
@@ -226,7 +226,7 @@ TEST_F(DriveSolver, ForcedResponseIsSolvedForUnitAmplitudeAndScaled) {
   ScriptedNumerics numerics;
   numerics.unit_tension_n = 3.0;
   const SolverOutput output = drive(numerics);
-  EXPECT_EQ(numerics.amplitude_seen_m, 1.0);
+  EXPECT_EQ(numerics.amplitude_seen_m, 0.64);  // 0.02 = 0.64 / 32: the mantissa, then scaled by 2^-5
   ASSERT_EQ(output.forced.size(), 2u);
   EXPECT_DOUBLE_EQ(output.forced[0].max_abs_tension_n, 0.06);
   EXPECT_DOUBLE_EQ(output.forced[0].w[1], 0.02);
