@@ -29,7 +29,7 @@ const KnobTable<FeSolverOptions>& fe_knobs() {
   using O = FeSolverOptions;
   static const KnobTable<O> table(
       "fe", {integer_knob("elements", &O::elements, Range::closed(2, 5e7),
-                          "number of bar elements N (the coarse mesh with Richardson)"),
+                          "number of bar elements N (the coarse mesh with Richardson); resolves up to N/2 modes per plane"),
              flag_knob("richardson", &O::richardson, "solve N and 2N and extrapolate (order 2 -> 4)"),
              real_knob("kappa", &O::kappa, Range::open_closed(0.0, 1e-2),
                        "inextensible cables: penalty H/EA (and 2 kappa, extrapolated to 0)"),
