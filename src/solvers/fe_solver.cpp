@@ -29,7 +29,7 @@ const KnobTable<FeSolverOptions>& fe_knobs() {
   using O = FeSolverOptions;
   static const KnobTable<O> table(
       "fe", {integer_knob("elements", &O::elements, Range::closed(2, 5e7),
-                          "number of bar elements N (the coarse mesh with Richardson)"),
+                          "number of bar elements N (the coarse mesh with Richardson); resolves up to N/2 modes per plane"),
              flag_knob("richardson", &O::richardson, "solve N and 2N and extrapolate (order 2 -> 4)"),
              real_knob("kappa", &O::kappa, Range::open_closed(0.0, 1e-2),
                        "inextensible cables: penalty H/EA (and 2 kappa, extrapolated to 0)"),
@@ -67,6 +67,7 @@ class FeNumerics final : public SolverNumerics {
         plan_(make_fe_plan(context.problem, context.statics, options, context.request.inplane_modes,
                            context.request.outofplane_modes)) {}
 
+  std::optional<std::string> not_applicable() const override { return fe_penalty_not_applicable(plan_); }
   void describe(SolverSummary& summary) const override { describe_fe_run(plan_, summary); }
   std::optional<Outcome> prepare() override;
   ModalResult modes(Plane plane, int count) override;
@@ -91,18 +92,20 @@ class FeNumerics final : public SolverNumerics {
   std::map<Plane, std::vector<FeNaturalFrequency>> naturals_;
 };
 
-// Bad input: every requested mode must exist on the coarsest mesh that feeds the result.
+// Bad input: every requested mode must be resolved by the coarsest mesh that feeds the result
+// (fe_resolvable_modes: at least 4 elements per wavelength).
 void FeNumerics::require_modes_fit() const {
   const SolveRequest& request = context_.request;
   const int N = options_.elements;
+  const int coarsest = plan_.meshes.front();
   for (const auto& [plane, modes] : {std::pair{Plane::InPlane, request.inplane_modes},
                                      std::pair{Plane::OutOfPlane, request.outofplane_modes}}) {
-    if (modes > 0 && fe_unknowns(plane, N) < modes) {
+    if (modes > 0 && fe_resolvable_modes(coarsest) < modes) {
       throw InvalidInput(fmt::format(
-          "[solvers.fe].elements = {}: too few for {} {} modes (a chain of {} elements has {} {} "
-          "unknowns). Violated constraint: {} (elements - 1) >= modes.",
-          N, modes, to_string(plane), N, fe_unknowns(plane, N), to_string(plane),
-          plane == Plane::InPlane ? 2 : 1));
+          "[solvers.fe].elements = {}: too few for {} {} modes (the coarsest mesh, {} elements, resolves at most "
+          "{} modes per plane: at least 4 elements per wavelength, see docs/methods/fe.md). Violated "
+          "constraint: modes <= elements / 2, i.e. elements >= {}.",
+          N, modes, to_string(plane), coarsest, fe_resolvable_modes(coarsest), 2 * modes));
     }
   }
 }

@@ -47,10 +47,17 @@ void SolveRequest::validate() const {
       }
     }
     if (forced->direction == ForcingDirection::GivenVector &&
-        (!forced->vector.allFinite() || forced->vector.norm() == 0.0)) {
+        (!forced->vector.allFinite() || forced->unit_vector().isZero(0.0))) {
       throw InvalidInput("Invalid ForcedRequest::vector: must be finite and non-zero");
     }
   }
+}
+
+Vec2 ForcedRequest::unit_vector() const {
+  const double largest = vector.cwiseAbs().maxCoeff();
+  if (!std::isfinite(largest) || largest == 0.0) return Vec2::Zero();
+  const Vec2 scaled = vector / largest;  // components in [-1, 1], one of them +-1
+  return scaled / scaled.norm();
 }
 
 Vector SolveRequest::stations_m(double length_m) const {

@@ -3,6 +3,8 @@
 // the built binary on scenes written to a temporary directory.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +12,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 namespace {
 
@@ -169,3 +172,82 @@ TEST(Cli, VerifyReportsEveryBadSceneAndExitsTwo) {
 }
 
 }  // namespace
+
+// The SI mooring line with 431 in-plane modes on fe's default 400 elements used to give mode 1 =
+// -0.525 rad/s, "converged". The request exceeds what the coarsest mesh resolves: bad input (exit
+// 2) naming the knob and the count.
+TEST(Cli, FeRefusesMoreModesThanItsMeshResolves) {
+  std::string text = kGood + "[request]\ninplane_modes = 431\n";
+  const fs::path scene = write_scene("too-many-modes.toml", text);
+  const CliRun run = run_cli("solve " + scene.string() + " --solver fe");
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("[solvers.fe].elements = 400: too few for 431 in-plane modes"), std::string::npos)
+      << run.output;
+}
+
+const std::string kForcedGale = R"(
+[gale]
+h_over_b = 0.0
+sag_param = 0.70
+[request]
+inplane_modes = 0
+[request.forced]
+frequencies = [0.1, 1.0]
+)";
+
+struct Response {
+  nlohmann::json max_abs_tension_n;  // a number, or null
+  std::string diagnostic;
+};
+
+// The forced responses of fe, then shooting, from `catena solve --json`.
+std::vector<Response> forced_responses(const std::string& name, const std::string& text, int& exit_code) {
+  const fs::path scene = write_scene(name + ".toml", text);
+  const fs::path json = scene.parent_path() / (name + ".json");
+  const CliRun run = run_cli("solve " + scene.string() + " --solver fe --solver shooting -q --json " + json.string());
+  exit_code = run.exit_code;
+  const nlohmann::json results = nlohmann::json::parse(std::ifstream(json));
+  std::vector<Response> responses;
+  for (const char* solver : {"fe", "shooting"})
+    for (const auto& response : results["scenes"][0]["solvers"][solver]["forced"])
+      responses.push_back({response["max_abs_tension_n"], response["diagnostic"].get<std::string>()});
+  return responses;
+}
+
+// direction = [1e308, 1e308] overflowed its norm: both solvers answered max|tau| = 0, "converged".
+// It is the direction [1, 1]: the same responses.
+TEST(Cli, AHugeForcingDirectionVectorIsNormalisedWithoutOverflow) {
+  int huge_exit = -1, unit_exit = -1;
+  const std::vector<Response> huge =
+      forced_responses("direction-huge", kForcedGale + "direction = [1e308, 1e308]\namplitude = 0.01\n", huge_exit);
+  const std::vector<Response> unit =
+      forced_responses("direction-unit", kForcedGale + "direction = [1.0, 1.0]\namplitude = 0.01\n", unit_exit);
+  EXPECT_EQ(huge_exit, 0);
+  EXPECT_EQ(unit_exit, 0);
+  ASSERT_EQ(huge.size(), 4u);
+  ASSERT_EQ(unit.size(), 4u);
+  for (std::size_t i = 0; i < huge.size(); ++i) {
+    EXPECT_EQ(huge[i].max_abs_tension_n, unit[i].max_abs_tension_n) << "response " << i;
+    EXPECT_GT(huge[i].max_abs_tension_n.get<double>(), 0.0) << "response " << i;
+    EXPECT_EQ(huge[i].diagnostic, "");
+  }
+}
+
+// amplitude = 1e308: shooting returned null without a diagnostic and fe claimed a resonance at
+// 0.1 rad/s. The response is linear in the amplitude: at 0.1 rad/s it is representable (5.9e307 N
+// in both), at 1 rad/s it overflows and says so; never a null without a diagnostic.
+TEST(Cli, AHugeAmplitudeGivesTheScaledResponseOrAnOverflowDiagnostic) {
+  int exit_code = -1;
+  const std::vector<Response> responses =
+      forced_responses("amplitude-huge", kForcedGale + "direction = \"tangential\"\namplitude = 1e308\n", exit_code);
+  EXPECT_EQ(exit_code, 0);
+  ASSERT_EQ(responses.size(), 4u);
+  for (std::size_t i : {0u, 2u}) {
+    EXPECT_EQ(responses[i].diagnostic, "");
+    EXPECT_NEAR(responses[i].max_abs_tension_n.get<double>() / 5.9046e307, 1.0, 1e-4);
+  }
+  for (std::size_t i : {1u, 3u})
+    EXPECT_NE(responses[i].diagnostic.find("overflows double precision"), std::string::npos) << responses[i].diagnostic;
+  for (const Response& response : responses)
+    EXPECT_TRUE(response.max_abs_tension_n.is_number() || !response.diagnostic.empty());
+}

@@ -321,17 +321,21 @@ TEST(FeSolverOptions, RejectsBadValuesAndTooManyModes) {
   expect_invalid(run({.elements = 1}, 1, 0), "elements");
   expect_invalid(run({.elements = 1000, .kappa = 0.0}, 1, 0), "kappa");
   expect_invalid(run({.elements = 1000, .kappa = -1e-6}, 1, 0), "kappa");
-  expect_invalid(run({.elements = 3}, 5, 0), "too few for 5 in-plane modes");
-  expect_invalid(run({.elements = 5}, 0, 5), "too few for 5 out-of-plane modes");
-  // The largest mode count that fits is accepted (dense path for tiny problems).
-  const SolverOutput tiny = solve_fe(problem, statics, groups, modes_request(4, 2), {.elements = 3});
+  // A mesh of N elements resolves N / 2 modes per plane (fe_resolvable_modes).
+  expect_invalid(run({.elements = 3}, 2, 0), "too few for 2 in-plane modes");
+  expect_invalid(run({.elements = 9}, 5, 0), "too few for 5 in-plane modes");
+  expect_invalid(run({.elements = 9}, 0, 5), "too few for 5 out-of-plane modes");
+  // The largest mode count the mesh resolves is accepted (dense path for tiny problems).
+  const SolverOutput tiny = solve_fe(problem, statics, groups, modes_request(4, 4), {.elements = 8});
   EXPECT_EQ(tiny.inplane->modes.size(), 4u);
-  EXPECT_EQ(tiny.outofplane->modes.size(), 2u);
+  EXPECT_EQ(tiny.outofplane->modes.size(), 4u);
+  EXPECT_EQ(tiny.summary.termination, Termination::Converged) << tiny.summary.full_report();
   // Too coarse for the N/2 error-estimate mesh and for an observed order: still a clean answer.
-  const SolverOutput coarse = solve_fe(problem, statics, groups, modes_request(3, 0),
-                                       {.elements = 3, .richardson = false, .observed_order = true});
-  ASSERT_EQ(coarse.inplane->modes.size(), 3u);
+  const SolverOutput coarse = solve_fe(problem, statics, groups, modes_request(2, 0),
+                                       {.elements = 4, .richardson = false, .observed_order = true});
+  ASSERT_EQ(coarse.inplane->modes.size(), 2u);
   EXPECT_TRUE(std::isfinite(coarse.inplane->modes[0].omega_rad_s));
+  EXPECT_EQ(coarse.inplane->modes[0].relative_error_estimate, -1.0);  // no estimate mesh
 }
 
 TEST(FeSolverOptions, RegistryKnobsAreValidated) {
@@ -383,6 +387,50 @@ TEST(FeSolverOptions, TooFewElementsIsInvalidInputThroughTheRegistry) {
   const SolveRequest request = modes_request(0, 8);
   const SolveContext context{solved.problem, solved.statics, solved.groups, request};
   expect_invalid([&] { run_solver(*entry, context, {{"elements", 5L}}); }, "too few for 8 out-of-plane modes");
+}
+
+// Gale's xi = -0.5..0.5 with 400 in-plane modes on 400 elements (Richardson: 400 and 800) used to
+// return a negative frequency (a mode beyond the coarse mesh's transverse branch paired with an
+// unrelated mode and extrapolated), sorted first and called converged. A request the coarsest mesh
+// cannot resolve is bad input naming the knob and the count; the largest count it resolves gives
+// positive, ascending, counted frequencies.
+TEST(FeSolverOptions, ModesBeyondWhatTheCoarsestMeshResolvesAreRefused) {
+  const SolverEntry* entry = find_solver("fe");
+  ASSERT_NE(entry, nullptr);
+  const Solved solved = catena::testing::prepare(make_gale_xi_problem(-0.5, 0.5));
+  for (const auto& [inplane, knobs] : {std::pair{400, SolverKnobs{}}, std::pair{600, SolverKnobs{}},
+                                       std::pair{201, SolverKnobs{{"richardson", false}}}}) {
+    const SolveRequest request = modes_request(inplane, 0);
+    const SolveContext context{solved.problem, solved.statics, solved.groups, request};
+    expect_invalid([&] { run_solver(*entry, context, knobs); },
+                   "[solvers.fe].elements = 400: too few for " + std::to_string(inplane) + " in-plane modes");
+  }
+  const Solved largest = solve(make_gale_xi_problem(-0.5, 0.5), modes_request(200, 0), {.elements = 400});
+  ASSERT_EQ(largest.output.summary.termination, Termination::Converged) << largest.output.summary.full_report();
+  const ModalResult& modes = *largest.output.inplane;
+  ASSERT_EQ(modes.modes.size(), 200u);
+  EXPECT_EQ(modes.proved_count_below_top, 200);
+  for (std::size_t i = 0; i < modes.modes.size(); ++i) {
+    EXPECT_GT(modes.modes[i].omega_rad_s, i ? modes.modes[i - 1].omega_rad_s : 0.0) << "mode " << i + 1;
+    EXPECT_GE(modes.modes[i].relative_error_estimate, 0.0) << "mode " << i + 1;
+  }
+}
+
+// An inextensible cable with chord = L (1 - 1e-12): the penalty strain T/EA = 2 kappa = 2e-6 is
+// 2e6 times the slack, so the penalised chain sags far more than the cable and fe's frequencies
+// came out 9x too low (mode 1 out of plane 157 rad/s against pi sqrt(H/m)/L = 1419.38 rad/s) yet
+// "converged". fe declines with the reason; a cable with slack 1e-3 (ratio 2e-3) is still solved.
+TEST(FeSolver, DeclinesAnInextensibleCableTooCloseToTautForItsPenalty) {
+  Problem problem;
+  problem.supports.b_m = Vec2(1.0 - 1e-12, 0.0);
+  const Solved taut = solve(problem, modes_request(2, 2), {});
+  EXPECT_EQ(taut.output.summary.termination, Termination::NotApplicable);
+  EXPECT_NE(taut.output.summary.message.find("too close to taut for the penalty"), std::string::npos)
+      << taut.output.summary.message;
+  EXPECT_FALSE(taut.output.inplane.has_value());
+  problem.supports.b_m = Vec2(1.0 - 1e-3, 0.0);
+  const Solved slack = solve(problem, modes_request(2, 2), {});
+  EXPECT_EQ(slack.output.summary.termination, Termination::Converged) << slack.output.summary.full_report();
 }
 
 // EA/T0 = lambda^2 / eps^2 = 1e8 on 8000 elements: a rounding floor of ~0.07 relative on mode 1.

@@ -196,6 +196,28 @@ TEST(ShootingSolver, InextensibleGaleProblemsConverge) {
   }
 }
 
+// An inextensible cable with chord = L (1 - 1e-12) (L = 1 m, W0 = 1 N/m, m = 1 kg/m): the true
+// answer. The statics give H = 204126.4030577 N (50-digit bisection of L = 2 (H/W0)
+// sinh(W0 c / 2H) for the double c nearest 1 - 1e-12); the tension varies along the cable by
+// (W0 L / H)^2 / 8 ~ 3e-12 relative, so the cable is a string: out of plane omega_n = n pi
+// sqrt(H/m) / L; in plane Irvine's inextensible limit, antisymmetric kL = 2 n pi and symmetric
+// tan(kL/2) = kL/2 (kL/2 = 4.493409457909064). Sag effects are O(sag/span) = 1e-6 below that.
+// (fe, whose penalty strain is 2e6 times this slack, declines: see fe_solver_test.cpp.)
+TEST(ShootingSolver, NearlyTautInextensibleCableHasTheStringFrequencies) {
+  Problem problem;
+  problem.supports.b_m = Vec2(1.0 - 1e-12, 0.0);
+  const Solved solved = solve(problem, catena::testing::modes_request(2, 2));
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.full_report();
+  const double H = solved.statics.horizontal_force_n();
+  EXPECT_LT(relative_error(H, 204126.4030577217), 1e-9);
+  const double string_omega = kPi * std::sqrt(H);
+  EXPECT_LT(relative_error(solved.output.outofplane->modes[0].omega_rad_s, string_omega), 1e-9);
+  EXPECT_LT(relative_error(solved.output.outofplane->modes[1].omega_rad_s, 2.0 * string_omega), 1e-9);
+  EXPECT_LT(relative_error(solved.output.inplane->modes[0].omega_rad_s, 2.0 * string_omega), 1e-6);
+  EXPECT_LT(relative_error(solved.output.inplane->modes[1].omega_rad_s, 2.0 * 4.493409457909064 / kPi * string_omega),
+            1e-6);
+}
+
 TEST(ShootingSolver, ObservedConvergenceVsRtolIsMonotone) {
   // Error of the first three frequencies of each plane against a run at rtol 1e-14, for rtol
   // 1e-4 ... 1e-12, on a sagging inclined inextensible cable with added mass and on an elastic

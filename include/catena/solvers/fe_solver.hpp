@@ -89,8 +89,8 @@ namespace catena {
 /// Options of the `fe` solver. Scene knobs: `elements`, `richardson`, `kappa`, `observed_order`;
 /// `eigen_tolerance` and `max_restarts` are set through this struct only.
 struct FeSolverOptions {
-  /// Number of bar elements N (the coarse mesh when Richardson is on). In [2, 5e7]; also the number of
-  /// requested modes must fit: in plane 2 (N - 1) - 1 >= modes, out of plane (N - 1) - 1 >= modes.
+  /// Number of bar elements N (the coarse mesh when Richardson is on). In [2, 5e7]; the coarsest
+  /// mesh used resolves at most N / 2 modes per plane (docs/methods/fe.md), more is InvalidInput.
   /// The discretisation error of mode n is about (n pi / 2N)^2 / 6 relative without Richardson.
   int elements = 400;
   /// Solve with N and 2N elements and extrapolate (order 2 -> 4). Without it, the error estimate

@@ -30,6 +30,11 @@ struct Mode {
   std::optional<double> gale_ratio;
   /// Estimated relative error of omega (the solver's own estimate; -1: none).
   double relative_error_estimate = -1.0;
+  /// > 1 when this mode belongs to a multiple root whose multiplicity the solver proved by a
+  /// count (e.g. shooting's conjugate-point count rising by 2 across a bracket narrower than its
+  /// tolerance): the modes of that root share one frequency. Equal frequencies are accepted only
+  /// within such a root.
+  int multiplicity = 1;
 
   /// Present when shapes were asked: stations s [m] and the normalised displacements there.
   Vector s_m;

@@ -34,6 +34,11 @@ struct ForcedRequest {
   double amplitude_m = 0.01;
   /// Forcing frequencies [rad/s], >= 0.
   std::vector<double> omegas_rad_s;
+
+  /// `vector` / |vector|, computed without overflow or underflow (scaled by its larger component
+  /// first: [1e308, 1e308] and [1e-320, 1e-320] give (1, 1) / sqrt 2). Zero for a zero or
+  /// non-finite vector (which validate() rejects). Every solver takes the direction from here.
+  Vec2 unit_vector() const;
 };
 
 /// What to compute.

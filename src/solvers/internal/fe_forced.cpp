@@ -27,7 +27,7 @@ std::pair<Vec2, Vec2> end_displacements(const ForcedRequest& request, const Stat
   switch (request.direction) {
     case ForcingDirection::Tangential: direction = statics.tangent(s_end); break;
     case ForcingDirection::Normal: direction = statics.normal(s_end); break;
-    case ForcingDirection::GivenVector: direction = request.vector.normalized(); break;
+    case ForcingDirection::GivenVector: direction = request.unit_vector(); break;
     case ForcingDirection::OutOfPlane: break;
   }
   const Vec2 d = request.amplitude_m * direction;

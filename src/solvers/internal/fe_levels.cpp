@@ -20,13 +20,12 @@ double seconds_since(Clock::time_point start) {
 }
 
 // The meshes: N and 2N with Richardson; otherwise N alone, with N/2 for the error estimate when it
-// holds the modes asked. observed_order adds one mesh twice as fine as the finest.
+// resolves the modes asked. observed_order adds one mesh twice as fine as the finest.
 void plan_meshes(FePlan& plan, const FeSolverOptions& options, int max_modes_in_plane,
                  int max_modes_out_of_plane) {
   const int N = options.elements;
   auto fits = [&](int elements) {
-    return elements >= 2 && fe_unknowns(Plane::InPlane, elements) >= max_modes_in_plane &&
-           fe_unknowns(Plane::OutOfPlane, elements) >= max_modes_out_of_plane;
+    return elements >= 2 && fe_resolvable_modes(elements) >= std::max(max_modes_in_plane, max_modes_out_of_plane);
   };
   if (options.richardson) {
     plan.meshes = {N, 2 * N};
@@ -47,7 +46,31 @@ void plan_meshes(FePlan& plan, const FeSolverOptions& options, int max_modes_in_
   }
 }
 
+// The penalty's largest strain (at 2 kappa) and the relative slack it competes with.
+void plan_penalty_strain(FePlan& plan, const Problem& problem, const StaticSolution& statics) {
+  const double L = problem.cable.length_m;
+  const Vec2 chord = problem.supports.chord_m();
+  plan.relative_slack = (L - std::hypot(chord.x(), chord.y())) / L;
+  const double largest_tension = std::max(statics.tension_n(0.0), statics.tension_n(L));
+  plan.penalty_strain = largest_tension / plan.axial_stiffness_n.back();
+}
+
 }  // namespace
+
+int fe_resolvable_modes(int elements) { return elements / 2; }
+
+std::optional<std::string> fe_penalty_not_applicable(const FePlan& plan) {
+  if (!plan.inextensible) return std::nullopt;
+  const double ratio = plan.penalty_strain / plan.relative_slack;
+  if (plan.relative_slack > 0.0 && ratio <= kMaxPenaltyStrainOverSlack) return std::nullopt;
+  return fmt::format(
+      "inextensible cable too close to taut for the penalty: the penalty strain T/EA = {:.3g} (at 2 kappa = {:.3g}) "
+      "is not small against the relative slack (L - chord)/L = {:.3g} (ratio {:.3g} > {:g}), so the penalised "
+      "chain's sag and tension are not the inextensible cable's; a kappa below {:.3g} would be needed, where the "
+      "stiff penalty springs' rounding error grows like 1/kappa",
+      plan.penalty_strain, plan.kappas.back(), plan.relative_slack, ratio, kMaxPenaltyStrainOverSlack,
+      plan.kappas.front() * kMaxPenaltyStrainOverSlack / std::max(ratio, 1e-300));
+}
 
 double FePlan::rounding_floor(double t0_n, int mode_number) const {
   const double stiffness_ratio = axial_stiffness_n[0] / std::max(t0_n, 1e-300);
@@ -72,6 +95,7 @@ FePlan make_fe_plan(const Problem& problem,
       reference = std::max(statics.tension_n(0.0), statics.tension_n(problem.cable.length_m));
     plan.kappas = {options.kappa, 2.0 * options.kappa};
     for (double kappa : plan.kappas) plan.axial_stiffness_n.push_back(reference / kappa);
+    plan_penalty_strain(plan, problem, statics);
   } else {
     plan.axial_stiffness_n = {problem.cable.axial_stiffness_n};
   }

@@ -6,6 +6,7 @@
 /// its operators and its lowest eigenpairs (shift-invert, polish, inertia count).
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,26 @@ struct FeTimings {
   double forced_s = 0.0;
 };
 
+/// The most modes per plane a mesh of `elements` elements resolves: elements / 2. The chain's
+/// n-th string mode is omega_n = (2 N c / L) sin(n pi / 2N), relative error 1 - sin(x)/x with
+/// x = n pi / 2N: 10 % at n = N/2 (4 elements per wavelength), where Richardson's O(h^2) model
+/// still holds, but 36 % at n = N, where the coarse mesh aliases the fine mesh's shapes (pairing
+/// across meshes fails) and, for an inextensible cable, where the penalty's axial modes begin.
+/// In plane the index counts both branches, so each branch stays within the bound.
+int fe_resolvable_modes(int elements);
+
+/// The largest penalty strain r = T/EA at 2 kappa, relative to the relative slack
+/// (L - chord) / L, at which the penalised chain stands for an inextensible cable. The penalty
+/// stretches the cable by about T/EA = kappa T/H; the sag, hence the tension and every frequency,
+/// follows the slack that is left, so the penalty's relative effect is about r. Linear
+/// extrapolation in kappa removes the first order; measured on a horizontal inextensible cable
+/// (modes 1-2 in plane, 1 out of plane, against shooting) the error left is about 0.14 r^2
+/// (r = 2e-3: 6e-7, 2e-2: 5e-5, 0.2: 4e-3) and the reported estimate covers it up to r = 0.7, not
+/// at r = 2 (7e-2 and 2e-1 against estimates of 6e-2 and 1e-1) and far from it at r = 2e6
+/// (chord = L (1 - 1e-12): 9x too low). 0.1 keeps a margin of 7 below where the estimate fails;
+/// the suite's inextensible scenes reach r = 1.2e-2.
+constexpr double kMaxPenaltyStrainOverSlack = 0.1;
+
 /// The meshes and penalties of one solve.
 struct FePlan {
   std::vector<int> meshes;  // ascending
@@ -39,6 +60,10 @@ struct FePlan {
   bool inextensible = false;
   std::vector<double> axial_stiffness_n;  // one per penalty (1 value when extensible)
   std::vector<double> kappas;             // the penalties kappa, 2 kappa (inextensible only)
+  /// Inextensible only: the largest end tension over the smaller penalty stiffness (2 kappa),
+  /// and the relative slack (L - |chord|) / L (see kMaxPenaltyStrainOverSlack).
+  double penalty_strain = 0.0;
+  double relative_slack = 0.0;
 
   bool has_coarse() const { return main_coarse >= 0; }
   int finest_elements() const { return meshes[static_cast<std::size_t>(main_fine)]; }
@@ -51,8 +76,12 @@ struct FePlan {
   double rounding_floor(double t0_n, int mode_number) const;
 };
 
+/// Why the penalised chain cannot stand for this inextensible cable (its penalty strain is not
+/// small against the slack); nullopt when it can, or when the cable is extensible.
+std::optional<std::string> fe_penalty_not_applicable(const FePlan& plan);
+
 /// The plan for `options`, with the modes asked per plane (the N/2 estimate mesh is used only
-/// when it holds them).
+/// when it resolves them, fe_resolvable_modes).
 FePlan make_fe_plan(const Problem& problem,
                     const StaticSolution& statics,
                     const FeSolverOptions& options,

@@ -78,7 +78,7 @@ EndDisplacement forced_end_displacement(const ForcedRequest& forced, double sigm
     case ForcingDirection::GivenVector: {
       // Resolved on the end's unit tangent t = (1, sigma)/C and normal n = (-sigma, 1)/C.
       const double C_end = std::sqrt(1.0 + sigma_end * sigma_end);
-      const Vec2 d = forced.vector.normalized() * forced.amplitude_m / a;
+      const Vec2 d = forced.unit_vector() * forced.amplitude_m / a;
       const Vec2 t(1.0 / C_end, sigma_end / C_end), n(-sigma_end / C_end, 1.0 / C_end);
       end.u = d.dot(t);
       end.v = d.dot(n);

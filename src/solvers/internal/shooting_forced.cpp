@@ -30,7 +30,7 @@ Vec2 drive_direction(const ShootingCoefficients& k, const ForcedRequest& forced,
     case ForcingDirection::Normal:
       return k.normal(s_driven);
     default:
-      return forced.vector.normalized();
+      return forced.unit_vector();
   }
 }
 

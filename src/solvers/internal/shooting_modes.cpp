@@ -58,6 +58,7 @@ void ShootingModeBuilder::add_cluster(const std::vector<Root>& cluster, int num_
       mode.index = static_cast<int>(modes.size()) + 1;
       set_mode_frequency(mode, root.omega, groups_);
       mode.relative_error_estimate = root.relative_error;
+      mode.multiplicity = root.multiplicity;
       if (want_profile_ && member < vectors.size()) set_shape(mode, shot, vectors[member++]);
       max_error_ = std::max(max_error_, root.relative_error);
       max_residual_ = std::max(max_residual_, root.residual);

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "catena/core/error.hpp"
+#include "solvers/internal/result_validation.hpp"
 
 namespace catena::internal {
 
@@ -29,6 +30,7 @@ void run_parts(const SolveContext& context, SolverNumerics& numerics, SolverOutp
     if (count <= 0) continue;
     const auto start = Clock::now();
     ModalResult result = numerics.modes(plane, count);
+    validate_modal_result(result, count);
     result.plane = plane;
     result.summary.solver = output.solver;
     result.summary.wall_time_s = seconds_since(start);
@@ -36,7 +38,13 @@ void run_parts(const SolveContext& context, SolverNumerics& numerics, SolverOutp
   }
   if (request.forced) {
     const auto start = Clock::now();
-    forced = numerics.forced(*request.forced);
+    // The model is linear in the amplitude: solved for its mantissa, scaled exactly by a power of
+    // two here, so that no amplitude overflows a solve (result_validation.hpp).
+    ForcedRequest unit = *request.forced;
+    unit.amplitude_m = amplitude_mantissa(request.forced->amplitude_m);
+    forced = numerics.forced(unit);
+    scale_forced_outcome(*forced, request.forced->amplitude_m);
+    validate_forced_outcome(*forced);
     forced->summary.solver = output.solver;
     forced->summary.wall_time_s = seconds_since(start);
     output.forced = std::move(forced->responses);

@@ -7,8 +7,11 @@
 ///   1. validate the request and the problem (InvalidInput propagates: bad input, exit 2);
 ///   2. ask not_applicable(): a reason ends the run as NotApplicable;
 ///   3. prepare(): work shared by the planes; a returned Outcome ends the run with that status;
-///   4. modes(plane, count) for each requested plane (in-plane first), timed per plane;
-///   5. forced(request) when a forced response is asked;
+///   4. modes(plane, count) for each requested plane (in-plane first), timed per plane; each
+///      plane's result validated (result_validation.hpp: a wrong answer is never "converged");
+///   5. forced(request) when a forced response is asked, for the amplitude's mantissa in
+///      [0.5, 1) (the model is linear in it), then scaled exactly to the requested amplitude and
+///      validated;
 ///   6. describe(): the overall resolution, notes and warnings (also after a prepare() Outcome);
 ///   7. combine the parts' summaries by combine_summaries() and time the whole.
 ///

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <functional>
+#include <limits>
 #include <stdexcept>
 
 #include "catena/core/error.hpp"
@@ -67,6 +70,11 @@ class ScriptedNumerics final : public SolverNumerics {
   std::optional<Outcome> prepared;
   bool throw_numerical = false, throw_input = false;
   std::vector<Plane> asked;
+  // Applied to each plane's (valid) result before it is returned.
+  std::function<void(ModalResult&)> corrupt;
+  // The forced response per metre of amplitude at every frequency: max |tau| = this, w = 1 m/m.
+  std::optional<double> unit_tension_n;
+  double amplitude_seen_m = 0.0;
 
   std::optional<std::string> not_applicable() const override { return reason; }
   std::optional<Outcome> prepare() override { return prepared; }
@@ -75,9 +83,31 @@ class ScriptedNumerics final : public SolverNumerics {
     if (throw_numerical) throw std::runtime_error("singular pivot");
     if (throw_input) throw InvalidInput("[solvers.x].k = 0: must be > 0");
     ModalResult result;
-    result.modes.resize(static_cast<std::size_t>(count));
+    for (int i = 1; i <= count; ++i) {
+      Mode mode;
+      mode.index = i;
+      mode.omega_rad_s = i;
+      result.modes.push_back(mode);
+    }
     result.summary = part(Termination::Converged, "ok");
+    if (corrupt) corrupt(result);
     return result;
+  }
+  ForcedOutcome forced(const ForcedRequest& request) override {
+    if (!unit_tension_n) return SolverNumerics::forced(request);
+    amplitude_seen_m = request.amplitude_m;
+    ForcedOutcome outcome;
+    for (double omega : request.omegas_rad_s) {
+      ForcedResponse response;
+      response.omega_rad_s = omega;
+      response.s_m = Vector::LinSpaced(3, 0.0, 1.0);
+      response.w = Vector::Constant(3, request.amplitude_m);
+      response.tension_n = Vector::Constant(3, *unit_tension_n * request.amplitude_m);
+      response.max_abs_tension_n = *unit_tension_n * request.amplitude_m;
+      outcome.responses.push_back(response);
+    }
+    outcome.summary = part(Termination::Converged, "forced ok");
+    return outcome;
   }
 };
 
@@ -160,6 +190,69 @@ TEST_F(DriveSolver, AForcedRequestWithoutAForcedMethodIsReportedNotComputed) {
   EXPECT_EQ(output.summary.termination, Termination::Converged);
   ASSERT_FALSE(output.summary.warnings.empty());
   EXPECT_NE(output.summary.warnings.back().find("forced: "), std::string::npos);
+}
+
+// A wrong answer never leaves the skeleton as "converged": the driver validates every plane.
+TEST_F(DriveSolver, ANegativeFrequencyIsNeverReportedConverged) {
+  ScriptedNumerics numerics;
+  numerics.corrupt = [](ModalResult& result) {
+    if (result.modes.size() == 3) result.modes[2].omega_rad_s = -0.525;
+  };
+  const SolverOutput output = drive(numerics);
+  EXPECT_EQ(output.inplane->summary.termination, Termination::NoConvergence);
+  EXPECT_EQ(output.inplane->modes.size(), 2u);
+  EXPECT_NE(output.inplane->summary.message.find("mode 3"), std::string::npos) << output.inplane->summary.message;
+  EXPECT_EQ(output.outofplane->summary.termination, Termination::Converged);
+  EXPECT_EQ(output.summary.termination, Termination::NoConvergence);
+  EXPECT_NE(output.summary.message.find("not a finite positive frequency"), std::string::npos);
+}
+
+// Sorting a negative frequency first leaves no valid prefix: nothing usable in that plane.
+TEST_F(DriveSolver, AnInvalidFirstModeFailsThePlane) {
+  ScriptedNumerics numerics;
+  numerics.corrupt = [](ModalResult& result) { result.modes[0].omega_rad_s = std::nan(""); };
+  const SolverOutput output = drive(numerics);
+  EXPECT_EQ(output.inplane->summary.termination, Termination::NumericalFailure);
+  EXPECT_TRUE(output.inplane->modes.empty());
+  EXPECT_EQ(output.outofplane->summary.termination, Termination::NumericalFailure);
+  EXPECT_EQ(output.summary.termination, Termination::NumericalFailure);
+}
+
+TEST_F(DriveSolver, ForcedResponseIsSolvedForTheAmplitudesMantissaAndScaled) {
+  ForcedRequest forced;
+  forced.amplitude_m = 0.02;
+  forced.omegas_rad_s = {0.5, 1.0};
+  request.forced = forced;
+  ScriptedNumerics numerics;
+  numerics.unit_tension_n = 3.0;
+  const SolverOutput output = drive(numerics);
+  EXPECT_EQ(numerics.amplitude_seen_m, 0.64);  // 0.02 = 0.64 / 32: the mantissa, then scaled by 2^-5
+  ASSERT_EQ(output.forced.size(), 2u);
+  EXPECT_DOUBLE_EQ(output.forced[0].max_abs_tension_n, 0.06);
+  EXPECT_DOUBLE_EQ(output.forced[0].w[1], 0.02);
+  EXPECT_DOUBLE_EQ(output.forced[0].s_m[2], 1.0);  // stations are not scaled
+  EXPECT_EQ(output.summary.termination, Termination::Converged);
+}
+
+TEST_F(DriveSolver, AnOverflowingOrSilentNonFiniteForcedResponseGetsADiagnostic) {
+  ForcedRequest forced;
+  forced.amplitude_m = 1e308;
+  forced.omegas_rad_s = {0.5};
+  request.forced = forced;
+  ScriptedNumerics overflowing;
+  overflowing.unit_tension_n = 10.0;
+  SolverOutput output = drive(overflowing);
+  ASSERT_EQ(output.forced.size(), 1u);
+  EXPECT_NE(output.forced[0].diagnostic.find("overflows double precision"), std::string::npos);
+  EXPECT_EQ(output.forced[0].max_abs_tension_n, 0.0);
+  EXPECT_EQ(output.summary.termination, Termination::NoConvergence);
+  ScriptedNumerics silent;
+  silent.unit_tension_n = std::numeric_limits<double>::infinity();
+  request.forced->amplitude_m = 0.01;
+  output = drive(silent);
+  EXPECT_NE(output.forced[0].diagnostic.find("without a diagnostic"), std::string::npos);
+  EXPECT_TRUE(output.forced[0].tension_n.size() == 0);
+  EXPECT_EQ(output.summary.termination, Termination::NoConvergence);
 }
 
 }  // namespace
