@@ -222,7 +222,7 @@ ForcedOutcome FrobeniusNumerics::forced(const ForcedRequest& request) {
                                 request.omegas_rad_s.size());
   if (at_resonance > 0) summary.message += fmt::format(" ({} at a natural frequency: no finite response)", at_resonance);
   if (declined > 0) summary.message += fmt::format(" ({} declined: beyond the series' resolution)", declined);
-  summary.resolution = fmt::format("forced: up to {} series terms over {} expansion centres (at most {:g} rad of "
+  summary.resolution = fmt::format("up to {} series terms over {} expansion centres (at most {:g} rad of "
                                    "phase per expansion), long double",
                                    work.terms, work.centres, kForcedPhasePerExpansion);
   summary.notes.push_back(summary.resolution);

@@ -5,8 +5,11 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include <fmt/format.h>
+
+#include "solvers/internal/frobenius_root_scan.hpp"
 
 namespace catena::internal {
 
@@ -164,6 +167,34 @@ std::optional<std::string> basis_trouble(const PlaneSetup& setup, double omega, 
   return std::nullopt;
 }
 
+// Whether the response is resolved a quarter of the WKB mode spacing to either side of Omega =
+// omega: then the condition kappa(omega) >= 1 / uncertainty comes from a natural frequency close
+// to omega (near one, 1 / kappa falls linearly with the distance to it), not from the basis.
+bool resolved_nearby(const PlaneSetup& setup, double omega, bool driven_at_b, const EndDisplacement& end,
+                     double uncertainty) {
+  const double h = 0.25 * wkb_mode_spacing(setup);
+  for (double side : {omega - h, omega + h}) {
+    if (side <= 0.0) continue;
+    if (!(solve_forcing(setup, side, driven_at_b, end).condition * uncertainty < 1.0)) return false;
+  }
+  return true;
+}
+
+// The diagnostic of a frequency whose boundary matrix is singular within its uncertainty: a
+// resonance when the response is resolved nearby, else beyond the series' accuracy.
+std::string unresolved_reason(double omega, bool resonance, double condition, double uncertainty) {
+  const std::string measure = fmt::format(
+      "condition number {:.2e} of the row-equilibrated boundary matrix times its uncertainty {:.1e} >= 1", condition,
+      uncertainty);
+  if (resonance)
+    return fmt::format("forcing at Omega = {:g} is at a natural frequency within the series' accuracy ({}): "
+                       "resonance, no finite response",
+                       omega, measure);
+  return fmt::format("forcing at Omega = {:g}: the response is not determined by the series at this frequency ({}, "
+                     "also a quarter mode spacing away: not a resonance); declined",
+                     omega, measure);
+}
+
 // The response at one frequency [rad/s] (the resonance rule is in frobenius_forced.hpp).
 ForcedResponse response_at(const PlaneSetup& base, bool driven_at_b, const EndDisplacement& end, double omega_rad_s,
                            const FieldStations& stations, const CableUnits& units, ForcedWork& work) {
@@ -188,12 +219,8 @@ ForcedResponse response_at(const PlaneSetup& base, bool driven_at_b, const EndDi
   }
   const double inaccuracy = a.condition * uncertainty;
   if (!(inaccuracy < 1.0)) {
-    decline(response,
-            fmt::format("forcing at Omega = {:g} is at a natural frequency within the series' accuracy (condition "
-                        "number {:.2e} of the row-equilibrated boundary matrix times its uncertainty {:.1e} >= 1): "
-                        "resonance, no finite response",
-                        omega, a.condition, uncertainty),
-            true);
+    const bool resonance = resolved_nearby(setup, omega, driven_at_b, end, uncertainty);
+    decline(response, unresolved_reason(omega, resonance, a.condition, uncertainty), resonance);
     return response;
   }
   set_fields(response, setup, omega, a.coefficients, stations, units);
@@ -253,8 +280,19 @@ std::vector<ForcedResponse> frobenius_forced_responses(const PlaneSetup& base, c
   setup.inplane = forced.direction != ForcingDirection::OutOfPlane;
   const EndDisplacement end = forced_end_displacement(forced, at_b ? base.sigma2 : base.sigma1, units.length_m);
   std::vector<ForcedResponse> responses;
-  for (double omega_rad_s : forced.omegas_rad_s)
-    responses.push_back(response_at(setup, at_b, end, omega_rad_s, stations, units, work));
+  for (double omega_rad_s : forced.omegas_rad_s) {
+    try {
+      responses.push_back(response_at(setup, at_b, end, omega_rad_s, stations, units, work));
+    } catch (const std::domain_error& e) {
+      // The series engine met a logarithmic resonance it does not compute: this frequency only.
+      ForcedResponse response;
+      response.omega_rad_s = omega_rad_s;
+      response.s_m = stations.s_m;
+      decline(response, fmt::format("forcing at {:g} rad/s: series failure ({}); declined", omega_rad_s, e.what()),
+              false);
+      responses.push_back(std::move(response));
+    }
+  }
   return responses;
 }
 
