@@ -203,9 +203,7 @@ void FrobeniusNumerics::summarise_plane(Plane plane, int count, const PlaneRoots
 ForcedOutcome FrobeniusNumerics::forced(const ForcedRequest& request) {
   ForcedOutcome outcome;
   ForcedWork work;
-  PlaneSetup setup = base_;
-  setup.settings.max_terms = options_.max_terms;
-  outcome.responses = frobenius_forced_responses(setup, request, stations_, units_, work);
+  outcome.responses = frobenius_forced_responses(base_, request, stations_, units_, work);
   std::size_t at_resonance = 0, declined = 0;
   double worst = 0.0;
   for (const ForcedResponse& r : outcome.responses) {
