@@ -69,7 +69,9 @@ json forced_json(const ForcedResponse& response) {
   json out = {{key::omega_rad_s, number(response.omega_rad_s)},
               {key::max_abs_tension_n, number(response.max_abs_tension_n)},
               {key::relative_error_estimate, number(response.relative_error_estimate)},
-              {key::diagnostic, response.diagnostic}};
+              {key::diagnostic, response.diagnostic},
+              {key::at_resonance, response.at_resonance},
+              {key::near_resonance, response.near_resonance}};
   if (response.s_m.size()) out[key::s_m] = vector_json(response.s_m);
   if (response.u.size()) out[key::u_m] = vector_json(response.u);
   if (response.w.size()) out[key::w_m] = vector_json(response.w);

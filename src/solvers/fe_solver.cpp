@@ -72,11 +72,17 @@ class FeNumerics final : public SolverNumerics {
   std::optional<Outcome> prepare() override;
   ModalResult modes(Plane plane, int count) override;
   ForcedOutcome forced(const ForcedRequest& request) override {
-    return fe_forced_response(request, context_, plan_, levels_, naturals_[forced_plane(request)], timings_);
+    const Plane plane = forced_plane(request);
+    std::string note;
+    if (naturals_[plane].empty()) note = compute_naturals_for(plane, request);
+    ForcedOutcome outcome = fe_forced_response(request, context_, plan_, levels_, naturals_[plane], timings_);
+    if (!note.empty()) outcome.summary.notes.push_back(note);
+    return outcome;
   }
 
  private:
   void require_modes_fit() const;
+  std::string compute_naturals_for(Plane plane, const ForcedRequest& request);
   void extrapolate_modes(Plane plane, int available, ModalResult& result, std::vector<double>& orders);
   Mode extrapolated_mode(Plane plane, int i, const FeModeMatches& matches,
                          const FeExtrapolatedFrequency& frequency, const Vector& stations) const;
@@ -122,6 +128,28 @@ std::optional<Outcome> FeNumerics::prepare() {
   levels_ = solve_level_statics(context_.problem, context_.statics, plan_, timings_, failure);
   if (!failure.empty()) return Outcome{Termination::NumericalFailure, "Numerical failure: " + failure};
   return std::nullopt;
+}
+
+// The resonance check of the forced response needs the natural frequencies of the forced plane
+// with their error estimates (fe_forced.hpp). When that plane's modes were not asked, fe computes
+// them itself: every mode up to 5% above the highest forcing frequency and one more (counted by
+// the inertia of K - omega^2 M on the finest mesh), at most a quarter of the coarse mesh's
+// unknowns (the higher modes are not resolved). Returns the note for the summary.
+std::string FeNumerics::compute_naturals_for(Plane plane, const ForcedRequest& request) {
+  if (request.omegas_rad_s.empty()) return {};
+  const double top = 1.05 * *std::max_element(request.omegas_rad_s.begin(), request.omegas_rad_s.end());
+  const auto fine = static_cast<std::size_t>(plan_.main_fine);
+  assemble_missing(levels_, plane, {fine});
+  const int below = count_eigenvalues_below(levels_[fine][0].matrices.at(plane), top * top);
+  const int cap = fe_unknowns(plane, std::max(2, options_.elements / 2)) / 4;
+  if (below < 0 || below + 1 > cap)
+    return fmt::format("resonance check of the forced response by the pivots of K - omega^2 M only: {} {} modes "
+                       "lie below the forcing frequencies, more than the {} the meshes resolve",
+                       below, to_string(plane), cap);
+  const ModalResult own = modes(plane, below + 1);
+  return fmt::format("resonance check of the forced response against the {} lowest {} natural frequencies, "
+                     "computed for it (relative error estimates up to {:.1e})",
+                     own.modes.size(), to_string(plane), own.summary.max_error_estimate);
 }
 
 // Shapes and tension from the finest main mesh (extrapolated in kappa when penalised).

@@ -199,17 +199,33 @@ void FrobeniusNumerics::summarise_plane(Plane plane, int count, const PlaneRoots
 
 // A forcing frequency at a natural frequency has no finite response: that response carries the
 // diagnostic, and the part still converged (it is the physical answer, not a numerical failure).
+// A frequency the series cannot resolve is declined: the part is then not converged.
 ForcedOutcome FrobeniusNumerics::forced(const ForcedRequest& request) {
   ForcedOutcome outcome;
-  outcome.responses = frobenius_forced_responses(base_, request, stations_, units_);
-  const auto at_resonance = static_cast<std::size_t>(std::count_if(
-      outcome.responses.begin(), outcome.responses.end(), [](const ForcedResponse& r) { return !r.diagnostic.empty(); }));
-  outcome.summary.termination = Termination::Converged;
-  outcome.summary.message = fmt::format("{} of {} forced frequencies", outcome.responses.size() - at_resonance,
-                                        request.omegas_rad_s.size());
-  if (at_resonance > 0)
-    outcome.summary.message += fmt::format(" ({} at a natural frequency: no finite response)", at_resonance);
-  outcome.summary.operations = static_cast<long>(outcome.responses.size());
+  ForcedWork work;
+  outcome.responses = frobenius_forced_responses(base_, request, stations_, units_, work);
+  std::size_t at_resonance = 0, declined = 0;
+  double worst = 0.0;
+  for (const ForcedResponse& r : outcome.responses) {
+    if (r.at_resonance) ++at_resonance;
+    else if (!r.diagnostic.empty()) ++declined;
+    worst = std::max(worst, r.relative_error_estimate);
+    if (!r.diagnostic.empty()) outcome.summary.warnings.push_back(r.diagnostic);
+  }
+  SolverSummary& summary = outcome.summary;
+  summary.termination = declined == 0 ? Termination::Converged
+                        : declined < outcome.responses.size() ? Termination::NoConvergence
+                                                              : Termination::NumericalFailure;
+  summary.message = fmt::format("{} of {} forced frequencies", outcome.responses.size() - at_resonance - declined,
+                                request.omegas_rad_s.size());
+  if (at_resonance > 0) summary.message += fmt::format(" ({} at a natural frequency: no finite response)", at_resonance);
+  if (declined > 0) summary.message += fmt::format(" ({} declined: beyond the series' resolution)", declined);
+  summary.resolution = fmt::format("up to {} series terms over {} expansion centres (at most {:g} rad of "
+                                   "phase per expansion), long double",
+                                   work.terms, work.centres, kForcedPhasePerExpansion);
+  summary.notes.push_back(summary.resolution);
+  summary.operations = work.evaluations;
+  summary.max_error_estimate = worst > 0.0 ? worst : -1.0;
   return outcome;
 }
 

@@ -150,5 +150,29 @@ TEST(FeForced, SummaryCountsTheFrequenciesWithAResponse) {
   EXPECT_TRUE(warned) << solved.output.summary.full_report();
 }
 
+TEST(FeForced, WithoutModesAskedFeComputesTheNaturalFrequenciesItChecksResonanceAgainst) {
+  // Regression: with no in-plane modes asked, fe judged resonance by a fixed pivot threshold only
+  // and returned 859.7 N (estimate 0.65) exactly at a natural frequency of the Gale C-2 catenary.
+  // Now it computes the in-plane modes below the forcing itself: the natural frequency of its own
+  // mesh (and the true one, within fe's error estimate of it) is a resonance; 0.5 is not.
+  const Problem problem = make_taut_inclined_problem(0.1, 10.0, 30.0, 1.0);
+  const Solved modal = solve(problem, modes_request(3, 0), {.elements = 200});
+  SolveRequest request = modes_request(0, 0);
+  request.forced = ForcedRequest{.end = CableEnd::B, .direction = ForcingDirection::Normal,
+                                 .amplitude_m = 0.01,
+                                 .omegas_rad_s = {modal.output.inplane->modes[1].omega_rad_s, 0.5}};
+  const Solved solved = solve(problem, request, {.elements = 200});
+  ASSERT_EQ(solved.output.forced.size(), 2u);
+  EXPECT_TRUE(solved.output.forced[0].at_resonance) << solved.output.forced[0].diagnostic;
+  EXPECT_NE(solved.output.forced[0].diagnostic.find("natural frequency 2"), std::string::npos)
+      << solved.output.forced[0].diagnostic;
+  EXPECT_TRUE(solved.output.forced[1].diagnostic.empty());
+  EXPECT_FALSE(solved.output.forced[1].at_resonance);
+  bool noted = false;
+  for (const auto& note : solved.output.summary.notes)
+    noted = noted || note.find("natural frequencies, computed for it") != std::string::npos;
+  EXPECT_TRUE(noted) << solved.output.summary.full_report();
+}
+
 }  // namespace
 }  // namespace catena

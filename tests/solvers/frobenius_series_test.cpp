@@ -9,6 +9,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 
+#include "solvers/internal/frobenius_catenary.hpp"
 #include "solvers/internal/frobenius_series.hpp"
 #include "test_utils.hpp"
 
@@ -129,6 +130,25 @@ TEST(FrobeniusSeriesTest, AdaptiveSeriesStopsAtTheTolerance) {
   const auto v = evaluate_series(s, 1.0, 0, 0.5);
   const double f = v.derivative[0];
   EXPECT_GT(f, 1.0);
+}
+
+TEST(FrobeniusSeriesTest, AnOrdinaryPointCloseToASingularOneIsNotAResonance) {
+  // Regression: the forced response's basis at high Omega starts its second expansion at
+  // eta ~ 1e-8, where the whole leading coefficient eta^2 (1+eta)(2+eta)^2 is ~1e-16. The
+  // recurrence's lead there is small but not zero; judged against an absolute 1e-9 it was taken
+  // for a resonance and the series threw "logarithmic solution".
+  const PolynomialOde<double> ode = catenary_ode<double>(true, 1e8, 1.0).shifted(1e-8);
+  const ShiftTable<double> table(ode);
+  bool converged = false;
+  // The unit solution of exponent 3 (as the basis builds it): its next coefficient has lead Q(4).
+  const auto series = adaptive_series(table, 3.0, 1e-9, 1e-15, 400, converged);
+  EXPECT_TRUE(converged);
+  ASSERT_GE(series.a.size(), 2u);
+  EXPECT_TRUE(std::isfinite(series.a[1]));
+  EXPECT_NE(series.a[1], 0.0);
+  // True resonances (the indicial roots 0..3 of an ordinary point) are still recognised.
+  EXPECT_TRUE(is_resonant_index(table, table.q(0, 2.0), 2.0));
+  EXPECT_FALSE(is_resonant_index(table, table.q(0, 4.0), 4.0));
 }
 
 }  // namespace

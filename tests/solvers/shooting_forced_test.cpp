@@ -90,5 +90,29 @@ TEST(ShootingForced, IntegrationFailureIsAStatusNotAnException) {
   EXPECT_NE(out.summary.message.find("max_steps"), std::string::npos) << out.summary.message;
 }
 
+TEST(ShootingForced, ResonanceIsDecidedByTheResponsesOwnErrorEstimate) {
+  // The response's estimate is rtol / |normalised det|; resonance when it would reach 0.1. With
+  // rtol 1e-12: 1e-9 (relative) from the natural frequency the normalised det is ~1e-9, the
+  // estimate ~1e-3: a finite, flagged response (the former fixed 1e3 rtol called it resonance);
+  // at the natural frequency itself, a resonance.
+  const ShootingCoefficients k = testing::horizontal_string(1.0, 1.0, 4.0);
+  const double natural = kPi / std::sqrt(1.25);
+  const ForcedOutcome out = shooting_forced_responses(
+      k, drive(ForcingDirection::OutOfPlane, {natural, natural * (1.0 + 1e-9), 2.0}), kStations, tight());
+  ASSERT_EQ(out.responses.size(), 3u);
+  EXPECT_TRUE(out.responses[0].at_resonance);
+  const ForcedResponse& near = out.responses[1];
+  ASSERT_TRUE(near.diagnostic.empty()) << near.diagnostic;
+  EXPECT_FALSE(near.at_resonance);
+  EXPECT_TRUE(near.near_resonance);
+  EXPECT_LT(near.relative_error_estimate, 0.1);
+  // The exact response 0.01 sin(q s) / sin(q L) within its own estimate.
+  const double q = std::sqrt(1.25) * near.omega_rad_s;
+  const double peak = 0.01 / std::abs(std::sin(q));
+  EXPECT_NEAR(near.v.cwiseAbs().maxCoeff(), peak, 3.0 * near.relative_error_estimate * peak);
+  EXPECT_FALSE(out.responses[2].near_resonance);
+  EXPECT_FALSE(out.responses[2].at_resonance);
+}
+
 }  // namespace
 }  // namespace catena::internal

@@ -65,6 +65,16 @@ struct ModalResult {
 };
 
 /// Response to one forcing frequency.
+///
+/// Resonance is decided by each solver relative to its own accuracy at that frequency, never by a
+/// fixed threshold on a determinant (docs/methods/<solver>.md, "Forced response"): a forcing
+/// frequency is at resonance (`at_resonance`, a diagnostic and no fields) only when it lies within
+/// the error estimate of a natural frequency the solver computed, |omega - omega_n| <= c omega_n
+/// estimate_n, or when the solver's boundary determinant (or pivot), scaled by its condition, is
+/// at the level of the solver's own error in it. A finite response that the nearness of a natural
+/// frequency amplifies is flagged `near_resonance` (and its error estimate grows). A frequency the
+/// method cannot resolve (e.g. too high for its series or mesh) is declined with a diagnostic that
+/// says so, with at_resonance false.
 struct ForcedResponse {
   double omega_rad_s = 0.0;
   /// Stations [m] and the displacement amplitude there [m] (u, w in plane; v out of plane).
@@ -81,6 +91,11 @@ struct ForcedResponse {
   /// Empty when fine; otherwise why this frequency has no finite answer (e.g. "forcing within
   /// 1e-12 of natural frequency 3 (resonance)").
   std::string diagnostic;
+  /// True when `diagnostic` is a resonance (no finite response within the solver's accuracy);
+  /// false for a frequency declined for another reason.
+  bool at_resonance = false;
+  /// True for a finite response near a natural frequency (resonance-amplified, sensitive to omega).
+  bool near_resonance = false;
 };
 
 /// Everything one solver produced for one problem and request.

@@ -95,6 +95,15 @@ void respond(ForcedResponse& response, const Forcing& forcing, const FePlan& pla
   }
 }
 
+// Within kNearResonance (relative) of a computed natural frequency: the response is
+// resonance-amplified (the same 1e-3 as shooting's normalised determinant).
+constexpr double kNearResonance = 1e-3;
+bool near_natural(double omega, const std::vector<FeNaturalFrequency>& naturals) {
+  return std::any_of(naturals.begin(), naturals.end(), [&](const FeNaturalFrequency& mode) {
+    return std::abs(omega - mode.omega_rad_s) <= kNearResonance * mode.omega_rad_s;
+  });
+}
+
 }  // namespace
 
 Plane forced_plane(const ForcedRequest& request) {
@@ -180,6 +189,9 @@ ForcedOutcome fe_forced_response(const ForcedRequest& request,
     response.s_m = stations;
     response.diagnostic = resonance_diagnostic(omega, forcing.plane, naturals);
     if (response.diagnostic.empty()) respond(response, forcing, plan, levels);
+    // Every diagnostic of fe's forced response is a resonance (its own, or a singular K - omega^2 M).
+    response.at_resonance = !response.diagnostic.empty();
+    response.near_resonance = response.diagnostic.empty() && near_natural(omega, naturals);
     if (!response.diagnostic.empty()) outcome.summary.warnings.push_back(response.diagnostic);
     outcome.responses.push_back(std::move(response));
   }

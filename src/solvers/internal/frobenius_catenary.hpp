@@ -44,7 +44,29 @@ struct CatenarySeriesSettings {
   int max_terms = 400;
   /// Distance between expansion centres as a fraction of the radius of convergence, (0, 0.9].
   double step_ratio = 0.5;
+  /// Largest phase Omega * integral sqrt(mu/C) dsigma a solution may turn through between an
+  /// expansion's centre and the ends of its reach; 0: no limit. At high Omega a solution is a wave
+  /// of wave number Omega sqrt(mu/C) (WKB) and the terms of a series reaching a phase P grow to
+  /// about e^P before they cancel to O(1): the limit keeps that cancellation below e^P, by placing
+  /// more centres (frobenius_forced.hpp sets it; the natural frequencies keep the radius rule).
+  double max_phase_per_expansion = 0.0;
+  /// Cap on the number of expansion centres when max_phase_per_expansion is set (the basis then
+  /// stops short of eta_max and reports it by covers()).
+  int max_centres = 0;
 };
+
+/// The WKB phase rate d(phase)/d(eta) = Omega sqrt(mu (1+eta) / (eta (2+eta))) of the waves of
+/// both planes (from the leading terms of Gale 2.42 and 2.44 at large Omega).
+inline double wave_phase_rate(double omega, double mu, double eta) {
+  return omega * std::sqrt(mu * (1.0 + eta) / (eta * (2.0 + eta)));
+}
+
+/// The eta at which the phase from the apex, Omega sqrt(mu) sigma to leading order near the apex
+/// (and an upper bound beyond it, since C >= 1), reaches `phase`.
+inline double eta_at_apex_phase(double omega, double mu, double phase) {
+  const double sigma = phase / (omega * std::sqrt(mu));
+  return sigma * sigma / (std::sqrt(1.0 + sigma * sigma) + 1.0);
+}
 
 /// The ODE in eta of one plane (coefficients of y, y', ...).
 template <class Real>
@@ -143,7 +165,7 @@ class CatenaryBasis {
  public:
   CatenaryBasis(bool inplane, const Real& omega, const Real& mu, double eta_max,
                 const CatenarySeriesSettings& settings)
-      : inplane_(inplane), n_(inplane ? 4 : 2) {
+      : inplane_(inplane), n_(inplane ? 4 : 2), omega_(static_cast<double>(omega)), mu_(static_cast<double>(mu)) {
     const PolynomialOde<Real> ode = catenary_ode<Real>(inplane, omega * omega, mu);
     // Indicial roots (0, 1/2, 1, 3/2 in plane; 0, 1/2 out of plane) and singular points (roots of
     // the leading coefficient: 0, -1, -2 in plane; 0, -2 out of plane), both from the polynomials.
@@ -155,14 +177,23 @@ class CatenaryBasis {
     roots_ = inplane ? roots_in : roots_out;
     singular_ = inplane ? singular_in : singular_out;
     add_apex_expansion(ode, settings);
-    // Ordinary centres until eta_max is covered.
-    while (centres_.back() + reach_.back() < eta_max) add_ordinary_expansion(ode, settings);
+    // Ordinary centres until eta_max is covered (or the cap on centres is reached).
+    covers_ = true;
+    while (centres_.back() + reach_.back() < eta_max) {
+      if (settings.max_centres > 0 && num_centres() >= settings.max_centres) {
+        covers_ = false;
+        break;
+      }
+      add_ordinary_expansion(ode, settings);
+    }
   }
 
   int size() const { return n_; }
   bool converged() const { return converged_; }
   long total_terms() const { return total_terms_; }
   int num_centres() const { return static_cast<int>(centres_.size()); }
+  /// False when max_centres stopped the expansions short of eta_max.
+  bool covers() const { return covers_; }
   double exponent(int j) const { return roots_[static_cast<std::size_t>(j)]; }
 
   /// D^k U_j(sigma), k = 0..max_derivative (<= 3).
@@ -186,8 +217,10 @@ class CatenaryBasis {
  private:
   // Centre 0: the singular point (the apex), where the Frobenius series are built.
   void add_apex_expansion(const PolynomialOde<Real>& ode, const CatenarySeriesSettings& settings) {
-    const double rho = settings.step_ratio;
     const double r0 = radius(0.0);
+    double rho = settings.step_ratio;
+    if (settings.max_phase_per_expansion > 0.0)
+      rho = std::min(rho, eta_at_apex_phase(omega_, mu_, settings.max_phase_per_expansion) / r0);
     centres_.push_back(0.0);
     reach_.push_back(rho * r0);
     const ShiftTable<Real> table0(ode);
@@ -218,10 +251,19 @@ class CatenaryBasis {
   // A Taylor expansion about the next ordinary centre, continuing every basis function: the
   // unit solutions there are combined to match the previous expansion's derivatives at x_m.
   void add_ordinary_expansion(const PolynomialOde<Real>& ode, const CatenarySeriesSettings& settings) {
-    const double rho = settings.step_ratio;
+    double rho = settings.step_ratio;
     const double x_m = centres_.back() + reach_.back();
-    const double c = next_centre(x_m, rho);
-    const double step = rho * radius(c);
+    double c = next_centre(x_m, rho);
+    double step = rho * radius(c);
+    // The wave limit: the phase rate falls with eta, so its value at x_m bounds it on the disc.
+    const double wave_step = settings.max_phase_per_expansion > 0.0
+                                 ? settings.max_phase_per_expansion / wave_phase_rate(omega_, mu_, x_m)
+                                 : step;
+    if (wave_step < step) {
+      c = x_m + wave_step;
+      step = wave_step;
+      rho = step / radius(c);
+    }
     const ShiftTable<Real> table(ode.shifted(Real(c)));
     std::vector<FrobeniusSeries<Real>> unit;
     std::size_t longest = 0;
@@ -370,6 +412,9 @@ class CatenaryBasis {
 
   bool inplane_;
   int n_;
+  double omega_;
+  double mu_;
+  bool covers_ = true;
   std::vector<double> roots_;
   std::vector<std::complex<double>> singular_;
   std::vector<double> centres_;

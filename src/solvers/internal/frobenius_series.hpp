@@ -199,6 +199,21 @@ struct SeriesValue {
   std::vector<Real> truncation;
 };
 
+/// Whether Q_{d_min}(nu) = `lead` vanishes at nu (a resonant index of the recurrence): |lead| at
+/// most 1e-9 of the indicial polynomial's size nearby, max_k |Q_{d_min}(nu + k)| for k = 1..order
+/// (the polynomial's scale there, never all zero: it has at most `order` roots), or 1 when that is
+/// larger. The scale is relative so that an ordinary point very close to a singular one, where the
+/// whole indicial polynomial is small, is not mistaken for a resonance.
+template <class Real>
+bool is_resonant_index(const ShiftTable<Real>& table, const Real& lead, const Real& nu) {
+  using std::abs;
+  Real scale = abs(table.q(0, nu + Real(1)));
+  const bool tiny_polynomial = scale < Real(1);
+  if (tiny_polynomial)
+    for (int k = 2; k <= table.order(); ++k) scale = std::max(scale, Real(abs(table.q(0, nu + Real(k)))));
+  return abs(lead) <= Real(1e-9) * (tiny_polynomial ? std::min(scale, Real(1)) : scale + Real(1));
+}
+
 /// Generates coefficients of the solution with indicial root `r` (a[0] = 1 and, at resonant
 /// indices N where Q_{d_min}(N + r) = 0, a[N] = `resonant_value(N)`, default 0), up to index
 /// `num_terms - 1`. Throws std::domain_error when a resonance carries a logarithm.
@@ -209,7 +224,6 @@ FrobeniusSeries<Real> frobenius_series(const ShiftTable<Real>& table, const Real
   FrobeniusSeries<Real> series;
   series.r = r;
   series.a.assign(static_cast<std::size_t>(num_terms), Real(0));
-  const Real tiny = Real(1e-9);
   for (int N = 0; N < num_terms; ++N) {
     Real rhs(0), scale(0);
     for (const int e : table.active_shifts()) {
@@ -219,8 +233,7 @@ FrobeniusSeries<Real> frobenius_series(const ShiftTable<Real>& table, const Real
       scale += abs(term);
     }
     const Real lead = table.q(0, Real(N) + r);
-    const Real lead_scale = abs(table.q(0, Real(N) + r + Real(1))) + Real(1);
-    if (abs(lead) <= tiny * lead_scale) {
+    if (is_resonant_index(table, lead, Real(N) + r)) {
       // Resonance: free coefficient if the right side vanishes.
       if (abs(rhs) > Real(1e-8) * (scale + Real(1e-300)) && abs(rhs) > Real(1e-12))
         throw std::domain_error("logarithmic solution at resonant index " + std::to_string(N));
@@ -306,7 +319,6 @@ FrobeniusSeries<Real> adaptive_series(const ShiftTable<Real>& table, const Real&
   FrobeniusSeries<Real> series;
   series.r = r;
   series.a.reserve(static_cast<std::size_t>(std::min(max_terms, 256)));
-  const Real tiny = Real(1e-9);
   const int window = 6;
   const int minimum = 12;
   Real largest(0), power(1);
@@ -321,9 +333,8 @@ FrobeniusSeries<Real> adaptive_series(const ShiftTable<Real>& table, const Real&
       scale += abs(term);
     }
     const Real lead = table.q(0, Real(N) + r);
-    const Real lead_scale = abs(table.q(0, Real(N) + r + Real(1))) + Real(1);
     Real value;
-    if (abs(lead) <= tiny * lead_scale) {
+    if (is_resonant_index(table, lead, Real(N) + r)) {
       if (abs(rhs) > Real(1e-8) * (scale + Real(1e-300)) && abs(rhs) > Real(1e-12))
         throw std::domain_error("logarithmic solution at resonant index " + std::to_string(N));
       value = static_cast<std::size_t>(N) < initial.size() ? initial[static_cast<std::size_t>(N)] : Real(0);

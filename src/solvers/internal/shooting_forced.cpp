@@ -14,6 +14,10 @@ namespace catena::internal {
 
 namespace {
 
+// The largest relative error estimate of a response shooting returns; beyond it the forcing is
+// at a natural frequency within the integration's accuracy.
+constexpr double kResonanceEstimate = 0.1;
+
 // The prescribed end displacement in the integration variables: which plane is integrated, the
 // scaled drive d (a D-vector), and why there is no response, if there is none.
 struct Drive {
@@ -91,16 +95,20 @@ ForcedResponse shooting_forced_response(ShootingIntegrator& integrator,
   const int D = drive.plane == Plane::InPlane ? 2 : 1;
   const std::vector<double> x = scaled_stations(stations, k.length_m, from_b);
   const Shot shot = integrator.shoot(omega, 1.0, &x, from_b);
-  // Resonance: the end determinant is at the level of the integration error.
-  const double resonance_level = 1e3 * relative_tolerance;
+  // Resonance, relative to the integration's own accuracy: the response's error estimate
+  // rtol / |normalised det| (below) would reach kResonanceEstimate, i.e. the end determinant is
+  // within 1 / kResonanceEstimate of the integration error.
+  const double resonance_level = relative_tolerance / kResonanceEstimate;
   if (std::abs(shot.determinant) <= resonance_level) {
     response.diagnostic = fmt::format(
         "forcing at a natural frequency (resonance): |det Phi(L)| / sqrt(det G) = {:.2e} <= "
-        "{:.1e}, no finite response",
-        std::abs(shot.determinant), resonance_level);
+        "{:.1e} (the integration tolerance {:.0e} / {:g}), no finite response",
+        std::abs(shot.determinant), resonance_level, relative_tolerance, kResonanceEstimate);
+    response.at_resonance = true;
     return response;
   }
   near_resonance = std::abs(shot.determinant) < 1e-3;
+  response.near_resonance = near_resonance;
   const Eigen::MatrixXd phi_end = shot.y_end.topRows(D);
   const Eigen::VectorXd c = phi_end.partialPivLu().solve(drive.d / k.length_m);
   Profile p = evaluate_profile(shot, c, k, stations, from_b, drive.plane);

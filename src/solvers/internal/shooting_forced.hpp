@@ -3,9 +3,10 @@
 /// Forced response of the `shooting` solver (docs/methods/shooting.md): one end of the cable is
 /// driven harmonically, the other is fixed. The principal solutions are shot from the fixed end
 /// and combined to meet the prescribed displacement at the driven end (one D x D solve per
-/// frequency). A frequency where the normalised det Phi(L) is at the integration-noise level is
-/// reported as resonance (no finite response); one with |det| < 1e-3 gets a near-resonance
-/// warning. A straight inextensible cable responds only to the normal part of the drive.
+/// frequency). The response's relative error estimate is rtol / |normalised det Phi(L)| (the
+/// principal solutions' error amplified by the condition of the solve); a frequency where that
+/// estimate would reach 0.1, i.e. |det| <= 10 rtol, is reported as resonance (no finite
+/// response); one with |det| < 1e-3 is flagged near_resonance with a warning. A straight inextensible cable responds only to the normal part of the drive.
 
 #include "catena/solvers/solve_request.hpp"
 #include "solvers/internal/shooting_coefficients.hpp"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 #include <map>
 
 #include "catena/verification/findings.hpp"
@@ -239,6 +240,39 @@ void tension_pair(const SceneResult& result, const SolverOutput& a, const Solver
   }
 }
 
+// A forcing frequency where at least one solver gave no finite response. Both without one, or a
+// decline that is not a resonance (the frequency is beyond that method's resolution, which its
+// status reports): SKIP with the reason. One solver at resonance while the other returns a finite
+// response: consistent only when the other flags it near_resonance (resonance-amplified, within
+// the first solver's accuracy of a natural frequency); a finite response nobody flags contradicts
+// the resonance claim, and one of the two answers is wrong: FAIL.
+void resonance_claim(const ForcedResponse& x, const ForcedResponse& y, const std::string& solver_x,
+                     const std::string& solver_y, CheckResult& check) {
+  check.verdict = Verdict::Skipped;
+  const bool x_finite = x.diagnostic.empty(), y_finite = y.diagnostic.empty();
+  const ForcedResponse& claim = x_finite ? y : x;
+  if (!x_finite && !y_finite) {
+    check.detail = "not compared: " + x.diagnostic + "; " + y.diagnostic;
+    return;
+  }
+  const ForcedResponse& finite = x_finite ? x : y;
+  const std::string& claimant = x_finite ? solver_y : solver_x;
+  const std::string& other = x_finite ? solver_x : solver_y;
+  if (!claim.at_resonance) {
+    check.detail = fmt::format("not compared: {} declined this frequency: {}", claimant, claim.diagnostic);
+  } else if (finite.near_resonance) {
+    check.detail = fmt::format("not compared: {} is at resonance within its accuracy ({}); {} flags its finite "
+                               "response near a natural frequency (error estimate {:.1e})",
+                               claimant, claim.diagnostic, other, finite.relative_error_estimate);
+  } else {
+    check.verdict = Verdict::Fail;
+    check.detail = fmt::format("contradiction: {} says resonance ({}) while {} gives a finite response, max |tau| = "
+                               "{:.9g} N (error estimate {:.1e}), not flagged near a natural frequency",
+                               claimant, claim.diagnostic, other, finite.max_abs_tension_n,
+                               finite.relative_error_estimate);
+  }
+}
+
 void forced_pair(const SceneResult& result, const SolverOutput& a, const SolverOutput& b, CheckBuilder& builder) {
   const std::size_t n = std::min(a.forced.size(), b.forced.size());
   for (std::size_t i = 0; i < n; ++i) {
@@ -248,8 +282,7 @@ void forced_pair(const SceneResult& result, const SolverOutput& a, const SolverO
     check.value_a = x.max_abs_tension_n;
     check.value_b = y.max_abs_tension_n;
     if (!x.diagnostic.empty() || !y.diagnostic.empty()) {
-      check.verdict = Verdict::Skipped;
-      check.detail = "not compared: " + (x.diagnostic.empty() ? y.diagnostic : x.diagnostic);
+      resonance_claim(x, y, a.solver, b.solver, check);
       builder.add(check);
       continue;
     }

@@ -156,5 +156,72 @@ TEST(Checks, IdenticalShapesPassMacAndOrthogonalModesPassOrthogonality) {
   EXPECT_EQ(verdict_of(run_checks(r), "mac", 1), Verdict::Fail);
 }
 
+// A solver output with one forced response: finite max |tau| (with its estimate), or none with a
+// diagnostic.
+SolverOutput forced_output(const std::string& solver, double max_tension, double estimate) {
+  SolverOutput out;
+  out.solver = solver;
+  out.summary.solver = solver;
+  out.summary.termination = Termination::Converged;
+  ForcedResponse r;
+  r.omega_rad_s = 100.0;
+  r.max_abs_tension_n = max_tension;
+  r.relative_error_estimate = estimate;
+  out.forced.push_back(r);
+  return out;
+}
+
+SolverOutput forced_diagnostic(const std::string& solver, bool at_resonance) {
+  SolverOutput out = forced_output(solver, 0.0, -1.0);
+  out.forced[0].diagnostic = at_resonance ? "at a natural frequency: resonance" : "beyond the series; declined";
+  out.forced[0].at_resonance = at_resonance;
+  return out;
+}
+
+std::vector<Verdict> forced_verdicts(const std::vector<CheckResult>& checks) {
+  std::vector<Verdict> out;
+  for (const auto& c : checks)
+    if (c.check == "forced") out.push_back(c.verdict);
+  return out;
+}
+
+TEST(Checks, AResonanceClaimAgainstUnflaggedFiniteResponsesFails) {
+  // Regression: frobenius called Omega = 100 a resonance while fe and shooting agreed on 224 N
+  // with no sign of a nearby natural frequency; the pair checks were skipped and the run passed.
+  SceneResult r = gale_result();
+  r.outputs = {forced_output("fe", 223.9, 2e-3), forced_output("shooting", 224.385, 1e-8),
+               forced_diagnostic("frobenius", true)};
+  const auto checks = run_checks(r);
+  const std::vector<Verdict> verdicts = forced_verdicts(checks);
+  ASSERT_EQ(verdicts.size(), 3u);  // fe-shooting, fe-frobenius, shooting-frobenius
+  EXPECT_EQ(verdicts[0], Verdict::Pass);
+  EXPECT_EQ(verdicts[1], Verdict::Fail);
+  EXPECT_EQ(verdicts[2], Verdict::Fail);
+  for (const auto& c : checks)
+    if (c.check == "forced" && c.verdict == Verdict::Fail)
+      EXPECT_NE(c.detail.find("frobenius says resonance"), std::string::npos) << c.detail;
+}
+
+TEST(Checks, AResonanceClaimAgainstAFlaggedNearResonanceResponseIsSkippedWithTheReason) {
+  SceneResult r = gale_result();
+  SolverOutput near = forced_output("shooting", 2.4e5, 8e-3);
+  near.forced[0].near_resonance = true;
+  r.outputs = {forced_diagnostic("fe", true), near};
+  const auto checks = run_checks(r);
+  ASSERT_EQ(forced_verdicts(checks), std::vector<Verdict>{Verdict::Skipped});
+  EXPECT_NE(find(checks, "forced", 1)->detail.find("flags its finite response near a natural frequency"),
+            std::string::npos);
+}
+
+TEST(Checks, ADeclinedForcingFrequencyIsSkippedNotFailed) {
+  // A decline (beyond a method's resolution) is not a claim about the physics: the solver's
+  // status reports it.
+  SceneResult r = gale_result();
+  r.outputs = {forced_output("shooting", 224.385, 1e-8), forced_diagnostic("frobenius", false)};
+  const auto checks = run_checks(r);
+  ASSERT_EQ(forced_verdicts(checks), std::vector<Verdict>{Verdict::Skipped});
+  EXPECT_NE(find(checks, "forced", 1)->detail.find("declined"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace catena
