@@ -89,14 +89,17 @@ EndDisplacement forced_end_displacement(const ForcedRequest& forced, double sigm
 }
 
 std::vector<ForcedResponse> frobenius_forced_responses(const PlaneSetup& base, const ForcedRequest& forced,
-                                                       const FieldStations& stations, const CableUnits& units) {
+                                                       const FieldStations& stations, const CableUnits& units,
+                                                       WorkMeter* meter) {
   const bool at_b = forced.end == CableEnd::B;
   PlaneSetup setup = base;
   setup.inplane = forced.direction != ForcingDirection::OutOfPlane;
   const EndDisplacement end = forced_end_displacement(forced, at_b ? base.sigma2 : base.sigma1, units.length_m);
   std::vector<ForcedResponse> responses;
-  for (double omega_rad_s : forced.omegas_rad_s)
+  for (double omega_rad_s : forced.omegas_rad_s) {
     responses.push_back(response_at(setup, at_b, end, omega_rad_s, stations, units));
+    if (meter && meter->stop_after(static_cast<long>(responses.size()))) break;
+  }
   return responses;
 }
 

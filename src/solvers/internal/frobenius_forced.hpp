@@ -13,6 +13,7 @@
 #include "catena/solvers/modal_result.hpp"
 #include "catena/solvers/solve_request.hpp"
 #include "solvers/internal/frobenius_fields.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena::internal {
 
@@ -29,7 +30,9 @@ EndDisplacement forced_end_displacement(const ForcedRequest& forced, double sigm
 
 /// The response at each of `forced`'s frequencies, on `stations`. `base` is the in-plane boundary
 /// problem (the plane follows the forcing direction).
+/// A `meter` is told each frequency done and may stop early (the responses computed so far).
 std::vector<ForcedResponse> frobenius_forced_responses(const PlaneSetup& base, const ForcedRequest& forced,
-                                                       const FieldStations& stations, const CableUnits& units);
+                                                       const FieldStations& stations, const CableUnits& units,
+                                                       WorkMeter* meter = nullptr);
 
 }  // namespace catena::internal
