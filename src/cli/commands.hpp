@@ -24,6 +24,12 @@ struct TableArguments {
   std::string findings;
 };
 void add_table_options(CLI::App& command, TableArguments& tables);
+/// --time-limit SECONDS (per scene); `what` completes the help text.
+CLI::Option* add_time_limit_option(CLI::App& command, double& seconds, const std::string& what);
+/// Sets options.time_limit_s when the option was given; InvalidInput naming --time-limit unless
+/// 0 < seconds <= RunLimits::kMaxTimeLimit.
+void apply_time_limit(const CLI::Option& option, double seconds, SceneRunOptions& options);
+
 /// Run options holding the chosen tables (ParseError/InvalidInput when a file is bad).
 SceneRunOptions run_options_with_tables(const TableArguments& tables);
 

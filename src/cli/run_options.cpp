@@ -14,6 +14,21 @@ void add_table_options(CLI::App& command, TableArguments& tables) {
                      "Reviewed findings (TOML) instead of the built-in verification/findings.toml");
 }
 
+CLI::Option* add_time_limit_option(CLI::App& command, double& seconds, const std::string& what) {
+  return command.add_option("--time-limit", seconds,
+                     "Wall-clock limit in seconds " + what +
+                         " (default: none). When it runs out, each solver stops after the mode, "
+                         "forcing frequency or mesh level it is working on and reports what it has "
+                         "as 'no-convergence: time limit of X s reached after k of n ...'; the "
+                         "parts not started are reported with nothing done.");
+}
+
+void apply_time_limit(const CLI::Option& option, double seconds, SceneRunOptions& options) {
+  if (option.count() == 0) return;
+  RunLimits::check_time_limit(seconds, "--time-limit");
+  options.time_limit_s = seconds;
+}
+
 SceneRunOptions run_options_with_tables(const TableArguments& tables) {
   SceneRunOptions options;
   options.tolerances =

@@ -10,6 +10,7 @@
 #include "catena/io/scene_reader.hpp"
 #include "catena/verification/scene_runner.hpp"
 #include "cli/commands.hpp"
+#include "cli/terminal_progress.hpp"
 
 namespace catena::cli {
 namespace {
@@ -19,6 +20,8 @@ struct SolveArguments {
   std::string json;
   std::vector<std::string> solvers;
   bool quiet = false;
+  double time_limit_s = 0.0;
+  const CLI::Option* time_limit = nullptr;
   TableArguments tables;
 };
 
@@ -86,13 +89,17 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
   CLI::App* command = app.add_subcommand(
       "solve",
       "Solve one scene file: statics, dimensionless groups and every applicable solver.\n"
-      "Prints a summary; --json writes the full results (layout in verification/README.md).");
+      "Prints a summary; --json writes the full results (layout in verification/README.md).\n"
+      "On a terminal, long solves show their progress on stderr (\"shooting: in-plane modes 37/600\").");
   command->add_option("scene", arguments->scene, "Scene file (TOML; format in verification/README.md)")
       ->required();
   command->add_option("--json", arguments->json, "Write the results as JSON to this file ('-' for stdout)");
   command->add_option("--solver", arguments->solvers,
                       "Run only this solver (repeatable): fe, shooting, frobenius, asymptotic, airy");
   command->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
+  arguments->time_limit = add_time_limit_option(
+      *command, arguments->time_limit_s,
+      "for each scene (a sweep file: each of its scenes), from the start of its statics");
   add_table_options(*command, arguments->tables);
   command->callback([arguments, &run] {
     run = [arguments] {
@@ -103,8 +110,13 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
       std::vector<SceneResult> results;
       SceneRunOptions options = run_options_with_tables(arguments->tables);
       options.only_solvers = arguments->solvers;
+      apply_time_limit(*arguments->time_limit, arguments->time_limit_s, options);
+      TerminalProgress progress(!arguments->quiet);
+      options.progress = [&progress](const std::string& solver, const std::string& part, long done,
+                                     long total) { progress.update(solver, part, done, total); };
       for (const auto& scene : scenes) {
         results.push_back(run_scene(scene, options));
+        progress.clear();
         if (!arguments->quiet && arguments->json != "-") print_result(results.back());
       }
       if (arguments->json == "-") {

@@ -24,6 +24,8 @@ struct VerifyArguments {
   int jobs = 0;
   bool quiet = false;
   std::string perturb;
+  double time_limit_s = 0.0;
+  const CLI::Option* time_limit = nullptr;
   TableArguments tables;
 };
 
@@ -92,6 +94,7 @@ int run_verify(const VerifyArguments& arguments) {
   const bool progress = !arguments.quiet && isatty(STDERR_FILENO);
   SceneRunOptions run_options = run_options_with_tables(arguments.tables);
   run_options.perturbation = parse_perturbation(arguments.perturb);
+  apply_time_limit(*arguments.time_limit, arguments.time_limit_s, run_options);
   const std::vector<SceneResult> results =
       run_scenes(scenes, jobs, run_options, [&](std::size_t done, std::size_t total, const std::string& name) {
         if (progress) fmt::print(stderr, "\r\033[K[{}/{}] {}", done, total, name);
@@ -152,6 +155,8 @@ void add_verify_command(CLI::App& app, std::function<int()>& run) {
   command->add_option("--perturb", arguments->perturb,
                       "Testing the harness: multiply one frequency of one solver by (1 + RELATIVE),\n"
                       "as SOLVER:inplane|outofplane:MODE:RELATIVE; the run must then fail");
+  arguments->time_limit = add_time_limit_option(
+      *command, arguments->time_limit_s, "for each scene, from the start of its statics");
   add_table_options(*command, arguments->tables);
   command->callback([arguments, &run] { run = [arguments] { return run_verify(*arguments); }; });
 }

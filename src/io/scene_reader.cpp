@@ -161,6 +161,12 @@ ForcedRequest read_forced(TableReader& forced, Scene& scene) {
   if (f.omegas_rad_s.empty()) {
     throw InvalidInput(fmt::format("{}: at least one forcing frequency needed", forced.where("frequencies")));
   }
+  if (f.omegas_rad_s.size() > SolveRequest::kMaxForcingFrequencies) {
+    throw InvalidInput(fmt::format("{}: {} forcing frequencies, at most {} per request (docs/scene-format.md, "
+                                   "\"Limits on work\")",
+                                   forced.where("frequencies"), f.omegas_rad_s.size(),
+                                   SolveRequest::kMaxForcingFrequencies));
+  }
   for (double omega : f.omegas_rad_s) {
     if (omega < 0.0) {
       throw InvalidInput(fmt::format("{}: forcing frequency {} must be >= 0", forced.where("frequencies"), omega));
@@ -181,8 +187,9 @@ void read_request(TableReader& root, Scene& scene) {
     }
     return static_cast<int>(value);
   };
-  scene.request.inplane_modes = count("inplane_modes", scene.request.inplane_modes, 0, 100000);
-  scene.request.outofplane_modes = count("outofplane_modes", scene.request.outofplane_modes, 0, 100000);
+  const int max_modes = SolveRequest::kMaxModesPerPlane;
+  scene.request.inplane_modes = count("inplane_modes", scene.request.inplane_modes, 0, max_modes);
+  scene.request.outofplane_modes = count("outofplane_modes", scene.request.outofplane_modes, 0, max_modes);
   scene.request.shapes = request.boolean("shapes", scene.request.shapes);
   scene.request.points = count("points", scene.request.points, 2, 1000000);
   scene.request.tension = request.boolean("tension", scene.request.tension);

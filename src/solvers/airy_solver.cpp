@@ -19,6 +19,7 @@
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
 #include "solvers/internal/taut_cable_theory.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena {
 
@@ -271,7 +272,8 @@ ModalResult AiryNumerics::inplane_modes(int count) const {
   const SolveContext& c = context_;
   const AiryModel model =
       build_airy_model(c.problem, c.statics, c.groups, options_.curvature_fit, options_.quadrature_panels);
-  const AiryRootScan scan = scan_airy_roots(model, c.groups, c.statics, count, options_);
+  WorkMeter meter(c, "airy", "in-plane modes", count);
+  const AiryRootScan scan = scan_airy_roots(model, c.groups, c.statics, count, options_, &meter);
   const bool need_shape = c.request.shapes || c.request.tension;
   const Vector stations = c.request.stations_m(c.problem.cable.length_m);
   const Vector travel_times = need_shape ? transverse_travel_times(
@@ -290,6 +292,7 @@ ModalResult AiryNumerics::inplane_modes(int count) const {
   summary.max_residual = need_shape ? max_residual : -1.0;
   add_scan_notes(scan, summary);
   set_inplane_outcome(static_cast<int>(result.modes.size()), count, scan, max_residual, summary);
+  mark_time_limit(meter, summary);
   return result;
 }
 

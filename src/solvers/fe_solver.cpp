@@ -21,6 +21,7 @@
 #include "solvers/internal/mode_tools.hpp"
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena {
 namespace internal {
@@ -222,7 +223,8 @@ ModalResult FeNumerics::modes(Plane plane, int count) {
   ModalResult result;
   SolverSummary& summary = result.summary;
   summary.resolution = fe_resolution(plan_);
-  const FePlaneEigenReport eigen = solve_level_modes(levels_, plane, count, options_, timings_);
+  WorkMeter meter(context_, "fe", std::string(to_string(plane)) + " eigen solves (mesh levels)", level_count(levels_));
+  const FePlaneEigenReport eigen = solve_level_modes(levels_, plane, count, options_, timings_, &meter);
   summary.termination = eigen.termination;
   summary.iterations = eigen.restarts;
   summary.operations = eigen.operations;
@@ -230,6 +232,12 @@ ModalResult FeNumerics::modes(Plane plane, int count) {
   summary.warnings = eigen.warnings;
   if (eigen.termination == Termination::NumericalFailure) {
     summary.message = fe_eigen_failure_message(plane, eigen);
+    return result;
+  }
+  if (meter.stopped()) {
+    // The modes are extrapolated from every level: none is available before all are solved.
+    summary.message = fmt::format("0 of {} {} modes", count, to_string(plane));
+    mark_time_limit(meter, summary);
     return result;
   }
   const int available = modes_on_every_level(levels_, plane, count);

@@ -24,6 +24,7 @@
 #include "solvers/internal/mode_tools.hpp"
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena {
 
@@ -136,7 +137,8 @@ ModalResult FrobeniusNumerics::modes(Plane plane, int count) {
   const bool inplane = plane == Plane::InPlane;
   PlaneSetup setup = base_;
   setup.inplane = inplane;
-  PlaneRoots found = find_frequencies(setup, count, root_settings());
+  WorkMeter meter(context_, "frobenius", std::string(to_string(plane)) + " modes", count);
+  PlaneRoots found = find_frequencies(setup, count, root_settings(), &meter);
   ModalResult result;
   if (inplane) result.proved_count_below_top = confirm_inplane_count(setup, count, root_settings(), found);
   const SolveRequest& request = context_.request;
@@ -158,6 +160,7 @@ ModalResult FrobeniusNumerics::modes(Plane plane, int count) {
         "mode count checked by Sturm oscillation: mode n has n - 1 interior nodes for n = 1..{}", found.roots.size()));
   }
   summarise_plane(plane, count, found, result);
+  mark_time_limit(meter, result.summary);
   return result;
 }
 
@@ -203,7 +206,8 @@ void FrobeniusNumerics::summarise_plane(Plane plane, int count, const PlaneRoots
 ForcedOutcome FrobeniusNumerics::forced(const ForcedRequest& request) {
   ForcedOutcome outcome;
   ForcedWork work;
-  outcome.responses = frobenius_forced_responses(base_, request, stations_, units_, work);
+  WorkMeter meter(context_, "frobenius", "forced frequencies", static_cast<long>(request.omegas_rad_s.size()));
+  outcome.responses = frobenius_forced_responses(base_, request, stations_, units_, work, &meter);
   std::size_t at_resonance = 0, declined = 0;
   double worst = 0.0;
   for (const ForcedResponse& r : outcome.responses) {
@@ -226,6 +230,7 @@ ForcedOutcome FrobeniusNumerics::forced(const ForcedRequest& request) {
   summary.notes.push_back(summary.resolution);
   summary.operations = work.evaluations;
   summary.max_error_estimate = worst > 0.0 ? worst : -1.0;
+  mark_time_limit(meter, summary);
   return outcome;
 }
 

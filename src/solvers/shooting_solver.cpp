@@ -21,6 +21,7 @@
 #include "solvers/internal/shooting_root_finder.hpp"
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena {
 
@@ -115,8 +116,11 @@ class ShootingNumerics final : public SolverNumerics {
   void describe(SolverSummary& summary) const override;
   ModalResult modes(Plane plane, int count) override;
   ForcedOutcome forced(const ForcedRequest& request) override {
-    return shooting_forced_responses(k_, request, context_.request.stations_m(k_.length_m),
-                                     integrator_settings(options_));
+    WorkMeter meter(context_, "shooting", "forced frequencies", static_cast<long>(request.omegas_rad_s.size()));
+    ForcedOutcome outcome = shooting_forced_responses(k_, request, context_.request.stations_m(k_.length_m),
+                                                      integrator_settings(options_), &meter);
+    mark_time_limit(meter, outcome.summary);
+    return outcome;
   }
 
  private:
@@ -178,8 +182,9 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
   ShootingRootFinder finder(
       [&integrator](double omega, double factor) { return integrator->shoot(omega, factor); },
       root_finder_settings(options_), guess, integration_plane == Plane::OutOfPlane);
+  WorkMeter meter(context_, "shooting", std::string(to_string(plane)) + " modes", count);
   try {
-    const std::vector<Root> roots = finder.find(count, summary.warnings);
+    const std::vector<Root> roots = finder.find(count, summary.warnings, &meter);
     add_modes(*integrator, roots, plane, count, result);
   } catch (const ShootingFailure& failure) {
     mark_failed(plane, failure, summary);
@@ -188,6 +193,7 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
     return result;
   }
   finish_summary(finder, *integrator, plane, count, result);
+  mark_time_limit(meter, summary);
   return result;
 }
 

@@ -20,13 +20,19 @@ std::string to_string(ForcingDirection direction) {
 }
 
 void SolveRequest::validate() const {
-  if (inplane_modes < 0 || inplane_modes > 100000) {
-    throw InvalidInput(fmt::format(
-        "Invalid SolveRequest::inplane_modes = {}: must be in [0, 100000]", inplane_modes));
+  // Limits on work (docs/scene-format.md, "Limits on work").
+  if (inplane_modes < 0 || inplane_modes > kMaxModesPerPlane) {
+    throw InvalidInput(fmt::format("Invalid SolveRequest::inplane_modes = {}: must be in [0, {}]",
+                                   inplane_modes, kMaxModesPerPlane));
   }
-  if (outofplane_modes < 0 || outofplane_modes > 100000) {
+  if (outofplane_modes < 0 || outofplane_modes > kMaxModesPerPlane) {
+    throw InvalidInput(fmt::format("Invalid SolveRequest::outofplane_modes = {}: must be in [0, {}]",
+                                   outofplane_modes, kMaxModesPerPlane));
+  }
+  if (forced && forced->omegas_rad_s.size() > kMaxForcingFrequencies) {
     throw InvalidInput(fmt::format(
-        "Invalid SolveRequest::outofplane_modes = {}: must be in [0, 100000]", outofplane_modes));
+        "Invalid ForcedRequest::omegas_rad_s: {} forcing frequencies, at most {} per request",
+        forced->omegas_rad_s.size(), kMaxForcingFrequencies));
   }
   if (points < 2 || points > 1000000) {
     throw InvalidInput(

@@ -65,9 +65,9 @@ bool selected(const SceneRunOptions& options, const std::string& name) {
              options.only_solvers.end();
 }
 
-void run_solvers(SceneResult& result, const SceneRunOptions& options) {
+void run_solvers(SceneResult& result, const SceneRunOptions& options, const RunLimits& limits) {
   const Scene& scene = result.scene;
-  const SolveContext context{scene.problem, *result.statics, *result.groups, result.request};
+  const SolveContext context{scene.problem, *result.statics, *result.groups, result.request, &limits};
   for (const std::string& name : scene.solver_names()) {
     if (!selected(options, name)) continue;
     const SolverEntry* entry = find_solver(name);
@@ -100,18 +100,31 @@ void SceneRunOptions::validate() const {
         "SceneRunOptions::tolerances is empty while checks are asked: pass builtin_tolerance_table() "
         "or a table read by read_tolerance_file()");
   }
+  if (time_limit_s) RunLimits::check_time_limit(*time_limit_s, "SceneRunOptions::time_limit_s");
 }
+
+namespace {
+
+// The budget of one scene, from now.
+RunLimits scene_limits(const SceneRunOptions& options) {
+  RunLimits limits = options.time_limit_s ? RunLimits::time_limit(*options.time_limit_s) : RunLimits{};
+  limits.progress = options.progress;
+  return limits;
+}
+
+}  // namespace
 
 SceneResult run_scene(const Scene& scene, const SceneRunOptions& options) {
   options.validate();
   const auto start = std::chrono::steady_clock::now();
+  const RunLimits limits = scene_limits(options);
   SceneResult result;
   result.scene = scene;
   if (!prepare(result)) {
     result.wall_time_s = seconds_since(start);
     return result;
   }
-  run_solvers(result, options);
+  run_solvers(result, options, limits);
   if (options.perturbation) apply_perturbation(*options.perturbation, result.outputs);
   if (options.checks && result.error.empty()) result.checks = internal::run_checks(result, options.tolerances, options.findings);
   result.wall_time_s = seconds_since(start);

@@ -251,3 +251,38 @@ TEST(Cli, AHugeAmplitudeGivesTheScaledResponseOrAnOverflowDiagnostic) {
   for (const Response& response : responses)
     EXPECT_TRUE(response.max_abs_tension_n.is_number() || !response.diagnostic.empty());
 }
+
+namespace {
+
+// --time-limit: a limit too small for the solve stops it with partial results and says so, exit 0;
+// a bad limit is bad usage naming the option; no progress line is written when stderr is not a
+// terminal (here a pipe), so logs stay clean.
+TEST(Cli, TimeLimitGivesAPartialResultAndNoProgressOffTerminal) {
+  const fs::path scene = write_scene("time_limit.toml", kGood + "[request]\ninplane_modes = 4\n");
+  const CliRun run = run_cli("solve " + scene.string() + " --solver shooting --time-limit 1e-9");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("time limit of 1e-09 s reached after 1 of 4 in-plane modes"), std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find('\r'), std::string::npos);
+  const CliRun bad = run_cli("solve " + scene.string() + " --time-limit -3");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.output.find("--time-limit = -3"), std::string::npos) << bad.output;
+  const fs::path dir = scene.parent_path() / "time_limit_suite";
+  fs::create_directories(dir / "scenes");
+  fs::copy_file(scene, dir / "scenes" / "one.toml", fs::copy_options::overwrite_existing);
+  const CliRun verify = run_cli("verify --scenes " + (dir / "scenes").string() + " --out " + (dir / "out").string() +
+                                " --time-limit 0");
+  EXPECT_EQ(verify.exit_code, 2);
+  EXPECT_NE(verify.output.find("--time-limit = 0"), std::string::npos) << verify.output;
+}
+
+// (The frequency limit is tested on SolveRequest: a scene of 1e5 frequencies takes a minute to
+// parse, see the TOML reader.)
+TEST(Cli, TooManyModesExitTwoNamingTheKey) {
+  const fs::path modes = write_scene("too_many_modes.toml", kGood + "[request]\ninplane_modes = 1001\n");
+  const CliRun run = run_cli("solve " + modes.string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.output.find("inplane_modes = 1001: must be in [0, 1000]"), std::string::npos) << run.output;
+}
+
+}  // namespace

@@ -2,6 +2,7 @@
 /// \file
 /// What a scene asks the solvers to compute (docs/scene-format.md, `[request]`). Only what is asked is computed.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +44,11 @@ struct ForcedRequest {
 
 /// What to compute.
 struct SolveRequest {
+  /// Limits on work (docs/scene-format.md, "Limits on work"): at the measured cost, the largest
+  /// request takes minutes, not days. Use a time limit (catena/solvers/run_limits.hpp) for less.
+  static constexpr int kMaxModesPerPlane = 1000;
+  static constexpr std::size_t kMaxForcingFrequencies = 100000;
+
   /// Number of lowest in-plane modes (0: none).
   int inplane_modes = 6;
   /// Number of lowest out-of-plane modes (0: none).

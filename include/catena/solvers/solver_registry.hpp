@@ -17,6 +17,7 @@
 
 #include "catena/models/cable.hpp"
 #include "catena/solvers/modal_result.hpp"
+#include "catena/solvers/run_limits.hpp"
 #include "catena/solvers/solve_request.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
@@ -38,6 +39,8 @@ struct SolveContext {
   const StaticSolution& statics;
   const DimensionlessGroups& groups;
   const SolveRequest& request;
+  /// The run's time limit and progress report (catena/solvers/run_limits.hpp); nullptr: none.
+  const RunLimits* limits = nullptr;
 };
 
 /// Description of one knob, generated from the solver's knob table: for `catena solvers`, the docs

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "catena/solvers/modal_result.hpp"
+#include "catena/solvers/run_limits.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 #include "catena/verification/check_result.hpp"
@@ -62,6 +63,11 @@ struct SceneRunOptions {
   std::vector<std::string> only_solvers;
   /// Compute the checks (otherwise statics and solvers only).
   bool checks = true;
+  /// Wall-clock budget of each scene [s], from the start of run_scene (none: no limit). When it
+  /// runs out, the solvers stop cooperatively and keep what they have (catena/solvers/run_limits.hpp).
+  std::optional<double> time_limit_s;
+  /// Progress of the solvers (see ProgressCallback); empty: none.
+  ProgressCallback progress;
   /// The expected agreement of each check. Required when `checks` is set (run_scene throws
   /// InvalidInput for an empty table, which would skip every check): pass
   /// builtin_tolerance_table() (catena/io/tolerance_reader.hpp, the compiled-in
@@ -71,7 +77,8 @@ struct SceneRunOptions {
   /// published value then fails). Default of the CLI: builtin_findings_table().
   FindingsTable findings;
 
-  /// Throws InvalidInput when checks are asked without a tolerance table.
+  /// Throws InvalidInput when checks are asked without a tolerance table, or for a time limit
+  /// that is not finite and > 0.
   void validate() const;
 };
 

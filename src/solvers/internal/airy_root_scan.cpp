@@ -99,7 +99,10 @@ AiryRootScan scan_airy_roots(const AiryModel& model,
                              const DimensionlessGroups& groups,
                              const StaticSolution& statics,
                              int count,
-                             const AirySolverOptions& options) {
+                             const AirySolverOptions& options,
+                             WorkMeter* meter) {
+  // A step costs one determinant (microseconds): the budget is checked once per chunk of steps.
+  constexpr long kStepsPerCheck = 1000;
   AiryRootScan scan;
   scan.cutoff_kl = spurious_root_cutoff_k_l(model, statics, groups, options.cutoff_fraction);
   const double limit_over_pi =
@@ -110,6 +113,7 @@ AiryRootScan scan_airy_roots(const AiryModel& model,
   Sample before;  // two samples back (valid when have_before)
   bool have_before = false;
   Sample previous{scan.cutoff_kl, scanner.det(scan.cutoff_kl)};
+  long steps = 0;
   for (double kl = previous.kl + step;
        kl <= scan.limit_kl + 0.5 * step && static_cast<int>(scan.roots.size()) < count;
        kl += step) {
@@ -118,6 +122,7 @@ AiryRootScan scan_airy_roots(const AiryModel& model,
     before = previous;
     have_before = true;
     previous = current;
+    if (++steps % kStepsPerCheck == 0 && meter && meter->stop_after(static_cast<long>(scan.roots.size()))) break;
   }
   std::sort(scan.roots.begin(), scan.roots.end());
   if (static_cast<int>(scan.roots.size()) > count) scan.roots.resize(static_cast<std::size_t>(count));

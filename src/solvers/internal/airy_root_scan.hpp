@@ -9,6 +9,7 @@
 
 #include "catena/solvers/airy_solver.hpp"
 #include "solvers/internal/airy_model.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena::internal {
 
@@ -31,11 +32,13 @@ double spurious_root_cutoff_k_l(const AiryModel& model,
                                 double cutoff_fraction);
 
 /// The lowest `count` roots above the cutoff (options: cutoff_fraction, scan_step_k_l_over_pi,
-/// max_k_l_over_pi, tolerance_bits).
+/// max_k_l_over_pi, tolerance_bits). A `meter` is told the roots found every kStepsPerCheck
+/// steps and may stop the scan early (the roots below the point reached).
 AiryRootScan scan_airy_roots(const AiryModel& model,
                              const DimensionlessGroups& groups,
                              const StaticSolution& statics,
                              int count,
-                             const AirySolverOptions& options);
+                             const AirySolverOptions& options,
+                             WorkMeter* meter = nullptr);
 
 }  // namespace catena::internal

@@ -9,6 +9,7 @@
 
 #include "solvers/internal/fe_banded_ldlt.hpp"
 #include "solvers/internal/fe_summary.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena::internal {
 namespace {
@@ -183,6 +184,7 @@ ForcedOutcome fe_forced_response(const ForcedRequest& request,
   if (plan.has_coarse()) meshes.push_back(static_cast<std::size_t>(plan.main_coarse));
   assemble_missing(levels, forcing.plane, meshes);
   ForcedOutcome outcome;
+  WorkMeter meter(context, "fe", "forced frequencies", static_cast<long>(request.omegas_rad_s.size()));
   for (double omega : request.omegas_rad_s) {
     ForcedResponse response;
     response.omega_rad_s = omega;
@@ -194,9 +196,11 @@ ForcedOutcome fe_forced_response(const ForcedRequest& request,
     response.near_resonance = response.diagnostic.empty() && near_natural(omega, naturals);
     if (!response.diagnostic.empty()) outcome.summary.warnings.push_back(response.diagnostic);
     outcome.responses.push_back(std::move(response));
+    if (meter.stop_after(static_cast<long>(outcome.responses.size()))) break;
   }
   timings.forced_s += seconds_since(start);
   describe_forced(outcome, timings);
+  mark_time_limit(meter, outcome.summary);
   return outcome;
 }
 

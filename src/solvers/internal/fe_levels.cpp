@@ -126,8 +126,10 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
                                      Plane plane,
                                      int modes,
                                      const FeSolverOptions& options,
-                                     FeTimings& timings) {
+                                     FeTimings& timings,
+                                     WorkMeter* meter) {
   FePlaneEigenReport report;
+  long solved = 0;
   for (auto& row : levels) {
     for (FeLevel& level : row) {
       const auto start = Clock::now();
@@ -151,9 +153,16 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
         report.max_backward_error = std::max(report.max_backward_error, eigen.max_backward_error);
       }
       level.eigen[plane] = std::move(eigen);
+      if (meter && meter->stop_after(++solved)) return report;
     }
   }
   return report;
+}
+
+long level_count(const FeLevels& levels) {
+  long count = 0;
+  for (const auto& row : levels) count += static_cast<long>(row.size());
+  return count;
 }
 
 void assemble_missing(FeLevels& levels, Plane plane, const std::vector<std::size_t>& meshes) {

@@ -14,6 +14,7 @@
 #include "solvers/internal/fe_chain_statics.hpp"
 #include "solvers/internal/fe_eigen.hpp"
 #include "solvers/internal/fe_operators.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena {
 struct FeSolverOptions;
@@ -121,11 +122,15 @@ struct FePlaneEigenReport {
 };
 
 /// Assembles the operators of `plane` and solves its lowest `modes` eigenpairs on every level.
+/// A `meter` counts the levels solved; when it stops, the later levels are left unsolved.
 FePlaneEigenReport solve_level_modes(FeLevels& levels,
                                      Plane plane,
                                      int modes,
                                      const FeSolverOptions& options,
-                                     FeTimings& timings);
+                                     FeTimings& timings,
+                                     WorkMeter* meter = nullptr);
+/// Number of levels (eigen solves per plane).
+long level_count(const FeLevels& levels);
 
 /// The operators of `plane` on the levels that do not hold them yet, for mesh indices `meshes`.
 void assemble_missing(FeLevels& levels, Plane plane, const std::vector<std::size_t>& meshes);

@@ -274,7 +274,7 @@ EndDisplacement forced_end_displacement(const ForcedRequest& forced, double sigm
 
 std::vector<ForcedResponse> frobenius_forced_responses(const PlaneSetup& base, const ForcedRequest& forced,
                                                        const FieldStations& stations, const CableUnits& units,
-                                                       ForcedWork& work) {
+                                                       ForcedWork& work, WorkMeter* meter) {
   const bool at_b = forced.end == CableEnd::B;
   PlaneSetup setup = base;
   setup.inplane = forced.direction != ForcingDirection::OutOfPlane;
@@ -292,6 +292,7 @@ std::vector<ForcedResponse> frobenius_forced_responses(const PlaneSetup& base, c
               false);
       responses.push_back(std::move(response));
     }
+    if (meter && meter->stop_after(static_cast<long>(responses.size()))) break;
   }
   return responses;
 }

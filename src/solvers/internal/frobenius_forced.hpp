@@ -27,6 +27,7 @@
 #include "catena/solvers/modal_result.hpp"
 #include "catena/solvers/solve_request.hpp"
 #include "solvers/internal/frobenius_fields.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena::internal {
 
@@ -59,10 +60,11 @@ struct ForcedWork {
 
 /// The response at each of `forced`'s frequencies, on `stations`. `base` is the in-plane boundary
 /// problem (the plane follows the forcing direction). `work` gains the largest series and centre
-/// counts of the bases used.
+/// counts of the bases used. A `meter` is told each frequency done and may stop early (the
+/// responses computed so far).
 std::vector<ForcedResponse> frobenius_forced_responses(const PlaneSetup& base, const ForcedRequest& forced,
                                                        const FieldStations& stations, const CableUnits& units,
-                                                       ForcedWork& work);
+                                                       ForcedWork& work, WorkMeter* meter = nullptr);
 
 /// Estimated number of expansion centres the forced basis needs at Omega = omega (phase along the
 /// longer half of the cable over the phase one expansion covers).

@@ -19,9 +19,9 @@ namespace {
 // lives here so that the scan can be resumed when a bracket is lost in refinement.
 class FrequencyFinder {
  public:
-  FrequencyFinder(const PlaneSetup& setup, int count, const RootSettings& settings)
+  FrequencyFinder(const PlaneSetup& setup, int count, const RootSettings& settings, WorkMeter* meter)
       : setup_(setup), coarse_(setup), count_(count), settings_(settings),
-        spacing_(wkb_mode_spacing(setup)), step_(settings.scan_fraction * spacing_) {}
+        spacing_(wkb_mode_spacing(setup)), step_(settings.scan_fraction * spacing_), meter_(meter) {}
 
   PlaneRoots run();
 
@@ -45,7 +45,13 @@ class FrequencyFinder {
   PlaneRoots result_;
   std::vector<std::pair<double, double>> brackets_;
   double x0_ = 0.0, f0_ = 0.0, x1_ = 0.0, f1_ = 0.0;
+  WorkMeter* meter_;
+  long scan_steps_ = 0;
 };
+
+// The scan of a few hundred modes takes seconds: once it has bracketed a root, the budget is
+// checked every this many grid points (and the brackets found are refined).
+constexpr long kScanStepsPerCheck = 10;
 
 // Cancellation (largest series term / column norm) at the top of the expected range decides the
 // precision of the scan: double while it leaves 8 digits, then long double, then quad. A
@@ -110,6 +116,7 @@ std::optional<double> FrequencyFinder::hidden_crossing(double a, double b, doubl
 void FrequencyFinder::scan_more(std::size_t wanted) {
   const double limit = (3.0 * count_ + 20.0) * spacing_;
   while (brackets_.size() < wanted && x1_ < limit) {
+    if (meter_ && !brackets_.empty() && ++scan_steps_ % kScanStepsPerCheck == 0 && meter_->stop_after(0)) break;
     const double x2 = x1_ + step_, f2 = coarse(x2);
     if ((f0_ < 0.0) != (f1_ < 0.0)) brackets_.emplace_back(x0_, x1_);
     // A local minimum of |det| without a sign change on either side may hide two close roots.
@@ -145,8 +152,10 @@ PlaneRoots FrequencyFinder::run() {
   f1_ = coarse(x1_);
   scan_more(static_cast<std::size_t>(count_));
   const double rtol = std::max(settings_.tolerance * 0.1, 4e-16);
-  for (std::size_t index = 0; index < brackets_.size() && static_cast<int>(result_.roots.size()) < count_; ++index)
+  for (std::size_t index = 0; index < brackets_.size() && static_cast<int>(result_.roots.size()) < count_; ++index) {
     refine_bracket(index, rtol);
+    if (meter_ && meter_->stop_after(static_cast<long>(result_.roots.size()))) break;
+  }
   return std::move(result_);
 }
 
@@ -236,8 +245,9 @@ double wkb_mode_spacing(const PlaneSetup& setup) {
   return kPi / integral;
 }
 
-PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const RootSettings& settings) {
-  return FrequencyFinder(setup, count, settings).run();
+PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const RootSettings& settings,
+                            WorkMeter* meter) {
+  return FrequencyFinder(setup, count, settings, meter).run();
 }
 
 }  // namespace catena::internal

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "solvers/internal/frobenius_boundary.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena::internal {
 
@@ -59,8 +60,10 @@ struct PlaneRoots {
 double wkb_mode_spacing(const PlaneSetup& setup);
 
 /// The `count` lowest roots of the scaled boundary determinant of `setup` (fewer when the scan
-/// reaches (3 count + 20) mode spacings first), ascending.
-PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const RootSettings& settings);
+/// reaches (3 count + 20) mode spacings first), ascending. A `meter` is told each root found and
+/// may stop the refinement early (fewer roots, the lowest ones).
+PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const RootSettings& settings,
+                            WorkMeter* meter = nullptr);
 
 /// Root of f in [lo, hi] (f(lo) f(hi) < 0) by Illinois regula falsi, bisecting every fourth step
 /// so that the bracket shrinks at least geometrically. Stops when hi - lo <= relative_tolerance

@@ -121,7 +121,8 @@ ForcedResponse shooting_forced_response(ShootingIntegrator& integrator,
 }
 
 ForcedOutcome shooting_forced_responses(const ShootingCoefficients& k, const ForcedRequest& forced,
-                                        const Vector& stations, const IntegratorSettings& settings) {
+                                        const Vector& stations, const IntegratorSettings& settings,
+                                        WorkMeter* meter) {
   ForcedOutcome outcome;
   SolverSummary& summary = outcome.summary;
   const std::size_t asked = forced.omegas_rad_s.size();
@@ -143,6 +144,7 @@ ForcedOutcome shooting_forced_responses(const ShootingCoefficients& k, const For
             "sqrt(det G) < 1e-3): the response is resonance-amplified and sensitive to omega",
             omega));
       }
+      if (meter && meter->stop_after(static_cast<long>(outcome.responses.size()))) break;
     }
     summary.termination = Termination::Converged;
     summary.message = fmt::format("{} of {} forced frequencies", outcome.responses.size(), asked);

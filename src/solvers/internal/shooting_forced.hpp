@@ -12,6 +12,7 @@
 #include "solvers/internal/shooting_coefficients.hpp"
 #include "solvers/internal/shooting_integrator.hpp"
 #include "solvers/internal/solver_driver.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena::internal {
 
@@ -26,7 +27,9 @@ ForcedResponse shooting_forced_response(ShootingIntegrator& integrator,
 /// The response at every frequency of `forced`, with the summary of that part: Converged with
 /// warnings for resonances, or, when the integration fails, the responses computed before the
 /// failure (NoConvergence; NumericalFailure when there are none). Never throws ShootingFailure.
+/// A `meter` is told each frequency done and may stop early (the responses computed so far).
 ForcedOutcome shooting_forced_responses(const ShootingCoefficients& k, const ForcedRequest& forced,
-                                        const Vector& stations, const IntegratorSettings& settings);
+                                        const Vector& stations, const IntegratorSettings& settings,
+                                        WorkMeter* meter = nullptr);
 
 }  // namespace catena::internal

@@ -20,7 +20,9 @@ double ShootingRootFinder::count_function(const Sample& sample, int n) {
   return internal::count_function(sample.count, sample.angle_min, sample.angle_max, n);
 }
 
-std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::string>& warnings) {
+std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::string>& warnings,
+                                           WorkMeter* meter) {
+  auto stop_after = [meter](int found) { return meter && meter->stop_after(found); };
   std::vector<Root> roots;
   const Sample& zero = evaluate(0.0);
   if (zero.count != 0) {
@@ -36,6 +38,7 @@ std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::strin
     const auto [lo, hi] = bracket(n);
     roots.push_back(refine_scalar(n, lo, hi));
     ++n;
+    if (stop_after(n - 1)) return finish(roots);
   }
   while (n <= num_modes) {
     const auto [lo, hi] = bracket(n);
@@ -44,16 +47,23 @@ std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::strin
     if (a.count == n - 1 && b.count == n && a.determinant * b.determinant < 0.0) {
       roots.push_back(refine(lo, hi));
       ++n;
+      if (stop_after(n - 1)) break;
     } else if (hi - lo <= settings_.root_tolerance * hi) {
       roots.push_back(multiple_root(n, lo, hi, warnings));
       n += roots.back().multiplicity;
+      if (stop_after(n - 1)) break;
     } else {
       evaluate(trial_point(n, lo, hi));
     }
   }
-  const auto above = samples_.upper_bound(roots.back().omega);
+  return finish(roots);
+}
+
+// The roots found, with the count proved at the smallest sample above the top one.
+std::vector<Root> ShootingRootFinder::finish(std::vector<Root>& roots) {
+  const auto above = roots.empty() ? samples_.end() : samples_.upper_bound(roots.back().omega);
   proved_count_ = above == samples_.end() ? -1 : above->second.count;
-  return roots;
+  return std::move(roots);
 }
 
 const ShootingRootFinder::Sample& ShootingRootFinder::evaluate(double omega) {

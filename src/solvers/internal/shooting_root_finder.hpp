@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "solvers/internal/shooting_integrator.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena::internal {
 
@@ -57,8 +58,9 @@ class ShootingRootFinder {
 
   /// The lowest `num_modes` eigenfrequencies (a multiple root counts its multiplicity), with
   /// warnings about counts that did not behave. Throws ShootingFailure when a shot fails or
-  /// more than kMaxShots are needed.
-  std::vector<Root> find(int num_modes, std::vector<std::string>& warnings);
+  /// more than kMaxShots are needed. A `meter` is told each mode found and may stop the search
+  /// early (fewer roots, the lowest ones).
+  std::vector<Root> find(int num_modes, std::vector<std::string>& warnings, WorkMeter* meter = nullptr);
 
   long shots() const { return shots_; }
   /// The count at the smallest sample above the top root (-1 when none).
@@ -77,6 +79,7 @@ class ShootingRootFinder {
   };
   static double count_function(const Sample& sample, int n);
 
+  std::vector<Root> finish(std::vector<Root>& roots);
   const Sample& evaluate(double omega);
   void raise_to_count(double& top, int num_modes);
   std::pair<double, double> bracket(int n) const;

@@ -8,6 +8,7 @@
 
 #include "catena/core/error.hpp"
 #include "solvers/internal/result_validation.hpp"
+#include "solvers/internal/work_meter.hpp"
 
 namespace catena::internal {
 
@@ -19,6 +20,20 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// The driver's check between parts (catena/solvers/run_limits.hpp): once a part has run and the
+// run's deadline has passed, the parts not started yet are skipped and reported with nothing done.
+std::optional<SolverSummary> skipped_for_time(const SolveContext& context, const SolverOutput& output,
+                                              const std::string& units, long total) {
+  const bool after_a_part = output.inplane || output.outofplane;
+  if (!after_a_part || !context.limits || !context.limits->expired()) return std::nullopt;
+  SolverSummary summary;
+  summary.solver = output.solver;
+  summary.termination = Termination::NoConvergence;
+  summary.message = "No convergence: " + time_limit_message(*context.limits, 0, total, units);
+  summary.wall_time_s = 0.0;
+  return summary;
+}
+
 // The forced plane follows the forcing direction: out of plane only when the end moves normal to
 // the plane of the supports.
 void run_parts(const SolveContext& context, SolverNumerics& numerics, SolverOutput& output,
@@ -28,6 +43,12 @@ void run_parts(const SolveContext& context, SolverNumerics& numerics, SolverOutp
                                           {Plane::OutOfPlane, request.outofplane_modes}};
   for (const auto& [plane, count] : planes) {
     if (count <= 0) continue;
+    if (auto skipped = skipped_for_time(context, output, std::string(to_string(plane)) + " modes", count)) {
+      ModalResult& result = (plane == Plane::InPlane ? output.inplane : output.outofplane).emplace();
+      result.plane = plane;
+      result.summary = *skipped;
+      continue;
+    }
     const auto start = Clock::now();
     ModalResult result = numerics.modes(plane, count);
     validate_modal_result(result, count);
@@ -37,6 +58,11 @@ void run_parts(const SolveContext& context, SolverNumerics& numerics, SolverOutp
     (plane == Plane::InPlane ? output.inplane : output.outofplane) = std::move(result);
   }
   if (request.forced) {
+    const long frequencies = static_cast<long>(request.forced->omegas_rad_s.size());
+    if (auto skipped = skipped_for_time(context, output, "forced frequencies", frequencies)) {
+      forced = ForcedOutcome{{}, *skipped};
+      return;
+    }
     const auto start = Clock::now();
     // The model is linear in the amplitude: solved for its mantissa, scaled exactly by a power of
     // two here, so that no amplitude overflows a solve (result_validation.hpp).
