@@ -111,15 +111,21 @@ def bad_converged_in(scene):
     return None
 
 
-def strings_in(value):
+# Keys whose text Catena writes itself (names, descriptions and sources echo the scene's own
+# strings, which a mutant may have set to "nan").
+GENERATED_TEXT_KEYS = {"message", "brief", "warnings", "notes", "detail", "error", "diagnostic"}
+
+
+def generated_strings(value, key=None):
     if isinstance(value, str):
-        yield value
+        if key in GENERATED_TEXT_KEYS:
+            yield value
     elif isinstance(value, dict):
-        for item in value.values():
-            yield from strings_in(item)
+        for item_key, item in value.items():
+            yield from generated_strings(item, item_key)
     elif isinstance(value, list):
         for item in value:
-            yield from strings_in(item)
+            yield from generated_strings(item, key)
 
 
 def check_json(path):
@@ -135,7 +141,7 @@ def check_json(path):
     except ValueError as error:
         kind = "nan" if "in JSON" in str(error) else "bad-output"
         return kind, f"JSON: {error}"[:200]
-    for text in strings_in(document):
+    for text in generated_strings(document):
         if NAN_TEXT.search(text):
             return "nan", f"message: {text}"[:200]
     for scene in document.get("scenes", []):
