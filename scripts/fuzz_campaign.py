@@ -16,7 +16,8 @@ the campaign and the in-process fuzz test share one definition of a mutation. Ea
     exit-3      internal error or a scene left unsolved by a numerical failure
     exit-other  any other exit status
     timeout     still running after --timeout seconds
-    nan         NaN or Infinity in the JSON, or "nan" printed as a number in a message
+    nan         NaN or Infinity in the JSON, or "nan" printed as a number in a message (when the
+                input itself has no "nan" for the message to repeat)
     bad-output  a JSON file left behind that is empty or does not parse
     bad-converged  a result reported as converged with a null, non-finite or non-positive
                 frequency, or a null forced response without a diagnostic
@@ -128,8 +129,9 @@ def generated_strings(value, key=None):
             yield from generated_strings(item, key)
 
 
-def check_json(path):
-    """(class, detail) for a JSON result that is not clean, else None."""
+def check_json(path, input_has_nan):
+    """(class, detail) for a JSON result that is not clean, else None. A message may repeat a "nan"
+    the input itself contains (naming the bad value): only a NaN the input did not have counts."""
     if not os.path.exists(path):
         return None
     with open(path, "rb") as handle:
@@ -142,7 +144,7 @@ def check_json(path):
         kind = "nan" if "in JSON" in str(error) else "bad-output"
         return kind, f"JSON: {error}"[:200]
     for text in generated_strings(document):
-        if NAN_TEXT.search(text):
+        if NAN_TEXT.search(text) and not input_has_nan:
             return "nan", f"message: {text}"[:200]
     for scene in document.get("scenes", []):
         detail = bad_converged_in(scene)
@@ -171,10 +173,12 @@ def run_mutant(cli, arguments, mutants_dir, json_dir, name):
         return name, "exit-3", first_line, elapsed
     if run.returncode not in (0, 1, 2):
         return name, "exit-other", f"exit {run.returncode}: {first_line}", elapsed
-    finding = check_json(result_path)
+    with open(mutant, "rb") as handle:
+        input_has_nan = NAN_TEXT.search(handle.read().decode("utf-8", errors="replace")) is not None
+    finding = check_json(result_path, input_has_nan)
     # toml11's hints list the valid float literals ("inf, nan"): not a value we printed.
     nan_lines = [line for line in stderr.splitlines() if NAN_TEXT.search(line) and not line.startswith("Hint:")]
-    if finding is None and nan_lines:
+    if finding is None and nan_lines and not input_has_nan:
         finding = ("nan", f"stderr: {nan_lines[0][:200]}")
     if finding:
         return name, finding[0], finding[1], elapsed
