@@ -1,11 +1,13 @@
 # The README's two commands on a fresh machine:
 #   make verify   install what is missing, build (Release), run the verification suite
 #   make test     install what is missing, build, run every test (ctest)
+#   make test-sanitize   the same tests and part of the suite under ASan + UBSan (docs/testing.md)
+#   make fuzz-campaign   5000 mutated scenes through the CLI, fixed seed (docs/testing.md)
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all setup configure build verify test bench clean
+.PHONY: all setup configure build verify test test-sanitize fuzz-campaign bench clean
 
 all: build
 
@@ -28,6 +30,29 @@ verify: build
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# AddressSanitizer + UndefinedBehaviorSanitizer (with float-cast-overflow) in its own build
+# directory, -O1 with assert()s on: the unit tests, a shorter fuzz run, and the scene families in
+# SANITIZE_FILTERS through `catena verify` (one --filter each; SANITIZE_FILTERS=all runs the
+# whole suite). Any sanitizer report aborts the process, so the target fails.
+SANITIZE_DIR     ?= build-sanitize
+SANITIZE_FILTERS ?= analytic physical grinfogel stress-deep-sag curves gale-b-3-hb0.50
+test-sanitize: setup
+	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g" \
+	      -DCATENA_SANITIZE=ON -DCATENA_FUZZ_ITERATIONS=500 $(CMAKE_FLAGS)
+	cmake --build $(SANITIZE_DIR) -j $(JOBS)
+	cd $(SANITIZE_DIR) && ctest --output-on-failure -j $(JOBS) -E '^(verification_suite|report_in_browser)$$'
+	@if [ "$(SANITIZE_FILTERS)" = all ]; then \
+	  $(SANITIZE_DIR)/catena verify --scenes verification/scenes --quiet --out $(SANITIZE_DIR)/report; \
+	else for family in $(SANITIZE_FILTERS); do \
+	  echo "sanitized suite: scenes matching '$$family'"; \
+	  $(SANITIZE_DIR)/catena verify --scenes verification/scenes --filter $$family --quiet \
+	      --out $(SANITIZE_DIR)/report-$$family || exit 1; \
+	done; fi
+
+# The mutant campaign (scripts/fuzz_campaign.py) on the Release build: 5000 mutants, seed 18.
+fuzz-campaign: build
+	python3 scripts/fuzz_campaign.py --build $(BUILD_DIR)
 
 bench: setup
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DCATENA_BUILD_BENCHMARKS=ON $(CMAKE_FLAGS)
