@@ -20,17 +20,19 @@ std::string to_string(ForcingDirection direction) {
 }
 
 void SolveRequest::validate() const {
-  if (inplane_modes < 0 || inplane_modes > 100000) {
+  auto require_in = [](const char* field, long value, long low, long high) {
+    if (value < low || value > high) {
+      throw InvalidInput(fmt::format("Invalid SolveRequest::{} = {}: must be in [{}, {}]", field, value, low, high));
+    }
+  };
+  require_in("inplane_modes", inplane_modes, 0, kMaxRequestModes);
+  require_in("outofplane_modes", outofplane_modes, 0, kMaxRequestModes);
+  require_in("points", points, 2, kMaxRequestPoints);
+  const long shape_values = shapes ? long(points) * (inplane_modes + outofplane_modes) : 0;
+  if (shape_values > kMaxShapeValues) {
     throw InvalidInput(fmt::format(
-        "Invalid SolveRequest::inplane_modes = {}: must be in [0, 100000]", inplane_modes));
-  }
-  if (outofplane_modes < 0 || outofplane_modes > 100000) {
-    throw InvalidInput(fmt::format(
-        "Invalid SolveRequest::outofplane_modes = {}: must be in [0, 100000]", outofplane_modes));
-  }
-  if (points < 2 || points > 1000000) {
-    throw InvalidInput(
-        fmt::format("Invalid SolveRequest::points = {}: must be in [2, 1000000]", points));
+        "Invalid SolveRequest: points x modes = {} x {} = {} shape values: must be <= {} (ask for fewer "
+        "points or modes)", points, inplane_modes + outofplane_modes, shape_values, kMaxShapeValues));
   }
   if (forced) {
     if (!std::isfinite(forced->amplitude_m) || forced->amplitude_m <= 0.0) {

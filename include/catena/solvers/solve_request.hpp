@@ -36,6 +36,14 @@ struct ForcedRequest {
   std::vector<double> omegas_rad_s;
 };
 
+/// Most modes a request may ask for in each plane (docs/scene-format.md, "Limits").
+inline constexpr int kMaxRequestModes = 100000;
+/// Most stations a request may ask for (docs/scene-format.md, "Limits").
+inline constexpr int kMaxRequestPoints = 100000;
+/// Most values of one shape table: points x (inplane_modes + outofplane_modes) when shapes are
+/// asked. Bounds the memory and the size of the results JSON (a few hundred MB at the limit).
+inline constexpr long kMaxShapeValues = 1000000;
+
 /// What to compute.
 struct SolveRequest {
   /// Number of lowest in-plane modes (0: none).
@@ -44,7 +52,7 @@ struct SolveRequest {
   int outofplane_modes = 0;
   /// Mode shapes on `points` equally spaced stations s_j = j L / (points - 1).
   bool shapes = false;
-  /// Stations for shapes, tension and forced response; >= 2.
+  /// Stations for shapes, tension and forced response; in [2, kMaxRequestPoints].
   int points = 101;
   /// Dynamic tension of each mode (along the cable when shapes are asked, else its maximum).
   bool tension = false;
