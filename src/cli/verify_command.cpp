@@ -137,6 +137,26 @@ std::string solver_column(const SceneResult& result) {
   return text.empty() ? "statics only" : text;
 }
 
+// One line per scene (unless quiet), then one line per failed check.
+void print_table(const std::vector<SceneResult>& results, bool quiet) {
+  if (!quiet) {
+    fmt::print("{:<48} {:>8} {:>7} {:>9}  {}\n", "scene", "checks", "failed", "time [ms]", "solvers");
+    for (const auto& result : results) {
+      fmt::print("{:<48} {:>8} {:>7} {:>9.1f}  {}\n", result.scene.name, result.checks.size(),
+                 result.failed_checks(), result.wall_time_s * 1e3,
+                 result.error.empty() ? solver_column(result) : "ERROR: " + result.error);
+    }
+  }
+  for (const auto& result : results) {
+    for (const auto& check : result.checks) {
+      if (check.verdict != Verdict::Fail) continue;
+      fmt::print("FAIL {} / {} / {}{}: measured {:.3e} > tolerance {:.3e}: {}\n", result.scene.name,
+                 check.check, check.compare, check.mode ? fmt::format(" mode {}", check.mode) : "",
+                 check.measured, check.tolerance, check.detail);
+    }
+  }
+}
+
 int run_verify(const VerifyArguments& arguments) {
   const auto start = std::chrono::steady_clock::now();
   const auto report = std::filesystem::path(arguments.out) / "report.json";
@@ -173,22 +193,7 @@ int run_verify(const VerifyArguments& arguments) {
   }
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  if (!arguments.quiet) {
-    fmt::print("{:<48} {:>8} {:>7} {:>9}  {}\n", "scene", "checks", "failed", "time [ms]", "solvers");
-    for (const auto& result : results) {
-      fmt::print("{:<48} {:>8} {:>7} {:>9.1f}  {}\n", result.scene.name, result.checks.size(),
-                 result.failed_checks(), result.wall_time_s * 1e3,
-                 result.error.empty() ? solver_column(result) : "ERROR: " + result.error);
-    }
-  }
-  for (const auto& result : results) {
-    for (const auto& check : result.checks) {
-      if (check.verdict != Verdict::Fail) continue;
-      fmt::print("FAIL {} / {} / {}{}: measured {:.3e} > tolerance {:.3e}: {}\n", result.scene.name,
-                 check.check, check.compare, check.mode ? fmt::format(" mode {}", check.mode) : "",
-                 check.measured, check.tolerance, check.detail);
-    }
-  }
+  print_table(results, arguments.quiet);
   write_results_json(report, results);
   fmt::print("{} scenes, {} checks, {} failed, {} source discrepancies, {} scene errors; {:.1f} s on {} "
              "threads; wrote {}\n",
