@@ -9,15 +9,16 @@
 namespace catena {
 namespace {
 
-void require_finite_positive(double value, const char* field, const char* unit) {
+void require_finite_positive(double value, const char* field, const char* unit,
+                             double largest = kMaxCableMagnitude) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw InvalidInput(fmt::format("Invalid CableProperties::{} = {}: must be finite and > 0 [{}]",
                                    field, value, unit));
   }
-  if (value < kMinCableMagnitude || value > kMaxCableMagnitude) {
+  if (value < kMinCableMagnitude || value > largest) {
     throw InvalidInput(fmt::format("Invalid CableProperties::{} = {}: must be in [{:g}, {:g}] [{}] (beyond, the "
                                    "statics overflow or underflow)",
-                                   field, value, kMinCableMagnitude, kMaxCableMagnitude, unit));
+                                   field, value, kMinCableMagnitude, largest, unit));
   }
 }
 
@@ -35,7 +36,7 @@ void CableProperties::validate() const {
         "Invalid CableProperties::axial_stiffness_n = {}: must be > 0 or +inf (inextensible) [N]",
         axial_stiffness_n));
   }
-  if (!is_inextensible()) require_finite_positive(axial_stiffness_n, "axial_stiffness_n", "N");
+  if (!is_inextensible()) require_finite_positive(axial_stiffness_n, "axial_stiffness_n", "N", kMaxAxialStiffness);
   if (!std::isfinite(added_mass_kg_per_m) || added_mass_kg_per_m < 0.0) {
     throw InvalidInput(fmt::format(
         "Invalid CableProperties::added_mass_kg_per_m = {}: must be finite and >= 0 [kg/m]",

@@ -198,6 +198,13 @@ TEST(Cli, SolveRefusesADeviceAndADeeplyNestedFile) {
   EXPECT_NE(run.output.find("nested deeper than 64 levels"), std::string::npos) << run.output;
 }
 
+TEST(Cli, ReportRefusesAResultsFileThatIsADevice) {
+  const fs::path out = fs::temp_directory_path() / "catena_cli_report_dev";
+  const CliRun run = run_cli("report --from /dev/zero --no-figures --out " + out.string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("/dev/zero: cannot read results JSON: a character device"), std::string::npos) << run.output;
+}
+
 // A scene file name that is not UTF-8 ended in an internal error when the JSON was written
 // (exit 3, 0-byte file): the name is now stored escaped.
 TEST(Cli, AFileNameThatIsNotUtf8IsStoredEscaped) {

@@ -52,7 +52,9 @@ TEST(CableProperties, RejectsMagnitudesThatOverflowTheStaticsNamingTheField) {
   expect_invalid(with([](Problem& p) { p.cable.length_m = 1e300; }), "length_m = 1e+300: must be in [1e-15, 1e+15]");
   expect_invalid(with([](Problem& p) { p.cable.weight_n_per_m = 1e16; }), "weight_n_per_m");
   expect_invalid(with([](Problem& p) { p.cable.weight_n_per_m = 1e-16; }), "weight_n_per_m");
-  expect_invalid(with([](Problem& p) { p.cable.axial_stiffness_n = 1e300; }), "axial_stiffness_n");
+  expect_invalid(with([](Problem& p) { p.cable.axial_stiffness_n = 1e300; }), "axial_stiffness_n = 1e+300: must be in [1e-15, 1e+30]");
+  expect_invalid(with([](Problem& p) { p.cable.axial_stiffness_n = 1e-16; }), "axial_stiffness_n");
+  EXPECT_NO_THROW(with([](Problem& p) { p.cable.axial_stiffness_n = 1e30; })());
   expect_invalid(with([](Problem& p) { p.cable.mass_kg_per_m = 1e300; }), "mass_kg_per_m");
   expect_invalid(with([](Problem& p) { p.cable.added_mass_kg_per_m = 1e300; }), "added_mass_kg_per_m");
   expect_invalid(with([](Problem& p) { p.supports.b_m = Vec2(1e308, 0.0); }), "within +-1e+15");

@@ -15,6 +15,10 @@ namespace catena {
 /// EA may also be +inf (inextensible); ma and coordinates may also be 0.
 inline constexpr double kMinCableMagnitude = 1e-15;
 inline constexpr double kMaxCableMagnitude = 1e15;
+/// EA may be larger: a taut string of small static strain needs EA up to ~1e20 N (Grinfogel's
+/// groups with eps = 1e-6, lambda2 = 1e4 at 89 deg), and EA enters the statics through its inverse
+/// or times a strain. Beyond 1e30 N, write "inf".
+inline constexpr double kMaxAxialStiffness = 1e30;
 
 /// Material and section of a uniform cable, per unit *unstretched* length.
 struct CableProperties {

@@ -1,7 +1,6 @@
 #include "catena/io/report.hpp"
 
 #include <fmt/format.h>
-#include <fstream>
 
 #include "catena/core/error.hpp"
 #include "catena/io/file_access.hpp"
@@ -15,9 +14,9 @@ namespace {
 using internal::json;
 
 json read_results(const std::filesystem::path& results_json) {
-  std::ifstream in(results_json);
-  if (!in) throw ParseError(fmt::format("{}: cannot open results JSON", path_text(results_json)));
-  json document = json::parse(in, nullptr, false);
+  // The suite's report.json is about 100 MB; a regular file is required (not a FIFO or device).
+  constexpr std::uintmax_t kMaxResultsBytes = std::uintmax_t(4) << 30;
+  json document = json::parse(read_input_file(results_json, "results JSON", kMaxResultsBytes), nullptr, false);
   if (document.is_discarded() || !document.contains(internal::key::scenes)) {
     throw ParseError(fmt::format("{}: not a catena results JSON (no \"scenes\")", path_text(results_json)));
   }
