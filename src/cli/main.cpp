@@ -1,11 +1,13 @@
 // The `catena` command-line tool: solve a scene, run the verification suite, list solvers.
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <filesystem>
 #include <fmt/format.h>
 #include <functional>
 
 #include "catena/core/error.hpp"
 #include "catena/core/version.hpp"
+#include "catena/io/file_access.hpp"
 #include "cli/commands.hpp"
 
 int main(int argc, char** argv) {
@@ -13,7 +15,8 @@ int main(int argc, char** argv) {
       "catena: linear dynamics of cables (natural frequencies, mode shapes, dynamic tension,\n"
       "forced response) by independent methods, cross-checked against each other and against\n"
       "published tables.\n\n"
-      "Exit codes: 0 ok, 1 a verification check failed, 2 bad input or usage, 3 internal error\n"
+      "Exit codes: 0 ok, 1 a verification check failed, 2 bad input, usage or a file that cannot\n"
+      "be read or written (the path is named), 3 internal error\n"
       "or a numerical failure that left a scene unsolved (e.g. statics that do not converge).",
       "catena"};
   app.set_version_flag("--version", fmt::format("catena {} (git {}, {}, {})", catena::version(),
@@ -35,6 +38,11 @@ int main(int argc, char** argv) {
     return run ? run() : 2;
   } catch (const catena::Error& error) {
     fmt::print(stderr, "error: {}\n", error.what());
+    return 2;
+  } catch (const std::filesystem::filesystem_error& error) {
+    // The environment, not catena: a file or directory that cannot be read or created.
+    fmt::print(stderr, "error: {}{}: {}\n", catena::path_text(error.path1()),
+               error.path2().empty() ? "" : " -> " + catena::path_text(error.path2()), error.code().message());
     return 2;
   } catch (const std::exception& error) {
     fmt::print(stderr, "internal error: {}\n", error.what());

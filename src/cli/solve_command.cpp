@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
+#include "catena/io/file_access.hpp"
 #include "catena/io/json_writer.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/verification/scene_runner.hpp"
@@ -42,7 +43,7 @@ void print_modes(const ModalResult& result, const char* title) {
 
 void print_result(const SceneResult& result) {
   const Scene& scene = result.scene;
-  fmt::print("scene {} ({})\n", scene.name, scene.file.string());
+  fmt::print("scene {} ({})\n", scene.name, path_text(scene.file));
   if (!result.error.empty()) {
     fmt::print("  error: {}\n", result.error);
     return;
@@ -89,11 +90,14 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
   CLI::App* command = app.add_subcommand(
       "solve",
       "Solve one scene file: statics, dimensionless groups and every applicable solver.\n"
-      "Prints a summary; --json writes the full results (layout in verification/README.md).\n"
+      "Prints a summary; --json writes the full results (layout in docs/json-layout.md).\n"
       "On a terminal, long solves show their progress on stderr (\"shooting: in-plane modes 37/600\").");
-  command->add_option("scene", arguments->scene, "Scene file (TOML; format in verification/README.md)")
+  command->add_option("scene", arguments->scene,
+                      "Scene file (TOML, a regular file of at most 1 MiB; format and limits in\n"
+                      "docs/scene-format.md)")
       ->required();
-  command->add_option("--json", arguments->json, "Write the results as JSON to this file ('-' for stdout)");
+  command->add_option("--json", arguments->json, "Write the results as JSON to this file ('-' for stdout); checked to be\n"
+                      "writable before solving, written whole or not at all");
   command->add_option("--solver", arguments->solvers,
                       "Run only this solver (repeatable): fe, shooting, frobenius, asymptotic, airy");
   command->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
@@ -106,6 +110,8 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
       for (const auto& name : arguments->solvers) {
         if (!find_solver(name)) throw InvalidInput(fmt::format("--solver {}: unknown solver", name));
       }
+      // A bad --json fails before the solving, not after it.
+      if (!arguments->json.empty() && arguments->json != "-") check_output_file(arguments->json);
       const std::vector<Scene> scenes = read_scene_file(arguments->scene);
       std::vector<SceneResult> results;
       SceneRunOptions options = run_options_with_tables(arguments->tables);

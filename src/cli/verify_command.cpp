@@ -1,5 +1,8 @@
 // `catena verify`: every scene under a directory, on all cores, with a summary and report.json.
+#include <charconv>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <fmt/format.h>
 #include <string>
@@ -8,6 +11,7 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
+#include "catena/io/file_access.hpp"
 #include "catena/io/json_writer.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/verification/scene_runner.hpp"
@@ -29,43 +33,94 @@ struct VerifyArguments {
   TableArguments tables;
 };
 
-// "--perturb fe:inplane:2:1e-3" -> Perturbation.
+// "--perturb fe:inplane:2:1e-3" -> Perturbation. Every part is checked whole: a mode that does
+// not fit an int or a factor that changes nothing would perturb nothing, and the run meant to fail
+// would pass.
 std::optional<Perturbation> parse_perturbation(const std::string& text) {
   if (text.empty()) return std::nullopt;
-  Perturbation p;
-  char plane[32] = {0};
-  char solver[32] = {0};
-  if (std::sscanf(text.c_str(), "%31[^:]:%31[^:]:%d:%lf", solver, plane, &p.mode, &p.relative) != 4 ||
-      (std::string(plane) != "inplane" && std::string(plane) != "outofplane") || !find_solver(solver)) {
-    throw InvalidInput(fmt::format("--perturb {}: expected SOLVER:inplane|outofplane:MODE:RELATIVE", text));
+  auto fail = [&](const std::string& why) {
+    throw InvalidInput(fmt::format("--perturb {}: {} (expected SOLVER:inplane|outofplane:MODE:RELATIVE, MODE in "
+                                   "[1, {}], RELATIVE finite, non-zero and > -1)", text, why, kMaxRequestModes));
+  };
+  std::vector<std::string> parts(1);
+  for (char c : text) {
+    if (c == ':') parts.emplace_back();
+    else parts.back().push_back(c);
   }
-  p.solver = solver;
-  p.plane = std::string(plane) == "inplane" ? Plane::InPlane : Plane::OutOfPlane;
+  if (parts.size() != 4) fail("expected 4 parts separated by ':'");
+  Perturbation p;
+  if (!find_solver(parts[0])) fail("unknown solver '" + parts[0] + "'");
+  p.solver = parts[0];
+  if (parts[1] != "inplane" && parts[1] != "outofplane") fail("plane must be inplane or outofplane");
+  p.plane = parts[1] == "inplane" ? Plane::InPlane : Plane::OutOfPlane;
+  long mode = 0;
+  const auto [mode_end, mode_error] = std::from_chars(parts[2].data(), parts[2].data() + parts[2].size(), mode);
+  if (mode_error != std::errc() || mode_end != parts[2].data() + parts[2].size() || mode < 1 ||
+      mode > kMaxRequestModes) {
+    fail("mode '" + parts[2] + "' out of range");
+  }
+  p.mode = static_cast<int>(mode);
+  char* relative_end = nullptr;
+  p.relative = std::strtod(parts[3].c_str(), &relative_end);
+  if (parts[3].empty() || *relative_end != '\0' || !std::isfinite(p.relative) || p.relative == 0.0 ||
+      p.relative <= -1.0) {
+    fail("relative change '" + parts[3] + "' invalid");
+  }
   return p;
 }
 
-// Reads every scene file; collects every parse error before giving up, so one run shows them all.
-std::vector<Scene> read_all(const std::vector<std::filesystem::path>& files, const std::string& filter) {
+// Before the solving: some scene must ask for that many modes in that plane.
+void check_perturbation_requested(const Perturbation& p, const std::vector<Scene>& scenes, const std::string& text) {
+  for (const auto& scene : scenes) {
+    if ((p.plane == Plane::InPlane ? scene.request.inplane_modes : scene.request.outofplane_modes) >= p.mode) return;
+  }
+  throw InvalidInput(fmt::format("--perturb {}: no scene asks for {} {} modes, so nothing would be perturbed", text,
+                                 p.mode, p.plane == Plane::InPlane ? "in-plane" : "out-of-plane"));
+}
+
+// True when some scene gave the perturbed solver the perturbed mode (so it was changed).
+bool perturbation_applied(const Perturbation& p, const std::vector<SceneResult>& results) {
+  for (const auto& result : results) {
+    for (const auto& output : result.outputs) {
+      const auto& modal = p.plane == Plane::InPlane ? output.inplane : output.outofplane;
+      if (output.solver != p.solver || !modal) continue;
+      for (const auto& mode : modal->modes) {
+        if (mode.index == p.mode) return true;
+      }
+    }
+  }
+  return false;
+}
+
+// The scenes read, and a result with the error for each file that could not be read: those are
+// reported as scene errors while the others still run.
+struct SceneFiles {
   std::vector<Scene> scenes;
-  std::vector<std::string> errors;
+  std::vector<SceneResult> unreadable;
+};
+
+SceneFiles read_all(const std::vector<std::filesystem::path>& files, const std::string& filter) {
+  SceneFiles read;
   for (const auto& file : files) {
+    const std::string file_text = path_text(file);
     try {
       for (auto& scene : read_scene_file(file)) {
         if (filter.empty() || scene.name.find(filter) != std::string::npos ||
-            file.string().find(filter) != std::string::npos) {
-          scenes.push_back(std::move(scene));
+            file_text.find(filter) != std::string::npos) {
+          read.scenes.push_back(std::move(scene));
         }
       }
     } catch (const Error& error) {
-      errors.push_back(error.what());
+      if (!filter.empty() && file_text.find(filter) == std::string::npos) continue;
+      SceneResult result;
+      result.scene.file = file;
+      result.scene.name = path_text(file.stem());
+      result.error = error.what();
+      result.error_kind = SceneError::BadInput;
+      read.unreadable.push_back(std::move(result));
     }
   }
-  if (!errors.empty()) {
-    std::string message = fmt::format("{} scene file(s) could not be read:", errors.size());
-    for (const auto& e : errors) message += "\n  " + e;
-    throw InvalidInput(message);
-  }
-  return scenes;
+  return read;
 }
 
 std::string solver_column(const SceneResult& result) {
@@ -84,33 +139,9 @@ std::string solver_column(const SceneResult& result) {
   return text.empty() ? "statics only" : text;
 }
 
-int run_verify(const VerifyArguments& arguments) {
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<Scene> scenes = read_all(list_scene_files(arguments.scenes), arguments.filter);
-  if (scenes.empty()) throw InvalidInput(fmt::format("no scenes under {} match '{}'", arguments.scenes, arguments.filter));
-
-  const int jobs = arguments.jobs > 0 ? arguments.jobs
-                                      : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const bool progress = !arguments.quiet && isatty(STDERR_FILENO);
-  SceneRunOptions run_options = run_options_with_tables(arguments.tables);
-  run_options.perturbation = parse_perturbation(arguments.perturb);
-  apply_time_limit(*arguments.time_limit, arguments.time_limit_s, run_options);
-  const std::vector<SceneResult> results =
-      run_scenes(scenes, jobs, run_options, [&](std::size_t done, std::size_t total, const std::string& name) {
-        if (progress) fmt::print(stderr, "\r\033[K[{}/{}] {}", done, total, name);
-      });
-  if (progress) fmt::print(stderr, "\r\033[K");
-
-  int failed_checks = 0, total_checks = 0, errors = 0, discrepancies = 0;
-  for (const auto& result : results) {
-    failed_checks += result.failed_checks();
-    total_checks += static_cast<int>(result.checks.size());
-    errors += !result.error.empty();
-    for (const auto& check : result.checks) discrepancies += check.verdict == Verdict::SourceDiscrepancy;
-  }
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  if (!arguments.quiet) {
+// One line per scene (unless quiet), then one line per failed check.
+void print_table(const std::vector<SceneResult>& results, bool quiet) {
+  if (!quiet) {
     fmt::print("{:<48} {:>8} {:>7} {:>9}  {}\n", "scene", "checks", "failed", "time [ms]", "solvers");
     for (const auto& result : results) {
       fmt::print("{:<48} {:>8} {:>7} {:>9.1f}  {}\n", result.scene.name, result.checks.size(),
@@ -126,12 +157,52 @@ int run_verify(const VerifyArguments& arguments) {
                  check.measured, check.tolerance, check.detail);
     }
   }
+}
+
+int run_verify(const VerifyArguments& arguments) {
+  const auto start = std::chrono::steady_clock::now();
   const auto report = std::filesystem::path(arguments.out) / "report.json";
+  check_output_file(report);  // a bad --out fails now, not after the solving
+  SceneFiles files = read_all(list_scene_files(arguments.scenes), arguments.filter);
+  const std::vector<Scene>& scenes = files.scenes;
+  if (scenes.empty() && files.unreadable.empty()) {
+    throw InvalidInput(fmt::format("no scenes under {} match '{}'", arguments.scenes, arguments.filter));
+  }
+
+  const int jobs = arguments.jobs > 0 ? arguments.jobs
+                                      : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const bool progress = !arguments.quiet && isatty(STDERR_FILENO);
+  SceneRunOptions run_options = run_options_with_tables(arguments.tables);
+  run_options.perturbation = parse_perturbation(arguments.perturb);
+  apply_time_limit(*arguments.time_limit, arguments.time_limit_s, run_options);
+  if (run_options.perturbation) check_perturbation_requested(*run_options.perturbation, scenes, arguments.perturb);
+  std::vector<SceneResult> results =
+      run_scenes(scenes, jobs, run_options, [&](std::size_t done, std::size_t total, const std::string& name) {
+        if (progress) fmt::print(stderr, "\r\033[K[{}/{}] {}", done, total, name);
+      });
+  if (progress) fmt::print(stderr, "\r\033[K");
+  if (run_options.perturbation && !perturbation_applied(*run_options.perturbation, results)) {
+    throw InvalidInput(fmt::format("--perturb {}: no scene gave solver {} that mode, so nothing was perturbed "
+                                   "and the run could not fail", arguments.perturb, run_options.perturbation->solver));
+  }
+  for (auto& result : files.unreadable) results.push_back(std::move(result));
+
+  int failed_checks = 0, total_checks = 0, errors = 0, discrepancies = 0;
+  for (const auto& result : results) {
+    failed_checks += result.failed_checks();
+    total_checks += static_cast<int>(result.checks.size());
+    errors += !result.error.empty();
+    for (const auto& check : result.checks) discrepancies += check.verdict == Verdict::SourceDiscrepancy;
+  }
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  print_table(results, arguments.quiet);
   write_results_json(report, results);
   fmt::print("{} scenes, {} checks, {} failed, {} source discrepancies, {} scene errors; {:.1f} s on {} "
              "threads; wrote {}\n",
              results.size(), total_checks, failed_checks, discrepancies, errors, elapsed, jobs,
              report.string());
+  if (!files.unreadable.empty()) fmt::print(stderr, "{} scene file(s) could not be read:\n", files.unreadable.size());
   for (const auto& result : results) {
     if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
   }
@@ -145,16 +216,20 @@ void add_verify_command(CLI::App& app, std::function<int()>& run) {
   CLI::App* command = app.add_subcommand(
       "verify",
       "Run the verification suite: every scene under --scenes, every applicable solver,\n"
-      "cross-checked; prints a summary and writes <out>/report.json. Exit 1 if a check fails.");
+      "cross-checked; prints a summary and writes <out>/report.json. Exit 1 if a check fails.\n"
+      "A *.toml entry that cannot be read (dangling symlink, FIFO, too large, bad TOML) is a\n"
+      "scene error: the other scenes still run, the report is written, and the exit code is 2.");
   command->add_option("--scenes", arguments->scenes, "Directory of scene files (searched recursively)")
       ->capture_default_str();
-  command->add_option("--out", arguments->out, "Directory for report.json")->capture_default_str();
+  command->add_option("--out", arguments->out, "Directory for report.json (checked to be writable before\n"
+                      "the solving; the file is written whole or not at all)")->capture_default_str();
   command->add_option("--filter", arguments->filter, "Only scenes whose name or file contains this text");
   command->add_option("--jobs,-j", arguments->jobs, "Worker threads (default: all cores)");
   command->add_flag("--quiet,-q", arguments->quiet, "Print only failures and the closing line");
   command->add_option("--perturb", arguments->perturb,
                       "Testing the harness: multiply one frequency of one solver by (1 + RELATIVE),\n"
-                      "as SOLVER:inplane|outofplane:MODE:RELATIVE; the run must then fail");
+                      "as SOLVER:inplane|outofplane:MODE:RELATIVE; the run must then fail. Exit 2\n"
+                      "when no scene gives that solver that mode (nothing would be perturbed)");
   arguments->time_limit = add_time_limit_option(
       *command, arguments->time_limit_s, "for each scene, from the start of its statics");
   add_table_options(*command, arguments->tables);

@@ -2,10 +2,10 @@
 
 #include <charconv>
 #include <fmt/format.h>
-#include <fstream>
 #include <sstream>
 
 #include "catena/core/error.hpp"
+#include "catena/io/file_access.hpp"
 
 namespace catena {
 namespace {
@@ -72,8 +72,8 @@ const std::string& CsvTable::text(std::size_t row, const std::string& column) co
 }
 
 CsvTable read_csv_table(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw ParseError(fmt::format("{}: cannot open CSV file", path.string()));
+  // Our largest table (verification/baseline/published.csv) is under 1 MB.
+  std::istringstream in(read_input_file(path, "CSV file", 64 * kMaxInputFileBytes));
   CsvTable table;
   std::string line;
   int line_number = 0;
@@ -92,19 +92,17 @@ CsvTable read_csv_table(const std::filesystem::path& path) {
       continue;
     }
     if (cells.size() != table.columns.size()) {
-      throw ParseError(fmt::format("{}:{}: {} cells, header has {}", path.string(), line_number,
+      throw ParseError(fmt::format("{}:{}: {} cells, header has {}", path_text(path), line_number,
                                    cells.size(), table.columns.size()));
     }
     table.rows.push_back(std::move(cells));
   }
-  if (table.columns.empty()) throw ParseError(fmt::format("{}: no header line", path.string()));
+  if (table.columns.empty()) throw ParseError(fmt::format("{}: no header line", path_text(path)));
   return table;
 }
 
 void write_csv_table(const std::filesystem::path& path, const CsvTable& table) {
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::ofstream out(path);
-  if (!out) throw InvalidInput(fmt::format("{}: cannot write CSV file", path.string()));
+  std::ostringstream out;
   for (const auto& comment : table.comments) out << "# " << comment << '\n';
   auto write_row = [&](const std::vector<std::string>& cells) {
     for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << csv_cell(cells[i]);
@@ -112,6 +110,7 @@ void write_csv_table(const std::filesystem::path& path, const CsvTable& table) {
   };
   write_row(table.columns);
   for (const auto& row : table.rows) write_row(row);
+  write_file_atomically(path, out.str());
 }
 
 }  // namespace catena

@@ -1,5 +1,6 @@
 #include "catena/io/findings_reader.hpp"
 
+#include "catena/io/file_access.hpp"
 #include "io/internal/builtin_findings.hpp"
 #include "io/internal/toml_table_reader.hpp"
 
@@ -31,7 +32,7 @@ FindingsTable parse_findings_table(const std::string& text, const std::string& o
 }
 
 FindingsTable read_findings_file(const std::filesystem::path& path) {
-  return parse_findings_table(internal::read_text_file(path, "findings file"), path.string());
+  return parse_findings_table(read_input_file(path, "findings file"), path_text(path));
 }
 
 FindingsTable builtin_findings_table() {

@@ -2,11 +2,11 @@
 
 #include <cmath>
 #include <fmt/format.h>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "catena/core/error.hpp"
 #include "catena/core/version.hpp"
+#include "catena/io/file_access.hpp"
 #include "io/internal/results_keys.hpp"
 
 namespace catena {
@@ -180,7 +180,7 @@ json check_json(const CheckResult& check) {
 json scene_json(const SceneResult& result) {
   const Scene& scene = result.scene;
   json out = {{key::name, scene.name},
-              {key::file, scene.file.string()},
+              {key::file, path_text(scene.file)},
               {key::description, scene.description},
               {key::tags, scene.tags},
               {key::problem, problem_json(scene.problem)},
@@ -226,11 +226,7 @@ std::string results_to_json(const std::vector<SceneResult>& results, int indent)
 }
 
 void write_results_json(const std::filesystem::path& path, const std::vector<SceneResult>& results) {
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::ofstream out(path);
-  if (!out) throw InvalidInput(fmt::format("{}: cannot write JSON file", path.string()));
-  out << results_to_json(results) << '\n';
-  if (!out) throw InvalidInput(fmt::format("{}: write failed", path.string()));
+  write_file_atomically(path, results_to_json(results) + '\n');
 }
 
 }  // namespace catena

@@ -9,6 +9,7 @@
 #include <toml.hpp>
 
 #include "catena/core/error.hpp"
+#include "catena/io/file_access.hpp"
 #include "catena/statics/problem_builders.hpp"
 #include "io/internal/toml_table_reader.hpp"
 
@@ -180,27 +181,28 @@ ForcedRequest read_forced(TableReader& forced, Scene& scene) {
 void read_request(TableReader& root, Scene& scene) {
   if (!root.has("request")) return;
   TableReader request = root.subtable("request");
-  auto count = [&](const std::string& key, long fallback, long low, long high) {
-    const long value = request.integer(key, fallback);
-    if (value < low || value > high) {
-      throw InvalidInput(fmt::format("{} = {}: must be in [{}, {}]", request.where(key), value, low, high));
-    }
-    return static_cast<int>(value);
+  // Upper bounds: docs/scene-format.md, "Limits" (SolveRequest::validate enforces the same).
+  auto count = [&](const std::string& key, int fallback, long low, long high) {
+    return static_cast<int>(request.read_integer(key, low, high, fallback));
   };
-  const int max_modes = SolveRequest::kMaxModesPerPlane;
-  scene.request.inplane_modes = count("inplane_modes", scene.request.inplane_modes, 0, max_modes);
-  scene.request.outofplane_modes = count("outofplane_modes", scene.request.outofplane_modes, 0, max_modes);
+  scene.request.inplane_modes = count("inplane_modes", scene.request.inplane_modes, 0, kMaxRequestModes);
+  scene.request.outofplane_modes = count("outofplane_modes", scene.request.outofplane_modes, 0, kMaxRequestModes);
   scene.request.shapes = request.boolean("shapes", scene.request.shapes);
-  scene.request.points = count("points", scene.request.points, 2, 1000000);
+  scene.request.points = count("points", scene.request.points, 2, kMaxRequestPoints);
   scene.request.tension = request.boolean("tension", scene.request.tension);
   if (request.has("forced")) {
     TableReader forced = request.subtable("forced");
     scene.request.forced = read_forced(forced, scene);
   }
   request.finish();
+  try {
+    scene.request.validate();
+  } catch (const InvalidInput& error) {
+    throw InvalidInput(fmt::format("{}: [request]: {}", path_text(scene.file), error.what()));
+  }
   if (scene.request.inplane_modes == 0 && scene.request.outofplane_modes == 0 && !scene.request.forced) {
     throw InvalidInput(fmt::format("{}: [request] asks for nothing (no modes and no forcing)",
-                                   scene.file.string()));
+                                   path_text(scene.file)));
   }
 }
 
@@ -231,7 +233,7 @@ void read_solvers(TableReader& root, Scene& scene) {
     try {
       if (entry->validate_knobs) entry->validate_knobs(knobs);
     } catch (const InvalidInput& error) {
-      throw InvalidInput(fmt::format("{}: {}", scene.file.string(), error.what()));
+      throw InvalidInput(fmt::format("{}: {}", path_text(scene.file), error.what()));
     }
     scene.solvers[name] = knobs;
   }
@@ -270,18 +272,14 @@ void read_published(TableReader& root, Scene& scene) {
     }
     published.quantity = *parsed;
     published.unit = read_frequency_unit(table, "unit", "rad/s");
-    for (double mode : table.numbers("modes")) {
-      if (mode != std::floor(mode) || mode < 0) {
-        throw InvalidInput(fmt::format("{}: {} is not a non-negative integer", table.where("modes"), mode));
-      }
-      published.modes.push_back(static_cast<int>(mode));
-    }
+    for (long mode : table.integers("modes", 0, kMaxRequestModes)) published.modes.push_back(static_cast<int>(mode));
     published.values = table.numbers("values");
     if (published.values.size() != published.modes.size()) {
       throw InvalidInput(fmt::format("{}: {} values for {} modes", table.where("values"),
                                      published.values.size(), published.modes.size()));
     }
-    published.decimals = static_cast<int>(table.integer("decimals", -1));
+    // More than 17 decimals would be below the resolution of a double.
+    published.decimals = static_cast<int>(table.read_integer("decimals", 0, 17, -1));
     if (const toml::value* solvers = table.find("solvers")) {
       if (!solvers->is_array()) throw ParseError(fmt::format("{}: expected an array of solver names", table.where("solvers")));
       for (const auto& name : solvers->as_array()) {
@@ -341,7 +339,7 @@ std::vector<Scene> read_document(const toml::value& document, const std::string&
   TableReader root(document, origin, "");
   Scene scene;
   scene.file = file;
-  scene.name = root.string("name", file.empty() ? origin : file.stem().string());
+  scene.name = root.string("name", file.empty() ? origin : path_text(file.stem()));
   scene.description = root.string("description", "");
   if (root.has("tags")) scene.tags = root.strings("tags");
   scene.problem = read_problem(root, origin);
@@ -360,19 +358,31 @@ std::vector<Scene> parse_scene_text(const std::string& text, const std::string& 
 }
 
 std::vector<Scene> read_scene_file(const std::filesystem::path& path) {
-  const std::string text = internal::read_text_file(path, "scene file");
-  std::vector<Scene> scenes = parse_scene_text(text, path.string());
+  const std::string text = read_input_file(path, "scene file");
+  std::vector<Scene> scenes = read_document(internal::parse_toml(text, path_text(path)), path_text(path), path);
   for (auto& scene : scenes) scene.file = path;
   return scenes;
 }
 
 std::vector<std::filesystem::path> list_scene_files(const std::filesystem::path& directory) {
-  if (!std::filesystem::is_directory(directory)) {
-    throw InvalidInput(fmt::format("{}: not a directory of scenes", directory.string()));
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (!fs::is_directory(directory, error)) {
+    throw InvalidInput(fmt::format("{}: not a directory of scenes{}", path_text(directory),
+                                   error ? ": " + error.message() : std::string()));
   }
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(directory)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".toml") files.push_back(entry.path());
+  std::vector<fs::path> files;
+  // Directory symlinks are not followed (no loops); every other entry named *.toml is listed, a
+  // dangling symlink or a FIFO too, so that reading it reports it instead of skipping it.
+  fs::recursive_directory_iterator it(directory, error), end;
+  for (; !error && it != end; it.increment(error)) {
+    if (it->path().extension() != ".toml") continue;
+    std::error_code status_error;
+    if (!fs::is_directory(it->symlink_status(status_error))) files.push_back(it->path());
+  }
+  if (error) {
+    throw InvalidInput(fmt::format("{}: cannot list the scenes under it: {}",
+                                   path_text(it == end ? directory : it->path()), error.message()));
   }
   std::sort(files.begin(), files.end());
   return files;

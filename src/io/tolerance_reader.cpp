@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "catena/core/error.hpp"
+#include "catena/io/file_access.hpp"
 #include "io/internal/builtin_tolerances.hpp"
 #include "io/internal/toml_table_reader.hpp"
 
@@ -49,7 +50,7 @@ ToleranceTable parse_tolerance_table(const std::string& text, const std::string&
 }
 
 ToleranceTable read_tolerance_file(const std::filesystem::path& path) {
-  return parse_tolerance_table(internal::read_text_file(path, "tolerance file"), path.string());
+  return parse_tolerance_table(read_input_file(path, "tolerance file"), path_text(path));
 }
 
 ToleranceTable builtin_tolerance_table() {

@@ -1,5 +1,6 @@
 #include "catena/models/cable.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -8,10 +9,16 @@
 namespace catena {
 namespace {
 
-void require_finite_positive(double value, const char* field, const char* unit) {
+void require_finite_positive(double value, const char* field, const char* unit,
+                             double largest = kMaxCableMagnitude) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw InvalidInput(fmt::format("Invalid CableProperties::{} = {}: must be finite and > 0 [{}]",
                                    field, value, unit));
+  }
+  if (value < kMinCableMagnitude || value > largest) {
+    throw InvalidInput(fmt::format("Invalid CableProperties::{} = {}: must be in [{:g}, {:g}] [{}] (beyond, the "
+                                   "statics overflow or underflow)",
+                                   field, value, kMinCableMagnitude, largest, unit));
   }
 }
 
@@ -29,23 +36,26 @@ void CableProperties::validate() const {
         "Invalid CableProperties::axial_stiffness_n = {}: must be > 0 or +inf (inextensible) [N]",
         axial_stiffness_n));
   }
+  if (!is_inextensible()) require_finite_positive(axial_stiffness_n, "axial_stiffness_n", "N", kMaxAxialStiffness);
   if (!std::isfinite(added_mass_kg_per_m) || added_mass_kg_per_m < 0.0) {
     throw InvalidInput(fmt::format(
         "Invalid CableProperties::added_mass_kg_per_m = {}: must be finite and >= 0 [kg/m]",
         added_mass_kg_per_m));
   }
+  if (added_mass_kg_per_m > 0.0) require_finite_positive(added_mass_kg_per_m, "added_mass_kg_per_m", "kg/m");
 }
 
 void Supports::validate() const {
   for (int i = 0; i < 2; ++i) {
-    if (!std::isfinite(a_m[i]) || !std::isfinite(b_m[i])) {
+    if (!(std::abs(a_m[i]) <= kMaxCableMagnitude) || !(std::abs(b_m[i]) <= kMaxCableMagnitude)) {
       throw InvalidInput(fmt::format("Invalid Supports: a = ({}, {}), b = ({}, {}): coordinates must "
-                                     "be finite [m]",
-                                     a_m.x(), a_m.y(), b_m.x(), b_m.y()));
+                                     "be finite and within +-{:g} [m]",
+                                     a_m.x(), a_m.y(), b_m.x(), b_m.y(), kMaxCableMagnitude));
     }
   }
-  const double scale = std::max({1.0, a_m.norm(), b_m.norm()});
-  if (chord_m().norm() <= 1e-12 * scale) {
+  // hypot: the squares of large coordinates must not overflow into "coincident" ends.
+  const double scale = std::max({1.0, std::hypot(a_m.x(), a_m.y()), std::hypot(b_m.x(), b_m.y())});
+  if (std::hypot(chord_m().x(), chord_m().y()) <= 1e-12 * scale) {
     throw InvalidInput(fmt::format("Invalid Supports: a = ({}, {}) and b = ({}, {}) coincide; the "
                                    "ends must be apart",
                                    a_m.x(), a_m.y(), b_m.x(), b_m.y()));

@@ -20,23 +20,24 @@ std::string to_string(ForcingDirection direction) {
 }
 
 void SolveRequest::validate() const {
-  // Limits on work (docs/scene-format.md, "Limits on work").
-  if (inplane_modes < 0 || inplane_modes > kMaxModesPerPlane) {
-    throw InvalidInput(fmt::format("Invalid SolveRequest::inplane_modes = {}: must be in [0, {}]",
-                                   inplane_modes, kMaxModesPerPlane));
-  }
-  if (outofplane_modes < 0 || outofplane_modes > kMaxModesPerPlane) {
-    throw InvalidInput(fmt::format("Invalid SolveRequest::outofplane_modes = {}: must be in [0, {}]",
-                                   outofplane_modes, kMaxModesPerPlane));
+  auto require_in = [](const char* field, long value, long low, long high) {
+    if (value < low || value > high) {
+      throw InvalidInput(fmt::format("Invalid SolveRequest::{} = {}: must be in [{}, {}]", field, value, low, high));
+    }
+  };
+  require_in("inplane_modes", inplane_modes, 0, kMaxRequestModes);
+  require_in("outofplane_modes", outofplane_modes, 0, kMaxRequestModes);
+  require_in("points", points, 2, kMaxRequestPoints);
+  const long shape_values = shapes ? long(points) * (inplane_modes + outofplane_modes) : 0;
+  if (shape_values > kMaxShapeValues) {
+    throw InvalidInput(fmt::format(
+        "Invalid SolveRequest: points x modes = {} x {} = {} shape values: must be <= {} (ask for fewer "
+        "points or modes)", points, inplane_modes + outofplane_modes, shape_values, kMaxShapeValues));
   }
   if (forced && forced->omegas_rad_s.size() > kMaxForcingFrequencies) {
     throw InvalidInput(fmt::format(
         "Invalid ForcedRequest::omegas_rad_s: {} forcing frequencies, at most {} per request",
         forced->omegas_rad_s.size(), kMaxForcingFrequencies));
-  }
-  if (points < 2 || points > 1000000) {
-    throw InvalidInput(
-        fmt::format("Invalid SolveRequest::points = {}: must be in [2, 1000000]", points));
   }
   if (forced) {
     if (!std::isfinite(forced->amplitude_m) || forced->amplitude_m <= 0.0) {

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "catena/core/error.hpp"
 #include "catena/io/scene_reader.hpp"
@@ -167,6 +168,26 @@ std::vector<BadScene> bad_scenes() {
       {"published count mismatch",
        kCable + "[[published]]\nsource = \"x\"\nquantity = \"inplane_frequency\"\nmodes = [1, 2]\nvalues = [1.0]\n",
        false, {"values", "1 values for 2 modes"}},
+      // Integers are range-checked before any cast: 2^31 and 1e20 used to wrap to -2^31.
+      {"published mode beyond int",
+       kCable + "[[published]]\nsource = \"x\"\nquantity = \"inplane_frequency\"\nmodes = [2147483648]\nvalues = [1.0]\n",
+       false, {"modes", "2147483648", "integer in [0, 1000]"}},
+      {"published mode 1e20",
+       kCable + "[[published]]\nsource = \"x\"\nquantity = \"inplane_frequency\"\nmodes = [1e20]\nvalues = [1.0]\n",
+       false, {"modes", "integer in [0, 1000]"}},
+      {"decimals beyond int",
+       kCable + "[[published]]\nsource = \"x\"\nquantity = \"inplane_frequency\"\nmodes = [1]\nvalues = [1.0]\n"
+                "decimals = -2147483649\n",
+       false, {"decimals = -2147483649", "[0, 17]"}},
+      {"too many points", kCable + "[request]\npoints = 100001\n", false, {"[request].points", "[2, 100000]"}},
+      {"too many shape values", kCable + "[request]\npoints = 100000\ninplane_modes = 20\nshapes = true\n", false,
+       {"[request]", "shape values", "1000000"}},
+      // Magnitudes whose products overflow the statics are refused naming the field, not reported
+      // as "closure error -nan" or as coincident supports.
+      {"huge length", cable_with("length", "1e300"), false, {"[cable]", "length_m = 1e+300", "1e+15"}},
+      {"huge weight", cable_with("weight", "1e300"), false, {"[cable]", "weight_n_per_m", "1e+15"}},
+      {"huge EA", cable_with("EA", "1e300"), false, {"[cable]", "axial_stiffness_n", "1e+30"}},
+      {"huge support coordinate", cable_with("b", "[1e308, 0.0]"), false, {"[cable]", "b = (1e+308, 0)", "within"}},
       {"sweep of unknown table", kCable + "[sweep]\nparameter = \"gale.xi1\"\nvalues = [1.0]\n", false,
        {"[sweep]", "no table [gale]"}},
   };
@@ -195,6 +216,38 @@ TEST(SceneReader, RejectsEveryKindOfBadInputWithANamedReason) {
       EXPECT_NE(std::string(error.what()).find("bad.toml"), std::string::npos) << bad.label << ": " << error.what();
     }
   }
+}
+
+// toml11 parses nested arrays and inline tables recursively: about 5,900 / 3,500 levels overflowed
+// the stack (SIGSEGV). The depth is now checked on the text before the parser sees it.
+TEST(SceneReader, DeepNestingIsAParseErrorNotAStackOverflow) {
+  for (const auto& [open, close, levels] : {std::tuple{"[", "]", 5900}, std::tuple{"{x=", "}", 3500}}) {
+    std::string deep = kCable + "deep = ";
+    for (int i = 0; i < levels; ++i) deep += open;
+    deep += "1";
+    for (int i = 0; i < levels; ++i) deep += close;
+    try {
+      parse_scene_text(deep + "\n", "deep.toml");
+      ADD_FAILURE() << open << ": no error";
+    } catch (const ParseError& error) {
+      EXPECT_NE(std::string(error.what()).find("deep.toml: line 10: arrays and inline tables nested deeper than 64"),
+                std::string::npos)
+          << error.what();
+    }
+  }
+  // At the limit the parser runs (and rejects the unknown key, naming it).
+  std::string at_limit = kCable + "deep = " + std::string(63, '[') + "1" + std::string(63, ']') + "\n";
+  EXPECT_THROW(
+      try { parse_scene_text(at_limit, "x.toml"); } catch (const ParseError& error) {
+        EXPECT_NE(std::string(error.what()).find("[cable].deep"), std::string::npos) << error.what();
+        throw;
+      },
+      ParseError);
+  // Brackets in strings and comments are not nesting.
+  const std::string brackets(500, '[');
+  EXPECT_NO_THROW(parse_scene_text("description = \"" + brackets + "\"\n# " + brackets + "\n" +
+                                   "name = \'\'\'" + std::string(500, '{') + "\'\'\'\n" + kCable,
+                                   "strings.toml"));
 }
 
 TEST(SceneReader, MissingFileIsAParseErrorNamingThePath) {

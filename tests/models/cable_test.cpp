@@ -45,6 +45,28 @@ TEST(CableProperties, RejectsEachInvalidField) {
   expect_invalid(with([](Problem& p) { p.supports.b_m.x() = -5.0; }), "left of");
 }
 
+// Huge values made the statics overflow ("closure error -nan m", no field named) and
+// b = (1e308, 0) was called coincident with a (the squared chord overflowed).
+TEST(CableProperties, RejectsMagnitudesThatOverflowTheStaticsNamingTheField) {
+  auto with = [](auto change) { Problem p = good(); change(p); return [p] { p.validate(); }; };
+  expect_invalid(with([](Problem& p) { p.cable.length_m = 1e300; }), "length_m = 1e+300: must be in [1e-15, 1e+15]");
+  expect_invalid(with([](Problem& p) { p.cable.weight_n_per_m = 1e16; }), "weight_n_per_m");
+  expect_invalid(with([](Problem& p) { p.cable.weight_n_per_m = 1e-16; }), "weight_n_per_m");
+  expect_invalid(with([](Problem& p) { p.cable.axial_stiffness_n = 1e300; }), "axial_stiffness_n = 1e+300: must be in [1e-15, 1e+30]");
+  expect_invalid(with([](Problem& p) { p.cable.axial_stiffness_n = 1e-16; }), "axial_stiffness_n");
+  EXPECT_NO_THROW(with([](Problem& p) { p.cable.axial_stiffness_n = 1e30; })());
+  expect_invalid(with([](Problem& p) { p.cable.mass_kg_per_m = 1e300; }), "mass_kg_per_m");
+  expect_invalid(with([](Problem& p) { p.cable.added_mass_kg_per_m = 1e300; }), "added_mass_kg_per_m");
+  expect_invalid(with([](Problem& p) { p.supports.b_m = Vec2(1e308, 0.0); }), "within +-1e+15");
+  expect_invalid(with([](Problem& p) { p.supports.a_m = Vec2(-1e16, 0.0); }), "within +-1e+15");
+  // At the bounds, and EA = inf, ma = 0: accepted; far apart large supports are not "coincident".
+  EXPECT_NO_THROW(with([](Problem& p) {
+    p.cable = {1e15, 1e-15, kInfinity, 1e15, 0.0};
+    p.supports.a_m = Vec2(-1e15, -1e15);
+    p.supports.b_m = Vec2(1e15, 1e15);
+  })());
+}
+
 TEST(Statics, ReportsUnreachableAndImpossibleGeometries) {
   Problem p = good();
   p.cable.axial_stiffness_n = kInfinity;
@@ -69,6 +91,20 @@ TEST(SolveRequest, RejectsEachInvalidField) {
   expect_invalid(with([](SolveRequest& r) { r.inplane_modes = -1; }), "inplane_modes");
   expect_invalid(with([](SolveRequest& r) { r.outofplane_modes = -1; }), "outofplane_modes");
   expect_invalid(with([](SolveRequest& r) { r.points = 1; }), "points");
+  // 1e6 shape points ran out of memory while the JSON was written.
+  expect_invalid(with([](SolveRequest& r) { r.points = 1000000; }), "points = 1000000: must be in [2, 100000]");
+  expect_invalid(with([](SolveRequest& r) { r.inplane_modes = 100001; }), "inplane_modes");
+  expect_invalid(with([](SolveRequest& r) {
+                   r.shapes = true;
+                   r.points = 100000;
+                   r.inplane_modes = 11;
+                 }),
+                 "shape values");
+  EXPECT_NO_THROW(with([](SolveRequest& r) {
+    r.shapes = true;
+    r.points = 100000;
+    r.inplane_modes = 10;
+  })());
   expect_invalid(with([](SolveRequest& r) { r.forced = ForcedRequest{}; }), "forcing frequency");
   expect_invalid(with([](SolveRequest& r) {
                    r.forced = ForcedRequest{};

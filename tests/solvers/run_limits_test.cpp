@@ -168,7 +168,7 @@ TEST(RunLimitsTimeLimit, RefusesNonPositiveNonFiniteAndHugeLimits) {
 }
 
 TEST(SolveRequestLimits, RefusesTooManyModesOrForcingFrequenciesNamingTheField) {
-  SolveRequest request = testing::modes_request(SolveRequest::kMaxModesPerPlane, SolveRequest::kMaxModesPerPlane);
+  SolveRequest request = testing::modes_request(kMaxRequestModes, kMaxRequestModes);
   EXPECT_NO_THROW(request.validate());
   auto message_of = [](const SolveRequest& r) {
     try {
@@ -178,10 +178,10 @@ TEST(SolveRequestLimits, RefusesTooManyModesOrForcingFrequenciesNamingTheField) 
     }
     return std::string("no error");
   };
-  request.inplane_modes = SolveRequest::kMaxModesPerPlane + 1;
+  request.inplane_modes = kMaxRequestModes + 1;
   EXPECT_NE(message_of(request).find("inplane_modes = 1001"), std::string::npos) << message_of(request);
   request.inplane_modes = 1;
-  request.outofplane_modes = SolveRequest::kMaxModesPerPlane + 1;
+  request.outofplane_modes = kMaxRequestModes + 1;
   EXPECT_NE(message_of(request).find("outofplane_modes"), std::string::npos) << message_of(request);
   request.outofplane_modes = 0;
   request.forced = ForcedRequest{};

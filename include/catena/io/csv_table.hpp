@@ -28,8 +28,8 @@ struct CsvTable {
 /// Reads `path`. Throws ParseError (with file and line) when unreadable or ragged.
 CsvTable read_csv_table(const std::filesystem::path& path);
 
-/// Writes `table` with its comments as '# ' lines. Throws InvalidInput when the file cannot be
-/// written.
+/// Writes `table` with its comments as '# ' lines, atomically (catena/io/file_access.hpp). Throws
+/// InvalidInput naming the path when the file cannot be written.
 void write_csv_table(const std::filesystem::path& path, const CsvTable& table);
 
 }  // namespace catena

@@ -23,7 +23,8 @@ namespace catena {
 /// The whole document for `results`, pretty-printed with `indent` spaces (-1: compact).
 std::string results_to_json(const std::vector<SceneResult>& results, int indent = 2);
 
-/// Writes results_to_json to `path` (parent directories created). Throws Error on I/O failure.
+/// Writes results_to_json to `path` atomically (write_file_atomically: parent directories created,
+/// never a 0-byte or half file). Throws InvalidInput naming the path when it cannot be written.
 void write_results_json(const std::filesystem::path& path, const std::vector<SceneResult>& results);
 
 }  // namespace catena

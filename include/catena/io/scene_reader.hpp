@@ -30,13 +30,18 @@
 
 namespace catena {
 
-/// Reads one scene file. Returns one Scene, or one per value for a sweep.
+/// Reads one scene file. Returns one Scene, or one per value for a sweep. The file must be a
+/// regular file of at most kMaxInputFileBytes, nested at most 64 levels (docs/scene-format.md,
+/// "Limits"); otherwise a ParseError naming the path.
 std::vector<Scene> read_scene_file(const std::filesystem::path& path);
 
 /// Parses scene text (for tests); `origin` names it in messages.
 std::vector<Scene> parse_scene_text(const std::string& text, const std::string& origin);
 
-/// All *.toml files under `directory` (recursively), sorted by path.
+/// Every entry named *.toml under `directory` (recursively, not following directory symlinks),
+/// sorted by path, including entries that are not readable regular files (dangling symlinks,
+/// FIFOs, symlink loops): read_scene_file then reports them instead of their being skipped.
+/// InvalidInput naming the path when `directory` is not a directory or cannot be listed.
 std::vector<std::filesystem::path> list_scene_files(const std::filesystem::path& directory);
 
 }  // namespace catena

@@ -9,6 +9,17 @@
 
 namespace catena {
 
+/// Bounds on the magnitude of every cable and support value in SI units (L, W0, EA, m, ma, the
+/// support coordinates; docs/scene-format.md, "Limits"). Outside them the statics overflow or
+/// underflow: the tension scales as W0 L and Newton's Jacobian as its square and fourth power.
+/// EA may also be +inf (inextensible); ma and coordinates may also be 0.
+inline constexpr double kMinCableMagnitude = 1e-15;
+inline constexpr double kMaxCableMagnitude = 1e15;
+/// EA may be larger: a taut string of small static strain needs EA up to ~1e20 N (Grinfogel's
+/// groups with eps = 1e-6, lambda2 = 1e4 at 89 deg), and EA enters the statics through its inverse
+/// or times a strain. Beyond 1e30 N, write "inf".
+inline constexpr double kMaxAxialStiffness = 1e30;
+
 /// Material and section of a uniform cable, per unit *unstretched* length.
 struct CableProperties {
   /// Unstretched length L [m]. Must be finite and > 0.
@@ -29,7 +40,8 @@ struct CableProperties {
   /// True for EA = inf.
   bool is_inextensible() const;
 
-  /// Throws InvalidInput naming the field, its value and the violated constraint.
+  /// Throws InvalidInput naming the field, its value and the violated constraint (including the
+  /// magnitude bounds kMinCableMagnitude..kMaxCableMagnitude).
   void validate() const;
 };
 
@@ -40,7 +52,7 @@ struct Supports {
 
   /// b - a [m].
   Vec2 chord_m() const { return b_m - a_m; }
-  /// Throws InvalidInput for non-finite coordinates or coincident ends.
+  /// Throws InvalidInput for coordinates beyond kMaxCableMagnitude or coincident ends.
   void validate() const;
 };
 

@@ -42,11 +42,19 @@ struct ForcedRequest {
   Vec2 unit_vector() const;
 };
 
+/// Most modes a request may ask for in each plane (docs/scene-format.md, "Limits on work"): at
+/// the measured cost the largest request takes minutes, not days. Use a time limit
+/// (catena/solvers/run_limits.hpp) for less.
+inline constexpr int kMaxRequestModes = 1000;
+/// Most stations a request may ask for (docs/scene-format.md, "Limits").
+inline constexpr int kMaxRequestPoints = 100000;
+/// Most values of one shape table: points x (inplane_modes + outofplane_modes) when shapes are
+/// asked. Bounds the memory and the size of the results JSON (a few hundred MB at the limit).
+inline constexpr long kMaxShapeValues = 1000000;
+
 /// What to compute.
 struct SolveRequest {
-  /// Limits on work (docs/scene-format.md, "Limits on work"): at the measured cost, the largest
-  /// request takes minutes, not days. Use a time limit (catena/solvers/run_limits.hpp) for less.
-  static constexpr int kMaxModesPerPlane = 1000;
+  /// Most forcing frequencies in one request (docs/scene-format.md, "Limits on work").
   static constexpr std::size_t kMaxForcingFrequencies = 100000;
 
   /// Number of lowest in-plane modes (0: none).
@@ -55,7 +63,7 @@ struct SolveRequest {
   int outofplane_modes = 0;
   /// Mode shapes on `points` equally spaced stations s_j = j L / (points - 1).
   bool shapes = false;
-  /// Stations for shapes, tension and forced response; >= 2.
+  /// Stations for shapes, tension and forced response; in [2, kMaxRequestPoints].
   int points = 101;
   /// Dynamic tension of each mode (along the cable when shapes are asked, else its maximum).
   bool tension = false;

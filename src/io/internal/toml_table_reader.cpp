@@ -2,28 +2,71 @@
 
 #include <cmath>
 #include <fmt/format.h>
-#include <fstream>
 #include <sstream>
 
 #include "catena/core/error.hpp"
 
 namespace catena::internal {
 
+namespace {
+
+// The index just past the string that opens at text[i] (a basic "..." or literal '...' string,
+// either of them possibly multi-line """...""" / '''...'''); text.size() when unterminated
+// (the parser then reports the syntax error). Counts the newlines it skips into `line`.
+std::size_t skip_string(const std::string& text, std::size_t i, int& line) {
+  const char quote = text[i];
+  const bool multi_line = text.compare(i, 3, std::string(3, quote)) == 0;
+  const std::size_t open = multi_line ? 3 : 1;
+  for (std::size_t k = i + open; k < text.size(); ++k) {
+    if (text[k] == '\n') ++line;
+    if (quote == '"' && text[k] == '\\') {
+      ++k;
+      if (k < text.size() && text[k] == '\n') ++line;
+      continue;
+    }
+    if (text[k] != quote || (multi_line && text.compare(k, 3, std::string(3, quote)) != 0)) continue;
+    return k + open;
+  }
+  return text.size();
+}
+
+// toml11 parses arrays and inline tables recursively, so thousands of nested levels overflow the
+// stack. Scanning the text first (brackets outside strings and comments) bounds the recursion
+// before the parser sees it.
+void check_nesting_depth(const std::string& text, const std::string& origin) {
+  int depth = 0;
+  int line = 1;
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (c == '"' || c == '\'') {
+      i = skip_string(text, i, line);
+      continue;
+    }
+    if (c == '#') {
+      i = std::min(text.find('\n', i), text.size());
+      continue;
+    }
+    if (c == '\n') ++line;
+    if (c == '[' || c == '{') ++depth;
+    if ((c == ']' || c == '}') && depth > 0) --depth;
+    if (depth > kMaxTomlNesting) {
+      throw ParseError(fmt::format("{}: line {}: arrays and inline tables nested deeper than {} levels (the limit)",
+                                   origin, line, kMaxTomlNesting));
+    }
+    ++i;
+  }
+}
+
+}  // namespace
+
 toml::value parse_toml(const std::string& text, const std::string& origin) {
+  check_nesting_depth(text, origin);
   std::istringstream stream(text);
   try {
     return toml::parse(stream, origin);
   } catch (const std::exception& error) {
     throw ParseError(fmt::format("{}: TOML syntax error: {}", origin, error.what()));
   }
-}
-
-std::string read_text_file(const std::filesystem::path& path, const std::string& what) {
-  std::ifstream in(path);
-  if (!in) throw ParseError(fmt::format("{}: cannot open {}", path.string(), what));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
 }
 
 TableReader::TableReader(const toml::value& table, std::string origin, std::string path)
@@ -83,6 +126,27 @@ long TableReader::integer(const std::string& key, long fallback) {
     throw ParseError(fmt::format("{}: expected an integer, got {}", where(key), type_name(*value)));
   }
   return static_cast<long>(value->as_integer());
+}
+
+long TableReader::read_integer(const std::string& key, long low, long high, std::optional<long> fallback) {
+  if (fallback && !has(key)) return *fallback;
+  const long value = integer(key);
+  if (value < low || value > high) {
+    throw InvalidInput(fmt::format("{} = {}: must be an integer in [{}, {}]", where(key), value, low, high));
+  }
+  return value;
+}
+
+std::vector<long> TableReader::integers(const std::string& key, long low, long high) {
+  std::vector<long> out;
+  for (double x : numbers(key)) {
+    // The range test comes first: casting a double outside long's range is undefined.
+    if (!(x >= static_cast<double>(low) && x <= static_cast<double>(high)) || x != std::floor(x)) {
+      throw InvalidInput(fmt::format("{}: entry {} must be an integer in [{}, {}]", where(key), x, low, high));
+    }
+    out.push_back(static_cast<long>(x));
+  }
+  return out;
 }
 
 bool TableReader::boolean(const std::string& key, bool fallback) {

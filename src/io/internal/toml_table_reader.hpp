@@ -14,11 +14,13 @@
 
 namespace catena::internal {
 
-/// Parses TOML text; a syntax error is a ParseError naming `origin`.
-toml::value parse_toml(const std::string& text, const std::string& origin);
+/// Deepest nesting of arrays and inline tables accepted in a TOML file (docs/scene-format.md,
+/// "Limits"): our deepest is 2; the parser recurses once per level.
+inline constexpr int kMaxTomlNesting = 64;
 
-/// The whole file as text; ParseError "<path>: cannot open <what>" when unreadable.
-std::string read_text_file(const std::filesystem::path& path, const std::string& what);
+/// Parses TOML text; a syntax error, or nesting deeper than kMaxTomlNesting, is a ParseError
+/// naming `origin`.
+toml::value parse_toml(const std::string& text, const std::string& origin);
 
 /// Reads one TOML table strictly. Messages name "<origin>: [<path>].<key>".
 class TableReader {
@@ -41,6 +43,11 @@ class TableReader {
                  std::optional<double> fallback = std::nullopt);
   long integer(const std::string& key);
   long integer(const std::string& key, long fallback);
+  /// An integer in [low, high] (`fallback` when absent; required without one). A value outside
+  /// the range is an InvalidInput naming the key and the range, never a wrapped cast.
+  long read_integer(const std::string& key, long low, long high, std::optional<long> fallback = std::nullopt);
+  /// An array of integers in [low, high] (required); whole numbers written as floats (2.0) count.
+  std::vector<long> integers(const std::string& key, long low, long high);
   bool boolean(const std::string& key, bool fallback);
   std::string string(const std::string& key);
   std::string string(const std::string& key, const std::string& fallback);

@@ -1,9 +1,9 @@
 #include "catena/io/report.hpp"
 
 #include <fmt/format.h>
-#include <fstream>
 
 #include "catena/core/error.hpp"
+#include "catena/io/file_access.hpp"
 #include "io/internal/data_dir.hpp"
 #include "io/report/figures.hpp"
 #include "io/report/sections.hpp"
@@ -14,11 +14,11 @@ namespace {
 using internal::json;
 
 json read_results(const std::filesystem::path& results_json) {
-  std::ifstream in(results_json);
-  if (!in) throw ParseError(fmt::format("{}: cannot open results JSON", results_json.string()));
-  json document = json::parse(in, nullptr, false);
+  // The suite's report.json is about 100 MB; a regular file is required (not a FIFO or device).
+  constexpr std::uintmax_t kMaxResultsBytes = std::uintmax_t(4) << 30;
+  json document = json::parse(read_input_file(results_json, "results JSON", kMaxResultsBytes), nullptr, false);
   if (document.is_discarded() || !document.contains(internal::key::scenes)) {
-    throw ParseError(fmt::format("{}: not a catena results JSON (no \"scenes\")", results_json.string()));
+    throw ParseError(fmt::format("{}: not a catena results JSON (no \"scenes\")", path_text(results_json)));
   }
   return document;
 }
@@ -49,17 +49,11 @@ void add_figures(internal::Document& out, const std::filesystem::path& results_j
   for (const auto& image : images) out.push_back(image);
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  if (!out) throw InvalidInput(fmt::format("{}: cannot write the report", path.string()));
-}
-
 }  // namespace
 
 ReportFiles write_report(const std::filesystem::path& results_json, const ReportOptions& options) {
   const json document = read_results(results_json);
-  std::filesystem::create_directories(options.out_dir);
+  check_output_directory(options.out_dir);
   ReportFiles files;
   files.data_dir = options.out_dir / "data";
   internal::write_data_tables(document, files.data_dir);
@@ -79,8 +73,8 @@ ReportFiles write_report(const std::filesystem::path& results_json, const Report
 
   files.markdown = options.out_dir / "report.md";
   files.html = options.out_dir / "report.html";
-  write_text(files.markdown, internal::render_markdown(report, options.out_dir));
-  write_text(files.html, internal::render_html(report, "Catena verification report"));
+  write_file_atomically(files.markdown, internal::render_markdown(report, options.out_dir));
+  write_file_atomically(files.html, internal::render_html(report, "Catena verification report"));
   return files;
 }
 
