@@ -381,7 +381,7 @@ TEST(Cli, TooManyModesExitTwoNamingTheKey) {
   const fs::path modes = write_scene("too_many_modes.toml", kGood + "[request]\ninplane_modes = 1001\n");
   const CliRun run = run_cli("solve " + modes.string());
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.output.find("inplane_modes = 1001: must be in [0, 1000]"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("inplane_modes = 1001: must be an integer in [0, 1000]"), std::string::npos) << run.output;
 }
 
 }  // namespace
