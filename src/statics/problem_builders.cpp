@@ -46,9 +46,16 @@ Problem make_taut_inclined_problem(double eps, double phi_deg, double lambda2, d
     const Vec2 r = catenary_end_offset(problem.cable, H, sin_phi - eps * s_a);
     return std::atan2(r.y(), r.x()) - phi;
   };
+  // Groups far outside physical ranges (lambda2 = 5e-324, EA ~ 1e-308) leave no sign change, or a
+  // non-finite angle: bad input naming the groups, not an escaping root-finder exception.
+  const double at_a = chord_angle_excess(0.0), at_b = chord_angle_excess(1.0);
+  require(std::isfinite(at_a) && std::isfinite(at_b) && at_a * at_b <= 0.0,
+          fmt::format("Invalid taut_inclined eps = {}, phi_deg = {}, lambda2 = {}: no static state of "
+                      "such a cable has T0 = 1 N at the chord angle (the groups overflow or are out of range)",
+                      eps, phi_deg, lambda2));
   boost::uintmax_t iterations = 200;
   const auto bracket = boost::math::tools::toms748_solve(
-      chord_angle_excess, 0.0, 1.0, boost::math::tools::eps_tolerance<double>(53), iterations);
+      chord_angle_excess, 0.0, 1.0, at_a, at_b, boost::math::tools::eps_tolerance<double>(53), iterations);
   const double s_a = 0.5 * (bracket.first + bracket.second);
   const double V_A = sin_phi - eps * s_a;
   problem.supports.a_m = Vec2::Zero();
@@ -115,9 +122,15 @@ Problem make_gale_sag_problem(double height_over_span, double sag_parameter) {
   const double u = 0.5 * b;
   const double h = height_over_span * b;
   const double x_mid = std::asinh(h / (2.0 * std::sinh(u)));
-  const double sigma1 = std::sinh(x_mid - u);
-  const double sigma2 = std::sinh(x_mid + u);
-  Problem problem = make_gale_xi_problem(gale_xi_from_sigma(sigma1), gale_xi_from_sigma(sigma2));
+  const double xi1 = gale_xi_from_sigma(std::sinh(x_mid - u));
+  const double xi2 = gale_xi_from_sigma(std::sinh(x_mid + u));
+  // A sag parameter near 0 (or a steep h/b) puts the supports far up the catenary: name the inputs,
+  // not the derived xi.
+  require(std::isfinite(xi1) && std::isfinite(xi2) && std::max(std::abs(xi1), std::abs(xi2)) <= 1e4,
+          fmt::format("Invalid gale sag_param = {} with h_over_b = {}: the supports would lie at |xi| = {:.3g} "
+                      "on the catenary, beyond the supported |xi| <= 1e4 (too deep a sag)",
+                      sag_parameter, height_over_span, std::max(std::abs(xi1), std::abs(xi2))));
+  Problem problem = make_gale_xi_problem(xi1, xi2);
   problem.form = ProblemForm::GaleSag;
   return problem;
 }

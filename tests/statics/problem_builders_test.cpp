@@ -4,6 +4,7 @@
 // built from (eps, phi, lambda2, h) reproduces those groups to 1e-12 after the statics; (3) the
 // frequency conversions invert each other. Published values are read from
 // verification/reference/published/ as transcribed; disagreements are printed, not hidden.
+#include <functional>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -168,6 +169,33 @@ TEST(ProblemBuilders, RejectOutOfRangeGroups) {
   } catch (const InvalidInput& error) {
     EXPECT_NE(std::string(error.what()).find("phi_deg"), std::string::npos) << error.what();
   }
+}
+
+}  // namespace
+}  // namespace catena
+
+namespace catena {
+namespace {
+
+std::string message_of(const std::function<void()>& build) {
+  try {
+    build();
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// Found by the mutant campaign (docs/testing.md): lambda2 = 5e-324 let a root-finder exception
+// escape (exit 3); sag_param = 5e-324 named the derived "xi1 = -nan" instead of the input.
+TEST(ProblemBuilders, ExtremeGroupsAreBadInputNamingTheGivenValues) {
+  const std::string lambda = message_of([] { make_taut_inclined_problem(0.1, 10.0, 5e-324, 1.0); });
+  EXPECT_NE(lambda.find("lambda2 = 5e-324"), std::string::npos) << lambda;
+  const std::string sag = message_of([] { make_gale_sag_problem(0.0, 5e-324); });
+  EXPECT_NE(sag.find("sag_param = 5e-324"), std::string::npos) << sag;
+  EXPECT_EQ(sag.find("nan"), std::string::npos) << sag;
+  EXPECT_NE(message_of([] { make_gale_sag_problem(0.0, 1e-6); }).find("too deep a sag"), std::string::npos);
+  EXPECT_EQ(message_of([] { make_gale_sag_problem(0.0, 0.5); }), "");
 }
 
 }  // namespace

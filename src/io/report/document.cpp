@@ -74,8 +74,13 @@ std::string html_block(const Block& block) {
 }  // namespace
 
 void add_table_or_none(Document& document, Table table) {
-  if (table.rows.empty()) document.push_back(Paragraph{"None."});
-  else document.push_back(std::move(table));
+  // Built in place: GCC 12 warns (falsely) of an uninitialised Table when a temporary Paragraph is
+  // moved into the variant.
+  if (table.rows.empty()) {
+    document.emplace_back(std::in_place_type<Paragraph>, "None.");
+  } else {
+    document.emplace_back(std::in_place_type<Table>, std::move(table));
+  }
 }
 
 std::string html_escape(const std::string& text) {
