@@ -126,10 +126,12 @@ Problem make_gale_sag_problem(double height_over_span, double sag_parameter) {
   const double xi2 = gale_xi_from_sigma(std::sinh(x_mid + u));
   // A sag parameter near 0 (or a steep h/b) puts the supports far up the catenary: name the inputs,
   // not the derived xi.
-  require(std::isfinite(xi1) && std::isfinite(xi2) && std::max(std::abs(xi1), std::abs(xi2)) <= 1e4,
-          fmt::format("Invalid gale sag_param = {} with h_over_b = {}: the supports would lie at |xi| = {:.3g} "
+  const double reach = std::max(std::abs(xi1), std::abs(xi2));
+  const bool finite = std::isfinite(xi1) && std::isfinite(xi2);
+  require(finite && reach <= 1e4,
+          fmt::format("Invalid gale sag_param = {} with h_over_b = {}: the supports would lie at |xi| = {} "
                       "on the catenary, beyond the supported |xi| <= 1e4 (too deep a sag)",
-                      sag_parameter, height_over_span, std::max(std::abs(xi1), std::abs(xi2))));
+                      sag_parameter, height_over_span, finite ? fmt::format("{:.3g}", reach) : "beyond 1e308"));
   Problem problem = make_gale_xi_problem(xi1, xi2);
   problem.form = ProblemForm::GaleSag;
   return problem;
