@@ -8,7 +8,6 @@
 
 #include "catena/core/error.hpp"
 #include "catena/models/cable.hpp"
-#include "catena/solvers/solve_request.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 
 namespace catena {
@@ -84,39 +83,6 @@ TEST(Statics, ReportsUnreachableAndImpossibleGeometries) {
   StaticsOptions options;
   options.max_iterations = 0;
   expect_invalid([&] { solve_statics(good(), options); }, "max_iterations");
-}
-
-TEST(SolveRequest, RejectsEachInvalidField) {
-  auto with = [](auto change) { SolveRequest r; change(r); return [r] { r.validate(); }; };
-  expect_invalid(with([](SolveRequest& r) { r.inplane_modes = -1; }), "inplane_modes");
-  expect_invalid(with([](SolveRequest& r) { r.outofplane_modes = -1; }), "outofplane_modes");
-  expect_invalid(with([](SolveRequest& r) { r.points = 1; }), "points");
-  // 1e6 shape points ran out of memory while the JSON was written.
-  expect_invalid(with([](SolveRequest& r) { r.points = 1000000; }), "points = 1000000: must be in [2, 100000]");
-  expect_invalid(with([](SolveRequest& r) { r.inplane_modes = 100001; }), "inplane_modes");
-  expect_invalid(with([](SolveRequest& r) {
-                   r.shapes = true;
-                   r.points = 100000;
-                   r.inplane_modes = 11;
-                 }),
-                 "shape values");
-  EXPECT_NO_THROW(with([](SolveRequest& r) {
-    r.shapes = true;
-    r.points = 100000;
-    r.inplane_modes = 10;
-  })());
-  expect_invalid(with([](SolveRequest& r) { r.forced = ForcedRequest{}; }), "forcing frequency");
-  expect_invalid(with([](SolveRequest& r) {
-                   r.forced = ForcedRequest{};
-                   r.forced->omegas_rad_s = {std::nan("")};
-                 }),
-                 "forcing frequency");
-  expect_invalid(with([](SolveRequest& r) {
-                   r.forced = ForcedRequest{};
-                   r.forced->omegas_rad_s = {1.0};
-                   r.forced->amplitude_m = 0.0;
-                 }),
-                 "amplitude_m");
 }
 
 }  // namespace
