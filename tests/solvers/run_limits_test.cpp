@@ -134,24 +134,6 @@ TEST(Progress, ReportsEachUnitOfEveryPart) {
   EXPECT_EQ(done_by_part.size(), 3u);
 }
 
-TEST(WorkMeter, NeverStopsWithoutLimitsOrWhenThePartIsDone) {
-  internal::WorkMeter unlimited(nullptr, "x", "things", 3);
-  EXPECT_FALSE(unlimited.stop_after(1));
-  const RunLimits limits = expired_limits();
-  internal::WorkMeter last(&limits, "x", "things", 3);
-  EXPECT_FALSE(last.stop_after(3));  // nothing left to skip
-  EXPECT_TRUE(last.message().empty());
-  internal::WorkMeter early(&limits, "x", "things", 3);
-  EXPECT_TRUE(early.stop_after(1));
-  EXPECT_EQ(early.message(), "time limit of 0.5 s reached after 1 of 3 things");
-  SolverSummary summary;
-  summary.termination = Termination::Converged;
-  summary.message = "Converged: 1 of 1 things";
-  internal::mark_time_limit(early, summary);
-  EXPECT_EQ(summary.termination, Termination::NoConvergence);
-  EXPECT_EQ(summary.message, "No convergence: time limit of 0.5 s reached after 1 of 3 things; 1 of 1 things");
-}
-
 TEST(RunLimitsTimeLimit, RefusesNonPositiveNonFiniteAndHugeLimits) {
   for (double bad : {0.0, -1.0, std::nan(""), kInfinity, 2e9}) {
     EXPECT_THROW(RunLimits::time_limit(bad), InvalidInput) << bad;
