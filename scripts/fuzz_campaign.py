@@ -53,6 +53,9 @@ def parse_arguments():
     parser.add_argument("--seed", type=int, default=18, help="campaign seed (default 18)")
     parser.add_argument("--jobs", type=int, default=2, help="mutants run at a time (default 2)")
     parser.add_argument("--timeout", type=float, default=30.0, help="seconds per mutant (default 30)")
+    parser.add_argument("--time-limit", type=float, default=None,
+                        help="pass `--time-limit SECONDS` to catena solve (its own budget: a long but legal "
+                             "request then ends with a partial result instead of a timeout); default none")
     parser.add_argument("--build", default=os.path.join(root, "build"), help="build directory")
     parser.add_argument("--scenes", default=os.path.join(root, "verification", "scenes"),
                         help="seed corpus (default verification/scenes)")
@@ -158,8 +161,10 @@ def run_mutant(cli, arguments, mutants_dir, json_dir, name):
     result_path = os.path.join(json_dir, name.replace(".toml", ".json"))
     started = time.monotonic()
     try:
-        run = subprocess.run([cli, "solve", mutant, "--json", result_path, "--quiet"], capture_output=True,
-                             timeout=arguments.timeout)
+        command = [cli, "solve", mutant, "--json", result_path, "--quiet"]
+        if arguments.time_limit:
+            command += ["--time-limit", f"{arguments.time_limit:g}"]
+        run = subprocess.run(command, capture_output=True, timeout=arguments.timeout)
     except subprocess.TimeoutExpired:
         return name, "timeout", f"still running after {arguments.timeout:g} s", time.monotonic() - started
     elapsed = time.monotonic() - started
