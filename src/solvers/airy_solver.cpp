@@ -326,10 +326,7 @@ SolverOutput solve_airy(const Problem& problem,
                         const DimensionlessGroups& groups,
                         const SolveRequest& request,
                         const AirySolverOptions& options) {
-  options.validate();
-  const SolveContext context{problem, statics, groups, request};
-  internal::AiryNumerics numerics(context, options);
-  return internal::drive_solver("airy", context, numerics);
+  return internal::solve_with<internal::AiryNumerics>("airy", {problem, statics, groups, request}, options);
 }
 
 }  // namespace catena

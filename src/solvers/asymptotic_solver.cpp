@@ -387,10 +387,7 @@ SolverOutput solve_asymptotic(const Problem& problem,
                               const DimensionlessGroups& groups,
                               const SolveRequest& request,
                               const AsymptoticSolverOptions& options) {
-  options.validate();
-  const SolveContext context{problem, statics, groups, request};
-  internal::AsymptoticNumerics numerics(context, options);
-  return internal::drive_solver("asymptotic", context, numerics);
+  return internal::solve_with<internal::AsymptoticNumerics>("asymptotic", {problem, statics, groups, request}, options);
 }
 
 }  // namespace catena

@@ -285,10 +285,7 @@ SolverOutput solve_fe(const Problem& problem,
                       const DimensionlessGroups& groups,
                       const SolveRequest& request,
                       const FeSolverOptions& options) {
-  options.validate();
-  const SolveContext context{problem, statics, groups, request};
-  internal::FeNumerics numerics(context, options);
-  return internal::drive_solver("fe", context, numerics);
+  return internal::solve_with<internal::FeNumerics>("fe", {problem, statics, groups, request}, options);
 }
 
 }  // namespace catena

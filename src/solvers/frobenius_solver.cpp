@@ -249,10 +249,7 @@ SolverEntry make_frobenius_entry() {
 
 SolverOutput solve_frobenius(const Problem& problem, const StaticSolution& statics, const DimensionlessGroups& groups,
                              const SolveRequest& request, const FrobeniusSolverOptions& options) {
-  options.validate();
-  const SolveContext context{problem, statics, groups, request};
-  internal::FrobeniusNumerics numerics(context, options);
-  return internal::drive_solver("frobenius", context, numerics);
+  return internal::solve_with<internal::FrobeniusNumerics>("frobenius", {problem, statics, groups, request}, options);
 }
 
 }  // namespace catena

@@ -265,10 +265,7 @@ SolverOutput solve_shooting(const Problem& problem,
                             const DimensionlessGroups& groups,
                             const SolveRequest& request,
                             const ShootingSolverOptions& options) {
-  options.validate();
-  const SolveContext context{problem, statics, groups, request};
-  internal::ShootingNumerics numerics(context, options);
-  return internal::drive_solver("shooting", context, numerics);
+  return internal::solve_with<internal::ShootingNumerics>("shooting", {problem, statics, groups, request}, options);
 }
 
 }  // namespace catena

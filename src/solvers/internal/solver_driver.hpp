@@ -70,6 +70,15 @@ class SolverNumerics {
 SolverOutput drive_solver(const std::string& solver, const SolveContext& context,
                           SolverNumerics& numerics);
 
+/// The typed entry points (solve_fe(...) and the others): validate the options, build the
+/// solver's numerics and drive them, exactly as run_solver() does for a registry entry.
+template <class Numerics, class Options>
+SolverOutput solve_with(const std::string& solver, const SolveContext& context, const Options& options) {
+  options.validate();
+  Numerics numerics(context, options);
+  return drive_solver(solver, context, numerics);
+}
+
 /// The one rule that combines the parts of a run (each plane and the forced response) into the
 /// overall summary:
 /// - termination: Converged when every part converged; NumericalFailure when no part is usable;
