@@ -206,13 +206,7 @@ Mode AiryNumerics::inplane_mode(int index, double kl, const AiryModel& model,
   if (request.tension) mode.tension_n = std::move(shape.tension_n);
   normalise_inplane_mode(mode);
   mode.modal_mass_kg = inplane_modal_mass(mode, cable.mass_kg_per_m, cable.normal_mass_kg_per_m());
-  if (!request.shapes) {
-    mode.s_m = Vector();
-    mode.u = Vector();
-    mode.w = Vector();
-    mode.tension_n = Vector();
-    mode.modal_mass_kg = -1.0;
-  }
+  if (!request.shapes) drop_shape_fields(mode);
   return mode;
 }
 

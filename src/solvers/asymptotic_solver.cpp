@@ -286,13 +286,7 @@ Mode AsymptoticNumerics::inplane_mode(int index, double kl, const Vector& statio
   }
   normalise_inplane_mode(mode);
   mode.modal_mass_kg = inplane_modal_mass(mode, cable.mass_kg_per_m, M);
-  if (!request.shapes) {
-    mode.s_m = Vector();
-    mode.u = Vector();
-    mode.w = Vector();
-    mode.tension_n = Vector();
-    mode.modal_mass_kg = -1.0;
-  }
+  if (!request.shapes) drop_shape_fields(mode);
   return mode;
 }
 

@@ -31,14 +31,8 @@ void set_inplane_shape(Mode& mode, const std::vector<FieldValues>& values, bool 
 // Keeps only the frequency and (in plane, when asked) max |T| of a mode computed on the dense
 // internal stations.
 void strip_dense_fields(Mode& mode, bool keep_max_tension) {
-  const double max_tension = mode.max_abs_tension_n;
-  mode.s_m = Vector();
-  mode.u = Vector();
-  mode.w = Vector();
-  mode.v = Vector();
-  mode.tension_n = Vector();
-  mode.modal_mass_kg = -1.0;
-  mode.max_abs_tension_n = keep_max_tension ? max_tension : -1.0;
+  drop_shape_fields(mode);
+  if (!keep_max_tension) mode.max_abs_tension_n = -1.0;
 }
 
 }  // namespace

@@ -73,4 +73,13 @@ double outofplane_modal_mass(const Mode& mode, double normal_mass_kg_per_m) {
   return integrate_on_stations(mode.s_m, density);
 }
 
+void drop_shape_fields(Mode& mode) {
+  mode.s_m = Vector();
+  mode.u = Vector();
+  mode.w = Vector();
+  mode.v = Vector();
+  mode.tension_n = Vector();
+  mode.modal_mass_kg = -1.0;
+}
+
 }  // namespace catena::internal

@@ -115,14 +115,7 @@ void ShootingModeBuilder::set_shape(Mode& mode, const Shot& shot,
       mode.max_abs_tension_n = 0.0;
     }
   }
-  if (!request_.shapes) {
-    mode.s_m.resize(0);
-    mode.u.resize(0);
-    mode.w.resize(0);
-    mode.v.resize(0);
-    mode.tension_n.resize(0);
-    mode.modal_mass_kg = -1.0;
-  }
+  if (!request_.shapes) drop_shape_fields(mode);
 }
 
 }  // namespace catena::internal

@@ -66,12 +66,7 @@ ModalResult wkb_outofplane_modes(const StaticSolution& statics,
         mode.tension_n = Vector::Zero(stations.size());
         mode.max_abs_tension_n = 0.0;
       }
-      if (!request.shapes) {
-        mode.s_m = Vector();
-        mode.v = Vector();
-        mode.tension_n = Vector();
-        mode.modal_mass_kg = -1.0;
-      }
+      if (!request.shapes) drop_shape_fields(mode);
     }
     result.modes.push_back(std::move(mode));
   }

@@ -183,3 +183,27 @@ TEST(ModalMass, StringModeHasHalfTheCableMass) {
 
 }  // namespace
 }  // namespace catena::internal
+
+namespace catena::internal {
+namespace {
+
+TEST(DropShapeFields, KeepsTheSummaryAndClearsTheShape) {
+  Mode mode;
+  mode.omega_rad_s = 2.0;
+  mode.relative_error_estimate = 1e-9;
+  mode.s_m = Vector::LinSpaced(3, 0.0, 1.0);
+  mode.u = mode.v = mode.w = mode.tension_n = Vector::Ones(3);
+  mode.normalised_by = "w";
+  mode.max_abs_tension_n = 5.0;
+  mode.modal_mass_kg = 0.5;
+  drop_shape_fields(mode);
+  EXPECT_EQ(mode.s_m.size() + mode.u.size() + mode.v.size() + mode.w.size() + mode.tension_n.size(), 0);
+  EXPECT_EQ(mode.modal_mass_kg, -1.0);
+  EXPECT_EQ(mode.omega_rad_s, 2.0);
+  EXPECT_EQ(mode.relative_error_estimate, 1e-9);
+  EXPECT_EQ(mode.normalised_by, "w");
+  EXPECT_EQ(mode.max_abs_tension_n, 5.0);
+}
+
+}  // namespace
+}  // namespace catena::internal
