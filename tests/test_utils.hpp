@@ -1,12 +1,16 @@
 #pragma once
-// Shared test helpers: relative errors measured the same way everywhere (STYLE.md §7) and the
-// location of the reference tables.
+// Shared test helpers: relative errors measured the same way everywhere, the location of the
+// reference tables, and the check that bad input names its field.
 
 #include <algorithm>
 #include <boost/math/special_functions/relative_difference.hpp>
 #include <cmath>
+#include <functional>
+#include <gtest/gtest.h>
 #include <limits>
 #include <string>
+
+#include "catena/core/error.hpp"
 
 namespace catena::testing {
 
@@ -22,6 +26,16 @@ inline double digits_of_agreement(double a, double b) {
 /// verification/reference/published/<name>
 inline std::string published_table(const std::string& name) {
   return std::string(CATENA_REFERENCE_DIR) + "/published/" + name;
+}
+
+/// Expects `action` to throw InvalidInput whose message contains `word` (the field it names).
+inline void expect_invalid(const std::function<void()>& action, const std::string& word) {
+  try {
+    action();
+    ADD_FAILURE() << "no InvalidInput; expected a message with '" << word << "'";
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find(word), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace catena::testing

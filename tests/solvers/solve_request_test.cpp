@@ -9,18 +9,12 @@
 #include <string>
 
 #include "catena/core/error.hpp"
+#include "test_utils.hpp"
 
 namespace catena {
 namespace {
 
-void expect_invalid(const std::function<void()>& action, const std::string& word) {
-  try {
-    action();
-    ADD_FAILURE() << "no InvalidInput; expected a message with '" << word << "'";
-  } catch (const InvalidInput& error) {
-    EXPECT_NE(std::string(error.what()).find(word), std::string::npos) << error.what();
-  }
-}
+using testing::expect_invalid;
 
 TEST(SolveRequest, RejectsEachInvalidField) {
   auto with = [](auto change) { SolveRequest r; change(r); return [r] { r.validate(); }; };
