@@ -1,6 +1,7 @@
 // Triantafyllou's Airy-function solution (Grinfogel 1984, eqs. 7-16; docs/methods/airy.md): the
 // solver's knobs, applicability and numerics. The model, its boundary determinant, the root scan
-// and the mode shapes are in src/solvers/internal/airy_*.
+// and the mode shapes are in src/solvers/internal/airy_*; the out-of-plane string of linear
+// tension in src/solvers/internal/airy_tension_string.hpp.
 #include "catena/solvers/airy_solver.hpp"
 
 #include <fmt/format.h>
@@ -14,6 +15,7 @@
 #include "solvers/internal/airy_mode_shape.hpp"
 #include "solvers/internal/airy_model.hpp"
 #include "solvers/internal/airy_root_scan.hpp"
+#include "solvers/internal/airy_tension_string.hpp"
 #include "solvers/internal/knob_table.hpp"
 #include "solvers/internal/mode_tools.hpp"
 #include "solvers/internal/solver_driver.hpp"
@@ -121,7 +123,7 @@ namespace internal {
 namespace {
 
 // The numerics of the airy solver for one problem: the Airy determinant's roots in plane, the
-// WKB string modes out of plane (the Airy model is in-plane only).
+// Bessel modes of the linear-tension string out of plane (airy_tension_string.hpp).
 class AiryNumerics final : public SolverNumerics {
  public:
   AiryNumerics(const SolveContext& context, const AirySolverOptions& options)
@@ -129,10 +131,10 @@ class AiryNumerics final : public SolverNumerics {
         options_(options),
         // O(eps^2) from the model, plus half the static strain T0/EA it neglects in k (as
         // asymptotic); the roots themselves are solved to 2^(1 - tolerance_bits).
-        model_error_(context.groups.eps * context.groups.eps +
-                     0.5 * static_strain(context.problem, context.groups)),
+        inplane_model_error_(context.groups.eps * context.groups.eps +
+                             0.5 * static_strain(context.problem, context.groups)),
         root_error_(std::ldexp(1.0, 1 - options.tolerance_bits)),
-        error_estimate_(std::max(model_error_, root_error_)) {}
+        inplane_error_estimate_(std::max(inplane_model_error_, root_error_)) {}
 
   std::optional<std::string> not_applicable() const override {
     return airy_not_applicable_reason(context_.problem, context_.statics, context_.groups, options_);
@@ -148,6 +150,8 @@ class AiryNumerics final : public SolverNumerics {
   std::string resolution() const;
   ModalResult inplane_modes(int count) const;
   ModalResult outofplane_modes() const;  // as many as the request asks
+  Mode outofplane_mode(int n, double omega, const TensionString& string, const Vector& stations,
+                       double estimate) const;
   Mode inplane_mode(int index, double kl, const AiryModel& model, const Vector& stations,
                     const Vector& travel_times, double& max_residual) const;
   void add_scan_notes(const AiryRootScan& scan, SolverSummary& summary) const;
@@ -156,9 +160,9 @@ class AiryNumerics final : public SolverNumerics {
 
   const SolveContext& context_;
   AirySolverOptions options_;
-  double model_error_;
+  double inplane_model_error_;
   double root_error_;
-  double error_estimate_;
+  double inplane_error_estimate_;
 };
 
 std::string AiryNumerics::resolution() const {
@@ -172,15 +176,15 @@ void AiryNumerics::describe(SolverSummary& summary) const {
   const double eps = context_.groups.eps;
   summary.resolution = resolution();
   summary.notes.push_back(fmt::format(
-      "Triantafyllou's Airy model is asymptotic in eps (linearised Q, WKB fast solution): model "
-      "error O(eps^2) + T0/(2 EA) = {:.3g} reported as relative_error_estimate; roots are solved "
-      "to {:.1e}",
-      model_error_, root_error_));
+      "Triantafyllou's Airy model is asymptotic in eps (linearised Q, WKB fast solution): in-plane "
+      "model error O(eps^2) + T0/(2 EA) = {:.3g} reported as relative_error_estimate; out of "
+      "plane the bound of the linear-tension string (its notes); roots are solved to {:.1e}",
+      inplane_model_error_, root_error_));
   if (eps > options_.eps_warning_threshold) {
     summary.warnings.push_back(fmt::format(
         "eps = {:.4g} > {:.3g}: the Airy model's linearisation of Q and WKB fast solution lose "
         "accuracy; expect errors of order eps^2 = {:.2g} or worse",
-        eps, options_.eps_warning_threshold, model_error_));
+        eps, options_.eps_warning_threshold, inplane_model_error_));
   }
 }
 
@@ -195,7 +199,7 @@ Mode AiryNumerics::inplane_mode(int index, double kl, const AiryModel& model,
   mode.index = index;
   const double omega = context_.groups.omega_from_k_l_over_pi(kl / kPi);
   set_mode_frequency(mode, omega, context_.groups);
-  mode.relative_error_estimate = error_estimate_;
+  mode.relative_error_estimate = inplane_error_estimate_;
   if (!request.shapes && !request.tension) return mode;
   AiryModeShape shape =
       airy_mode_shape(model, context_.statics, omega, stations, travel_times * omega);
@@ -210,8 +214,8 @@ Mode AiryNumerics::inplane_mode(int index, double kl, const AiryModel& model,
   return mode;
 }
 
-// How the scan went, and the warnings it calls for: a count that disagrees with eq. (21), whose
-// count is exact, and a first root close to the spurious-root cutoff.
+// How the scan went, and the warning it calls for: a first root close to the spurious-root cutoff.
+// (The count is not cross-checked with another solver's equation: airy stays independent.)
 void AiryNumerics::add_scan_notes(const AiryRootScan& scan, SolverSummary& summary) const {
   const DimensionlessGroups& groups = context_.groups;
   const int found = static_cast<int>(scan.roots.size());
@@ -222,22 +226,6 @@ void AiryNumerics::add_scan_notes(const AiryRootScan& scan, SolverSummary& summa
       scan.cutoff_kl / kPi, (scan.roots.empty() ? scan.limit_kl : scan.roots.back()) / kPi,
       scan.evaluations, scan.sign_changes, scan.pairs_from_minima, scan.cutoff_kl / kPi));
   if (found == 0) return;
-  // Eq. (21)'s model differs by O(eps^2) and has no axial modes: a difference is a warning.
-  const double top = scan.roots.back();
-  if (!context_.problem.cable.is_inextensible() &&
-      top < 0.5 * first_axial_mode_k_l(groups.eps, groups.chord_angle_rad, groups.lambda2,
-                                       groups.mass_ratio)) {
-    const auto eq21 = eq21_root_k_ls(found + 2, groups.eps, groups.chord_angle_rad, groups.lambda2);
-    const auto below =
-        std::count_if(eq21.begin(), eq21.end(), [&](double kl) { return kl < top * (1.0 + 1e-9); });
-    if (below != found &&
-        std::abs(eq21[static_cast<std::size_t>(found - 1)] / top - 1.0) > 3.0 * model_error_) {
-      summary.warnings.push_back(fmt::format(
-          "eq. (21) has {} roots below the top Airy root kL/pi = {:.6g} but the scan found {}: "
-          "check with a finer scan_step_k_l_over_pi",
-          below, top / kPi, found));
-    }
-  }
   if (scan.roots.front() < 1.1 * scan.cutoff_kl) {
     summary.warnings.push_back(fmt::format(
         "the first root kL/pi = {:.4g} lies within 10% of the spurious-root cutoff {:.4g}: it may "
@@ -282,7 +270,7 @@ ModalResult AiryNumerics::inplane_modes(int count) const {
   SolverSummary& summary = result.summary;
   summary.resolution = resolution();
   summary.operations = scan.evaluations;
-  summary.max_error_estimate = error_estimate_;
+  summary.max_error_estimate = inplane_error_estimate_;
   summary.max_residual = need_shape ? max_residual : -1.0;
   add_scan_notes(scan, summary);
   set_inplane_outcome(static_cast<int>(result.modes.size()), count, scan, max_residual, summary);
@@ -291,15 +279,57 @@ ModalResult AiryNumerics::inplane_modes(int count) const {
 }
 
 ModalResult AiryNumerics::outofplane_modes() const {
-  ModalResult result =
-      wkb_outofplane_modes(context_.statics, context_.groups, context_.request,
-                           context_.problem.cable.normal_mass_kg_per_m(), error_estimate_,
-                           options_.quadrature_panels, "airy");
-  result.summary.message =
-      fmt::format("Converged: {} out-of-plane WKB string modes (the Airy model is in-plane only)",
-                  result.modes.size());
-  result.summary.max_error_estimate = error_estimate_;
+  const SolveContext& c = context_;
+  const FittedTensionString fitted = fit_tension_string(c.statics);
+  const TensionString& string = fitted.string;
+  const double deviation = fitted.deviation;
+  const double estimate = linear_tension_error_bound(deviation) + root_error_;
+  const int count = c.request.outofplane_modes;
+  const Vector stations = c.request.stations_m(c.problem.cable.length_m);
+  ModalResult result;
+  for (int n = 1; n <= count; ++n) {
+    result.modes.push_back(outofplane_mode(n, string_frequency(string, n, options_.tolerance_bits),
+                                           string, stations, estimate));
+  }
+  result.proved_count_below_top = count;
+  SolverSummary& summary = result.summary;
+  summary.resolution = fmt::format("Bessel J0, Y0 in modulus-phase form, TOMS 748 to {} bits",
+                                   options_.tolerance_bits);
+  summary.termination = Termination::Converged;
+  summary.max_error_estimate = estimate;
+  summary.message = fmt::format(
+      "Converged: {} out-of-plane modes of the linear-tension string (Bessel J0, Y0); the n-th "
+      "root of the monotone Bessel phase is the n-th mode",
+      count);
+  summary.notes.push_back(fmt::format(
+      "P = T/(1+e) made linear (ends {:.6g} N, {:.6g} N: the secant scaled to balance the "
+      "deviation) deviates from the statics by at most {:.3g} relative: by the min-max principle "
+      "the frequencies are within "
+      "1/sqrt(1 - {:.3g}) - 1 = {:.3g}, reported as relative_error_estimate (+ root tolerance)",
+      string.stiffness_a, string.stiffness_b, deviation, deviation, estimate - root_error_));
   return result;
+}
+
+// The n-th out-of-plane mode at omega; with the Bessel shape when asked, normalised like every
+// solver's, and no first-order tension (out-of-plane motion stretches the cable to second order).
+Mode AiryNumerics::outofplane_mode(int n, double omega, const TensionString& string,
+                                   const Vector& stations, double estimate) const {
+  const SolveRequest& request = context_.request;
+  Mode mode;
+  mode.index = n;
+  set_mode_frequency(mode, omega, context_.groups);
+  mode.relative_error_estimate = estimate;
+  if (!request.shapes && !request.tension) return mode;
+  mode.s_m = stations;
+  mode.v = string_mode_shape(string, omega, stations);
+  normalise_outofplane_mode(mode);
+  mode.modal_mass_kg = outofplane_modal_mass(mode, string.normal_mass);
+  if (request.tension) {
+    mode.tension_n = Vector::Zero(stations.size());
+    mode.max_abs_tension_n = 0.0;
+  }
+  if (!request.shapes) drop_shape_fields(mode);
+  return mode;
 }
 
 }  // namespace
@@ -307,7 +337,8 @@ ModalResult AiryNumerics::outofplane_modes() const {
 SolverEntry make_airy_entry() {
   return make_solver_entry(
       "Triantafyllou's Airy-function solution (Grinfogel 1984, eqs. 12-16): roots of the 4x4 "
-      "boundary determinant with exponentially scaled Ai, Bi; the paper's 'exact' reference",
+      "boundary determinant with exponentially scaled Ai, Bi; the paper's 'exact' reference. Out "
+      "of plane: the string of linear tension, exactly in Bessel J0, Y0",
       airy_knobs(), [](const SolveContext& context, const AirySolverOptions& options) {
         return std::make_unique<AiryNumerics>(context, options);
       });

@@ -11,6 +11,7 @@
 
 #include "catena/core/error.hpp"
 #include "solvers/internal/asymptotic_formulas.hpp"
+#include "solvers/internal/asymptotic_wkb_string.hpp"
 #include "solvers/internal/taut_cable_theory.hpp"
 #include "solvers/internal/knob_table.hpp"
 #include "solvers/internal/solver_driver.hpp"

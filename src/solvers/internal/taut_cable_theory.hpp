@@ -2,19 +2,15 @@
 /// \file
 /// What the two analytic solvers (asymptotic and airy) share about a taut, slightly stretched
 /// cable (docs/methods/asymptotic.md, docs/methods/airy.md): the small-strain limit both
-/// linearise about, the WKB out-of-plane string modes both return, and the exact root count of
-/// Grinfogel's eq. (21) with the first axial mode, by which airy cross-checks its scan.
-///
-/// This header is the one door other solvers use to reach these formulas. The eq. (21) roots and
-/// the WKB frequencies are still defined next to the asymptotic solver (asymptotic_solver.cpp);
-/// only taut_cable_theory.cpp sees that solver's public header.
+/// linearise about and the knobs both declare. Static quantities only: neither solver's
+/// frequencies or shapes are computed here (asymptotic's out-of-plane WKB string is in
+/// asymptotic_wkb_string.hpp, airy's Bessel string in airy_tension_string.hpp), so the two stay
+/// independent witnesses.
 
 #include <string>
 #include <vector>
 
 #include "catena/models/cable.hpp"
-#include "catena/solvers/modal_result.hpp"
-#include "catena/solvers/solve_request.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 #include "solvers/internal/knob_table.hpp"
@@ -41,32 +37,5 @@ std::vector<KnobBinding<Options>> taut_theory_knobs(const std::string& what) {
 
 /// Throws InvalidInput naming `[solvers.<solver>].eps_warning_threshold` unless it is <= max_eps.
 void require_warning_below_max_eps(const std::string& solver, double eps_warning_threshold, double max_eps);
-
-/// WKB out-of-plane shape (P M)^(-1/4) sin(omega int_0^s sqrt(M/P) ds) with P = T/(1+e), at the
-/// stations [m] (not normalised).
-Vector wkb_outofplane_shape(const StaticSolution& statics,
-                            const Vector& stations_m,
-                            double omega_rad_s);
-
-/// The out-of-plane WKB string modes (frequencies omega_n int_0^L sqrt(M(1+e)/T) ds = n pi,
-/// shapes by wkb_outofplane_shape, normalised; zero first-order tension) as a ModalResult, shared
-/// by the asymptotic and airy solvers, which both treat out-of-plane motion this way. Each mode
-/// carries `error_estimate`; the summary is Converged, for `solver`, without a message (the
-/// caller's).
-ModalResult wkb_outofplane_modes(const StaticSolution& statics,
-                                 const DimensionlessGroups& groups,
-                                 const SolveRequest& request,
-                                 double normal_mass_kg_per_m,
-                                 double error_estimate,
-                                 int quadrature_panels,
-                                 const std::string& solver);
-
-/// The lowest `count` physical roots kL of Grinfogel's eq. (21), ascending, with an exact count
-/// (the bracketing of docs/methods/asymptotic.md). count >= 0, eps >= 0, lambda2 > 0 (+inf:
-/// inextensible).
-std::vector<double> eq21_root_k_ls(int count, double eps, double phi_rad, double lambda2);
-
-/// kL of the first axial (longitudinal bar) mode, pi sqrt(EA M / (T0 m)); +inf when inextensible.
-double first_axial_mode_k_l(double eps, double phi_rad, double lambda2, double mass_ratio);
 
 }  // namespace catena::internal

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "catena/solvers/asymptotic_solver.hpp"
+#include "test_utils.hpp"
 
 namespace catena::internal {
 namespace {
@@ -161,6 +162,15 @@ TEST(AsymptoticFormulas, FallingChordIsTheRisingOneMirrored) {
       EXPECT_EQ(falling.u[20], 0.0);
     }
   }
+}
+
+TEST(AsymptoticFormulas, FirstAxialModeIsTheBarMode) {
+  // pi lambda / (eps cos(phi) sqrt(h)); none for an inextensible cable.
+  const double eps = 0.2, phi = 0.3, lambda2 = 50.0, h = 0.8;
+  EXPECT_LE(catena::testing::relative_error(first_axial_k_l(eps, phi, lambda2, h),
+                           kPi * std::sqrt(lambda2 / h) / (eps * std::cos(phi))),
+            1e-15);
+  EXPECT_TRUE(std::isinf(first_axial_k_l(eps, phi, kInfinity, h)));
 }
 
 }  // namespace
