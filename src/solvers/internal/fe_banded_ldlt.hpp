@@ -9,7 +9,11 @@
 ///
 /// Cost: O(n b^2) to factor, O(n b) per solve, no symbolic analysis and no index indirection, which
 /// is what makes the shift-invert Lanczos iterations cheap here (Eigen's general SimplicialLDLT
-/// takes several times longer on the same band).
+/// takes several times longer on the same band). The half bandwidths 1 and 3 of the fe matrices
+/// have kernels with a fixed inner length (the compiler unrolls them); every other bandwidth runs
+/// the same loops with a run-time length. Both do the same operations in the same order, so the
+/// result does not depend on which kernel ran. The storage is kept between factorisations: a
+/// factorisation of the same or a smaller size allocates nothing.
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -22,6 +26,9 @@ class BandedLdlt {
   /// Factors the symmetric matrix A (both triangles stored or only the lower: the lower is read).
   /// Returns false when a pivot is zero or not finite.
   bool factorize(const Eigen::SparseMatrix<double>& A);
+  /// Factors A = K - sigma M without forming A (M's pattern must lie within the band of K's or
+  /// widen it; each entry is k - sigma m, as the sparse difference would compute it).
+  bool factorize(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double sigma);
 
   /// Solves A x = b in place (b may hold several columns).
   void solve_in_place(Eigen::Ref<Eigen::MatrixXd> b) const;
@@ -36,6 +43,16 @@ class BandedLdlt {
   Eigen::Index rows() const { return n_; }
 
  private:
+  // Sizes the storage for A's n and half bandwidth and scatters A's lower triangle, scaled by
+  // `scale` and added to what is there (the first call of a factorisation starts from zero).
+  void prepare(Eigen::Index n, int bandwidth);
+  void scatter(const Eigen::SparseMatrix<double>& A, double scale);
+  bool factor_scattered();
+  template <int B>
+  bool factor_rows();
+  template <int B>
+  void solve_rows(double* x) const;
+
   Eigen::Index n_ = 0;
   int bandwidth_ = 0;
   // Row i holds L(i, i - b .. i - 1) at [i * b + (j - i + b)], j = column.

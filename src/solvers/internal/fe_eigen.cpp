@@ -19,7 +19,8 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Spectra operator y = (K - sigma M)^{-1} x through a banded sparse LDLT.
+// Spectra operator y = (K - sigma M)^{-1} x through a banded LDLT of K - sigma M, factored
+// without forming the shifted matrix (BandedLdlt::factorize(K, M, sigma)).
 class ShiftInvertOperator {
  public:
   using Scalar = double;
@@ -29,19 +30,15 @@ class ShiftInvertOperator {
   Eigen::Index cols() const { return stiffness_.cols(); }
   void set_shift(double sigma) {
     const auto start = Clock::now();
-    shifted_ = stiffness_ - sigma * mass_;
-    bool ok = ldlt_.factorize(shifted_);
+    bool ok = ldlt_.factorize(stiffness_, mass_, sigma);
     factorization_time_s += seconds_since(start);
     ok = ok && ldlt_.pivot_ratio() > 1e-14;
     // Same exception type as Spectra's own SymShiftInvert, so callers handle both alike.
     if (!ok) throw std::invalid_argument(fmt::format("K - sigma M is singular at sigma = {:.6e}", sigma));
   }
-  /// Solves (K - sigma M) Y = X for a block of right-hand sides.
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& X) const {
-    Eigen::MatrixXd Y = X;
-    ldlt_.solve_in_place(Y);
-    return Y;
-  }
+  /// Solves (K - sigma M) Y = X in place for a block of right-hand sides.
+  void solve_in_place(Eigen::MatrixXd& X) const { ldlt_.solve_in_place(X); }
+  void solve_in_place(double* x) const { ldlt_.solve_in_place(x); }
   void perform_op(const double* x_in, double* y_out) const {
     std::copy(x_in, x_in + rows(), y_out);
     ldlt_.solve_in_place(y_out);
@@ -51,45 +48,69 @@ class ShiftInvertOperator {
  private:
   const SparseMatrix& stiffness_;
   const SparseMatrix& mass_;
-  SparseMatrix shifted_;
   BandedLdlt ldlt_;
 };
 
-// The block-diagonal Cholesky factor L of the lumped mass (M = L L^T, 2x2 blocks in plane,
-// diagonal out of plane) and L^{-T}.
-struct MassFactor {
-  SparseMatrix lower;              // L
-  SparseMatrix inverse_transpose;  // L^{-T}
-};
-MassFactor factor_mass(const SparseMatrix& mass, int dofs_per_node) {
-  const Eigen::Index n = mass.rows();
-  std::vector<Eigen::Triplet<double>> l_entries, inv_entries;
-  l_entries.reserve(static_cast<std::size_t>(3 * n));
-  inv_entries.reserve(static_cast<std::size_t>(3 * n));
-  for (Eigen::Index i = 0; i < n; i += dofs_per_node) {
-    if (dofs_per_node == 1) {
-      const double l = std::sqrt(mass.coeff(i, i));
-      l_entries.emplace_back(i, i, l);
-      inv_entries.emplace_back(i, i, 1.0 / l);
-    } else {
-      const double a = mass.coeff(i, i), b = mass.coeff(i + 1, i), c = mass.coeff(i + 1, i + 1);
-      const double l11 = std::sqrt(a), l21 = b / l11, l22 = std::sqrt(c - l21 * l21);
-      l_entries.emplace_back(i, i, l11);
-      l_entries.emplace_back(i + 1, i, l21);
-      l_entries.emplace_back(i + 1, i + 1, l22);
-      // L^{-1} = [1/l11, 0; -l21/(l11 l22), 1/l22]; stored transposed.
-      inv_entries.emplace_back(i, i, 1.0 / l11);
-      inv_entries.emplace_back(i, i + 1, -l21 / (l11 * l22));
-      inv_entries.emplace_back(i + 1, i + 1, 1.0 / l22);
+// The block-diagonal Cholesky factor L of the lumped mass, M = L L^T: per node l11, l21, l22 of
+// a 2x2 block in plane (l21 = l22 = 0 and l11 alone out of plane), and the products with L, L^T
+// and L^{-T} as plain loops over the nodes. Each product does the operations of the
+// compressed-column sparse product it replaces, in the same order, so the results are the same
+// to the last bit; it only saves the index indirection and the sparse matrices' memory.
+class MassFactor {
+ public:
+  MassFactor(const SparseMatrix& mass, int dofs_per_node)
+      : dofs_(dofs_per_node), nodes_(mass.rows() / dofs_per_node), l11_(nodes_), l21_(nodes_), l22_(nodes_) {
+    for (Eigen::Index node = 0; node < nodes_; ++node) {
+      const Eigen::Index i = node * dofs_;
+      l11_[node] = std::sqrt(mass.coeff(i, i));
+      if (dofs_ == 1) continue;
+      l21_[node] = mass.coeff(i + 1, i) / l11_[node];
+      l22_[node] = std::sqrt(mass.coeff(i + 1, i + 1) - l21_[node] * l21_[node]);
     }
   }
-  MassFactor factor;
-  factor.lower.resize(n, n);
-  factor.lower.setFromTriplets(l_entries.begin(), l_entries.end());
-  factor.inverse_transpose.resize(n, n);
-  factor.inverse_transpose.setFromTriplets(inv_entries.begin(), inv_entries.end());
-  return factor;
-}
+  /// y = L x.
+  void lower(const double* x, double* y) const {
+    if (dofs_ == 1) {
+      for (Eigen::Index i = 0; i < nodes_; ++i) y[i] = l11_[i] * x[i];
+      return;
+    }
+    for (Eigen::Index node = 0, i = 0; node < nodes_; ++node, i += 2) {
+      y[i] = l11_[node] * x[i];
+      y[i + 1] = l21_[node] * x[i] + l22_[node] * x[i + 1];
+    }
+  }
+  /// y = L^T x.
+  void lower_transpose(const double* x, double* y) const {
+    if (dofs_ == 1) {
+      for (Eigen::Index i = 0; i < nodes_; ++i) y[i] = l11_[i] * x[i];
+      return;
+    }
+    for (Eigen::Index node = 0, i = 0; node < nodes_; ++node, i += 2) {
+      y[i] = l11_[node] * x[i] + l21_[node] * x[i + 1];
+      y[i + 1] = l22_[node] * x[i + 1];
+    }
+  }
+  /// Y = L^{-T} X, column by column; L^{-1} = [1/l11, 0; -l21/(l11 l22), 1/l22] per node.
+  Eigen::MatrixXd inverse_transpose_times(const Eigen::MatrixXd& X) const {
+    Eigen::MatrixXd Y(X.rows(), X.cols());
+    for (Eigen::Index c = 0; c < X.cols(); ++c) {
+      const double* x = X.col(c).data();
+      double* y = Y.col(c).data();
+      for (Eigen::Index node = 0, i = 0; node < nodes_; ++node, i += dofs_) {
+        y[i] = (1.0 / l11_[node]) * x[i];
+        if (dofs_ == 1) continue;
+        y[i] += (-l21_[node] / (l11_[node] * l22_[node])) * x[i + 1];
+        y[i + 1] = (1.0 / l22_[node]) * x[i + 1];
+      }
+    }
+    return Y;
+  }
+
+ private:
+  int dofs_;
+  Eigen::Index nodes_;
+  Vector l11_, l21_, l22_;
+};
 
 // The standard-form operator for Spectra: with A = L^{-1} K L^{-T},
 // (A - sigma I)^{-1} x = L^T (K - sigma M)^{-1} L x. A standard symmetric Lanczos avoids the
@@ -98,22 +119,20 @@ class StandardFormOperator {
  public:
   using Scalar = double;
   StandardFormOperator(ShiftInvertOperator& inner, const MassFactor& factor)
-      : inner_(inner), factor_(factor), work_(inner.rows()), solved_(inner.rows()) {}
+      : inner_(inner), factor_(factor), solved_(inner.rows()) {}
   Eigen::Index rows() const { return inner_.rows(); }
   Eigen::Index cols() const { return inner_.cols(); }
   void set_shift(double sigma) { inner_.set_shift(sigma); }
   void perform_op(const double* x_in, double* y_out) const {
-    Eigen::Map<const Vector> x(x_in, rows());
-    Eigen::Map<Vector> y(y_out, rows());
-    work_.noalias() = factor_.lower * x;
-    inner_.perform_op(work_.data(), solved_.data());
-    y.noalias() = factor_.lower.transpose() * solved_;
+    factor_.lower(x_in, solved_.data());
+    inner_.solve_in_place(solved_.data());
+    factor_.lower_transpose(solved_.data(), y_out);
   }
 
  private:
   ShiftInvertOperator& inner_;
   const MassFactor& factor_;
-  mutable Vector work_, solved_;
+  mutable Vector solved_;
 };
 
 // Residual and M-orthogonality of M-normalised eigenvectors.
@@ -165,7 +184,8 @@ void normalise_and_check(const FeMatrices& matrices, FeEigenSolution& out) {
 // damps them by lambda/lambda_axial (<= 1e-4 here), so one or two steps reach the rounding floor.
 void refine(const FeMatrices& matrices, const ShiftInvertOperator& op, FeEigenSolution& out) {
   {
-    const Eigen::MatrixXd Y = op.solve(matrices.mass * out.eigenvectors);
+    Eigen::MatrixXd Y = matrices.mass * out.eigenvectors;
+    op.solve_in_place(Y);
     const Eigen::MatrixXd KY = matrices.stiffness * Y;
     const Eigen::MatrixXd MY = matrices.mass * Y;
     Eigen::MatrixXd Kr = Y.transpose() * KY, Mr = Y.transpose() * MY;
@@ -202,7 +222,7 @@ void solve_dense(const FeMatrices& matrices, int modes, FeEigenSolution& out) {
 void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, double tolerance,
                        int max_restarts, FeEigenSolution& out) {
   ShiftInvertOperator op(matrices.stiffness, matrices.mass);
-  const MassFactor factor = factor_mass(matrices.mass, matrices.dofs_per_node);
+  const MassFactor factor(matrices.mass, matrices.dofs_per_node);
   StandardFormOperator standard(op, factor);
   double sigma = 0.0;
   for (int attempt = 0; attempt < 4; ++attempt) {
@@ -217,7 +237,7 @@ void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, doub
       out.operations += eigs.num_operations();
       if (eigs.info() == Spectra::CompInfo::Successful) {
         out.eigenvalues = eigs.eigenvalues();
-        out.eigenvectors = factor.inverse_transpose * eigs.eigenvectors();
+        out.eigenvectors = factor.inverse_transpose_times(eigs.eigenvectors());
         out.termination = Termination::Converged;
         // Refine only what needs it: one or two inverse-iteration steps until the normwise
         // backward error is at rounding level.
@@ -276,9 +296,8 @@ void prove_mode_count(const FeMatrices& matrices, int modes, FeEigenSolution& ou
 }  // namespace
 
 int count_eigenvalues_below(const FeMatrices& matrices, double shift) {
-  const SparseMatrix shifted = matrices.stiffness - shift * matrices.mass;
   BandedLdlt ldlt;
-  if (!ldlt.factorize(shifted)) return -1;
+  if (!ldlt.factorize(matrices.stiffness, matrices.mass, shift)) return -1;
   return ldlt.negative_pivots();
 }
 
