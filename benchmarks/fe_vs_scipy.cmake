@@ -1,0 +1,14 @@
+# fe against SciPy's eigsh on the same matrices (issues 8 and 17): a plain executable, built with
+# the tests or the benchmarks. Its ctest runs it at tiny sizes only, to keep it working (no timing
+# is asserted; without SciPy the SciPy columns read -1).
+add_executable(catena_fe_vs_scipy ${CMAKE_CURRENT_LIST_DIR}/fe_vs_scipy.cpp)
+target_include_directories(catena_fe_vs_scipy PRIVATE ${PROJECT_SOURCE_DIR}/src)
+target_compile_definitions(catena_fe_vs_scipy PRIVATE CATENA_BENCHMARK_DIR="${CMAKE_CURRENT_LIST_DIR}")
+target_link_libraries(catena_fe_vs_scipy PRIVATE catena::catena fmt::fmt)
+catena_set_warnings(catena_fe_vs_scipy)
+if(CATENA_BUILD_TESTS)
+  add_test(NAME fe_vs_scipy_tiny
+           COMMAND catena_fe_vs_scipy --tiny --work ${PROJECT_BINARY_DIR}/fe-vs-scipy-tiny
+                   --results ${PROJECT_BINARY_DIR}/fe-vs-scipy-tiny/table.txt)
+  set_tests_properties(fe_vs_scipy_tiny PROPERTIES TIMEOUT 300)
+endif()
