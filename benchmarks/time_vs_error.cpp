@@ -106,8 +106,9 @@ int main(int argc, char** argv) {
     std::printf("\n%s\n  reference: %s\n", scene.name.c_str(), reference.summary.brief_report().c_str());
     std::map<std::string, std::map<double, double>> fastest;  // solver -> target -> time
     for (const auto& entry : solver_registry()) {
-      if (entry.not_applicable_reason && entry.not_applicable_reason(context)) {
-        std::printf("  %-10s not applicable: %s\n", entry.name.c_str(), entry.not_applicable_reason(context)->c_str());
+      const SolverOutput probe = run_solver(entry, context, {});
+      if (probe.summary.termination == Termination::NotApplicable) {
+        std::printf("  %-10s not applicable: %s\n", entry.name.c_str(), probe.summary.message.c_str());
         continue;
       }
       for (const auto& setting : settings(entry.name, quick)) {
