@@ -15,10 +15,13 @@ using nlohmann::json;
 const char* const kItemKeys[] = {"plane", "mode", "resolution", "frequency_hz", "omega_rad_s", "shape"};
 const char* const kShapeKeys[] = {"s_m", "u", "w", "v", "tension_n"};
 
-double number_at(const json& item, const std::string& key, const std::string& where) {
-  const json& value = item.at(key);
-  if (!value.is_number()) throw InvalidInput(fmt::format("{}.{}: {} is not a number", where, key, value.dump()));
+double number_of(const json& value, const std::string& where) {
+  if (!value.is_number()) throw InvalidInput(fmt::format("{}: {} is not a number", where, value.dump()));
   return value.get<double>();
+}
+
+double number_at(const json& item, const std::string& key, const std::string& where) {
+  return number_of(item.at(key), where + "." + key);
 }
 
 void reject_unknown_keys(const json& object, const char* const* begin, const char* const* end, const std::string& where) {
@@ -33,7 +36,7 @@ Vector numbers_at(const json& shape, const std::string& key, const std::string& 
   if (!array.is_array()) throw InvalidInput(fmt::format("{}.{}: not an array", where, key));
   Vector out(static_cast<Index>(array.size()));
   for (std::size_t i = 0; i < array.size(); ++i) {
-    out[static_cast<Index>(i)] = number_at(array, std::to_string(i), where + "." + key);
+    out[static_cast<Index>(i)] = number_of(array[i], fmt::format("{}.{}[{}]", where, key, i));
   }
   return out;
 }
