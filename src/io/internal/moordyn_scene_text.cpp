@@ -34,7 +34,12 @@ std::optional<double> seabed_height(const MoorDynDeck& deck) {
   return std::min_element(deck.points.begin(), deck.points.end(), [](const auto& a, const auto& b) { return a.z_m < b.z_m; })->z_m;
 }
 
-std::string number(double value) { return fmt::format("{:.15g}", value); }
+// A TOML float (always with a '.' or an exponent: "400" would be an integer).
+std::string number(double value) {
+  std::string text = fmt::format("{:.15g}", value);
+  if (text.find_first_of(".e") == std::string::npos) text += ".0";
+  return text;
+}
 
 std::string header(const ChainDescription& d, const std::string& name, const std::vector<std::string>& needs) {
   const auto point_text = [](const MoorDynPoint* p) {
