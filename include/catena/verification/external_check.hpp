@@ -2,8 +2,9 @@
 /// \file
 /// Checking another program's natural frequencies, and optionally its mode shapes and dynamic
 /// tensions, against Catena's certified reference (docs/check.md). Pure data in, comparison out:
-/// reading the other program's files is io/external_results_reader.hpp, choosing the reference
-/// is verification/certified_reference.hpp, the report is io/check_report.hpp.
+/// reading the other program's files is include/catena/io/external_results_reader.hpp, choosing
+/// the reference is include/catena/verification/certified_reference.hpp, the report is
+/// include/catena/io/check_report.hpp.
 ///
 /// What is compared, per mode of the other program:
 /// - its frequency at each resolution it gives, against the paired Catena mode: the relative
