@@ -17,6 +17,10 @@ void add_solve_command(CLI::App& app, std::function<int()>& run);
 void add_verify_command(CLI::App& app, std::function<int()>& run);
 void add_solvers_command(CLI::App& app, std::function<int()>& run);
 void add_report_command(CLI::App& app, std::function<int()>& run);
+/// `check`: another program's results against Catena's reference (src/cli/check_command.cpp).
+void add_check_command(CLI::App& app, std::function<int()>& run);
+/// `import moordyn`: MoorDyn decks as scenes (src/cli/import_command.cpp).
+void add_import_command(CLI::App& app, std::function<int()>& run);
 
 /// --tolerances and --findings (empty: the tables built into the library).
 struct TableArguments {

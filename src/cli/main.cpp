@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
   catena::cli::add_verify_command(app, run);
   catena::cli::add_report_command(app, run);
   catena::cli::add_solvers_command(app, run);
+  catena::cli::add_check_command(app, run);
+  catena::cli::add_import_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -96,6 +96,7 @@ CsvTable read_csv_table(const std::filesystem::path& path) {
                                    cells.size(), table.columns.size()));
     }
     table.rows.push_back(std::move(cells));
+    table.row_lines.push_back(line_number);
   }
   if (table.columns.empty()) throw ParseError(fmt::format("{}: no header line", path_text(path)));
   return table;

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_support.hpp"
+
 #include <array>
 #include <cstdlib>
 #include <cstdio>
@@ -19,27 +21,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
-
-CliRun run_cli(const std::string& arguments) {
-  const std::string command = std::string(CATENA_CLI_PATH) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer{};
-  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+using catena::testing::CliRun;
+using catena::testing::run_cli;
 
 fs::path write_scene(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "catena_cli_test";
-  fs::create_directories(dir);
-  const fs::path path = dir / name;
-  std::ofstream(path) << text;
-  return path;
+  return catena::testing::write_temp_file("catena_cli_test", name, text);
 }
 
 const std::string kGood = R"(

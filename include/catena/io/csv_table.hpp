@@ -16,6 +16,8 @@ struct CsvTable {
   std::vector<std::string> comments;  ///< the '#' lines, without '# '
   std::vector<std::string> columns;
   std::vector<std::vector<std::string>> rows;
+  /// The file line (1-based) of each row, for messages; empty for a table built in memory.
+  std::vector<int> row_lines = {};
 
   /// Index of `column`; throws ParseError naming the column when absent.
   std::size_t column_index(const std::string& column) const;

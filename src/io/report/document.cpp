@@ -67,7 +67,9 @@ std::string html_block(const Block& block) {
   if (const auto* p = std::get_if<Paragraph>(&block)) return "<p>" + html_escape(p->text) + "</p>\n";
   if (const auto* t = std::get_if<Table>(&block)) return html_table(*t);
   const auto& img = std::get<Image>(block);
-  return "<figure><img alt=\"" + html_escape(img.caption) + "\" src=\"data:image/png;base64," +
+  // PNG from figures.py, SVG from the library's own plots (io/report/svg_plot.hpp).
+  const char* type = img.file.extension() == ".svg" ? "image/svg+xml" : "image/png";
+  return "<figure><img alt=\"" + html_escape(img.caption) + "\" src=\"data:" + type + ";base64," +
          base64(read_binary(img.file)) + "\"><figcaption>" + html_escape(img.caption) + "</figcaption></figure>\n";
 }
 

@@ -1,0 +1,88 @@
+#pragma once
+/// \file
+/// Reading a MoorDyn input file (v1 and v2 layouts; docs/moordyn-import.md) into plain data, for
+/// `catena import moordyn`. The file is a sequence of sections introduced by header lines that
+/// start with "---" and name the section (case-insensitive, any text around it): LINE TYPES or
+/// LINE DICTIONARY, POINTS (or POINT LIST, POINT PROPERTIES, CONNECTION PROPERTIES, NODE
+/// PROPERTIES), LINES (or LINE LIST, LINE PROPERTIES), OPTIONS (or SOLVER OPTIONS); ROD TYPES,
+/// RODS, BODIES, FAILURE, SYROPE IC and OUTPUTS are recognised and only recorded. Each table
+/// section has a column-name row and a units row (in parentheses) before its data rows; columns
+/// are found by name, case-insensitive, so v1 (Can, NodeAnch/NodeFair) and v2 (Ca,
+/// AttachA/AttachB) layouts both read. Lines before the first header are free text; lines
+/// starting with '#' or '!' are comments; reading stops at the closing "need this line" header.
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace catena {
+
+struct MoorDynLineType {
+  std::string name;
+  double diameter_m = 0.0;        ///< volume-equivalent diameter
+  double mass_kg_per_m = 0.0;     ///< in air
+  std::optional<double> axial_stiffness_n;  ///< absent when EA is not a number (a curve, Syrope)
+  std::string axial_stiffness_text;         ///< EA as written
+  double normal_added_mass_coefficient = 0.0;  ///< Can (v1) or Ca (v2)
+  int file_line = 0;
+};
+
+/// How a point is held (MoorDyn's type or attachment column).
+enum class MoorDynPointKind {
+  Fixed,    ///< Fixed, Fix, Anchor
+  Coupled,  ///< Vessel, Ves, Coupled, Cpld, Fairlead
+  Free,     ///< Free, Connect, Con, Point
+  Body,     ///< Body<n>
+  Other     ///< anything else (e.g. Turbine<n> of a FAST.Farm deck)
+};
+
+struct MoorDynPoint {
+  int id = 0;
+  std::string attachment;  ///< as written
+  MoorDynPointKind kind = MoorDynPointKind::Fixed;
+  double x_m = 0.0, y_m = 0.0, z_m = 0.0;
+  double mass_kg = 0.0;
+  double volume_m3 = 0.0;
+  double added_mass_coefficient = 0.0;
+  int file_line = 0;
+};
+
+struct MoorDynLine {
+  int id = 0;
+  std::string type;
+  std::string end_a;  ///< as written: a point number, or e.g. "R1A" (a rod end)
+  std::string end_b;
+  double length_m = 0.0;
+  int segments = 0;
+  int file_line = 0;
+};
+
+struct MoorDynDeck {
+  std::string file;
+  std::vector<MoorDynLineType> types;
+  std::vector<MoorDynPoint> points;
+  std::vector<MoorDynLine> lines;
+  /// Options by lower-case name, values as written.
+  std::map<std::string, std::string> options;
+  bool has_rods = false;
+  bool has_bodies = false;
+  /// Lines named in a FAILURE section.
+  std::vector<int> failing_lines;
+
+  /// Gravity [m/s^2], water density [kg/m^3], depth [m] (absent when silent), bottom stiffness
+  /// [Pa/m]: from the options (g/gravity, rho/rhow/wtrdnsty, wtrdpth/depth, kbot/kb), else
+  /// MoorDyn's defaults 9.80665, 1025, none, 3e6.
+  double gravity() const;
+  double water_density() const;
+  std::optional<double> water_depth() const;
+  double bottom_stiffness() const;
+};
+
+/// Reads a deck. InvalidInput naming the file and line for an unknown section, a table without
+/// the columns it needs, a value that is not a number, or an option value that is not a number
+/// where Catena uses it; ParseError when the file cannot be read.
+MoorDynDeck read_moordyn_deck(const std::filesystem::path& path);
+
+}  // namespace catena

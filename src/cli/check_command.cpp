@@ -1,0 +1,171 @@
+// `catena check RESULTS --scene SCENE`: another program's modal results against Catena's certified
+// reference for the same scene (docs/check.md).
+#include <algorithm>
+#include <fmt/format.h>
+#include <memory>
+
+#include "catena/core/error.hpp"
+#include "catena/io/check_report.hpp"
+#include "catena/io/external_results_reader.hpp"
+#include "catena/io/file_access.hpp"
+#include "catena/io/scene_reader.hpp"
+#include "catena/verification/certified_reference.hpp"
+#include "cli/commands.hpp"
+
+namespace catena::cli {
+namespace {
+
+// Catena computes this many modes beyond the other program's highest in each plane, so that a
+// mode the other program skipped or misnumbered still finds its partner.
+constexpr int kExtraReferenceModes = 3;
+// Stations of Catena's shapes when shapes are compared (linear interpolation to the other
+// program's stations; error ~ (L/2000)^2 curvature, far below any MAC of interest).
+constexpr int kReferenceShapePoints = 2001;
+
+struct CheckArguments {
+  std::string results;
+  std::string shapes;
+  std::string scene;
+  std::string json;
+  std::string out;
+  double rtol = 1e-3;
+  bool quiet = false;
+};
+
+Scene read_one_scene(const std::string& path) {
+  std::vector<Scene> scenes = read_scene_file(path);
+  if (scenes.size() != 1) {
+    throw InvalidInput(fmt::format("{}: a sweep of {} scenes; catena check takes one scene", path, scenes.size()));
+  }
+  return scenes.front();
+}
+
+// The scene's request turned into what the check needs: enough modes in each plane the results
+// use, shapes and tension when the results carry them, no forced response; shooting and fe only
+// (their knobs from the scene kept).
+void prepare_reference_request(Scene& scene, const std::vector<ExternalMode>& results) {
+  int inplane = 0, outofplane = 0;
+  bool shapes = false, tension = false;
+  for (const auto& row : results) {
+    (row.plane == Plane::InPlane ? inplane : outofplane) =
+        std::max(row.plane == Plane::InPlane ? inplane : outofplane, row.mode + kExtraReferenceModes);
+    shapes = shapes || row.shape.has_value();
+    tension = tension || (row.shape && row.shape->tension_n.size() > 0);
+  }
+  SolveRequest& request = scene.request;
+  request.inplane_modes = std::min(inplane, kMaxRequestModes);
+  request.outofplane_modes = std::min(outofplane, kMaxRequestModes);
+  request.shapes = shapes;
+  request.tension = tension;
+  request.forced.reset();
+  const long modes = request.inplane_modes + request.outofplane_modes;
+  request.points = static_cast<int>(std::min<long>(kReferenceShapePoints, kMaxShapeValues / std::max(modes, 1L)));
+  std::map<std::string, SolverKnobs> solvers;
+  for (const char* name : {"shooting", "fe"}) solvers[name] = scene.solvers.count(name) ? scene.solvers.at(name) : SolverKnobs{};
+  scene.solvers = solvers;
+}
+
+void print_check(const ExternalCheck& check) {
+  for (const auto& reference : check.references) {
+    fmt::print("reference {}: {}\n", to_string(reference.plane), reference.reason);
+    if (reference.cross_check_relative >= 0.0) {
+      fmt::print("  shooting and fe agree to {:.2e} (largest relative difference)\n", reference.cross_check_relative);
+    }
+  }
+  fmt::print("{:>12} {:>4} {:>6} {:>16} {:>16} {:>10} {:>10} {:>8} {:>8} {:>10}  {}\n", "plane", "mode", "catena",
+             "other f [Hz]", "catena f [Hz]", "estimate", "error", "MAC", "order", "bias", "verdict");
+  for (const auto& mode : check.modes) {
+    const bool any = !mode.resolutions.empty();
+    const auto& study = mode.study;
+    fmt::print("{:>12} {:>4} {:>6} {:>16} {:>16.10g} {:>10.2e} {:>10} {:>8} {:>8} {:>10}  {}\n", to_string(mode.plane),
+               mode.mode, mode.reference_index,
+               any ? fmt::format("{:.10g}", mode.resolutions.back().omega_rad_s / (2 * kPi)) : "-",
+               mode.reference_omega_rad_s / (2 * kPi), mode.reference_relative_estimate,
+               any ? fmt::format("{:.3e}", mode.resolutions.back().relative_error) : "-",
+               any && mode.resolutions.back().mac ? fmt::format("{:.6f}", *mode.resolutions.back().mac) : "-",
+               study && study->observed_order ? fmt::format("{:.3f}", *study->observed_order) : "-",
+               study && study->bias_relative ? fmt::format("{:.3e}", *study->bias_relative) : "-",
+               to_string(mode.verdict));
+    if (mode.pairing.find(';') != std::string::npos) fmt::print("{:>12} {}\n", "", mode.pairing);
+  }
+}
+
+int run_check(const CheckArguments& arguments) {
+  ExternalCheckOptions options;
+  options.rtol = arguments.rtol;
+  if (!(options.rtol > 0.0 && options.rtol < 1.0)) throw InvalidInput(fmt::format("--rtol {}: must be in (0, 1)", options.rtol));
+  if (!arguments.json.empty()) check_output_file(arguments.json);
+  if (!arguments.out.empty()) check_output_directory(arguments.out);
+  const std::vector<ExternalMode> results = read_external_results(arguments.results, arguments.shapes);
+  Scene scene = read_one_scene(arguments.scene);
+  prepare_reference_request(scene, results);
+  SceneRunOptions run;
+  run.checks = false;
+  const SceneResult solved = run_scene(scene, run);
+  if (solved.error_kind == SceneError::BadInput) throw InvalidInput(solved.error);
+  if (!solved.error.empty()) {
+    fmt::print(stderr, "error: {}: {}\n", arguments.scene, solved.error);
+    return 3;
+  }
+  std::vector<CertifiedReference> references;
+  for (const Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
+    const bool used = std::any_of(results.begin(), results.end(), [&](const ExternalMode& r) { return r.plane == plane; });
+    if (!used) continue;
+    std::string why;
+    auto reference = certified_reference(solved.outputs, plane, why);
+    if (!reference) {
+      fmt::print(stderr, "error: {}: no certified reference: {}\n", arguments.scene, why);
+      return 3;
+    }
+    references.push_back(std::move(*reference));
+  }
+  const ExternalCheck check = check_external_results(results, references, options);
+  const CheckSources sources{scene.name, path_text(arguments.scene), path_text(arguments.results),
+                             arguments.shapes.empty() ? "" : path_text(arguments.shapes)};
+  if (!arguments.quiet) print_check(check);
+  if (!arguments.json.empty()) write_check_json(arguments.json, check, sources);
+  if (!arguments.out.empty()) {
+    const CheckReportFiles files = write_check_report(check, sources, arguments.out);
+    if (!arguments.quiet) fmt::print("wrote {} and {} ({} figures)\n", files.markdown.string(), files.html.string(), files.figures);
+  }
+  return check.any_failure() ? 1 : 0;
+}
+
+}  // namespace
+
+void add_check_command(CLI::App& app, std::function<int()>& run) {
+  auto arguments = std::make_shared<CheckArguments>();
+  CLI::App* command = app.add_subcommand(
+      "check",
+      "Check another program's natural frequencies (and mode shapes) against Catena's certified\n"
+      "reference for the same scene: shooting or Richardson-extrapolated fe, whichever converged\n"
+      "with the smaller error estimate (docs/check.md).\n"
+      "Per mode: the other value, Catena's value and estimate, the relative error and a verdict\n"
+      "against --rtol; MAC when shapes are given; with three or more resolutions the observed order,\n"
+      "the extrapolated limit and its bias (\"converged\", \"converges, not yet within tolerance\",\n"
+      "\"converges to a wrong limit\").\n"
+      "Exit 0 every mode within tolerance, 1 a mode beyond it (or converging to a wrong limit),\n"
+      "2 bad input (the message names file, row and column), 3 no reference could be computed.");
+  command->add_option("results", arguments->results,
+                      "The other program's results: CSV with a header row, columns plane (in-plane,\n"
+                      "inplane, out-of-plane, outofplane; any case), mode (1-based within its plane),\n"
+                      "frequency_hz [Hz] or omega_rad_s [rad/s], optional resolution (mesh count, e.g.\n"
+                      "number of segments: larger = finer); or a .json file with the same fields and\n"
+                      "optional shapes (docs/check.md)")
+      ->required();
+  command->add_option("--scene", arguments->scene, "The scene the other program solved (TOML, docs/scene-format.md)")
+      ->required();
+  command->add_option("--shapes", arguments->shapes,
+                      "Mode shapes of CSV results, long format, one row per station: plane, mode,\n"
+                      "[resolution], station_s_m (unstretched arc length from end A [m]), and any of u, w\n"
+                      "(in-plane tangential and normal), v (out-of-plane) [any scale], tension_n [N]");
+  command->add_option("--rtol", arguments->rtol, "Relative tolerance on frequencies")->capture_default_str();
+  command->add_option("--json", arguments->json, "Write every number of the comparison as JSON to this file");
+  command->add_option("--out", arguments->out,
+                      "Write check.md, check.html (self-contained) and figures/*.svg (one convergence\n"
+                      "plot per mode with two or more resolutions) to this directory");
+  command->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
+  command->callback([arguments, &run] { run = [arguments] { return run_check(*arguments); }; });
+}
+
+}  // namespace catena::cli

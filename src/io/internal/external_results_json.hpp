@@ -1,0 +1,19 @@
+#pragma once
+// The JSON form of another program's results for `catena check` (layout in
+// include/catena/io/external_results_reader.hpp and docs/check.md).
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "catena/verification/external_check.hpp"
+
+namespace catena::internal {
+
+/// Reads the results and their shapes; InvalidInput naming the file and the JSON path.
+std::vector<ExternalMode> read_external_results_json(const std::filesystem::path& path);
+
+/// `value` as a mode number (a whole number >= 1); InvalidInput naming `where` otherwise.
+int mode_number(double value, const std::string& where);
+
+}  // namespace catena::internal

@@ -1,0 +1,71 @@
+#pragma once
+// A chain of MoorDyn lines described in Catena's terms (docs/moordyn-import.md), and written as
+// a scene: `[cable]` for one uniform line, `[line]` with segments and points otherwise, `[seabed]`
+// when the line touches it.
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "catena/core/types.hpp"
+#include "catena/io/moordyn_deck.hpp"
+
+namespace catena::internal {
+
+/// One MoorDyn line in a chain; `reversed` when it is walked from its end B to its end A.
+struct ChainSegment {
+  int line = 0;
+  bool reversed = false;
+};
+
+struct SegmentProperties {
+  int line = 0;
+  std::string type;
+  double length_m = 0.0;
+  double weight_n_per_m = 0.0;      ///< (MassDen - rho_w pi/4 Diam^2) g
+  double axial_stiffness_n = 0.0;
+  double mass_kg_per_m = 0.0;
+  double added_mass_kg_per_m = 0.0;  ///< Ca rho_w pi/4 Diam^2
+  double diameter_m = 0.0;
+};
+
+struct PointAttachment {
+  int point = 0;
+  double s_m = 0.0;
+  double mass_kg = 0.0;
+  double weight_n = 0.0;      ///< (M - rho_w V) g
+  double added_mass_kg = 0.0; ///< Ca rho_w V
+};
+
+/// The line's plane: end A (the lower held end) at x = 0, end B at the horizontal distance.
+struct SceneGeometry {
+  Vec2 a_m = Vec2::Zero();
+  Vec2 b_m = Vec2::Zero();
+  const MoorDynPoint* end_a = nullptr;
+  const MoorDynPoint* end_b = nullptr;
+};
+
+struct ChainDescription {
+  std::string deck_file;
+  std::vector<ChainSegment> chain;  ///< from end A to end B
+  std::vector<SegmentProperties> segments;
+  std::vector<PointAttachment> points;
+  SceneGeometry geometry;
+  /// -WtrDpth, else the deepest point of the deck (MoorDyn's own rule when the depth is silent).
+  std::optional<double> seabed_z;
+  double seabed_stiffness_n_per_m2 = 0.0;  ///< kBot times the diameter at end A
+  double gravity = 0.0;
+  double water_density = 0.0;
+};
+
+/// The chain (held end to held end, any direction) described from its lower end.
+ChainDescription describe_chain(const MoorDynDeck& deck, std::vector<ChainSegment> chain,
+                                const std::map<int, const MoorDynPoint*>& points);
+
+/// The scene file: a header comment (source, conversion, `needs`), then `[cable]` or, when
+/// `as_line`, `[line]`; `[seabed]` when `seabed`; a request for 6 modes per plane.
+std::string scene_text(const ChainDescription& d, const std::string& name, const std::vector<std::string>& needs,
+                       bool seabed, bool as_line);
+
+}  // namespace catena::internal

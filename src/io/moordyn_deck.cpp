@@ -1,0 +1,267 @@
+// MoorDyn decks (v1 and v2 layouts) read into plain data (docs/moordyn-import.md). Written from
+// MoorDyn's documented input format, not from its code.
+#include "catena/io/moordyn_deck.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <fmt/format.h>
+#include <sstream>
+
+#include "catena/core/error.hpp"
+#include "catena/io/file_access.hpp"
+
+namespace catena {
+namespace {
+
+enum class Section { Preamble, LineTypes, RodTypes, Bodies, Rods, Points, Lines, Failure, SyropeIc, Options, Outputs, End };
+
+// Checked in this order against the upper-cased header text (MoorDyn, too, looks for the name
+// anywhere in the header line).
+const std::pair<const char*, Section> kSectionNames[] = {
+    {"LINE DICTIONARY", Section::LineTypes}, {"LINE TYPES", Section::LineTypes},
+    {"ROD DICTIONARY", Section::RodTypes},   {"ROD TYPES", Section::RodTypes},
+    {"BODIES", Section::Bodies},             {"BODY LIST", Section::Bodies},
+    {"BODY PROPERTIES", Section::Bodies},    {"RODS", Section::Rods},
+    {"ROD LIST", Section::Rods},             {"ROD PROPERTIES", Section::Rods},
+    {"POINTS", Section::Points},             {"POINT LIST", Section::Points},
+    {"POINT PROPERTIES", Section::Points},   {"CONNECTION PROPERTIES", Section::Points},
+    {"NODE PROPERTIES", Section::Points},    {"LINES", Section::Lines},
+    {"LINE LIST", Section::Lines},           {"LINE PROPERTIES", Section::Lines},
+    {"FAILURE", Section::Failure},           {"SYROPE IC", Section::SyropeIc},
+    {"OPTIONS", Section::Options},           {"OUTPUT", Section::Outputs},
+    {"NEED THIS LINE", Section::End},        {"MOORDYN", Section::Preamble}};
+
+// The options Catena uses, by their MoorDyn names (lower case).
+const std::vector<std::string> kGravityNames = {"g", "gravity"};
+const std::vector<std::string> kDensityNames = {"rho", "rhow", "wtrdnsty"};
+const std::vector<std::string> kDepthNames = {"wtrdpth", "depth", "waterdepth"};
+const std::vector<std::string> kBottomStiffnessNames = {"kbot", "kb"};
+
+std::string upper(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+std::vector<std::string> tokens(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> out;
+  for (std::string token; in >> token;) out.push_back(token);
+  return out;
+}
+
+std::optional<double> number(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+// A table section: its column names (lower case) and data rows with their file lines.
+struct Table {
+  std::vector<std::string> columns;
+  bool units_seen = false;
+  std::vector<std::pair<int, std::vector<std::string>>> rows;
+  int header_line = 0;
+};
+
+struct Reader {
+  std::string file;
+  std::map<Section, Table> tables;
+  MoorDynDeck deck;
+
+  [[noreturn]] void fail(int line, const std::string& why) const {
+    throw InvalidInput(fmt::format("{}:{}: {}", file, line, why));
+  }
+  // The column's index: the first of `names` present, else `fallback` (-1: required, fail).
+  std::size_t column(const Table& table, std::initializer_list<const char*> names, int fallback, const char* what) const {
+    for (const char* name : names) {
+      const auto it = std::find(table.columns.begin(), table.columns.end(), name);
+      if (it != table.columns.end()) return static_cast<std::size_t>(it - table.columns.begin());
+    }
+    if (fallback < 0) fail(table.header_line, fmt::format("no '{}' column in the header", what));
+    return static_cast<std::size_t>(fallback);
+  }
+  const std::string& cell(const std::pair<int, std::vector<std::string>>& row, std::size_t index, const char* what) const {
+    if (index >= row.second.size()) fail(row.first, fmt::format("missing value for '{}'", what));
+    return row.second[index];
+  }
+  double value(const std::pair<int, std::vector<std::string>>& row, std::size_t index, const char* what) const {
+    const std::string& text = cell(row, index, what);
+    const auto parsed = number(text);
+    if (!parsed) fail(row.first, fmt::format("'{}': '{}' is not a number", what, text));
+    return *parsed;
+  }
+};
+
+Section section_of(const std::string& header, int line, const std::string& file) {
+  const std::string text = upper(header);
+  for (const auto& [name, section] : kSectionNames) {
+    if (text.find(name) != std::string::npos) return section;
+  }
+  throw InvalidInput(fmt::format("{}:{}: unknown section '{}'", file, line, header));
+}
+
+// One line of a table section: the column names, the units row, or a data row. A leading count
+// line of old decks ("3  NTypes  - number of line types") is skipped.
+void add_table_line(Table& table, const std::vector<std::string>& words, int line) {
+  if (table.columns.empty()) {
+    if (words.size() >= 2 && number(words[0]) && std::toupper(static_cast<unsigned char>(words[1][0])) == 'N') return;
+    for (const auto& word : words) table.columns.push_back(lower(word));
+    table.header_line = line;
+  } else if (!table.units_seen && table.rows.empty() && words[0].front() == '(') {
+    table.units_seen = true;
+  } else {
+    table.rows.push_back({line, words});
+  }
+}
+
+void add_option(Reader& reader, const std::vector<std::string>& words, int line) {
+  if (words.size() < 2) return;  // MoorDyn ignores such lines too
+  const std::string name = lower(words[1]);
+  for (const auto* names : {&kGravityNames, &kDensityNames, &kDepthNames, &kBottomStiffnessNames}) {
+    if (std::find(names->begin(), names->end(), name) != names->end() && !number(words[0])) {
+      reader.fail(line, fmt::format("option {}: '{}' is not a number", words[1], words[0]));
+    }
+  }
+  reader.deck.options[name] = words[0];
+}
+
+void read_lines_of_file(Reader& reader, const std::string& text) {
+  std::istringstream in(text);
+  Section section = Section::Preamble;
+  int line_number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto words = tokens(line);
+    if (words.empty() || words[0][0] == '#' || words[0][0] == '!') continue;
+    if (words[0].rfind("---", 0) == 0) {
+      std::string header = line.substr(line.find_first_not_of(" \t-"));
+      header = header.substr(0, header.find_last_not_of(" \t-") + 1);
+      section = section_of(header, line_number, reader.file);
+      if (section == Section::End) return;
+      if (section == Section::Rods) reader.deck.has_rods = true;
+      if (section == Section::Bodies) reader.deck.has_bodies = true;
+      continue;
+    }
+    if (section == Section::Options) add_option(reader, words, line_number);
+    else if (section != Section::Preamble && section != Section::Outputs) add_table_line(reader.tables[section], words, line_number);
+  }
+}
+
+void convert_types(Reader& r) {
+  const Table& t = r.tables[Section::LineTypes];
+  if (t.rows.empty()) return;
+  const bool v1 = t.columns.size() <= 9;  // v1: Name Diam MassDen EA BA Can Cat Cdn Cdt; v2 adds EI
+  const auto diam = r.column(t, {"diam", "d"}, 1, "Diam");
+  const auto mass = r.column(t, {"massden", "mass/m", "massdeninair", "mass", "m"}, 2, "MassDen");
+  const auto ea = r.column(t, {"ea"}, 3, "EA");
+  const auto ca = r.column(t, {"can", "ca"}, v1 ? 5 : 7, "Ca");
+  for (const auto& row : t.rows) {
+    MoorDynLineType type{row.second[0], r.value(row, diam, "Diam"), r.value(row, mass, "MassDen"), std::nullopt,
+                         r.cell(row, ea, "EA"), r.value(row, ca, "Ca"), row.first};
+    type.axial_stiffness_n = number(type.axial_stiffness_text);
+    r.deck.types.push_back(type);
+  }
+}
+
+MoorDynPointKind point_kind(const std::string& attachment) {
+  std::string letters;
+  for (char c : upper(attachment)) {
+    if (!std::isalpha(static_cast<unsigned char>(c))) break;
+    letters += c;
+  }
+  const auto is = [&](std::initializer_list<const char*> names) {
+    return std::any_of(names.begin(), names.end(), [&](const char* n) { return letters == n; });
+  };
+  if (is({"FIXED", "FIX", "ANCHOR"})) return MoorDynPointKind::Fixed;
+  if (is({"VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD"})) return MoorDynPointKind::Coupled;
+  if (is({"FREE", "CONNECT", "CON", "POINT"})) return MoorDynPointKind::Free;
+  if (is({"BODY"})) return MoorDynPointKind::Body;
+  return MoorDynPointKind::Other;
+}
+
+void convert_points(Reader& r) {
+  const Table& t = r.tables[Section::Points];
+  if (t.rows.empty()) return;
+  const auto mass = r.column(t, {"m", "mass"}, 5, "Mass");
+  const auto volume = r.column(t, {"v", "volume"}, 6, "Volume");
+  const auto ca = r.column(t, {"ca"}, static_cast<int>(t.columns.size()) - 1, "CA");
+  for (const auto& row : t.rows) {
+    MoorDynPoint p;
+    p.id = static_cast<int>(r.value(row, 0, "ID"));
+    p.attachment = r.cell(row, 1, "Attachment");
+    p.kind = point_kind(p.attachment);
+    p.x_m = r.value(row, 2, "X");
+    p.y_m = r.value(row, 3, "Y");
+    p.z_m = r.value(row, 4, "Z");
+    p.mass_kg = r.value(row, mass, "Mass");
+    p.volume_m3 = r.value(row, volume, "Volume");
+    p.added_mass_coefficient = row.second.size() > ca ? r.value(row, ca, "CA") : 0.0;
+    p.file_line = row.first;
+    r.deck.points.push_back(p);
+  }
+}
+
+void convert_lines(Reader& r) {
+  const Table& t = r.tables[Section::Lines];
+  if (t.rows.empty()) return;
+  const auto type = r.column(t, {"linetype", "type"}, 1, "LineType");
+  // Unnamed columns are where MoorDyn v2 reads them: ID LineType AttachA AttachB UnstrLen NumSegs.
+  const auto a = r.column(t, {"attacha", "enda", "nodea", "nodeanch", "anchor"}, 2, "AttachA");
+  const auto b = r.column(t, {"attachb", "endb", "nodeb", "nodefair", "fairlead"}, 3, "AttachB");
+  const auto length = r.column(t, {"unstrlen", "length"}, 4, "UnstrLen");
+  const auto segments = r.column(t, {"numsegs", "nsegs"}, 5, "NumSegs");
+  for (const auto& row : t.rows) {
+    r.deck.lines.push_back({static_cast<int>(r.value(row, 0, "ID")), r.cell(row, type, "LineType"), r.cell(row, a, "AttachA"),
+                            r.cell(row, b, "AttachB"), r.value(row, length, "UnstrLen"),
+                            static_cast<int>(r.value(row, segments, "NumSegs")), row.first});
+  }
+}
+
+// FAILURE rows: the attachment, then the lines (comma separated) that may break free there.
+void convert_failures(Reader& r) {
+  for (const auto& row : r.tables[Section::Failure].rows) {
+    if (row.second.size() < 2) continue;
+    std::istringstream ids(row.second[1]);
+    for (std::string id; std::getline(ids, id, ',');) {
+      if (const auto n = number(id)) r.deck.failing_lines.push_back(static_cast<int>(*n));
+    }
+  }
+}
+
+double option_or(const MoorDynDeck& deck, const std::vector<std::string>& names, double fallback) {
+  for (const auto& name : names) {
+    if (const auto it = deck.options.find(name); it != deck.options.end()) return *number(it->second);
+  }
+  return fallback;
+}
+
+}  // namespace
+
+double MoorDynDeck::gravity() const { return option_or(*this, kGravityNames, 9.80665); }
+double MoorDynDeck::water_density() const { return option_or(*this, kDensityNames, 1025.0); }
+double MoorDynDeck::bottom_stiffness() const { return option_or(*this, kBottomStiffnessNames, 3.0e6); }
+std::optional<double> MoorDynDeck::water_depth() const {
+  const double depth = option_or(*this, kDepthNames, -1.0);
+  return depth > 0.0 ? std::optional(depth) : std::nullopt;
+}
+
+MoorDynDeck read_moordyn_deck(const std::filesystem::path& path) {
+  Reader reader;
+  reader.file = path_text(path);
+  reader.deck.file = reader.file;
+  read_lines_of_file(reader, read_input_file(path, "MoorDyn deck"));
+  convert_types(reader);
+  convert_points(reader);
+  convert_lines(reader);
+  convert_failures(reader);
+  return reader.deck;
+}
+
+}  // namespace catena

@@ -1,0 +1,144 @@
+// `catena import moordyn` end to end on decks written for these tests (MoorDyn v1 and v2
+// layouts, not copies of published decks): what each line becomes, the conversion of MoorDyn's
+// quantities, a converted [cable] scene that `catena solve` solves, and bad decks (exit 2 naming
+// the line, nothing written).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "catena/core/types.hpp"
+#include "cli/cli_support.hpp"
+
+namespace catena::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kV2Deck = std::string(CATENA_SOURCE_DIR) + "/docs/examples/moordyn-v2-semitaut.txt";
+constexpr const char* kFolder = "catena_import_test";
+
+// v1 layout (LINE DICTIONARY, NODE PROPERTIES with forces, LINE PROPERTIES with NodeAnch/NodeFair,
+// SOLVER OPTIONS with rhoW and g): a catenary resting on the seabed, and a bridle of three lines
+// meeting at a connect point.
+const std::string kV1Deck = R"(MoorDyn input file, v1 layout, written for Catena's tests
+---------------------- LINE DICTIONARY ---------------------------------
+LineType  Diam   MassDenInAir  EA      BA/-zeta  Can  Cat  Cdn  Cdt
+(-)       (m)    (kg/m)        (N)     (Pa-s/-)  (-)  (-)  (-)  (-)
+chain     0.1    100.0         8.0e8   -0.8      0.8  0.25 2.0  0.4
+---------------------- NODE PROPERTIES ---------------------------------
+Node  Type     X       Y     Z       M    V    FX  FY  FZ  CdA  CA
+(-)   (-)      (m)     (m)   (m)     (kg) (m^3) (kN) (kN) (kN) (m^2) (-)
+1     Fix      -600.0  0.0   -200.0  0    0    0   0   0   0    0
+2     Vessel   0.0     0.0   -10.0   0    0    0   0   0   0    0
+3     Fix      300.0   500.0 -200.0  0    0    0   0   0   0    0
+4     Connect  100.0   200.0 -100.0  0    0    0   0   0   0    0
+5     Vessel   5.0     10.0  -10.0   0    0    0   0   0   0    0
+6     Vessel   10.0    5.0   -10.0   0    0    0   0   0   0    0
+---------------------- LINE PROPERTIES ---------------------------------
+Line  LineType  UnstrLen  NumSegs  NodeAnch  NodeFair  Flags/Outputs
+(-)   (-)       (m)       (-)      (-)       (-)       (-)
+1     chain     700.0     20       1         2         -
+2     chain     450.0     20       3         4         -
+3     chain     120.0     10       4         5         -
+4     chain     120.0     10       4         6         -
+---------------------- SOLVER OPTIONS ----------------------------------
+0.001    dtM       - time step (s)
+1020     rhoW      - water density (kg/m^3)
+9.81     g         - gravity (m/s^2)
+200      WtrDpth   - water depth (m)
+2.0e6    kBot      - bottom stiffness (Pa/m)
+------------------------- need this line -------------------------------
+)";
+
+std::string read_text(const fs::path& path) {
+  std::stringstream text;
+  text << std::ifstream(path).rdbuf();
+  return text.str();
+}
+
+// The first value of `key` in a scene's text (after "\nkey = ").
+double value_of(const std::string& text, const std::string& key, std::size_t from = 0) {
+  const auto at = text.find("\n" + key + " = ", from);
+  if (at == std::string::npos) return NAN;
+  return std::stod(text.substr(at + key.size() + 4));
+}
+
+// Rounding of the conversion's arithmetic (a few operations in double).
+constexpr double kRelTolConversion = 1e-14;
+
+TEST(ImportCommand, V2DeckConvertsEachLineOrSaysWhyNot) {
+  const fs::path out = fs::temp_directory_path() / kFolder / "v2";
+  fs::remove_all(out);
+  const CliRun run = run_cli("import moordyn " + kV2Deck + " --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  // Line 1: one uniform, taut line: a [cable] scene that Catena solves today.
+  const fs::path single = out / "moordyn-v2-semitaut-line-1.toml";
+  const std::string text = read_text(single);
+  EXPECT_NE(text.find("[cable]"), std::string::npos) << text;
+  EXPECT_NE(text.find("Needs: nothing"), std::string::npos) << text;
+  EXPECT_NE(text.find("b = [800.0, -20.0]"), std::string::npos) << text;
+  const double weight = (35.0 - 1025.0 * kPi / 4.0 * 0.04) * 9.80665;  // (MassDen - rho pi/4 d^2) g
+  EXPECT_NEAR(value_of(text, "weight"), weight, kRelTolConversion * weight) << text;
+  const CliRun solved = run_cli("solve " + single.string() + " --solver shooting --solver fe");
+  EXPECT_EQ(solved.exit_code, 0) << solved.output;
+  // Lines 2 and 3: chain and wire in series through a free point with a clump: one [line].
+  const std::string chain = read_text(out / "moordyn-v2-semitaut-line-2-3.toml");
+  EXPECT_NE(chain.find("[[line.segments]]"), std::string::npos) << chain;
+  EXPECT_NE(chain.find("s = 300.0"), std::string::npos) << chain;
+  const double clump = (20000.0 - 1025.0 * 2.0) * 9.80665;  // (M - rho V) g
+  EXPECT_NEAR(value_of(chain, "weight", chain.rfind("[[line.points]]")), clump, kRelTolConversion * clump) << chain;
+  EXPECT_NE(chain.find("Needs: [line]"), std::string::npos) << chain;
+  // Line 4 hangs from a body.
+  EXPECT_NE(run.output.find("not converted: attached to a body at point 7"), std::string::npos) << run.output;
+}
+
+TEST(ImportCommand, V1DeckUsesItsOptionsAndRefusesABridle) {
+  const fs::path deck = write_temp_file(kFolder, "v1.dat", kV1Deck);
+  const fs::path out = deck.parent_path() / "v1";
+  fs::remove_all(out);
+  const CliRun run = run_cli("import moordyn " + deck.string() + " --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::string text = read_text(out / "v1-line-1.toml");
+  // rhoW = 1020 and g = 9.81 from the options; Can = 0.8 from the v1 column.
+  const double weight = (100.0 - 1020.0 * kPi / 4.0 * 0.01) * 9.81;
+  const double added_mass = 0.8 * 1020.0 * kPi / 4.0 * 0.01;
+  EXPECT_NEAR(value_of(text, "weight"), weight, kRelTolConversion * weight) << text;
+  EXPECT_NEAR(value_of(text, "added_mass"), added_mass, kRelTolConversion * added_mass) << text;
+  // 700 m of chain over 600 m x 190 m rests on the seabed at z = -200: [cable] with [seabed].
+  EXPECT_NE(text.find("[seabed]"), std::string::npos) << text;
+  EXPECT_NE(text.find("stiffness = 200000.0"), std::string::npos) << text;  // kBot 2e6 Pa/m x 0.1 m
+  EXPECT_NE(text.find("Needs: [seabed]"), std::string::npos) << text;
+  for (const char* line : {"2 ", "3 ", "4 "}) {
+    EXPECT_NE(run.output.find(std::string(line) + "         not converted: 3 lines meet at free point 4"), std::string::npos)
+        << run.output;
+  }
+}
+
+TEST(ImportCommand, UnknownSectionExitsTwoNamingTheLineAndWritesNothing) {
+  std::string text = kV1Deck;
+  text.insert(text.find("---------------------- SOLVER OPTIONS"), "---------------------- MYSTERY ---------\n");
+  const fs::path deck = write_temp_file(kFolder, "mystery.dat", text);
+  const fs::path out = deck.parent_path() / "mystery";
+  fs::remove_all(out);
+  const CliRun run = run_cli("import moordyn " + deck.string() + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("mystery.dat:22: unknown section 'MYSTERY'"), std::string::npos) << run.output;
+  EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out));
+}
+
+TEST(ImportCommand, NonNumericValueExitsTwoNamingLineAndColumn) {
+  std::string text = kV1Deck;
+  text.replace(text.find("100.0         8.0e8"), 5, "heavy");
+  const fs::path deck = write_temp_file(kFolder, "bad-value.dat", text);
+  const CliRun run = run_cli("import moordyn " + deck.string() + " --out " + (deck.parent_path() / "bad").string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("bad-value.dat:5: 'MassDen': 'heavy' is not a number"), std::string::npos) << run.output;
+}
+
+}  // namespace
+}  // namespace catena::testing
