@@ -32,7 +32,10 @@ std::optional<std::string> shared_computation(const SolverEntry& a, const Solver
 std::vector<CheckResult> identity_checks(const std::vector<CheckResult>& checks) {
   std::map<std::tuple<std::string, std::string, std::string>, IdentityGroup> groups;
   for (const auto& check : checks) {
-    if (!is_value_check(check) || !std::isfinite(check.value_a) || !std::isfinite(check.value_b)) continue;
+    if (!is_value_check(check) || check.verdict == Verdict::Skipped) continue;
+    if (!std::isfinite(check.value_a) || !std::isfinite(check.value_b)) continue;
+    // Exact zeros are structure, not computation (no dynamic tension under out-of-plane forcing).
+    if (check.value_a == 0.0 && check.value_b == 0.0) continue;
     IdentityGroup& group = groups[{check.check, check.compare, check.plane}];
     if (!group.first) group.first = &check;
     ++group.values;

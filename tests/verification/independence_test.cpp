@@ -57,6 +57,7 @@ CheckResult value_check(const std::string& kind, int mode, double a, double b) {
   c.mode = mode;
   c.value_a = a;
   c.value_b = b;
+  c.verdict = Verdict::Pass;
   return c;
 }
 
@@ -72,6 +73,11 @@ TEST(Independence, IdentityDetectorFlagsAWholeListOfBitIdenticalValues) {
   EXPECT_TRUE(identity_checks({identical[0], value_check("frequency", 2, 2.5, std::nextafter(2.5, 3.0))}).empty());
   EXPECT_TRUE(identity_checks({identical[0]}).empty());
   EXPECT_TRUE(identity_checks({value_check("mac", 1, 1.0, 1.0), value_check("mac", 2, 1.0, 1.0)}).empty());
+  // Exact zeros (no dynamic tension under out-of-plane forcing) and skipped checks are no evidence.
+  EXPECT_TRUE(identity_checks({value_check("forced", 1, 0.0, 0.0), value_check("forced", 2, 0.0, 0.0)}).empty());
+  CheckResult skipped = identical[1];
+  skipped.verdict = Verdict::Skipped;
+  EXPECT_TRUE(identity_checks({identical[0], skipped}).empty());
   // Different planes are different lists.
   CheckResult other_plane = identical[1];
   other_plane.plane = "out-of-plane";
