@@ -15,6 +15,7 @@
 #include "catena/io/json_writer.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/verification/scene_runner.hpp"
+#include "catena/verification/independence.hpp"
 #include "catena/verification/suite.hpp"
 #include "cli/commands.hpp"
 
@@ -202,6 +203,9 @@ int run_verify(const VerifyArguments& arguments) {
              "threads; wrote {}\n",
              results.size(), total_checks, failed_checks, discrepancies, errors, elapsed, jobs,
              report.string());
+  const IndependenceTally independence = tally_independence(results);
+  fmt::print("identity checks (two values from shared code): {}; pairs not compared (shared computation): {}\n",
+             independence.identity_checks, independence.shared_not_compared);
   if (!files.unreadable.empty()) fmt::print(stderr, "{} scene file(s) could not be read:\n", files.unreadable.size());
   for (const auto& result : results) {
     if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);

@@ -1,6 +1,7 @@
 #include "catena/verification/tolerance_table.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fnmatch.h>
 
 namespace catena {
@@ -11,6 +12,18 @@ bool matches(const std::string& pattern, const std::string& name) {
 }
 
 }  // namespace
+
+bool is_model_parameter(const std::string& name) { return name == "eps"; }
+
+double ToleranceRule::model_term(const ModelParameters& parameters) const {
+  double term = strain_constant * parameters.strain;
+  if (model_parameter == "eps") term += constant * std::pow(std::abs(parameters.eps), model_order);
+  return term;
+}
+
+double ToleranceRule::tolerance(const ModelParameters& parameters) const {
+  return max + model_term(parameters);
+}
 
 const ToleranceRule* ToleranceTable::find(const std::string& check,
                                           const std::string& a,
@@ -25,6 +38,13 @@ const ToleranceRule* ToleranceTable::find(const std::string& check,
     if (rule.scene_pattern != "*" && fnmatch(rule.scene_pattern.c_str(), scene.c_str(), 0) != 0) continue;
     if (!rule.tag.empty() && std::find(tags.begin(), tags.end(), rule.tag) == tags.end()) continue;
     return &rule;
+  }
+  return nullptr;
+}
+
+const SolverAccuracy* ToleranceTable::solver(const std::string& name) const {
+  for (const auto& s : solvers_) {
+    if (s.name == name) return &s;
   }
   return nullptr;
 }

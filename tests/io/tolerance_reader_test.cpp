@@ -19,9 +19,19 @@ compare = ["fe", "*"]
 scene = "gale-*"
 tag = "gale"
 max = 1e-6
-estimate_factor = 3
+model_parameter = "eps"
+model_order = 2
+constant = 0.5
+strain_constant = 0.25
 beyond = "warn"
-reason = "fe's Richardson estimate"
+reason = "fe's target plus a model term"
+
+[[solver]]
+name = "shooting"
+family = "exact"
+accuracy = 1e-10
+accuracy_knob = "rtol"
+reason = "rtol"
 )";
 
 TEST(ToleranceReader, ReadsEveryFieldOfARule) {
@@ -33,9 +43,67 @@ TEST(ToleranceReader, ReadsEveryFieldOfARule) {
   EXPECT_EQ(rule.scene_pattern, "gale-*");
   EXPECT_EQ(rule.tag, "gale");
   EXPECT_EQ(rule.max, 1e-6);
-  EXPECT_EQ(rule.estimate_factor, 3.0);
+  EXPECT_EQ(rule.model_parameter, "eps");
+  EXPECT_EQ(rule.model_order, 2);
+  EXPECT_EQ(rule.constant, 0.5);
+  EXPECT_EQ(rule.strain_constant, 0.25);
   EXPECT_TRUE(rule.warn_only);
-  EXPECT_EQ(rule.reason, "fe's Richardson estimate");
+  EXPECT_EQ(rule.reason, "fe's target plus a model term");
+  ASSERT_EQ(table.solvers().size(), 1u);
+  const SolverAccuracy* shooting = table.solver("shooting");
+  ASSERT_NE(shooting, nullptr);
+  EXPECT_TRUE(shooting->exact);
+  EXPECT_EQ(shooting->accuracy, 1e-10);
+  EXPECT_EQ(shooting->accuracy_knob, "rtol");
+  EXPECT_EQ(table.solver("fe"), nullptr);
+}
+
+TEST(ToleranceReader, RejectsEstimateFactorNamingTheKey) {
+  // A tolerance that grows with a solver's self-reported estimate is no longer expressible.
+  const std::string text =
+      "[[tolerance]]\ncheck = \"frequency\"\ncompare = [\"fe\", \"*\"]\nmax = 1e-7\nestimate_factor = 3.0\n"
+      "reason = \"r\"\n";
+  try {
+    parse_tolerance_table(text, "t.toml");
+    FAIL() << "estimate_factor must be rejected";
+  } catch (const InvalidInput& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("t.toml: [tolerance#1].estimate_factor"), std::string::npos) << message;
+    EXPECT_NE(message.find("self-reported error estimate"), std::string::npos) << message;
+  }
+}
+
+TEST(ToleranceReader, AModelTermNeedsParameterOrderAndConstantTogether) {
+  const std::string rule = "[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = 1e-9\nreason = \"r\"\n";
+  EXPECT_THROW(parse_tolerance_table(rule + "model_order = 2\nconstant = 1.0\n", "t.toml"), InvalidInput);
+  EXPECT_THROW(parse_tolerance_table(rule + "model_parameter = \"lambda\"\nmodel_order = 2\nconstant = 1.0\n", "t.toml"),
+               InvalidInput);
+  EXPECT_THROW(parse_tolerance_table(rule + "model_parameter = \"eps\"\nconstant = 1.0\n", "t.toml"), ParseError);
+  EXPECT_THROW(parse_tolerance_table(rule + "model_parameter = \"eps\"\nmodel_order = 2\nconstant = -1.0\n", "t.toml"),
+               InvalidInput);
+  EXPECT_THROW(parse_tolerance_table(rule + "strain_constant = -0.5\n", "t.toml"), InvalidInput);
+  EXPECT_NO_THROW(parse_tolerance_table(rule + "strain_constant = 0.5\n", "t.toml"));
+}
+
+TEST(ToleranceReader, RejectsMalformedSolverDeclarations) {
+  const std::string head = "[[solver]]\nname = \"fe\"\nreason = \"r\"\n";
+  EXPECT_THROW(parse_tolerance_table(head + "family = \"exact\"\n", "t.toml"), ParseError);  // no accuracy
+  EXPECT_THROW(parse_tolerance_table(head + "family = \"exactish\"\naccuracy = 1e-6\n", "t.toml"), InvalidInput);
+  EXPECT_THROW(parse_tolerance_table(head + "family = \"exact\"\naccuracy = 0.0\n", "t.toml"), InvalidInput);
+}
+
+TEST(ToleranceReader, BuiltinTableDeclaresEverySolverAndNoToleranceGrowsWithAnEstimate) {
+  const ToleranceTable table = builtin_tolerance_table();
+  for (const char* name : {"fe", "shooting", "frobenius", "asymptotic", "airy"}) {
+    EXPECT_NE(table.solver(name), nullptr) << name;
+  }
+  EXPECT_TRUE(table.solver("shooting")->exact);
+  EXPECT_FALSE(table.solver("airy")->exact);
+  // Model rules carry the published order of their model: eps^2.
+  const ToleranceRule* model = table.find("frequency", "asymptotic", "shooting", "any", {});
+  ASSERT_NE(model, nullptr);
+  EXPECT_EQ(model->model_parameter, "eps");
+  EXPECT_EQ(model->model_order, 2);
 }
 
 TEST(ToleranceReader, BuiltinTableHasAReasonForEveryRule) {
@@ -44,7 +112,7 @@ TEST(ToleranceReader, BuiltinTableHasAReasonForEveryRule) {
   for (const auto& rule : table.rules()) EXPECT_FALSE(rule.reason.empty()) << rule.check;
   const ToleranceRule* rule = table.find("frequency", "shooting", "frobenius", "any", {});
   ASSERT_NE(rule, nullptr);
-  EXPECT_EQ(rule->max, 1e-8);
+  EXPECT_EQ(rule->max, 1e-9);
   EXPECT_NE(table.find("frequency", "asymptotic", "shooting", "any", {}), nullptr);
 }
 

@@ -36,5 +36,31 @@ TEST(ToleranceTable, EmptyTableFindsNothing) {
   EXPECT_EQ(table.find("frequency", "fe", "shooting", "x", {}), nullptr);
 }
 
+TEST(ToleranceTable, AModelRuleAddsItsPublishedOrderInTheModelParameter) {
+  ToleranceRule r = rule("frequency", "asymptotic", "*", 1e-9);
+  r.model_parameter = "eps";
+  r.model_order = 2;
+  r.constant = 0.5;
+  r.strain_constant = 0.25;
+  const ModelParameters scene{0.1, 1e-3};
+  EXPECT_DOUBLE_EQ(r.model_term(scene), 0.5 * 0.01 + 0.25 * 1e-3);
+  EXPECT_DOUBLE_EQ(r.tolerance(scene), 1e-9 + 0.5 * 0.01 + 0.25 * 1e-3);
+  // Halving eps quarters the model part: the order, not a solver's estimate, sets it.
+  EXPECT_DOUBLE_EQ(r.model_term({0.05, 0.0}), r.model_term({0.1, 0.0}) / 4.0);
+  // A rule without a model term is its fixed max.
+  EXPECT_EQ(rule("frequency", "fe", "*", 1e-6).tolerance(scene), 1e-6);
+}
+
+TEST(ToleranceTable, FindsASolverDeclarationByName) {
+  SolverAccuracy fe;
+  fe.name = "fe";
+  fe.exact = true;
+  fe.accuracy = 1e-6;
+  const ToleranceTable table({}, {fe});
+  ASSERT_NE(table.solver("fe"), nullptr);
+  EXPECT_EQ(table.solver("fe")->accuracy, 1e-6);
+  EXPECT_EQ(table.solver("shooting"), nullptr);
+}
+
 }  // namespace
 }  // namespace catena

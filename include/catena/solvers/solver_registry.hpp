@@ -68,7 +68,16 @@ struct SolverEntry {
   /// The solver's numerics for one problem, with its knobs read (they are validated first).
   std::function<std::unique_ptr<internal::SolverNumerics>(const SolveContext&, const SolverKnobs&)>
       make_numerics;
+  /// The code path that computes each quantity the harness compares, by quantity
+  /// ("frequency-in-plane", "frequency-out-of-plane", "shape-in-plane", "shape-out-of-plane",
+  /// "tension", "forced"): two solvers that declare the same id for a quantity are one witness,
+  /// and the harness does not compare them on it (docs/verdicts.md, "Independence"). A quantity
+  /// the solver does not produce is absent.
+  std::map<std::string, std::string> computations;
 };
+
+/// The quantities named in SolverEntry::computations.
+const std::vector<std::string>& compared_quantities();
 
 /// All solvers, in a fixed order: fe, shooting, frobenius, asymptotic, airy.
 const std::vector<SolverEntry>& solver_registry();

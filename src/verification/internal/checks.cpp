@@ -7,7 +7,11 @@
 #include <map>
 
 #include "catena/verification/findings.hpp"
+#include "catena/verification/independence.hpp"
 #include "catena/verification/tolerance_table.hpp"
+#include "verification/internal/check_builder.hpp"
+#include "verification/internal/estimate_checks.hpp"
+#include "verification/internal/published_checks.hpp"
 
 namespace catena::internal {
 namespace {
@@ -16,91 +20,8 @@ namespace {
 // rounding floor near 1e-11); 1e-9 leaves room for ill-conditioned taut cables and still catches
 // a wrong equilibrium.
 constexpr double kStaticsClosureRel = 1e-9;
-// Whatever a tolerance says, a relative difference above this is a gross disagreement (docs/verdicts.md).
-constexpr double kGrossRelative = 0.5;
-// Two solvers "confirm each other" against a published value when they differ by less than this
-// fraction of their distance to it.
-constexpr double kConfirmationRatio = 0.1;
 
-const char* plane_name(Plane plane) { return plane == Plane::InPlane ? "in-plane" : "out-of-plane"; }
-
-double relative_difference(double a, double b) {
-  const double scale = std::max(std::abs(a), std::abs(b));
-  return scale == 0.0 ? 0.0 : std::abs(a - b) / scale;
-}
-
-double estimate(const Mode& mode) { return std::max(0.0, mode.relative_error_estimate); }
-
-class CheckBuilder {
- public:
-  CheckBuilder(const SceneResult& result, const ToleranceTable& tolerances, const FindingsTable& findings)
-      : result_(result), tolerances_(tolerances), findings_(findings) {}
-
-  const ToleranceTable& tolerances() const { return tolerances_; }
-  const FindingsTable& findings() const { return findings_; }
-
-  const std::vector<CheckResult>& checks() const { return checks_; }
-
-  // The tolerance for `check` between solvers a and b, with its reason; the scene's [checks]
-  // override wins. Returns nullopt (and records a SKIP) when no rule exists.
-  struct Tolerance {
-    double value;
-    std::string reason;
-    bool warn_only = false;
-  };
-  std::optional<Tolerance> tolerance(const std::string& check, const std::string& a, const std::string& b,
-                                     double estimate_sum, std::optional<double> scene_override) {
-    if (scene_override) return Tolerance{*scene_override, "scene [checks] override"};
-    const ToleranceRule* rule = tolerances_.find(check, a, b, result_.scene.name, result_.scene.tags);
-    if (!rule) return std::nullopt;
-    return Tolerance{std::max(rule->max, rule->estimate_factor * estimate_sum), rule->reason, rule->warn_only};
-  }
-
-  CheckResult base(const std::string& check, const std::string& compare, const std::string& plane, int mode) {
-    CheckResult c;
-    c.scene = result_.scene.name;
-    c.check = check;
-    c.compare = compare;
-    c.plane = plane;
-    c.mode = mode;
-    c.value_a = c.value_b = std::nan("");
-    return c;
-  }
-
-  void add(CheckResult check) { checks_.push_back(std::move(check)); }
-
-  // measured <= tolerance, with the gross and non-finite rules.
-  void add_measured(CheckResult check, double measured, const Tolerance& tol, bool relative) {
-    check.measured = measured;
-    check.tolerance = tol.value;
-    if (!std::isfinite(measured)) {
-      check.verdict = Verdict::Fail;
-      check.detail = "non-finite value; " + check.detail;
-    } else if (relative && measured > kGrossRelative && !tol.warn_only) {
-      check.verdict = Verdict::Fail;
-      check.detail = "gross disagreement; " + check.detail;
-    } else if (measured <= tol.value) {
-      check.verdict = Verdict::Pass;
-    } else {
-      // A rule marked beyond = "warn" describes a model's documented limit, not a defect.
-      check.verdict = tol.warn_only ? Verdict::Warn : Verdict::Fail;
-    }
-    if (!check.detail.empty()) check.detail += "; ";
-    check.detail += "tolerance: " + tol.reason;
-    add(std::move(check));
-  }
-
- private:
-  const SceneResult& result_;
-  const ToleranceTable& tolerances_;
-  const FindingsTable& findings_;
-  std::vector<CheckResult> checks_;
-};
-
-const ModalResult* modal(const SolverOutput& output, Plane plane) {
-  const auto& m = plane == Plane::InPlane ? output.inplane : output.outofplane;
-  return m && !m->modes.empty() ? &*m : nullptr;
-}
+const ModalResult* modal(const SolverOutput& output, Plane plane) { return modal_of(output, plane); }
 
 void statics_closure(const SceneResult& result, CheckBuilder& builder) {
   CheckResult check = builder.base("statics-closure", "statics vs supports", "", 0);
@@ -145,12 +66,13 @@ void frequency_pair(const SceneResult& result, const SolverOutput& a, const Solv
   const ModalResult* ma = modal(a, plane);
   const ModalResult* mb = modal(b, plane);
   if (!ma || !mb) return;
+  const std::string quantity = plane == Plane::InPlane ? "frequency-in-plane" : "frequency-out-of-plane";
+  if (!builder.independent(a.solver, b.solver, quantity, "frequency", plane_name(plane))) return;
+  const auto tol = builder.tolerance("frequency", a.solver, b.solver, result.scene.checks.frequency_rel);
   const std::size_t n = std::min(ma->modes.size(), mb->modes.size());
   for (std::size_t i = 0; i < n; ++i) {
     const Mode& x = ma->modes[i];
     const Mode& y = mb->modes[i];
-    const auto tol = builder.tolerance("frequency", a.solver, b.solver, estimate(x) + estimate(y),
-                                       result.scene.checks.frequency_rel);
     CheckResult check = builder.base("frequency", a.solver + " vs " + b.solver, plane_name(plane), x.index);
     check.value_a = x.omega_rad_s;
     check.value_b = y.omega_rad_s;
@@ -190,7 +112,9 @@ void shape_pair(const SceneResult& result, const SolverOutput& a, const SolverOu
                 CheckBuilder& builder) {
   const ModalResult* ma = modal(a, plane);
   const ModalResult* mb = modal(b, plane);
-  if (!ma || !mb) return;
+  if (!ma || !mb || !has_shape(ma->modes[0], plane) || !has_shape(mb->modes[0], plane)) return;
+  const std::string quantity = plane == Plane::InPlane ? "shape-in-plane" : "shape-out-of-plane";
+  if (!builder.independent(a.solver, b.solver, quantity, "shape", plane_name(plane))) return;
   const std::size_t n = std::min(ma->modes.size(), mb->modes.size());
   for (std::size_t i = 0; i < n; ++i) {
     const Mode& x = ma->modes[i];
@@ -199,7 +123,7 @@ void shape_pair(const SceneResult& result, const SolverOutput& a, const SolverOu
     const Vector p = shape_vector(x, plane), q = shape_vector(y, plane);
     const double mac = std::pow(p.dot(q), 2) / (p.squaredNorm() * q.squaredNorm());
     const std::string compare = a.solver + " vs " + b.solver;
-    if (auto tol = builder.tolerance("mac", a.solver, b.solver, 0.0,
+    if (auto tol = builder.tolerance("mac", a.solver, b.solver,
                                      result.scene.checks.mac_min ? std::optional(1.0 - *result.scene.checks.mac_min)
                                                                  : std::nullopt)) {
       CheckResult check = builder.base("mac", compare, plane_name(plane), x.index);
@@ -210,7 +134,7 @@ void shape_pair(const SceneResult& result, const SolverOutput& a, const SolverOu
     // Max difference of the normalised shapes, signs aligned.
     const double sign = p.dot(q) < 0.0 ? -1.0 : 1.0;
     const double max_diff = (p - sign * q).cwiseAbs().maxCoeff() / std::max(p.cwiseAbs().maxCoeff(), 1e-300);
-    if (auto tol = builder.tolerance("shape", a.solver, b.solver, 0.0, result.scene.checks.shape_max_diff)) {
+    if (auto tol = builder.tolerance("shape", a.solver, b.solver, result.scene.checks.shape_max_diff)) {
       CheckResult check = builder.base("shape", compare, plane_name(plane), x.index);
       check.detail = "max |shape_a - shape_b| / max |shape_a| over the stations";
       builder.add_measured(check, max_diff, *tol, false);
@@ -223,13 +147,15 @@ void tension_pair(const SceneResult& result, const SolverOutput& a, const Solver
   const ModalResult* ma = modal(a, plane);
   const ModalResult* mb = modal(b, plane);
   if (!ma || !mb || plane == Plane::OutOfPlane) return;  // out-of-plane modes carry no tension
+  if (ma->modes[0].max_abs_tension_n < 0.0 || mb->modes[0].max_abs_tension_n < 0.0) return;
+  if (!builder.independent(a.solver, b.solver, "tension", "tension", plane_name(plane))) return;
   const std::size_t n = std::min(ma->modes.size(), mb->modes.size());
   for (std::size_t i = 0; i < n; ++i) {
     const Mode& x = ma->modes[i];
     const Mode& y = mb->modes[i];
     if (x.max_abs_tension_n < 0.0 || y.max_abs_tension_n < 0.0) continue;
     if (x.normalised_by != y.normalised_by) continue;
-    const auto tol = builder.tolerance("tension", a.solver, b.solver, 0.0, result.scene.checks.tension_rel);
+    const auto tol = builder.tolerance("tension", a.solver, b.solver, result.scene.checks.tension_rel);
     if (!tol) continue;
     CheckResult check = builder.base("tension", a.solver + " vs " + b.solver, plane_name(plane), x.index);
     check.value_a = x.max_abs_tension_n;
@@ -275,6 +201,7 @@ void resonance_claim(const ForcedResponse& x, const ForcedResponse& y, const std
 
 void forced_pair(const SceneResult& result, const SolverOutput& a, const SolverOutput& b, CheckBuilder& builder) {
   const std::size_t n = std::min(a.forced.size(), b.forced.size());
+  if (n == 0 || !builder.independent(a.solver, b.solver, "forced", "forced", "forced")) return;
   for (std::size_t i = 0; i < n; ++i) {
     const ForcedResponse& x = a.forced[i];
     const ForcedResponse& y = b.forced[i];
@@ -286,8 +213,7 @@ void forced_pair(const SceneResult& result, const SolverOutput& a, const SolverO
       builder.add(check);
       continue;
     }
-    const double estimates = std::max(0.0, x.relative_error_estimate) + std::max(0.0, y.relative_error_estimate);
-    const auto tol = builder.tolerance("forced", a.solver, b.solver, estimates, result.scene.checks.tension_rel);
+    const auto tol = builder.tolerance("forced", a.solver, b.solver, result.scene.checks.tension_rel);
     if (!tol) continue;
     check.detail = fmt::format("max |tau| at {:.6g} rad/s: {:.9g} vs {:.9g} N (error estimates {:.1e}, {:.1e})",
                                x.omega_rad_s, x.max_abs_tension_n, y.max_abs_tension_n, x.relative_error_estimate,
@@ -322,7 +248,7 @@ void orthogonality(const SceneResult& result, const SolverOutput& output, Plane 
       }
     }
   }
-  const auto tol = builder.tolerance("orthogonality", output.solver, output.solver, 0.0, result.scene.checks.orthogonality);
+  const auto tol = builder.tolerance("orthogonality", output.solver, output.solver, result.scene.checks.orthogonality);
   if (!tol) return;
   CheckResult check = builder.base("orthogonality", output.solver, plane_name(plane), 0);
   check.detail = fmt::format("max |<phi_i, phi_j>_M| / (|phi_i| |phi_j|) over mode pairs, at modes {} and {}",
@@ -330,125 +256,25 @@ void orthogonality(const SceneResult& result, const SolverOutput& output, Plane 
   builder.add_measured(check, worst, *tol, false);
 }
 
-// The value a solver gives for a published entry, in the entry's unit, and its error estimate.
-std::optional<std::pair<double, double>> solver_value(const SceneResult& result, const SolverOutput& output,
-                                                      const PublishedValues& published, int mode) {
-  if (published.quantity == PublishedQuantity::ForcedMaxTension) {
-    if (mode < 0 || mode >= static_cast<int>(output.forced.size())) return std::nullopt;
-    const ForcedResponse& response = output.forced[static_cast<std::size_t>(mode)];
-    if (!response.diagnostic.empty()) return std::nullopt;
-    return std::pair{response.max_abs_tension_n / result.statics->horizontal_force_n(),
-                     std::max(0.0, response.relative_error_estimate)};
-  }
-  const ModalResult* m = modal(output, published.quantity == PublishedQuantity::InPlaneFrequency ? Plane::InPlane
-                                                                                                  : Plane::OutOfPlane);
-  if (!m) return std::nullopt;
-  for (const auto& x : m->modes) {
-    if (x.index == mode) {
-      return std::pair{from_rad_per_second(x.omega_rad_s, published.unit, *result.groups), estimate(x)};
+// The pair checks of one plane, and each solver's own mode count and orthogonality.
+void plane_checks(const SceneResult& result, const std::vector<const SolverOutput*>& usable, Plane plane,
+                  CheckBuilder& builder) {
+  for (const SolverOutput* output : usable) mode_count(*output, plane, builder);
+  for (std::size_t i = 0; i < usable.size(); ++i) {
+    for (std::size_t j = i + 1; j < usable.size(); ++j) {
+      frequency_pair(result, *usable[i], *usable[j], plane, builder);
+      shape_pair(result, *usable[i], *usable[j], plane, builder);
+      tension_pair(result, *usable[i], *usable[j], plane, builder);
     }
   }
-  return std::nullopt;
-}
-
-// Every usable solver's value for one published entry: solver -> (value, error estimate).
-using PublishedCandidates = std::map<std::string, std::pair<double, double>>;
-
-// A second solver that confirms `solver`'s value: it agrees with ours within their pair tolerance
-// and far better (kConfirmationRatio) than ours agrees with the print. Empty when none does.
-std::string confirming_solver(const SceneResult& result, const CheckBuilder& builder, const std::string& quantity,
-                              const std::string& solver, const PublishedCandidates& values, double measured) {
-  const auto [ours, est] = values.at(solver);
-  std::string partner;
-  for (const auto& [other, other_value] : values) {
-    if (other == solver) continue;
-    const double between = std::abs(other_value.first - ours);
-    const ToleranceRule* pair_rule = builder.tolerances().find(
-        quantity == "forced_max_tension" ? "forced" : "frequency", solver, other, result.scene.name,
-        result.scene.tags);
-    const double pair_tol =
-        pair_rule ? std::max(pair_rule->max, pair_rule->estimate_factor * (est + other_value.second)) : 0.0;
-    if (between <= pair_tol * std::abs(ours) && between <= kConfirmationRatio * measured) partner = other;
-  }
-  return partner;
-}
-
-// Beyond the printed digits: a source discrepancy when confirmed by a second solver or by a
-// reviewed finding that still matches our value; a failure otherwise.
-void judge_disagreement(const SceneResult& result, const CheckBuilder& builder, const std::string& quantity,
-                        const std::string& solver, const PublishedCandidates& values, int mode,
-                        CheckResult& check) {
-  const double ours = values.at(solver).first;
-  const std::string partner = confirming_solver(result, builder, quantity, solver, values, check.measured);
-  const Finding* finding = builder.findings().find(result.scene.name, quantity, mode, solver);
-  if (!partner.empty()) {
-    check.verdict = Verdict::SourceDiscrepancy;
-    check.detail += fmt::format("; confirmed by {} = {:.8g}", partner, values.at(partner).first);
-  } else if (finding && relative_difference(finding->ours, ours) <= 1e-6) {
-    check.verdict = Verdict::SourceDiscrepancy;
-    check.detail += "; reviewed finding: " + finding->diagnosis;
-  } else if (finding) {
-    check.verdict = Verdict::Fail;
-    check.detail += fmt::format("; stale finding (reviewed value {:.8g})", finding->ours);
-  } else {
-    check.verdict = Verdict::Fail;
-  }
-}
-
-void published_entry(const SceneResult& result, CheckBuilder& builder, const PublishedValues& published,
-                     const std::string& solver, const PublishedCandidates& values, int mode, double printed) {
-  const std::string quantity = to_string(published.quantity);
-  const double half_unit = published.decimals >= 0 ? 0.5 * std::pow(10.0, -published.decimals) : 0.0;
-  const auto [ours, est] = values.at(solver);
-  const ToleranceRule* rule =
-      builder.tolerances().find("published", solver, "published", result.scene.name, result.scene.tags);
-  const double slack = rule ? std::max(rule->max, rule->estimate_factor * est * std::abs(ours)) : 0.0;
-  const bool forced = quantity == "forced_max_tension";
-  CheckResult check = builder.base("published", solver + " vs " + published.source,
-                                   forced                                 ? "forced"
-                                   : quantity == "inplane_frequency" ? "in-plane"
-                                                                          : "out-of-plane",
-                                   forced ? mode + 1 : mode);
-  check.value_a = ours;
-  check.value_b = printed;
-  check.measured = std::abs(ours - printed);
-  check.tolerance = half_unit + slack;
-  check.detail = fmt::format("ours {:.8g}, printed {} ({} decimals; absolute difference, in the table's unit)",
-                             ours, printed, published.decimals);
-  if (!std::isfinite(ours)) {
-    check.verdict = Verdict::Fail;
-  } else if (check.measured <= check.tolerance) {
-    check.verdict = Verdict::Pass;
-  } else {
-    judge_disagreement(result, builder, quantity, solver, values, mode, check);
-  }
-  builder.add(check);
-}
-
-void published_values(const SceneResult& result, CheckBuilder& builder) {
-  for (const auto& published : result.scene.published) {
-    for (std::size_t k = 0; k < published.values.size(); ++k) {
-      const int mode = published.modes[k];
-      // Every usable solver's value (for confirmation), and the designated ones (to check).
-      PublishedCandidates values;
-      for (const auto& output : result.outputs) {
-        if (!output.summary.is_usable()) continue;
-        if (auto v = solver_value(result, output, published, mode)) values[output.solver] = *v;
-      }
-      for (const auto& [solver, value_and_estimate] : values) {
-        const auto& only = published.compare_with;
-        if (!only.empty() && std::find(only.begin(), only.end(), solver) == only.end()) continue;
-        published_entry(result, builder, published, solver, values, mode, published.values[k]);
-      }
-    }
-  }
+  for (const SolverOutput* output : usable) orthogonality(result, *output, plane, builder);
 }
 
 }  // namespace
 
 std::vector<CheckResult> run_checks(const SceneResult& result, const ToleranceTable& tolerances,
-                                    const FindingsTable& findings) {
-  CheckBuilder builder(result, tolerances, findings);
+                                    const FindingsTable& findings, const std::vector<SolverEntry>& solvers) {
+  CheckBuilder builder(result, tolerances, findings, solvers);
   if (!result.statics) return {};
   statics_closure(result, builder);
   for (const auto& output : result.outputs) solver_status(output, builder);
@@ -456,22 +282,15 @@ std::vector<CheckResult> run_checks(const SceneResult& result, const ToleranceTa
   for (const auto& output : result.outputs) {
     if (output.summary.is_usable()) usable.push_back(&output);
   }
-  for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
-    for (const SolverOutput* output : usable) mode_count(*output, plane, builder);
-    for (std::size_t i = 0; i < usable.size(); ++i) {
-      for (std::size_t j = i + 1; j < usable.size(); ++j) {
-        frequency_pair(result, *usable[i], *usable[j], plane, builder);
-        shape_pair(result, *usable[i], *usable[j], plane, builder);
-        tension_pair(result, *usable[i], *usable[j], plane, builder);
-      }
-    }
-    for (const SolverOutput* output : usable) orthogonality(result, *output, plane, builder);
-  }
+  for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) plane_checks(result, usable, plane, builder);
   for (std::size_t i = 0; i < usable.size(); ++i) {
     for (std::size_t j = i + 1; j < usable.size(); ++j) forced_pair(result, *usable[i], *usable[j], builder);
   }
-  published_values(result, builder);
-  return builder.checks();
+  estimate_checks(usable, builder);
+  published_checks(builder);
+  std::vector<CheckResult> checks = builder.checks();
+  for (CheckResult& flag : identity_checks(checks)) checks.push_back(std::move(flag));
+  return checks;
 }
 
 }  // namespace catena::internal

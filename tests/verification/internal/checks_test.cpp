@@ -9,6 +9,7 @@
 #include "catena/io/findings_reader.hpp"
 #include "catena/io/tolerance_reader.hpp"
 #include "catena/statics/problem_builders.hpp"
+#include "catena/verification/independence.hpp"
 #include "verification/internal/checks.hpp"
 
 namespace catena {
@@ -30,6 +31,7 @@ SolverOutput output_with(const std::string& solver, std::vector<double> omegas, 
   out.summary.solver = solver;
   out.summary.termination = Termination::Converged;
   ModalResult modal;
+  modal.summary.termination = Termination::Converged;
   const Vector s = Vector::LinSpaced(101, 0.0, 1.0);
   for (std::size_t i = 0; i < omegas.size(); ++i) {
     Mode mode;
@@ -89,7 +91,7 @@ TEST(Checks, APerturbedFrequencyFailsNamingEverything) {
   EXPECT_EQ(c->scene, "test-scene");
   EXPECT_EQ(c->compare, "fe vs shooting");
   EXPECT_NEAR(c->measured, 1e-3 / (1 + 1e-3), 1e-12);
-  EXPECT_LT(c->tolerance, 1e-6);
+  EXPECT_EQ(c->tolerance, 1e-6);  // fe's row of verification/tolerances.toml
   EXPECT_NE(c->detail.find("2.002"), std::string::npos) << c->detail;
 }
 
@@ -186,10 +188,10 @@ std::vector<Verdict> forced_verdicts(const std::vector<CheckResult>& checks) {
 }
 
 TEST(Checks, AResonanceClaimAgainstUnflaggedFiniteResponsesFails) {
-  // Regression: frobenius called Omega = 100 a resonance while fe and shooting agreed on 224 N
+  // Regression: frobenius called Omega = 100 a resonance while fe and shooting agreed on 224.4 N
   // with no sign of a nearby natural frequency; the pair checks were skipped and the run passed.
   SceneResult r = gale_result();
-  r.outputs = {forced_output("fe", 223.9, 2e-3), forced_output("shooting", 224.385, 1e-8),
+  r.outputs = {forced_output("fe", 224.38, 2e-3), forced_output("shooting", 224.385, 1e-8),
                forced_diagnostic("frobenius", true)};
   const auto checks = run_checks(r);
   const std::vector<Verdict> verdicts = forced_verdicts(checks);
@@ -221,6 +223,122 @@ TEST(Checks, ADeclinedForcingFrequencyIsSkippedNotFailed) {
   const auto checks = run_checks(r);
   ASSERT_EQ(forced_verdicts(checks), std::vector<Verdict>{Verdict::Skipped});
   EXPECT_NE(find(checks, "forced", 1)->detail.find("declined"), std::string::npos);
+}
+
+const CheckResult* find_compare(const std::vector<CheckResult>& checks, const std::string& kind,
+                                const std::string& compare, int mode) {
+  for (const auto& c : checks) {
+    if (c.check == kind && c.compare == compare && c.mode == mode) return &c;
+  }
+  return nullptr;
+}
+
+TEST(Checks, AFrequencyToleranceIsTheSameWhateverTheEstimates) {
+  // The old rule max(floor, factor * (est_a + est_b)) let a solver widen its own checks.
+  SceneResult r = gale_result();
+  r.outputs = {output_with("fe", {1.0, 2.0}, 1e-9), output_with("shooting", {1.0, 2.0 * (1 + 1e-4)}, 1e-10)};
+  const CheckResult honest = *find(run_checks(r), "frequency", 2);
+  r.outputs[0].inplane->modes[1].relative_error_estimate = 1e-2;
+  r.outputs[1].inplane->modes[1].relative_error_estimate = 1e-2;
+  const CheckResult boastful = *find(run_checks(r), "frequency", 2);
+  EXPECT_EQ(honest.tolerance, boastful.tolerance);
+  EXPECT_EQ(honest.tolerance, 1e-6);
+  EXPECT_EQ(boastful.verdict, Verdict::Fail);
+}
+
+TEST(Checks, AForcedToleranceIsTheSameWhateverTheEstimates) {
+  SceneResult r = gale_result();
+  r.outputs = {forced_output("fe", 224.0, 1e-6), forced_output("shooting", 224.385, 1e-8)};
+  const CheckResult honest = *find(run_checks(r), "forced", 1);
+  r.outputs[0].forced[0].relative_error_estimate = 0.5;
+  const CheckResult boastful = *find(run_checks(r), "forced", 1);
+  EXPECT_EQ(honest.tolerance, boastful.tolerance);
+  EXPECT_EQ(boastful.verdict, Verdict::Fail);
+}
+
+TEST(Checks, AnEstimateBelowTheActualErrorFails) {
+  SceneResult r = gale_result();
+  // fe claims 1e-9 but is 1e-7 away from shooting, which claims 1e-11.
+  r.outputs = {output_with("fe", {1.0 * (1 + 1e-7)}, 1e-9), output_with("shooting", {1.0}, 1e-11)};
+  const auto checks = run_checks(r);
+  const CheckResult* c = find_compare(checks, "estimate", "fe vs shooting", 1);
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(c->verdict, Verdict::Fail);
+  EXPECT_NEAR(c->measured, 1e-7, 1e-13);
+  EXPECT_DOUBLE_EQ(c->tolerance, 1e-9 + 1e-11);
+  EXPECT_NE(c->detail.find("estimate not an upper bound"), std::string::npos) << c->detail;
+  // The same miss within fe's estimate plus the reference's passes.
+  r.outputs[0].inplane->modes[0].relative_error_estimate = 2e-7;
+  EXPECT_EQ(find_compare(run_checks(r), "estimate", "fe vs shooting", 1)->verdict, Verdict::Pass);
+}
+
+TEST(Checks, AnEstimateTenThousandTimesTheActualErrorWarns) {
+  SceneResult r = gale_result();
+  r.outputs = {output_with("fe", {1.0 * (1 + 1e-9)}, 1e-5), output_with("shooting", {1.0}, 1e-11)};
+  const auto checks = run_checks(r);
+  const CheckResult* c = find_compare(checks, "estimate", "fe vs shooting", 1);
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(c->verdict, Verdict::Warn);
+  EXPECT_NE(c->detail.find("estimate uninformative"), std::string::npos) << c->detail;
+  // At or below the accuracy the solver was asked for, a generous estimate is no fault.
+  r.outputs[0].inplane->modes[0].relative_error_estimate = 1e-6;  // fe's accuracy in the table
+  r.outputs[0].inplane->modes[0].omega_rad_s = 1.0 * (1 + 1e-10);
+  EXPECT_EQ(find_compare(run_checks(r), "estimate", "fe vs shooting", 1)->verdict, Verdict::Pass);
+}
+
+TEST(Checks, TheReferenceIsTheOtherExactSolverWithTheSmallestEstimate) {
+  SceneResult r = gale_result();
+  r.outputs = {output_with("fe", {1.0 + 1e-8}, 1e-7), output_with("shooting", {1.0 + 1e-10}, 1e-10),
+               output_with("frobenius", {1.0}, 1e-13), output_with("asymptotic", {1.0 + 1e-4}, 1e-3)};
+  const auto checks = run_checks(r);
+  EXPECT_NE(find_compare(checks, "estimate", "fe vs frobenius", 1), nullptr);
+  EXPECT_NE(find_compare(checks, "estimate", "frobenius vs shooting", 1), nullptr);  // not itself
+  EXPECT_NE(find_compare(checks, "estimate", "asymptotic vs frobenius", 1), nullptr);
+  EXPECT_EQ(find_compare(checks, "estimate", "fe vs asymptotic", 1), nullptr);  // a model is no reference
+  // A reference that did not converge is not one.
+  r.outputs[2].summary.termination = Termination::NoConvergence;
+  EXPECT_NE(find_compare(run_checks(r), "estimate", "fe vs shooting", 1), nullptr);
+}
+
+TEST(Checks, SolversSharingAComputationAreNotComparedOnIt) {
+  // A registry in which fe and shooting declare the same in-plane frequency path.
+  std::vector<SolverEntry> solvers(2);
+  solvers[0].name = "fe";
+  solvers[1].name = "shooting";
+  solvers[0].computations = {{"frequency-in-plane", "shared-path"}, {"forced", "fe-forced"}};
+  solvers[1].computations = {{"frequency-in-plane", "shared-path"}, {"forced", "shooting-forced"}};
+  SceneResult r = gale_result();
+  r.outputs = {output_with("fe", {1.0, 2.0}, 1e-9), output_with("shooting", {1.0, 2.0}, 1e-10)};
+  const auto checks = internal::run_checks(r, builtin_tolerance_table(), FindingsTable{}, solvers);
+  int skips = 0;
+  for (const auto& c : checks) {
+    EXPECT_FALSE(c.check == "frequency" && c.verdict != Verdict::Skipped) << c.compare << " mode " << c.mode;
+    EXPECT_NE(c.check, "estimate") << "a solver sharing the path is no reference";
+    if (c.check == "frequency" && c.verdict == Verdict::Skipped) {
+      ++skips;
+      EXPECT_EQ(c.detail.rfind(kSharedComputationDetail, 0), 0u) << c.detail;
+      EXPECT_NE(c.detail.find("shared-path"), std::string::npos) << c.detail;
+    }
+  }
+  EXPECT_EQ(skips, 1);  // once per scene, pair and quantity, not per mode
+  EXPECT_EQ(tally_independence({r}).shared_not_compared, 0);  // r.checks was not filled
+  SceneResult with_checks = r;
+  with_checks.checks = checks;
+  EXPECT_EQ(tally_independence({with_checks}).shared_not_compared, 1);
+}
+
+TEST(Checks, BitIdenticalValuesOverAModeListAreFlaggedAsAnIdentityCheck) {
+  SceneResult r = gale_result();
+  r.outputs = {output_with("fe", {1.25, 2.5, 3.75}, 1e-9), output_with("shooting", {1.25, 2.5, 3.75}, 1e-10)};
+  const auto checks = run_checks(r);
+  const CheckResult* flag = find(checks, kIdentityCheck, 0);
+  ASSERT_NE(flag, nullptr);
+  EXPECT_EQ(flag->verdict, Verdict::Fail);
+  EXPECT_EQ(flag->compare, "fe vs shooting");
+  EXPECT_EQ(flag->measured, 3.0);
+  // One value differing in its last bit makes them two witnesses again.
+  r.outputs[1].inplane->modes[2].omega_rad_s = std::nextafter(3.75, 4.0);
+  EXPECT_EQ(find(run_checks(r), kIdentityCheck, 0), nullptr);
 }
 
 }  // namespace

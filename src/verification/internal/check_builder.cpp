@@ -1,0 +1,112 @@
+#include "verification/internal/check_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "catena/verification/independence.hpp"
+
+namespace catena::internal {
+namespace {
+
+// Whatever a tolerance says, a relative difference above this is a gross disagreement (docs/verdicts.md).
+constexpr double kGrossRelative = 0.5;
+
+}  // namespace
+
+const char* plane_name(Plane plane) { return plane == Plane::InPlane ? "in-plane" : "out-of-plane"; }
+
+double relative_difference(double a, double b) {
+  const double scale = std::max(std::abs(a), std::abs(b));
+  return scale == 0.0 ? 0.0 : std::abs(a - b) / scale;
+}
+
+const ModalResult* modal_of(const SolverOutput& output, Plane plane) {
+  const auto& m = plane == Plane::InPlane ? output.inplane : output.outofplane;
+  return m && !m->modes.empty() ? &*m : nullptr;
+}
+
+ModelParameters model_parameters(const SceneResult& result) {
+  ModelParameters parameters;
+  if (!result.groups) return parameters;
+  parameters.eps = result.groups->eps;
+  const double ea = result.scene.problem.cable.axial_stiffness_n;
+  parameters.strain = std::isfinite(ea) && ea > 0.0 ? result.groups->t0_n / ea : 0.0;
+  return parameters;
+}
+
+CheckBuilder::CheckBuilder(const SceneResult& result, const ToleranceTable& tolerances,
+                           const FindingsTable& findings, const std::vector<SolverEntry>& solvers)
+    : result_(result), tolerances_(tolerances), findings_(findings), solvers_(solvers),
+      parameters_(model_parameters(result)) {}
+
+std::optional<CheckBuilder::Tolerance> CheckBuilder::tolerance(const std::string& check, const std::string& a,
+                                                               const std::string& b,
+                                                               std::optional<double> scene_override) const {
+  if (scene_override) return Tolerance{*scene_override, "scene [checks] override"};
+  const ToleranceRule* rule = tolerances_.find(check, a, b, result_.scene.name, result_.scene.tags);
+  if (!rule) return std::nullopt;
+  return Tolerance{rule->tolerance(parameters_), rule->reason, rule->warn_only};
+}
+
+const SolverEntry* CheckBuilder::entry(const std::string& name) const {
+  for (const auto& e : solvers_) {
+    if (e.name == name) return &e;
+  }
+  return nullptr;
+}
+
+std::optional<std::string> CheckBuilder::shared(const std::string& a, const std::string& b,
+                                                const std::string& quantity) const {
+  const SolverEntry* x = entry(a);
+  const SolverEntry* y = entry(b);
+  return x && y ? shared_computation(*x, *y, quantity) : std::nullopt;
+}
+
+bool CheckBuilder::independent(const std::string& a, const std::string& b, const std::string& quantity,
+                               const std::string& check, const std::string& plane) {
+  const auto id = shared(a, b, quantity);
+  if (!id) return true;
+  CheckResult skip = base(check, a + " vs " + b, plane, 0);
+  skip.verdict = Verdict::Skipped;
+  skip.detail = fmt::format("{}{} (both solvers compute {} by it: one witness, not two)", kSharedComputationDetail,
+                            *id, quantity);
+  add(std::move(skip));
+  return false;
+}
+
+CheckResult CheckBuilder::base(const std::string& check, const std::string& compare, const std::string& plane,
+                               int mode) const {
+  CheckResult c;
+  c.scene = result_.scene.name;
+  c.check = check;
+  c.compare = compare;
+  c.plane = plane;
+  c.mode = mode;
+  c.value_a = c.value_b = std::nan("");
+  return c;
+}
+
+void CheckBuilder::add(CheckResult check) { checks_.push_back(std::move(check)); }
+
+void CheckBuilder::add_measured(CheckResult check, double measured, const Tolerance& tol, bool relative) {
+  check.measured = measured;
+  check.tolerance = tol.value;
+  if (!std::isfinite(measured)) {
+    check.verdict = Verdict::Fail;
+    check.detail = "non-finite value; " + check.detail;
+  } else if (relative && measured > kGrossRelative && !tol.warn_only) {
+    check.verdict = Verdict::Fail;
+    check.detail = "gross disagreement; " + check.detail;
+  } else if (measured <= tol.value) {
+    check.verdict = Verdict::Pass;
+  } else {
+    // A rule marked beyond = "warn" describes a model's documented limit, not a defect.
+    check.verdict = tol.warn_only ? Verdict::Warn : Verdict::Fail;
+  }
+  if (!check.detail.empty()) check.detail += "; ";
+  check.detail += "tolerance: " + tol.reason;
+  add(std::move(check));
+}
+
+}  // namespace catena::internal

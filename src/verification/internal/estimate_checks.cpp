@@ -1,0 +1,144 @@
+#include "verification/internal/estimate_checks.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <functional>
+#include <optional>
+
+namespace catena::internal {
+namespace {
+
+// A value a solver returned with its own relative error estimate.
+struct Claim {
+  double value = 0.0;
+  double estimate = 0.0;
+};
+
+// Where a claim sits: the quantity (for the independence rule), the plane and the mode.
+struct Place {
+  std::string quantity;
+  std::string plane;
+  int mode = 0;
+};
+
+using ClaimOf = std::function<std::optional<Claim>(const SolverOutput&, bool as_reference)>;
+
+// The accuracy the scene asked of the solver: its accuracy knob when the scene sets it, else the
+// table's default.
+double requested_accuracy(const SceneResult& result, const SolverAccuracy& accuracy) {
+  const auto solver = result.scene.solvers.find(accuracy.name);
+  if (!accuracy.accuracy_knob.empty() && solver != result.scene.solvers.end()) {
+    const auto knob = solver->second.find(accuracy.accuracy_knob);
+    if (knob != solver->second.end() && std::holds_alternative<double>(knob->second)) {
+      return std::get<double>(knob->second);
+    }
+  }
+  return accuracy.accuracy;
+}
+
+std::optional<Claim> usable_claim(double value, double estimate) {
+  if (!(estimate >= 0.0) || !std::isfinite(estimate)) return std::nullopt;
+  return Claim{value, estimate};
+}
+
+// The reference for `claimant`'s value at `place`: among the other solvers declared exact in the
+// table, Converged, not sharing the computation, with a finite value and an estimate, the one whose
+// estimate is smallest (the first on a tie).
+const SolverOutput* reference_for(const SolverOutput& claimant, const std::vector<const SolverOutput*>& usable,
+                                  const Place& place, const ClaimOf& claim_of, const CheckBuilder& builder,
+                                  Claim& reference_claim) {
+  const SolverOutput* best = nullptr;
+  for (const SolverOutput* other : usable) {
+    if (other == &claimant || other->summary.termination != Termination::Converged) continue;
+    const SolverAccuracy* accuracy = builder.tolerances().solver(other->solver);
+    if (!accuracy || !accuracy->exact || builder.shared(claimant.solver, other->solver, place.quantity)) continue;
+    const auto claim = claim_of(*other, true);
+    if (!claim || !std::isfinite(claim->value)) continue;
+    if (!best || claim->estimate < reference_claim.estimate) {
+      best = other;
+      reference_claim = *claim;
+    }
+  }
+  return best;
+}
+
+// (a) actual > estimate + the reference's estimate: FAIL; (b) estimate > 1000 x the resolvable
+// error (the actual error, but not below what the reference can resolve) and above the requested
+// accuracy: WARN; PASS otherwise.
+void judge(CheckResult& check, const Claim& claim, const Claim& reference, double requested) {
+  const double actual = relative_difference(claim.value, reference.value);
+  const double resolvable = std::max(actual, reference.estimate);
+  check.value_a = claim.value;
+  check.value_b = reference.value;
+  check.measured = actual;
+  check.tolerance = claim.estimate + reference.estimate;
+  if (!std::isfinite(claim.value) || !(actual <= check.tolerance)) {
+    check.verdict = Verdict::Fail;
+    check.detail = "estimate not an upper bound; " + check.detail;
+    if (reference.estimate > claim.estimate) check.detail += " (the reference's estimate is the larger: the miss may be the reference's)";
+  } else if (claim.estimate > kUninformativeRatio * resolvable && claim.estimate > requested) {
+    check.verdict = Verdict::Warn;
+    check.detail = fmt::format("estimate uninformative: {:.1e} x the resolvable error, above the requested accuracy "
+                               "{:.1e}; {}", claim.estimate / resolvable, requested, check.detail);
+  } else {
+    check.verdict = Verdict::Pass;
+  }
+}
+
+void check_claim(const SolverOutput& claimant, const std::vector<const SolverOutput*>& usable, const Place& place,
+                 const ClaimOf& claim_of, CheckBuilder& builder) {
+  const SolverAccuracy* accuracy = builder.tolerances().solver(claimant.solver);
+  const auto claim = claim_of(claimant, false);
+  if (!accuracy || !claim) return;
+  Claim reference;
+  const SolverOutput* ref = reference_for(claimant, usable, place, claim_of, builder, reference);
+  if (!ref) return;
+  CheckResult check = builder.base("estimate", claimant.solver + " vs " + ref->solver, place.plane, place.mode);
+  check.detail = fmt::format("{} {:.12g} with estimate {:.2e} against the reference {} {:.12g} (estimate {:.2e}): "
+                             "actual relative error {:.2e}",
+                             claimant.solver, claim->value, claim->estimate, ref->solver, reference.value,
+                             reference.estimate, relative_difference(claim->value, reference.value));
+  judge(check, *claim, reference, requested_accuracy(builder.result(), *accuracy));
+  builder.add(std::move(check));
+}
+
+// The frequency of mode `index` in `plane`; a reference's plane must itself have converged.
+ClaimOf frequency_claim(Plane plane, int index) {
+  return [plane, index](const SolverOutput& output, bool as_reference) -> std::optional<Claim> {
+    const auto& modal = plane == Plane::InPlane ? output.inplane : output.outofplane;
+    if (!modal || (as_reference && modal->summary.termination != Termination::Converged)) return std::nullopt;
+    for (const Mode& mode : modal->modes) {
+      if (mode.index == index) return usable_claim(mode.omega_rad_s, mode.relative_error_estimate);
+    }
+    return std::nullopt;
+  };
+}
+
+// max |tau| of forcing frequency `i`, when the solver gave a finite response.
+ClaimOf forced_claim(std::size_t i) {
+  return [i](const SolverOutput& output, bool) -> std::optional<Claim> {
+    if (i >= output.forced.size() || !output.forced[i].diagnostic.empty()) return std::nullopt;
+    return usable_claim(output.forced[i].max_abs_tension_n, output.forced[i].relative_error_estimate);
+  };
+}
+
+}  // namespace
+
+void estimate_checks(const std::vector<const SolverOutput*>& usable, CheckBuilder& builder) {
+  for (const SolverOutput* output : usable) {
+    for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
+      const auto& modal = plane == Plane::InPlane ? output->inplane : output->outofplane;
+      if (!modal) continue;
+      const std::string quantity = plane == Plane::InPlane ? "frequency-in-plane" : "frequency-out-of-plane";
+      for (const Mode& mode : modal->modes) {
+        check_claim(*output, usable, {quantity, plane_name(plane), mode.index}, frequency_claim(plane, mode.index),
+                    builder);
+      }
+    }
+    for (std::size_t i = 0; i < output->forced.size(); ++i) {
+      check_claim(*output, usable, {"forced", "forced", static_cast<int>(i + 1)}, forced_claim(i), builder);
+    }
+  }
+}
+
+}  // namespace catena::internal
