@@ -9,23 +9,23 @@ namespace {
 using Computations = std::map<std::string, std::string>;
 
 // One id per code path, per quantity the harness compares (docs/verdicts.md, "Independence").
-// Written side by side so that a shared path is visible at a glance: asymptotic and airy both
-// take their out-of-plane modes from internal::wkb_outofplane_modes (taut_cable_theory.hpp).
-Computations own_paths(const std::string& solver) {
-  return {{"frequency-in-plane", solver + "-in-plane"}, {"frequency-out-of-plane", solver + "-out-of-plane"},
-          {"shape-in-plane", solver + "-in-plane"},     {"shape-out-of-plane", solver + "-out-of-plane"},
-          {"tension", solver + "-in-plane"},            {"forced", solver + "-forced"}};
-}
-
+// Written side by side so that a shared path would be visible at a glance. Today no two solvers
+// share one: asymptotic's out-of-plane modes are its WKB string (asymptotic_wkb_string.hpp), airy's
+// its own Bessel-function string of linear tension (airy_tension_string.hpp).
 Computations declared_computations(const std::string& solver) {
-  Computations paths = own_paths(solver);
-  if (solver == "asymptotic" || solver == "airy") {
-    // WKB string frequencies and shapes. airy's still come from the shared WKB code; its own
-    // Bessel-function solution replaces them (then its id becomes "airy-bessel-out-of-plane").
-    paths["frequency-out-of-plane"] = "wkb-out-of-plane";
-    paths["shape-out-of-plane"] = "wkb-out-of-plane";
-    paths.erase("forced");  // neither computes a forced response
+  Computations paths = {{"frequency-in-plane", solver + "-in-plane"},
+                        {"frequency-out-of-plane", solver + "-out-of-plane"},
+                        {"shape-in-plane", solver + "-in-plane"},
+                        {"shape-out-of-plane", solver + "-out-of-plane"},
+                        {"tension", solver + "-in-plane"},
+                        {"forced", solver + "-forced"}};
+  if (solver == "asymptotic") {
+    paths["frequency-out-of-plane"] = paths["shape-out-of-plane"] = "asymptotic-wkb-string";
   }
+  if (solver == "airy") {
+    paths["frequency-out-of-plane"] = paths["shape-out-of-plane"] = "airy-bessel-string";
+  }
+  if (solver == "asymptotic" || solver == "airy") paths.erase("forced");  // no forced response
   return paths;
 }
 
