@@ -26,11 +26,14 @@ def scene_files(count):
 
 
 def wall_time(files, threads):
-    start = time.perf_counter()
+    """Wall time of solving `files` on `threads` threads, and the process's CPU time over it: a
+    ratio above 1 shows the threads running at once (the GIL released); on a machine whose other
+    load leaves this process one core, the wall time cannot improve whatever the ratio could be."""
+    start, cpu = time.perf_counter(), time.process_time()
     with ThreadPoolExecutor(max_workers=threads) as pool:
         results = list(pool.map(catena.solve, files))
     assert len(results) == len(files)
-    return time.perf_counter() - start
+    return time.perf_counter() - start, time.process_time() - cpu
 
 
 def main():
@@ -40,14 +43,18 @@ def main():
     arguments = parser.parse_args()
     files = scene_files(arguments.scenes)
     wall_time(files[:10], 1)  # warm up
-    one, two = [], []
+    runs = {1: [], 2: []}
     for _ in range(arguments.repeats):
-        one.append(wall_time(files, 1))
-        two.append(wall_time(files, 2))
-    print(f"{len(files)} scenes, {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f}")
-    print(f"1 thread:  {', '.join(f'{t:.2f}' for t in one)} s (median {statistics.median(one):.2f} s)")
-    print(f"2 threads: {', '.join(f'{t:.2f}' for t in two)} s (median {statistics.median(two):.2f} s)")
-    print(f"speed-up (medians): {statistics.median(one) / statistics.median(two):.2f}x")
+        for threads in runs:
+            runs[threads].append(wall_time(files, threads))
+    print(f"{len(files)} scenes, {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f} before the last run")
+    for threads, times in runs.items():
+        walls = [wall for wall, _ in times]
+        print(f"{threads} thread(s): wall {', '.join(f'{t:.2f}' for t in walls)} s (median "
+              f"{statistics.median(walls):.2f} s); CPU/wall {', '.join(f'{c / w:.2f}' for w, c in times)}")
+    one = statistics.median(w for w, _ in runs[1])
+    two = statistics.median(w for w, _ in runs[2])
+    print(f"speed-up of 2 threads over 1 (medians): {one / two:.2f}x")
 
 
 if __name__ == "__main__":
