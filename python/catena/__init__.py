@@ -1,0 +1,150 @@
+"""Catena: linear dynamics of cables by five independent solvers, from Python.
+
+The library itself (not a wrapper around the command line): scenes from TOML files or dicts,
+statics, each solver on its own with its knobs, results as numpy arrays. Units are SI and carried
+in every name. Documentation: docs/python.md.
+
+    >>> import catena
+    >>> r = catena.solve("verification/scenes/physical/mooring-line-900m.toml")
+    >>> r.statics.horizontal_force_n
+    >>> r["shooting"].inplane.omega_rad_s          # numpy array, lowest first
+
+Errors: bad input raises catena.InvalidInput (a ValueError) naming the field; an unreadable or
+malformed scene raises catena.ParseError (a subclass of InvalidInput). Numerical trouble is never
+an exception: it is a status in each result's summary. Solves release the GIL.
+"""
+
+import json
+import os
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from ._catena import (Cable, Check, ForcedRequest, ForcedResponse, Groups, InvalidInput, Mode, Modes,
+                      ModeShapes, ParseError, Problem, Request, Result, Scene, SolverResult, Statics,
+                      Summary, __version__, dimensionless_groups, run_solver, solve_statics)
+from . import _catena
+from ._scene_dict import scene_toml_text
+
+__all__ = [
+    "Cable", "Check", "ForcedRequest", "ForcedResponse", "Groups", "InvalidInput", "Knob", "Mode",
+    "Modes", "ModeShapes", "ParseError", "Problem", "Request", "Result", "Scene", "SolverInfo",
+    "SolverResult", "Statics", "Summary", "dimensionless_groups", "load_scene", "load_scenes",
+    "run_solver", "solve", "solve_statics", "solve_sweep", "solvers",
+]
+
+
+def load_scenes(scene):
+    """The scenes of a TOML file (path) or of a dict with the file's structure: one, or one per
+    value of a [sweep]. A dict goes through the same reader as a file (docs/python.md)."""
+    if isinstance(scene, Scene):
+        return [scene]
+    if isinstance(scene, Mapping):
+        return _catena._parse_scene_text(scene_toml_text(scene), "<dict>")
+    if isinstance(scene, (str, os.PathLike)):
+        if not os.path.exists(scene):
+            raise FileNotFoundError(2, "scene file not found", os.fspath(scene))
+        return _catena._read_scene_file(os.fspath(scene))
+    raise TypeError(f"scene: expected a path, a dict or a catena.Scene, got {type(scene).__name__}")
+
+
+def load_scene(scene):
+    """One scene (path, dict or Scene); a sweep raises InvalidInput (use load_scenes)."""
+    scenes = load_scenes(scene)
+    if len(scenes) != 1:
+        raise InvalidInput(f"{scenes[0].file}: [sweep] gives {len(scenes)} scenes: use catena.load_scenes "
+                           "or catena.solve_sweep")
+    return scenes[0]
+
+
+def _solver_list(solvers):
+    if solvers is None:
+        return []
+    if isinstance(solvers, str):
+        return [solvers]
+    return list(solvers)
+
+
+def solve(scene, *, solvers=None, time_limit_s=None, checks=True):
+    """Solves one scene as `catena solve` does: the statics once, then every applicable solver the
+    scene names (all by default), then the cross-checks. Returns a Result.
+
+    scene: path of a TOML scene file, a dict with the same structure (docs/scene-format.md), or a
+        Scene. A [sweep] raises InvalidInput (use solve_sweep).
+    solvers: run only these solver names (default: the scene's [solvers], else all).
+    time_limit_s: cooperative wall-clock budget of the scene [s]; solvers stop with what they have.
+    checks: compute the cross-checks (result.checks) with the built-in tolerances.
+    """
+    return _catena._run_scene(load_scene(scene), _solver_list(solvers), time_limit_s, checks)
+
+
+def solve_sweep(scene, *, solvers=None, time_limit_s=None, checks=True):
+    """Solves every scene of a file or dict (each value of a [sweep]); a list of Result."""
+    names = _solver_list(solvers)
+    return [_catena._run_scene(s, names, time_limit_s, checks) for s in load_scenes(scene)]
+
+
+@dataclass(frozen=True)
+class Knob:
+    """One knob of a solver (catena::KnobSpec)."""
+    name: str
+    description: str
+    #: "integer", "real", "flag" or "choice"
+    type: str
+    #: the default as a Python value (int, float, bool or str)
+    default: object
+    #: the default as a scene writes it
+    default_text: str
+    #: the valid values in words, e.g. "[2, 5e+07]", "(0, 0.01]", '"adams" or "bdf"'
+    valid: str
+
+
+@dataclass(frozen=True)
+class SolverInfo:
+    """A solver of the registry: name, method and knobs."""
+    name: str
+    description: str
+    knobs: tuple
+
+    def defaults(self):
+        """{knob: default} as a Python dict."""
+        return {knob.name: knob.default for knob in self.knobs}
+
+
+def _default_value(kind, text):
+    if kind == "flag":
+        return text == "true"
+    if kind == "integer":
+        return int(float(text)) if any(c in text for c in ".eE") else int(text)
+    if kind == "real":
+        return float(text)
+    return json.loads(text) if text.startswith('"') else text
+
+
+def solvers():
+    """Every solver, in registry order (fe, shooting, frobenius, asymptotic, airy), with its knobs:
+    a list of SolverInfo. The same tables as `catena solvers` and docs/solver-knobs.md."""
+    return [
+        SolverInfo(name, description,
+                   tuple(Knob(k, d, kind, _default_value(kind, text), text, valid)
+                         for k, d, kind, text, valid in knobs))
+        for name, description, knobs in _catena._registry()
+    ]
+
+
+def _solver_function(info):
+    def solve_with(problem, request=None, *, statics=None, time_limit_s=None, **knobs):
+        return run_solver(info.name, problem, request, knobs, statics=statics, time_limit_s=time_limit_s)
+
+    knob_lines = "\n".join(f"    {k.name} ({k.type}, {k.valid or 'true, false'}; default {k.default_text}): "
+                           f"{k.description}" for k in info.knobs)
+    solve_with.__name__ = solve_with.__qualname__ = f"solve_{info.name}"
+    solve_with.__doc__ = (
+        f"Runs the {info.name} solver: {info.description}.\n\n"
+        f"Same as catena.run_solver(\"{info.name}\", problem, request, knobs). Knobs:\n{knob_lines}\n")
+    return solve_with
+
+
+for _info in solvers():
+    globals()[f"solve_{_info.name}"] = _solver_function(_info)
+    __all__.append(f"solve_{_info.name}")
+del _info

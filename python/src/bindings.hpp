@@ -1,0 +1,33 @@
+#pragma once
+// The pieces of the extension module catena._catena (docs/python.md), one file per concept, and
+// the conversions they share. Nothing here is called while the GIL is released: every function
+// that solves copies its Python arguments into C++ values first, releases the GIL for the C++ work
+// only, and converts the C++ result back after re-acquiring it.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <vector>
+
+#include "catena/core/types.hpp"
+
+namespace catena::python {
+
+namespace py = pybind11;
+
+void bind_errors(py::module_& module);
+void bind_model(py::module_& module);
+void bind_statics(py::module_& module);
+void bind_results(py::module_& module);
+void bind_solvers(py::module_& module);
+void bind_scene(py::module_& module);
+
+/// Marks `array` read-only: result arrays are copies, and writing into one would change nothing.
+py::array read_only(py::array array);
+/// A new read-only array owning a copy of `values`.
+py::array_t<double> owned_array(const Vector& values);
+/// A new read-only array owning a copy of `values`.
+py::array_t<double> owned_array(const std::vector<double>& values);
+
+}  // namespace catena::python
