@@ -85,8 +85,7 @@ class CheckBuilder {
       // A rule marked beyond = "warn" describes a model's documented limit, not a defect.
       check.verdict = tol.warn_only ? Verdict::Warn : Verdict::Fail;
     }
-    if (!check.detail.empty()) check.detail += "; ";
-    check.detail += "tolerance: " + tol.reason;
+    check.tolerance_reason = tol.reason;
     add(std::move(check));
   }
 

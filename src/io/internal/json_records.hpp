@@ -1,0 +1,14 @@
+#pragma once
+// The results JSON's text layout: objects one key per line, but each element of an array of
+// records (a check, a mode, a forced response) and each array of numbers on ONE line. About a
+// third the size of a fully indented dump, and a diff still shows which check or mode changed.
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace catena::internal {
+
+/// `value` in the layout above, `indent` spaces per level.
+std::string dump_records(const nlohmann::json& value, int indent);
+
+}  // namespace catena::internal
