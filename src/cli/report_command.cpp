@@ -47,8 +47,9 @@ void add_report_command(CLI::App& app, std::function<int()>& run) {
       options.python = arguments->python;
       options.figures = !arguments->no_figures;
       const ReportFiles files = write_report(arguments->from, options);
-      fmt::print("wrote {} and {} ({} figures{}); data in {}\n", files.markdown.string(), files.html.string(),
-                 files.figures, files.figures_note.empty() ? "" : "; " + files.figures_note, files.data_dir.string());
+      fmt::print("wrote {} and {} ({} figures{}; {} source-discrepancy rows); data in {}\n", files.markdown.string(),
+                 files.html.string(), files.figures, files.figures_note.empty() ? "" : "; " + files.figures_note,
+                 files.discrepancy_rows, files.data_dir.string());
       return 0;
     };
   });

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <map>
+#include <optional>
 #include <fmt/format.h>
 #include <string>
 #include <thread>
@@ -14,6 +16,7 @@
 #include "catena/io/file_access.hpp"
 #include "catena/io/json_writer.hpp"
 #include "catena/io/scene_reader.hpp"
+#include "catena/verification/mutation.hpp"
 #include "catena/verification/scene_runner.hpp"
 #include "catena/verification/independence.hpp"
 #include "catena/verification/suite.hpp"
@@ -28,6 +31,7 @@ struct VerifyArguments {
   std::string filter;
   int jobs = 0;
   bool quiet = false;
+  bool mutation = false;
   std::string perturb;
   double time_limit_s = 0.0;
   const CLI::Option* time_limit = nullptr;
@@ -153,11 +157,41 @@ void print_table(const std::vector<SceneResult>& results, bool quiet) {
   for (const auto& result : results) {
     for (const auto& check : result.checks) {
       if (check.verdict != Verdict::Fail) continue;
-      fmt::print("FAIL {} / {} / {}{}: measured {:.3e} > tolerance {:.3e}: {}\n", result.scene.name,
+      fmt::print("FAIL {} / {} / {}{}: measured {:.3e} > tolerance {:.3e}: {}{}\n", result.scene.name,
                  check.check, check.compare, check.mode ? fmt::format(" mode {}", check.mode) : "",
-                 check.measured, check.tolerance, check.detail);
+                 check.measured, check.tolerance, check.detail,
+                 check.tolerance_reason.empty() ? "" : "; tolerance: " + check.tolerance_reason);
     }
   }
+}
+
+// The mutation score, by solver (all families and quantities), then the exact solvers' target.
+void print_mutation(const MutationRun& run) {
+  std::map<std::string, MutationTally> by_solver;
+  for (const auto& [what, tally] : run.tallies()) {
+    MutationTally& total = by_solver[std::get<0>(what)];
+    total.made += tally.made;
+    total.caught += tally.caught;
+  }
+  fmt::print("mutation score (docs/mutation.md):\n");
+  for (const auto& [solver, tally] : by_solver) {
+    fmt::print("  {:<11} {:>6} made, {:>6} caught, {:>6} uncaught ({:.1f}%)\n", solver, tally.made, tally.caught,
+               tally.made - tally.caught, tally.made ? 100.0 * tally.caught / tally.made : 100.0);
+  }
+  const MutationTally exact = run.exact_with_witness();
+  fmt::print("  exact solvers where another exact solver ran: {} of {} caught, {} uncaught; {:.1f} s on {} threads\n",
+             exact.caught, exact.made, exact.made - exact.caught, run.wall_time_s, run.threads);
+}
+
+// The mutation run over the solved results (nothing is re-solved), with its progress.
+std::optional<MutationRun> mutation_run(const VerifyArguments& arguments, const std::vector<SceneResult>& results,
+                                        const SceneRunOptions& options, int jobs, bool progress) {
+  if (!arguments.mutation) return std::nullopt;
+  MutationRun run = run_mutations(results, jobs, options, [&](std::size_t done, std::size_t total, const std::string& name) {
+    if (progress) fmt::print(stderr, "\r\033[K[mutation {}/{}] {}", done, total, name);
+  });
+  if (progress) fmt::print(stderr, "\r\033[K");
+  return run;
 }
 
 int run_verify(const VerifyArguments& arguments) {
@@ -186,6 +220,7 @@ int run_verify(const VerifyArguments& arguments) {
     throw InvalidInput(fmt::format("--perturb {}: no scene gave solver {} that mode, so nothing was perturbed "
                                    "and the run could not fail", arguments.perturb, run_options.perturbation->solver));
   }
+  const std::optional<MutationRun> mutation = mutation_run(arguments, results, run_options, jobs, progress);
   for (auto& result : files.unreadable) results.push_back(std::move(result));
 
   int failed_checks = 0, total_checks = 0, errors = 0, discrepancies = 0;
@@ -198,7 +233,8 @@ int run_verify(const VerifyArguments& arguments) {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   print_table(results, arguments.quiet);
-  write_results_json(report, results);
+  write_results_json(report, results, mutation ? &*mutation : nullptr);
+  if (mutation) print_mutation(*mutation);
   fmt::print("{} scenes, {} checks, {} failed, {} source discrepancies, {} scene errors; {:.1f} s on {} "
              "threads; wrote {}\n",
              results.size(), total_checks, failed_checks, discrepancies, errors, elapsed, jobs,
@@ -230,6 +266,11 @@ void add_verify_command(CLI::App& app, std::function<int()>& run) {
   command->add_option("--filter", arguments->filter, "Only scenes whose name or file contains this text");
   command->add_option("--jobs,-j", arguments->jobs, "Worker threads (default: all cores)");
   command->add_flag("--quiet,-q", arguments->quiet, "Print only failures and the closing line");
+  command->add_flag("--mutation", arguments->mutation,
+                    "Also measure the mutation score: make one result at a time wrong (a frequency by\n"
+                    "10x the solver's accuracy target, a shape by a mode mix, a forced tension by 1e-4),\n"
+                    "re-run that scene's checks and count the mutations a check catches; printed and\n"
+                    "written to report.json (docs/mutation.md). Does not change the exit code");
   command->add_option("--perturb", arguments->perturb,
                       "Testing the harness: multiply one frequency of one solver by (1 + RELATIVE),\n"
                       "as SOLVER:inplane|outofplane:MODE:RELATIVE; the run must then fail. Exit 2\n"

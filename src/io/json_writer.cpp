@@ -2,11 +2,13 @@
 
 #include <cmath>
 #include <fmt/format.h>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "catena/core/error.hpp"
 #include "catena/core/version.hpp"
 #include "catena/io/file_access.hpp"
+#include "io/internal/json_records.hpp"
 #include "io/internal/results_keys.hpp"
 
 namespace catena {
@@ -33,8 +35,7 @@ json summary_json(const SolverSummary& summary) {
           {key::max_residual, number(summary.max_residual)},
           {key::wall_time_s, number(summary.wall_time_s)},
           {key::warnings, summary.warnings},
-          {key::notes, summary.notes},
-          {key::brief, summary.brief_report()}};
+          {key::notes, summary.notes}};
 }
 
 json mode_json(const Mode& mode) {
@@ -65,13 +66,16 @@ json modal_json(const ModalResult& result) {
           {key::modes, modes}};
 }
 
-json forced_json(const ForcedResponse& response) {
+// The response along the cable (s, u, w, v, tension) is written only when the request asks for
+// shapes: the suite's 301-frequency curves would otherwise make up most of report.json.
+json forced_json(const ForcedResponse& response, bool along_cable) {
   json out = {{key::omega_rad_s, number(response.omega_rad_s)},
               {key::max_abs_tension_n, number(response.max_abs_tension_n)},
               {key::relative_error_estimate, number(response.relative_error_estimate)},
               {key::diagnostic, response.diagnostic},
               {key::at_resonance, response.at_resonance},
               {key::near_resonance, response.near_resonance}};
+  if (!along_cable) return out;
   if (response.s_m.size()) out[key::s_m] = vector_json(response.s_m);
   if (response.u.size()) out[key::u_m] = vector_json(response.u);
   if (response.w.size()) out[key::w_m] = vector_json(response.w);
@@ -80,13 +84,13 @@ json forced_json(const ForcedResponse& response) {
   return out;
 }
 
-json output_json(const SolverOutput& output) {
+json output_json(const SolverOutput& output, bool along_cable) {
   json out = {{key::summary, summary_json(output.summary)}};
   if (output.inplane) out[key::inplane] = modal_json(*output.inplane);
   if (output.outofplane) out[key::outofplane] = modal_json(*output.outofplane);
   if (!output.forced.empty()) {
     json forced = json::array();
-    for (const auto& response : output.forced) forced.push_back(forced_json(response));
+    for (const auto& response : output.forced) forced.push_back(forced_json(response, along_cable));
     out[key::forced] = forced;
   }
   return out;
@@ -124,7 +128,7 @@ json request_json(const SolveRequest& request) {
   return out;
 }
 
-json statics_json(const StaticSolution& statics, int points) {
+json statics_profile_json(const StaticSolution& statics, int points) {
   const double L = statics.cable().length_m;
   json s = json::array(), x = json::array(), z = json::array(), t = json::array();
   for (int i = 0; i < points; ++i) {
@@ -135,7 +139,13 @@ json statics_json(const StaticSolution& statics, int points) {
     z.push_back(r.y());
     t.push_back(statics.tension_n(si));
   }
-  return {{key::horizontal_force_n, statics.horizontal_force_n()},
+  return {{key::s_m, s}, {key::x_m, x}, {key::z_m, z}, {key::tension_n, t}};
+}
+
+// The static profile on the request's stations only when shapes are asked (like the forced curves).
+json statics_json(const StaticSolution& statics, const SolveRequest& request) {
+  const double L = statics.cable().length_m;
+  json out = {{key::horizontal_force_n, statics.horizontal_force_n()},
           {key::vertical_force_a_n, statics.vertical_force_a_n()},
           {key::vertical_force_b_n, statics.vertical_force_n(L)},
           {key::tension_a_n, statics.tension_n(0.0)},
@@ -144,8 +154,9 @@ json statics_json(const StaticSolution& statics, int points) {
           {key::angle_b_deg, statics.angle_rad(L) * 180.0 / kPi},
           {key::stretched_length_m, statics.stretched_length_m(L)},
           {key::newton_iterations, statics.iterations},
-          {key::closure_error_m, statics.closure_error_m},
-          {key::shape, {{key::s_m, s}, {key::x_m, x}, {key::z_m, z}, {key::tension_n, t}}}};
+          {key::closure_error_m, statics.closure_error_m}};
+  if (request.shapes) out[key::shape] = statics_profile_json(statics, request.points);
+  return out;
 }
 
 json groups_json(const DimensionlessGroups& g) {
@@ -169,15 +180,31 @@ json groups_json(const DimensionlessGroups& g) {
   return out;
 }
 
-json check_json(const CheckResult& check) {
+// Each distinct tolerance reason once, in order of first use; a check refers to it by position.
+class ReasonList {
+ public:
+  json index_of(const std::string& reason) {
+    if (reason.empty()) return nullptr;
+    const auto [at, added] = index_.try_emplace(reason, static_cast<int>(reasons_.size()));
+    if (added) reasons_.push_back(reason);
+    return at->second;
+  }
+  json list() const { return reasons_; }
+
+ private:
+  std::map<std::string, int> index_;
+  std::vector<std::string> reasons_;
+};
+
+json check_json(const CheckResult& check, ReasonList& reasons) {
   return {{key::check, check.check},   {key::compare, check.compare},   {key::plane, check.plane},
           {key::mode, check.mode},     {key::value_a, number(check.value_a)},
           {key::value_b, number(check.value_b)}, {key::measured, number(check.measured)},
           {key::tolerance, number(check.tolerance)}, {key::verdict, to_string(check.verdict)},
-          {key::detail, check.detail}};
+          {key::detail, check.detail}, {key::tolerance_reason, reasons.index_of(check.tolerance_reason)}};
 }
 
-json scene_json(const SceneResult& result) {
+json scene_json(const SceneResult& result, ReasonList& reasons) {
   const Scene& scene = result.scene;
   json out = {{key::name, scene.name},
               {key::file, path_text(scene.file)},
@@ -188,10 +215,10 @@ json scene_json(const SceneResult& result) {
               {key::wall_time_s, result.wall_time_s},
               {key::error, result.error.empty() ? json(nullptr) : json(result.error)}};
   if (scene.sweep_point) out[key::sweep] = {{key::parameter, scene.sweep_point->first}, {key::value, scene.sweep_point->second}};
-  if (result.statics) out[key::statics] = statics_json(*result.statics, result.request.points);
+  if (result.statics) out[key::statics] = statics_json(*result.statics, result.request);
   if (result.groups) out[key::groups] = groups_json(*result.groups);
   json solvers = json::object();
-  for (const auto& output : result.outputs) solvers[output.solver] = output_json(output);
+  for (const auto& output : result.outputs) solvers[output.solver] = output_json(output, result.request.shapes);
   out[key::solvers] = solvers;
   json published = json::array();
   for (const auto& p : scene.published) {
@@ -205,28 +232,68 @@ json scene_json(const SceneResult& result) {
   }
   out[key::published] = published;
   json checks = json::array();
-  for (const auto& check : result.checks) checks.push_back(check_json(check));
+  for (const auto& check : result.checks) checks.push_back(check_json(check, reasons));
   out[key::checks] = checks;
   return out;
 }
 
+json mutation_json(const MutationRun& run) {
+  json tallies = json::array();
+  for (const auto& [what, tally] : run.tallies()) {
+    const auto& [solver, family, quantity] = what;
+    tallies.push_back({{key::solver, solver}, {key::family, family}, {key::quantity, quantity},
+                       {key::made, tally.made}, {key::caught, tally.caught}});
+  }
+  // One record per scene, solver, quantity and plane, listing its uncaught modes and their sizes.
+  json uncaught = json::array();
+  const MutationOutcome* group = nullptr;
+  for (const auto& outcome : run.outcomes) {
+    if (outcome.caught) continue;
+    if (!group || group->scene != outcome.scene || group->solver != outcome.solver ||
+        group->quantity != outcome.quantity || group->plane != outcome.plane ||
+        group->exact_witness != outcome.exact_witness) {
+      group = &outcome;
+      uncaught.push_back({{key::scene, outcome.scene}, {key::family, outcome.family}, {key::solver, outcome.solver},
+                          {key::quantity, to_string(outcome.quantity)}, {key::plane, outcome.plane},
+                          {key::exact_witness, outcome.exact_witness}, {key::modes, json::array()},
+                          {key::sizes, json::array()}});
+    }
+    uncaught.back()[key::modes].push_back(outcome.mode);
+    uncaught.back()[key::sizes].push_back(number(outcome.size));
+  }
+  const MutationTally exact = run.exact_with_witness();
+  return {{key::wall_time_s, run.wall_time_s},
+          {key::threads, run.threads},
+          {key::frequency_factor, kFrequencyMutationFactor},
+          {key::shape_factor, kShapeMutationFactor},
+          {key::forced_tension_relative, kForcedTensionMutation},
+          {key::fe_accuracy_target, kFeAccuracyTarget},
+          {key::exact_with_witness, {{key::made, exact.made}, {key::caught, exact.caught}}},
+          {key::tallies, tallies},
+          {key::uncaught, uncaught}};
+}
+
 }  // namespace
 
-std::string results_to_json(const std::vector<SceneResult>& results, int indent) {
+std::string results_to_json(const std::vector<SceneResult>& results, int indent, const MutationRun* mutation) {
   json scenes = json::array();
-  for (const auto& result : results) scenes.push_back(scene_json(result));
+  ReasonList reasons;
+  for (const auto& result : results) scenes.push_back(scene_json(result, reasons));
   json document = {{key::catena,
                     {{key::version, version()},
                      {key::git, git_hash()},
                      {key::compiler, compiler()},
                      {key::build_type, build_type()},
                      {key::generated_utc, utc_timestamp()}}},
-                   {key::scenes, scenes}};
-  return document.dump(indent);
+                   {key::scenes, scenes},
+                   {key::tolerance_reasons, reasons.list()}};
+  if (mutation) document[key::mutation] = mutation_json(*mutation);
+  return indent < 0 ? document.dump() : internal::dump_records(document, indent);
 }
 
-void write_results_json(const std::filesystem::path& path, const std::vector<SceneResult>& results) {
-  write_file_atomically(path, results_to_json(results) + '\n');
+void write_results_json(const std::filesystem::path& path, const std::vector<SceneResult>& results,
+                        const MutationRun* mutation) {
+  write_file_atomically(path, results_to_json(results, 1, mutation) + '\n');
 }
 
 }  // namespace catena

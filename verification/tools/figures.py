@@ -256,6 +256,49 @@ class Figures:
                       f"forcing frequency, tangential end motion 0.01 a, h/b = {hb}, sag parameter {sag}; "
                       f"Table C-2 as open circles.")
 
+    def model_error(self):
+        """Actual error of asymptotic and airy against the most accurate exact solver that ran (the
+        rule of the report's model-error table, src/io/report/model_error.cpp), against eps."""
+        models, reference_order = ("asymptotic", "airy"), ("frobenius", "shooting", "fe")
+        fig, axes = plt.subplots(2, 2, figsize=(9, 6.5), squeeze=False, sharex=True, sharey=True)
+        drawn = False
+        for row, plane in enumerate((K.inplane, K.outofplane)):
+            for col, model in enumerate(models):
+                ax, points = axes[row][col], []
+                for scene in self.scenes:
+                    reference = next((r for r in reference_order if self.modes(scene, r, plane)), None)
+                    eps = scene.get(K.groups, {}).get(K.eps)
+                    if reference is None or not eps:
+                        continue
+                    exact = {m[K.index]: m[K.omega_rad_s] for m in self.modes(scene, reference, plane)}
+                    for m in self.modes(scene, model, plane):
+                        if m[K.index] in exact and m[K.omega_rad_s] is not None and exact[m[K.index]]:
+                            error = abs(m[K.omega_rad_s] - exact[m[K.index]]) / abs(exact[m[K.index]])
+                            if error > 0:
+                                points.append((eps, error))
+                if points:
+                    drawn = True
+                    _, marker, color = STYLE[model]
+                    ax.plot(*zip(*points), linestyle="none", marker=marker, markersize=3, color=color, alpha=0.6)
+                    guide = [1e-3, 1e-2, 1e-1, 1.0]
+                    ax.plot(guide, [0.1 * e * e for e in guide], color="0.5", linewidth=0.8, label="0.1 eps^2")
+                    ax.legend(fontsize=7)
+                ax.set_xscale("log")
+                ax.set_yscale("log")
+                ax.grid(alpha=0.3)
+                ax.set_title(f"{model}, {PLANES[plane]}", fontsize=9)
+        if not drawn:
+            plt.close(fig)
+            return
+        for ax in axes[-1]:
+            ax.set_xlabel("eps = W0 L / T0")
+        for row in axes:
+            row[0].set_ylabel("relative error of omega")
+        self.save(fig, "model-error.png",
+                  "Measured model error of the analytic solvers: each mode's relative error against the most "
+                  "accurate exact solver that ran (frobenius, else shooting, else fe), against eps, every scene "
+                  "of the run; the grey line is 0.1 eps^2. Fitted orders in the model-error table.")
+
 
 def pareto(figures, csv_path):
     """Time against error per scene from benchmarks/results/time-vs-error.csv (issue 8)."""
@@ -303,7 +346,7 @@ def main():
     pathlib.Path(args.out).mkdir(parents=True, exist_ok=True)
     figures = Figures(results, args.published, args.out)
     for draw in (figures.grinfogel, figures.mode_shapes, figures.dynamic_tension, figures.gale_frequencies,
-                 figures.gale_forced):
+                 figures.gale_forced, figures.model_error):
         draw()
     pareto(figures, args.time_vs_error)
     with open(pathlib.Path(args.out) / "index.json", "w") as f:

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The JSON documents of `catena solve --json` and `catena verify` (report.json): a public,
-/// scriptable interface documented in verification/README.md. Layout:
+/// scriptable interface documented in docs/json-layout.md. Layout:
 ///
 ///     { "catena": {version, git, compiler, build_type, generated_utc},
 ///       "scenes": [ { name, file, description, tags, sweep, problem, request, statics, groups,
@@ -16,15 +16,20 @@
 #include <string>
 #include <vector>
 
+#include "catena/verification/mutation.hpp"
 #include "catena/verification/scene_runner.hpp"
 
 namespace catena {
 
-/// The whole document for `results`, pretty-printed with `indent` spaces (-1: compact).
-std::string results_to_json(const std::vector<SceneResult>& results, int indent = 2);
+/// The whole document for `results` (with the mutation score when `mutation` is given), with
+/// `indent` spaces per level and one line per record (a check, a mode, a forced response); -1:
+/// compact, on one line.
+std::string results_to_json(const std::vector<SceneResult>& results, int indent = 2,
+                            const MutationRun* mutation = nullptr);
 
 /// Writes results_to_json to `path` atomically (write_file_atomically: parent directories created,
 /// never a 0-byte or half file). Throws InvalidInput naming the path when it cannot be written.
-void write_results_json(const std::filesystem::path& path, const std::vector<SceneResult>& results);
+void write_results_json(const std::filesystem::path& path, const std::vector<SceneResult>& results,
+                        const MutationRun* mutation = nullptr);
 
 }  // namespace catena

@@ -34,6 +34,8 @@ struct ReportFiles {
   std::filesystem::path html;
   std::filesystem::path data_dir;
   int figures = 0;
+  /// Rows of the source-discrepancy table (one per published entry judged SOURCE).
+  int discrepancy_rows = 0;
   /// Empty when figures were drawn; otherwise why not.
   std::string figures_note;
 };

@@ -40,8 +40,12 @@ struct CheckResult {
   /// The tolerance it is held to.
   double tolerance = 0.0;
   Verdict verdict = Verdict::Skipped;
-  /// Free text: units, why the tolerance, what went wrong.
+  /// Free text: units, what was compared, what went wrong.
   std::string detail;
+  /// Why this tolerance: the reason of the tolerance rule that set it (or the scene's override);
+  /// empty when the check has no rule. Kept apart from `detail` because thousands of checks share
+  /// a handful of reasons (report.json lists each once, docs/json-layout.md).
+  std::string tolerance_reason;
 };
 
 }  // namespace catena

@@ -57,6 +57,13 @@ const json& list_or_empty(const json& object, const char* name) {
   return object.contains(name) ? object.at(name) : empty;
 }
 
+json mode_value(const json& mode, const std::string& unit) {
+  if (unit == "gale") return mode.value(key::gale_ratio, json(nullptr));
+  if (unit == "kL/pi") return mode.value(key::k_l_over_pi, json(nullptr));
+  if (unit == "Hz") return mode.value(key::frequency_hz, json(nullptr));
+  return mode.value(key::omega_rad_s, json(nullptr));
+}
+
 bool has_tag(const json& scene, const std::string& tag) {
   const auto tags = scene.value(key::tags, std::vector<std::string>{});
   return std::find(tags.begin(), tags.end(), tag) != tags.end();

@@ -19,6 +19,8 @@ using nlohmann::json;
 std::string number_text(const json& value, const char* format = "{:.6g}");
 /// object[key] by reference (json::value() would copy), or an empty array.
 const json& list_or_empty(const json& object, const char* key);
+/// A mode's frequency in `unit` ("gale", "kL/pi", "Hz", else rad/s), null when it has none.
+json mode_value(const json& mode, const std::string& unit);
 /// True when the scene carries `tag`.
 bool has_tag(const json& scene, const std::string& tag);
 

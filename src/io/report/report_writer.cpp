@@ -14,7 +14,8 @@ namespace {
 using internal::json;
 
 json read_results(const std::filesystem::path& results_json) {
-  // The suite's report.json is about 100 MB; a regular file is required (not a FIFO or device).
+  // The suite's report.json is about 10 MB (far more with shapes asked); a regular file is required
+  // (not a FIFO or device).
   constexpr std::uintmax_t kMaxResultsBytes = std::uintmax_t(4) << 30;
   json document = json::parse(read_input_file(results_json, "results JSON", kMaxResultsBytes), nullptr, false);
   if (document.is_discarded() || !document.contains(internal::key::scenes)) {
@@ -60,10 +61,13 @@ ReportFiles write_report(const std::filesystem::path& results_json, const Report
 
   internal::Document report;
   internal::add_summary(report, document);
+  internal::add_headline(report, document);
   internal::add_solvers(report, document);
-  internal::add_discrepancies(report, document);
+  files.discrepancy_rows = internal::add_discrepancies(report, document);
   internal::add_failures(report, document);
   internal::add_stress_outcomes(report, document);
+  internal::add_mutation(report, document);
+  internal::add_model_error(report, document, files.data_dir);
   const std::filesystem::path data = resolve_data_dir(options);
   if (!data.empty()) {
     internal::add_time_to_accuracy(report, internal::read_time_to_accuracy(data / "benchmarks" / "time-vs-error.csv"));

@@ -46,13 +46,6 @@ std::string display_unit(const json& scene) {
   return "rad/s";
 }
 
-json mode_value(const json& mode, const std::string& unit) {
-  if (unit == "gale") return mode.value(key::gale_ratio, json(nullptr));
-  if (unit == "kL/pi") return mode.value(key::k_l_over_pi, json(nullptr));
-  if (unit == "Hz") return mode.value(key::frequency_hz, json(nullptr));
-  return mode.value(key::omega_rad_s, json(nullptr));
-}
-
 std::string scene_info(const json& scene) {
   std::string info = scene.value(key::description, "");
   if (scene.contains(key::groups)) {
@@ -185,24 +178,6 @@ void add_solvers(Document& out, const json& document) {
                       fmt::format("{:.2e}", s.max_estimate)});
   }
   out.push_back(t);
-}
-
-void add_discrepancies(Document& out, const json& document) {
-  out.push_back(Heading{2, "Source discrepancies", "source-discrepancies"});
-  out.push_back(Paragraph{"Published entries we believe wrong: two of our independent solvers agree with each other "
-                          "and not with the printed value, or a reviewed finding (verification/findings.toml) "
-                          "explains the difference."});
-  Table t{{"scene", "compared", "mode", "ours", "printed", "difference", "evidence"}, {}, "discrepancies"};
-  for (const auto& scene : document[key::scenes]) {
-    for (const auto& check : scene[key::checks]) {
-      if (check.value(key::verdict, "") != "SOURCE") continue;
-      t.rows.push_back({scene.value(key::name, ""), check.value(key::compare, ""),
-                        std::to_string(check.value(key::mode, 0)), number_text(check[key::value_a], "{:.6g}"),
-                        number_text(check[key::value_b], "{:.6g}"), number_text(check[key::measured], "{:.3g}"),
-                        check.value(key::detail, "")});
-    }
-  }
-  add_table_or_none(out, std::move(t));
 }
 
 void add_failures(Document& out, const json& document) {

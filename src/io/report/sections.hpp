@@ -10,8 +10,16 @@ namespace catena::internal {
 void add_summary(Document& out, const json& document);
 /// Per solver: scenes run, converged, failed, declined, times, largest error estimate.
 void add_solvers(Document& out, const json& document);
-/// Published entries we believe wrong (SOURCE verdicts).
-void add_discrepancies(Document& out, const json& document);
+/// Counts of each verdict by check kind and by solver pair.
+void add_headline(Document& out, const json& document);
+/// Published entries we believe wrong (a SOURCE verdict), one row per entry; returns the rows.
+int add_discrepancies(Document& out, const json& document);
+/// The mutation score by solver and scene family, and every uncaught mutation (nothing when the
+/// run had no --mutation).
+void add_mutation(Document& out, const json& document);
+/// Actual error of the analytic models against the most accurate exact solver, by eps, with the
+/// fitted order; also written to `data_dir`/model-error.csv.
+void add_model_error(Document& out, const json& document, const std::filesystem::path& data_dir);
 /// Scene errors and FAIL/WARN checks.
 void add_failures(Document& out, const json& document);
 /// Each solver's outcome on each stress scene (nothing when the run has none).

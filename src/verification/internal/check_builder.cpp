@@ -104,8 +104,7 @@ void CheckBuilder::add_measured(CheckResult check, double measured, const Tolera
     // A rule marked beyond = "warn" describes a model's documented limit, not a defect.
     check.verdict = tol.warn_only ? Verdict::Warn : Verdict::Fail;
   }
-  if (!check.detail.empty()) check.detail += "; ";
-  check.detail += "tolerance: " + tol.reason;
+  check.tolerance_reason = tol.reason;
   add(std::move(check));
 }
 

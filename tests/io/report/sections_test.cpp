@@ -69,7 +69,10 @@ TEST(ReportSections, DiscrepanciesListOnlySourceVerdicts) {
   Document out;
   add_discrepancies(out, document);
   ASSERT_EQ(tables(out).size(), 1u);
-  EXPECT_EQ(tables(out)[0].rows, (Rows{{"gale-a", "fe vs Gale 1976", "1", "1.1", "1.2", "0.09", "misprint"}}));
+  // One row per published entry: the printed value, each exact solver's value in the table's unit
+  // (shooting did not run), every solver's verdict on the entry, and the diagnosis.
+  EXPECT_EQ(tables(out)[0].rows, (Rows{{"gale-a", "Gale 1976", "1", "1.1", "1.1", "-", "1.1000001",
+                                        "fe SOURCE, frobenius PASS", "misprint"}}));
   EXPECT_EQ(std::get<Heading>(out[0]).anchor, "source-discrepancies");
 }
 

@@ -1,0 +1,95 @@
+#pragma once
+/// \file
+/// Mutation testing of the verification harness (`catena verify --mutation`, docs/mutation.md):
+/// after a scene is solved, one result at a time is made wrong by a stated amount and the scene's
+/// checks are run again on the mutated results (nothing is re-solved). A mutation is caught when
+/// some check of that scene goes from a non-FAIL verdict to FAIL. The share caught measures how
+/// much a "0 failed" is worth.
+
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "catena/verification/scene_runner.hpp"
+#include "catena/verification/suite.hpp"
+
+namespace catena {
+
+/// A natural frequency is multiplied by (1 + kFrequencyMutationFactor x the solver's accuracy
+/// target for that mode, frequency_accuracy_target()).
+inline constexpr double kFrequencyMutationFactor = 10.0;
+/// A mode shape phi_n is mixed with a neighbour, phi_n + delta phi_{n+1} renormalised, with delta
+/// chosen so that 1 - MAC(phi_n, mixed) is kShapeMutationFactor x the widest MAC tolerance the
+/// solver is held to in that scene.
+inline constexpr double kShapeMutationFactor = 10.0;
+/// A forced response's max |tension| (and its tension curve) is multiplied by (1 + this).
+inline constexpr double kForcedTensionMutation = 1e-4;
+/// fe has no accuracy knob: its target is the documented accuracy of its default mesh with
+/// Richardson (docs/mutation.md, "Accuracy targets").
+inline constexpr double kFeAccuracyTarget = 1e-7;
+
+/// What a mutation changed.
+enum class MutatedQuantity { Frequency, Shape, ForcedTension };
+/// "frequency", "shape", "forced-tension".
+std::string to_string(MutatedQuantity quantity);
+
+/// One mutation and whether the checks caught it.
+struct MutationOutcome {
+  std::string scene;
+  /// The folder of the scene file (gale, grinfogel, studies, ...): the scene family.
+  std::string family;
+  std::string solver;
+  MutatedQuantity quantity = MutatedQuantity::Frequency;
+  /// "in-plane", "out-of-plane" or "forced".
+  std::string plane;
+  /// 1-based mode, or 1-based forcing index.
+  int mode = 0;
+  /// The size of the mutation: relative change of omega, 1 - MAC against the unmutated shape, or
+  /// relative change of the tension.
+  double size = 0.0;
+  /// Another exact solver (fe, shooting, frobenius) returned the same quantity in this scene.
+  bool exact_witness = false;
+  bool caught = false;
+  /// The first check that went to FAIL ("frequency fe vs shooting in-plane mode 2"); empty when
+  /// not caught.
+  std::string caught_by;
+};
+
+/// Mutations made and caught.
+struct MutationTally {
+  int made = 0;
+  int caught = 0;
+};
+
+/// All mutations of a run.
+struct MutationRun {
+  std::vector<MutationOutcome> outcomes;
+  double wall_time_s = 0.0;
+  int threads = 0;
+
+  /// Tallies by (solver, family, quantity).
+  std::map<std::tuple<std::string, std::string, std::string>, MutationTally> tallies() const;
+  /// Tally of the exact solvers' mutations where another exact solver ran (the target:
+  /// all caught).
+  MutationTally exact_with_witness() const;
+};
+
+/// True for fe, shooting and frobenius (solvers of the exact linear problem; asymptotic and airy
+/// solve approximate models).
+bool is_exact_solver(const std::string& solver);
+
+/// The relative accuracy `solver` was asked for on `mode`: shooting its `rtol` knob, frobenius its
+/// `tolerance` knob (the scene's value or the default), fe kFeAccuracyTarget, asymptotic and airy
+/// the mode's own model-error estimate. 0 when there is none (no mutation is made).
+double frequency_accuracy_target(const std::string& solver, const SolverKnobs& knobs, const Mode& mode);
+
+/// Every mutation of one solved scene, each checked with `options`' tables. A scene without
+/// statics (an error) gives none.
+std::vector<MutationOutcome> mutate_scene(const SceneResult& result, const SceneRunOptions& options);
+
+/// mutate_scene on every result, on `jobs` threads (0: all cores), timed.
+MutationRun run_mutations(const std::vector<SceneResult>& results, int jobs, const SceneRunOptions& options,
+                          const SuiteProgress& progress = {});
+
+}  // namespace catena

@@ -1,0 +1,266 @@
+#include "catena/verification/mutation.hpp"
+
+#include <chrono>
+#include <cstdlib>
+#include <fmt/format.h>
+#include <mutex>
+#include <set>
+
+#include "verification/internal/checks.hpp"
+#include "verification/internal/mode_mix.hpp"
+#include "verification/internal/parallel_for.hpp"
+
+namespace catena {
+
+std::string to_string(MutatedQuantity quantity) {
+  switch (quantity) {
+    case MutatedQuantity::Frequency: return "frequency";
+    case MutatedQuantity::Shape: return "shape";
+    case MutatedQuantity::ForcedTension: return "forced-tension";
+  }
+  return "?";
+}
+
+bool is_exact_solver(const std::string& solver) {
+  return solver == "fe" || solver == "shooting" || solver == "frobenius";
+}
+
+namespace {
+
+// A real knob as the scene sets it, else the solver's documented default; 0 when neither.
+double real_knob(const std::string& solver, const SolverKnobs& knobs, const std::string& name) {
+  if (const auto it = knobs.find(name); it != knobs.end()) {
+    if (const double* value = std::get_if<double>(&it->second)) return *value;
+    if (const long* value = std::get_if<long>(&it->second)) return static_cast<double>(*value);
+  }
+  if (const SolverEntry* entry = find_solver(solver)) {
+    for (const auto& spec : entry->knobs) {
+      if (spec.name == name) return std::strtod(spec.default_value.c_str(), nullptr);
+    }
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+double frequency_accuracy_target(const std::string& solver, const SolverKnobs& knobs, const Mode& mode) {
+  if (solver == "shooting") return real_knob(solver, knobs, "rtol");
+  if (solver == "frobenius") return real_knob(solver, knobs, "tolerance");
+  if (solver == "fe") return kFeAccuracyTarget;
+  // The analytic models: their accuracy is their model error, which their estimate states.
+  return std::max(0.0, mode.relative_error_estimate);
+}
+
+namespace {
+
+const char* plane_name(Plane plane) { return plane == Plane::InPlane ? "in-plane" : "out-of-plane"; }
+
+std::optional<ModalResult>& modal_of(SolverOutput& output, Plane plane) {
+  return plane == Plane::InPlane ? output.inplane : output.outofplane;
+}
+
+std::string check_key(const CheckResult& check) {
+  return fmt::format("{}|{}|{}|{}", check.check, check.compare, check.plane, check.mode);
+}
+
+// One scene's mutations: a working copy of its results, mutated and restored one result at a
+// time, and the checks that failed before any mutation.
+class SceneMutator {
+ public:
+  SceneMutator(const SceneResult& result, const SceneRunOptions& options) : work_(result), options_(options) {
+    family_ = result.scene.file.parent_path().filename().string();
+    for (const auto& check : run_checks()) {
+      if (check.verdict == Verdict::Fail) baseline_failures_.insert(check_key(check));
+    }
+  }
+
+  SceneResult& work() { return work_; }
+  const SceneResult& work() const { return work_; }
+  const SceneRunOptions& options() const { return options_; }
+  std::vector<MutationOutcome>& outcomes() { return outcomes_; }
+
+  // Runs the checks on the present (mutated) state and records whether a check went to FAIL.
+  void record(const std::string& solver, MutatedQuantity quantity, const std::string& plane, int mode, double size,
+              bool exact_witness) {
+    MutationOutcome outcome{work_.scene.name, family_, solver, quantity, plane, mode, size, exact_witness, false, ""};
+    for (const auto& check : run_checks()) {
+      if (check.verdict != Verdict::Fail || baseline_failures_.count(check_key(check))) continue;
+      outcome.caught = true;
+      outcome.caught_by = fmt::format("{} {} {} mode {}", check.check, check.compare, check.plane, check.mode);
+      break;
+    }
+    outcomes_.push_back(std::move(outcome));
+  }
+
+  // True when an exact solver other than `solver` returned what `has` looks for.
+  template <class Has>
+  bool exact_witness(const std::string& solver, Has has) const {
+    for (const auto& output : work_.outputs) {
+      if (output.solver != solver && is_exact_solver(output.solver) && output.summary.is_usable() && has(output)) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  std::vector<CheckResult> run_checks() const {
+    return internal::run_checks(work_, options_.tolerances, options_.findings);
+  }
+
+  SceneResult work_;
+  const SceneRunOptions& options_;
+  std::string family_;
+  std::set<std::string> baseline_failures_;
+  std::vector<MutationOutcome> outcomes_;
+};
+
+bool has_mode(const SolverOutput& output, Plane plane, int index, bool with_shape) {
+  const auto& modal = plane == Plane::InPlane ? output.inplane : output.outofplane;
+  if (!modal) return false;
+  for (const auto& mode : modal->modes) {
+    if (mode.index == index) return !with_shape || internal::has_stacked_shape(mode, plane);
+  }
+  return false;
+}
+
+void scale_frequency(Mode& mode, double factor) {
+  mode.omega_rad_s *= factor;
+  mode.frequency_hz *= factor;
+  mode.k_l_over_pi *= factor;
+  if (mode.gale_ratio) *mode.gale_ratio *= factor;
+}
+
+void mutate_frequencies(SceneMutator& mutator, SolverOutput& output, Plane plane) {
+  auto& modal = modal_of(output, plane);
+  if (!modal) return;
+  const Scene& scene = mutator.work().scene;
+  const SolverKnobs knobs = scene.solvers.count(output.solver) ? scene.solvers.at(output.solver) : SolverKnobs{};
+  for (Mode& mode : modal->modes) {
+    const double target = frequency_accuracy_target(output.solver, knobs, mode);
+    if (!(target > 0.0) || !std::isfinite(mode.omega_rad_s)) continue;
+    const double change = kFrequencyMutationFactor * target;
+    const Mode saved = mode;
+    scale_frequency(mode, 1.0 + change);
+    const bool witness = mutator.exact_witness(
+        output.solver, [&](const SolverOutput& other) { return has_mode(other, plane, mode.index, false); });
+    mutator.record(output.solver, MutatedQuantity::Frequency, plane_name(plane), mode.index, change, witness);
+    mode = saved;
+  }
+}
+
+// The widest 1 - MAC tolerance `solver` is held to in this scene (the scene's override, else the
+// table's rule against each other solver with shapes in `plane`); 0 when none applies.
+double widest_mac_tolerance(const SceneMutator& mutator, const std::string& solver, Plane plane) {
+  const SceneResult& result = mutator.work();
+  if (result.scene.checks.mac_min) return 1.0 - *result.scene.checks.mac_min;
+  double widest = 0.0;
+  for (const auto& other : result.outputs) {
+    if (other.solver == solver || !other.summary.is_usable() || !has_mode(other, plane, 1, true)) continue;
+    const ToleranceRule* rule =
+        mutator.options().tolerances.find("mac", solver, other.solver, result.scene.name, result.scene.tags);
+    if (rule) widest = std::max(widest, rule->max);
+  }
+  return widest;
+}
+
+void mutate_shapes(SceneMutator& mutator, SolverOutput& output, Plane plane) {
+  auto& modal = modal_of(output, plane);
+  if (!modal || modal->modes.size() < 2) return;
+  const double drop = kShapeMutationFactor * widest_mac_tolerance(mutator, output.solver, plane);
+  if (!(drop > 0.0)) return;
+  auto& modes = modal->modes;
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    const Mode& neighbour = modes[i + 1 < modes.size() ? i + 1 : i - 1];
+    if (!internal::has_stacked_shape(modes[i], plane) || !internal::has_stacked_shape(neighbour, plane)) continue;
+    const Vector p = internal::stacked_shape(modes[i], plane);
+    const auto delta = internal::mix_for_mac_drop(p, internal::stacked_shape(neighbour, plane), drop);
+    if (!delta) continue;
+    const Mode saved = modes[i];
+    internal::mix_modes(modes[i], neighbour, *delta);
+    const double size = internal::one_minus_mac(p, internal::stacked_shape(modes[i], plane));
+    const int index = modes[i].index;
+    const bool witness = mutator.exact_witness(
+        output.solver, [&](const SolverOutput& other) { return has_mode(other, plane, index, true); });
+    mutator.record(output.solver, MutatedQuantity::Shape, plane_name(plane), index, size, witness);
+    modes[i] = saved;
+  }
+}
+
+void mutate_forced(SceneMutator& mutator, SolverOutput& output) {
+  for (std::size_t i = 0; i < output.forced.size(); ++i) {
+    ForcedResponse& response = output.forced[i];
+    if (!response.diagnostic.empty() || !std::isfinite(response.max_abs_tension_n)) continue;
+    const double saved_max = response.max_abs_tension_n;
+    const Vector saved_curve = response.tension_n;
+    response.max_abs_tension_n *= 1.0 + kForcedTensionMutation;
+    response.tension_n *= 1.0 + kForcedTensionMutation;
+    const bool witness = mutator.exact_witness(output.solver, [&](const SolverOutput& other) {
+      return i < other.forced.size() && other.forced[i].diagnostic.empty();
+    });
+    mutator.record(output.solver, MutatedQuantity::ForcedTension, "forced", static_cast<int>(i + 1),
+                   kForcedTensionMutation, witness);
+    response.max_abs_tension_n = saved_max;
+    response.tension_n = saved_curve;
+  }
+}
+
+}  // namespace
+
+std::vector<MutationOutcome> mutate_scene(const SceneResult& result, const SceneRunOptions& options) {
+  if (!result.statics || !result.groups || !result.error.empty()) return {};
+  SceneMutator mutator(result, options);
+  for (auto& output : mutator.work().outputs) {
+    if (!output.summary.is_usable()) continue;
+    for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
+      mutate_frequencies(mutator, output, plane);
+      mutate_shapes(mutator, output, plane);
+    }
+    mutate_forced(mutator, output);
+  }
+  return std::move(mutator.outcomes());
+}
+
+MutationRun run_mutations(const std::vector<SceneResult>& results, int jobs, const SceneRunOptions& options,
+                          const SuiteProgress& progress) {
+  options.validate();  // before the workers: an exception must not escape a thread
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::vector<MutationOutcome>> per_scene(results.size());
+  std::size_t done = 0;
+  std::mutex progress_mutex;
+  internal::parallel_for(results.size(), jobs, [&](std::size_t i) {
+    per_scene[i] = mutate_scene(results[i], options);
+    std::lock_guard<std::mutex> lock(progress_mutex);
+    ++done;
+    if (progress) progress(done, results.size(), results[i].scene.name);
+  });
+  MutationRun run;
+  for (auto& outcomes : per_scene) {
+    for (auto& outcome : outcomes) run.outcomes.push_back(std::move(outcome));
+  }
+  run.threads = internal::thread_count(jobs);
+  run.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+std::map<std::tuple<std::string, std::string, std::string>, MutationTally> MutationRun::tallies() const {
+  std::map<std::tuple<std::string, std::string, std::string>, MutationTally> out;
+  for (const auto& outcome : outcomes) {
+    MutationTally& tally = out[{outcome.solver, outcome.family, to_string(outcome.quantity)}];
+    ++tally.made;
+    tally.caught += outcome.caught;
+  }
+  return out;
+}
+
+MutationTally MutationRun::exact_with_witness() const {
+  MutationTally tally;
+  for (const auto& outcome : outcomes) {
+    if (!is_exact_solver(outcome.solver) || !outcome.exact_witness) continue;
+    ++tally.made;
+    tally.caught += outcome.caught;
+  }
+  return tally;
+}
+
+}  // namespace catena
