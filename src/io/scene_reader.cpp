@@ -118,6 +118,10 @@ Problem read_line(TableReader& root, const std::string& origin) {
   }
   table.finish();
   const Line& line = problem.line;
+  if (line.segments.empty()) {
+    throw InvalidInput(fmt::format("{}: [line]: Invalid line.segments: a line needs at least one [[line.segments]] entry",
+                                   origin));
+  }
   if (line.segments.size() == 1 && line.points.empty() && line.segments[0].weight_n_per_m > 0.0) {
     const LineSegment& segment = line.segments[0];
     problem.cable = {segment.length_m, segment.weight_n_per_m, segment.axial_stiffness_n, segment.mass_kg_per_m,

@@ -170,6 +170,36 @@ TEST(LineStatics, BuoyantAndWeightlessSegmentsAgreeWithTheIndependentSolve) {
   }
 }
 
+// From slack (the clump weight nearly on the seabed level of the anchor) to taut (the chord longer
+// than the unstretched line): every start converges to the independent solution.
+TEST(LineStatics, ConvergesFromSlackToStretchedChords) {
+  for (double reach : {150.0, 400.0, 700.0, 880.0, 905.0, 906.5}) {
+    Problem p = mooring_line();
+    p.supports.b_m = Vec2(reach, 0.0);
+    const StaticSolution statics = solve_statics(p);
+    ASSERT_TRUE(statics.converged) << reach << ": " << statics.message;
+    const auto [H, V] = independent_solve(p, statics.horizontal_force_n(), statics.vertical_force_a_n());
+    EXPECT_LT(relative_error(statics.horizontal_force_n(), double(H)), 1e-9) << reach;
+    EXPECT_LT(std::abs(statics.vertical_force_a_n() - double(V)), 1e-9 * double(H)) << reach;
+  }
+}
+
+// A wholly buoyant line hogs: its highest point is inside, its lowest at an end.
+TEST(LineStatics, BuoyantLineHogsAndAgreesWithTheIndependentSolve) {
+  Problem p;
+  p.supports.a_m = Vec2(0.0, 0.0);
+  p.supports.b_m = Vec2(100.0, 10.0);
+  p.line.segments = {{60.0, -50.0, 1e7, 5.0, 1.0}, {60.0, -80.0, 1e7, 5.0, 1.0}};
+  const StaticSolution statics = solve_statics(p);
+  ASSERT_TRUE(statics.converged) << statics.message;
+  const auto [H, V] = independent_solve(p, statics.horizontal_force_n(), statics.vertical_force_a_n());
+  EXPECT_LT(relative_error(statics.horizontal_force_n(), double(H)), 1e-10);
+  EXPECT_LT(std::abs(statics.vertical_force_a_n() - double(V)), 1e-10 * double(H));
+  EXPECT_GT(statics.vertical_force_a_n(), 0.0);
+  EXPECT_GT(statics.position_m(60.0).y(), 10.0);
+  EXPECT_EQ(statics.lowest_point_s_m(), 0.0);
+}
+
 TEST(LineStatics, BadInputNamesTheField) {
   Problem p = mooring_line();
   expect_invalid([&] { Problem q = p; q.line.segments[2].length_m = 0.0; solve_statics(q); }, "line.segments[2].length");
