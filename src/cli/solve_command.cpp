@@ -1,5 +1,7 @@
 // `catena solve SCENE [--json FILE]`: one scene (or one sweep), every applicable solver.
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <fmt/format.h>
 #include <iostream>
 #include <string>
@@ -41,21 +43,16 @@ void print_modes(const ModalResult& result, const char* title) {
   }
 }
 
-void print_result(const SceneResult& result) {
-  const Scene& scene = result.scene;
-  fmt::print("scene {} ({})\n", scene.name, path_text(scene.file));
-  if (!result.error.empty()) {
-    fmt::print("  error: {}\n", result.error);
-    return;
-  }
-  const CableProperties& c = scene.problem.cable;
+void print_cable(const Problem& problem) {
+  const CableProperties& c = problem.cable;
   fmt::print("  cable: L = {} m, W0 = {} N/m, EA = {} N, m = {} kg/m, ma = {} kg/m; a = ({}, {}) m, "
              "b = ({:.10g}, {:.10g}) m\n",
              c.length_m, c.weight_n_per_m, c.is_inextensible() ? "inf" : fmt::format("{:g}", c.axial_stiffness_n),
-             c.mass_kg_per_m, c.added_mass_kg_per_m, scene.problem.supports.a_m.x(),
-             scene.problem.supports.a_m.y(), scene.problem.supports.b_m.x(), scene.problem.supports.b_m.y());
-  fmt::print("  statics: {}\n", result.statics->brief_report());
-  const DimensionlessGroups& g = *result.groups;
+             c.mass_kg_per_m, c.added_mass_kg_per_m, problem.supports.a_m.x(), problem.supports.a_m.y(),
+             problem.supports.b_m.x(), problem.supports.b_m.y());
+}
+
+void print_groups(const DimensionlessGroups& g) {
   fmt::print("  groups: phi_a = {:.6g} deg, T0 = {:.10g} N, eps = {:.6g}, lambda^2 = {}, h = m/M = {:.6g}\n",
              g.chord_angle_rad * 180.0 / kPi, g.t0_n, g.eps,
              std::isfinite(g.lambda2) ? fmt::format("{:.6g}", g.lambda2) : std::string("inf"), g.mass_ratio);
@@ -64,6 +61,51 @@ void print_result(const SceneResult& result) {
                g.catenary_parameter_m, g.xi1, g.xi2, g.sigma1, g.sigma2,
                g.height_over_span ? fmt::format(", h/b = {:.6g}", *g.height_over_span) : std::string(),
                g.sag_parameter ? fmt::format(", sag parameter = {:.6g}", *g.sag_parameter) : std::string());
+  }
+}
+
+// One row of the line's statics table at s (forces on the side of b; a point's jump shown).
+void print_line_row(const StaticSolution& statics, const std::string& what, double s) {
+  const Vec2 r = statics.position_m(s);
+  const double before = statics.vertical_force_before_n(s);
+  const double after = statics.vertical_force_n(s);
+  fmt::print("    {:<12} {:>12.6g} {:>12.6g} {:>12.6g} {:>13.7g} {:>13.7g} {:>13.7g} {:>12.6g}\n", what, s, r.x(), r.y(),
+             statics.horizontal_force_n(), after, statics.tension_n(s), statics.stretched_length_m(s));
+  if (before != after) fmt::print("    {:<12} (V jumps by the point's weight: {:.7g} N before it)\n", "", before);
+}
+
+// The statics table of a general line: both ends, every joint and every point in order of s.
+void print_line_statics(const Problem& problem, const StaticSolution& statics) {
+  const Line& line = problem.line;
+  fmt::print("  line: {} segments, {} points, L = {} m; a = ({}, {}) m, b = ({:.10g}, {:.10g}) m\n",
+             line.segments.size(), line.points.size(), line.length_m(), problem.supports.a_m.x(),
+             problem.supports.a_m.y(), problem.supports.b_m.x(), problem.supports.b_m.y());
+  fmt::print("  statics: {}\n", statics.brief_report());
+  fmt::print("    {:<12} {:>12} {:>12} {:>12} {:>13} {:>13} {:>13} {:>12}\n", "where", "s [m]", "x [m]", "z [m]",
+             "H [N]", "V [N]", "T [N]", "stretched [m]");
+  std::vector<std::pair<double, std::string>> rows{{0.0, "end a"}, {line.length_m(), "end b"}};
+  for (std::size_t k = 1; k < line.segments.size(); ++k) rows.emplace_back(line.segment_start_m(k), fmt::format("joint {}", k));
+  for (std::size_t i = 0; i < line.points.size(); ++i) rows.emplace_back(line.points[i].s_m, fmt::format("point {}", i));
+  std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [s, what] : rows) print_line_row(statics, what, s);
+  const double low = statics.lowest_point_s_m();
+  fmt::print("  lowest point: s = {:.6g} m, x = {:.6g} m, z = {:.6g} m\n", low, statics.position_m(low).x(),
+             statics.position_m(low).y());
+}
+
+void print_result(const SceneResult& result) {
+  const Scene& scene = result.scene;
+  fmt::print("scene {} ({})\n", scene.name, path_text(scene.file));
+  if (!result.error.empty()) {
+    fmt::print("  error: {}\n", result.error);
+    return;
+  }
+  if (scene.problem.is_uniform()) {
+    print_cable(scene.problem);
+    fmt::print("  statics: {}\n", result.statics->brief_report());
+    print_groups(*result.groups);
+  } else {
+    print_line_statics(scene.problem, *result.statics);
   }
   for (const auto& output : result.outputs) {
     fmt::print("  solver {}\n", output.summary.brief_report());

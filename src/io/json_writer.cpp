@@ -1,6 +1,9 @@
 #include "catena/io/json_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 #include <fmt/format.h>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -96,8 +99,35 @@ json output_json(const SolverOutput& output, bool along_cable) {
   return out;
 }
 
+json line_json(const Line& line) {
+  json segments = json::array(), points = json::array();
+  for (const LineSegment& g : line.segments) {
+    segments.push_back({{key::length_m, g.length_m},
+                        {key::weight_n_per_m, g.weight_n_per_m},
+                        {key::axial_stiffness_n, number(g.axial_stiffness_n)},
+                        {key::inextensible, g.is_inextensible()},
+                        {key::mass_kg_per_m, g.mass_kg_per_m},
+                        {key::added_mass_kg_per_m, g.added_mass_kg_per_m}});
+  }
+  for (const PointAttachment& p : line.points) {
+    points.push_back({{key::s_m, p.s_m},
+                      {key::mass_kg, p.mass_kg},
+                      {key::weight_n, p.weight_n},
+                      {key::added_mass_kg,
+                       {p.tangential_added_mass_kg(), p.normal_added_mass_kg(), p.outofplane_added_mass_kg()}}});
+  }
+  return {{key::segments, segments}, {key::points, points}};
+}
+
 json problem_json(const Problem& problem) {
   const CableProperties& c = problem.cable;
+  if (!problem.is_uniform()) {
+    return {{key::form, "line"},
+            {key::line, line_json(problem.line)},
+            {key::supports,
+             {{key::a_m, {problem.supports.a_m.x(), problem.supports.a_m.y()}},
+              {key::b_m, {problem.supports.b_m.x(), problem.supports.b_m.y()}}}}};
+  }
   return {{key::form, to_string(problem.form)},
           {key::cable,
            {{key::length_m, c.length_m},
@@ -128,6 +158,41 @@ json request_json(const SolveRequest& request) {
   return out;
 }
 
+// The state at arc length s: position, stretched length from a, and the forces on both sides (they
+// differ at a point attachment by its weight).
+json node_json(const StaticSolution& statics, const std::string& kind, std::size_t index, double s) {
+  const Vec2 r = statics.position_m(s);
+  const double H = statics.horizontal_force_n();
+  const double before = statics.vertical_force_before_n(s);
+  const double after = statics.vertical_force_n(s);
+  return {{key::kind, kind}, {key::index, index}, {key::s_m, s}, {key::x_m, r.x()}, {key::z_m, r.y()},
+          {key::stretched_length_m, statics.stretched_length_m(s)},
+          {key::horizontal_force_n, H},
+          {key::vertical_force_before_n, before}, {key::vertical_force_after_n, after},
+          {key::tension_before_n, std::hypot(H, before)}, {key::tension_after_n, std::hypot(H, after)}};
+}
+
+// Per joint and per point of a general line, in order of s; and the stretched length of each
+// segment.
+void add_line_statics(json& out, const StaticSolution& statics) {
+  const Line line = statics.line();
+  std::vector<std::pair<double, json>> nodes;
+  json stretched = json::array();
+  for (std::size_t k = 0; k < line.segments.size(); ++k) {
+    const double begin = line.segment_start_m(k);
+    stretched.push_back(statics.stretched_length_m(line.segment_start_m(k + 1)) - statics.stretched_length_m(begin));
+    if (k > 0) nodes.emplace_back(begin, node_json(statics, "joint", k - 1, begin));
+  }
+  for (std::size_t i = 0; i < line.points.size(); ++i) {
+    nodes.emplace_back(line.points[i].s_m, node_json(statics, "point", i, line.points[i].s_m));
+  }
+  std::stable_sort(nodes.begin(), nodes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  json list = json::array();
+  for (auto& node : nodes) list.push_back(std::move(node.second));
+  out[key::nodes] = list;
+  out[key::segments] = {{key::stretched_length_m, stretched}};
+}
+
 json statics_profile_json(const StaticSolution& statics, int points) {
   const double L = statics.cable().length_m;
   json s = json::array(), x = json::array(), z = json::array(), t = json::array();
@@ -156,15 +221,19 @@ json statics_json(const StaticSolution& statics, const SolveRequest& request) {
           {key::newton_iterations, statics.iterations},
           {key::closure_error_m, statics.closure_error_m}};
   if (request.shapes) out[key::shape] = statics_profile_json(statics, request.points);
+  const double s_low = statics.lowest_point_s_m();
+  const Vec2 low = statics.position_m(s_low);
+  out[key::lowest_point] = {{key::s_m, s_low}, {key::x_m, low.x()}, {key::z_m, low.y()}};
+  if (statics.is_line()) add_line_statics(out, statics);
   return out;
 }
 
 json groups_json(const DimensionlessGroups& g) {
   json out = {{key::chord_angle_deg, g.chord_angle_rad * 180.0 / kPi},
               {key::t0_n, g.t0_n},
-              {key::s_at_chord_angle_m, g.s_at_chord_angle_m},
-              {key::eps, g.eps},
-              {key::lambda2, number(g.lambda2)},
+              {key::s_at_chord_angle_m, g.uniform ? json(g.s_at_chord_angle_m) : json(nullptr)},
+              {key::eps, g.uniform ? json(g.eps) : json(nullptr)},
+              {key::lambda2, g.uniform ? number(g.lambda2) : json(nullptr)},
               {key::mass_ratio, g.mass_ratio},
               {key::taut_frequency_scale_rad_s, g.taut_frequency_scale_rad_s}};
   if (g.has_apex_parameterization) {

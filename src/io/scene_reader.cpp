@@ -59,6 +59,83 @@ Problem read_physical(TableReader& root, const std::string& origin) {
   return problem;
 }
 
+// The entries of the array of tables `[[<path>.<key>]]`, each read as `<path>.<key>[i]` (0-based, as
+// Line::validate names them).
+std::vector<TableReader> indexed_tables(TableReader& table, const std::string& key, const std::string& path,
+                                        const std::string& origin) {
+  std::vector<TableReader> tables;
+  const toml::value* list = table.find(key);
+  if (!list) return tables;
+  if (!list->is_array()) throw ParseError(fmt::format("{}: expected an array of tables [[{}.{}]]", table.where(key), path, key));
+  for (const auto& item : list->as_array()) {
+    const std::string name = fmt::format("{}.{}[{}]", path, key, tables.size());
+    if (!item.is_table()) throw ParseError(fmt::format("{}: [{}]: expected a table", origin, name));
+    tables.emplace_back(item, origin, name);
+  }
+  return tables;
+}
+
+LineSegment read_segment(TableReader& table) {
+  LineSegment segment;
+  segment.length_m = table.checked("length", positive, "finite and > 0", "m");
+  segment.weight_n_per_m = table.checked("weight", any_value, "finite (> 0 hangs, 0 straight, < 0 buoyant)", "N/m");
+  segment.axial_stiffness_n = read_axial_stiffness(table);
+  segment.mass_kg_per_m = table.checked("mass", positive, "finite and > 0", "kg/m");
+  segment.added_mass_kg_per_m = table.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
+  table.finish();
+  return segment;
+}
+
+PointAttachment read_point(TableReader& table) {
+  PointAttachment point;
+  point.s_m = table.checked("s", non_negative, "finite and >= 0", "m");
+  point.mass_kg = table.checked("mass", non_negative, "finite and >= 0", "kg", 0.0);
+  point.weight_n = table.checked("weight", any_value, "finite (> 0 a clump weight, < 0 a buoy)", "N", 0.0);
+  point.added_mass_kg = table.checked("added_mass", non_negative, "finite and >= 0", "kg", 0.0);
+  auto directional = [&](const char* key) -> std::optional<double> {
+    if (!table.has(key)) return std::nullopt;
+    return table.checked(key, non_negative, "finite and >= 0", "kg");
+  };
+  point.added_mass_tangential_kg = directional("added_mass_tangential");
+  point.added_mass_normal_kg = directional("added_mass_normal");
+  point.added_mass_outofplane_kg = directional("added_mass_outofplane");
+  table.finish();
+  return point;
+}
+
+// [line]: segments and points. One segment of positive weight without points is the uniform cable
+// (the same Problem as [cable], so every solver sees it as one).
+Problem read_line(TableReader& root, const std::string& origin) {
+  Problem problem;
+  TableReader table = root.subtable("line");
+  problem.supports.a_m = table.point("a");
+  problem.supports.b_m = table.point("b");
+  for (TableReader& entry : indexed_tables(table, "segments", "line", origin)) {
+    problem.line.segments.push_back(read_segment(entry));
+  }
+  for (TableReader& entry : indexed_tables(table, "points", "line", origin)) {
+    problem.line.points.push_back(read_point(entry));
+  }
+  table.finish();
+  const Line& line = problem.line;
+  if (line.segments.empty()) {
+    throw InvalidInput(fmt::format("{}: [line]: Invalid line.segments: a line needs at least one [[line.segments]] entry",
+                                   origin));
+  }
+  if (line.segments.size() == 1 && line.points.empty() && line.segments[0].weight_n_per_m > 0.0) {
+    const LineSegment& segment = line.segments[0];
+    problem.cable = {segment.length_m, segment.weight_n_per_m, segment.axial_stiffness_n, segment.mass_kg_per_m,
+                     segment.added_mass_kg_per_m};
+    problem.line = Line{};
+  }
+  try {
+    problem.validate();
+  } catch (const InvalidInput& error) {
+    throw InvalidInput(fmt::format("{}: [line]: {}", origin, error.what()));
+  }
+  return problem;
+}
+
 Problem read_taut_inclined(TableReader& root, const std::string& origin) {
   TableReader form = root.subtable("taut_inclined");
   const double eps = form.checked("eps", positive, "finite and > 0", "-");
@@ -100,15 +177,17 @@ Problem read_gale(TableReader& root, const std::string& origin) {
 // Reads the one cable form of the scene into a Problem.
 Problem read_problem(TableReader& root, const std::string& origin) {
   const bool physical = root.has("cable");
+  const bool line = root.has("line");
   const bool taut = root.has("taut_inclined");
   const bool gale = root.has("gale");
-  const int forms = int(physical) + int(taut) + int(gale);
+  const int forms = int(physical) + int(line) + int(taut) + int(gale);
   if (forms != 1) {
     throw ParseError(fmt::format(
-        "{}: a scene needs exactly one of the tables [cable], [taut_inclined], [gale]; found {}",
+        "{}: a scene needs exactly one of the tables [cable], [line], [taut_inclined], [gale]; found {}",
         origin, forms));
   }
   if (physical) return read_physical(root, origin);
+  if (line) return read_line(root, origin);
   if (taut) return read_taut_inclined(root, origin);
   return read_gale(root, origin);
 }
@@ -200,10 +279,7 @@ void read_request(TableReader& root, Scene& scene) {
   } catch (const InvalidInput& error) {
     throw InvalidInput(fmt::format("{}: [request]: {}", path_text(scene.file), error.what()));
   }
-  if (scene.request.inplane_modes == 0 && scene.request.outofplane_modes == 0 && !scene.request.forced) {
-    throw InvalidInput(fmt::format("{}: [request] asks for nothing (no modes and no forcing)",
-                                   path_text(scene.file)));
-  }
+  // No modes and no forcing: a statics-only scene (the runner computes the statics only).
 }
 
 KnobValue to_knob(const toml::value& value, const std::string& where) {

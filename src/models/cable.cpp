@@ -78,8 +78,17 @@ std::string to_string(ProblemForm form) {
   return "unknown";
 }
 
+Line Problem::as_line() const { return is_uniform() ? line_of_cable(cable) : line; }
+
 void Problem::validate() const {
-  cable.validate();
+  if (is_uniform()) {
+    cable.validate();
+  } else {
+    line.validate();
+    if (prescribed_forces) {
+      throw InvalidInput("Invalid Problem::prescribed_forces: a general line is solved from its geometry only");
+    }
+  }
   supports.validate();
 }
 

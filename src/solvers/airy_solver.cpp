@@ -22,6 +22,7 @@
 #include "solvers/internal/solver_entries.hpp"
 #include "solvers/internal/taut_cable_theory.hpp"
 #include "solvers/internal/work_meter.hpp"
+#include "solvers/internal/line_applicability.hpp"
 
 namespace catena {
 
@@ -137,6 +138,7 @@ class AiryNumerics final : public SolverNumerics {
         inplane_error_estimate_(std::max(inplane_model_error_, root_error_)) {}
 
   std::optional<std::string> not_applicable() const override {
+    if (auto reason = uniform_cable_only(context_.problem, "the Airy boundary-layer solution")) return reason;
     return airy_not_applicable_reason(context_.problem, context_.statics, context_.groups, options_);
   }
 

@@ -17,6 +17,7 @@
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/mode_tools.hpp"
 #include "solvers/internal/solver_entries.hpp"
+#include "solvers/internal/line_applicability.hpp"
 
 namespace catena {
 namespace {
@@ -216,6 +217,7 @@ class AsymptoticNumerics final : public SolverNumerics {
         error_estimate_(context.groups.eps * context.groups.eps + 0.5 * static_strain_) {}
 
   std::optional<std::string> not_applicable() const override {
+    if (auto reason = uniform_cable_only(context_.problem, "the taut-cable asymptotic expansion")) return reason;
     return asymptotic_not_applicable_reason(context_.problem, context_.statics, context_.groups, options_);
   }
 

@@ -22,6 +22,7 @@
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
 #include "solvers/internal/work_meter.hpp"
+#include "solvers/internal/line_applicability.hpp"
 
 namespace catena {
 namespace internal {
@@ -68,7 +69,10 @@ class FeNumerics final : public SolverNumerics {
         plan_(make_fe_plan(context.problem, context.statics, options, context.request.inplane_modes,
                            context.request.outofplane_modes)) {}
 
-  std::optional<std::string> not_applicable() const override { return fe_penalty_not_applicable(plan_); }
+  std::optional<std::string> not_applicable() const override {
+    if (auto reason = uniform_cable_only(context_.problem, "fe (general lines not implemented yet)")) return reason;
+    return fe_penalty_not_applicable(plan_);
+  }
   void describe(SolverSummary& summary) const override { describe_fe_run(plan_, summary); }
   std::optional<Outcome> prepare() override;
   ModalResult modes(Plane plane, int count) override;

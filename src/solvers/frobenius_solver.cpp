@@ -25,6 +25,7 @@
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
 #include "solvers/internal/work_meter.hpp"
+#include "solvers/internal/line_applicability.hpp"
 
 namespace catena {
 
@@ -81,6 +82,7 @@ class FrobeniusNumerics final : public SolverNumerics {
       : context_(context), options_(options) {}
 
   std::optional<std::string> not_applicable() const override {
+    if (auto reason = uniform_cable_only(context_.problem, "the Frobenius series of the catenary")) return reason;
     return frobenius_not_applicable_reason(context_.problem, context_.groups);
   }
   void describe(SolverSummary& summary) const override;

@@ -22,6 +22,7 @@
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
 #include "solvers/internal/work_meter.hpp"
+#include "solvers/internal/line_applicability.hpp"
 
 namespace catena {
 
@@ -137,6 +138,7 @@ class ShootingNumerics final : public SolverNumerics {
 // The equations divide by the static tension: where it vanishes inside the cable (a slack
 // vertical cable), the principal solutions are not defined.
 std::optional<std::string> ShootingNumerics::not_applicable() const {
+  if (auto reason = uniform_cable_only(context_.problem, "shooting (general lines not implemented yet)")) return reason;
   const StaticSolution& statics = context_.statics;
   const double L = statics.cable().length_m;
   const double V_A = statics.vertical_force_a_n();

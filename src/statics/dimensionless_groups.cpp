@@ -1,5 +1,6 @@
 #include "catena/statics/dimensionless_groups.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -29,8 +30,33 @@ double DimensionlessGroups::omega_from_gale_ratio(double ratio) const {
   return ratio * gale_frequency_scale_rad_s;
 }
 
+namespace {
+
+// A general line: only the groups that keep a meaning (see DimensionlessGroups::uniform).
+DimensionlessGroups line_groups(const Problem& problem, const StaticSolution& statics) {
+  const Line& line = problem.line;
+  const double L = line.length_m();
+  double mass = 0.0;
+  double normal_mass = 0.0;
+  for (const LineSegment& segment : line.segments) {
+    mass += segment.mass_kg_per_m * segment.length_m;
+    normal_mass += segment.normal_mass_kg_per_m() * segment.length_m;
+  }
+  const Vec2 chord = problem.supports.chord_m();
+  DimensionlessGroups g;
+  g.uniform = false;
+  g.chord_angle_rad = std::atan2(chord.y(), chord.x());
+  g.t0_n = std::max(statics.tension_n(0.0), statics.tension_n(L));
+  g.mass_ratio = mass / normal_mass;
+  g.taut_frequency_scale_rad_s = std::sqrt(g.t0_n / (normal_mass / L)) / L;
+  return g;
+}
+
+}  // namespace
+
 DimensionlessGroups compute_dimensionless_groups(const Problem& problem,
                                                  const StaticSolution& statics) {
+  if (!problem.is_uniform()) return line_groups(problem, statics);
   const CableProperties& cable = problem.cable;
   const double L = cable.length_m;
   const double W0 = cable.weight_n_per_m;

@@ -1,85 +1,24 @@
 #include "catena/statics/elastic_catenary.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fmt/format.h>
 
 #include "catena/core/error.hpp"
+#include "catena/statics/line_statics.hpp"
+#include "statics/internal/catenary_segment.hpp"
+#include "statics/internal/line_pieces.hpp"
 
 namespace catena {
 namespace {
 
-double inverse_stiffness(const CableProperties& cable) {
-  return cable.is_inextensible() ? 0.0 : 1.0 / cable.axial_stiffness_n;
-}
+using internal::asinh_difference;
+using internal::inverse_stiffness;
+using internal::offset;
+using internal::offset_jacobian;
 
-// asinh(V/H) - asinh(V_A/H) = asinh(D), with D written so that neither branch cancels:
-// same signs: D = W0 s (V + V_A) / (V T_A + V_A T); otherwise D = (V T_A - V_A T) / H^2.
-double asinh_difference(double H, double V_A, double V, double T_A, double T, double W0s) {
-  if (V * V_A > 0.0) return std::asinh(W0s * (V + V_A) / (V * T_A + V_A * T));
-  return std::asinh((V * T_A - V_A * T) / (H * H));
-}
-
-Vec2 offset(const CableProperties& cable, double H, double V_A, double s) {
-  const double W0 = cable.weight_n_per_m;
-  const double V = V_A + W0 * s;
-  const double T_A = std::hypot(H, V_A);
-  const double T = std::hypot(H, V);
-  const double compliance = inverse_stiffness(cable);
-  double x = H * s * compliance;
-  double z = (V_A * s + 0.5 * W0 * s * s) * compliance;
-  if (H > 0.0) x += (H / W0) * asinh_difference(H, V_A, V, T_A, T, W0 * s);
-  // (T - T_A)/W0 = s (V + V_A)/(T + T_A): exact, and finite for H = 0.
-  if (T + T_A > 0.0) z += s * (V + V_A) / (T + T_A);
-  return {x, z};
-}
-
-// Jacobian of r(L) with respect to (H, V_A); entries written without cancellation.
-Eigen::Matrix2d offset_jacobian(const CableProperties& cable, double H, double V_A) {
-  const double L = cable.length_m;
-  const double W0 = cable.weight_n_per_m;
-  const double compliance_l = L * inverse_stiffness(cable);
-  const double V_B = V_A + W0 * L;
-  const double T_A = std::hypot(H, V_A);
-  const double T_B = std::hypot(H, V_B);
-  // dx/dV_A = dz/dH = (H/W0)(1/T_B - 1/T_A) = -H L (V_A + V_B) / ((T_A + T_B) T_A T_B).
-  const double cross = -H * L * (V_A + V_B) / ((T_A + T_B) * T_A * T_B);
-  // dz/dV_A = L/EA + int H^2/T^3 ds = L/EA + (V_B/T_B - V_A/T_A)/W0.
-  double dz_dv;
-  if (V_A * V_B > 0.0) {
-    dz_dv = H * H * L * (V_A + V_B) / ((V_B * T_A + V_A * T_B) * T_A * T_B);
-  } else {
-    dz_dv = (V_B * T_A - V_A * T_B) / (W0 * T_A * T_B);
-  }
-  // dx/dH = L/EA + int V^2/T^3 ds. The closed form (f(V_B/H) - f(V_A/H))/W0 with
-  // f(v) = asinh v - v/sqrt(1+v^2) cancels for nearly straight, nearly horizontal cables:
-  // there the integrand is smooth and 12-point Gauss-Legendre is exact to rounding.
-  double dx_dh;
-  if (std::max(std::abs(V_A), std::abs(V_B)) < 0.3 * H) {
-    static constexpr std::array<double, 6> nodes = {0.1252334085114689, 0.3678314989981802,
-                                                    0.5873179542866175, 0.7699026741943047,
-                                                    0.9041172563704749, 0.9815606342467192};
-    static constexpr std::array<double, 6> weights = {0.2491470458134028, 0.2334925365383548,
-                                                      0.2031674267230659, 0.1600783285433462,
-                                                      0.1069393259953184, 0.0471753363865118};
-    dx_dh = 0.0;
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      for (double sign : {-1.0, 1.0}) {
-        const double s = 0.5 * L * (1.0 + sign * nodes[i]);
-        const double V = V_A + W0 * s;
-        const double T = std::hypot(H, V);
-        dx_dh += 0.5 * L * weights[i] * V * V / (T * T * T);
-      }
-    }
-  } else {
-    const double asinh_diff = asinh_difference(H, V_A, V_B, T_A, T_B, W0 * L);
-    dx_dh = (asinh_diff - (V_B / T_B - V_A / T_A)) / W0;
-  }
-  Eigen::Matrix2d J;
-  J << dx_dh + compliance_l, cross, cross, dz_dv + compliance_l;
-  return J;
-}
 
 StaticSolution solve_vertical(const Problem& problem) {
   const CableProperties& cable = problem.cable;
@@ -226,9 +165,63 @@ void StaticsOptions::validate() const {
 StaticSolution::StaticSolution(const CableProperties& cable, const Vec2& a_m, double H, double V_A)
     : cable_(cable), a_m_(a_m), H_(H), V_A_(V_A) {}
 
+StaticSolution::StaticSolution(const Line& line, const Vec2& a_m, double H, double V_A)
+    : line_(line), pieces_(internal::build_line_pieces(line, H, V_A)), a_m_(a_m), H_(H), V_A_(V_A) {
+  // cable() of a general line carries its total length; the sections are per piece.
+  cable_ = pieces_.front().section;
+  cable_.length_m = line.length_m();
+}
+
+const StaticPiece& StaticSolution::piece_at(double s) const {
+  auto after = std::upper_bound(pieces_.begin(), pieces_.end(), s,
+                                [](double value, const StaticPiece& piece) { return value < piece.s_begin_m; });
+  return after == pieces_.begin() ? pieces_.front() : *(after - 1);
+}
+
+LineSegment StaticSolution::segment_at(double s) const {
+  if (!is_line()) return line_of_cable(cable_).segments.front();
+  return line_.segments[piece_at(s).segment];
+}
+
+double StaticSolution::vertical_force_n(double s) const {
+  if (!is_line()) return V_A_ + cable_.weight_n_per_m * s;
+  const StaticPiece& piece = piece_at(s);
+  return piece.vertical_begin_n + piece.section.weight_n_per_m * (s - piece.s_begin_m);
+}
+
+double StaticSolution::vertical_force_before_n(double s) const {
+  if (!is_line()) return vertical_force_n(s);
+  auto at = std::lower_bound(pieces_.begin(), pieces_.end(), s,
+                             [](const StaticPiece& piece, double value) { return piece.s_begin_m < value; });
+  const StaticPiece& piece = at == pieces_.begin() ? pieces_.front() : *(at - 1);
+  return piece.vertical_begin_n + piece.section.weight_n_per_m * (s - piece.s_begin_m);
+}
+
+double StaticSolution::lowest_point_s_m() const {
+  // Candidates: the ends of every piece and, inside a sagging piece, where V changes sign.
+  const double L = cable_.length_m;
+  double best_s = 0.0;
+  double best_z = position_m(0.0).y();
+  auto consider = [&](double s) {
+    const double z = position_m(s).y();
+    if (z < best_z) best_z = z, best_s = s;
+  };
+  consider(L);
+  const std::vector<StaticPiece> whole{StaticPiece{cable_, 0, 0.0, V_A_, Vec2::Zero(), 0.0}};
+  for (const StaticPiece& piece : is_line() ? pieces_ : whole) {
+    consider(piece.s_begin_m);
+    const double W = piece.section.weight_n_per_m;
+    if (W <= 0.0 || piece.vertical_begin_n >= 0.0) continue;
+    const double apex = piece.s_begin_m - piece.vertical_begin_n / W;
+    if (apex < piece.s_begin_m + piece.section.length_m) consider(apex);
+  }
+  return best_s;
+}
+
 double StaticSolution::tension_n(double s) const { return std::hypot(H_, vertical_force_n(s)); }
 
 double StaticSolution::strain(double s) const {
+  if (is_line()) return tension_n(s) * inverse_stiffness(piece_at(s).section);
   return tension_n(s) * inverse_stiffness(cable_);
 }
 
@@ -244,19 +237,17 @@ Vec2 StaticSolution::normal(double s) const {
   return {-t.y(), t.x()};
 }
 
-Vec2 StaticSolution::offset_m(double s) const { return offset(cable_, H_, V_A_, s); }
+Vec2 StaticSolution::offset_m(double s) const {
+  if (!is_line()) return offset(cable_, H_, V_A_, s);
+  const StaticPiece& piece = piece_at(s);
+  return piece.offset_begin_m + offset(piece.section, H_, piece.vertical_begin_n, s - piece.s_begin_m);
+}
 
 double StaticSolution::stretched_length_m(double s) const {
-  // s + (1/EA) int T ds, with int T ds = (V T + H^2 asinh(V/H)) / (2 W0) between the ends.
-  const double compliance = inverse_stiffness(cable_);
-  if (compliance == 0.0) return s;
-  const double W0 = cable_.weight_n_per_m;
-  const double V = vertical_force_n(s);
-  const double T = tension_n(s);
-  const double T_A = tension_n(0.0);
-  double integral = 0.5 * (V * T - V_A_ * T_A) / W0;
-  if (H_ > 0.0) integral += 0.5 * H_ * H_ * asinh_difference(H_, V_A_, V, T_A, T, W0 * s) / W0;
-  return s + compliance * integral;
+  if (!is_line()) return internal::stretched_increment(cable_, H_, V_A_, s);
+  const StaticPiece& piece = piece_at(s);
+  return piece.stretched_begin_m +
+         internal::stretched_increment(piece.section, H_, piece.vertical_begin_n, s - piece.s_begin_m);
 }
 
 std::string StaticSolution::brief_report() const {
@@ -274,6 +265,7 @@ Vec2 catenary_end_offset(const CableProperties& cable, double H, double V_A) {
 StaticSolution solve_statics(const Problem& problem, const StaticsOptions& options) {
   problem.validate();
   options.validate();
+  if (!problem.is_uniform()) return solve_line_statics(problem, options);
   const CableProperties& cable = problem.cable;
   const Vec2 chord = problem.supports.chord_m();
   const double d = chord.norm();

@@ -124,6 +124,12 @@ SceneResult run_scene(const Scene& scene, const SceneRunOptions& options) {
     result.wall_time_s = seconds_since(start);
     return result;
   }
+  // A request for no modes and no forcing is a statics-only scene: no solver runs.
+  const SolveRequest& request = result.request;
+  if (request.inplane_modes == 0 && request.outofplane_modes == 0 && !request.forced) {
+    result.wall_time_s = seconds_since(start);
+    return result;
+  }
   run_solvers(result, options, limits);
   if (options.perturbation) apply_perturbation(*options.perturbation, result.outputs);
   if (options.checks && result.error.empty()) result.checks = internal::run_checks(result, options.tolerances, options.findings);

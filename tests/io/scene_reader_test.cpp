@@ -138,6 +138,7 @@ std::vector<BadScene> bad_scenes() {
       {"unknown top-level key", "foo = 1\n" + kCable, true, {"foo", "unknown key"}},
       {"missing key", "[cable]\nlength = 1.0\n", true, {"[cable].weight", "missing"}},
       {"no cable table", "name = \"x\"\n", true, {"exactly one of"}},
+      {"cable and line", kCable + "[line]\na = [0.0, 0.0]\nb = [1.0, 0.0]\n", true, {"exactly one of", "found 2"}},
       {"two cable forms", kCable + "[gale]\nxi1 = -0.1\nxi2 = 0.1\n", true, {"exactly one of", "found 2"}},
       {"coincident supports", cable_with("b", "[0.0, 0.0]"), false, {"[cable]", "coincide"}},
       {"b left of a", cable_with("b", "[-900.0, 300.0]"), false, {"[cable]", "left of"}},
@@ -145,7 +146,7 @@ std::vector<BadScene> bad_scenes() {
       {"negative mode count", kCable + "[request]\ninplane_modes = -2\n", false, {"[request].inplane_modes", "[0, 1000]"}},
       {"modes as float", kCable + "[request]\ninplane_modes = 2.5\n", true, {"[request].inplane_modes", "integer"}},
       {"one point", kCable + "[request]\npoints = 1\n", false, {"[request].points"}},
-      {"nothing asked", kCable + "[request]\ninplane_modes = 0\n", false, {"asks for nothing"}},
+      // A request for no modes and no forcing is a statics-only scene (line_scene_reader_test.cpp).
       {"unknown request key", kCable + "[request]\nmodes = 3\n", true, {"[request].modes", "unknown key"}},
       {"bad forcing direction", kCable + "[request.forced]\ndirection = \"up\"\nfrequencies = [1.0]\n", false,
        {"[request.forced].direction", "tangential"}},

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "catena/core/types.hpp"
+#include "catena/models/line.hpp"
 
 namespace catena {
 
@@ -72,8 +73,12 @@ struct EndForces {
 };
 
 /// A cable between two fixed supports: the input of statics and of every solver.
+/// Either a uniform cable (`cable`, with `line` empty) or a general line (`line`: several
+/// segments and point attachments; `cable` is then unused).
 struct Problem {
   CableProperties cable;
+  /// A general line; empty segments mean the uniform `cable`.
+  Line line;
   Supports supports;
   ProblemForm form = ProblemForm::Physical;
   /// When set, the static state is these end forces and `supports.b_m` must be where they put
@@ -82,7 +87,15 @@ struct Problem {
   /// eps = 1e-6, so a tension-specified problem must not be re-solved from its geometry.
   std::optional<EndForces> prescribed_forces;
 
-  /// Validates the cable and the supports (not reachability: statics checks that).
+  /// True for the uniform `cable` (line.segments empty).
+  bool is_uniform() const { return line.segments.empty(); }
+  /// The line either way: `line`, or the one segment of `cable`.
+  Line as_line() const;
+  /// Total unstretched length [m].
+  double length_m() const { return is_uniform() ? cable.length_m : line.length_m(); }
+
+  /// Validates the cable (or the line) and the supports (not reachability: statics checks that).
+  /// A general line cannot have prescribed forces.
   void validate() const;
 };
 

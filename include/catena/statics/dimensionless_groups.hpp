@@ -14,6 +14,13 @@ namespace catena {
 /// Groups of the taut inclined cable (Grinfogel 1984; docs/references.md) and of the suspended catenary
 /// (Gale 1976; docs/references.md).
 struct DimensionlessGroups {
+  /// True for a uniform cable. For a general line (docs/physics.md, "General lines") the groups of
+  /// Grinfogel and Gale mean nothing: only chord_angle_rad, t0_n (the larger end tension),
+  /// mass_ratio and taut_frequency_scale_rad_s (with the length-averaged normal mass, so that kL/pi
+  /// stays a frequency unit) are set; eps, lambda2 and s_a are 0 and not reported, and Gale's
+  /// parameterization is absent.
+  bool uniform = true;
+
   // --- taut inclined cable (Grinfogel 1984) ---
   /// phi_a: inclination of the chord a -> b above the horizontal [rad], in (-pi/2, pi/2].
   double chord_angle_rad = 0.0;

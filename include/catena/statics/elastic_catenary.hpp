@@ -15,6 +15,7 @@
 /// V > 0 along its whole length).
 
 #include <string>
+#include <vector>
 
 #include "catena/core/types.hpp"
 #include "catena/models/cable.hpp"
@@ -32,22 +33,58 @@ struct StaticsOptions {
   void validate() const;
 };
 
+/// One piece of a general line's statics: the part of one segment between consecutive joints or
+/// point attachments, a closed-form elastic catenary (a straight bar when its weight is zero).
+struct StaticPiece {
+  /// The segment's section, with length_m = the piece's unstretched length.
+  CableProperties section;
+  /// Index of the segment in Line::segments.
+  std::size_t segment = 0;
+  /// Unstretched arc length of the piece's start [m].
+  double s_begin_m = 0.0;
+  /// Vertical force just after the start (after any point weight there) [N].
+  double vertical_begin_n = 0.0;
+  /// Offset of the start from support a [m] and stretched length of [0, s_begin] [m].
+  Vec2 offset_begin_m = Vec2::Zero();
+  double stretched_begin_m = 0.0;
+};
+
 /// The static state of the cable: the two end-force unknowns plus closed forms at any s.
 /// Every function of s takes the unstretched arc length s in [0, L] [m].
+///
+/// A general line (docs/physics.md, "General lines") is the same state piecewise: V jumps by the
+/// weight of each point attachment, so at a point every function of s gives the value just beyond
+/// it (toward b; the `_before_` variants give the value on the side of a).
 class StaticSolution {
  public:
   StaticSolution() = default;
   /// The equilibrium with horizontal force `H` [N] and vertical force `V_A` [N] at support `a`.
   StaticSolution(const CableProperties& cable, const Vec2& a_m, double H, double V_A);
+  /// The equilibrium of a general line (validated) with forces (H, V_A) at support `a`.
+  StaticSolution(const Line& line, const Vec2& a_m, double H, double V_A);
 
+  /// The uniform cable. For a general line only length_m (the total) is meaningful: use
+  /// segment_at() for the section at s.
   const CableProperties& cable() const { return cable_; }
+  /// True for a general line (built from a Line).
+  bool is_line() const { return !pieces_.empty(); }
+  /// The line (one segment for a uniform cable).
+  Line line() const { return is_line() ? line_ : line_of_cable(cable_); }
+  /// Pieces of a general line in order from a (empty for a uniform cable).
+  const std::vector<StaticPiece>& pieces() const { return pieces_; }
+  /// The section at s (at a joint: the segment toward b).
+  LineSegment segment_at(double s) const;
+  /// V on the side of a of s [N]: V(s) minus the weight of a point attachment at s.
+  double vertical_force_before_n(double s) const;
+  /// Arc length of the lowest point of the line [m].
+  double lowest_point_s_m() const;
   /// H: horizontal component of the tension, constant along the cable [N].
   double horizontal_force_n() const { return H_; }
   /// V_A: vertical component of the tension at s = 0 (along t, i.e. toward b) [N].
   double vertical_force_a_n() const { return V_A_; }
 
-  /// V(s) = V_A + W0 s [N].
-  double vertical_force_n(double s) const { return V_A_ + cable_.weight_n_per_m * s; }
+  /// V(s) = V_A + W0 s [N] (piecewise on a general line).
+  double vertical_force_n(double s) const;
   /// T(s) = sqrt(H^2 + V^2) [N].
   double tension_n(double s) const;
   /// e(s) = T/EA (0 when inextensible) [-].
@@ -80,7 +117,12 @@ class StaticSolution {
   std::string brief_report() const;
 
  private:
+  /// The piece containing s (at a break: the one toward b).
+  const StaticPiece& piece_at(double s) const;
+
   CableProperties cable_;
+  Line line_;
+  std::vector<StaticPiece> pieces_;
   Vec2 a_m_ = Vec2::Zero();
   double H_ = 0.0;
   double V_A_ = 0.0;
@@ -104,6 +146,8 @@ Vec2 catenary_end_offset(const CableProperties& cable, double H, double V_A);
 /// - a Newton iteration that does not close the chord is a numerical outcome: the result is
 ///   returned with `converged == false` and `message` saying why (closure error, tolerance,
 ///   iterations). Callers check `converged` before using the solution.
+/// A general line (Problem::is_uniform() false) is solved by solve_line_statics
+/// (catena/statics/line_statics.hpp).
 StaticSolution solve_statics(const Problem& problem, const StaticsOptions& options = {});
 
 }  // namespace catena

@@ -1,0 +1,77 @@
+#pragma once
+/// \file
+/// A general line (docs/physics.md, "General lines"): an ordered list of segments from end A to
+/// end B, each with its own section, plus point attachments (clump weights, buoys, anchor heads)
+/// at given unstretched arc lengths from A.
+
+#include <optional>
+#include <vector>
+
+#include "catena/core/types.hpp"
+
+namespace catena {
+
+struct CableProperties;
+
+/// One segment of a line, per unit *unstretched* length.
+struct LineSegment {
+  /// Unstretched length [m]. Finite and > 0.
+  double length_m = 1.0;
+  /// Submerged weight per unit unstretched length [N/m]: > 0 hangs (sagging catenary), 0 is a
+  /// straight bar, < 0 is buoyant (hogging catenary). Finite.
+  double weight_n_per_m = 1.0;
+  /// Axial stiffness EA [N]; +infinity means inextensible.
+  double axial_stiffness_n = kInfinity;
+  /// Structural mass per unit unstretched length [kg/m]. Finite and > 0.
+  double mass_kg_per_m = 1.0;
+  /// Added mass per unit unstretched length in the normal directions [kg/m]. Finite and >= 0.
+  double added_mass_kg_per_m = 0.0;
+
+  double normal_mass_kg_per_m() const { return mass_kg_per_m + added_mass_kg_per_m; }
+  bool is_inextensible() const;
+};
+
+/// A point attachment at unstretched arc length s from A: a lumped mass with a submerged weight.
+struct PointAttachment {
+  /// Unstretched arc length from end A [m], strictly inside the line (0 < s < L).
+  double s_m = 0.0;
+  /// Structural mass [kg]. Finite and >= 0.
+  double mass_kg = 0.0;
+  /// Submerged weight [N]: > 0 a clump weight, < 0 a buoy. Finite.
+  double weight_n = 0.0;
+  /// Added mass [kg], the same in every direction unless the per-direction values are given.
+  /// Finite and >= 0.
+  double added_mass_kg = 0.0;
+  /// Optional added mass along the local static tangent, in-plane normal and out of plane [kg];
+  /// each defaults to added_mass_kg.
+  std::optional<double> added_mass_tangential_kg;
+  std::optional<double> added_mass_normal_kg;
+  std::optional<double> added_mass_outofplane_kg;
+
+  double tangential_added_mass_kg() const { return added_mass_tangential_kg.value_or(added_mass_kg); }
+  double normal_added_mass_kg() const { return added_mass_normal_kg.value_or(added_mass_kg); }
+  double outofplane_added_mass_kg() const { return added_mass_outofplane_kg.value_or(added_mass_kg); }
+};
+
+/// Segments in order from A to B and point attachments in order of s.
+struct Line {
+  std::vector<LineSegment> segments;
+  std::vector<PointAttachment> points;
+
+  /// Total unstretched length [m].
+  double length_m() const;
+  /// Unstretched arc length of the start of segment `index` (index == size: the total length) [m].
+  double segment_start_m(std::size_t index) const;
+  /// True when no segment is extensible.
+  bool is_inextensible() const;
+
+  /// Throws InvalidInput naming the field (`line.segments[2].length`, `line.points[0].s`), its
+  /// value and the constraint: non-finite or out-of-range values, points outside (0, L), points
+  /// not in increasing order of s or closer than 1e-9 L to each other.
+  void validate() const;
+};
+
+/// The line of one uniform cable (one segment, no points).
+Line line_of_cable(const CableProperties& cable);
+
+}  // namespace catena
