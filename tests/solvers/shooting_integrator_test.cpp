@@ -51,14 +51,26 @@ TEST(ShootingIntegrator, InPlaneCountAddsAxialAndTransverseConjugatePoints) {
     const int expected = static_cast<int>(std::floor(q_axial / kPi) + std::floor(q_normal / kPi));
     EXPECT_EQ(shot.count, expected) << omega;
     // det Phi / sqrt(det G) of the diagonal exact frame in the carried variables, where
-    // Phi~' = kappa^2 b F~ and F~' = -(c / kappa^2) Phi~ from F~ = I.
+    // Phi~' = kappa^2 b F~ and F~' = -(c / kappa^2) Phi~ from F~ = I, and the axial row is
+    // stretched by sigma = 1 / sqrt(b_axial) = 2 (axial frame: b_axial -> sigma^2 b_axial = 1).
     const double kappa2 = std::max(omega, 1.0);
-    const double phi_a = kappa2 * 0.25 / q_axial * std::sin(q_axial);
+    const double sigma = axial_stretch(0.25, 0.0);
+    EXPECT_DOUBLE_EQ(sigma, 2.0);
+    const double phi_a = kappa2 * sigma * sigma * 0.25 / q_axial * std::sin(q_axial);
     const double phi_n = kappa2 * 1.25 / q_normal * std::sin(q_normal);
     const double g_a = phi_a * phi_a + std::cos(q_axial) * std::cos(q_axial);
     const double g_n = phi_n * phi_n + std::cos(q_normal) * std::cos(q_normal);
     EXPECT_NEAR(shot.determinant, phi_a * phi_n / std::sqrt(g_a * g_n), 1e-8) << omega;
   }
+}
+
+TEST(ShootingIntegrator, AxialStretchBalancesTheAxialRowAndLeavesDeepSagAlone) {
+  // 1 / max(sqrt(T_ref / EA), tangent spread), within [1, kMaxAxialStretch].
+  EXPECT_DOUBLE_EQ(axial_stretch(1e-10, 1e-6), 1e5);
+  EXPECT_DOUBLE_EQ(axial_stretch(1e-14, 1e-3), 1e3);
+  EXPECT_DOUBLE_EQ(axial_stretch(1e-3, 0.8), 1.25);
+  EXPECT_DOUBLE_EQ(axial_stretch(1e-3, 1.5), 1.0);  // deep sag: nothing to balance
+  EXPECT_DOUBLE_EQ(axial_stretch(0.0, 0.0), kMaxAxialStretch);
 }
 
 TEST(ShootingIntegrator, StationsMapBackThroughTheReorthonormalisations) {
