@@ -47,6 +47,9 @@ void set_axial_frame(const ShootingCoefficients& k, RhsData& data) {
   const double theta_b = std::atan2(k.V_A + k.W0 * k.length_m, k.H);
   const double theta_c = 0.5 * (theta_a + theta_b);
   const double sigma = axial_stretch(k.t_ref * k.compliance, 0.5 * std::abs(theta_b - theta_a));
+  // A cable whose axial component is within kMinAxialStretch of the normal one keeps its digits in
+  // x and y: it is shot as before, in the physical frame (data's identity default).
+  if (sigma < kMinAxialStretch) return;
   Eigen::Matrix2d rotation_t;  // R^T, R = [t_c n_c]
   rotation_t << std::cos(theta_c), std::sin(theta_c), -std::sin(theta_c), std::cos(theta_c);
   data.to_axial = Eigen::Vector2d(sigma, 1.0).asDiagonal() * rotation_t;

@@ -43,7 +43,7 @@
 /// 1e-5, and moving by more with rtol). The shot therefore integrates Phi~ = P Phi^,
 /// F~ = P^{-T} F^ with P = diag(sigma, 1) R^T: R rotates to the mean tangent (the bisector of the
 /// end tangents) and sigma = axial_stretch(...) brings the axial component to the size of the
-/// normal one. P is constant and P, P^{-T} preserve Phi = 0, so the system stays Hamiltonian and
+/// normal one (used when sigma >= kMinAxialStretch). P is constant and P, P^{-T} preserve Phi = 0, so the system stays Hamiltonian and
 /// monotone (B -> P B P^T, C -> P^{-T} C P^{-1}) and the conjugate points, the count and the sign
 /// of the end determinant are those of the physical variables. Results are returned physical.
 
@@ -134,6 +134,10 @@ class ShootingIntegrator {
 
 /// Largest axial stretch sigma (a straight inextensible cable has no axial scale).
 constexpr double kMaxAxialStretch = 1e8;
+/// Below this stretch the axial frame is not used (the shot stays in x and y): the axial
+/// component is then at most 4x smaller than the normal one and loses no significant digits, and
+/// the frequencies of cables with sag stay those of the plain shot.
+constexpr double kMinAxialStretch = 4.0;
 
 /// The axial stretch sigma of the axial frame (header comment) for the scaled axial compliance
 /// T_ref/EA and the largest angle between a tangent and the mean tangent [rad]: 1/max(sqrt(T_ref/EA),
