@@ -38,7 +38,9 @@ json summary_json(const SolverSummary& summary) {
           {key::max_residual, number(summary.max_residual)},
           {key::wall_time_s, number(summary.wall_time_s)},
           {key::warnings, summary.warnings},
-          {key::notes, summary.notes}};
+          {key::notes, summary.notes},
+          {key::accuracy_target, number(summary.accuracy_target)},
+          {key::missed_modes, summary.missed_modes}};
 }
 
 json mode_json(const Mode& mode) {
@@ -47,7 +49,8 @@ json mode_json(const Mode& mode) {
               {key::frequency_hz, number(mode.frequency_hz)},
               {key::k_l_over_pi, number(mode.k_l_over_pi)},
               {key::gale_ratio, mode.gale_ratio ? number(*mode.gale_ratio) : json(nullptr)},
-              {key::relative_error_estimate, number(mode.relative_error_estimate)}};
+              {key::relative_error_estimate, number(mode.relative_error_estimate)},
+              {key::meets_target, mode.meets_target}};
   if (mode.max_abs_tension_n >= 0.0) out[key::max_abs_tension_n] = number(mode.max_abs_tension_n);
   if (mode.modal_mass_kg >= 0.0) out[key::modal_mass_kg] = number(mode.modal_mass_kg);
   if (mode.s_m.size()) {

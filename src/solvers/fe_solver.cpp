@@ -36,7 +36,10 @@ const KnobTable<FeSolverOptions>& fe_knobs() {
              real_knob("kappa", &O::kappa, Range::open_closed(0.0, 1e-2),
                        "inextensible cables: penalty H/EA (and 2 kappa, extrapolated to 0)"),
              flag_knob("observed_order", &O::observed_order,
-                       "also solve 4N and report the observed convergence order")});
+                       "also solve 4N and report the observed convergence order"),
+             real_knob("tolerance", &O::tolerance, Range::closed(0.0, 1.0),
+                       "accuracy target of each frequency [-]: a mode whose error estimate exceeds "
+                       "it is named and the plane not converged (0: none)")});
   return table;
 }
 
@@ -227,6 +230,7 @@ ModalResult FeNumerics::modes(Plane plane, int count) {
   ModalResult result;
   SolverSummary& summary = result.summary;
   summary.resolution = fe_resolution(plan_);
+  if (options_.tolerance > 0.0) summary.accuracy_target = options_.tolerance;
   WorkMeter meter(context_, "fe", std::string(to_string(plane)) + " eigen solves (mesh levels)", level_count(levels_));
   const FePlaneEigenReport eigen = solve_level_modes(levels_, plane, count, options_, timings_, &meter);
   summary.termination = eigen.termination;

@@ -179,6 +179,7 @@ void FrobeniusNumerics::summarise_plane(Plane plane, int count, const PlaneRoots
   const bool converged = static_cast<int>(found.roots.size()) == count && !found.work.truncated &&
                          worst <= std::max(options_.tolerance, 1e-14) * 10.0;
   SolverSummary& summary = result.summary;
+  summary.accuracy_target = std::max(options_.tolerance, 1e-14) * 10.0;  // the skeleton names misses
   summary.termination = converged ? Termination::Converged
                                   : (found.roots.empty() ? Termination::NumericalFailure : Termination::NoConvergence);
   summary.message = fmt::format("{}: {} of {} {} modes, max relative error estimate {:g} {} {:g}{}",

@@ -83,11 +83,18 @@ IntegratorSettings integrator_settings(const ShootingSolverOptions& options) {
   return settings;
 }
 
+// The accuracy each frequency is asked for: the integration's 10 rtol (what a shot at rtol
+// typically moves a root by; the error estimate measures it) plus the final bracket's width.
+double accuracy_target(const ShootingSolverOptions& options) {
+  return 10.0 * options.relative_tolerance + options.effective_root_tolerance();
+}
+
 RootFinderSettings root_finder_settings(const ShootingSolverOptions& options) {
   RootFinderSettings settings;
   settings.relative_tolerance = options.relative_tolerance;
   settings.root_tolerance = options.effective_root_tolerance();
   settings.error_estimate = options.error_estimate;
+  settings.target = accuracy_target(options);
   return settings;
 }
 
@@ -164,6 +171,7 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
   ModalResult result;
   SolverSummary& summary = result.summary;
   summary.resolution = resolution(options_);
+  summary.accuracy_target = accuracy_target(options_);
   const bool string_only = plane == Plane::InPlane && is_straight_inextensible(k_);
   if (string_only) {
     summary.notes.push_back(
@@ -242,10 +250,12 @@ void ShootingNumerics::finish_summary(const ShootingRootFinder& finder,
       summary.max_error_estimate);
   summary.notes.push_back(fmt::format(
       "{} shots, {} CVODE steps, {} RHS evaluations; principal pair re-orthonormalised {} times "
-      "(max log volume growth {:.3g}); max phase defect {:.2e} rad ({} re-shots for phase)",
+      "(max log volume growth {:.3g}); max phase defect {:.2e} rad ({} re-shots for phase); {} "
+      "refinements at tighter tolerances for estimates above the target {:.2g}",
       finder.shots(), integrator.total_steps(), integrator.total_rhs_evaluations(),
       integrator.total_reorthonormalisations(), integrator.max_log_growth(),
-      finder.max_phase_defect(), finder.phase_retries()));
+      finder.max_phase_defect(), finder.phase_retries(), finder.tightened(),
+      summary.accuracy_target));
 }
 
 }  // namespace

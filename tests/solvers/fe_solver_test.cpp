@@ -359,14 +359,34 @@ TEST(FeSolverOptions, RegistryKnobsAreValidated) {
   EXPECT_NEAR(*output.inplane->modes[0].gale_ratio, 2.59, 0.005);
 }
 
+TEST(FeSolverOptions, AToleranceNamesTheModesWhoseEstimateExceedsIt) {
+  // At N = 400 the Richardson estimates of a taut cable's modes are ~1e-6..1e-5: a target of
+  // 1e-12 is missed by every mode, and the plane says so.
+  const Problem problem = make_taut_inclined_problem(0.1, 30.0, 10.0, 1.0);
+  FeSolverOptions options;
+  options.tolerance = 1e-12;
+  const Solved solved = catena::testing::solve_problem(solve_fe, problem, modes_request(3, 0), options);
+  const ModalResult& plane = *solved.output.inplane;
+  EXPECT_EQ(plane.summary.termination, Termination::NoConvergence);
+  EXPECT_DOUBLE_EQ(plane.summary.accuracy_target, 1e-12);
+  EXPECT_EQ(plane.summary.missed_modes.size(), 3u);
+  for (const Mode& mode : plane.modes) EXPECT_FALSE(mode.meets_target);
+  options.tolerance = 0.0;  // none asked: converged as before
+  const Solved untargeted = catena::testing::solve_problem(solve_fe, problem, modes_request(3, 0), options);
+  EXPECT_EQ(untargeted.output.summary.termination, Termination::Converged);
+  EXPECT_TRUE(untargeted.output.summary.missed_modes.empty());
+}
+
 TEST(FeSolverOptions, KnobTableKeepsTheSceneKnobs) {
   const SolverEntry* entry = find_solver("fe");
   ASSERT_NE(entry, nullptr);
-  ASSERT_EQ(entry->knobs.size(), 4u);
+  ASSERT_EQ(entry->knobs.size(), 5u);
   EXPECT_EQ(entry->knobs[0].name, "elements");
   EXPECT_EQ(entry->knobs[1].name, "richardson");
   EXPECT_EQ(entry->knobs[2].name, "kappa");
   EXPECT_EQ(entry->knobs[3].name, "observed_order");
+  EXPECT_EQ(entry->knobs[4].name, "tolerance");
+  expect_invalid([&] { entry->validate_knobs({{"tolerance", -1e-9}}); }, "[solvers.fe].tolerance");
   expect_invalid([&] { entry->validate_knobs({{"elements", 50'000'001L}}); }, "[solvers.fe].elements");
   expect_invalid([&] { entry->validate_knobs({{"kappa", 0.02}}); }, "[solvers.fe].kappa");
   expect_invalid([&] { entry->validate_knobs({{"richardson", 1L}}); }, "[solvers.fe].richardson");

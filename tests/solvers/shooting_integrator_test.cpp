@@ -43,22 +43,46 @@ TEST(ShootingIntegrator, OutOfPlaneShotMatchesTheStringSolution) {
   EXPECT_GE(integrator.total_rhs_evaluations(), integrator.total_steps());
 }
 
-TEST(ShootingIntegrator, InPlaneCountAddsAxialAndTransverseConjugatePoints) {
-  ShootingIntegrator integrator(Plane::InPlane, kString, tight());
+// The in-plane shot of a horizontal string of axial compliance b_axial = T/EA against the exact
+// diagonal frame: counts, and det Phi / sqrt(det G) in the carried variables, where
+// Phi~' = kappa^2 b F~ and F~' = -(c / kappa^2) Phi~ from F~ = I, the axial row stretched by
+// sigma (axial frame: b_axial -> sigma^2 b_axial) when sigma >= kMinAxialStretch.
+void expect_exact_inplane_shots(double ea, double expected_sigma) {
+  const ShootingCoefficients string = testing::horizontal_string(1.0, 1.0, ea);
+  const double b_axial = 1.0 / ea, b_normal = 1.0 + 1.0 / ea;
+  const double sigma = axial_stretch(b_axial, 0.0);
+  const double used = sigma >= kMinAxialStretch ? sigma : 1.0;
+  EXPECT_DOUBLE_EQ(used, expected_sigma);
+  ShootingIntegrator integrator(Plane::InPlane, string, tight());
   for (double omega : {1.0, 3.0, 7.0, 13.0}) {
     const Shot shot = integrator.shoot(omega);
-    const double q_axial = 0.5 * omega, q_normal = std::sqrt(1.25) * omega;
+    const double q_axial = std::sqrt(b_axial) * omega, q_normal = std::sqrt(b_normal) * omega;
     const int expected = static_cast<int>(std::floor(q_axial / kPi) + std::floor(q_normal / kPi));
     EXPECT_EQ(shot.count, expected) << omega;
-    // det Phi / sqrt(det G) of the diagonal exact frame in the carried variables, where
-    // Phi~' = kappa^2 b F~ and F~' = -(c / kappa^2) Phi~ from F~ = I.
     const double kappa2 = std::max(omega, 1.0);
-    const double phi_a = kappa2 * 0.25 / q_axial * std::sin(q_axial);
-    const double phi_n = kappa2 * 1.25 / q_normal * std::sin(q_normal);
+    const double phi_a = kappa2 * used * used * b_axial / q_axial * std::sin(q_axial);
+    const double phi_n = kappa2 * b_normal / q_normal * std::sin(q_normal);
     const double g_a = phi_a * phi_a + std::cos(q_axial) * std::cos(q_axial);
     const double g_n = phi_n * phi_n + std::cos(q_normal) * std::cos(q_normal);
     EXPECT_NEAR(shot.determinant, phi_a * phi_n / std::sqrt(g_a * g_n), 1e-8) << omega;
   }
+}
+
+TEST(ShootingIntegrator, InPlaneCountAddsAxialAndTransverseConjugatePoints) {
+  expect_exact_inplane_shots(4.0, 1.0);  // sigma = 2 < kMinAxialStretch: physical frame
+}
+
+TEST(ShootingIntegrator, AxialFrameKeepsCountsAndTheExactStretchedDeterminant) {
+  expect_exact_inplane_shots(100.0, 10.0);  // sigma = 1 / sqrt(1/100) = 10
+}
+
+TEST(ShootingIntegrator, AxialStretchBalancesTheAxialRowAndLeavesDeepSagAlone) {
+  // 1 / max(sqrt(T_ref / EA), tangent spread), within [1, kMaxAxialStretch].
+  EXPECT_DOUBLE_EQ(axial_stretch(1e-10, 1e-6), 1e5);
+  EXPECT_DOUBLE_EQ(axial_stretch(1e-14, 1e-3), 1e3);
+  EXPECT_DOUBLE_EQ(axial_stretch(1e-3, 0.8), 1.25);
+  EXPECT_DOUBLE_EQ(axial_stretch(1e-3, 1.5), 1.0);  // deep sag: nothing to balance
+  EXPECT_DOUBLE_EQ(axial_stretch(0.0, 0.0), kMaxAxialStretch);
 }
 
 TEST(ShootingIntegrator, StationsMapBackThroughTheReorthonormalisations) {

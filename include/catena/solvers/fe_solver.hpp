@@ -105,6 +105,10 @@ struct FeSolverOptions {
   /// Gale's catenaries (N = 800) the extrapolated frequencies at kappa = 1e-6 agree with those at
   /// 1e-5 to ~1e-7 relative, and at 1e-7 rounding reaches ~1e-6. Hence the default 1e-6.
   double kappa = 1e-6;
+  /// Accuracy target of each frequency [-], in [0, 1]; 0: none. A mode whose error estimate
+  /// exceeds it is listed in the plane's SolverSummary::missed_modes and the plane is
+  /// NoConvergence (fe does not refine: a finer mesh is the user's choice).
+  double tolerance = 0.0;
   /// Spectra convergence tolerance on the Ritz values of the shift-inverted operator (relative).
   /// In (0, 1e-4].
   double eigen_tolerance = 1e-13;

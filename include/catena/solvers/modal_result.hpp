@@ -35,6 +35,10 @@ struct Mode {
   /// tolerance): the modes of that root share one frequency. Equal frequencies are accepted only
   /// within such a root.
   int multiplicity = 1;
+  /// False when relative_error_estimate exceeds the accuracy target of the plane's summary
+  /// (SolverSummary::accuracy_target), or there is no estimate to compare: the solver was asked
+  /// for an accuracy and does not claim it for this mode (the summary lists it in missed_modes).
+  bool meets_target = true;
 
   /// Present when shapes were asked: stations s [m] and the normalised displacements there.
   Vector s_m;

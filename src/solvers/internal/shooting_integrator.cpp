@@ -34,7 +34,42 @@ struct RhsData {
   // (a Pruefer angle of unbalanced variables turns in bursts and costs CVODE many steps).
   double kappa2 = 1.0;
   bool from_b = false;
+  // In plane, the constant symplectic change of variables Phi~ = P Phi^, F~ = P^{-T} F^ into the
+  // axial frame (axial_frame in the header): P = diag(sigma, 1) R^T, Q = P^{-T}.
+  Eigen::Matrix2d to_axial = Eigen::Matrix2d::Identity();
+  Eigen::Matrix2d to_axial_force = Eigen::Matrix2d::Identity();
 };
+
+// The axial frame of the header: a constant rotation to the mean tangent (the bisector of the
+// end tangents) and the axial stretch sigma.
+void set_axial_frame(const ShootingCoefficients& k, RhsData& data) {
+  const double theta_a = std::atan2(k.V_A, k.H);
+  const double theta_b = std::atan2(k.V_A + k.W0 * k.length_m, k.H);
+  const double theta_c = 0.5 * (theta_a + theta_b);
+  const double sigma = axial_stretch(k.t_ref * k.compliance, 0.5 * std::abs(theta_b - theta_a));
+  // A cable whose axial component is within kMinAxialStretch of the normal one keeps its digits in
+  // x and y: it is shot as before, in the physical frame (data's identity default).
+  if (sigma < kMinAxialStretch) return;
+  Eigen::Matrix2d rotation_t;  // R^T, R = [t_c n_c]
+  rotation_t << std::cos(theta_c), std::sin(theta_c), -std::sin(theta_c), std::cos(theta_c);
+  data.to_axial = Eigen::Vector2d(sigma, 1.0).asDiagonal() * rotation_t;
+  data.to_axial_force = Eigen::Vector2d(1.0 / sigma, 1.0).asDiagonal() * rotation_t;
+}
+
+// [Phi^; F^] of the carried basis [Phi~; F~]: undoes the balancing and the axial frame; from b
+// the force was carried as -F^.
+template <int D>
+Basis<D> to_physical(const Basis<D>& carried, const RhsData& data) {
+  const double kappa = std::sqrt(data.kappa2);
+  Basis<D> out = carried;
+  out.template topRows<D>() /= kappa;
+  out.template bottomRows<D>() *= data.from_b ? -kappa : kappa;
+  if constexpr (D == 2) {
+    out.template topRows<D>() = data.to_axial_force.transpose() * out.template topRows<D>();
+    out.template bottomRows<D>() = data.to_axial.transpose() * out.template bottomRows<D>();
+  }
+  return out;
+}
 
 // B and C of the scaled system at x (see the header). From b the variable is x' = 1 - s/L and the
 // force is carried as -F^, which leaves the equations unchanged.
@@ -54,8 +89,10 @@ void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C) 
     const Vec2 t(k.H / T, V / T);
     const Vec2 n(-t.y(), t.x());
     const double mass_ratio = k.m / k.M;
-    B = data.kappa2 * (b_tangent * t * t.transpose() + b_normal * n * n.transpose());
-    C = (data.omega2 / data.kappa2) * (mass_ratio * t * t.transpose() + n * n.transpose());
+    const Vec2 tp = data.to_axial * t, np = data.to_axial * n;
+    const Vec2 tq = data.to_axial_force * t, nq = data.to_axial_force * n;
+    B = data.kappa2 * (b_tangent * tp * tp.transpose() + b_normal * np * np.transpose());
+    C = (data.omega2 / data.kappa2) * (mass_ratio * tq * tq.transpose() + nq * nq.transpose());
   }
 }
 
@@ -102,8 +139,8 @@ int jacobian(
 template <int D>
 class StationRecorder {
  public:
-  StationRecorder(Shot& shot, const std::vector<double>* stations, double kappa, bool from_b)
-      : shot_(shot), stations_(stations), kappa_(kappa), from_b_(from_b) {}
+  StationRecorder(Shot& shot, const std::vector<double>* stations, const RhsData& data)
+      : shot_(shot), stations_(stations), data_(data) {}
 
   /// Whether the next station lies at or before x.
   bool next_at_or_before(double x) const {
@@ -113,11 +150,7 @@ class StationRecorder {
 
   /// Records `basis` at the next station.
   void record(const Basis<D>& basis) {
-    Basis<D> out = basis;
-    // Undo the rescaling; from b the force was carried as -F^.
-    out.template topRows<D>() /= kappa_;
-    out.template bottomRows<D>() *= from_b_ ? -kappa_ : kappa_;
-    shot_.station_y.emplace_back(out);
+    shot_.station_y.emplace_back(to_physical<D>(basis, data_));
     shot_.station_segment.push_back(static_cast<int>(shot_.segment_r.size()));
     ++next_;
   }
@@ -130,8 +163,7 @@ class StationRecorder {
  private:
   Shot& shot_;
   const std::vector<double>* stations_;
-  double kappa_;
-  bool from_b_;
+  const RhsData& data_;
   std::size_t next_ = 0;
 };
 
@@ -191,6 +223,7 @@ struct ShootingIntegrator::Impl {
         cvode(s.use_bdf ? CV_BDF : CV_ADAMS, context.get()) {
     data.coefficients = coefficients;
     data.dimension = dimension;
+    if (dimension == 2) set_axial_frame(coefficients, data);
     if (!context.ok() || !y.ok() || !scratch.ok() || !matrix.ok() || !linear_solver.ok() ||
         !cvode.ok()) {
       throw ShootingFailure("could not allocate the SUNDIALS objects");
@@ -226,7 +259,7 @@ struct ShootingIntegrator::Impl {
              const std::vector<double>* stations,
              bool from_b);
   template <int D>
-  double begin_shot(double omega, double tolerance_factor, bool from_b);
+  void begin_shot(double omega, double tolerance_factor, bool from_b);
   template <int D>
   void integrate(Shot& shot, StationRecorder<D>& recorder, bool from_b);
   template <int D>
@@ -234,7 +267,7 @@ struct ShootingIntegrator::Impl {
   template <int D>
   void restart(Shot& shot, double x, StepCounts& finished);
   template <int D>
-  void finish_shot(Shot& shot, double kappa, bool from_b);
+  void finish_shot(Shot& shot);
   void add_segment_counts(StepCounts& counts) const;
 
   IntegratorSettings settings;
@@ -256,9 +289,9 @@ struct ShootingIntegrator::Impl {
 };
 
 // Sets the frequency and the balancing, starts the principal solutions at Phi = 0, F = I and
-// re-initialises CVODE with the tolerances scaled by `tolerance_factor`; returns kappa.
+// re-initialises CVODE with the tolerances scaled by `tolerance_factor`.
 template <int D>
-double ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor, bool from_b) {
+void ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor, bool from_b) {
   data.omega2 = data.coefficients.scaled_omega2(omega);
   data.kappa2 = settings.balance ? std::max(std::sqrt(data.omega2), 1.0) : 1.0;
   data.from_b = from_b;
@@ -278,7 +311,6 @@ double ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_facto
   scratch.data()[2 * D * D] = std::max(atol, 1e-6);
   check(CVodeSVtolerances(mem, rtol, scratch.get()), "CVodeSVtolerances");
   check(CVodeSetStopTime(mem, 1.0), "CVodeSetStopTime");
-  return std::sqrt(data.kappa2);
 }
 
 // Stations passed by the last step (ending at x), from CVODE's interpolant.
@@ -340,13 +372,10 @@ void ShootingIntegrator::Impl::integrate(Shot& shot, StationRecorder<D>& recorde
 
 // The unscaled end basis, the count and the determinant of the shot, and the running totals.
 template <int D>
-void ShootingIntegrator::Impl::finish_shot(Shot& shot, double kappa, bool from_b) {
+void ShootingIntegrator::Impl::finish_shot(Shot& shot) {
   const double* state = y.data();
   const Eigen::Map<const Basis<D>> Y(state);
-  Basis<D> end = Y;
-  end.template topRows<D>() /= kappa;
-  end.template bottomRows<D>() *= from_b ? -kappa : kappa;
-  shot.y_end = end;
+  shot.y_end = to_physical<D>(Y, data);
   // Count and determinant use the carried (Hamiltonian-form) basis Y.
   const Square<D> Phi = Y.template topRows<D>();
   const Square<D> F = Y.template bottomRows<D>();
@@ -369,13 +398,13 @@ Shot ShootingIntegrator::Impl::shoot(double omega,
                                      bool from_b) {
   Shot shot;
   shot.omega_rad_s = omega;
-  const double kappa = begin_shot<D>(omega, tolerance_factor, from_b);
-  StationRecorder<D> recorder(shot, stations, kappa, from_b);
+  begin_shot<D>(omega, tolerance_factor, from_b);
+  StationRecorder<D> recorder(shot, stations, data);
   const Eigen::Map<const Basis<D>> Y(y.data());
   while (recorder.next_at_or_before(0.0)) recorder.record(Y);
   integrate<D>(shot, recorder, from_b);
   recorder.record_rest(Y);
-  finish_shot<D>(shot, kappa, from_b);
+  finish_shot<D>(shot);
   return shot;
 }
 ShootingIntegrator::ShootingIntegrator(Plane plane,
@@ -392,6 +421,11 @@ Shot ShootingIntegrator::shoot(double omega_rad_s,
   if (impl_->dimension == 2)
     return impl_->shoot<2>(omega_rad_s, tolerance_factor, stations_x, from_b);
   return impl_->shoot<1>(omega_rad_s, tolerance_factor, stations_x, from_b);
+}
+
+double axial_stretch(double axial_compliance, double tangent_spread) {
+  const double axial_scale = std::max(std::sqrt(axial_compliance), tangent_spread);
+  return axial_scale > 0.0 ? std::clamp(1.0 / axial_scale, 1.0, kMaxAxialStretch) : kMaxAxialStretch;
 }
 
 long ShootingIntegrator::total_steps() const { return impl_->total_steps; }

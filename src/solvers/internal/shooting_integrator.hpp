@@ -34,6 +34,18 @@
 /// (a constant symplectic scaling: B -> kappa^2 B, C -> C / kappa^2). It balances B and C for the
 /// transverse wave so that the phase turns at a nearly uniform rate; unbalanced, the Pruefer-type
 /// phase turns in bursts and costs CVODE several times more steps. Results are unscaled.
+///
+/// Axial frame (in plane). The axial displacement of a nearly straight cable is a small
+/// difference of its x and y components (of relative size ~ max(sqrt(T_ref/EA), spread of the
+/// tangent angle), 1e-5 on a taut cable at eps = 1e-5), and CVODE, controlling the error of x and
+/// y, left it with a few digits: the first in-plane mode of such a cable, which balances the
+/// stretch against the geometric shortening, then came out wrong by ~rtol / eps (5e-7 at eps =
+/// 1e-5, and moving by more with rtol). The shot therefore integrates Phi~ = P Phi^,
+/// F~ = P^{-T} F^ with P = diag(sigma, 1) R^T: R rotates to the mean tangent (the bisector of the
+/// end tangents) and sigma = axial_stretch(...) brings the axial component to the size of the
+/// normal one (used when sigma >= kMinAxialStretch). P is constant and P, P^{-T} preserve Phi = 0, so the system stays Hamiltonian and
+/// monotone (B -> P B P^T, C -> P^{-T} C P^{-1}) and the conjugate points, the count and the sign
+/// of the end determinant are those of the physical variables. Results are returned physical.
 
 #include <Eigen/Core>
 #include <memory>
@@ -119,6 +131,18 @@ class ShootingIntegrator {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// Largest axial stretch sigma (a straight inextensible cable has no axial scale).
+constexpr double kMaxAxialStretch = 1e8;
+/// Below this stretch the axial frame is not used (the shot stays in x and y): the axial
+/// component is then at most 4x smaller than the normal one and loses no significant digits, and
+/// the frequencies of cables with sag stay those of the plain shot.
+constexpr double kMinAxialStretch = 4.0;
+
+/// The axial stretch sigma of the axial frame (header comment) for the scaled axial compliance
+/// T_ref/EA and the largest angle between a tangent and the mean tangent [rad]: 1/max(sqrt(T_ref/EA),
+/// spread), within [1, kMaxAxialStretch] (1 for a cable with sag: nothing to balance).
+double axial_stretch(double axial_compliance, double tangent_spread);
 
 /// The solution (scaled [Phi^; F^], a 2D-vector) at station j of a shot for the combination `c`
 /// (a D-vector) of the final basis, mapped back through the segment R factors.

@@ -36,7 +36,7 @@ std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::strin
     // and monotone in omega, and c = n exactly at the n-th eigenvalue: any two samples with
     // counts < n and >= n bracket it, and Brent converges on the nearly linear c - n at once.
     const auto [lo, hi] = bracket(n);
-    roots.push_back(refine_scalar(n, lo, hi));
+    roots.push_back(refine_to_target(n, lo, hi, warnings));
     ++n;
     if (stop_after(n - 1)) return finish(roots);
   }
@@ -45,7 +45,7 @@ std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::strin
     const Sample& a = samples_.at(lo);
     const Sample& b = samples_.at(hi);
     if (a.count == n - 1 && b.count == n && a.determinant * b.determinant < 0.0) {
-      roots.push_back(refine(lo, hi));
+      roots.push_back(refine_to_target(n, lo, hi, warnings));
       ++n;
       if (stop_after(n - 1)) break;
     } else if (hi - lo <= settings_.root_tolerance * hi) {
@@ -57,6 +57,20 @@ std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::strin
     }
   }
   return finish(roots);
+}
+
+// Mode n in its count bracket, refined at tighter tolerances when its estimate exceeds the target;
+// a warning says why a mode still misses it.
+Root ShootingRootFinder::refine_to_target(int n, double lo, double hi, std::vector<std::string>& warnings) {
+  const Root first = refine(n, lo, hi);
+  const Root root = refine_tighter(n, first, lo, hi);
+  if (root.relative_error > settings_.target) {
+    warnings.push_back(fmt::format(
+        "mode {}: error estimate {:.2g} > target {:.2g} after re-bracketing at 10x and 100x "
+        "tighter tolerances (first estimate {:.2g}): the integration does not resolve it",
+        n, root.relative_error, settings_.target, first.relative_error));
+  }
+  return root;
 }
 
 // The roots found, with the count proved at the smallest sample above the top one.
@@ -152,51 +166,74 @@ Root ShootingRootFinder::multiple_root(int n, double lo, double hi,
   return root;
 }
 
-// Brent on the continuous count h_n; the error estimate re-evaluates h_n at 10x tighter
-// tolerances and moves the root by one secant step with the slope of the final bracket.
-Root ShootingRootFinder::refine_scalar(int n, double lo, double hi) {
-  auto g = [this, n](double omega) { return count_function(evaluate(omega), n); };
-  const auto [a, b] = brent_zero(g, lo, hi, count_function(samples_.at(lo), n),
-                                 count_function(samples_.at(hi), n), settings_.root_tolerance);
-  const Sample& sa = evaluate(a);
-  const Sample& sb = evaluate(b);
+// The root function of mode n at one sample: the continuous count h_n for a one-component
+// problem, the normalised end determinant in plane (header).
+double ShootingRootFinder::end_value(const Sample& sample, int n) const {
+  return scalar_ ? count_function(sample, n) : sample.determinant;
+}
+
+// One uncached shot at `factor` times the tolerances.
+ShootingRootFinder::Sample ShootingRootFinder::shoot_sample(double omega, double factor) {
+  const Shot shot = shoot_(omega, factor);
+  ++shots_;
+  return {shot.count, shot.angle_min, shot.angle_max, shot.determinant};
+}
+
+// Brent on the root function in the count bracket [lo, hi], on the cached shots at the solver's
+// tolerances.
+Root ShootingRootFinder::refine(int n, double lo, double hi) {
+  auto f = [this, n](double omega) { return end_value(evaluate(omega), n); };
+  const auto [a, b] = brent_zero(f, lo, hi, f(lo), f(hi), settings_.root_tolerance);
+  const Sample sa = evaluate(a);
+  return root_in_bracket(n, a, b, sa, evaluate(b), 1.0);
+}
+
+// The root in a final bracket [a, b] found with shots at `factor` times the tolerances. Its error
+// estimate: half the bracket plus the integration error, measured by re-evaluating the root
+// function at 10x tighter tolerances and moving the root by one secant step with the slope of the
+// bracket (or assumed 10 rtol when that shot is not asked for).
+Root ShootingRootFinder::root_in_bracket(int n, double a, double b, const Sample& sa,
+                                         const Sample& sb, double factor) {
   Root root;
   root.omega = 0.5 * (a + b);
   root.residual = std::min(std::abs(sa.determinant), std::abs(sb.determinant));
-  const double ga = count_function(sa, n), gb = count_function(sb, n);
-  const double slope = (b > a) ? (gb - ga) / (b - a) : 0.0;
-  double integration_error = 10.0 * settings_.relative_tolerance * root.omega;
-  if (settings_.error_estimate && slope > 0.0) {
-    const Shot tight = shoot_(root.omega, 0.1);
-    ++shots_;
-    const Sample st{tight.count, tight.angle_min, tight.angle_max, tight.determinant};
-    const double here = ga + slope * (root.omega - a);
-    integration_error = std::abs((count_function(st, n) - here) / slope);
+  const double fa = end_value(sa, n), fb = end_value(sb, n);
+  const double slope = (b > a) ? (fb - fa) / (b - a) : 0.0;
+  double integration_error = 10.0 * settings_.relative_tolerance * factor * root.omega;
+  if (settings_.error_estimate && (scalar_ ? slope > 0.0 : slope != 0.0)) {
+    const Sample tight = shoot_sample(root.omega, 0.1 * factor);
+    const double here = fa + slope * (root.omega - a);
+    integration_error = std::abs((end_value(tight, n) - here) / slope);
   }
   root.relative_error = (0.5 * (b - a) + integration_error) / root.omega;
   return root;
 }
 
-// Brent on the normalised end determinant (one sign change in a count bracket n - 1 .. n); the
-// error estimate is the root of the determinant at 10x tighter tolerances, one secant step away.
-Root ShootingRootFinder::refine(double lo, double hi) {
-  auto f = [this](double omega) { return evaluate(omega).determinant; };
-  const auto [a, b] = brent_zero(f, lo, hi, samples_.at(lo).determinant,
-                                 samples_.at(hi).determinant, settings_.root_tolerance);
-  const Sample& sa = evaluate(a);
-  const Sample& sb = evaluate(b);
-  Root root;
-  root.omega = 0.5 * (a + b);
-  root.residual = std::min(std::abs(sa.determinant), std::abs(sb.determinant));
-  const double slope = (b > a) ? (sb.determinant - sa.determinant) / (b - a) : 0.0;
-  double integration_error = 10.0 * settings_.relative_tolerance * root.omega;
-  if (settings_.error_estimate && slope != 0.0) {
-    const Shot tight = shoot_(root.omega, 0.1);
-    ++shots_;
-    const double here = sa.determinant + slope * (root.omega - a);
-    integration_error = std::abs((tight.determinant - here) / slope);
+// A root whose estimate exceeds the target, found again with shots at 10x, then 100x tighter
+// tolerances (uncached: the count bracket's samples stay at the solver's own): a bracket around
+// it, widened fourfold until the root function changes sign (within the count bracket), refined
+// by Brent. The better estimate is kept; a root still beyond the target is reported by the
+// caller.
+Root ShootingRootFinder::refine_tighter(int n, Root root, double lo, double hi) {
+  for (const double factor : {0.1, 0.01}) {
+    if (root.relative_error <= settings_.target) break;
+    ++tightened_;
+    auto f = [this, n, factor](double omega) { return end_value(shoot_sample(omega, factor), n); };
+    double a = lo, b = hi, fa = 0.0, fb = 0.0;
+    double half = std::max(root.relative_error, settings_.root_tolerance) * root.omega;
+    for (int widen = 0; widen < 12; ++widen, half *= 4.0) {
+      a = std::max(lo, root.omega - half);
+      b = std::min(hi, root.omega + half);
+      fa = f(a);
+      fb = f(b);
+      if (fa * fb < 0.0 || (a == lo && b == hi)) break;
+    }
+    if (!(fa * fb < 0.0)) break;
+    const auto [x, y] = brent_zero(f, a, b, fa, fb, settings_.root_tolerance);
+    const Sample sx = shoot_sample(x, factor);
+    const Root tighter = root_in_bracket(n, x, y, sx, shoot_sample(y, factor), factor);
+    if (tighter.relative_error < root.relative_error) root = tighter;
   }
-  root.relative_error = (0.5 * (b - a) + integration_error) / root.omega;
   return root;
 }
 

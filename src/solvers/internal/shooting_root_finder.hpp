@@ -32,6 +32,9 @@ struct RootFinderSettings {
   double root_tolerance = 1e-10;
   /// Estimate each root's integration error by one extra shot at 10x tighter tolerances.
   bool error_estimate = true;
+  /// Relative accuracy each root must reach [-]: a root whose estimate exceeds it is found again
+  /// at 10x, then 100x tighter tolerances (refine_tighter).
+  double target = 1.1e-9;
 };
 
 /// A frequency found (a cluster of `multiplicity` equal frequencies for a multiple root).
@@ -67,6 +70,8 @@ class ShootingRootFinder {
   int proved_count() const { return proved_count_; }
   double max_phase_defect() const { return max_phase_defect_; }
   long phase_retries() const { return phase_retries_; }
+  /// Refinements at tighter tolerances (roots whose first estimate exceeded the target).
+  long tightened() const { return tightened_; }
 
  private:
   // One evaluation of the end function: the count of eigenvalues below omega, the end
@@ -85,8 +90,12 @@ class ShootingRootFinder {
   std::pair<double, double> bracket(int n) const;
   double trial_point(int n, double lo, double hi) const;
   Root multiple_root(int n, double lo, double hi, std::vector<std::string>& warnings) const;
-  Root refine_scalar(int n, double lo, double hi);
-  Root refine(double lo, double hi);
+  double end_value(const Sample& sample, int n) const;
+  Sample shoot_sample(double omega, double factor);
+  Root refine_to_target(int n, double lo, double hi, std::vector<std::string>& warnings);
+  Root refine(int n, double lo, double hi);
+  Root root_in_bracket(int n, double a, double b, const Sample& sa, const Sample& sb, double factor);
+  Root refine_tighter(int n, Root root, double lo, double hi);
 
   ShotFunction shoot_;
   RootFinderSettings settings_;
@@ -97,6 +106,7 @@ class ShootingRootFinder {
   int proved_count_ = -1;
   double max_phase_defect_ = 0.0;
   long phase_retries_ = 0;
+  long tightened_ = 0;
 };
 
 }  // namespace catena::internal

@@ -51,8 +51,9 @@ void run_parts(const SolveContext& context, SolverNumerics& numerics, SolverOutp
     }
     const auto start = Clock::now();
     ModalResult result = numerics.modes(plane, count);
-    validate_modal_result(result, count);
     result.plane = plane;
+    validate_modal_result(result, count);
+    apply_accuracy_target(result);
     result.summary.solver = output.solver;
     result.summary.wall_time_s = seconds_since(start);
     (plane == Plane::InPlane ? output.inplane : output.outofplane) = std::move(result);
@@ -135,6 +136,30 @@ SolverOutput drive_solver(const std::string& solver, const SolveContext& context
   return output;
 }
 
+void apply_accuracy_target(ModalResult& result) {
+  SolverSummary& summary = result.summary;
+  const double target = summary.accuracy_target;
+  if (!(target > 0.0)) return;
+  for (Mode& mode : result.modes) {
+    const double estimate = mode.relative_error_estimate;
+    mode.meets_target = estimate >= 0.0 && estimate <= target;
+    if (mode.meets_target) continue;
+    summary.missed_modes.push_back(
+        estimate < 0.0 ? fmt::format("mode {}: no error estimate (target {:.2g})", mode.index, target)
+                       : fmt::format("mode {}: estimate {:.2g} > target {:.2g}", mode.index, estimate, target));
+  }
+  if (summary.missed_modes.empty()) return;
+  const std::string missed =
+      fmt::format("{} of {} {} modes miss the accuracy target {:.2g}", summary.missed_modes.size(),
+                  result.modes.size(), to_string(result.plane), target);
+  if (summary.termination == Termination::Converged) {
+    summary.termination = Termination::NoConvergence;
+    summary.message = "No convergence: " + missed + " (" + summary.message + ")";
+  } else {
+    summary.message += "; " + missed;
+  }
+}
+
 void combine_summaries(const std::vector<std::pair<std::string, const SolverSummary*>>& parts,
                        SolverSummary& overall) {
   bool all_converged = true, any_usable = false;
@@ -151,6 +176,8 @@ void combine_summaries(const std::vector<std::pair<std::string, const SolverSumm
     max_residual = std::max(max_residual, part->max_residual);
     message += (message.empty() ? "" : "; ") + part->message;
     for (const auto& warning : part->warnings) overall.warnings.push_back(name + ": " + warning);
+    for (const auto& missed : part->missed_modes) overall.missed_modes.push_back(name + " " + missed);
+    overall.accuracy_target = std::max(overall.accuracy_target, part->accuracy_target);
     if (name == "forced") {
       // A plane's notes stay in its own summary; the forced part has no other place for them.
       for (const auto& note : part->notes) overall.notes.push_back(name + ": " + note);

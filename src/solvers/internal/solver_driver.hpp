@@ -79,6 +79,12 @@ SolverOutput solve_with(const std::string& solver, const SolveContext& context, 
   return drive_solver(solver, context, numerics);
 }
 
+/// The accuracy rule (catena/solvers/solver_summary.hpp, accuracy_target): when the plane's
+/// summary carries a target, every mode whose error estimate exceeds it (or has none) gets
+/// meets_target = false and a line in missed_modes, and a Converged plane becomes NoConvergence
+/// with the count in front of its message. Applied by drive_solver() after validation.
+void apply_accuracy_target(ModalResult& result);
+
 /// The one rule that combines the parts of a run (each plane and the forced response) into the
 /// overall summary:
 /// - termination: Converged when every part converged; NumericalFailure when no part is usable;
@@ -89,6 +95,7 @@ SolverOutput solve_with(const std::string& solver, const SolveContext& context, 
 /// - iterations, operations: sums of the counted ones (-1 when none counted);
 /// - max_error_estimate, max_residual: the largest over the parts (-1 when none);
 /// - warnings: every part's warnings, prefixed with the part ("in-plane: ...");
+/// - accuracy_target: the largest over the parts; missed_modes: every part's, prefixed likewise;
 /// - notes: a plane's notes stay in the plane's summary; the forced part's are copied, prefixed
 ///   "forced: " (it has no summary of its own in SolverOutput).
 /// `overall` keeps its resolution, notes and warnings (from describe()) and gains the rest.

@@ -35,6 +35,61 @@ Termination combined(std::initializer_list<Termination> terminations) {
   return overall.termination;
 }
 
+ModalResult plane_with_estimates(std::initializer_list<double> estimates, double target) {
+  ModalResult result;
+  result.plane = Plane::OutOfPlane;
+  int index = 0;
+  for (double estimate : estimates) {
+    Mode mode;
+    mode.index = ++index;
+    mode.omega_rad_s = index;
+    mode.relative_error_estimate = estimate;
+    result.modes.push_back(mode);
+  }
+  result.summary = part(Termination::Converged, "Converged: 3 modes");
+  result.summary.accuracy_target = target;
+  return result;
+}
+
+TEST(AccuracyTarget, ModesBeyondTheTargetAreNamedAndThePlaneIsNotConverged) {
+  ModalResult result = plane_with_estimates({1e-11, 2.4e-7, -1.0}, 1.1e-9);
+  apply_accuracy_target(result);
+  EXPECT_TRUE(result.modes[0].meets_target);
+  EXPECT_FALSE(result.modes[1].meets_target);
+  EXPECT_FALSE(result.modes[2].meets_target);  // no estimate: the target is not claimed
+  ASSERT_EQ(result.summary.missed_modes.size(), 2u);
+  EXPECT_EQ(result.summary.missed_modes[0], "mode 2: estimate 2.4e-07 > target 1.1e-09");
+  EXPECT_EQ(result.summary.missed_modes[1], "mode 3: no error estimate (target 1.1e-09)");
+  EXPECT_EQ(result.summary.termination, Termination::NoConvergence);
+  EXPECT_EQ(result.summary.message,
+            "No convergence: 2 of 3 out-of-plane modes miss the accuracy target 1.1e-09 "
+            "(Converged: 3 modes)");
+}
+
+TEST(AccuracyTarget, NoTargetOrEveryModeWithinItChangesNothing) {
+  for (double target : {-1.0, 1e-6}) {
+    ModalResult result = plane_with_estimates({1e-11, 2.4e-7}, target);
+    apply_accuracy_target(result);
+    EXPECT_TRUE(result.modes[0].meets_target && result.modes[1].meets_target) << target;
+    EXPECT_TRUE(result.summary.missed_modes.empty());
+    EXPECT_EQ(result.summary.termination, Termination::Converged);
+  }
+}
+
+TEST(AccuracyTarget, TheOverallSummaryListsEveryPlanesMissesAndTheLargestTarget) {
+  SolverSummary a = part(Termination::NoConvergence, "in");
+  a.accuracy_target = 1e-9;
+  a.missed_modes = {"mode 1: estimate 1e-08 > target 1e-09"};
+  SolverSummary b = part(Termination::Converged, "out");
+  b.accuracy_target = 2e-9;
+  SolverSummary overall;
+  combine_summaries({{"in-plane", &a}, {"out-of-plane", &b}}, overall);
+  EXPECT_DOUBLE_EQ(overall.accuracy_target, 2e-9);
+  ASSERT_EQ(overall.missed_modes.size(), 1u);
+  EXPECT_EQ(overall.missed_modes[0], "in-plane mode 1: estimate 1e-08 > target 1e-09");
+  EXPECT_EQ(overall.termination, Termination::NoConvergence);
+}
+
 TEST(CombineSummaries, TerminationFollowsTheDocumentedRule) {
   using T = Termination;
   EXPECT_EQ(combined({T::Converged, T::Converged}), T::Converged);
