@@ -91,7 +91,8 @@ void fresh_direction(Run& run, Eigen::Index columns, Eigen::Ref<Eigen::VectorXd>
 }
 
 // Lanczos steps from basis vector `from` to the end of the subspace. Column j + 1 (or the
-// residual after the last step) receives A v_j orthogonalised against v_0..v_j; the projection
+// residual after the last step) receives A v_j orthogonalised against v_0..v_j (full
+// re-orthogonalisation); the projection
 // gets alpha_j on the diagonal and beta_j beside it (a breakdown gives beta_j = 0 and a fresh
 // direction).
 void extend(Run& run, int from) {
@@ -102,8 +103,17 @@ void extend(Run& run, int from) {
                                          : Eigen::Ref<Eigen::VectorXd>(run.basis.col(j + 1));
     run.apply(run.basis.col(j).data(), w.data());
     ++run.operations;
+    // The three-term recurrence first (after a restart, step `from` couples to every kept vector
+    // and has none); the Gram-Schmidt pass then only removes what rounding left, so it seldom
+    // cancels enough to need the second pass.
+    double alpha = 0.0;
+    if (j > from) {
+      w -= run.projection(j - 1, j) * run.basis.col(j - 1);
+      alpha = run.basis.col(j).dot(w);
+      w -= alpha * run.basis.col(j);
+    }
     const Orthogonalised o = orthogonalise(run.basis, j + 1, w, run.coefficients, run.correction);
-    run.projection(j, j) = run.coefficients[j];
+    run.projection(j, j) = alpha + run.coefficients[j];
     const double beta = o.in_span ? 0.0 : o.norm;
     if (last) {
       run.residual_norm = beta;
