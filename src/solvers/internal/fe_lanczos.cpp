@@ -195,6 +195,17 @@ int kept_vectors(int wanted, int converged, int subspace) {
   return std::max(1, std::min(kept, subspace - 1));
 }
 
+// The start vector: A r for a fixed pseudo-random r. For a shift-invert operator this damps the
+// components along eigenvalues far from the shift (a stiff chain's axial modes) by their tiny
+// theta, which Ritz vectors would otherwise carry at the size of the convergence tolerance.
+void start(Run& run) {
+  fill_pseudo_random(run.residual, run.seed);
+  run.apply(run.residual.data(), run.basis.col(0).data());
+  ++run.operations;
+  if (!(run.basis.col(0).norm() > 0.0)) run.basis.col(0) = run.residual;
+  run.basis.col(0).normalize();
+}
+
 }  // namespace
 
 LanczosResult largest_magnitude_eigenpairs(const SymmetricOperator& apply, Eigen::Index rows, int wanted,
@@ -205,8 +216,7 @@ LanczosResult largest_magnitude_eigenpairs(const SymmetricOperator& apply, Eigen
   Run run{apply, workspace.basis(), workspace.residual(), workspace.coefficients(), workspace.correction(),
           workspace.projection(), workspace.block(), m};
   run.block.resize(std::min(kRotationRows, rows), m);
-  fill_pseudo_random(run.basis.col(0), run.seed);
-  run.basis.col(0).normalize();
+  start(run);
   LanczosResult result;
   int from = 0;
   for (;; ++result.restarts) {
