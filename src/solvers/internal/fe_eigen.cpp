@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "solvers/internal/fe_banded_ldlt.hpp"
 #include "solvers/internal/fe_lanczos.hpp"
@@ -215,8 +216,9 @@ void solve_dense(const FeMatrices& matrices, int modes, FeEigenSolution& out) {
 }
 
 
-// lambda = sigma + 1 / theta, ascending, with the vectors mapped back by L^{-T}.
-void take_ritz_pairs(const LanczosResult& lanczos, double sigma, const MassFactor& factor,
+// lambda = sigma + 1 / theta, ascending, with the vectors mapped back by L^{-T}. The Lanczos
+// vectors are released as soon as they are mapped (one n x k matrix less at the peak).
+void take_ritz_pairs(LanczosResult&& lanczos, double sigma, const MassFactor& factor,
                      FeEigenSolution& out) {
   const auto count = lanczos.values.size();
   std::vector<Eigen::Index> order(static_cast<std::size_t>(count));
@@ -224,12 +226,14 @@ void take_ritz_pairs(const LanczosResult& lanczos, double sigma, const MassFacto
   auto lambda = [&](Eigen::Index i) { return sigma + 1.0 / lanczos.values[i]; };
   std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return lambda(a) < lambda(b); });
   out.eigenvalues.resize(count);
-  Eigen::MatrixXd vectors(lanczos.vectors.rows(), count);
-  for (Eigen::Index i = 0; i < count; ++i) {
-    out.eigenvalues[i] = lambda(order[static_cast<std::size_t>(i)]);
-    vectors.col(i) = lanczos.vectors.col(order[static_cast<std::size_t>(i)]);
+  for (Eigen::Index i = 0; i < count; ++i) out.eigenvalues[i] = lambda(order[static_cast<std::size_t>(i)]);
+  out.eigenvectors = factor.inverse_transpose_times(lanczos.vectors);
+  lanczos.vectors = Eigen::MatrixXd();
+  // Largest theta first is already ascending lambda unless the shift moved into the spectrum.
+  if (!std::is_sorted(order.begin(), order.end())) {
+    const Eigen::MatrixXd unsorted = out.eigenvectors;
+    for (Eigen::Index i = 0; i < count; ++i) out.eigenvectors.col(i) = unsorted.col(order[static_cast<std::size_t>(i)]);
   }
-  out.eigenvectors = factor.inverse_transpose_times(vectors);
   out.termination = Termination::Converged;
 }
 
@@ -259,13 +263,13 @@ void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, doub
     try {
       standard.set_shift(sigma);
       const auto start = Clock::now();
-      const LanczosResult lanczos = largest_magnitude_eigenpairs(apply, standard.rows(), modes, subspace,
+      LanczosResult lanczos = largest_magnitude_eigenpairs(apply, standard.rows(), modes, subspace,
                                                                  tolerance, max_restarts, workspace);
       out.iteration_time_s += seconds_since(start);
       out.restarts += lanczos.restarts;
       out.operations += lanczos.operations;
       if (lanczos.converged) {
-        take_ritz_pairs(lanczos, sigma, factor, out);
+        take_ritz_pairs(std::move(lanczos), sigma, factor, out);
         const auto start_polish = Clock::now();
         polish(matrices, op, out);
         out.iteration_time_s += seconds_since(start_polish);
