@@ -279,8 +279,8 @@ ModalResult FeNumerics::modes(Plane plane, int count) {
 
 SolverEntry make_fe_entry() {
   return make_solver_entry(
-      "lumped-mass chain of N bar elements about its own exact statics; sparse shift-invert "
-      "eigensolver (Spectra), Sylvester-inertia mode count, Richardson N/2N extrapolation",
+      "lumped-mass chain of N bar elements about its own exact statics; banded shift-invert "
+      "Lanczos (thick restart), Sylvester-inertia mode count, Richardson N/2N extrapolation",
       fe_knobs(), [](const SolveContext& context, const FeSolverOptions& options) {
         return std::make_unique<FeNumerics>(context, options);
       });

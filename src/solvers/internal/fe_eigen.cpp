@@ -3,13 +3,14 @@
 
 #include <fmt/format.h>
 
-#include <Spectra/SymEigsShiftSolver.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "solvers/internal/fe_banded_ldlt.hpp"
+#include "solvers/internal/fe_lanczos.hpp"
 
 namespace catena::internal {
 namespace {
@@ -19,7 +20,7 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Spectra operator y = (K - sigma M)^{-1} x through a banded LDLT of K - sigma M, factored
+// Operator y = (K - sigma M)^{-1} x through a banded LDLT of K - sigma M, factored
 // without forming the shifted matrix (BandedLdlt::factorize(K, M, sigma)).
 class ShiftInvertOperator {
  public:
@@ -33,7 +34,6 @@ class ShiftInvertOperator {
     bool ok = ldlt_.factorize(stiffness_, mass_, sigma);
     factorization_time_s += seconds_since(start);
     ok = ok && ldlt_.pivot_ratio() > 1e-14;
-    // Same exception type as Spectra's own SymShiftInvert, so callers handle both alike.
     if (!ok) throw std::invalid_argument(fmt::format("K - sigma M is singular at sigma = {:.6e}", sigma));
   }
   /// Solves (K - sigma M) Y = X in place for a block of right-hand sides.
@@ -112,7 +112,7 @@ class MassFactor {
   Vector l11_, l21_, l22_;
 };
 
-// The standard-form operator for Spectra: with A = L^{-1} K L^{-T},
+// The standard-form operator for the Lanczos iteration: with A = L^{-1} K L^{-T},
 // (A - sigma I)^{-1} x = L^T (K - sigma M)^{-1} L x. A standard symmetric Lanczos avoids the
 // M-inner products of the generalized solver (which cost more than the banded solves here).
 class StandardFormOperator {
@@ -179,7 +179,7 @@ void normalise_and_check(const FeMatrices& matrices, FeEigenSolution& out) {
 }
 
 // Subspace (inverse) iteration with Rayleigh-Ritz on the converged Ritz vectors, with the
-// factorisation Spectra already used. Lanczos leaves components along the stiff axial directions
+// factorisation the Lanczos iteration already used. Lanczos leaves components along the stiff axial directions
 // of size ~ tolerance; K amplifies them by EA/l0 into the residual. One inverse-iteration step
 // damps them by lambda/lambda_axial (<= 1e-4 here), so one or two steps reach the rounding floor.
 void refine(const FeMatrices& matrices, const ShiftInvertOperator& op, FeEigenSolution& out) {
@@ -199,7 +199,7 @@ void refine(const FeMatrices& matrices, const ShiftInvertOperator& op, FeEigenSo
   }
 }
 
-// Small problems: a dense generalized solve is exact and avoids Lanczos' nev < ncv <= n limits.
+// Small problems: a dense generalized solve is exact and cheaper than a Lanczos iteration.
 void solve_dense(const FeMatrices& matrices, int modes, FeEigenSolution& out) {
   const auto start = Clock::now();
   const Eigen::MatrixXd K(matrices.stiffness), M(matrices.mass);
@@ -216,46 +216,71 @@ void solve_dense(const FeMatrices& matrices, int modes, FeEigenSolution& out) {
 }
 
 
-// Spectra's shift-invert Lanczos, polished. Shift 0 targets the lowest modes (K is positive
-// definite for a taut chain); if it is singular (a chain with a zero-stiffness mode), the shift is
-// moved below the bottom of the spectrum, and the move reported.
+// lambda = sigma + 1 / theta, ascending, with the vectors mapped back by L^{-T}. The Lanczos
+// vectors are released as soon as they are mapped (one n x k matrix less at the peak).
+void take_ritz_pairs(LanczosResult&& lanczos, double sigma, const MassFactor& factor,
+                     FeEigenSolution& out) {
+  const auto count = lanczos.values.size();
+  std::vector<Eigen::Index> order(static_cast<std::size_t>(count));
+  for (Eigen::Index i = 0; i < count; ++i) order[static_cast<std::size_t>(i)] = i;
+  auto lambda = [&](Eigen::Index i) { return sigma + 1.0 / lanczos.values[i]; };
+  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return lambda(a) < lambda(b); });
+  out.eigenvalues.resize(count);
+  for (Eigen::Index i = 0; i < count; ++i) out.eigenvalues[i] = lambda(order[static_cast<std::size_t>(i)]);
+  out.eigenvectors = factor.inverse_transpose_times(lanczos.vectors);
+  lanczos.vectors = Eigen::MatrixXd();
+  // Largest theta first is already ascending lambda unless the shift moved into the spectrum.
+  if (!std::is_sorted(order.begin(), order.end())) {
+    const Eigen::MatrixXd unsorted = out.eigenvectors;
+    for (Eigen::Index i = 0; i < count; ++i) out.eigenvectors.col(i) = unsorted.col(order[static_cast<std::size_t>(i)]);
+  }
+  out.termination = Termination::Converged;
+}
+
+// Polishes converged Ritz pairs: one or two inverse-iteration steps, only until the normwise
+// backward error is at rounding level.
+void polish(const FeMatrices& matrices, const ShiftInvertOperator& op, FeEigenSolution& out) {
+  for (int step = 0; step < 3; ++step) {
+    normalise_and_check(matrices, out);
+    if (out.max_backward_error <= kBackwardErrorGoal || step == 2) break;
+    refine(matrices, op, out);
+  }
+}
+
+// Our shift-invert Lanczos (fe_lanczos.hpp) on the standard form, polished. The operator's Ritz
+// values theta = 1 / (lambda - sigma) of largest magnitude are the lambda nearest sigma. Shift 0
+// targets the lowest modes (K is positive definite for a taut chain); if it is singular (a chain
+// with a zero-stiffness mode), the shift is moved below the bottom of the spectrum, and the move
+// reported.
 void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, double tolerance,
-                       int max_restarts, FeEigenSolution& out) {
+                       int max_restarts, LanczosWorkspace& workspace, FeEigenSolution& out) {
   ShiftInvertOperator op(matrices.stiffness, matrices.mass);
   const MassFactor factor(matrices.mass, matrices.dofs_per_node);
   StandardFormOperator standard(op, factor);
+  const SymmetricOperator apply = [&standard](const double* x, double* y) { standard.perform_op(x, y); };
   double sigma = 0.0;
   for (int attempt = 0; attempt < 4; ++attempt) {
     try {
+      standard.set_shift(sigma);
       const auto start = Clock::now();
-      Spectra::SymEigsShiftSolver<StandardFormOperator> eigs(standard, modes, subspace, sigma);
-      eigs.init();
-      eigs.compute(Spectra::SortRule::LargestMagn, max_restarts, tolerance,
-                   Spectra::SortRule::SmallestAlge);
+      LanczosResult lanczos = largest_magnitude_eigenpairs(apply, standard.rows(), modes, subspace,
+                                                                 tolerance, max_restarts, workspace);
       out.iteration_time_s += seconds_since(start);
-      out.restarts += eigs.num_iterations();
-      out.operations += eigs.num_operations();
-      if (eigs.info() == Spectra::CompInfo::Successful) {
-        out.eigenvalues = eigs.eigenvalues();
-        out.eigenvectors = factor.inverse_transpose_times(eigs.eigenvectors());
-        out.termination = Termination::Converged;
-        // Refine only what needs it: one or two inverse-iteration steps until the normwise
-        // backward error is at rounding level.
-        const auto start_refine = Clock::now();
-        for (int step = 0; step < 3; ++step) {
-          normalise_and_check(matrices, out);
-          if (out.max_backward_error <= kBackwardErrorGoal || step == 2) break;
-          refine(matrices, op, out);
-        }
-        out.iteration_time_s += seconds_since(start_refine);
+      out.restarts += lanczos.restarts;
+      out.operations += lanczos.operations;
+      if (lanczos.converged) {
+        take_ritz_pairs(std::move(lanczos), sigma, factor, out);
+        const auto start_polish = Clock::now();
+        polish(matrices, op, out);
+        out.iteration_time_s += seconds_since(start_polish);
       } else {
         out.termination = Termination::NoConvergence;
-        out.message = fmt::format("Spectra did not converge: {} restarts, {} operator applications",
-                                  eigs.num_iterations(), eigs.num_operations());
+        out.message = fmt::format("Lanczos did not converge: {} restarts, {} operator applications",
+                                  lanczos.restarts, lanczos.operations);
       }
       break;
     } catch (const std::invalid_argument& error) {
-      // A singular shift (ShiftInvertOperator and Spectra both say so by invalid_argument).
+      // A singular shift (ShiftInvertOperator says so by invalid_argument).
       const double scale = (matrices.stiffness.diagonal().array() /
                             matrices.mass.diagonal().array()).abs().maxCoeff();
       const double moved = -1e-8 * scale * std::pow(100.0, attempt);
@@ -267,7 +292,6 @@ void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, doub
     }
   }
   out.factorization_time_s += op.factorization_time_s;
-  out.iteration_time_s -= op.factorization_time_s;
 }
 
 // Sylvester: the negative pivots of LDLT(K - sigma_top M) count the eigenvalues below sigma_top.
@@ -304,7 +328,8 @@ int count_eigenvalues_below(const FeMatrices& matrices, double shift) {
 FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
                                    int modes,
                                    double tolerance,
-                                   int max_restarts) {
+                                   int max_restarts,
+                                   LanczosWorkspace* workspace) {
   FeEigenSolution out;
   const auto n = static_cast<int>(matrices.stiffness.rows());
   if (modes <= 0) {
@@ -317,7 +342,8 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
   if (dense) {
     solve_dense(matrices, modes, out);
   } else {
-    solve_iteratively(matrices, modes, subspace, tolerance, max_restarts, out);
+    LanczosWorkspace own;
+    solve_iteratively(matrices, modes, subspace, tolerance, max_restarts, workspace ? *workspace : own, out);
   }
   if (out.termination != Termination::Converged) return out;
   if (dense) normalise_and_check(matrices, out);

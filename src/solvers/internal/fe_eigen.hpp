@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// The lowest eigenpairs of one `fe` operator pair, K phi = omega^2 M phi (docs/methods/fe.md):
-/// Spectra's shift-invert Lanczos on the standard form L^{-1} K L^{-T} (M = L L^T blockwise),
+/// our thick-restart shift-invert Lanczos (fe_lanczos.hpp) on the standard form L^{-1} K L^{-T}
+/// (M = L L^T blockwise),
 /// applied through a banded LDL^T of K - sigma M; at most two polishing steps of inverse subspace
 /// iteration with Rayleigh-Ritz until the normwise backward error is at rounding level; and the
 /// mode count proved by Sylvester's law of inertia. Problems of at most 64 unknowns are solved
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "catena/solvers/solver_summary.hpp"
+#include "solvers/internal/fe_lanczos.hpp"
 #include "solvers/internal/fe_operators.hpp"
 
 namespace catena::internal {
@@ -43,10 +45,13 @@ struct FeEigenSolution {
 };
 
 /// Lowest `modes` eigenpairs. `modes` must be < number of unknowns (the caller validates).
+/// `workspace` (optional) holds the Lanczos buffers between calls: pass the same one to the
+/// solves of one fe run (mesh and penalty levels) so that they allocate the basis once.
 FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
                                    int modes,
                                    double tolerance,
-                                   int max_restarts);
+                                   int max_restarts,
+                                   LanczosWorkspace* workspace = nullptr);
 
 /// Number of eigenvalues of K phi = lambda M phi below `shift` (negative pivots of
 /// LDLT(K - shift M)); -1 when the factorisation fails.

@@ -130,13 +130,14 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
                                      WorkMeter* meter) {
   FePlaneEigenReport report;
   long solved = 0;
+  LanczosWorkspace workspace;  // one basis for every level of this plane
   for (auto& row : levels) {
     for (FeLevel& level : row) {
       const auto start = Clock::now();
       level.matrices[plane] = assemble(plane, level.chain);
       timings.assembly_s += seconds_since(start);
       FeEigenSolution eigen =
-          solve_lowest_modes(level.matrices[plane], modes, options.eigen_tolerance, options.max_restarts);
+          solve_lowest_modes(level.matrices[plane], modes, options.eigen_tolerance, options.max_restarts, &workspace);
       timings.factorization_s += eigen.factorization_time_s;
       timings.eigen_iterations_s += eigen.iteration_time_s;
       report.restarts += eigen.restarts;

@@ -1,0 +1,239 @@
+// Thick-restart Lanczos with DGKS re-orthogonalisation: see fe_lanczos.hpp and docs/methods/fe.md.
+#include "solvers/internal/fe_lanczos.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+
+namespace catena::internal {
+
+void LanczosWorkspace::reserve(Eigen::Index rows, int subspace) {
+  const auto basis_size = static_cast<std::size_t>(rows) * static_cast<std::size_t>(subspace);
+  if (basis_.size() < basis_size) basis_.resize(basis_size);
+  if (residual_.size() < static_cast<std::size_t>(rows)) residual_.resize(static_cast<std::size_t>(rows));
+  if (coefficients_.size() < static_cast<std::size_t>(subspace)) {
+    coefficients_.resize(static_cast<std::size_t>(subspace));
+    correction_.resize(static_cast<std::size_t>(subspace));
+  }
+  rows_ = rows;
+  subspace_ = subspace;
+  projection_.setZero(subspace, subspace);
+}
+
+namespace {
+
+using Matrix = Eigen::MatrixXd;
+using BasisMap = Eigen::Map<Eigen::MatrixXd>;
+
+// 1/sqrt(2): a Gram-Schmidt pass that keeps less than this fraction of the norm has cancelled
+// enough that rounding may have left components along the basis; one more pass removes them.
+constexpr double kKeptNormForOnePass = 0.70710678118654752;
+// Rows of the basis rotated at a time in a restart (the block fits in cache).
+constexpr Eigen::Index kRotationRows = 512;
+
+// A fixed pseudo-random vector (splitmix64), the same on every platform and run.
+void fill_pseudo_random(Eigen::Ref<Eigen::VectorXd> x, std::uint64_t& state) {
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    x[i] = static_cast<double>(z >> 11) * 0x1.0p-53 - 0.5;
+  }
+}
+
+struct Orthogonalised {
+  double norm = 0.0;
+  bool in_span = false;  // what is left of w is rounding: w lay in the span of the basis
+};
+
+// Classical Gram-Schmidt of w against the first `columns` basis vectors, a second pass only when
+// the first kept less than 1/sqrt(2) of the norm (DGKS). `h` receives the total coefficients.
+Orthogonalised orthogonalise(const BasisMap& basis, Eigen::Index columns, Eigen::Ref<Eigen::VectorXd> w,
+                             Eigen::Ref<Eigen::VectorXd> h, Eigen::Ref<Eigen::VectorXd> correction) {
+  const auto V = basis.leftCols(columns);
+  auto coefficients = h.head(columns);
+  const double before = w.norm();
+  coefficients.noalias() = V.transpose() * w;
+  w.noalias() -= V * coefficients;
+  const double after = w.norm();
+  if (after > kKeptNormForOnePass * before) return {after, false};
+  auto again = correction.head(columns);
+  again.noalias() = V.transpose() * w;
+  w.noalias() -= V * again;
+  coefficients += again;
+  const double twice = w.norm();
+  return {twice, !(twice > kKeptNormForOnePass * after)};
+}
+
+// One run's state: the workspace's buffers seen at this run's size.
+struct Run {
+  const SymmetricOperator& apply;
+  BasisMap basis;
+  Eigen::Map<Eigen::VectorXd> residual, coefficients, correction;
+  Matrix& projection;
+  Matrix& block;
+  int subspace;
+  double residual_norm = 0.0;  // beta_m
+  std::uint64_t seed = 0x5eed5eedULL;
+  long operations = 0;
+};
+
+// A new unit direction orthogonal to the first `columns` basis vectors (after a breakdown).
+void fresh_direction(Run& run, Eigen::Index columns, Eigen::Ref<Eigen::VectorXd> w) {
+  fill_pseudo_random(w, run.seed);
+  orthogonalise(run.basis, columns, w, run.coefficients, run.correction);
+  orthogonalise(run.basis, columns, w, run.coefficients, run.correction);
+  w.normalize();
+}
+
+// Lanczos steps from basis vector `from` to the end of the subspace. Column j + 1 (or the
+// residual after the last step) receives A v_j orthogonalised against v_0..v_j (full
+// re-orthogonalisation); the projection
+// gets alpha_j on the diagonal and beta_j beside it (a breakdown gives beta_j = 0 and a fresh
+// direction).
+void extend(Run& run, int from) {
+  const int m = run.subspace;
+  for (int j = from; j < m; ++j) {
+    const bool last = j + 1 == m;
+    Eigen::Ref<Eigen::VectorXd> w = last ? Eigen::Ref<Eigen::VectorXd>(run.residual)
+                                         : Eigen::Ref<Eigen::VectorXd>(run.basis.col(j + 1));
+    run.apply(run.basis.col(j).data(), w.data());
+    ++run.operations;
+    // The three-term recurrence first (after a restart, step `from` couples to every kept vector
+    // and has none); the Gram-Schmidt pass then only removes what rounding left, so it seldom
+    // cancels enough to need the second pass.
+    double alpha = 0.0;
+    if (j > from) {
+      w -= run.projection(j - 1, j) * run.basis.col(j - 1);
+      alpha = run.basis.col(j).dot(w);
+      w -= alpha * run.basis.col(j);
+    }
+    const Orthogonalised o = orthogonalise(run.basis, j + 1, w, run.coefficients, run.correction);
+    run.projection(j, j) = alpha + run.coefficients[j];
+    const double beta = o.in_span ? 0.0 : o.norm;
+    if (last) {
+      run.residual_norm = beta;
+      if (beta > 0.0) w /= beta;
+      return;
+    }
+    if (beta > 0.0) {
+      w /= beta;
+    } else {
+      fresh_direction(run, j + 1, w);
+    }
+    run.projection(j, j + 1) = run.projection(j + 1, j) = beta;
+  }
+}
+
+// The Ritz pairs of the projection, ordered by decreasing magnitude.
+struct RitzPairs {
+  Eigen::VectorXd values;   // ordered
+  Matrix vectors;           // columns in the same order
+  Eigen::VectorXd residuals;  // |beta_m s_mi|
+};
+
+RitzPairs ritz_pairs(const Run& run) {
+  const int m = run.subspace;
+  Eigen::SelfAdjointEigenSolver<Matrix> eigen(run.projection.topLeftCorner(m, m));
+  std::vector<int> order(static_cast<std::size_t>(m));
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return std::abs(eigen.eigenvalues()[a]) > std::abs(eigen.eigenvalues()[b]);
+  });
+  RitzPairs ritz{Eigen::VectorXd(m), Matrix(m, m), Eigen::VectorXd(m)};
+  for (int i = 0; i < m; ++i) {
+    ritz.values[i] = eigen.eigenvalues()[order[static_cast<std::size_t>(i)]];
+    ritz.vectors.col(i) = eigen.eigenvectors().col(order[static_cast<std::size_t>(i)]);
+    ritz.residuals[i] = std::abs(run.residual_norm * ritz.vectors(m - 1, i));
+  }
+  return ritz;
+}
+
+int converged_count(const RitzPairs& ritz, int wanted, double tolerance) {
+  // Below eps^(2/3) a Ritz value's magnitude is no scale for its residual.
+  const double floor = std::pow(std::numeric_limits<double>::epsilon(), 2.0 / 3.0);
+  int count = 0;
+  for (int i = 0; i < wanted; ++i)
+    if (ritz.residuals[i] < tolerance * std::max(floor, std::abs(ritz.values[i]))) ++count;
+  return count;
+}
+
+// Replaces the first `columns` basis vectors by basis * s (the Ritz vectors), in place, a block of
+// rows at a time.
+void rotate_basis(Run& run, const Matrix& s, int columns) {
+  const auto rows = run.basis.rows();
+  const auto S = s.leftCols(columns);
+  for (Eigen::Index r = 0; r < rows; r += kRotationRows) {
+    const Eigen::Index count = std::min(kRotationRows, rows - r);
+    run.block.noalias() = run.basis.middleRows(r, count) * S;
+    run.basis.block(r, 0, count, columns) = run.block;
+  }
+}
+
+// Thick restart: keep `kept` Ritz vectors; the projection becomes diag(theta) bordered by the
+// couplings beta_m s_mi to the residual direction, which becomes basis vector `kept`.
+void restart(Run& run, const RitzPairs& ritz, int kept) {
+  const int m = run.subspace;
+  rotate_basis(run, ritz.vectors, kept);
+  run.projection.setZero();
+  for (int i = 0; i < kept; ++i) {
+    run.projection(i, i) = ritz.values[i];
+    run.projection(i, kept) = run.projection(kept, i) = run.residual_norm * ritz.vectors(m - 1, i);
+  }
+  run.basis.col(kept) = run.residual;
+}
+
+// How many Ritz vectors to keep: the wanted ones plus some converged extra ones, which speed up
+// the wanted ones' convergence, and always room for at least one new step.
+int kept_vectors(int wanted, int converged, int subspace) {
+  int kept = wanted + std::min(converged, (subspace - wanted) / 2);
+  if (kept == 1) kept = subspace >= 6 ? subspace / 2 : std::min(2, subspace - 1);
+  return std::max(1, std::min(kept, subspace - 1));
+}
+
+// The start vector: A r for a fixed pseudo-random r. For a shift-invert operator this damps the
+// components along eigenvalues far from the shift (a stiff chain's axial modes) by their tiny
+// theta, which Ritz vectors would otherwise carry at the size of the convergence tolerance.
+void start(Run& run) {
+  fill_pseudo_random(run.residual, run.seed);
+  run.apply(run.residual.data(), run.basis.col(0).data());
+  ++run.operations;
+  if (!(run.basis.col(0).norm() > 0.0)) run.basis.col(0) = run.residual;
+  run.basis.col(0).normalize();
+}
+
+}  // namespace
+
+LanczosResult largest_magnitude_eigenpairs(const SymmetricOperator& apply, Eigen::Index rows, int wanted,
+                                           int subspace, double tolerance, int max_restarts,
+                                           LanczosWorkspace& workspace) {
+  const int m = static_cast<int>(std::min<Eigen::Index>(rows, std::max(subspace, wanted + 1)));
+  workspace.reserve(rows, m);
+  Run run{apply, workspace.basis(), workspace.residual(), workspace.coefficients(), workspace.correction(),
+          workspace.projection(), workspace.block(), m};
+  run.block.resize(std::min(kRotationRows, rows), m);
+  start(run);
+  LanczosResult result;
+  int from = 0;
+  for (;; ++result.restarts) {
+    extend(run, from);
+    const RitzPairs ritz = ritz_pairs(run);
+    const int converged = converged_count(ritz, wanted, tolerance);
+    if (converged >= wanted || m == rows || result.restarts >= max_restarts) {
+      result.converged = converged >= wanted;
+      result.values = ritz.values.head(wanted);
+      result.vectors.noalias() = run.basis * ritz.vectors.leftCols(wanted);
+      break;
+    }
+    from = kept_vectors(wanted, converged, m);
+    restart(run, ritz, from);
+  }
+  result.operations = run.operations;
+  return result;
+}
+
+}  // namespace catena::internal
