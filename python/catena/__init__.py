@@ -19,16 +19,19 @@ import os
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from ._catena import (Cable, Check, ForcedRequest, ForcedResponse, Groups, InvalidInput, Mode, Modes,
-                      ModeShapes, ParseError, Problem, Request, Result, Scene, SolverResult, Statics,
-                      Summary, __version__, dimensionless_groups, run_solver, solve_statics)
+from ._catena import (Cable, CertifiedReference, Check, ConvergenceStudy, ExternalCheck, ForcedRequest,
+                      ForcedResponse, Groups, InvalidInput, Mode, ModeComparison, Modes, ModeShapes,
+                      ParseError, Problem, Request, ResolutionComparison, Result, Scene, SolverResult,
+                      Statics, Summary, __version__, dimensionless_groups, run_solver, solve_statics)
 from . import _catena
+from ._check_results import ORIGIN as _RESULTS_ORIGIN, _NotAValue, results_json_text
 from ._scene_dict import scene_toml_text
 
 __all__ = [
-    "Cable", "Check", "ForcedRequest", "ForcedResponse", "Groups", "InvalidInput", "Knob", "Mode",
-    "Modes", "ModeShapes", "ParseError", "Problem", "Request", "Result", "Scene", "SolverInfo",
-    "SolverResult", "Statics", "Summary", "dimensionless_groups", "load_scene", "load_scenes",
+    "Cable", "CertifiedReference", "Check", "ConvergenceStudy", "ExternalCheck", "ForcedRequest",
+    "ForcedResponse", "Groups", "InvalidInput", "Knob", "Mode", "ModeComparison", "Modes", "ModeShapes",
+    "ParseError", "Problem", "Request", "ResolutionComparison", "Result", "Scene", "SolverInfo",
+    "SolverResult", "Statics", "Summary", "check", "dimensionless_groups", "load_scene", "load_scenes",
     "run_solver", "solve", "solve_statics", "solve_sweep", "solvers",
 ]
 
@@ -81,6 +84,45 @@ def solve_sweep(scene, *, solvers=None, time_limit_s=None, checks=True):
     """Solves every scene of a file or dict (each value of a [sweep]); a list of Result."""
     names = _solver_list(solvers)
     return [_catena._run_scene(s, names, time_limit_s, checks) for s in load_scenes(scene)]
+
+
+def _existing_path(path, what):
+    if not os.path.exists(path):
+        raise FileNotFoundError(2, f"{what} file not found", os.fspath(path))
+    return os.fspath(path)
+
+
+def check(results, scene, rtol=1e-3, shapes=None):
+    """Compares another code's natural frequencies with Catena's certified reference for `scene`, as
+    `catena check` does (docs/check.md, docs/python.md). Returns an ExternalCheck: `.references`
+    (the solver used per plane and why), `.modes` (per mode of the other code: its value, Catena's
+    value and estimate, the relative error, MAC, observed order, extrapolated limit, bias and the
+    verdict), `.failed`, `.error` (no reference could be computed), `.to_json()`.
+
+    results: the path of a CSV or .json results file (the CLI's formats); or a list of dicts
+        {"plane", "mode", "frequency_hz" or "omega_rad_s", optional "resolution", optional "shape"};
+        or {"results": that list}; or a dict of columns of equal length (lists or numpy arrays)
+        with those names, None meaning a field the row does not give.
+    scene: a path, a dict with the TOML's structure, or a Scene (as catena.solve).
+    rtol: relative tolerance on frequencies, in (0, 1).
+    shapes: the path of a long-format shapes CSV, with a CSV results file only (in-memory rows
+        carry their own "shape": {"s_m", "u", "w", "v", "tension_n"}).
+
+    Bad results raise InvalidInput naming the row and the field, with the CLI's messages. The
+    reference solve releases the GIL.
+    """
+    scene = load_scene(scene)
+    if isinstance(results, (str, os.PathLike)):
+        shapes_path = "" if shapes is None else _existing_path(shapes, "shapes")
+        return _catena._check_file(_existing_path(results, "results"), shapes_path, scene, rtol)
+    if shapes is not None:
+        raise InvalidInput("shapes: a shapes file goes with a CSV results file; rows given in Python carry "
+                           "their own 'shape' ({'s_m': [...], 'u': [...], ...})")
+    try:
+        text = results_json_text(results)
+    except _NotAValue as error:
+        raise InvalidInput(str(error)) from None
+    return _catena._check_json(text, _RESULTS_ORIGIN, scene, rtol)
 
 
 @dataclass(frozen=True)

@@ -39,4 +39,5 @@ PYBIND11_MODULE(_catena, module) {
   bind_results(module);
   bind_solvers(module);
   bind_scene(module);
+  bind_external_check(module);
 }

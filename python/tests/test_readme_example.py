@@ -25,4 +25,7 @@ def test_readme_example_runs(tmp_path):
         os.chdir(cwd)
     assert namespace["shapes"].w.shape == (201, 4)
     assert namespace["r"]["shooting"].inplane.omega_rad_s.shape == (6,)
+    check = namespace["check"]
+    assert [m.verdict for m in check.modes] == ["converges to a wrong limit"] * 4
+    assert all(abs(m.bias_relative - 0.01) < 1e-5 for m in check.modes)
     namespace["plt"].close("all")

@@ -9,18 +9,11 @@
 #include "catena/io/external_results_reader.hpp"
 #include "catena/io/file_access.hpp"
 #include "catena/io/scene_reader.hpp"
-#include "catena/verification/certified_reference.hpp"
+#include "catena/verification/scene_check.hpp"
 #include "cli/commands.hpp"
 
 namespace catena::cli {
 namespace {
-
-// Catena computes this many modes beyond the other program's highest in each plane, so that a
-// mode the other program skipped or misnumbered still finds its partner.
-constexpr int kExtraReferenceModes = 3;
-// Stations of Catena's shapes when shapes are compared (linear interpolation to the other
-// program's stations; error ~ (L/2000)^2 curvature, far below any MAC of interest).
-constexpr int kReferenceShapePoints = 2001;
 
 struct CheckArguments {
   std::string results;
@@ -38,31 +31,6 @@ Scene read_one_scene(const std::string& path) {
     throw InvalidInput(fmt::format("{}: a sweep of {} scenes; catena check takes one scene", path, scenes.size()));
   }
   return scenes.front();
-}
-
-// The scene's request turned into what the check needs: enough modes in each plane the results
-// use, shapes and tension when the results carry them, no forced response; shooting and fe only
-// (their knobs from the scene kept).
-void prepare_reference_request(Scene& scene, const std::vector<ExternalMode>& results) {
-  int inplane = 0, outofplane = 0;
-  bool shapes = false, tension = false;
-  for (const auto& row : results) {
-    (row.plane == Plane::InPlane ? inplane : outofplane) =
-        std::max(row.plane == Plane::InPlane ? inplane : outofplane, row.mode + kExtraReferenceModes);
-    shapes = shapes || row.shape.has_value();
-    tension = tension || (row.shape && row.shape->tension_n.size() > 0);
-  }
-  SolveRequest& request = scene.request;
-  request.inplane_modes = std::min(inplane, kMaxRequestModes);
-  request.outofplane_modes = std::min(outofplane, kMaxRequestModes);
-  request.shapes = shapes;
-  request.tension = tension;
-  request.forced.reset();
-  const long modes = request.inplane_modes + request.outofplane_modes;
-  request.points = static_cast<int>(std::min<long>(kReferenceShapePoints, kMaxShapeValues / std::max(modes, 1L)));
-  std::map<std::string, SolverKnobs> solvers;
-  for (const char* name : {"shooting", "fe"}) solvers[name] = scene.solvers.count(name) ? scene.solvers.at(name) : SolverKnobs{};
-  scene.solvers = solvers;
 }
 
 void print_check(const ExternalCheck& check) {
@@ -97,29 +65,13 @@ int run_check(const CheckArguments& arguments) {
   if (!arguments.json.empty()) check_output_file(arguments.json);
   if (!arguments.out.empty()) check_output_directory(arguments.out);
   const std::vector<ExternalMode> results = read_external_results(arguments.results, arguments.shapes);
-  Scene scene = read_one_scene(arguments.scene);
-  prepare_reference_request(scene, results);
-  SceneRunOptions run;
-  run.checks = false;
-  const SceneResult solved = run_scene(scene, run);
-  if (solved.error_kind == SceneError::BadInput) throw InvalidInput(solved.error);
-  if (!solved.error.empty()) {
-    fmt::print(stderr, "error: {}: {}\n", arguments.scene, solved.error);
+  const Scene scene = read_one_scene(arguments.scene);
+  const SceneCheck checked = check_scene(results, scene, options);
+  if (!checked.check) {
+    fmt::print(stderr, "error: {}: {}\n", arguments.scene, checked.error);
     return 3;
   }
-  std::vector<CertifiedReference> references;
-  for (const Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
-    const bool used = std::any_of(results.begin(), results.end(), [&](const ExternalMode& r) { return r.plane == plane; });
-    if (!used) continue;
-    std::string why;
-    auto reference = certified_reference(solved.outputs, plane, why);
-    if (!reference) {
-      fmt::print(stderr, "error: {}: no certified reference: {}\n", arguments.scene, why);
-      return 3;
-    }
-    references.push_back(std::move(*reference));
-  }
-  const ExternalCheck check = check_external_results(results, references, options);
+  const ExternalCheck& check = *checked.check;
   const CheckSources sources{scene.name, path_text(arguments.scene), path_text(arguments.results),
                              arguments.shapes.empty() ? "" : path_text(arguments.shapes)};
   if (!arguments.quiet) print_check(check);

@@ -190,4 +190,10 @@ std::vector<ExternalMode> read_external_results(const std::filesystem::path& res
   return modes;
 }
 
+std::vector<ExternalMode> parse_external_results_json(const std::string& text, const std::string& origin) {
+  std::vector<ExternalMode> modes = internal::parse_results_json_text(text, origin);
+  validate_external_results(modes);
+  return modes;
+}
+
 }  // namespace catena

@@ -74,5 +74,26 @@ TEST(ExternalResultsReader, JsonErrorsNameThePath) {
                           "duplicate");
 }
 
+// The text entry point (used by the Python module for rows given in memory) reads what the file
+// reader reads, and names its origin where the file name would be.
+TEST(ExternalResultsReader, JsonTextEqualsJsonFile) {
+  const std::string text = R"({"results": [{"plane": "in-plane", "mode": 1, "resolution": 20, "frequency_hz": 0.5},
+      {"plane": "outofplane", "mode": 2, "omega_rad_s": 1.5, "shape": {"s_m": [0, 1], "v": [0, 1]}}]})";
+  const auto from_file = read_external_results(file("g.json", text));
+  const auto from_text = parse_external_results_json(text, "<results>");
+  ASSERT_EQ(from_text.size(), from_file.size());
+  for (std::size_t i = 0; i < from_text.size(); ++i) {
+    EXPECT_EQ(from_text[i].plane, from_file[i].plane);
+    EXPECT_EQ(from_text[i].omega_rad_s, from_file[i].omega_rad_s);
+    EXPECT_EQ(from_text[i].resolution, from_file[i].resolution);
+    EXPECT_EQ(from_text[i].shape.has_value(), from_file[i].shape.has_value());
+  }
+  EXPECT_EQ(from_text[1].origin, "<results>: results[1]");
+  testing::expect_invalid([&] { parse_external_results_json(R"([{"plane": "up", "mode": 1, "omega_rad_s": 1}])", "<results>"); },
+                          "<results>: results[0].plane");
+  testing::expect_invalid([&] { parse_external_results_json(R"([{"plane": "inplane", "mode": 1, "omega_rad_s": 1},
+      {"plane": "inplane", "mode": 1, "omega_rad_s": 2}])", "<results>"); }, "duplicate");
+}
+
 }  // namespace
 }  // namespace catena

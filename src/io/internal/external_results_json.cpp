@@ -79,8 +79,11 @@ ExternalMode read_item(const json& item, const std::string& where) {
 }  // namespace
 
 std::vector<ExternalMode> read_external_results_json(const std::filesystem::path& path) {
-  const std::string file = path_text(path);
-  const json document = json::parse(read_input_file(path, "results JSON", 64 * kMaxInputFileBytes), nullptr, false);
+  return parse_results_json_text(read_input_file(path, "results JSON", 64 * kMaxInputFileBytes), path_text(path));
+}
+
+std::vector<ExternalMode> parse_results_json_text(const std::string& text, const std::string& file) {
+  const json document = json::parse(text, nullptr, false);
   if (document.is_discarded()) throw InvalidInput(fmt::format("{}: not valid JSON (NaN is not JSON either)", file));
   const json* list = &document;
   if (document.is_object()) {
