@@ -61,6 +61,17 @@ void mode_count(const SolverOutput& output, Plane plane, CheckBuilder& builder) 
   builder.add(check);
 }
 
+// A mode its solver declared beyond its own accuracy target (Mode::meets_target, listed in the
+// summary's missed_modes) is still compared, but a disagreement is the WARN the solver announced,
+// not a FAIL (docs/verdicts.md, "Declared misses"); the estimate check still holds the declared
+// estimate to the actual error.
+CheckBuilder::Tolerance declared_miss(CheckBuilder::Tolerance tol, const Mode& x, const Mode& y, CheckResult& check) {
+  if (x.meets_target && y.meets_target) return tol;
+  tol.warn_only = true;
+  check.detail += "; declared beyond its solver's accuracy target (missed_modes)";
+  return tol;
+}
+
 void frequency_pair(const SceneResult& result, const SolverOutput& a, const SolverOutput& b, Plane plane,
                     CheckBuilder& builder) {
   const ModalResult* ma = modal(a, plane);
@@ -79,7 +90,8 @@ void frequency_pair(const SceneResult& result, const SolverOutput& a, const Solv
     check.detail = fmt::format("omega {:.12g} vs {:.12g} rad/s (error estimates {:.1e}, {:.1e})", x.omega_rad_s,
                                y.omega_rad_s, x.relative_error_estimate, y.relative_error_estimate);
     if (!tol) continue;
-    builder.add_measured(check, relative_difference(x.omega_rad_s, y.omega_rad_s), *tol, true);
+    builder.add_measured(check, relative_difference(x.omega_rad_s, y.omega_rad_s), declared_miss(*tol, x, y, check),
+                         true);
   }
 }
 
