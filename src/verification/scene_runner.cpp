@@ -6,6 +6,7 @@
 
 #include "catena/core/error.hpp"
 #include "verification/internal/checks.hpp"
+#include "verification/internal/forced_conditioning_solve.hpp"
 
 namespace catena {
 
@@ -132,7 +133,10 @@ SceneResult run_scene(const Scene& scene, const SceneRunOptions& options) {
   }
   run_solvers(result, options, limits);
   if (options.perturbation) apply_perturbation(*options.perturbation, result.outputs);
-  if (options.checks && result.error.empty()) result.checks = internal::run_checks(result, options.tolerances, options.findings);
+  if (options.checks && result.error.empty()) {
+    result.forced_conditioning = internal::find_forced_conditioning(result, options.tolerances, limits);
+    result.checks = internal::run_checks(result, options.tolerances, options.findings);
+  }
   result.wall_time_s = seconds_since(start);
   return result;
 }

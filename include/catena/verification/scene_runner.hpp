@@ -14,6 +14,7 @@
 #include "catena/statics/elastic_catenary.hpp"
 #include "catena/verification/check_result.hpp"
 #include "catena/verification/findings.hpp"
+#include "catena/verification/forced_conditioning.hpp"
 #include "catena/verification/scene.hpp"
 #include "catena/verification/tolerance_table.hpp"
 
@@ -34,6 +35,9 @@ struct SceneResult {
   /// The request in SI units.
   SolveRequest request;
   std::vector<SolverOutput> outputs;
+  /// The natural frequencies behind the forced check's condition number (forced scenes, when
+  /// checks are asked): from the most accurate exact solver that ran.
+  ForcedConditioning forced_conditioning;
   std::vector<CheckResult> checks;
   /// Non-empty when the scene could not be solved at all; `error_kind` says whether the input was
   /// bad or the statics failed numerically.

@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "solvers/internal/fe_banded_ldlt.hpp"
+#include "solvers/internal/fe_forced_richardson.hpp"
 #include "solvers/internal/fe_summary.hpp"
 #include "solvers/internal/work_meter.hpp"
 
@@ -43,52 +45,92 @@ struct Forcing {
   const StaticSolution& statics;
 
   FeLevelResponse on(const FeLevel& level, double omega) const {
-    return respond_on_level(plane, level.chain, level.matrices.at(plane), omega, end_a, end_b, stations,
-                            statics);
+    return respond_on_level(plane, level.chain, level.matrices.at(plane), omega, end_a, end_b);
   }
 };
 
 double max_abs(const Vector& x) { return x.size() ? x.cwiseAbs().maxCoeff() : 0.0; }
 
-// The response on the finest main mesh, extrapolated in kappa when penalised, with the relative
-// error estimate of its peak tension from the coarse mesh (same penalty as the first level): the
-// response converges as O(h^2), so |fine - coarse| bounds the fine mesh's error.
-void respond(ForcedResponse& response, const Forcing& forcing, const FePlan& plan, const FeLevels& levels) {
-  const double omega = response.omega_rad_s;
-  const auto& fine = levels[static_cast<std::size_t>(plan.main_fine)];
-  std::vector<FeLevelResponse> raw;
-  for (const FeLevel& level : fine) {
-    raw.push_back(forcing.on(level, omega));
-    if (!raw.back().ok) {
-      response.diagnostic = raw.back().diagnostic;
-      return;
+// One mesh's response, extrapolated to kappa = 0 when penalised (2 a - b over its two levels),
+// and the field at the first penalty, whose distance from it is the kappa correction.
+struct MeshResponse {
+  std::string diagnostic;  // empty when every level gave a response
+  FeResponseField field;
+  FeResponseField at_first_penalty;
+};
+
+MeshResponse respond_on_mesh(const Forcing& forcing, const std::vector<FeLevel>& mesh, double omega) {
+  MeshResponse out;
+  std::vector<FeResponseField> fields;
+  for (const FeLevel& level : mesh) {
+    FeLevelResponse response = forcing.on(level, omega);
+    if (!response.ok) {
+      out.diagnostic = response.diagnostic;
+      return out;
     }
+    fields.push_back(std::move(response.field));
   }
-  FeSampled result = raw[0].sampled;
+  out.at_first_penalty = fields[0];
+  out.field = fields.size() == 2 ? extrapolate_field_in_kappa(fields[0], fields[1]) : fields[0];
+  return out;
+}
+
+// The error estimate's pieces, absolute over the stations (in the peak tension's unit).
+struct ForcedErrorParts {
+  double mesh = 0.0;   // the Richardson correction |R - fine| (without Richardson: |fine - coarse|)
+  double kappa = 0.0;  // the kappa correction on the fine mesh (inextensible)
+};
+
+// The relative error estimate of the peak tension: the mesh term plus the kappa term plus the
+// propagated frequency error. The Richardson correction |R - fine| is the fine mesh's O(h^2) error
+// and bounds the O(h^4) error of R while the response is smooth in h^2. Near a natural frequency
+// that expansion holds only while the meshes' frequency shift is small against the distance to
+// resonance, and the response of any model whose omega_n is off by delta_n is off by about
+// 2 delta_n omega_n^2 / |omega_n^2 - omega^2|: that term, with fe's own frequency estimates, is
+// added, so the estimate never falls below the frequency error's amplification.
+double forced_estimate(const ForcedErrorParts& parts, double peak, double omega,
+                       const std::vector<FeNaturalFrequency>& naturals) {
+  return (parts.mesh + parts.kappa) / peak + frequency_error_amplification(omega, naturals);
+}
+
+// The response at one forcing frequency: the meshes combined (Richardson in h on coinciding
+// points, fe_forced_richardson.hpp) and sampled on the stations, with the relative error estimate
+// of its peak tension (forced_estimate).
+void respond(ForcedResponse& response, const Forcing& forcing, const FePlan& plan, const FeLevels& levels,
+             const std::vector<FeNaturalFrequency>& naturals) {
+  const double omega = response.omega_rad_s;
+  const MeshResponse fine = respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.main_fine)], omega);
+  MeshResponse coarse;
+  if (plan.has_coarse() && fine.diagnostic.empty())
+    coarse = respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.main_coarse)], omega);
+  response.diagnostic = fine.diagnostic.empty() ? coarse.diagnostic : fine.diagnostic;
+  if (!response.diagnostic.empty()) return;
+  const FeSampled fine_sampled = sample_field(forcing.plane, fine.field, forcing.stations, forcing.statics);
+  FeSampled result = fine_sampled;
+  ForcedErrorParts parts;
+  const bool in_plane = forcing.plane == Plane::InPlane;
+  if (plan.has_coarse()) {
+    const FeSampled other =
+        plan.richardson
+            ? sample_field(forcing.plane, richardson_field(coarse.field, fine.field), forcing.stations, forcing.statics)
+            : sample_field(forcing.plane, coarse.field, forcing.stations, forcing.statics);
+    if (plan.richardson) result = other;
+    parts.mesh = max_station_difference(fine_sampled, other, in_plane);
+  }
   if (plan.inextensible) {
-    auto extrapolate = [](Vector& a, const Vector& b) {
-      if (a.size() && a.size() == b.size()) a = 2.0 * a - b;
-    };
-    extrapolate(result.u, raw[1].sampled.u);
-    extrapolate(result.w, raw[1].sampled.w);
-    extrapolate(result.v, raw[1].sampled.v);
-    extrapolate(result.tension, raw[1].sampled.tension);
+    parts.kappa = max_station_difference(
+        fine_sampled, sample_field(forcing.plane, fine.at_first_penalty, forcing.stations, forcing.statics), in_plane);
   }
   response.u = result.u;
   response.w = result.w;
   response.v = result.v;
   response.tension_n = result.tension;
   response.max_abs_tension_n = max_abs(result.tension);
+  if (plan.has_coarse() && response.max_abs_tension_n > 0.0)
+    response.relative_error_estimate = forced_estimate(parts, response.max_abs_tension_n, omega, naturals);
   const double scale = std::max({max_abs(response.u), max_abs(response.w), max_abs(response.v)});
-  if (plan.has_coarse() && response.max_abs_tension_n > 0.0) {
-    const FeLevelResponse coarse = forcing.on(levels[static_cast<std::size_t>(plan.main_coarse)][0], omega);
-    if (coarse.ok && coarse.sampled.tension.size()) {
-      const double fine_max = raw[0].sampled.tension.cwiseAbs().maxCoeff();
-      const double coarse_max = coarse.sampled.tension.cwiseAbs().maxCoeff();
-      response.relative_error_estimate = std::abs(fine_max - coarse_max) / std::max(fine_max, 1e-300);
-    }
-  }
-  if (!std::isfinite(scale) || !std::isfinite(response.max_abs_tension_n)) {
+  if (!std::isfinite(scale) || !std::isfinite(response.max_abs_tension_n) ||
+      !std::isfinite(response.relative_error_estimate)) {
     response = ForcedResponse{};
     response.omega_rad_s = omega;
     response.s_m = forcing.stations;
@@ -128,14 +170,24 @@ std::string resonance_diagnostic(double omega, Plane plane, const std::vector<Fe
   return {};
 }
 
+double frequency_error_amplification(double omega, const std::vector<FeNaturalFrequency>& naturals) {
+  double worst = 0.0;
+  for (const FeNaturalFrequency& mode : naturals) {
+    if (!(mode.relative_error_estimate >= 0.0)) continue;
+    const double wn2 = mode.omega_rad_s * mode.omega_rad_s;
+    const double distance = std::abs(wn2 - omega * omega);
+    worst = std::max(worst, distance > 0.0 ? 2.0 * mode.relative_error_estimate * wn2 / distance
+                                           : std::numeric_limits<double>::infinity());
+  }
+  return worst;
+}
+
 FeLevelResponse respond_on_level(Plane plane,
                                  const FeChain& chain,
                                  const FeMatrices& matrices,
                                  double omega,
                                  const Vec2& end_a,
-                                 const Vec2& end_b,
-                                 const Vector& stations,
-                                 const StaticSolution& statics) {
+                                 const Vec2& end_b) {
   FeLevelResponse out;
   Vector boundary(plane == Plane::InPlane ? 4 : 2);
   if (plane == Plane::InPlane) {
@@ -161,11 +213,9 @@ FeLevelResponse respond_on_level(Plane plane,
         omega, chain.elements);
     return out;
   }
-  const std::vector<Vec2> D = node_displacements(plane, chain.elements, x, end_a, end_b);
-  Vector tau;
-  if (plane == Plane::InPlane) tau = element_tension(chain, D);
-  out.sampled = sample_on_stations(plane, chain, D, plane == Plane::InPlane ? &tau : nullptr, stations, statics);
-  if (plane == Plane::OutOfPlane) out.sampled.tension = Vector::Zero(stations.size());
+  out.field.element_length_m = chain.element_length_m;
+  out.field.nodes = node_displacements(plane, chain.elements, x, end_a, end_b);
+  if (plane == Plane::InPlane) out.field.tension = element_tension(chain, out.field.nodes);
   out.ok = true;
   return out;
 }
@@ -190,7 +240,7 @@ ForcedOutcome fe_forced_response(const ForcedRequest& request,
     response.omega_rad_s = omega;
     response.s_m = stations;
     response.diagnostic = resonance_diagnostic(omega, forcing.plane, naturals);
-    if (response.diagnostic.empty()) respond(response, forcing, plan, levels);
+    if (response.diagnostic.empty()) respond(response, forcing, plan, levels, naturals);
     // Every diagnostic of fe's forced response is a resonance (its own, or a singular K - omega^2 M).
     response.at_resonance = !response.diagnostic.empty();
     response.near_resonance = response.diagnostic.empty() && near_natural(omega, naturals);

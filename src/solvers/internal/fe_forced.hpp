@@ -1,9 +1,10 @@
 #pragma once
 /// \file
 /// The `fe` solver's forced response (docs/methods/fe.md): a harmonic end displacement d imposed by
-/// one banded solve of (K - omega^2 M) x = -K_ib d per forcing frequency on the finest main mesh
-/// (each penalty, extrapolated to kappa = 0 when the cable is inextensible); the coarse mesh of the
-/// pair gives the error estimate of the peak tension. A forcing frequency at a natural frequency
+/// one banded solve of (K - omega^2 M) x = -K_ib d per forcing frequency and level (each penalty,
+/// extrapolated to kappa = 0 when the cable is inextensible), Richardson-extrapolated in h over the
+/// main mesh pair (fe_forced_richardson.hpp), with a relative error estimate of the peak tension
+/// that includes the amplification of the natural frequencies' errors near a resonance. A forcing frequency at a natural frequency
 /// (within the frequency's own error estimate) or at a singular K - omega^2 M gets a diagnostic
 /// instead of a response.
 
@@ -11,6 +12,7 @@
 
 #include "catena/solvers/modal_result.hpp"
 #include "catena/solvers/solve_request.hpp"
+#include "solvers/internal/fe_forced_richardson.hpp"
 #include "solvers/internal/fe_levels.hpp"
 #include "solvers/internal/fe_shapes.hpp"
 #include "solvers/internal/solver_driver.hpp"
@@ -32,21 +34,25 @@ Plane forced_plane(const ForcedRequest& request);
 std::string resonance_diagnostic(double omega, Plane plane, const std::vector<FeNaturalFrequency>& naturals);
 
 /// The response of one level (a chain and its operators) at `omega` to end displacements
-/// `end_a`, `end_b`, on the stations; `diagnostic` set (and no response) when K - omega^2 M is
-/// singular to rounding.
+/// `end_a`, `end_b`: nodal displacements and element tensions; `diagnostic` set (and no response)
+/// when K - omega^2 M is singular to rounding.
 struct FeLevelResponse {
   bool ok = false;
   std::string diagnostic;
-  FeSampled sampled;
+  FeResponseField field;
 };
 FeLevelResponse respond_on_level(Plane plane,
                                  const FeChain& chain,
                                  const FeMatrices& matrices,
                                  double omega,
                                  const Vec2& end_a,
-                                 const Vec2& end_b,
-                                 const Vector& stations,
-                                 const StaticSolution& statics);
+                                 const Vec2& end_b);
+
+/// How a relative error delta_n of the natural frequencies propagates into the forced response
+/// at `omega`: max over the modes with an estimate of 2 delta_n omega_n^2 / |omega_n^2 - omega^2|
+/// (the derivative of 1 / (omega_n^2 - omega^2) times the change 2 delta_n omega_n^2 of omega_n^2,
+/// relative). 0 without naturals; infinite on a natural frequency.
+double frequency_error_amplification(double omega, const std::vector<FeNaturalFrequency>& naturals);
 
 /// The forced response at every requested frequency, with its summary (Converged: every
 /// frequency has a response or a resonance diagnostic, which is the discrete model's answer).

@@ -10,7 +10,7 @@ namespace catena::internal {
 namespace {
 
 // Whatever a tolerance says, a relative difference above this is a gross disagreement (docs/verdicts.md).
-constexpr double kGrossRelative = 0.5;
+constexpr double kGrossRelative = kGrossRelativeDifference;
 
 }  // namespace
 
@@ -47,6 +47,25 @@ std::optional<CheckBuilder::Tolerance> CheckBuilder::tolerance(const std::string
   const ToleranceRule* rule = tolerances_.find(check, a, b, result_.scene.name, result_.scene.tags);
   if (!rule) return std::nullopt;
   return Tolerance{rule->tolerance(parameters_), rule->reason, rule->warn_only};
+}
+
+std::optional<CheckBuilder::ForcedTolerance> CheckBuilder::forced_tolerance(const std::string& a, const std::string& b,
+                                                                          double omega) const {
+  const auto rule = tolerance("forced", a, b, result_.scene.checks.tension_rel);
+  if (!rule) return std::nullopt;
+  const ForcedConditioning& conditioning = result_.forced_conditioning;
+  ForcedTolerance out;
+  out.max = rule->value;
+  out.kappa = conditioning.condition(omega);
+  out.tolerance = *rule;
+  out.tolerance.value = out.max * out.kappa;
+  out.checkable = out.tolerance.value <= kMostConditionedForcedTolerance;
+  const std::string source = conditioning.covers(omega)
+                                 ? fmt::format("from {}'s natural frequencies", conditioning.solver)
+                                 : fmt::format("conditioning unknown, the strictest: {}", conditioning.note);
+  out.note = fmt::format("tolerance {:.1e} x kappa {:.3g} ({}) = {:.2e}", out.max, out.kappa, source,
+                         out.tolerance.value);
+  return out;
 }
 
 const SolverEntry* CheckBuilder::entry(const std::string& name) const {

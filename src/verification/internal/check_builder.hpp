@@ -15,6 +15,12 @@
 namespace catena::internal {
 
 const char* plane_name(Plane plane);
+/// A relative difference above this is a gross disagreement: FAIL whatever the rule (unless the
+/// rule is a `beyond = "warn"` model limit).
+constexpr double kGrossRelativeDifference = 0.5;
+/// The largest conditioned forced tolerance: beyond it a relative difference says nothing (the
+/// response is at resonance for every solver) and the check is a WARN, never a silent PASS.
+constexpr double kMostConditionedForcedTolerance = 0.1;
 /// |a - b| / max(|a|, |b|) (0 when both are 0).
 double relative_difference(double a, double b);
 /// The modes of `plane`, or nullptr when there are none.
@@ -42,6 +48,19 @@ class CheckBuilder {
   /// matching rule evaluated on the scene's model parameters; nullopt when neither exists.
   std::optional<Tolerance> tolerance(const std::string& check, const std::string& a, const std::string& b,
                                      std::optional<double> scene_override) const;
+
+  /// The forced tolerance at forcing frequency `omega`: the rule's max (or the scene's override)
+  /// times the response's condition number kappa(omega) (catena/verification/forced_conditioning.hpp,
+  /// from the most accurate exact solver's natural frequencies, never from an estimate).
+  /// `checkable` is false when that would exceed kMostConditionedForcedTolerance.
+  struct ForcedTolerance {
+    Tolerance tolerance;  // value = max x kappa
+    double max = 0.0;
+    double kappa = 1.0;
+    bool checkable = true;
+    std::string note;  // "tolerance <max> x kappa <kappa> (<source>) = <value>"
+  };
+  std::optional<ForcedTolerance> forced_tolerance(const std::string& a, const std::string& b, double omega) const;
 
   /// The computation id solvers a and b share for `quantity`, if any.
   std::optional<std::string> shared(const std::string& a, const std::string& b, const std::string& quantity) const;

@@ -211,6 +211,24 @@ void resonance_claim(const ForcedResponse& x, const ForcedResponse& y, const std
   }
 }
 
+// The forced check held to max x kappa(Omega) (CheckBuilder::forced_tolerance); beyond the largest
+// conditioned tolerance a WARN "at resonance, not checkable", unless the difference is gross.
+void conditioned_forced_check(CheckResult& check, double measured, const CheckBuilder::ForcedTolerance& tol,
+                              CheckBuilder& builder) {
+  check.detail += "; " + tol.note;
+  if (!tol.checkable && measured <= kGrossRelativeDifference) {
+    check.measured = measured;
+    check.tolerance = tol.tolerance.value;
+    check.verdict = Verdict::Warn;
+    check.detail = fmt::format("at resonance, not checkable: kappa = {:.3g} would allow more than {:g}; ", tol.kappa,
+                               kMostConditionedForcedTolerance) +
+                   check.detail + "; tolerance: " + tol.tolerance.reason;
+    builder.add(check);
+    return;
+  }
+  builder.add_measured(check, measured, tol.tolerance, true);
+}
+
 void forced_pair(const SceneResult& result, const SolverOutput& a, const SolverOutput& b, CheckBuilder& builder) {
   const std::size_t n = std::min(a.forced.size(), b.forced.size());
   if (n == 0 || !builder.independent(a.solver, b.solver, "forced", "forced", "forced")) return;
@@ -225,12 +243,12 @@ void forced_pair(const SceneResult& result, const SolverOutput& a, const SolverO
       builder.add(check);
       continue;
     }
-    const auto tol = builder.tolerance("forced", a.solver, b.solver, result.scene.checks.tension_rel);
+    const auto tol = builder.forced_tolerance(a.solver, b.solver, x.omega_rad_s);
     if (!tol) continue;
     check.detail = fmt::format("max |tau| at {:.6g} rad/s: {:.9g} vs {:.9g} N (error estimates {:.1e}, {:.1e})",
                                x.omega_rad_s, x.max_abs_tension_n, y.max_abs_tension_n, x.relative_error_estimate,
                                y.relative_error_estimate);
-    builder.add_measured(check, relative_difference(x.max_abs_tension_n, y.max_abs_tension_n), *tol, true);
+    conditioned_forced_check(check, relative_difference(x.max_abs_tension_n, y.max_abs_tension_n), *tol, builder);
   }
 }
 

@@ -44,19 +44,32 @@ std::pair<std::string, std::string> quantity_and_check(PublishedQuantity quantit
 // Every usable solver's value for one published entry: solver -> value.
 using PublishedCandidates = std::map<std::string, double>;
 
+// The pair tolerance a confirmation is held to: for a forced entry the conditioned one at the
+// forcing frequency (none where the response is at resonance, not checkable).
+std::optional<double> pair_tolerance(const CheckBuilder& builder, const std::string& check, const std::string& a,
+                                     const std::string& b, double forcing_omega) {
+  if (check != "forced") {
+    const auto tol = builder.tolerance(check, a, b, std::nullopt);
+    return tol ? std::optional(tol->value) : std::nullopt;
+  }
+  const auto tol = builder.forced_tolerance(a, b, forcing_omega);
+  return tol && tol->checkable ? std::optional(tol->tolerance.value) : std::nullopt;
+}
+
 // A second solver that confirms `solver`'s value: an independent computation (not sharing the
 // code path) that agrees with ours within their pair tolerance and far better
 // (kConfirmationRatio) than ours agrees with the print. Empty when none does.
 std::string confirming_solver(const CheckBuilder& builder, PublishedQuantity published_quantity,
-                              const std::string& solver, const PublishedCandidates& values, double measured) {
+                              const std::string& solver, const PublishedCandidates& values, double measured,
+                              double forcing_omega) {
   const double ours = values.at(solver);
   const auto [quantity, check] = quantity_and_check(published_quantity);
   std::string partner;
   for (const auto& [other, other_value] : values) {
     if (other == solver || builder.shared(solver, other, quantity)) continue;
     const double between = std::abs(other_value - ours);
-    const auto pair_tol = builder.tolerance(check, solver, other, std::nullopt);
-    if (pair_tol && between <= pair_tol->value * std::abs(ours) && between <= kConfirmationRatio * measured) {
+    const auto pair_tol = pair_tolerance(builder, check, solver, other, forcing_omega);
+    if (pair_tol && between <= *pair_tol * std::abs(ours) && between <= kConfirmationRatio * measured) {
       partner = other;
     }
   }
@@ -68,7 +81,13 @@ std::string confirming_solver(const CheckBuilder& builder, PublishedQuantity pub
 void judge_disagreement(const CheckBuilder& builder, const PublishedValues& published, const std::string& solver,
                         const PublishedCandidates& values, int mode, CheckResult& check) {
   const double ours = values.at(solver);
-  const std::string partner = confirming_solver(builder, published.quantity, solver, values, check.measured);
+  const auto& forced = builder.result().request.forced;
+  const double forcing_omega =
+      forced && mode >= 0 && mode < static_cast<int>(forced->omegas_rad_s.size())
+          ? forced->omegas_rad_s[static_cast<std::size_t>(mode)]
+          : 0.0;
+  const std::string partner =
+      confirming_solver(builder, published.quantity, solver, values, check.measured, forcing_omega);
   const Finding* finding =
       builder.findings().find(builder.result().scene.name, to_string(published.quantity), mode, solver);
   if (!partner.empty()) {

@@ -1,0 +1,129 @@
+// The natural frequencies behind the forced check's condition number: see
+// forced_conditioning_solve.hpp and docs/verdicts.md.
+#include "verification/internal/forced_conditioning_solve.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "catena/core/error.hpp"
+
+namespace catena {
+
+bool ForcedConditioning::covers(double omega) const {
+  return !omegas_rad_s.empty() && omegas_rad_s.back() > omega;
+}
+
+double ForcedConditioning::condition(double omega) const {
+  if (!covers(omega)) return 1.0;
+  double kappa = 1.0;
+  for (double wn : omegas_rad_s) {
+    const double distance = std::abs(wn * wn - omega * omega);
+    if (distance == 0.0) return std::numeric_limits<double>::infinity();
+    kappa = std::max(kappa, 2.0 * wn * wn / distance);
+  }
+  return kappa;
+}
+
+namespace internal {
+namespace {
+
+constexpr int kFirstModeCount = 8;
+constexpr double kAboveForcing = 1.05;
+// The work spent on the condition number is bounded: at most 64 modes, within 10 s per scene
+// (frobenius took 630 s for the 128 modes below 100 sqrt(g/a) on a Gale C-2 catenary). Beyond
+// that the conditioning is unknown and the check keeps its strictest tolerance.
+constexpr int kMostModes = 64;
+constexpr double kBudgetSeconds = 10.0;
+
+// The scene's limits, with a deadline no later than the conditioning budget.
+RunLimits conditioning_limits(const RunLimits& scene) {
+  RunLimits limits = RunLimits::time_limit(kBudgetSeconds);
+  if (scene.deadline && *scene.deadline < *limits.deadline) limits = scene;
+  return limits;
+}
+
+// The exact solvers that ran and converged, most accurate (smallest declared accuracy) first.
+std::vector<const SolverOutput*> exact_candidates(const SceneResult& result, const ToleranceTable& tolerances) {
+  std::vector<const SolverOutput*> out;
+  for (const SolverOutput& output : result.outputs) {
+    const SolverAccuracy* declared = tolerances.solver(output.solver);
+    if (declared && declared->exact && output.summary.termination == Termination::Converged)
+      out.push_back(&output);
+  }
+  std::stable_sort(out.begin(), out.end(), [&](const SolverOutput* a, const SolverOutput* b) {
+    return tolerances.solver(a->solver)->accuracy < tolerances.solver(b->solver)->accuracy;
+  });
+  return out;
+}
+
+std::vector<double> frequencies(const std::optional<ModalResult>& modal) {
+  std::vector<double> out;
+  if (modal) {
+    for (const Mode& mode : modal->modes) out.push_back(mode.omega_rad_s);
+  }
+  return out;
+}
+
+// The forced plane's modes of `solver`, solved for: doubling their number until the top one lies
+// above `top`. Empty when the solver gives none (or throws on the request).
+std::vector<double> solve_modes(const SceneResult& result, const std::string& solver, Plane plane, double top,
+                                const RunLimits& limits) {
+  const SolverEntry* entry = find_solver(solver);
+  if (!entry) return {};
+  SolveRequest request = result.request;
+  request.forced.reset();
+  request.shapes = false;
+  request.tension = false;
+  const SolverKnobs knobs = result.scene.solvers.count(solver) ? result.scene.solvers.at(solver) : SolverKnobs{};
+  std::vector<double> omegas;
+  for (int count = kFirstModeCount; count <= kMostModes; count *= 2) {
+    request.inplane_modes = plane == Plane::InPlane ? count : 0;
+    request.outofplane_modes = plane == Plane::OutOfPlane ? count : 0;
+    const SolveContext context{result.scene.problem, *result.statics, *result.groups, request, &limits};
+    try {
+      const SolverOutput output = run_solver(*entry, context, knobs);
+      if (!output.summary.is_usable()) return {};
+      omegas = frequencies(plane == Plane::InPlane ? output.inplane : output.outofplane);
+    } catch (const InvalidInput&) {
+      return omegas;  // more modes than the solver resolves: keep the last list
+    }
+    if ((!omegas.empty() && omegas.back() > top) || limits.expired()) break;
+  }
+  return omegas;
+}
+
+}  // namespace
+
+ForcedConditioning find_forced_conditioning(const SceneResult& result, const ToleranceTable& tolerances,
+                                            const RunLimits& limits) {
+  ForcedConditioning out;
+  if (!result.request.forced || result.request.forced->omegas_rad_s.empty() || !result.statics) return out;
+  const ForcedRequest& forced = *result.request.forced;
+  const RunLimits budget = conditioning_limits(limits);
+  out.plane = forced.direction == ForcingDirection::OutOfPlane ? Plane::OutOfPlane : Plane::InPlane;
+  const double top = kAboveForcing * *std::max_element(forced.omegas_rad_s.begin(), forced.omegas_rad_s.end());
+  for (const SolverOutput* candidate : exact_candidates(result, tolerances)) {
+    std::vector<double> omegas =
+        frequencies(out.plane == Plane::InPlane ? candidate->inplane : candidate->outofplane);
+    std::string how = "from its result";
+    if (omegas.empty() || omegas.back() <= top) {
+      omegas = solve_modes(result, candidate->solver, out.plane, top, budget);
+      how = "solved for the condition number";
+    }
+    if (omegas.empty()) continue;
+    out.solver = candidate->solver;
+    out.omegas_rad_s = std::move(omegas);
+    out.note = fmt::format("{} lowest {} natural frequencies of {} ({}), up to {:.6g} rad/s",
+                           out.omegas_rad_s.size(), to_string(out.plane), out.solver, how,
+                           out.omegas_rad_s.back());
+    return out;
+  }
+  out.note = "no exact solver gave the natural frequencies of the forced plane";
+  return out;
+}
+
+}  // namespace internal
+}  // namespace catena
