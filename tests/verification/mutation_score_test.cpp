@@ -51,11 +51,10 @@ TEST(MutationScore, EveryMutationIsCountedOnceAndEveryUncaughtOneIsNamed) {
   std::cout << "uncaught:\n" << uncaught_list(run, false);
 }
 
-// Issue 12's target. It holds once a tolerance no longer grows with the solvers' own estimates
-// (the tolerance work of the same issue): with today's table, fe's 1e-6 and shooting's 1e-9
-// frequency mutations hide inside tolerances of max(1e-8, 3 x (est_a + est_b)). Enable it with that
-// table; the failure message lists every uncaught mutation.
-TEST(MutationScore, DISABLED_ExactSolversCatchEveryMutationWhereTwoRan) {
+// Issue 12's target: every mutation of an exact solver's result is caught wherever another exact
+// solver ran. Mutations are 10x each solver's accuracy target and no tolerance grows with an
+// estimate, so each lies outside the check it meets; the failure message lists every uncaught one.
+TEST(MutationScore, ExactSolversCatchEveryMutationWhereTwoRan) {
   const MutationRun run = subset_run();
   const MutationTally exact = run.exact_with_witness();
   EXPECT_EQ(exact.caught, exact.made) << "uncaught:\n" << uncaught_list(run, true);

@@ -99,10 +99,11 @@ TEST(Mutation, NothingIsRecordedForAnUnsolvedScene) {
 TEST(Mutation, AccuracyTargetsFollowEachSolversKnobs) {
   Mode mode;
   mode.relative_error_estimate = 3e-4;
-  EXPECT_DOUBLE_EQ(frequency_accuracy_target("shooting", {}, mode), 1e-10);
-  EXPECT_DOUBLE_EQ(frequency_accuracy_target("shooting", {{"rtol", 1e-8}}, mode), 1e-8);
-  EXPECT_DOUBLE_EQ(frequency_accuracy_target("frobenius", {}, mode), 1e-12);
+  EXPECT_DOUBLE_EQ(frequency_accuracy_target("shooting", {}, mode), 10 * 1e-10 + 1e-10);
+  EXPECT_DOUBLE_EQ(frequency_accuracy_target("shooting", {{"rtol", 1e-8}}, mode), 10 * 1e-8 + 1e-8);
+  EXPECT_DOUBLE_EQ(frequency_accuracy_target("frobenius", {}, mode), 10 * 1e-12);
   EXPECT_DOUBLE_EQ(frequency_accuracy_target("fe", {}, mode), kFeAccuracyTarget);
+  EXPECT_DOUBLE_EQ(frequency_accuracy_target("fe", {{"tolerance", 1e-7}}, mode), 1e-7);
   EXPECT_DOUBLE_EQ(frequency_accuracy_target("asymptotic", {}, mode), 3e-4);
   EXPECT_DOUBLE_EQ(frequency_accuracy_target("airy", {}, mode), 3e-4);
   mode.relative_error_estimate = -1.0;  // no estimate: no target, no mutation

@@ -25,9 +25,9 @@ inline constexpr double kFrequencyMutationFactor = 10.0;
 inline constexpr double kShapeMutationFactor = 10.0;
 /// A forced response's max |tension| (and its tension curve) is multiplied by (1 + this).
 inline constexpr double kForcedTensionMutation = 1e-4;
-/// fe has no accuracy knob: its target is the documented accuracy of its default mesh with
-/// Richardson (docs/mutation.md, "Accuracy targets").
-inline constexpr double kFeAccuracyTarget = 1e-7;
+/// fe's target when a scene does not set its `tolerance` knob: the accuracy the tolerance table
+/// declares for it and holds its frequency checks to (verification/tolerances.toml, docs/mutation.md).
+inline constexpr double kFeAccuracyTarget = 1e-6;
 
 /// What a mutation changed.
 enum class MutatedQuantity { Frequency, Shape, ForcedTension };
@@ -79,9 +79,9 @@ struct MutationRun {
 /// solve approximate models).
 bool is_exact_solver(const std::string& solver);
 
-/// The relative accuracy `solver` was asked for on `mode`: shooting its `rtol` knob, frobenius its
-/// `tolerance` knob (the scene's value or the default), fe kFeAccuracyTarget, asymptotic and airy
-/// the mode's own model-error estimate. 0 when there is none (no mutation is made).
+/// The relative accuracy `solver` promises on `mode`: its accuracy target (shooting 10 rtol +
+/// root_tolerance, frobenius 10 tolerance, with the scene's knobs or the defaults; fe its `tolerance`
+/// knob, else kFeAccuracyTarget), asymptotic and airy the mode's own model-error estimate. 0 when there is none (no mutation is made).
 double frequency_accuracy_target(const std::string& solver, const SolverKnobs& knobs, const Mode& mode);
 
 /// Every mutation of one solved scene, each checked with `options`' tables. A scene without

@@ -208,6 +208,11 @@ Root ShootingRootFinder::root_in_bracket(int n, double a, double b, const Sample
     integration_error = std::abs((end_value(tight, n) - here) / slope);
   }
   root.relative_error = (0.5 * (b - a) + integration_error) / root.omega;
+  // Never below the target: against frobenius the error exceeds this measured estimate by up to
+  // 9.6x on the Gale B-4 scenes (out of plane, 2.3e-10 against 2.4e-11) through a part that
+  // tightening the integrator does not reveal; the largest error measured over the suite, 5.8e-10,
+  // is within the target (docs/methods/shooting.md, "Error behaviour and its estimate").
+  root.relative_error = std::max(root.relative_error, settings_.target);
   return root;
 }
 

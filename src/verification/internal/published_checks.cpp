@@ -93,6 +93,20 @@ std::string confirming_solver(const CheckBuilder& builder, PublishedQuantity pub
   return partner;
 }
 
+// True when every other independent solver's forced pair check with `solver` at this forcing
+// frequency is "at resonance, not checkable".
+bool at_resonance_for_all(const CheckBuilder& builder, const std::string& solver, const PublishedCandidates& values,
+                          double forcing_omega) {
+  bool any = false;
+  for (const auto& [other, value] : values) {
+    if (other == solver || builder.shared(solver, other, "forced")) continue;
+    const auto tol = builder.forced_tolerance(solver, other, forcing_omega);
+    if (!tol || tol->checkable) return false;
+    any = true;
+  }
+  return any;
+}
+
 // Beyond the printed digits: a source discrepancy when confirmed by a second solver or by a
 // reviewed finding that still matches our value; a failure otherwise.
 void judge_disagreement(const CheckBuilder& builder, const PublishedValues& published, const std::string& solver,
@@ -116,6 +130,12 @@ void judge_disagreement(const CheckBuilder& builder, const PublishedValues& publ
   } else if (finding) {
     check.verdict = Verdict::Fail;
     check.detail += fmt::format("; stale finding (reviewed value {:.8g})", finding->ours);
+  } else if (published.quantity == PublishedQuantity::ForcedMaxTension &&
+             at_resonance_for_all(builder, solver, values, forcing_omega)) {
+    // No second solver can confirm or refute a response at resonance (docs/verdicts.md,
+    // "Forced response: conditioning"): the same WARN as the forced pair checks there.
+    check.verdict = Verdict::Warn;
+    check.detail += "; at resonance, not checkable: no second solver can confirm it";
   } else {
     check.verdict = Verdict::Fail;
   }
