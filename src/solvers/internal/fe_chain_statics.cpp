@@ -177,4 +177,13 @@ FeChain solve_chain_statics(const Problem& problem,
   return chain;
 }
 
+FeChain solve_chain_statics(const Problem& problem,
+                            const StaticSolution& statics,
+                            int elements,
+                            double axial_stiffness_n) {
+  FeLineMesh mesh = uniform_cable_mesh(problem.cable, elements);
+  mesh.pieces.front().section.axial_stiffness_n = axial_stiffness_n;
+  return solve_chain_statics(problem, statics, mesh, axial_stiffness_n);
+}
+
 }  // namespace catena::internal

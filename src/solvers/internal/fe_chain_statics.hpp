@@ -70,4 +70,11 @@ FeChain solve_chain_statics(const Problem& problem,
                             const FeLineMesh& mesh,
                             double penalty_axial_stiffness_n);
 
+/// The chain of a uniform cable with N = `elements` equal elements, every one of axial stiffness
+/// `axial_stiffness_n` (finite) [N].
+FeChain solve_chain_statics(const Problem& problem,
+                            const StaticSolution& statics,
+                            int elements,
+                            double axial_stiffness_n);
+
 }  // namespace catena::internal
