@@ -22,7 +22,6 @@
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
 #include "solvers/internal/work_meter.hpp"
-#include "solvers/internal/line_applicability.hpp"
 
 namespace catena {
 namespace internal {
@@ -73,7 +72,6 @@ class FeNumerics final : public SolverNumerics {
                            context.request.outofplane_modes)) {}
 
   std::optional<std::string> not_applicable() const override {
-    if (auto reason = uniform_cable_only(context_.problem, "fe (general lines not implemented yet)")) return reason;
     return fe_penalty_not_applicable(plan_);
   }
   void describe(SolverSummary& summary) const override { describe_fe_run(plan_, summary); }
@@ -181,7 +179,12 @@ void FeNumerics::attach_shape(Plane plane, int i, const FeModeMatches& matches, 
   mode.w = shaped.w;
   mode.v = shaped.v;
   if (with_tension) mode.tension_n = shaped.tension_n;
-  const CableProperties& cable = context_.problem.cable;
+  const Problem& problem = context_.problem;
+  if (!problem.is_uniform()) {
+    mode.modal_mass_kg = line_modal_mass(plane, mode, problem.line, context_.statics);
+    return;
+  }
+  const CableProperties& cable = problem.cable;
   mode.modal_mass_kg = plane == Plane::InPlane
                            ? inplane_modal_mass(mode, cable.mass_kg_per_m, cable.normal_mass_kg_per_m())
                            : outofplane_modal_mass(mode, cable.normal_mass_kg_per_m());
@@ -207,7 +210,7 @@ Mode FeNumerics::extrapolated_mode(Plane plane, int i, const FeModeMatches& matc
 void FeNumerics::extrapolate_modes(Plane plane, int available, ModalResult& result,
                                    std::vector<double>& orders) {
   const auto start = Clock::now();
-  const Vector stations = context_.request.stations_m(context_.problem.cable.length_m);
+  const Vector stations = context_.request.stations_m(context_.problem.length_m());
   const FeModeMatches matches = match_level_modes(levels_, plan_, plane, available);
   const std::size_t last = plan_.meshes.size() - 1;
   for (int i = 0; i < available; ++i) {

@@ -37,7 +37,7 @@ TEST(FeChainStatics, ClosesOnSupportBAndApproachesTheCatenary) {
   EXPECT_GT(chain.newton_iterations, 0);
   const double chord = problem.supports.chord_m().norm();
   for (int i = 0; i <= 400; i += 50) {
-    const double s = i * chain.element_length_m;
+    const double s = i * chain.element_length_m[0];
     const Vec2 difference = chain.node_offset_m[static_cast<std::size_t>(i)] - statics.offset_m(s);
     EXPECT_LE(difference.norm() / chord, kRelTolChainPosition) << "node " << i;
   }
@@ -50,7 +50,7 @@ TEST(FeChainStatics, ElementForceIsTheContinuousForceAtTheElementMidpoint) {
   const internal::FeChain chain =
       internal::solve_chain_statics(problem, statics, 100, problem.cable.axial_stiffness_n);
   ASSERT_TRUE(chain.in_equilibrium()) << chain.failure;
-  const double W0 = problem.cable.weight_n_per_m, l0 = chain.element_length_m;
+  const double W0 = problem.cable.weight_n_per_m, l0 = chain.element_length_m[0];
   for (int j : {0, 37, 99}) {
     const double V = chain.vertical_force_a_n + W0 * l0 * (j + 0.5);
     EXPECT_DOUBLE_EQ(chain.tension_n[j], std::hypot(chain.horizontal_force_n, V)) << "element " << j;

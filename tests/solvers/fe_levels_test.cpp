@@ -71,7 +71,7 @@ TEST(FeLevels, EveryLevelIsSolvedAndProved) {
   ASSERT_EQ(levels.size(), 2u);
   ASSERT_EQ(levels[0].size(), 2u);  // two penalties
   EXPECT_EQ(levels[1][1].chain.elements, 120);
-  EXPECT_EQ(levels[1][1].chain.axial_stiffness_n, plan.axial_stiffness_n[1]);
+  EXPECT_EQ(levels[1][1].chain.axial_stiffness_n[0], plan.axial_stiffness_n[1]);
   const internal::FePlaneEigenReport report = internal::solve_level_modes(levels, Plane::InPlane, 4, options, timings);
   EXPECT_EQ(report.termination, Termination::Converged);
   EXPECT_TRUE(report.warnings.empty());

@@ -45,7 +45,7 @@ TEST(FeShapes, UniformStretchGivesUniformTensionAndExactLinearSampling) {
   const Bar bar = straight_bar();
   const int N = bar.chain.elements;
   // Axial displacement growing linearly with the node: D_i = (c i l0, 0), a uniform strain c.
-  const double c = 1e-3, l0 = bar.chain.element_length_m;
+  const double c = 1e-3, l0 = bar.chain.element_length_m[0];
   std::vector<Vec2> D;
   for (int i = 0; i <= N; ++i) D.emplace_back(c * i * l0, 0.0);
   const Vector tau = internal::element_tension(bar.chain, D);

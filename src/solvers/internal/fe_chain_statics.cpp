@@ -10,10 +10,70 @@
 namespace catena::internal {
 namespace {
 
-// Fills the per-element forces, lengths and node positions of a chain with support forces (H, V_A).
-void build_chain(FeChain& chain, double H, double V_A, double W0) {
+// The vertical force at each element's midpoint minus V_A: half of node 0's weight goes into
+// support a, and each interior node carries half of each neighbouring element's weight plus the
+// weight of a point attachment there (docs/methods/fe.md). One piece keeps the closed form
+// W0 l0 (j + 1/2).
+void lump_weights(FeChain& chain, const FeLineMesh& mesh) {
   const int N = chain.elements;
-  const double l0 = chain.element_length_m;
+  chain.vertical_offset_n.resize(N);
+  if (mesh.is_one_piece()) {
+    const double W0 = mesh.pieces.front().section.weight_n_per_m;
+    const double l0 = chain.element_length_m[0];
+    for (int j = 0; j < N; ++j) chain.vertical_offset_n[j] = W0 * l0 * (j + 0.5);
+    return;
+  }
+  // Within a piece the closed form from the piece's start, so that rounding does not accumulate
+  // element by element.
+  double before = 0.0;  // weight from s = 0 to the start of the piece (after a point there)
+  int j = 0;
+  for (const FeMeshPiece& piece : mesh.pieces) {
+    if (piece.point_at_start >= 0) before += mesh.points[static_cast<std::size_t>(piece.point_at_start)].weight_n;
+    const double W0 = piece.section.weight_n_per_m;
+    const double l0 = chain.element_length_m[j];
+    for (int k = 0; k < piece.elements; ++k, ++j) chain.vertical_offset_n[j] = before + W0 * l0 * (k + 0.5);
+    before += W0 * piece.section.length_m;
+  }
+}
+
+// The sections of the elements, the nodes' arc lengths and point inertias, and the lumped weights.
+void lay_out_chain(FeChain& chain, const FeLineMesh& mesh, double penalty_axial_stiffness_n) {
+  const int N = mesh.elements();
+  chain.elements = N;
+  chain.equal_elements = mesh.is_one_piece();
+  chain.element_length_m.resize(N);
+  chain.axial_stiffness_n.resize(N);
+  chain.mass_kg_per_m.resize(N);
+  chain.normal_mass_kg_per_m.resize(N);
+  chain.node_s_m.resize(N + 1);
+  chain.node_inertia.assign(static_cast<std::size_t>(N) + 1, FeNodeInertia{});
+  int j = 0;
+  double s = 0.0;
+  for (const FeMeshPiece& piece : mesh.pieces) {
+    if (piece.point_at_start >= 0) {
+      const PointAttachment& point = mesh.points[static_cast<std::size_t>(piece.point_at_start)];
+      chain.node_inertia[static_cast<std::size_t>(j)] = {point.mass_kg + point.tangential_added_mass_kg(),
+                                                         point.mass_kg + point.normal_added_mass_kg(),
+                                                         point.mass_kg + point.outofplane_added_mass_kg()};
+    }
+    const LineSegment& section = piece.section;
+    const double l0 = section.length_m / piece.elements;
+    for (int k = 0; k < piece.elements; ++k, ++j) {
+      chain.element_length_m[j] = l0;
+      chain.axial_stiffness_n[j] = section.is_inextensible() ? penalty_axial_stiffness_n : section.axial_stiffness_n;
+      chain.mass_kg_per_m[j] = section.mass_kg_per_m;
+      chain.normal_mass_kg_per_m[j] = section.normal_mass_kg_per_m();
+      chain.node_s_m[j] = s + k * l0;
+    }
+    s += section.length_m;
+  }
+  chain.node_s_m[N] = s;
+  lump_weights(chain, mesh);
+}
+
+// Fills the per-element forces, lengths and node positions of a chain with support forces (H, V_A).
+void build_chain(FeChain& chain, double H, double V_A) {
+  const int N = chain.elements;
   chain.horizontal_force_n = H;
   chain.vertical_force_a_n = V_A;
   chain.tension_n.resize(N);
@@ -21,27 +81,25 @@ void build_chain(FeChain& chain, double H, double V_A, double W0) {
   chain.direction.resize(static_cast<std::size_t>(N));
   chain.node_offset_m.assign(static_cast<std::size_t>(N) + 1, Vec2::Zero());
   for (int j = 0; j < N; ++j) {
-    // Half of node 0's weight goes into support a, so element j carries the continuous force at
-    // its midpoint s = (j + 1/2) l0.
-    const double V = V_A + W0 * l0 * (j + 0.5);
+    // Element j carries the continuous force at its midpoint (see lump_weights).
+    const double V = V_A + chain.vertical_offset_n[j];
     const double T = std::hypot(H, V);
     chain.tension_n[j] = T;
     chain.direction[static_cast<std::size_t>(j)] = T > 0.0 ? Vec2(H / T, V / T) : Vec2(0.0, 1.0);
-    chain.stretched_length_m[j] = l0 * (1.0 + T / chain.axial_stiffness_n);
+    chain.stretched_length_m[j] = chain.element_length_m[j] * (1.0 + T / chain.axial_stiffness_n[j]);
     chain.node_offset_m[static_cast<std::size_t>(j) + 1] =
         chain.node_offset_m[static_cast<std::size_t>(j)] +
         chain.stretched_length_m[j] * chain.direction[static_cast<std::size_t>(j)];
   }
 }
 
-// d(r_N)/d(H, V_A) = sum_j l0 [(I - t t^T)/T + I/EA] (symmetric).
+// d(r_N)/d(H, V_A) = sum_j l0_j [(I - t t^T)/T + I/EA_j] (symmetric).
 Eigen::Matrix2d closure_jacobian(const FeChain& chain) {
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
-  const double l0 = chain.element_length_m;
   for (int j = 0; j < chain.elements; ++j) {
     const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
-    J += l0 * ((Eigen::Matrix2d::Identity() - t * t.transpose()) / chain.tension_n[j] +
-               Eigen::Matrix2d::Identity() / chain.axial_stiffness_n);
+    J += chain.element_length_m[j] * ((Eigen::Matrix2d::Identity() - t * t.transpose()) / chain.tension_n[j] +
+                                      Eigen::Matrix2d::Identity() / chain.axial_stiffness_n[j]);
   }
   return J;
 }
@@ -50,14 +108,13 @@ Eigen::Matrix2d closure_jacobian(const FeChain& chain) {
 // backtracking that keeps H positive and the residual decreasing. Sets `failure` when the chain
 // does not close to 1e-9 of its size.
 void close_chain(FeChain& chain, const Problem& problem, const StaticSolution& statics) {
-  const CableProperties& cable = problem.cable;
-  const double W0 = cable.weight_n_per_m;
+  const double L = problem.length_m();
   const Vec2 chord = problem.supports.chord_m();
   double H = statics.horizontal_force_n();
   double V_A = statics.vertical_force_a_n();
   const bool vertical = H == 0.0;
-  const double tolerance = 1e-14 * std::max(cable.length_m, chord.norm());
-  build_chain(chain, H, V_A, W0);
+  const double tolerance = 1e-14 * std::max(L, chord.norm());
+  build_chain(chain, H, V_A);
   Vec2 residual = chain.node_offset_m.back() - chord;
   int iteration = 0;
   for (; iteration < 100 && residual.norm() > tolerance; ++iteration) {
@@ -68,7 +125,7 @@ void close_chain(FeChain& chain, const Problem& problem, const StaticSolution& s
     for (int k = 0; k < 40; ++k, alpha *= 0.5) {
       const double H_trial = H + alpha * step.x();
       if (!vertical && H_trial <= 0.0) continue;
-      build_chain(trial, H_trial, V_A + alpha * step.y(), W0);
+      build_chain(trial, H_trial, V_A + alpha * step.y());
       if ((trial.node_offset_m.back() - chord).norm() < residual.norm() || k == 39) break;
     }
     H = trial.horizontal_force_n;
@@ -81,7 +138,7 @@ void close_chain(FeChain& chain, const Problem& problem, const StaticSolution& s
     if (stalled) break;
   }
   chain.newton_iterations = iteration;
-  if (!(residual.norm() <= 1e-9 * std::max(cable.length_m, chord.norm()))) {
+  if (!(residual.norm() <= 1e-9 * std::max(L, chord.norm()))) {
     chain.failure = fmt::format(
         "discrete statics (N = {}) did not close: |r_N - (B - A)| = {:.3e} m after {} Newton "
         "iterations",
@@ -93,20 +150,16 @@ void close_chain(FeChain& chain, const Problem& problem, const StaticSolution& s
 
 FeChain solve_chain_statics(const Problem& problem,
                             const StaticSolution& statics,
-                            int elements,
-                            double axial_stiffness_n) {
-  const CableProperties& cable = problem.cable;
+                            const FeLineMesh& mesh,
+                            double penalty_axial_stiffness_n) {
   FeChain chain;
-  chain.elements = elements;
-  chain.element_length_m = cable.length_m / elements;
-  chain.axial_stiffness_n = axial_stiffness_n;
-  chain.mass_kg_per_m = cable.mass_kg_per_m;
-  chain.normal_mass_kg_per_m = cable.normal_mass_kg_per_m();
+  lay_out_chain(chain, mesh, penalty_axial_stiffness_n);
+  const int elements = chain.elements;
   if (problem.prescribed_forces) {
     // Tension-specified problems keep their forces: re-solving them from the geometry would
     // determine the tension of a taut cable only to ~ rounding / strain (see Problem).
     build_chain(chain, problem.prescribed_forces->horizontal_n,
-                problem.prescribed_forces->vertical_a_n, cable.weight_n_per_m);
+                problem.prescribed_forces->vertical_a_n);
   } else {
     close_chain(chain, problem, statics);
     if (!chain.in_equilibrium()) return chain;
@@ -122,6 +175,15 @@ FeChain solve_chain_statics(const Problem& problem,
     }
   }
   return chain;
+}
+
+FeChain solve_chain_statics(const Problem& problem,
+                            const StaticSolution& statics,
+                            int elements,
+                            double axial_stiffness_n) {
+  FeLineMesh mesh = uniform_cable_mesh(problem.cable, elements);
+  mesh.pieces.front().section.axial_stiffness_n = axial_stiffness_n;
+  return solve_chain_statics(problem, statics, mesh, axial_stiffness_n);
 }
 
 }  // namespace catena::internal

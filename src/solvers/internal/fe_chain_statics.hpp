@@ -3,25 +3,44 @@
 /// Discrete statics of the `fe` chain (docs/methods/fe.md): N two-node bar elements with the weight
 /// lumped on the nodes, in exact equilibrium between the supports. Element j carries the
 /// continuous force at its midpoint; the support force (H, V_A) closes the chain on support b by a
-/// 2x2 Newton iteration, or is kept as given for a problem stated by its end forces.
+/// 2x2 Newton iteration, or is kept as given for a problem stated by its end forces. On a line
+/// (fe_line_mesh.hpp) each element has its segment's section, and a point attachment's weight
+/// is lumped on its node.
 
 #include <string>
 #include <vector>
 
 #include "catena/models/cable.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "solvers/internal/fe_line_mesh.hpp"
 
 namespace catena::internal {
+
+/// The lumped inertia of a point attachment on its node [kg]: structural mass plus added mass
+/// along the node tangent, the in-plane normal and out of plane (docs/physics.md, "General lines").
+struct FeNodeInertia {
+  double tangential_kg = 0.0;
+  double normal_kg = 0.0;
+  double outofplane_kg = 0.0;
+};
 
 /// The discrete chain in equilibrium.
 struct FeChain {
   int elements = 0;
-  /// Unstretched element length l0 = L/N [m].
-  double element_length_m = 0.0;
-  /// Axial stiffness used (the penalty H/kappa for an inextensible cable) [N].
-  double axial_stiffness_n = 0.0;
-  double mass_kg_per_m = 0.0;
-  double normal_mass_kg_per_m = 0.0;
+  /// True when every element has the same section and length (a uniform cable): the node
+  /// positions along the line are then s_i = i l0.
+  bool equal_elements = true;
+  /// Per element j = 0..N-1: unstretched length l0_j [m], axial stiffness used (the penalty
+  /// H/kappa where the segment is inextensible) [N], mass and normal mass per unstretched length
+  /// [kg/m], and the support-a-relative vertical force at its midpoint minus V_A [N].
+  Vector element_length_m;
+  Vector axial_stiffness_n;
+  Vector mass_kg_per_m;
+  Vector normal_mass_kg_per_m;
+  Vector vertical_offset_n;
+  /// Per node i = 0..N: unstretched arc length s_i [m] and the inertia of a point attachment there.
+  Vector node_s_m;
+  std::vector<FeNodeInertia> node_inertia;
   /// Support force (H, V_A) of the chain [N].
   double horizontal_force_n = 0.0;
   double vertical_force_a_n = 0.0;
@@ -43,9 +62,16 @@ struct FeChain {
   bool in_equilibrium() const { return failure.empty(); }
 };
 
-/// Solves the discrete statics with N = `elements` elements and axial stiffness EA (finite) [N],
-/// starting from the shared continuous statics. Never throws for a numerical outcome: see
-/// FeChain::failure.
+/// Solves the discrete statics on `mesh`, with the axial stiffness `penalty_axial_stiffness_n`
+/// (finite) [N] on inextensible segments and each extensible segment's own EA, starting from the
+/// shared continuous statics. Never throws for a numerical outcome: see FeChain::failure.
+FeChain solve_chain_statics(const Problem& problem,
+                            const StaticSolution& statics,
+                            const FeLineMesh& mesh,
+                            double penalty_axial_stiffness_n);
+
+/// The chain of a uniform cable with N = `elements` equal elements, every one of axial stiffness
+/// `axial_stiffness_n` (finite) [N].
 FeChain solve_chain_statics(const Problem& problem,
                             const StaticSolution& statics,
                             int elements,

@@ -227,8 +227,8 @@ ForcedOutcome fe_forced_response(const ForcedRequest& request,
                                  const std::vector<FeNaturalFrequency>& naturals,
                                  FeTimings& timings) {
   const auto start = Clock::now();
-  const Vector stations = context.request.stations_m(context.problem.cable.length_m);
-  const auto [end_a, end_b] = end_displacements(request, context.statics, context.problem.cable.length_m);
+  const Vector stations = context.request.stations_m(context.problem.length_m());
+  const auto [end_a, end_b] = end_displacements(request, context.statics, context.problem.length_m());
   const Forcing forcing{forced_plane(request), end_a, end_b, stations, context.statics};
   std::vector<std::size_t> meshes = {static_cast<std::size_t>(plan.main_fine)};
   if (plan.has_coarse()) meshes.push_back(static_cast<std::size_t>(plan.main_coarse));

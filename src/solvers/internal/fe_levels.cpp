@@ -46,13 +46,52 @@ void plan_meshes(FePlan& plan, const FeSolverOptions& options, int max_modes_in_
   }
 }
 
-// The penalty's largest strain (at 2 kappa) and the relative slack it competes with.
+// The penalty's largest strain (at 2 kappa) and the relative slack it competes with. On a line the
+// largest tension may be at a joint or point (a buoy), so every piece's start counts too.
 void plan_penalty_strain(FePlan& plan, const Problem& problem, const StaticSolution& statics) {
-  const double L = problem.cable.length_m;
+  const double L = problem.length_m();
   const Vec2 chord = problem.supports.chord_m();
   plan.relative_slack = (L - std::hypot(chord.x(), chord.y())) / L;
-  const double largest_tension = std::max(statics.tension_n(0.0), statics.tension_n(L));
+  double largest_tension = std::max(statics.tension_n(0.0), statics.tension_n(L));
+  for (const StaticPiece& piece : statics.pieces())
+    largest_tension = std::max({largest_tension, statics.tension_n(piece.s_begin_m),
+                                std::hypot(statics.horizontal_force_n(), statics.vertical_force_before_n(piece.s_begin_m))});
   plan.penalty_strain = largest_tension / plan.axial_stiffness_n.back();
+}
+
+// Each mesh's layout; on a line the counts of the finer meshes are doubled from the coarsest, and
+// `meshes` becomes their totals (a piece too short for its share gets one element anyway).
+void plan_layouts(FePlan& plan, const Problem& problem, const StaticSolution& statics) {
+  if (problem.is_uniform()) {
+    for (int elements : plan.meshes) plan.mesh_layouts.push_back(uniform_cable_mesh(problem.cable, elements));
+    return;
+  }
+  const FeLineMesh coarsest = make_line_mesh(problem, statics, plan.meshes.front());
+  for (std::size_t m = 0; m < plan.meshes.size(); ++m) {
+    plan.mesh_layouts.push_back(coarsest.refined(1 << m));
+    plan.meshes[m] = plan.mesh_layouts.back().elements();
+  }
+}
+
+// Inextensible: the penalty EA = H / kappa on the inextensible segments, with the larger end
+// tension for a vertical chord (H = 0). Extensible: the stiffest segment's EA.
+void plan_penalties(FePlan& plan, const Problem& problem, const StaticSolution& statics, double kappa) {
+  const Line line = problem.as_line();
+  double stiffest = 0.0;
+  for (const LineSegment& segment : line.segments) {
+    plan.inextensible = plan.inextensible || segment.is_inextensible();
+    if (!segment.is_inextensible()) stiffest = std::max(stiffest, segment.axial_stiffness_n);
+  }
+  if (!plan.inextensible) {
+    plan.axial_stiffness_n = {stiffest};
+    return;
+  }
+  plan.stiffest_extensible_n = stiffest;
+  double reference = statics.horizontal_force_n();
+  if (!(reference > 0.0)) reference = std::max(statics.tension_n(0.0), statics.tension_n(problem.length_m()));
+  plan.kappas = {kappa, 2.0 * kappa};
+  for (double k : plan.kappas) plan.axial_stiffness_n.push_back(reference / k);
+  plan_penalty_strain(plan, problem, statics);
 }
 
 }  // namespace
@@ -73,7 +112,7 @@ std::optional<std::string> fe_penalty_not_applicable(const FePlan& plan) {
 }
 
 double FePlan::rounding_floor(double t0_n, int mode_number) const {
-  const double stiffness_ratio = axial_stiffness_n[0] / std::max(t0_n, 1e-300);
+  const double stiffness_ratio = std::max(axial_stiffness_n[0], stiffest_extensible_n) / std::max(t0_n, 1e-300);
   const double n = static_cast<double>(mode_number);
   const auto finest = static_cast<double>(finest_elements());
   return 0.5 * std::numeric_limits<double>::epsilon() * stiffness_ratio * finest * finest /
@@ -87,18 +126,8 @@ FePlan make_fe_plan(const Problem& problem,
                     int max_modes_out_of_plane) {
   FePlan plan;
   plan_meshes(plan, options, max_modes_in_plane, max_modes_out_of_plane);
-  plan.inextensible = problem.cable.is_inextensible();
-  if (plan.inextensible) {
-    // The penalty EA = H / kappa, with the larger end tension for a vertical chord (H = 0).
-    double reference = statics.horizontal_force_n();
-    if (!(reference > 0.0))
-      reference = std::max(statics.tension_n(0.0), statics.tension_n(problem.cable.length_m));
-    plan.kappas = {options.kappa, 2.0 * options.kappa};
-    for (double kappa : plan.kappas) plan.axial_stiffness_n.push_back(reference / kappa);
-    plan_penalty_strain(plan, problem, statics);
-  } else {
-    plan.axial_stiffness_n = {problem.cable.axial_stiffness_n};
-  }
+  plan_layouts(plan, problem, statics);
+  plan_penalties(plan, problem, statics, options.kappa);
   return plan;
 }
 
@@ -111,7 +140,7 @@ FeLevels solve_level_statics(const Problem& problem,
   for (std::size_t m = 0; m < plan.meshes.size(); ++m) {
     for (std::size_t k = 0; k < plan.penalties(); ++k) {
       const auto start = Clock::now();
-      levels[m][k].chain = solve_chain_statics(problem, statics, plan.meshes[m], plan.axial_stiffness_n[k]);
+      levels[m][k].chain = solve_chain_statics(problem, statics, plan.mesh_layouts[m], plan.axial_stiffness_n[k]);
       timings.statics_s += seconds_since(start);
       if (!levels[m][k].chain.in_equilibrium()) {
         failure = levels[m][k].chain.failure;

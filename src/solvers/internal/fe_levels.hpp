@@ -13,6 +13,7 @@
 #include "catena/solvers/solver_summary.hpp"
 #include "solvers/internal/fe_chain_statics.hpp"
 #include "solvers/internal/fe_eigen.hpp"
+#include "solvers/internal/fe_line_mesh.hpp"
 #include "solvers/internal/fe_operators.hpp"
 #include "solvers/internal/work_meter.hpp"
 
@@ -54,12 +55,18 @@ constexpr double kMaxPenaltyStrainOverSlack = 0.1;
 
 /// The meshes and penalties of one solve.
 struct FePlan {
-  std::vector<int> meshes;  // ascending
+  std::vector<int> meshes;  // ascending: the element counts of mesh_layouts
+  /// Each mesh's pieces and element counts (fe_line_mesh.hpp): one piece for a uniform cable; on
+  /// a line, each level doubles every piece's count of the one before.
+  std::vector<FeLineMesh> mesh_layouts;
   int main_coarse = -1;     // index in meshes of the pair used for the result (-1: no coarse mesh)
   int main_fine = -1;
   bool richardson = false;
   bool inextensible = false;
   std::vector<double> axial_stiffness_n;  // one per penalty (1 value when extensible)
+  /// The largest extensible segment's EA on a line with inextensible segments too (else 0) [N]:
+  /// it joins the penalty in the rounding floor.
+  double stiffest_extensible_n = 0.0;
   std::vector<double> kappas;             // the penalties kappa, 2 kappa (inextensible only)
   /// Inextensible only: the largest end tension over the smaller penalty stiffness (2 kappa),
   /// and the relative slack (L - |chord|) / L (see kMaxPenaltyStrainOverSlack).
@@ -82,7 +89,8 @@ struct FePlan {
 std::optional<std::string> fe_penalty_not_applicable(const FePlan& plan);
 
 /// The plan for `options`, with the modes asked per plane (the N/2 estimate mesh is used only
-/// when it resolves them, fe_resolvable_modes).
+/// when it resolves them, fe_resolvable_modes). On a line, the coarsest mesh shares its elements
+/// among the pieces (make_line_mesh) and the finer ones double each piece's count.
 FePlan make_fe_plan(const Problem& problem,
                     const StaticSolution& statics,
                     const FeSolverOptions& options,

@@ -56,11 +56,23 @@ void fill_block_tridiagonal(SparseMatrix& matrix,
   assert(at == nonzeros);
 }
 
+// True when the elements on both sides of node i have the same length and section: the node then
+// carries l0 times the line density, as on a uniform cable.
+bool same_section(const FeChain& chain, int i) {
+  return chain.element_length_m[i - 1] == chain.element_length_m[i] &&
+         chain.mass_kg_per_m[i - 1] == chain.mass_kg_per_m[i] &&
+         chain.normal_mass_kg_per_m[i - 1] == chain.normal_mass_kg_per_m[i];
+}
+
+// Node i's lumped share of a density: half of each neighbouring element's [kg].
+double half_sum(const FeChain& chain, const Vector& density, int i) {
+  return 0.5 * (chain.element_length_m[i - 1] * density[i - 1] + chain.element_length_m[i] * density[i]);
+}
+
 }  // namespace
 
 FeMatrices assemble_inplane(const FeChain& chain) {
   const int N = chain.elements;
-  const double l0 = chain.element_length_m;
   FeMatrices out;
   out.dofs_per_node = 2;
   std::vector<Eigen::Matrix2d> element(static_cast<std::size_t>(N)), node(static_cast<std::size_t>(N) + 1);
@@ -68,7 +80,7 @@ FeMatrices assemble_inplane(const FeChain& chain) {
     const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
     const Eigen::Matrix2d ttT = t * t.transpose();
     element[static_cast<std::size_t>(j)] =
-        (chain.axial_stiffness_n / l0) * ttT +
+        (chain.axial_stiffness_n[j] / chain.element_length_m[j]) * ttT +
         (chain.tension_n[j] / chain.stretched_length_m[j]) * (Eigen::Matrix2d::Identity() - ttT);
   }
   for (int i = 1; i < N; ++i) {
@@ -77,8 +89,19 @@ FeMatrices assemble_inplane(const FeChain& chain) {
                     chain.direction[static_cast<std::size_t>(i)])
                        .normalized();
     const Vec2 nrm(-t.y(), t.x());
-    node[static_cast<std::size_t>(i)] = l0 * (chain.mass_kg_per_m * t * t.transpose() +
-                                              chain.normal_mass_kg_per_m * nrm * nrm.transpose());
+    const Eigen::Matrix2d ttT = t * t.transpose(), nnT = nrm * nrm.transpose();
+    if (same_section(chain, i)) {
+      // The uniform cable's expression, kept term for term so its results stay bit-identical.
+      node[static_cast<std::size_t>(i)] =
+          chain.element_length_m[i] * (chain.mass_kg_per_m[i] * t * t.transpose() +
+                                       chain.normal_mass_kg_per_m[i] * nrm * nrm.transpose());
+    } else {
+      node[static_cast<std::size_t>(i)] = half_sum(chain, chain.mass_kg_per_m, i) * ttT +
+                                          half_sum(chain, chain.normal_mass_kg_per_m, i) * nnT;
+    }
+    const FeNodeInertia& point = chain.node_inertia[static_cast<std::size_t>(i)];
+    if (point.tangential_kg > 0.0 || point.normal_kg > 0.0)
+      node[static_cast<std::size_t>(i)] += point.tangential_kg * ttT + point.normal_kg * nnT;
   }
   fill_block_tridiagonal<2>(out.stiffness, element, node, N, false);
   fill_block_tridiagonal<2>(out.mass, element, node, N, true);
@@ -98,7 +121,6 @@ FeMatrices assemble_inplane(const FeChain& chain) {
 
 FeMatrices assemble_outofplane(const FeChain& chain) {
   const int N = chain.elements;
-  const double l0 = chain.element_length_m;
   FeMatrices out;
   out.dofs_per_node = 1;
   using Block = Eigen::Matrix<double, 1, 1>;
@@ -106,7 +128,12 @@ FeMatrices assemble_outofplane(const FeChain& chain) {
   // Only the string part T/l resists motion normal to the plane.
   for (int j = 0; j < N; ++j)
     element[static_cast<std::size_t>(j)](0, 0) = chain.tension_n[j] / chain.stretched_length_m[j];
-  for (int i = 1; i < N; ++i) node[static_cast<std::size_t>(i)](0, 0) = l0 * chain.normal_mass_kg_per_m;
+  for (int i = 1; i < N; ++i) {
+    node[static_cast<std::size_t>(i)](0, 0) =
+        (same_section(chain, i) ? chain.element_length_m[i] * chain.normal_mass_kg_per_m[i]
+                                : half_sum(chain, chain.normal_mass_kg_per_m, i)) +
+        chain.node_inertia[static_cast<std::size_t>(i)].outofplane_kg;
+  }
   fill_block_tridiagonal<1>(out.stiffness, element, node, N, false);
   fill_block_tridiagonal<1>(out.mass, element, node, N, true);
   const Eigen::Index n = out.stiffness.rows();

@@ -4,7 +4,9 @@
 /// plane on the free (interior) nodes, and the coupling of the free unknowns to the end nodes
 /// (for an imposed end displacement). In plane the element tangent stiffness is
 /// (EA/l0) t t^T + (T/l)(I - t t^T) and the node mass l0 (m t t^T + M n n^T) about the bisecting
-/// node tangent (block tridiagonal, 2x2 blocks); out of plane T/l and M l0 (tridiagonal).
+/// node tangent (block tridiagonal, 2x2 blocks); out of plane T/l and M l0 (tridiagonal). On a
+/// line a node between two sections carries half of each element's mass, and a point
+/// attachment's inertia is added on its node (docs/physics.md, "General lines").
 
 #include <Eigen/Sparse>
 

@@ -28,11 +28,45 @@ Vector element_tension(const FeChain& chain, const std::vector<Vec2>& D) {
   Vector tau(chain.elements);
   for (int j = 0; j < chain.elements; ++j) {
     const auto k = static_cast<std::size_t>(j);
-    tau[j] = chain.axial_stiffness_n * chain.direction[k].dot(D[k + 1] - D[k]) /
-             chain.element_length_m;
+    tau[j] = chain.axial_stiffness_n[j] * chain.direction[k].dot(D[k + 1] - D[k]) /
+             chain.element_length_m[j];
   }
   return tau;
 }
+
+namespace {
+
+// Where s falls between nodes: element i and the fraction f in it; and between element midpoints:
+// element j and the fraction g toward j + 1 (extrapolated over the end half elements).
+struct StationPlace {
+  int i = 0, j = 0;
+  double f = 0.0, g = 0.0;
+};
+
+StationPlace place_of(const FeChain& chain, double s) {
+  const int N = chain.elements;
+  StationPlace at;
+  if (chain.equal_elements) {
+    // Equal elements: the nodes are s_i = i l0 (the uniform cable's arithmetic, kept exactly).
+    const double x = s / chain.element_length_m[0];
+    at.i = std::clamp(static_cast<int>(std::floor(x)), 0, N - 1);
+    at.f = x - at.i;
+    const double y = x - 0.5;
+    at.j = std::clamp(static_cast<int>(std::floor(y)), 0, N - 2);
+    at.g = y - at.j;
+    return at;
+  }
+  const double* nodes = chain.node_s_m.data();
+  const auto i = static_cast<int>(std::upper_bound(nodes, nodes + N + 1, s) - nodes) - 1;
+  at.i = std::clamp(i, 0, N - 1);
+  at.f = (s - nodes[at.i]) / chain.element_length_m[at.i];
+  auto middle = [&](int j) { return nodes[j] + 0.5 * chain.element_length_m[j]; };
+  at.j = std::clamp(s < middle(at.i) ? at.i - 1 : at.i, 0, std::max(N - 2, 0));
+  at.g = (s - middle(at.j)) / (middle(at.j + 1) - middle(at.j));
+  return at;
+}
+
+}  // namespace
 
 FeSampled sample_on_stations(Plane plane,
                              const FeChain& chain,
@@ -40,8 +74,6 @@ FeSampled sample_on_stations(Plane plane,
                              const Vector* tau,
                              const Vector& stations,
                              const StaticSolution& statics) {
-  const int N = chain.elements;
-  const double l0 = chain.element_length_m;
   FeSampled out;
   const Index points = stations.size();
   if (plane == Plane::InPlane) {
@@ -53,22 +85,16 @@ FeSampled sample_on_stations(Plane plane,
   if (tau) out.tension.resize(points);
   for (Index p = 0; p < points; ++p) {
     const double s = stations[p];
-    const double x = s / l0;
-    const int i = std::clamp(static_cast<int>(std::floor(x)), 0, N - 1);
-    const double f = x - i;
-    const Vec2 d = (1.0 - f) * D[static_cast<std::size_t>(i)] + f * D[static_cast<std::size_t>(i) + 1];
+    const StationPlace at = place_of(chain, s);
+    const double f = at.f;
+    const Vec2 d = (1.0 - f) * D[static_cast<std::size_t>(at.i)] + f * D[static_cast<std::size_t>(at.i) + 1];
     if (plane == Plane::InPlane) {
       out.u[p] = d.dot(statics.tangent(s));
       out.w[p] = d.dot(statics.normal(s));
     } else {
       out.v[p] = d.x();
     }
-    if (tau) {
-      const double y = x - 0.5;
-      const int j = std::clamp(static_cast<int>(std::floor(y)), 0, N - 2);
-      const double g = y - j;
-      out.tension[p] = (1.0 - g) * (*tau)[j] + g * (*tau)[j + 1];
-    }
+    if (tau) out.tension[p] = (1.0 - at.g) * (*tau)[at.j] + at.g * (*tau)[at.j + 1];
   }
   return out;
 }
@@ -98,6 +124,53 @@ Mode mode_on_stations(Plane plane,
     normalise_outofplane_mode(mode);
   }
   return mode;
+}
+
+namespace {
+
+// The mode's squared displacements at arc length s, interpolated linearly between stations:
+// (u^2, w^2) in plane, (v^2, 0) out of plane.
+Vec2 squared_motion_at(Plane plane, const Mode& mode, double s) {
+  const Vector& x = mode.s_m;
+  const Index n = x.size();
+  const Index k = std::clamp<Index>(static_cast<Index>(std::upper_bound(x.data(), x.data() + n, s) - x.data()), 1, n - 1);
+  const double f = (s - x[k - 1]) / (x[k] - x[k - 1]);
+  auto at = [&](const Vector& y) { return (1.0 - f) * y[k - 1] + f * y[k]; };
+  if (plane == Plane::OutOfPlane) return Vec2(std::pow(at(mode.v), 2), 0.0);
+  return Vec2(std::pow(at(mode.u), 2), std::pow(at(mode.w), 2));
+}
+
+}  // namespace
+
+double line_modal_mass(Plane plane, const Mode& mode, const Line& line, const StaticSolution& statics) {
+  if (mode.s_m.size() < 2) return -1.0;
+  auto density = [&](double s, const Vec2& motion) {
+    const LineSegment segment = statics.segment_at(s);
+    return plane == Plane::InPlane ? segment.mass_kg_per_m * motion.x() + segment.normal_mass_kg_per_m() * motion.y()
+                                   : segment.normal_mass_kg_per_m() * motion.x();
+  };
+  double sum = 0.0;
+  for (Index k = 1; k < mode.s_m.size(); ++k) {
+    std::vector<double> cuts = {mode.s_m[k - 1]};
+    for (std::size_t j = 1; j < line.segments.size(); ++j) {
+      const double joint = line.segment_start_m(j);
+      if (joint > cuts.front() && joint < mode.s_m[k]) cuts.push_back(joint);
+    }
+    cuts.push_back(mode.s_m[k]);
+    for (std::size_t c = 1; c < cuts.size(); ++c) {
+      const double a = cuts[c - 1], b = cuts[c], middle = 0.5 * (a + b);
+      sum += 0.5 * (b - a) * (density(middle, squared_motion_at(plane, mode, a)) +
+                              density(middle, squared_motion_at(plane, mode, b)));
+    }
+  }
+  for (const PointAttachment& point : line.points) {
+    const Vec2 motion = squared_motion_at(plane, mode, point.s_m);
+    sum += plane == Plane::InPlane
+               ? (point.mass_kg + point.tangential_added_mass_kg()) * motion.x() +
+                     (point.mass_kg + point.normal_added_mass_kg()) * motion.y()
+               : (point.mass_kg + point.outofplane_added_mass_kg()) * motion.x();
+  }
+  return sum;
 }
 
 }  // namespace catena::internal
