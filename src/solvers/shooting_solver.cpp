@@ -22,7 +22,6 @@
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
 #include "solvers/internal/work_meter.hpp"
-#include "solvers/internal/line_applicability.hpp"
 
 namespace catena {
 
@@ -110,6 +109,18 @@ void mark_failed(Plane plane, const ShootingFailure& failure, SolverSummary& sum
   summary.message = fmt::format("Numerical failure ({}): {}", to_string(plane), failure.what());
 }
 
+// The forced response of a general line is not implemented (the free vibration is).
+ForcedOutcome line_forced_declined() {
+  ForcedOutcome outcome;
+  outcome.summary.termination = Termination::NotApplicable;
+  outcome.summary.message =
+      "Not applicable: shooting's forced response on a general line is not implemented yet (its "
+      "modes are)";
+  outcome.summary.warnings.push_back(
+      "forced response on a general line: not implemented in shooting, not computed");
+  return outcome;
+}
+
 // The numerics of the shooting solver for one problem.
 class ShootingNumerics final : public SolverNumerics {
  public:
@@ -124,6 +135,7 @@ class ShootingNumerics final : public SolverNumerics {
   void describe(SolverSummary& summary) const override;
   ModalResult modes(Plane plane, int count) override;
   ForcedOutcome forced(const ForcedRequest& request) override {
+    if (k_.is_line()) return line_forced_declined();
     WorkMeter meter(context_, "shooting", "forced frequencies", static_cast<long>(request.omegas_rad_s.size()));
     ForcedOutcome outcome = shooting_forced_responses(k_, request, context_.request.stations_m(k_.length_m),
                                                       integrator_settings(options_), &meter);
@@ -145,7 +157,6 @@ class ShootingNumerics final : public SolverNumerics {
 // The equations divide by the static tension: where it vanishes inside the cable (a slack
 // vertical cable), the principal solutions are not defined.
 std::optional<std::string> ShootingNumerics::not_applicable() const {
-  if (auto reason = uniform_cable_only(context_.problem, "shooting (general lines not implemented yet)")) return reason;
   const StaticSolution& statics = context_.statics;
   const double L = statics.cable().length_m;
   const double V_A = statics.vertical_force_a_n();

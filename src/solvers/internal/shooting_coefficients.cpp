@@ -6,30 +6,100 @@
 
 namespace catena::internal {
 
+namespace {
+
+ShootingPiece piece_of(const CableProperties& section, double s_begin, double V_begin) {
+  ShootingPiece p;
+  p.s_begin = s_begin;
+  p.s_end = s_begin + section.length_m;
+  p.V_begin = V_begin;
+  p.W0 = section.weight_n_per_m;
+  p.compliance = section.is_inextensible() ? 0.0 : 1.0 / section.axial_stiffness_n;
+  p.m = section.mass_kg_per_m;
+  p.M = section.normal_mass_kg_per_m();
+  return p;
+}
+
+// A point's inertia in its local frame: t bisects the static tangents on both sides.
+ShootingPoint point_of(const PointAttachment& attachment, const StaticSolution& statics) {
+  ShootingPoint p;
+  p.s = attachment.s_m;
+  const double H = statics.horizontal_force_n();
+  const Vec2 before = Vec2(H, statics.vertical_force_before_n(p.s)).normalized();
+  const Vec2 after = Vec2(H, statics.vertical_force_n(p.s)).normalized();
+  p.t = (before + after).normalized();
+  p.mass_tangential = attachment.mass_kg + attachment.tangential_added_mass_kg();
+  p.mass_normal = attachment.mass_kg + attachment.normal_added_mass_kg();
+  p.mass_outofplane = attachment.mass_kg + attachment.outofplane_added_mass_kg();
+  return p;
+}
+
+double piece_tension(double H, const ShootingPiece& p, double s) {
+  return std::hypot(H, p.V_begin + p.W0 * (s - p.s_begin));
+}
+
+}  // namespace
+
 ShootingCoefficients ShootingCoefficients::from_statics(const StaticSolution& statics) {
   const CableProperties& cable = statics.cable();
   ShootingCoefficients c;
   c.length_m = cable.length_m;
   c.H = statics.horizontal_force_n();
   c.V_A = statics.vertical_force_a_n();
-  c.W0 = cable.weight_n_per_m;
-  c.compliance = cable.is_inextensible() ? 0.0 : 1.0 / cable.axial_stiffness_n;
-  c.m = cable.mass_kg_per_m;
-  c.M = cable.normal_mass_kg_per_m();
+  if (statics.is_line()) {
+    for (const StaticPiece& piece : statics.pieces()) {
+      c.pieces.push_back(piece_of(piece.section, piece.s_begin_m, piece.vertical_begin_n));
+    }
+    c.pieces.back().s_end = cable.length_m;
+    for (const PointAttachment& point : statics.line().points) {
+      c.points.push_back(point_of(point, statics));
+    }
+  } else {
+    c.pieces.push_back(piece_of(cable, 0.0, c.V_A));
+  }
+  const ShootingPiece& first = c.pieces.front();
+  c.W0 = first.W0;
+  c.compliance = first.compliance;
+  c.m = first.m;
+  c.M = first.M;
   c.t_ref = std::max(statics.tension_n(0.0), statics.tension_n(cable.length_m));
   return c;
 }
 
-double ShootingCoefficients::tension(double s) const { return std::hypot(H, V_A + W0 * s); }
+std::vector<ShootingPiece> ShootingCoefficients::all_pieces() const {
+  if (!pieces.empty()) return pieces;
+  ShootingPiece p;
+  p.s_end = length_m;
+  p.V_begin = V_A;
+  p.W0 = W0;
+  p.compliance = compliance;
+  p.m = m;
+  p.M = M;
+  return {p};
+}
+
+const ShootingPiece& ShootingCoefficients::piece_at(double s) const {
+  std::size_t j = 0;
+  while (j + 1 < pieces.size() && s >= pieces[j + 1].s_begin) ++j;
+  return pieces[j];
+}
+
+double ShootingCoefficients::vertical_force(double s) const {
+  if (pieces.empty()) return V_A + W0 * s;
+  const ShootingPiece& p = piece_at(s);
+  return p.V_begin + p.W0 * (s - p.s_begin);
+}
+
+double ShootingCoefficients::tension(double s) const { return std::hypot(H, vertical_force(s)); }
 
 Vec2 ShootingCoefficients::tangent(double s) const {
-  const double V = V_A + W0 * s;
+  const double V = vertical_force(s);
   const double T = std::hypot(H, V);
   return Vec2(H / T, V / T);
 }
 
 Vec2 ShootingCoefficients::normal(double s) const {
-  const double V = V_A + W0 * s;
+  const double V = vertical_force(s);
   const double T = std::hypot(H, V);
   return Vec2(-V / T, H / T);
 }
@@ -38,22 +108,32 @@ double ShootingCoefficients::scaled_omega2(double omega_rad_s) const {
   return omega_rad_s * omega_rad_s * length_m * length_m * M / t_ref;
 }
 
+bool ShootingCoefficients::is_inextensible() const {
+  if (pieces.empty()) return compliance == 0.0;
+  return std::all_of(pieces.begin(), pieces.end(),
+                     [](const ShootingPiece& p) { return p.compliance == 0.0; });
+}
+
 bool is_straight_inextensible(const ShootingCoefficients& k) {
-  return k.H == 0.0 && k.compliance == 0.0;
+  return k.H == 0.0 && k.is_inextensible();
 }
 
 double transverse_travel_time(const ShootingCoefficients& k) {
   constexpr int kIntervals = 64;
-  const double h = k.length_m / kIntervals;
-  double sum = 0.0;
-  for (int i = 0; i <= kIntervals; ++i) {
-    const double s = i * h;
-    const double T = k.tension(s);
-    const double value = std::sqrt(k.M * (1.0 + T * k.compliance) / T);
-    const double weight = (i == 0 || i == kIntervals) ? 1.0 : (i % 2 ? 4.0 : 2.0);
-    sum += weight * value;
+  double total = 0.0;
+  for (const ShootingPiece& piece : k.all_pieces()) {
+    const double h = (piece.s_end - piece.s_begin) / kIntervals;
+    double sum = 0.0;
+    for (int i = 0; i <= kIntervals; ++i) {
+      const double s = piece.s_begin + i * h;
+      const double T = piece_tension(k.H, piece, s);
+      const double value = std::sqrt(piece.M * (1.0 + T * piece.compliance) / T);
+      const double weight = (i == 0 || i == kIntervals) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+      sum += weight * value;
+    }
+    total += sum * h / 3.0;
   }
-  return sum * h / 3.0;
+  return total;
 }
 
 }  // namespace catena::internal

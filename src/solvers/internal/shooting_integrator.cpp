@@ -38,15 +38,54 @@ struct RhsData {
   // axial frame (axial_frame in the header): P = diag(sigma, 1) R^T, Q = P^{-T}.
   Eigen::Matrix2d to_axial = Eigen::Matrix2d::Identity();
   Eigen::Matrix2d to_axial_force = Eigen::Matrix2d::Identity();
+  // The piece being integrated (a general line restarts CVODE at every break).
+  std::size_t piece = 0;
 };
+
+// A break of a general line in the order of integration: a joint or a point attachment, where
+// CVODE is restarted on the next piece (and the internal force jumps at a point).
+struct Break {
+  double x = 1.0;
+  std::size_t next_piece = 0;
+  int point = -1;  // index in ShootingCoefficients::points, -1 at a joint
+};
+
+// The breaks of the line in the order of integration (none for a uniform cable).
+std::vector<Break> breaks_of(const ShootingCoefficients& k, bool from_b) {
+  std::vector<Break> breaks;
+  const std::size_t n = k.pieces.size();
+  for (std::size_t j = 1; j < n; ++j) {
+    const std::size_t piece = from_b ? n - j : j;
+    const double s = k.pieces[piece].s_begin;
+    Break b;
+    b.x = from_b ? 1.0 - s / k.length_m : s / k.length_m;
+    b.next_piece = from_b ? piece - 1 : piece;
+    for (std::size_t p = 0; p < k.points.size(); ++p) {
+      if (std::abs(k.points[p].s - s) <= 1e-10 * k.length_m) b.point = static_cast<int>(p);
+    }
+    breaks.push_back(b);
+  }
+  return breaks;
+}
 
 // The axial frame of the header: a constant rotation to the mean tangent (the bisector of the
 // end tangents) and the axial stretch sigma.
 void set_axial_frame(const ShootingCoefficients& k, RhsData& data) {
-  const double theta_a = std::atan2(k.V_A, k.H);
-  const double theta_b = std::atan2(k.V_A + k.W0 * k.length_m, k.H);
+  // The tangent angle is monotone on each piece: its extremes are at the piece ends.
+  double theta_a = std::atan2(k.V_A, k.H);
+  double theta_b = std::atan2(k.vertical_force(k.length_m), k.H);
+  double max_compliance = 0.0;
+  for (const ShootingPiece& p : k.pieces) {
+    const double ends[2] = {std::atan2(p.V_begin, k.H),
+                            std::atan2(p.V_begin + p.W0 * (p.s_end - p.s_begin), k.H)};
+    for (double theta : ends) {
+      theta_a = std::min(theta_a, theta);
+      theta_b = std::max(theta_b, theta);
+    }
+    max_compliance = std::max(max_compliance, p.compliance);
+  }
   const double theta_c = 0.5 * (theta_a + theta_b);
-  const double sigma = axial_stretch(k.t_ref * k.compliance, 0.5 * std::abs(theta_b - theta_a));
+  const double sigma = axial_stretch(k.t_ref * max_compliance, 0.5 * std::abs(theta_b - theta_a));
   // A cable whose axial component is within kMinAxialStretch of the normal one keeps its digits in
   // x and y: it is shot as before, in the physical frame (data's identity default).
   if (sigma < kMinAxialStretch) return;
@@ -76,23 +115,25 @@ Basis<D> to_physical(const Basis<D>& carried, const RhsData& data) {
 template <int D>
 void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C) {
   const ShootingCoefficients& k = data.coefficients;
+  const ShootingPiece& p = k.pieces[data.piece];
   const double s = k.length_m * (data.from_b ? 1.0 - x : x);
-  const double V = k.V_A + k.W0 * s;
+  const double V = p.V_begin + p.W0 * (s - p.s_begin);
   const double T = std::hypot(k.H, V);
-  const double e = T * k.compliance;
+  const double e = T * p.compliance;
   const double b_normal = k.t_ref * (1.0 + e) / T;
   if constexpr (D == 1) {
     B(0, 0) = data.kappa2 * b_normal;
-    C(0, 0) = data.omega2 / data.kappa2;
+    C(0, 0) = (data.omega2 / data.kappa2) * (p.M / k.M);
   } else {
-    const double b_tangent = k.t_ref * k.compliance;
+    const double b_tangent = k.t_ref * p.compliance;
     const Vec2 t(k.H / T, V / T);
     const Vec2 n(-t.y(), t.x());
-    const double mass_ratio = k.m / k.M;
+    const double mass_ratio = p.m / k.M;
     const Vec2 tp = data.to_axial * t, np = data.to_axial * n;
     const Vec2 tq = data.to_axial_force * t, nq = data.to_axial_force * n;
     B = data.kappa2 * (b_tangent * tp * tp.transpose() + b_normal * np * np.transpose());
-    C = (data.omega2 / data.kappa2) * (mass_ratio * tq * tq.transpose() + nq * nq.transpose());
+    C = (data.omega2 / data.kappa2) *
+        (mass_ratio * tq * tq.transpose() + (p.M / k.M) * nq * nq.transpose());
   }
 }
 
@@ -201,6 +242,50 @@ Square<D> orthonormalise(Eigen::Map<Basis<D>>& Y, double x) {
   return R;
 }
 
+// The point's inertia jump in the carried variables: F~ -> F~ - K Phi~ with
+// K = Q J Q^T / kappa^2, J = Omega^2 Mp / (L M) (the scaled F^ jumps by -J Phi^; from b the
+// carried -F^ jumps the same way). Returns K (symmetric, >= 0).
+template <int D>
+Square<D> point_jump(const RhsData& data, const ShootingPoint& point) {
+  const ShootingCoefficients& k = data.coefficients;
+  const double scale = data.omega2 / (k.length_m * k.M * data.kappa2);
+  Square<D> K;
+  if constexpr (D == 1) {
+    K(0, 0) = scale * point.mass_outofplane;
+  } else {
+    const Vec2 n(-point.t.y(), point.t.x());
+    const Vec2 tq = data.to_axial_force * point.t, nq = data.to_axial_force * n;
+    K = scale * (point.mass_tangential * tq * tq.transpose() +
+                 point.mass_normal * nq * nq.transpose());
+  }
+  return K;
+}
+
+// Applies the jump F -> F - K Phi to the carried basis and returns the exact change of the phase
+// theta = arg det(Phi + i F): det Z' = det Z prod_j (1 - i mu_j), mu_j the eigenvalues of
+// Z^{-1} K Phi; along F - tau K Phi (tau from 0 to 1) no factor vanishes (Z stays invertible), so
+// each turns by the principal arg of its end value. The change is <= 0: the jump adds conjugate
+// points as the continuous mass does.
+template <int D>
+double apply_jump(Eigen::Map<Basis<D>>& Y, const Square<D>& K) {
+  using Complex = std::complex<double>;
+  using ComplexSquare = Eigen::Matrix<Complex, D, D>;
+  const Square<D> Phi = Y.template topRows<D>();
+  const ComplexSquare Z = Phi.template cast<Complex>() +
+                          Complex(0.0, 1.0) * Y.template bottomRows<D>().template cast<Complex>();
+  const ComplexSquare A = Z.inverse() * (K * Phi).template cast<Complex>();
+  Eigen::Matrix<Complex, D, 1> mu;
+  if constexpr (D == 1) {
+    mu(0) = A(0, 0);
+  } else {
+    mu = Eigen::ComplexEigenSolver<ComplexSquare>(A, false).eigenvalues();
+  }
+  double change = 0.0;
+  for (int j = 0; j < D; ++j) change += std::arg(Complex(1.0, 0.0) - Complex(0.0, 1.0) * mu(j));
+  Y.template bottomRows<D>() -= K * Phi;
+  return change;
+}
+
 // CVODE's step and RHS counters of the finished segments of one shot (ReInit resets them).
 struct StepCounts {
   long steps = 0;
@@ -222,8 +307,9 @@ struct ShootingIntegrator::Impl {
                                        : nullptr),
         cvode(s.use_bdf ? CV_BDF : CV_ADAMS, context.get()) {
     data.coefficients = coefficients;
+    data.coefficients.pieces = coefficients.all_pieces();
     data.dimension = dimension;
-    if (dimension == 2) set_axial_frame(coefficients, data);
+    if (dimension == 2) set_axial_frame(data.coefficients, data);
     if (!context.ok() || !y.ok() || !scratch.ok() || !matrix.ok() || !linear_solver.ok() ||
         !cvode.ok()) {
       throw ShootingFailure("could not allocate the SUNDIALS objects");
@@ -268,6 +354,9 @@ struct ShootingIntegrator::Impl {
   void restart(Shot& shot, double x, StepCounts& finished);
   template <int D>
   void finish_shot(Shot& shot);
+  template <int D>
+  void cross_break(double x, StepCounts& finished);
+  double stop_time() const { return next_break < breaks.size() ? breaks[next_break].x : 1.0; }
   void add_segment_counts(StepCounts& counts) const;
 
   IntegratorSettings settings;
@@ -282,6 +371,8 @@ struct ShootingIntegrator::Impl {
   SundialsNonlinearSolver nonlinear_solver;
   CvodeMemory cvode;
   RhsData data;
+  std::vector<Break> breaks;  // of the current shot, in the order of integration
+  std::size_t next_break = 0;
   long total_steps = 0;
   long total_rhs = 0;
   long total_reorthonormalisations = 0;
@@ -295,6 +386,9 @@ void ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor,
   data.omega2 = data.coefficients.scaled_omega2(omega);
   data.kappa2 = settings.balance ? std::max(std::sqrt(data.omega2), 1.0) : 1.0;
   data.from_b = from_b;
+  data.piece = from_b ? data.coefficients.pieces.size() - 1 : 0;
+  breaks = breaks_of(data.coefficients, from_b);
+  next_break = 0;
   double* state = y.data();
   Eigen::Map<Basis<D>> Y(state);
   Y.setZero();
@@ -310,7 +404,7 @@ void ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor,
   N_VConst(atol, scratch.get());
   scratch.data()[2 * D * D] = std::max(atol, 1e-6);
   check(CVodeSVtolerances(mem, rtol, scratch.get()), "CVodeSVtolerances");
-  check(CVodeSetStopTime(mem, 1.0), "CVodeSetStopTime");
+  check(CVodeSetStopTime(mem, stop_time()), "CVodeSetStopTime");
 }
 
 // Stations passed by the last step (ending at x), from CVODE's interpolant.
@@ -344,7 +438,23 @@ void ShootingIntegrator::Impl::restart(Shot& shot, double x, StepCounts& finishe
   shot.segment_r.emplace_back(R);
   add_segment_counts(finished);
   check(CVodeReInit(cvode.get(), x, y.get()), "CVodeReInit", x);
-  check(CVodeSetStopTime(cvode.get(), 1.0), "CVodeSetStopTime");
+  check(CVodeSetStopTime(cvode.get(), stop_time()), "CVodeSetStopTime");
+}
+
+// A break of a general line reached at x: the next piece's coefficients, the point's jump of the
+// internal force (D continuous) with the phase carried across exactly, and CVODE restarted.
+template <int D>
+void ShootingIntegrator::Impl::cross_break(double x, StepCounts& finished) {
+  const Break& b = breaks[next_break++];
+  data.piece = b.next_piece;
+  if (b.point >= 0) {
+    Eigen::Map<Basis<D>> Y(y.data());
+    const Square<D> K = point_jump<D>(data, data.coefficients.points[static_cast<std::size_t>(b.point)]);
+    y.data()[2 * D * D] += apply_jump<D>(Y, K);
+  }
+  add_segment_counts(finished);
+  check(CVodeReInit(cvode.get(), x, y.get()), "CVodeReInit", x);
+  check(CVodeSetStopTime(cvode.get(), stop_time()), "CVodeSetStopTime");
 }
 
 // CVODE one step at a time from x = 0 to 1, recording stations and guarding independence.
@@ -355,7 +465,7 @@ void ShootingIntegrator::Impl::integrate(Shot& shot, StationRecorder<D>& recorde
   long steps_total = 0;
   double x = 0.0;
   while (x < 1.0) {
-    const int flag = CVode(cvode.get(), 1.0, y.get(), &x, CV_ONE_STEP);
+    const int flag = CVode(cvode.get(), stop_time(), y.get(), &x, CV_ONE_STEP);
     check(flag, "CVode", from_b ? 1.0 - x : x);
     if (++steps_total > settings.max_steps) {
       throw ShootingFailure(fmt::format("more than {} CVODE steps (max_steps) at s/L = {:.6g}",
@@ -363,6 +473,7 @@ void ShootingIntegrator::Impl::integrate(Shot& shot, StationRecorder<D>& recorde
     }
     record_passed_stations(recorder, x);
     if (x >= 1.0) break;
+    if (next_break < breaks.size() && x >= breaks[next_break].x) cross_break<D>(x, finished);
     if (needs_restart<D>(Y, settings.max_condition)) restart<D>(shot, x, finished);
   }
   add_segment_counts(finished);

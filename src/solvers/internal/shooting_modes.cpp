@@ -115,6 +115,9 @@ void ShootingModeBuilder::set_shape(Mode& mode, const Shot& shot,
       mode.max_abs_tension_n = 0.0;
     }
   }
+  // The modal mass of a general line would need its pieces' densities and its point masses at
+  // the points (not stations): not computed yet.
+  if (k_.is_line()) mode.modal_mass_kg = -1.0;
   if (!request_.shapes) drop_shape_fields(mode);
 }
 
