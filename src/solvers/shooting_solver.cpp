@@ -94,6 +94,7 @@ RootFinderSettings root_finder_settings(const ShootingSolverOptions& options) {
   settings.root_tolerance = options.effective_root_tolerance();
   settings.error_estimate = options.error_estimate;
   settings.target = accuracy_target(options);
+  settings.estimate_floor = settings.target;
   return settings;
 }
 

@@ -213,7 +213,15 @@ FeLevelResponse respond_on_level(Plane plane,
         omega, chain.elements);
     return out;
   }
-  out.field.element_length_m = chain.element_length_m;
+  // The Richardson step and the sampling take equal elements (fe_forced_richardson.hpp): a line
+  // whose pieces have unequal elements is declined for now, a uniform one is as a cable.
+  const Vector& lengths = chain.element_length_m;
+  if (lengths.size() == 0 || lengths.maxCoeff() != lengths.minCoeff()) {
+    out.diagnostic = "fe's forced response on a line with unequal element lengths is not implemented "
+                     "(its Richardson step in h takes equal elements)";
+    return out;
+  }
+  out.field.element_length_m = lengths[0];
   out.field.nodes = node_displacements(plane, chain.elements, x, end_a, end_b);
   if (plane == Plane::InPlane) out.field.tension = element_tension(chain, out.field.nodes);
   out.ok = true;

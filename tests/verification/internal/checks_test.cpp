@@ -239,23 +239,27 @@ TEST(Checks, TheForcedToleranceGrowsWithTheConditionNumberNotWithEstimates) {
   // Far from resonance (modes 10, 200, 300: kappa = 2 x 200^2 / (200^2 - 100^2) = 2.67):
   // 1e-3 > 1e-4 x 2.67, FAIL.
   SceneResult far = conditioned_pair(200.0, 1e-6);
-  const CheckResult* check = find(run_checks(far), "forced", 1);
+  const std::vector<CheckResult> far_checks = run_checks(far);  // kept: `check` points into it
+  const CheckResult* check = find(far_checks, "forced", 1);
   ASSERT_NE(check, nullptr);
   EXPECT_EQ(check->verdict, Verdict::Fail) << check->detail;
   EXPECT_NEAR(check->tolerance, 1e-4 * 2.0 * 4e4 / 3e4, 1e-12);
   EXPECT_NE(check->detail.find("x kappa 2.67 (from shooting's natural frequencies)"), std::string::npos)
       << check->detail;
   // A large estimate does not widen it.
-  EXPECT_EQ(find(run_checks(conditioned_pair(200.0, 0.5)), "forced", 1)->tolerance, check->tolerance);
+  const std::vector<CheckResult> wide_estimate = run_checks(conditioned_pair(200.0, 0.5));
+  EXPECT_EQ(find(wide_estimate, "forced", 1)->tolerance, check->tolerance);
   // Near resonance (omega_2 = 100.5: kappa = 2 x 100.5^2 / 100.25 = 201.5) the same values pass.
-  const CheckResult* near = find(run_checks(conditioned_pair(100.5, 1e-6)), "forced", 1);
+  const std::vector<CheckResult> near_checks = run_checks(conditioned_pair(100.5, 1e-6));
+  const CheckResult* near = find(near_checks, "forced", 1);
   EXPECT_EQ(near->verdict, Verdict::Pass) << near->detail;
   EXPECT_NEAR(near->tolerance, 1e-4 * 2.0 * 100.5 * 100.5 / (100.5 * 100.5 - 1e4), 1e-12);
 }
 
 TEST(Checks, AtResonanceTheForcedCheckWarnsThatItCannotCheck) {
   // omega_2 = 100.001: kappa = 1e5, max x kappa = 10 > 0.1: not checkable, a WARN that says so.
-  const CheckResult* check = find(run_checks(conditioned_pair(100.001, 1e-6)), "forced", 1);
+  const std::vector<CheckResult> checks = run_checks(conditioned_pair(100.001, 1e-6));
+  const CheckResult* check = find(checks, "forced", 1);
   EXPECT_EQ(check->verdict, Verdict::Warn) << check->detail;
   EXPECT_NE(check->detail.find("at resonance, not checkable"), std::string::npos) << check->detail;
   // Unless the two disagree grossly.
@@ -268,7 +272,8 @@ TEST(Checks, WithoutNaturalFrequenciesAboveTheForcingTheForcedToleranceIsTheStri
   SceneResult r = conditioned_pair(100.5, 1e-6);
   r.forced_conditioning.omegas_rad_s = {10.0, 50.0};  // nothing known above 100 rad/s
   r.forced_conditioning.note = "2 modes only";
-  const CheckResult* check = find(run_checks(r), "forced", 1);
+  const std::vector<CheckResult> checks = run_checks(r);
+  const CheckResult* check = find(checks, "forced", 1);
   EXPECT_EQ(check->verdict, Verdict::Fail) << check->detail;
   EXPECT_DOUBLE_EQ(check->tolerance, 1e-4);
   EXPECT_NE(check->detail.find("conditioning unknown, the strictest: 2 modes only"), std::string::npos);
