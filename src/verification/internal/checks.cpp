@@ -11,6 +11,7 @@
 #include "catena/verification/tolerance_table.hpp"
 #include "verification/internal/check_builder.hpp"
 #include "verification/internal/estimate_checks.hpp"
+#include "verification/internal/mode_mix.hpp"
 #include "verification/internal/published_checks.hpp"
 
 namespace catena::internal {
@@ -109,30 +110,19 @@ double integrate(const Vector& s, const Vector& f) {
   return sum * h / 3.0;
 }
 
-Vector shape_vector(const Mode& mode, Plane plane) {
-  if (plane == Plane::OutOfPlane) return mode.v;
-  Vector out(mode.u.size() + mode.w.size());
-  out << mode.u, mode.w;
-  return out;
-}
-
-bool has_shape(const Mode& mode, Plane plane) {
-  return plane == Plane::OutOfPlane ? mode.v.size() > 0 : (mode.u.size() > 0 && mode.w.size() > 0);
-}
-
 void shape_pair(const SceneResult& result, const SolverOutput& a, const SolverOutput& b, Plane plane,
                 CheckBuilder& builder) {
   const ModalResult* ma = modal(a, plane);
   const ModalResult* mb = modal(b, plane);
-  if (!ma || !mb || !has_shape(ma->modes[0], plane) || !has_shape(mb->modes[0], plane)) return;
+  if (!ma || !mb || !has_stacked_shape(ma->modes[0], plane) || !has_stacked_shape(mb->modes[0], plane)) return;
   const std::string quantity = plane == Plane::InPlane ? "shape-in-plane" : "shape-out-of-plane";
   if (!builder.independent(a.solver, b.solver, quantity, "shape", plane_name(plane))) return;
   const std::size_t n = std::min(ma->modes.size(), mb->modes.size());
   for (std::size_t i = 0; i < n; ++i) {
     const Mode& x = ma->modes[i];
     const Mode& y = mb->modes[i];
-    if (!has_shape(x, plane) || !has_shape(y, plane) || x.s_m.size() != y.s_m.size()) continue;
-    const Vector p = shape_vector(x, plane), q = shape_vector(y, plane);
+    if (!has_stacked_shape(x, plane) || !has_stacked_shape(y, plane) || x.s_m.size() != y.s_m.size()) continue;
+    const Vector p = stacked_shape(x, plane), q = stacked_shape(y, plane);
     const double mac = std::pow(p.dot(q), 2) / (p.squaredNorm() * q.squaredNorm());
     const std::string compare = a.solver + " vs " + b.solver;
     if (auto tol = builder.tolerance("mac", a.solver, b.solver,
@@ -254,7 +244,7 @@ void forced_pair(const SceneResult& result, const SolverOutput& a, const SolverO
 
 void orthogonality(const SceneResult& result, const SolverOutput& output, Plane plane, CheckBuilder& builder) {
   const ModalResult* m = modal(output, plane);
-  if (!m || m->modes.size() < 2 || !has_shape(m->modes[0], plane)) return;
+  if (!m || m->modes.size() < 2 || !has_stacked_shape(m->modes[0], plane)) return;
   const double mass = result.scene.problem.cable.mass_kg_per_m;
   const double normal_mass = result.scene.problem.cable.normal_mass_kg_per_m();
   auto inner = [&](const Mode& x, const Mode& y) {
@@ -269,7 +259,7 @@ void orthogonality(const SceneResult& result, const SolverOutput& output, Plane 
     for (std::size_t j = i + 1; j < m->modes.size(); ++j) {
       const Mode& x = m->modes[i];
       const Mode& y = m->modes[j];
-      if (!has_shape(x, plane) || !has_shape(y, plane)) continue;
+      if (!has_stacked_shape(x, plane) || !has_stacked_shape(y, plane)) continue;
       const double value = std::abs(inner(x, y)) / std::sqrt(inner(x, x) * inner(y, y));
       if (!(value <= worst)) {
         worst = value;

@@ -8,7 +8,7 @@
 
 namespace catena::internal {
 
-/// The shape the checks compare: (u, w) stacked in plane, v out of plane.
+/// The shape the checks and the mutations compare: (u, w) stacked in plane, v out of plane.
 Vector stacked_shape(const Mode& mode, Plane plane);
 /// True when `mode` carries its shape in `plane`.
 bool has_stacked_shape(const Mode& mode, Plane plane);
