@@ -11,8 +11,21 @@
 #include <string>
 
 #include "catena/core/error.hpp"
+#include "catena/models/cable.hpp"
 
 namespace catena::testing {
+
+/// `uniform`'s cable written as a line of `pieces` identical segments (same ends): the anchor that a
+/// split line reproduces the one-segment result (docs/physics.md, "General lines").
+inline Problem split_into_segments(const Problem& uniform, int pieces) {
+  Problem p = uniform;
+  const CableProperties& c = uniform.cable;
+  for (int i = 0; i < pieces; ++i) {
+    p.line.segments.push_back({c.length_m / pieces, c.weight_n_per_m, c.axial_stiffness_n, c.mass_kg_per_m,
+                               c.added_mass_kg_per_m});
+  }
+  return p;
+}
 
 /// Symmetric relative difference (Boost.Math); infinite when one value is non-finite.
 inline double relative_error(double a, double b) { return boost::math::relative_difference(a, b); }

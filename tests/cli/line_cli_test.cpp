@@ -5,32 +5,19 @@
 
 #include <nlohmann/json.hpp>
 
-#include <array>
+#include "cli/cli_support.hpp"
+
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code;
-  std::string output;
-};
-
-CliRun run_cli(const std::string& arguments) {
-  const std::string command = std::string(CATENA_CLI_PATH) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer{};
-  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+using catena::testing::CliRun;
+using catena::testing::run_cli;
 
 fs::path write_scene(const std::string& name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / "catena_line_cli_test";

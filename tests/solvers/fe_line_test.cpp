@@ -23,6 +23,8 @@
 namespace catena {
 namespace {
 
+using catena::testing::split_into_segments;
+
 using catena::testing::modes_request;
 using catena::testing::relative_error;
 using Solved = catena::testing::SolvedProblem;
@@ -39,15 +41,6 @@ Problem sagging_cable() {
   Problem p;
   p.cable = {700.0, 900.0, 4e6, 100.0, 30.0};
   p.supports.b_m = Vec2(600.0, 150.0);
-  return p;
-}
-
-Problem split(const Problem& uniform, int pieces) {
-  Problem p = uniform;
-  const CableProperties& c = uniform.cable;
-  for (int i = 0; i < pieces; ++i)
-    p.line.segments.push_back({c.length_m / pieces, c.weight_n_per_m, c.axial_stiffness_n, c.mass_kg_per_m,
-                               c.added_mass_kg_per_m});
   return p;
 }
 
@@ -97,7 +90,7 @@ TEST(FeLine, UniformLineSplitIntoIdenticalSegmentsReproducesTheCable) {
   const Solved one = solve(cable, modes_request(8, 8), options);
   ASSERT_EQ(one.output.summary.termination, Termination::Converged) << one.output.summary.full_report();
   for (int pieces : {2, 7}) {
-    const Solved line = solve(split(cable, pieces), modes_request(8, 8), options);
+    const Solved line = solve(split_into_segments(cable, pieces), modes_request(8, 8), options);
     ASSERT_EQ(line.output.summary.termination, Termination::Converged) << line.output.summary.full_report();
     expect_same_frequencies(*one.output.inplane, *line.output.inplane, 1e-12);
     expect_same_frequencies(*one.output.outofplane, *line.output.outofplane, 1e-12);
@@ -179,7 +172,7 @@ TEST(FeLine, ForcedResponseOfASplitLineEqualsTheCables) {
   request.forced = forced;
   const FeSolverOptions options{.elements = 140};
   const Solved one = solve(sagging_cable(), request, options);
-  const Solved line = solve(split(sagging_cable(), 7), request, options);
+  const Solved line = solve(split_into_segments(sagging_cable(), 7), request, options);
   ASSERT_EQ(one.output.forced.size(), 2u);
   ASSERT_EQ(line.output.forced.size(), 2u);
   for (std::size_t f = 0; f < 2; ++f) {

@@ -11,6 +11,8 @@
 //  - the forced response of a line is declined with a reason.
 #include <gtest/gtest.h>
 
+#include "test_utils.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -21,6 +23,8 @@
 
 namespace catena {
 namespace {
+
+using catena::testing::split_into_segments;
 
 // rtol 1e-12 gives the frequencies of smooth problems to a few 1e-12 (shooting_solver_test.cpp).
 constexpr double kRelTol = 1e-9;
@@ -83,16 +87,6 @@ Problem sagging_cable() {
   return p;
 }
 
-Problem split(const Problem& uniform, int pieces) {
-  Problem p = uniform;
-  const CableProperties& c = uniform.cable;
-  for (int i = 0; i < pieces; ++i) {
-    p.line.segments.push_back({c.length_m / pieces, c.weight_n_per_m, c.axial_stiffness_n,
-                               c.mass_kg_per_m, c.added_mass_kg_per_m});
-  }
-  return p;
-}
-
 // Weightless taut line along x: strain 1 %, so T = EA / 100 and e = 0.01.
 constexpr double kEA = 1e6;
 constexpr double kStrain = 0.01;
@@ -110,7 +104,7 @@ TEST(ShootingLine, SplitUniformCableReproducesOneSegment) {
   const Problem uniform = sagging_cable();
   const testing::SolvedProblem reference = solve(uniform, 8, 8);
   for (int pieces : {2, 7}) {
-    const testing::SolvedProblem line = solve(split(uniform, pieces), 8, 8);
+    const testing::SolvedProblem line = solve(split_into_segments(uniform, pieces), 8, 8);
     ASSERT_EQ(line.output.summary.termination, Termination::Converged) << line.output.summary.message;
     expect_close(omegas(*line.output.inplane), omegas(*reference.output.inplane), 1e-10);
     expect_close(omegas(*line.output.outofplane), omegas(*reference.output.outofplane), 1e-10);

@@ -15,6 +15,8 @@
 namespace catena {
 namespace {
 
+using catena::testing::split_into_segments;
+
 using testing::expect_invalid;
 using testing::relative_error;
 
@@ -23,16 +25,6 @@ Problem uniform_problem() {
   p.cable = {1000.0, 1000.0, 5e8, 120.0, 80.0};
   p.supports.a_m = Vec2(0.0, 0.0);
   p.supports.b_m = Vec2(900.0, 300.0);
-  return p;
-}
-
-Problem split(const Problem& uniform, int pieces) {
-  Problem p = uniform;
-  const CableProperties& c = uniform.cable;
-  for (int i = 0; i < pieces; ++i) {
-    p.line.segments.push_back({c.length_m / pieces, c.weight_n_per_m, c.axial_stiffness_n, c.mass_kg_per_m,
-                               c.added_mass_kg_per_m});
-  }
   return p;
 }
 
@@ -122,7 +114,7 @@ TEST(LineStatics, UniformCableSplitIntoSegmentsReproducesTheOneSegmentSolution) 
   const Problem uniform = uniform_problem();
   const StaticSolution one = solve_statics(uniform);
   for (int pieces : {2, 7}) {
-    const StaticSolution many = solve_statics(split(uniform, pieces));
+    const StaticSolution many = solve_statics(split_into_segments(uniform, pieces));
     ASSERT_TRUE(many.converged) << many.message;
     EXPECT_LT(relative_error(many.horizontal_force_n(), one.horizontal_force_n()), 1e-12) << pieces;
     EXPECT_LT(relative_error(many.vertical_force_a_n(), one.vertical_force_a_n()), 1e-12) << pieces;
