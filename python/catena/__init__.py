@@ -20,8 +20,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from ._catena import (Cable, CertifiedReference, Check, ConvergenceStudy, ExternalCheck, ForcedRequest,
-                      ForcedResponse, Groups, InvalidInput, Mode, ModeComparison, Modes, ModeShapes,
-                      ParseError, Problem, Request, ResolutionComparison, Result, Scene, SolverResult,
+                      ForcedResponse, Groups, InvalidInput, Line, LineSegment, Mode, ModeComparison, Modes,
+                      ModeShapes, ParseError, PointAttachment, Problem, Request, ResolutionComparison, Result, Scene, SolverResult,
                       Statics, Summary, __version__, dimensionless_groups, run_solver, solve_statics)
 from . import _catena
 from ._check_results import ORIGIN as _RESULTS_ORIGIN, _NotAValue, results_json_text
@@ -29,8 +29,8 @@ from ._scene_dict import scene_toml_text
 
 __all__ = [
     "Cable", "CertifiedReference", "Check", "ConvergenceStudy", "ExternalCheck", "ForcedRequest",
-    "ForcedResponse", "Groups", "InvalidInput", "Knob", "Mode", "ModeComparison", "Modes", "ModeShapes",
-    "ParseError", "Problem", "Request", "ResolutionComparison", "Result", "Scene", "SolverInfo",
+    "ForcedResponse", "Groups", "InvalidInput", "Knob", "Line", "LineSegment", "Mode", "ModeComparison", "Modes",
+    "ModeShapes", "ParseError", "PointAttachment", "Problem", "Request", "ResolutionComparison", "Result", "Scene", "SolverInfo",
     "SolverResult", "Statics", "Summary", "check", "dimensionless_groups", "load_scene", "load_scenes",
     "run_solver", "solve", "solve_statics", "solve_sweep", "solvers",
 ]

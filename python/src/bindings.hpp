@@ -17,6 +17,7 @@ namespace catena::python {
 namespace py = pybind11;
 
 void bind_errors(py::module_& module);
+void bind_line(py::module_& module);
 void bind_model(py::module_& module);
 void bind_statics(py::module_& module);
 void bind_results(py::module_& module);

@@ -7,6 +7,7 @@
 #include "bindings.hpp"
 #include "catena/core/error.hpp"
 #include "catena/models/cable.hpp"
+#include "catena/models/line.hpp"
 #include "catena/solvers/solve_request.hpp"
 #include "catena/statics/problem_builders.hpp"
 
@@ -60,13 +61,33 @@ Problem make_problem(const CableProperties& cable, const Point& b_m, const Point
   return problem;
 }
 
+Problem make_line_problem(const Line& line, const Point& b_m, const Point& a_m) {
+  Problem problem;
+  problem.line = line;
+  problem.supports.a_m = to_vec2(a_m);
+  problem.supports.b_m = to_vec2(b_m);
+  problem.validate();
+  return problem;
+}
+
 void bind_problem(py::module_& module) {
   py::class_<Problem>(module, "Problem",
                       "A cable between two fixed supports a and b in one vertical plane (x horizontal, "
                       "z up) [m]: the input of solve_statics and of every solver.")
       .def(py::init(&make_problem), py::arg("cable"), py::kw_only(), py::arg("b_m"),
            py::arg("a_m") = Point{0.0, 0.0})
-      .def_readwrite("cable", &Problem::cable)
+      .def_static("from_line", &make_line_problem, py::arg("line"), py::kw_only(), py::arg("b_m"),
+                  py::arg("a_m") = Point{0.0, 0.0},
+                  "A general line (catena.Line) between supports a and b [m] (docs/physics.md, \"General lines\").")
+      .def_readwrite("cable", &Problem::cable, "the uniform cable (unused when the problem is a general line)")
+      .def_property_readonly(
+          "line", [](const Problem& p) -> std::optional<Line> {
+            if (p.is_uniform()) return std::nullopt;
+            return p.line;
+          },
+          "the general line (a copy), or None for a uniform cable")
+      .def_property_readonly("is_uniform", &Problem::is_uniform, "True for a uniform cable, False for a general line")
+      .def_property_readonly("length_m", &Problem::length_m, "total unstretched length [m]")
       .def_property(
           "a_m", [](const Problem& p) { return to_point(p.supports.a_m); },
           [](Problem& p, const Point& a) { p.supports.a_m = to_vec2(a); }, "support a (x, z) [m]")
@@ -91,8 +112,9 @@ void bind_problem(py::module_& module) {
                   "Gale's inextensible catenary from height/span and sag parameter (docs/physics.md).")
       .def("validate", &Problem::validate, "Raises catena.InvalidInput naming the bad field.")
       .def("__repr__", [](const Problem& p) {
-        return fmt::format("Problem(form='{}', L={} m, a=({}, {}) m, b=({}, {}) m)", to_string(p.form),
-                           p.cable.length_m, p.supports.a_m.x(), p.supports.a_m.y(), p.supports.b_m.x(),
+        return fmt::format("Problem(form='{}'{}, L={} m, a=({}, {}) m, b=({}, {}) m)", to_string(p.form),
+                           p.is_uniform() ? "" : fmt::format(", line of {} segments", p.line.segments.size()),
+                           p.length_m(), p.supports.a_m.x(), p.supports.a_m.y(), p.supports.b_m.x(),
                            p.supports.b_m.y());
       });
 }

@@ -34,6 +34,7 @@ PYBIND11_MODULE(_catena, module) {
   module.doc() = "Catena's library: linear cable dynamics by five independent solvers (docs/python.md).";
   module.attr("__version__") = catena::version();
   bind_errors(module);
+  bind_line(module);
   bind_model(module);
   bind_statics(module);
   bind_results(module);

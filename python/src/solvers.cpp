@@ -2,6 +2,8 @@
 // run on its own with its knobs through catena::run_solver, the same driver the CLI uses.
 #include <pybind11/stl.h>
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include <climits>
@@ -9,6 +11,7 @@
 
 #include "bindings.hpp"
 #include "catena/core/error.hpp"
+#include "catena/models/line.hpp"
 #include "catena/solvers/solver_registry.hpp"
 
 namespace catena::python {
@@ -57,13 +60,30 @@ const SolverEntry& solver_named(const std::string& name) {
   throw InvalidInput(fmt::format("solver \"{}\": unknown solver (known: {})", name, known));
 }
 
-// Given statics must belong to the problem's cable and be usable for dynamics.
+bool same_segment(const LineSegment& a, const LineSegment& b) {
+  return a.length_m == b.length_m && a.weight_n_per_m == b.weight_n_per_m &&
+         a.axial_stiffness_n == b.axial_stiffness_n && a.mass_kg_per_m == b.mass_kg_per_m &&
+         a.added_mass_kg_per_m == b.added_mass_kg_per_m;
+}
+
+bool same_point(const PointAttachment& a, const PointAttachment& b) {
+  return a.s_m == b.s_m && a.mass_kg == b.mass_kg && a.weight_n == b.weight_n &&
+         a.tangential_added_mass_kg() == b.tangential_added_mass_kg() &&
+         a.normal_added_mass_kg() == b.normal_added_mass_kg() &&
+         a.outofplane_added_mass_kg() == b.outofplane_added_mass_kg();
+}
+
+// The line the statics was solved for is the problem's (a uniform cable is a one-segment line).
+bool same_line(const Line& a, const Line& b) {
+  return std::equal(a.segments.begin(), a.segments.end(), b.segments.begin(), b.segments.end(), same_segment) &&
+         std::equal(a.points.begin(), a.points.end(), b.points.begin(), b.points.end(), same_point);
+}
+
+// Given statics must belong to the problem's cable (or line) and be usable for dynamics.
 void check_given_statics(const Problem& problem, const StaticSolution& statics) {
-  const CableProperties& a = problem.cable;
-  const CableProperties& b = statics.cable();
-  if (a.length_m != b.length_m || a.weight_n_per_m != b.weight_n_per_m || a.axial_stiffness_n != b.axial_stiffness_n ||
-      a.mass_kg_per_m != b.mass_kg_per_m || a.added_mass_kg_per_m != b.added_mass_kg_per_m) {
-    throw InvalidInput("statics: solved for another cable than problem.cable (use catena.solve_statics(problem))");
+  if (problem.is_uniform() == statics.is_line() || !same_line(problem.as_line(), statics.line())) {
+    throw InvalidInput(fmt::format("statics: solved for another {} than problem.{} (use catena.solve_statics(problem))",
+                                   problem.is_uniform() ? "cable" : "line", problem.is_uniform() ? "cable" : "line"));
   }
   if (!statics.converged) throw InvalidInput("statics: did not converge (" + statics.message + ")");
 }

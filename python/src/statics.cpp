@@ -48,7 +48,7 @@ void bind_static_solution(py::module_& module) {
   py::class_<S>(module, "Statics",
                 "The static equilibrium (elastic catenary): end forces and closed forms at any unstretched "
                 "arc length s [m] in [0, L]. Functions of s accept a number or an array.")
-      .def_property_readonly("horizontal_force_n", &S::horizontal_force_n, "H, constant along the cable [N]")
+      .def_property_readonly("horizontal_force_n", &S::horizontal_force_n, "H, constant along the cable or line [N]")
       .def_property_readonly("vertical_force_a_n", &S::vertical_force_a_n, "V_A at support a [N]")
       .def_property_readonly("vertical_force_b_n",
                              [](const S& s) { return s.vertical_force_n(s.cable().length_m); }, "V(L) [N]")
@@ -62,7 +62,13 @@ void bind_static_solution(py::module_& module) {
       .def_readonly("closure_error_m", &S::closure_error_m, "|r(L) - (b - a)| at the solution [m]")
       .def_readonly("converged", &S::converged, "False when Newton did not close the chord (see message)")
       .def_readonly("message", &S::message, "why it stopped when not converged")
-      .def_property_readonly("cable", &S::cable)
+      .def_property_readonly("cable", &S::cable, "the uniform cable (for a general line only length_m, the total)")
+      .def_property_readonly("is_line", &S::is_line, "True when solved for a general line")
+      .def_property_readonly("line", &S::line, "the line (one segment for a uniform cable)")
+      .def_property_readonly("lowest_point_s_m", &S::lowest_point_s_m, "arc length of the lowest point [m]")
+      .def("vertical_force_n", [](const S& st, py::array_t<double, py::array::forcecast> s) {
+             return at_stations(s, [&](double x) { return st.vertical_force_n(x); }); },
+           py::arg("s_m"), "V(s) [N]; at a point attachment, the value on the side of b")
       .def("tension_n", [](const S& st, py::array_t<double, py::array::forcecast> s) {
              return at_stations(s, [&](double x) { return st.tension_n(x); }); },
            py::arg("s_m"), "T(s) [N]")
