@@ -11,6 +11,7 @@
 #include "catena/core/error.hpp"
 #include "catena/core/version.hpp"
 #include "catena/io/file_access.hpp"
+#include "io/internal/check_table.hpp"
 #include "io/internal/json_records.hpp"
 #include "io/internal/results_keys.hpp"
 
@@ -268,12 +269,18 @@ class ReasonList {
   std::vector<std::string> reasons_;
 };
 
+// A PASS check's detail only repeats numbers the file has (its values, measured and tolerance, the
+// solvers' estimates and summaries): it is left out. Any other verdict keeps its reason.
+std::string written_detail(const CheckResult& check) {
+  return check.verdict == Verdict::Pass ? std::string() : check.detail;
+}
+
 json check_json(const CheckResult& check, ReasonList& reasons) {
   return {{key::check, check.check},   {key::compare, check.compare},   {key::plane, check.plane},
           {key::mode, check.mode},     {key::value_a, number(check.value_a)},
           {key::value_b, number(check.value_b)}, {key::measured, number(check.measured)},
           {key::tolerance, number(check.tolerance)}, {key::verdict, to_string(check.verdict)},
-          {key::detail, check.detail}, {key::tolerance_reason, reasons.index_of(check.tolerance_reason)}};
+          {key::detail, written_detail(check)}, {key::tolerance_reason, reasons.index_of(check.tolerance_reason)}};
 }
 
 json scene_json(const SceneResult& result, ReasonList& reasons) {
@@ -305,7 +312,7 @@ json scene_json(const SceneResult& result, ReasonList& reasons) {
   out[key::published] = published;
   json checks = json::array();
   for (const auto& check : result.checks) checks.push_back(check_json(check, reasons));
-  out[key::checks] = checks;
+  out[key::checks] = internal::check_table(checks);
   return out;
 }
 

@@ -1,12 +1,16 @@
 // report.json keeps the fields along the cable (mode shapes, forced response curves, the static
-// profile) only when the scene asks for shapes; one record per line; tolerance reasons listed once.
+// profile) only when the scene asks for shapes; one record per line; tolerance reasons listed once;
+// the checks as one table per scene.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include <nlohmann/json.hpp>
 
 #include "catena/io/json_writer.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/io/tolerance_reader.hpp"
+#include "io/internal/check_table.hpp"
 
 namespace catena {
 namespace {
@@ -57,15 +61,40 @@ TEST(JsonLayout, OneCheckPerLineAndEachToleranceReasonOnce) {
   }
   int with_reason = 0;
   for (const auto& scene : document["scenes"]) {
-    for (const auto& check : scene["checks"]) {
-      if (check["tolerance_reason"].is_null()) continue;
-      ++with_reason;
-      EXPECT_LT(check["tolerance_reason"].get<std::size_t>(), reasons.size());
+    const json& fields = scene["checks"]["fields"];
+    const auto reason_at = std::find(fields.begin(), fields.end(), "tolerance_reason") - fields.begin();
+    ASSERT_LT(static_cast<std::size_t>(reason_at), fields.size());
+    for (const auto& row : scene["checks"]["rows"]) {
+      ASSERT_EQ(row.size(), fields.size());
       // The whole check is on one line of the text.
-      EXPECT_NE(text.find(check.dump()), std::string::npos) << check.dump();
+      EXPECT_NE(text.find(row.dump()), std::string::npos) << row.dump();
+      if (row[reason_at].is_null()) continue;
+      ++with_reason;
+      EXPECT_LT(row[reason_at].get<std::size_t>(), reasons.size());
     }
   }
   EXPECT_GT(with_reason, 2 * static_cast<int>(reasons.size()) - 1);
+}
+
+// The check table reads back as the records the report works on; a PASS keeps no detail (its
+// numbers are in the record), any other verdict keeps its reason.
+TEST(JsonLayout, CheckTableExpandsToRecords) {
+  const SceneResult result = solved(false);
+  json document = json::parse(results_to_json({result}));
+  internal::expand_check_tables(document);
+  const json& records = document["scenes"][0]["checks"];
+  ASSERT_EQ(records.size(), result.checks.size());
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const CheckResult& check = result.checks[i];
+    EXPECT_EQ(records[i]["check"], check.check);
+    EXPECT_EQ(records[i]["compare"], check.compare);
+    EXPECT_EQ(records[i]["mode"], check.mode);
+    EXPECT_EQ(records[i]["verdict"], to_string(check.verdict));
+    EXPECT_EQ(records[i]["detail"], check.verdict == Verdict::Pass ? std::string() : check.detail);
+  }
+  json again = document;
+  internal::expand_check_tables(again);  // records stay records
+  EXPECT_EQ(again, document);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/file_access.hpp"
+#include "io/internal/check_table.hpp"
 #include "io/internal/data_dir.hpp"
 #include "io/report/figures.hpp"
 #include "io/report/sections.hpp"
@@ -20,6 +21,11 @@ json read_results(const std::filesystem::path& results_json) {
   json document = json::parse(read_input_file(results_json, "results JSON", kMaxResultsBytes), nullptr, false);
   if (document.is_discarded() || !document.contains(internal::key::scenes)) {
     throw ParseError(fmt::format("{}: not a catena results JSON (no \"scenes\")", path_text(results_json)));
+  }
+  try {
+    internal::expand_check_tables(document);  // the report reads checks as records
+  } catch (const nlohmann::json::exception& e) {
+    throw ParseError(fmt::format("{}: malformed check table: {}", path_text(results_json), e.what()));
   }
   return document;
 }
