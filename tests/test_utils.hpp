@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "catena/core/error.hpp"
 #include "catena/models/cable.hpp"
@@ -49,6 +50,30 @@ inline void expect_invalid(const std::function<void()>& action, const std::strin
   } catch (const InvalidInput& error) {
     EXPECT_NE(std::string(error.what()).find(word), std::string::npos) << error.what();
   }
+}
+
+/// The first `count` roots of a continuous `f` on (0, top]: sign changes on a grid of `steps`
+/// intervals, each bisected to rounding. The caller checks the count it got, so a root pair that
+/// the grid cannot separate shows as a missing root, not as a wrong one.
+inline std::vector<double> roots_by_bisection(const std::function<double(double)>& f, double top, int count,
+                                              int steps = 200000) {
+  std::vector<double> out;
+  double a = top / steps, fa = f(a);
+  for (int i = 2; i <= steps && static_cast<int>(out.size()) < count; ++i) {
+    const double b = top * i / steps, fb = f(b);
+    if ((fa < 0.0) != (fb < 0.0)) {
+      double lo = a, hi = b;
+      const bool lo_negative = fa < 0.0;
+      for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        ((f(mid) < 0.0) == lo_negative ? lo : hi) = mid;
+      }
+      out.push_back(0.5 * (lo + hi));
+    }
+    a = b;
+    fa = fb;
+  }
+  return out;
 }
 
 }  // namespace catena::testing

@@ -110,18 +110,6 @@ void mark_failed(Plane plane, const ShootingFailure& failure, SolverSummary& sum
   summary.message = fmt::format("Numerical failure ({}): {}", to_string(plane), failure.what());
 }
 
-// The forced response of a general line is not implemented (the free vibration is).
-ForcedOutcome line_forced_declined() {
-  ForcedOutcome outcome;
-  outcome.summary.termination = Termination::NotApplicable;
-  outcome.summary.message =
-      "Not applicable: shooting's forced response on a general line is not implemented yet (its "
-      "modes are)";
-  outcome.summary.warnings.push_back(
-      "forced response on a general line: not implemented in shooting, not computed");
-  return outcome;
-}
-
 // The numerics of the shooting solver for one problem.
 class ShootingNumerics final : public SolverNumerics {
  public:
@@ -136,7 +124,6 @@ class ShootingNumerics final : public SolverNumerics {
   void describe(SolverSummary& summary) const override;
   ModalResult modes(Plane plane, int count) override;
   ForcedOutcome forced(const ForcedRequest& request) override {
-    if (k_.is_line()) return line_forced_declined();
     WorkMeter meter(context_, "shooting", "forced frequencies", static_cast<long>(request.omegas_rad_s.size()));
     ForcedOutcome outcome = shooting_forced_responses(k_, request, context_.request.stations_m(k_.length_m),
                                                       integrator_settings(options_), &meter);

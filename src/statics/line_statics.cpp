@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <string>
 
 #include "catena/core/error.hpp"
 #include "statics/internal/line_pieces.hpp"
@@ -49,26 +50,28 @@ NewtonRun newton_from(const Line& line, const Vec2& chord, Vec2 start, double to
   return run;
 }
 
+// Sum of |weight| over the segments and points [N]: the force scale of the statics (0: weightless).
+double weight_scale(const Line& line) {
+  double scale = 0.0;
+  for (const LineSegment& segment : line.segments) scale += std::abs(segment.weight_n_per_m) * segment.length_m;
+  for (const PointAttachment& point : line.points) scale += std::abs(point.weight_n);
+  return scale;
+}
+
 // The parabolic start of a uniform cable of the same length, total weight and chord (weights
 // taken by magnitude, so that a buoyant or weightless line gets a sensible tension scale).
 Vec2 equivalent_start(const Line& line, const Vec2& chord) {
   const double L = line.length_m();
   double total_weight = 0.0;
-  double weight_scale = 0.0;
-  for (const LineSegment& segment : line.segments) {
-    total_weight += segment.weight_n_per_m * segment.length_m;
-    weight_scale += std::abs(segment.weight_n_per_m) * segment.length_m;
-  }
-  for (const PointAttachment& point : line.points) {
-    total_weight += point.weight_n;
-    weight_scale += std::abs(point.weight_n);
-  }
-  if (weight_scale == 0.0) weight_scale = 1.0;
+  for (const LineSegment& segment : line.segments) total_weight += segment.weight_n_per_m * segment.length_m;
+  for (const PointAttachment& point : line.points) total_weight += point.weight_n;
+  const double scale = weight_scale(line);
+  const double force_scale = scale == 0.0 ? 1.0 : scale;
   const double dx = chord.x();
   const double dz = chord.y();
   const double slack_ratio = (L * L - dz * dz) / (dx * dx) - 1.0;
   const double lambda0 = slack_ratio > 0.0 ? std::sqrt(3.0 * slack_ratio) : 0.2;
-  const double H = weight_scale * dx / (2.0 * L * std::max(lambda0, 1e-6));
+  const double H = force_scale * dx / (2.0 * L * std::max(lambda0, 1e-6));
   return {H, H * dz / dx - 0.5 * total_weight};
 }
 
@@ -88,6 +91,31 @@ void check_reachable(const Problem& problem) {
         "total length {:.10g} m of an inextensible line",
         d, line.length_m() < d ? "longer than" : "equal to", line.length_m()));
   }
+  // Without weight the line is a straight bar, in tension only when stretched (docs/physics.md,
+  // "General lines": the equilibrium in tension and when it does not exist).
+  if (weight_scale(line) == 0.0 && line.length_m() >= d) {
+    throw InvalidInput(fmt::format(
+        "Invalid line.segments[].weight: every segment and point of the line is weightless, so it is in "
+        "tension only when stretched, but the chord |b - a| = {:.10g} m does not exceed its length {:.10g} m: "
+        "the line would be slack (no equilibrium in tension); give it weight or move the ends apart",
+        d, line.length_m()));
+  }
+}
+
+// Why a run did not close: H collapsing towards 0 means part of the line would be slack (the
+// equilibrium in tension does not exist, docs/physics.md); otherwise Newton failed to find it.
+std::string closure_failure(const Line& line, const NewtonRun& best, double tolerance, int iterations) {
+  const std::string where = fmt::format("closure error {:.3e} m > {:.3e} m after {} Newton iterations from 7 starts "
+                                        "(H = {:.6g} N, V_A = {:.6g} N)",
+                                        best.closure, tolerance, iterations, best.forces.x(), best.forces.y());
+  if (best.forces.x() <= 1e-8 * weight_scale(line)) {
+    return fmt::format(
+        "No static equilibrium in tension: {}: H fell towards 0, so part of the line would be slack between "
+        "these ends (a weightless stretch whose vertical force vanishes, shorter than the room it has); move "
+        "the ends apart or change the weights",
+        where);
+  }
+  return fmt::format("Statics of the line did not converge (a numerical failure): {}", where);
 }
 
 }  // namespace
@@ -118,10 +146,7 @@ StaticSolution solve_line_statics(const Problem& problem, const StaticsOptions& 
   solution.closure_error_m = (solution.offset_m(line.length_m()) - chord).norm();
   if (!(best.closure <= accepted) || !best.forces.allFinite()) {
     solution.converged = false;
-    solution.message = fmt::format(
-        "Statics of the line did not converge: closure error {:.3e} m > {:.3e} m after {} Newton iterations from "
-        "7 starts (H = {:.6g} N, V_A = {:.6g} N); the line may have no equilibrium between these ends",
-        best.closure, tolerance, iterations, best.forces.x(), best.forces.y());
+    solution.message = closure_failure(line, best, tolerance, iterations);
   }
   return solution;
 }

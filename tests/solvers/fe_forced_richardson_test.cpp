@@ -27,8 +27,8 @@ TEST(FeForcedRichardson, CubicInterpolationIsExactForCubicsInsideAndPastTheEnds)
 // (displacement) and midpoints (tension).
 internal::FeResponseField synthetic(int elements, double length) {
   internal::FeResponseField field;
-  field.element_length_m = length / elements;
-  const double h = field.element_length_m;
+  const double h = length / elements;
+  field.pieces = {{0, elements, 0.0, h}};
   auto f = [](double s) { return std::sin(2.0 * s); };
   auto g = [](double s) { return 5.0 * std::cos(3.0 * s); };
   for (int i = 0; i <= elements; ++i) {
@@ -81,6 +81,50 @@ TEST(FeForcedRichardson, TheSecondOrderErrorCancelsOnCoincidingPoints) {
 
 TEST(FeForcedRichardson, RefusesMeshesThatAreNotOneHalvingApart) {
   EXPECT_THROW(internal::richardson_field(synthetic(100, 1.0), synthetic(150, 1.0)), std::logic_error);
+}
+
+// Two pieces of a line, [0, 0.8] with n elements and [0.8, 2] with 3n, and a field whose slope jumps
+// at 0.8 (as a line's response does at a joint or point): the extrapolation and the sampling stay
+// within each piece, so the cancellation holds up to the break; across it, interpolation would
+// leave an O(h) error near s = 0.8.
+double kinked(double s) { return s < 0.8 ? std::sin(2.0 * s) : std::sin(1.6) + 3.0 * (s - 0.8) * (s - 0.5); }
+double kinked_error(double s) { return s < 0.8 ? 5.0 * std::cos(3.0 * s) : -2.0 * s; }
+
+internal::FeResponseField two_pieces(int n) {
+  internal::FeResponseField field;
+  field.pieces = {{0, n, 0.0, 0.8 / n}, {n, 3 * n, 0.8, 1.2 / (3 * n)}};
+  for (const internal::FeFieldPiece& piece : field.pieces) {
+    const double h = piece.element_length_m;
+    for (int k = piece.first_element == 0 ? 0 : 1; k <= piece.elements; ++k) {
+      const double s = piece.start_m + k * h;
+      field.nodes.emplace_back(kinked(s) + h * h * kinked_error(s), 0.0);
+    }
+  }
+  field.tension.resize(4 * n);
+  for (const internal::FeFieldPiece& piece : field.pieces) {
+    const double h = piece.element_length_m;
+    for (int k = 0; k < piece.elements; ++k) {
+      const double s = piece.start_m + (k + 0.5) * h;
+      field.tension[piece.first_element + k] = kinked(s) + h * h * kinked_error(s);
+    }
+  }
+  return field;
+}
+
+double two_piece_error(int n) {
+  const internal::FeResponseField extrapolated = internal::richardson_field(two_pieces(n), two_pieces(2 * n));
+  const Vector stations = Vector::LinSpaced(41, 0.0, 2.0);  // 0.8 is a station
+  const StaticSolution unused;
+  const internal::FeSampled result = internal::sample_field(Plane::OutOfPlane, extrapolated, stations, unused);
+  double error = 0.0;
+  for (Index p = 0; p < stations.size(); ++p) error = std::max(error, std::abs(result.v[p] - kinked(stations[p])));
+  return error;
+}
+
+TEST(FeForcedRichardson, PiecesOfUnequalElementsExtrapolateWithinEachPiece) {
+  const double coarse = two_piece_error(20), fine = two_piece_error(40);
+  EXPECT_LT(coarse, 1e-6);
+  EXPECT_GT(coarse / fine, 10.0) << coarse << " then " << fine;  // O(h^4): 16 per halving
 }
 
 }  // namespace

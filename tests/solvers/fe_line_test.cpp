@@ -181,6 +181,34 @@ TEST(FeLine, ForcedResponseOfASplitLineEqualsTheCables) {
   }
 }
 
+// A sagging line with a heavy point weight at s = 20 m: the static line has a kink there. Pieces of
+// 20, 20 and 60 m take N = 50, 100, 200 elements exactly in proportion, so the three meshes are
+// nested and the unextrapolated frequencies show the chain's order of convergence. It must be 2 in
+// both planes; with the kink node's distributed mass lumped in the bisector frame (m along the
+// bisector, M across it, although the two half elements meet at an O(1) angle) the in-plane order
+// fell towards 1, and Richardson left an O(h) error (docs/methods/fe.md, "Lines").
+TEST(FeLine, KinkAtAPointWeightKeepsSecondOrderInPlane) {
+  Problem p;
+  p.line.segments = {{40.0, 100.0, 1e8, 10.0, 10.0}, {60.0, 150.0, 5e7, 6.0, 4.0}};
+  p.line.points = {point(20.0, 500.0, 5000.0)};
+  p.supports.b_m = Vec2(80.0, 30.0);
+  std::vector<Solved> runs;
+  for (int elements : {50, 100, 200})
+    runs.push_back(solve(p, modes_request(4, 4), {.elements = elements, .richardson = false}));
+  for (const Solved& run : runs)
+    ASSERT_EQ(run.output.summary.termination, Termination::Converged) << run.output.summary.full_report();
+  for (const auto plane : {&SolverOutput::inplane, &SolverOutput::outofplane}) {
+    for (std::size_t i = 0; i < 4; ++i) {
+      const double w1 = (runs[0].output.*plane)->modes[i].omega_rad_s;
+      const double w2 = (runs[1].output.*plane)->modes[i].omega_rad_s;
+      const double w3 = (runs[2].output.*plane)->modes[i].omega_rad_s;
+      const double order = std::log2((w1 - w2) / (w2 - w3));
+      EXPECT_NEAR(order, 2.0, 0.02) << (plane == &SolverOutput::inplane ? "in plane" : "out of plane") << " mode "
+                                    << i + 1;
+    }
+  }
+}
+
 TEST(FeLine, MeshHasNodesAtJointsAndPointsAndDoublesEveryPieceBetweenLevels) {
   Problem p;
   p.line.segments = {{250.0, 1400.0, 7.5e8, 160.0, 25.0}, {600.0, 60.0, 2e8, 8.0, 4.0}, {100.0, 1400.0, 7.5e8, 160.0, 25.0}};

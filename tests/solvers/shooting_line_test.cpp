@@ -7,8 +7,8 @@
 //  - a weightless taut line with a heavy point mass P at mid-span: antisymmetric string modes
 //    kL = 2 n pi, symmetric ones cot(kL/2) = k P / (2 M); in plane the same string modes merged
 //    with the axial bar modes of the same form (ka = w sqrt(m/EA)), so the conjugate-point count
-//    stays exact across the jump;
-//  - the forced response of a line is declined with a reason.
+//    stays exact across the jump.
+// The forced response of a line: tests/solvers/line_forced_test.cpp.
 #include <gtest/gtest.h>
 
 #include "test_utils.hpp"
@@ -164,18 +164,6 @@ TEST(ShootingLine, HeavyMidspanMassBothPlanes) {
   std::sort(inplane.begin(), inplane.end());
   inplane.resize(static_cast<std::size_t>(count));
   expect_close(omegas(*solved.output.inplane), inplane, kRelTol);
-}
-
-TEST(ShootingLine, ForcedResponseOfALineIsDeclined) {
-  Problem p = taut_line({{5.0, 0.0, kEA, 1.0, 0.0}, {5.0, 0.0, kEA, 1.0, 0.0}});
-  SolveRequest request = testing::modes_request(2, 0);
-  ForcedRequest forced;
-  forced.omegas_rad_s = {1.0};
-  request.forced = forced;
-  const testing::SolvedProblem solved = testing::solve_problem(solve_shooting, p, request, tight());
-  ASSERT_TRUE(solved.output.inplane.has_value());
-  EXPECT_EQ(solved.output.inplane->modes.size(), 2u);
-  EXPECT_TRUE(solved.output.forced.empty());
 }
 
 }  // namespace

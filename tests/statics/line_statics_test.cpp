@@ -205,6 +205,29 @@ TEST(LineStatics, BadInputNamesTheField) {
     q.supports.b_m = Vec2(900.0, 300.0);
     solve_statics(q);
   }, "too short");
+  expect_invalid([&] {  // weightless and not stretched: slack
+    Problem q;
+    q.line.segments = {{60.0, 0.0, 1e7, 1.0, 0.0}, {50.0, 0.0, 1e7, 1.0, 0.0}};
+    q.supports.b_m = Vec2(90.0, 10.0);
+    solve_statics(q);
+  }, "line.segments[].weight");
+}
+
+// 10 m of chain, 100 m of weightless rope and 10 m of buoyant rope (as heavy as the chain is)
+// between ends 50 m apart: with H > 0 the rope's vertical force would vanish, so it is straight
+// only when taut, and it cannot be taut in 50 m; with H -> 0 the chain hangs, the buoyant part
+// floats and the rope is slack. No equilibrium in tension exists, and the statics say so.
+TEST(LineStatics, SlackWeightlessStretchIsNoEquilibriumInTension) {
+  Problem p;
+  p.line.segments = {{10.0, 10.0, 1e7, 1.0, 0.0}, {100.0, 0.0, 1e7, 1.0, 0.0}, {10.0, -10.0, 1e7, 1.0, 0.0}};
+  p.supports.b_m = Vec2(50.0, 0.0);
+  const StaticSolution statics = solve_statics(p);
+  EXPECT_FALSE(statics.converged);
+  EXPECT_NE(statics.message.find("No static equilibrium in tension"), std::string::npos) << statics.message;
+  EXPECT_NE(statics.message.find("slack"), std::string::npos) << statics.message;
+  // Moved 130 m apart the rope is taut and the same line closes.
+  p.supports.b_m = Vec2(130.0, 0.0);
+  EXPECT_TRUE(solve_statics(p).converged);
 }
 
 }  // namespace

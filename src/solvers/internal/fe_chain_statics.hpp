@@ -41,6 +41,8 @@ struct FeChain {
   /// Per node i = 0..N: unstretched arc length s_i [m] and the inertia of a point attachment there.
   Vector node_s_m;
   std::vector<FeNodeInertia> node_inertia;
+  /// The first element of each piece of the mesh (fe_line_mesh.hpp), in order; {0} for a cable.
+  std::vector<int> piece_first_element;
   /// Support force (H, V_A) of the chain [N].
   double horizontal_force_n = 0.0;
   double vertical_force_a_n = 0.0;

@@ -49,6 +49,17 @@ struct Forcing {
   }
 };
 
+// The chain's pieces of equal elements, where the response is smooth (fe_forced_richardson.hpp).
+std::vector<FeFieldPiece> field_pieces(const FeChain& chain) {
+  std::vector<FeFieldPiece> pieces;
+  const std::vector<int>& first = chain.piece_first_element;
+  for (std::size_t k = 0; k < first.size(); ++k) {
+    const int end = k + 1 < first.size() ? first[k + 1] : chain.elements;
+    pieces.push_back({first[k], end - first[k], chain.node_s_m[first[k]], chain.element_length_m[first[k]]});
+  }
+  return pieces;
+}
+
 double max_abs(const Vector& x) { return x.size() ? x.cwiseAbs().maxCoeff() : 0.0; }
 
 // One mesh's response, extrapolated to kappa = 0 when penalised (2 a - b over its two levels),
@@ -213,15 +224,7 @@ FeLevelResponse respond_on_level(Plane plane,
         omega, chain.elements);
     return out;
   }
-  // The Richardson step and the sampling take equal elements (fe_forced_richardson.hpp): a line
-  // whose pieces have unequal elements is declined for now, a uniform one is as a cable.
-  const Vector& lengths = chain.element_length_m;
-  if (lengths.size() == 0 || lengths.maxCoeff() != lengths.minCoeff()) {
-    out.diagnostic = "fe's forced response on a line with unequal element lengths is not implemented "
-                     "(its Richardson step in h takes equal elements)";
-    return out;
-  }
-  out.field.element_length_m = lengths[0];
+  out.field.pieces = field_pieces(chain);
   out.field.nodes = node_displacements(plane, chain.elements, x, end_a, end_b);
   if (plane == Plane::InPlane) out.field.tension = element_tension(chain, out.field.nodes);
   out.ok = true;

@@ -39,20 +39,22 @@ std::vector<double> component(const std::vector<Vec2>& nodes, int c) {
   return out;
 }
 
-std::vector<double> as_std(const Vector& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
-
 double max_abs_difference(const Vector& a, const Vector& b) {
   return (a.size() && a.size() == b.size()) ? (a - b).cwiseAbs().maxCoeff() : 0.0;
 }
 
 }  // namespace
 
-double cubic_interpolate(const std::vector<double>& values, double first, double spacing, double x) {
-  if (values.empty()) return 0.0;
-  const Stencil st = stencil_at(values.size(), first, spacing, x);
+double cubic_interpolate(const double* values, std::size_t count, double first, double spacing, double x) {
+  if (count == 0) return 0.0;
+  const Stencil st = stencil_at(count, first, spacing, x);
   double sum = 0.0;
   for (std::size_t i = 0; i < st.count; ++i) sum += st.weight[i] * values[st.first + i];
   return sum;
+}
+
+double cubic_interpolate(const std::vector<double>& values, double first, double spacing, double x) {
+  return cubic_interpolate(values.data(), values.size(), first, spacing, x);
 }
 
 FeResponseField extrapolate_field_in_kappa(const FeResponseField& at_kappa, const FeResponseField& at_2kappa) {
@@ -64,27 +66,44 @@ FeResponseField extrapolate_field_in_kappa(const FeResponseField& at_kappa, cons
 
 FeResponseField richardson_field(const FeResponseField& coarse, const FeResponseField& fine) {
   const std::size_t elements = coarse.nodes.size() - 1;
-  if (fine.nodes.size() != 2 * elements + 1)
-    throw std::logic_error("richardson_field: the fine mesh must have twice the coarse mesh's elements");
+  bool nested = fine.nodes.size() == 2 * elements + 1 && fine.pieces.size() == coarse.pieces.size();
+  for (std::size_t k = 0; nested && k < coarse.pieces.size(); ++k)
+    nested = fine.pieces[k].elements == 2 * coarse.pieces[k].elements;
+  if (!nested)
+    throw std::logic_error("richardson_field: the fine mesh must have twice the coarse mesh's elements in every piece");
   FeResponseField out = coarse;
   for (std::size_t i = 0; i <= elements; ++i) out.nodes[i] = (4.0 * fine.nodes[2 * i] - coarse.nodes[i]) / 3.0;
-  if (coarse.tension.size()) {
-    const std::vector<double> fine_tension = as_std(fine.tension);
-    const double h = fine.element_length_m;
-    for (std::size_t j = 0; j < elements; ++j) {
-      const double s = (static_cast<double>(j) + 0.5) * coarse.element_length_m;
-      out.tension[static_cast<Index>(j)] =
-          (4.0 * cubic_interpolate(fine_tension, 0.5 * h, h, s) - coarse.tension[static_cast<Index>(j)]) / 3.0;
+  if (coarse.tension.size() == 0) return out;
+  for (std::size_t k = 0; k < coarse.pieces.size(); ++k) {
+    // The fine tensions of the same piece, at their midpoints, brought to the coarse midpoints.
+    const FeFieldPiece& c = coarse.pieces[k];
+    const FeFieldPiece& f = fine.pieces[k];
+    const double* fine_tension = fine.tension.data() + f.first_element;
+    const double h = f.element_length_m;
+    for (int jj = 0; jj < c.elements; ++jj) {
+      const Index j = c.first_element + jj;
+      const double s = c.start_m + (static_cast<double>(jj) + 0.5) * c.element_length_m;
+      const double at_s = cubic_interpolate(fine_tension, static_cast<std::size_t>(f.elements), f.start_m + 0.5 * h, h, s);
+      out.tension[j] = (4.0 * at_s - coarse.tension[j]) / 3.0;
     }
   }
   return out;
 }
 
+namespace {
+
+// The piece of `pieces` that holds s: the last one starting at or before it.
+const FeFieldPiece& piece_at(const std::vector<FeFieldPiece>& pieces, double s) {
+  const auto after = std::upper_bound(pieces.begin() + 1, pieces.end(), s,
+                                      [](double x, const FeFieldPiece& piece) { return x < piece.start_m; });
+  return *(after - 1);
+}
+
+}  // namespace
+
 FeSampled sample_field(Plane plane, const FeResponseField& field, const Vector& stations,
                        const StaticSolution& statics) {
-  const double h = field.element_length_m;
   const std::vector<double> x = component(field.nodes, 0), z = component(field.nodes, 1);
-  const std::vector<double> tension = as_std(field.tension);
   const Index points = stations.size();
   FeSampled out;
   if (plane == Plane::InPlane) {
@@ -96,11 +115,17 @@ FeSampled sample_field(Plane plane, const FeResponseField& field, const Vector& 
   out.tension = Vector::Zero(points);
   for (Index p = 0; p < points; ++p) {
     const double s = stations[p];
-    const Vec2 d(cubic_interpolate(x, 0.0, h, s), cubic_interpolate(z, 0.0, h, s));
+    const FeFieldPiece& piece = piece_at(field.pieces, s);
+    const double h = piece.element_length_m, start = piece.start_m;
+    const auto first = static_cast<std::size_t>(piece.first_element);
+    const auto nodes = static_cast<std::size_t>(piece.elements) + 1;
+    const Vec2 d(cubic_interpolate(x.data() + first, nodes, start, h, s),
+                 cubic_interpolate(z.data() + first, nodes, start, h, s));
     if (plane == Plane::InPlane) {
       out.u[p] = d.dot(statics.tangent(s));
       out.w[p] = d.dot(statics.normal(s));
-      if (!tension.empty()) out.tension[p] = cubic_interpolate(tension, 0.5 * h, h, s);
+      if (field.tension.size())
+        out.tension[p] = cubic_interpolate(field.tension.data() + first, nodes - 1, start + 0.5 * h, h, s);
     } else {
       out.v[p] = d.x();
     }

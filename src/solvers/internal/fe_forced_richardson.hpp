@@ -19,10 +19,21 @@
 
 namespace catena::internal {
 
+/// A stretch of the mesh with equal elements (a piece of a line, fe_line_mesh.hpp; the whole of a
+/// uniform cable): elements first_element .. first_element + elements - 1, node k of the piece at
+/// s = start_m + k element_length_m (unstretched). The response is smooth only within a piece (its
+/// slope and, at a point, its tension jump at the piece ends), so interpolation stays inside one.
+struct FeFieldPiece {
+  int first_element = 0;
+  int elements = 0;
+  double start_m = 0.0;
+  double element_length_m = 0.0;
+};
+
 /// One mesh's forced response before sampling: the displacement of every node (ends included;
 /// in plane (x, z), out of plane (v, 0)) and, in plane, every element's dynamic tension.
 struct FeResponseField {
-  double element_length_m = 0.0;  // unstretched: node i at s = i l0, midpoint j at (j + 1/2) l0
+  std::vector<FeFieldPiece> pieces;  // in order from A; one for a uniform cable
   std::vector<Vec2> nodes;
   Vector tension;  // empty out of plane
 };
@@ -31,12 +42,14 @@ struct FeResponseField {
 /// through the 4 nearest points (fewer when there are fewer; extrapolating past the ends by the
 /// same polynomial). Exact for cubics.
 double cubic_interpolate(const std::vector<double>& values, double first, double spacing, double x);
+/// The same on `count` values starting at `values`.
+double cubic_interpolate(const double* values, std::size_t count, double first, double spacing, double x);
 
 /// Linear extrapolation to kappa = 0 of the fields at kappa (`at_kappa`) and 2 kappa: 2a - b.
 FeResponseField extrapolate_field_in_kappa(const FeResponseField& at_kappa, const FeResponseField& at_2kappa);
 
 /// Richardson in h for order 2 and mesh ratio 2, (4 fine - coarse) / 3, on the coarse mesh's nodes
-/// and element midpoints. `fine` must have exactly twice the coarse mesh's elements.
+/// and element midpoints. `fine` must have the same pieces with exactly twice the elements each.
 FeResponseField richardson_field(const FeResponseField& coarse, const FeResponseField& fine);
 
 /// The field on the stations, by cubic interpolation: displacements projected on the continuous

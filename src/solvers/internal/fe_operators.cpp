@@ -69,6 +69,20 @@ double half_sum(const FeChain& chain, const Vector& density, int i) {
   return 0.5 * (chain.element_length_m[i - 1] * density[i - 1] + chain.element_length_m[i] * density[i]);
 }
 
+bool has_point(const FeChain& chain, int i) {
+  const FeNodeInertia& point = chain.node_inertia[static_cast<std::size_t>(i)];
+  return point.tangential_kg > 0.0 || point.normal_kg > 0.0 || point.outofplane_kg > 0.0;
+}
+
+// In-plane lumped mass of half of element j on one of its nodes, in the element's own frame
+// (m along t_j, M across it) [kg].
+Eigen::Matrix2d half_element_mass(const FeChain& chain, int j) {
+  const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
+  const Eigen::Matrix2d ttT = t * t.transpose();
+  const double M = chain.normal_mass_kg_per_m[j];
+  return 0.5 * chain.element_length_m[j] * (chain.mass_kg_per_m[j] * ttT + M * (Eigen::Matrix2d::Identity() - ttT));
+}
+
 }  // namespace
 
 FeMatrices assemble_inplane(const FeChain& chain) {
@@ -90,14 +104,17 @@ FeMatrices assemble_inplane(const FeChain& chain) {
                        .normalized();
     const Vec2 nrm(-t.y(), t.x());
     const Eigen::Matrix2d ttT = t * t.transpose(), nnT = nrm * nrm.transpose();
-    if (same_section(chain, i)) {
+    if (same_section(chain, i) && !has_point(chain, i)) {
       // The uniform cable's expression, kept term for term so its results stay bit-identical.
       node[static_cast<std::size_t>(i)] =
           chain.element_length_m[i] * (chain.mass_kg_per_m[i] * t * t.transpose() +
                                        chain.normal_mass_kg_per_m[i] * nrm * nrm.transpose());
     } else {
-      node[static_cast<std::size_t>(i)] = half_sum(chain, chain.mass_kg_per_m, i) * ttT +
-                                          half_sum(chain, chain.normal_mass_kg_per_m, i) * nnT;
+      // A joint or a point: each half element keeps its own frame. At a point weight the static
+      // line has a kink (an O(1) angle between the elements); lumped in the bisector frame, the
+      // half elements' masses would be off by O(1) on one node, an O(h) error in every frequency
+      // that Richardson's h^2 model cannot remove (docs/methods/fe.md, "Lines").
+      node[static_cast<std::size_t>(i)] = half_element_mass(chain, i - 1) + half_element_mass(chain, i);
     }
     const FeNodeInertia& point = chain.node_inertia[static_cast<std::size_t>(i)];
     if (point.tangential_kg > 0.0 || point.normal_kg > 0.0)

@@ -349,7 +349,7 @@ struct ShootingIntegrator::Impl {
   template <int D>
   void integrate(Shot& shot, StationRecorder<D>& recorder, bool from_b);
   template <int D>
-  void record_passed_stations(StationRecorder<D>& recorder, double x);
+  void record_passed_stations(StationRecorder<D>& recorder, double x, bool before_x_only = false);
   template <int D>
   void restart(Shot& shot, double x, StepCounts& finished);
   template <int D>
@@ -409,8 +409,8 @@ void ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor,
 
 // Stations passed by the last step (ending at x), from CVODE's interpolant.
 template <int D>
-void ShootingIntegrator::Impl::record_passed_stations(StationRecorder<D>& recorder, double x) {
-  while (recorder.next_at_or_before(x)) {
+void ShootingIntegrator::Impl::record_passed_stations(StationRecorder<D>& recorder, double x, bool before_x_only) {
+  while (recorder.next_at_or_before(x) && !(before_x_only && recorder.next_station() >= x)) {
     const double xs = recorder.next_station();
     if (xs >= x) {
       recorder.record(Eigen::Map<const Basis<D>>(y.data()));
@@ -471,9 +471,13 @@ void ShootingIntegrator::Impl::integrate(Shot& shot, StationRecorder<D>& recorde
       throw ShootingFailure(fmt::format("more than {} CVODE steps (max_steps) at s/L = {:.6g}",
                                         settings.max_steps, from_b ? 1.0 - x : x));
     }
-    record_passed_stations(recorder, x);
+    // A station on a break gets the state on its b side, where the coefficients' tangent and
+    // force are taken (ShootingCoefficients::piece_at): shot from a, it is recorded after the
+    // point's jump, from the next step's interpolant.
+    const bool at_break = next_break < breaks.size() && x >= breaks[next_break].x;
+    record_passed_stations(recorder, x, at_break && !from_b);
     if (x >= 1.0) break;
-    if (next_break < breaks.size() && x >= breaks[next_break].x) cross_break<D>(x, finished);
+    if (at_break) cross_break<D>(x, finished);
     if (needs_restart<D>(Y, settings.max_condition)) restart<D>(shot, x, finished);
   }
   add_segment_counts(finished);
