@@ -158,6 +158,21 @@ TEST(Checks, IdenticalShapesPassMacAndOrthogonalModesPassOrthogonality) {
   EXPECT_EQ(verdict_of(run_checks(r), "mac", 1), Verdict::Fail);
 }
 
+// On a general line the stations do not resolve the joints and points the M-inner product needs:
+// orthogonality is SKIP with that reason, never a PASS or FAIL it cannot back.
+TEST(Checks, OrthogonalityOnAGeneralLineIsSkippedWithTheReason) {
+  SceneResult r = gale_result();
+  r.scene.problem.line = r.scene.problem.as_line();
+  r.scene.problem.line.segments.push_back(r.scene.problem.line.segments.front());
+  ASSERT_FALSE(r.scene.problem.is_uniform());
+  r.outputs = {output_with("fe", {1.0, 2.0, 3.0}, 1e-9, true)};
+  const auto checks = run_checks(r);
+  const CheckResult* check = find(checks, "orthogonality", 0);
+  ASSERT_NE(check, nullptr);
+  EXPECT_EQ(check->verdict, Verdict::Skipped);
+  EXPECT_NE(check->detail.find("general line"), std::string::npos) << check->detail;
+}
+
 // A solver output with one forced response: finite max |tau| (with its estimate), or none with a
 // diagnostic.
 SolverOutput forced_output(const std::string& solver, double max_tension, double estimate) {
