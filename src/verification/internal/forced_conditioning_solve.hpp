@@ -6,7 +6,8 @@
 /// run converged), taken from its output when it already holds the forced plane's modes up to
 /// above the highest forcing frequency, otherwise solved for them (the scene's request without the
 /// forcing, the forced plane's modes only, doubling their number from 8 up to 64 until the top one
-/// lies 5% above the highest forcing frequency, within 10 s per scene).
+/// lies 5% above the highest forcing frequency, within 10 s per scene; solves the doubling would
+/// discard are skipped where the modes' growth predicts them too low, the list kept is the same).
 
 #include "catena/verification/forced_conditioning.hpp"
 #include "catena/verification/scene_runner.hpp"
