@@ -51,7 +51,7 @@ def run_once(catena, scene_text, solver, plane, work):
     subprocess.run([catena, "solve", scene, "--solver", solver, "--json", out, "-q"], check=False)
     result = json.load(open(out))
     summary = result["scenes"][0]["solvers"][solver][plane]["summary"]
-    return summary["wall_time_s"], summary["termination"]
+    return summary["wall_time_s"], summary["termination"], summary.get("operations", -1)
 
 
 def main():
@@ -76,21 +76,24 @@ def main():
         for _ in range(repeats):
             for row in rows:
                 try:
-                    seconds, status = run_once(args.catena, row["text"], row["solver"], row["plane"], work)
+                    seconds, status, operations = run_once(args.catena, row["text"], row["solver"], row["plane"], work)
                 except (KeyError, OSError, ValueError):
-                    seconds, status = float("nan"), "no result"
+                    seconds, status, operations = float("nan"), "no result", -1
                 row["times"].append(seconds)
                 row["status"] = status
+                row["operations"] = operations
     load = os.getloadavg()
     lines = [f"# {time.strftime('%Y-%m-%d %H:%M')}, {os.cpu_count()} hardware threads, load average "
              f"{load[0]:.2f} (1 min) {load[1]:.2f} (5 min) at the end",
              "# the plane's wall_time_s from `catena solve --json` (solver defaults, one plane asked), "
-             f"median of {repeats} fresh processes",
-             f"{'scene':<28} {'solver':<11} {'plane':<11} {'modes':>5} {'ms':>10}  status"]
+             f"median of {repeats} fresh processes; operations: the summary's own work count (shooting: RHS",
+             "# evaluations, fe: eigen-solver operations, frobenius: determinant evaluations, airy: scan evaluations;",
+             "# -1: not counted), independent of the load",
+             f"{'scene':<28} {'solver':<11} {'plane':<11} {'modes':>5} {'ms':>10} {'operations':>11}  status"]
     for row in rows:
         ms = 1e3 * statistics.median(row["times"])
         lines.append(f"{row['scene']:<28} {row['solver']:<11} {row['plane']:<11} {row['modes']:>5} "
-                     f"{ms:>10.3f}  {row['status']}")
+                     f"{ms:>10.3f} {row['operations']:>11}  {row['status']}")
     text = "\n".join(lines) + "\n"
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
     with open(args.out + ".tmp", "w") as f:
