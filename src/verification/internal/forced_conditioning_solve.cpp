@@ -28,14 +28,30 @@ double ForcedConditioning::condition(double omega) const {
 }
 
 namespace internal {
+
+std::size_t doubling_count(const std::vector<double>& omegas, double top) {
+  std::size_t count = kFirstConditioningModes;
+  while (count < omegas.size() && omegas[count - 1] <= top) count *= 2;
+  return std::min(count, omegas.size());
+}
+
+// It only skips solves: the list is cut back to the doubling's count afterwards (doubling_count),
+// so the frequencies kept are those the plain doubling keeps. A Gale C-2 catenary forced up to
+// 105 sqrt(g/a) no longer pays for the 16- and 32-mode solves before its 64-mode one (8% of that
+// scene's CPU time: the 64-mode solve dominates).
+int next_count(int solved, double highest, double top) {
+  const double predicted = highest > 0.0 ? solved * top / highest : 2.0 * solved;
+  int count = 2 * solved;
+  while (count < kMostConditioningModes && count < predicted) count *= 2;
+  return std::min(count, kMostConditioningModes);
+}
+
 namespace {
 
-constexpr int kFirstModeCount = 8;
 constexpr double kAboveForcing = 1.05;
-// The work spent on the condition number is bounded: at most 64 modes, within 10 s per scene
-// (frobenius took 630 s for the 128 modes below 100 sqrt(g/a) on a Gale C-2 catenary). Beyond
-// that the conditioning is unknown and the check keeps its strictest tolerance.
-constexpr int kMostModes = 64;
+// The work spent on the condition number is bounded: at most kMostConditioningModes (64), within
+// 10 s per scene (frobenius took 630 s for the 128 modes below 100 sqrt(g/a) on a Gale C-2
+// catenary). Beyond that the conditioning is unknown and the check keeps its strictest tolerance.
 constexpr double kBudgetSeconds = 10.0;
 
 // The scene's limits, with a deadline no later than the conditioning budget.
@@ -67,31 +83,9 @@ std::vector<double> frequencies(const std::optional<ModalResult>& modal) {
   return out;
 }
 
-// The count the doubling from kFirstModeCount stops at for the modes `omegas` (the first count
-// whose top mode lies above `top`; the largest tried when none does).
-std::size_t doubling_count(const std::vector<double>& omegas, double top) {
-  std::size_t count = kFirstModeCount;
-  while (count < omegas.size() && omegas[count - 1] <= top) count *= 2;
-  return std::min(count, omegas.size());
-}
-
-// The next count to solve for after a list of `solved` modes whose top one, `highest`, lies at
-// or below `top`: the doubling's next count, or a larger power of two when the modes' linear
-// growth (omega_n ~ n, the string's spacing) puts `top` beyond it, up to kMostModes. It only
-// skips solves: the list is cut back to the doubling's count afterwards (doubling_count), so the
-// frequencies kept are those the plain doubling keeps (a 64-mode solve of a Gale C-2 catenary
-// at 105 sqrt(g/a) no longer pays for the 16- and 32-mode solves before it, 40% of that
-// scene's wall time).
-int next_count(int solved, double highest, double top) {
-  const double predicted = highest > 0.0 ? solved * top / highest : 2.0 * solved;
-  int count = 2 * solved;
-  while (count < kMostModes && count < predicted) count *= 2;
-  return std::min(count, kMostModes);
-}
-
-// The forced plane's modes of `solver`, solved for: the lowest kFirstModeCount, then more
+// The forced plane's modes of `solver`, solved for: the lowest kFirstConditioningModes, then more
 // (next_count) until the top one lies above `top`, cut back to the count the doubling from
-// kFirstModeCount would stop at. Empty when the solver gives none (or throws on the request).
+// kFirstConditioningModes would stop at. Empty when the solver gives none (or throws on the request).
 std::vector<double> solve_modes(const SceneResult& result, const std::string& solver, Plane plane, double top,
                                 const RunLimits& limits) {
   const SolverEntry* entry = find_solver(solver);
@@ -103,7 +97,7 @@ std::vector<double> solve_modes(const SceneResult& result, const std::string& so
   const SolverKnobs knobs = result.scene.solvers.count(solver) ? result.scene.solvers.at(solver) : SolverKnobs{};
   std::vector<double> omegas;
   int solved = 0;  // the count behind `omegas`
-  for (int count = kFirstModeCount;;) {
+  for (int count = kFirstConditioningModes;;) {
     request.inplane_modes = plane == Plane::InPlane ? count : 0;
     request.outofplane_modes = plane == Plane::OutOfPlane ? count : 0;
     const SolveContext context{result.scene.problem, *result.statics, *result.groups, request, &limits};
@@ -119,7 +113,7 @@ std::vector<double> solve_modes(const SceneResult& result, const std::string& so
       count = 2 * solved;
       continue;
     }
-    if ((!omegas.empty() && omegas.back() > top) || limits.expired() || count >= kMostModes) break;
+    if ((!omegas.empty() && omegas.back() > top) || limits.expired() || count >= kMostConditioningModes) break;
     count = next_count(count, omegas.empty() ? 0.0 : omegas.back(), top);
   }
   omegas.resize(doubling_count(omegas, top));
