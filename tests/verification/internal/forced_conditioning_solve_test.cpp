@@ -1,4 +1,4 @@
-// The mode counts of the forced conditioning's solve (verification/internal/forced_conditioning_solve.hpp):
+// The mode counts of the forced conditioning's solve (src/verification/internal/forced_conditioning_solve.hpp):
 // skipping counts must not change the list the doubling keeps.
 #include <gtest/gtest.h>
 
