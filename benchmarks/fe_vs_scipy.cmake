@@ -12,3 +12,14 @@ if(CATENA_BUILD_TESTS)
                    --results ${PROJECT_BINARY_DIR}/fe-vs-scipy-tiny/table.txt)
   set_tests_properties(fe_vs_scipy_tiny PROPERTIES TIMEOUT 300)
 endif()
+# The cost of 1, 6 and 20 modes per plane for each solver (issue 17; benchmarks/modes_cost.py),
+# kept working at one mode on one scene (no timing asserted).
+if(CATENA_BUILD_TESTS)
+  find_package(Python3 COMPONENTS Interpreter)
+  if(Python3_Interpreter_FOUND)
+    add_test(NAME modes_cost_tiny
+             COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/modes_cost.py --tiny
+                     --catena $<TARGET_FILE:catena_cli> --out ${PROJECT_BINARY_DIR}/modes-cost-tiny.txt)
+    set_tests_properties(modes_cost_tiny PROPERTIES TIMEOUT 300)
+  endif()
+endif()

@@ -151,5 +151,25 @@ TEST(FrobeniusSeriesTest, AnOrdinaryPointCloseToASingularOneIsNotAResonance) {
   EXPECT_FALSE(is_resonant_index(table, table.q(0, 4.0), 4.0));
 }
 
+TEST(FrobeniusSeriesTest, ValuesAloneEqualTheTrackedValues) {
+  // SeriesErrors::Skipped leaves out the largest terms and the truncation estimate only: the
+  // values are the same sums, bit for bit, and the error fields stay 0.
+  const ShiftTable<long double> table(catenary_ode<long double>(true, 30.0L, 1.0L));
+  bool converged = false;
+  const auto s = adaptive_series(table, 0.5L, 0.8L, 1e-18, 400, converged);
+  ASSERT_TRUE(converged);
+  for (const long double x : {0.05L, 0.1L, 0.45L, 0.79L}) {
+    const auto tracked = evaluate_series(s, x, 3, 0.5L);
+    const auto values = evaluate_series(s, x, 3, 0.5L, SeriesErrors::Skipped);
+    for (std::size_t k = 0; k < 4; ++k) {
+      EXPECT_EQ(values.derivative[k], tracked.derivative[k]) << "x = " << static_cast<double>(x) << ", k = " << k;
+      EXPECT_EQ(values.largest_term[k], 0.0L);
+      EXPECT_EQ(values.truncation[k], 0.0L);
+    }
+    EXPECT_GT(tracked.largest_term[0], 0.0L);
+  }
+  EXPECT_THROW(evaluate_series(s, 0.1L, 4, 0.5L), std::domain_error);
+}
+
 }  // namespace
 }  // namespace catena::internal

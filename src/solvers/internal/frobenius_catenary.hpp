@@ -196,8 +196,10 @@ class CatenaryBasis {
   bool covers() const { return covers_; }
   double exponent(int j) const { return roots_[static_cast<std::size_t>(j)]; }
 
-  /// D^k U_j(sigma), k = 0..max_derivative (<= 3).
-  BasisValues<Real> evaluate(const Real& sigma, int max_derivative) const {
+  /// D^k U_j(sigma), k = 0..max_derivative (<= 3); with `errors` Skipped the error and
+  /// largest_term entries stay 0 (for callers that use the values alone).
+  BasisValues<Real> evaluate(const Real& sigma, int max_derivative,
+                             SeriesErrors errors = SeriesErrors::Tracked) const {
     using std::sqrt;
     BasisValues<Real> out;
     out.size = n_;
@@ -207,9 +209,9 @@ class CatenaryBasis {
     for (std::size_t j = 0; j < static_cast<std::size_t>(n_); ++j) {
       const bool odd = roots_[j] != std::floor(roots_[j]);
       if (k == 0 && odd)
-        odd_near_apex(j, sigma, eta, max_derivative, out);
+        odd_near_apex(j, sigma, eta, max_derivative, errors, out);
       else
-        from_series_in_eta(j, k, odd, sigma, eta, max_derivative, out);
+        from_series_in_eta(j, k, odd, sigma, eta, max_derivative, errors, out);
     }
     return out;
   }
@@ -302,14 +304,13 @@ class CatenaryBasis {
   // An odd (half-integer exponent) basis function near the apex: U = sigma h(eta),
   // h = g(eta) (2+eta)^(-1/2), g = eta^(r-1/2) S(eta) (integer powers), so that the
   // sigma-derivatives have no cancelling eta^(-1/2) terms.
-  void odd_near_apex(std::size_t j, const Real& sigma, const Real& eta, int max_derivative,
+  void odd_near_apex(std::size_t j, const Real& sigma, const Real& eta, int max_derivative, SeriesErrors errors,
                      BasisValues<Real>& out) const {
     using std::abs;
     using std::sqrt;
     const Real eps = std::numeric_limits<Real>::epsilon();
-    FrobeniusSeries<Real> g = singular_series_[j];
-    g.r = g.r - Real(0.5);
-    const auto gv = evaluate_series(g, eta, max_derivative, Real(ratio_[0]));
+    const FrobeniusSeries<Real>& s = singular_series_[j];  // g: its coefficients, exponent r - 1/2
+    const auto gv = evaluate_series(s.a, Real(s.r - Real(0.5)), eta, max_derivative, Real(ratio_[0]), errors);
     for (const auto& x : gv.largest_term) out.largest_term[j] = std::max(out.largest_term[j], x);
     // Derivatives in eta of h by Leibniz's rule with w = (2+eta)^(-1/2).
     std::array<Real, 4> w{}, h{}, he{};
@@ -357,10 +358,10 @@ class CatenaryBasis {
   // Basis function j from expansion k as a series in eta, U_j = F_j(|xi|) (even) or
   // sign(sigma) F_j(|xi|) (odd), converted to sigma-derivatives (D eta = sigma / C).
   void from_series_in_eta(std::size_t j, int k, bool odd, const Real& sigma, const Real& eta, int max_derivative,
-                          BasisValues<Real>& out) const {
+                          SeriesErrors errors, BasisValues<Real>& out) const {
     using std::abs;
     const Real eps = std::numeric_limits<Real>::epsilon();
-    const SeriesValue<Real> v = raw_derivatives(k, static_cast<int>(j), eta, max_derivative);
+    const SeriesValue<Real> v = raw_derivatives(k, static_cast<int>(j), eta, max_derivative, errors);
     std::array<Real, 4> F{}, Fe{};
     for (const auto& x : v.largest_term) out.largest_term[j] = std::max(out.largest_term[j], x);
     for (std::size_t d = 0; d <= static_cast<std::size_t>(max_derivative); ++d) {
@@ -403,11 +404,13 @@ class CatenaryBasis {
   }
 
   /// F_j^(m)(eta), m = 0..max_derivative, from expansion k (eta > 0).
-  SeriesValue<Real> raw_derivatives(int k, int j, const Real& eta, int max_derivative) const {
-    if (k == 0) return evaluate_series(singular_series_[static_cast<std::size_t>(j)], eta, max_derivative, Real(ratio_[0]));
+  SeriesValue<Real> raw_derivatives(int k, int j, const Real& eta, int max_derivative,
+                                    SeriesErrors errors = SeriesErrors::Tracked) const {
+    if (k == 0)
+      return evaluate_series(singular_series_[static_cast<std::size_t>(j)], eta, max_derivative, Real(ratio_[0]), errors);
     return evaluate_series(ordinary_series_[static_cast<std::size_t>(k - 1)][static_cast<std::size_t>(j)],
                            Real(eta - Real(centres_[static_cast<std::size_t>(k)])), max_derivative,
-                           Real(ratio_[static_cast<std::size_t>(k)]));
+                           Real(ratio_[static_cast<std::size_t>(k)]), errors);
   }
 
   bool inplane_;

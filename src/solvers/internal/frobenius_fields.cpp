@@ -62,7 +62,7 @@ std::vector<FieldValues> fields(const PlaneSetup& setup, double omega, const std
   const Real w2mu = Real(omega) * Real(omega) * Real(setup.mu);
   for (double sigma_d : sigmas) {
     const Real sigma(sigma_d);
-    const auto b = basis.evaluate(sigma, derivatives);
+    const auto b = basis.evaluate(sigma, derivatives, SeriesErrors::Skipped);  // values only
     Real d[4] = {Real(0), Real(0), Real(0), Real(0)};
     for (std::size_t j = 0; j < static_cast<std::size_t>(basis.size()); ++j)
       for (std::size_t k = 0; k <= static_cast<std::size_t>(derivatives); ++k) d[k] += c[j] * b.value[j][k];

@@ -25,6 +25,7 @@
 /// caller can re-run in extended precision when it detects cancellation.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <cstddef>
@@ -246,27 +247,36 @@ FrobeniusSeries<Real> frobenius_series(const ShiftTable<Real>& table, const Real
   return series;
 }
 
-/// Evaluates y^(k)(x), k = 0..max_derivative, for x > 0 (or any x when r is a non-negative
-/// integer), term by term, with the truncation estimate from the last `tail` terms assuming a
-/// geometric tail of ratio `ratio` = |x| / radius (< 1).
+/// What evaluate_series computes besides the values: the largest term and the truncation estimate
+/// of each derivative (the error bounds of the boundary matrix), or the values alone (fields and
+/// conjugate-point signs, which use nothing else: about a third of the work).
+enum class SeriesErrors { Tracked, Skipped };
+
+/// Evaluates y^(k)(x), k = 0..max_derivative (<= 3), of the series with coefficients `a` and
+/// exponent `r`, for x > 0 (or any x when r is a non-negative integer), term by term, with the
+/// truncation estimate from the last `tail` terms assuming a geometric tail of ratio `ratio` =
+/// |x| / radius (< 1) unless `errors` is Skipped (largest_term and truncation then stay 0).
 template <class Real>
-SeriesValue<Real> evaluate_series(const FrobeniusSeries<Real>& series, const Real& x, int max_derivative,
-                                  const Real& ratio) {
+SeriesValue<Real> evaluate_series(const std::vector<Real>& a, const Real& r, const Real& x, int max_derivative,
+                                  const Real& ratio, SeriesErrors errors = SeriesErrors::Tracked) {
   using std::abs;
   using std::pow;
+  if (max_derivative < 0 || max_derivative > 3) throw std::domain_error("evaluate_series: derivatives 0..3 only");
   SeriesValue<Real> value;
-  value.derivative.assign(static_cast<std::size_t>(max_derivative + 1), Real(0));
-  value.largest_term.assign(static_cast<std::size_t>(max_derivative + 1), Real(0));
-  value.truncation.assign(static_cast<std::size_t>(max_derivative + 1), Real(0));
-  const int n = static_cast<int>(series.a.size());
+  const bool tracked = errors == SeriesErrors::Tracked;
+  const std::size_t K1 = static_cast<std::size_t>(max_derivative + 1);
+  value.derivative.assign(K1, Real(0));
+  value.largest_term.assign(K1, Real(0));
+  value.truncation.assign(K1, Real(0));
+  const int n = static_cast<int>(a.size());
   const int K = max_derivative;
   // term_{m,k} = a_m nu (nu-1)...(nu-k+1) x^(nu-k), nu = m + r, computed as a_m ff_k x^m x^(r-k).
   const bool at_origin = x == Real(0);
-  std::vector<Real> base(static_cast<std::size_t>(K + 1), Real(1));
+  std::array<Real, 4> base{Real(1), Real(1), Real(1), Real(1)};
   if (!at_origin) {
     using std::floor;
     for (int k = 0; k <= K; ++k) {
-      const Real exponent = series.r - Real(k);
+      const Real exponent = r - Real(k);
       Real b(1);
       if (exponent == Real(floor(exponent))) {  // integer power: valid for negative x too
         const int p = static_cast<int>(exponent);
@@ -277,12 +287,12 @@ SeriesValue<Real> evaluate_series(const FrobeniusSeries<Real>& series, const Rea
       base[static_cast<std::size_t>(k)] = b;
     }
   }
-  std::vector<Real> last(static_cast<std::size_t>(K + 1), Real(0));
+  std::array<Real, 4> last{Real(0), Real(0), Real(0), Real(0)};
   Real xm(1);
   for (int m = 0; m < n; ++m, xm *= x) {
-    const Real& c = series.a[static_cast<std::size_t>(m)];
+    const Real& c = a[static_cast<std::size_t>(m)];
     if (c == Real(0)) continue;
-    const Real nu = Real(m) + series.r;
+    const Real nu = Real(m) + r;
     Real falling(1);
     for (int k = 0; k <= K; ++k) {
       if (k > 0) falling *= (nu - Real(k - 1));
@@ -295,16 +305,26 @@ SeriesValue<Real> evaluate_series(const FrobeniusSeries<Real>& series, const Rea
       } else {
         term = c * falling * xm * base[static_cast<std::size_t>(k)];
       }
-      value.derivative[static_cast<std::size_t>(k)] += term;
+      const std::size_t kk = static_cast<std::size_t>(k);
+      value.derivative[kk] += term;
+      if (!tracked) continue;
       const Real magnitude = abs(term);
-      if (magnitude > value.largest_term[static_cast<std::size_t>(k)]) value.largest_term[static_cast<std::size_t>(k)] = magnitude;
-      if (m >= n - 3 && magnitude > last[static_cast<std::size_t>(k)]) last[static_cast<std::size_t>(k)] = magnitude;
+      if (magnitude > value.largest_term[kk]) value.largest_term[kk] = magnitude;
+      if (m >= n - 3 && magnitude > last[kk]) last[kk] = magnitude;
     }
   }
+  if (!tracked) return value;
   for (int k = 0; k <= K; ++k)
     value.truncation[static_cast<std::size_t>(k)] =
         ratio < Real(1) ? last[static_cast<std::size_t>(k)] * ratio / (Real(1) - ratio) : std::numeric_limits<Real>::infinity();
   return value;
+}
+
+/// evaluate_series for a FrobeniusSeries (its coefficients and exponent).
+template <class Real>
+SeriesValue<Real> evaluate_series(const FrobeniusSeries<Real>& series, const Real& x, int max_derivative,
+                                  const Real& ratio, SeriesErrors errors = SeriesErrors::Tracked) {
+  return evaluate_series(series.a, series.r, x, max_derivative, ratio, errors);
 }
 
 /// Number of terms needed so that |a_m| rho^m stays below `tolerance` * max_m |a_m| rho^m for the
