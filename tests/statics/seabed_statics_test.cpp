@@ -242,6 +242,32 @@ TEST(SeabedStatics, ChainWireLineTouchingDownInTheChain) {
   EXPECT_EQ(s.pieces().back().segment, 1u);
 }
 
+// The pieces the dynamics builds on: grounded first, cut where the friction tension reaches 0 and
+// at joints; the suspended pieces start at L_g with V = 0.
+TEST(SeabedStatics, GroundedPiecesAreCutAtTheSlackEndAndAtJoints) {
+  const StaticSolution slack = solve_statics(chain_on_seabed(3.0));
+  const double Lg = slack.grounded_length_m();
+  const auto& pieces = slack.pieces();
+  ASSERT_GE(pieces.size(), 3u);
+  EXPECT_TRUE(pieces[0].grounded && pieces[1].grounded && !pieces[2].grounded);
+  EXPECT_LE(pieces[0].grounded_tension_begin_n, 0.0);
+  EXPECT_NEAR(pieces[1].s_begin_m, Lg - slack.horizontal_force_n() / (3.0 * 1200.0), 1e-9 * Lg);
+  EXPECT_NEAR(pieces[2].s_begin_m, Lg, 1e-12 * Lg);
+  EXPECT_EQ(pieces[2].vertical_begin_n, 0.0);
+  // 300 m of chain then 900 m of chain of another EA: touchdown in the second segment.
+  Problem p = chain_on_seabed(0.5);
+  p.line.segments.push_back({300.0, 1200.0, 6e8, 150.0, 20.0});
+  p.line.segments.push_back({700.0, 1200.0, 8e8, 150.0, 20.0});
+  const StaticSolution s = solve_statics(p);
+  ASSERT_TRUE(s.converged) << s.message;
+  ASSERT_GT(s.grounded_length_m(), 300.0);
+  EXPECT_TRUE(s.pieces()[0].grounded && s.pieces()[1].grounded);
+  EXPECT_EQ(s.pieces()[1].s_begin_m, 300.0);
+  EXPECT_EQ(s.pieces()[1].segment, 1u);
+  EXPECT_DOUBLE_EQ(s.strain(100.0), s.tension_n(100.0) / 6e8);
+  EXPECT_DOUBLE_EQ(s.strain(350.0), s.tension_n(350.0) / 8e8);
+}
+
 // Chain on the seabed, a buoyant stretch that lifts off, chain again: the chain beyond the buoyant
 // stretch would touch down a second time.
 TEST(SeabedStatics, RefusesASecondContactInterval) {
