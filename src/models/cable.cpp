@@ -90,6 +90,25 @@ void Problem::validate() const {
     }
   }
   supports.validate();
+  if (seabed) validate_seabed();
+}
+
+void Problem::validate_seabed() const {
+  seabed->validate();
+  const double z = seabed->z_m;
+  const double tolerance = 1e-9 * std::max(1.0, std::abs(z));
+  if (!(std::abs(supports.a_m.y() - z) <= tolerance)) {
+    throw InvalidInput(fmt::format("Invalid seabed.z = {}: end A (the anchor) must lie on the seabed; a.z = {} [m]",
+                                   z, supports.a_m.y()));
+  }
+  if (supports.b_m.y() < z - tolerance) {
+    throw InvalidInput(fmt::format("Invalid seabed.z = {}: end B (the fairlead) must not be below the seabed; "
+                                   "b.z = {} [m]",
+                                   z, supports.b_m.y()));
+  }
+  if (prescribed_forces) {
+    throw InvalidInput("Invalid Problem::prescribed_forces: a line on a seabed is solved from its geometry only");
+  }
 }
 
 }  // namespace catena

@@ -8,8 +8,10 @@
 
 #include "catena/core/error.hpp"
 #include "catena/statics/line_statics.hpp"
+#include "catena/statics/seabed_statics.hpp"
 #include "statics/internal/catenary_segment.hpp"
 #include "statics/internal/line_pieces.hpp"
+#include "statics/internal/seabed_pieces.hpp"
 
 namespace catena {
 namespace {
@@ -172,6 +174,24 @@ StaticSolution::StaticSolution(const Line& line, const Vec2& a_m, double H, doub
   cable_.length_m = line.length_m();
 }
 
+StaticSolution::StaticSolution(const Line& line, const Vec2& a_m, const Seabed& seabed, double H,
+                               double grounded_length_m)
+    : line_(line),
+      pieces_(internal::build_seabed_pieces(line, seabed.friction, seabed.z_m - a_m.y(), H, grounded_length_m)),
+      a_m_(a_m),
+      H_(H),
+      V_A_(grounded_length_m > 0.0 ? 0.0 : pieces_.front().vertical_begin_n),
+      seabed_(seabed),
+      grounded_length_m_(grounded_length_m) {
+  cable_ = pieces_.front().section;
+  cable_.length_m = line.length_m();
+}
+
+double StaticSolution::anchor_horizontal_force_n() const {
+  if (!has_contact()) return H_;
+  return internal::grounded_tension(pieces_.front(), seabed_->friction, 0.0);
+}
+
 const StaticPiece& StaticSolution::piece_at(double s) const {
   auto after = std::upper_bound(pieces_.begin(), pieces_.end(), s,
                                 [](double value, const StaticPiece& piece) { return value < piece.s_begin_m; });
@@ -186,6 +206,7 @@ LineSegment StaticSolution::segment_at(double s) const {
 double StaticSolution::vertical_force_n(double s) const {
   if (!is_line()) return V_A_ + cable_.weight_n_per_m * s;
   const StaticPiece& piece = piece_at(s);
+  if (piece.grounded) return 0.0;
   return piece.vertical_begin_n + piece.section.weight_n_per_m * (s - piece.s_begin_m);
 }
 
@@ -194,6 +215,7 @@ double StaticSolution::vertical_force_before_n(double s) const {
   auto at = std::lower_bound(pieces_.begin(), pieces_.end(), s,
                              [](const StaticPiece& piece, double value) { return piece.s_begin_m < value; });
   const StaticPiece& piece = at == pieces_.begin() ? pieces_.front() : *(at - 1);
+  if (piece.grounded) return 0.0;
   return piece.vertical_begin_n + piece.section.weight_n_per_m * (s - piece.s_begin_m);
 }
 
@@ -218,7 +240,13 @@ double StaticSolution::lowest_point_s_m() const {
   return best_s;
 }
 
-double StaticSolution::tension_n(double s) const { return std::hypot(H_, vertical_force_n(s)); }
+double StaticSolution::tension_n(double s) const {
+  if (has_contact() && s < grounded_length_m_) {
+    const StaticPiece& piece = piece_at(s);
+    if (piece.grounded) return internal::grounded_tension(piece, seabed_->friction, s - piece.s_begin_m);
+  }
+  return std::hypot(H_, vertical_force_n(s));
+}
 
 double StaticSolution::strain(double s) const {
   if (is_line()) return tension_n(s) * inverse_stiffness(piece_at(s).section);
@@ -228,6 +256,7 @@ double StaticSolution::strain(double s) const {
 double StaticSolution::angle_rad(double s) const { return std::atan2(vertical_force_n(s), H_); }
 
 Vec2 StaticSolution::tangent(double s) const {
+  if (has_contact() && piece_at(s).grounded) return {1.0, 0.0};
   const double T = tension_n(s);
   return {H_ / T, vertical_force_n(s) / T};
 }
@@ -240,22 +269,31 @@ Vec2 StaticSolution::normal(double s) const {
 Vec2 StaticSolution::offset_m(double s) const {
   if (!is_line()) return offset(cable_, H_, V_A_, s);
   const StaticPiece& piece = piece_at(s);
+  if (piece.grounded) {
+    const double ds = s - piece.s_begin_m;
+    return piece.offset_begin_m + Vec2(internal::grounded_stretched_increment(piece, seabed_->friction, ds), 0.0);
+  }
   return piece.offset_begin_m + offset(piece.section, H_, piece.vertical_begin_n, s - piece.s_begin_m);
 }
 
 double StaticSolution::stretched_length_m(double s) const {
   if (!is_line()) return internal::stretched_increment(cable_, H_, V_A_, s);
   const StaticPiece& piece = piece_at(s);
+  if (piece.grounded) {
+    return piece.stretched_begin_m + internal::grounded_stretched_increment(piece, seabed_->friction, s - piece.s_begin_m);
+  }
   return piece.stretched_begin_m +
          internal::stretched_increment(piece.section, H_, piece.vertical_begin_n, s - piece.s_begin_m);
 }
 
 std::string StaticSolution::brief_report() const {
   const double L = cable_.length_m;
-  return fmt::format(
+  std::string text = fmt::format(
       "H = {:.10g} N, V_A = {:.10g} N, T_A = {:.10g} N, T_B = {:.10g} N, {} Newton iterations, "
       "closure error {:.2e} m",
       H_, V_A_, tension_n(0.0), tension_n(L), iterations, closure_error_m);
+  if (has_seabed()) text += fmt::format(", grounded length {:.10g} m", grounded_length_m_);
+  return text;
 }
 
 Vec2 catenary_end_offset(const CableProperties& cable, double H, double V_A) {
@@ -265,6 +303,7 @@ Vec2 catenary_end_offset(const CableProperties& cable, double H, double V_A) {
 StaticSolution solve_statics(const Problem& problem, const StaticsOptions& options) {
   problem.validate();
   options.validate();
+  if (problem.seabed) return solve_seabed_statics(problem, options);
   if (!problem.is_uniform()) return solve_line_statics(problem, options);
   const CableProperties& cable = problem.cable;
   const Vec2 chord = problem.supports.chord_m();

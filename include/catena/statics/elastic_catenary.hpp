@@ -14,11 +14,13 @@
 /// EA = inf gives the inextensible catenary; H = 0 is a vertical cable (allowed when it is taut,
 /// V > 0 along its whole length).
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "catena/core/types.hpp"
 #include "catena/models/cable.hpp"
+#include "catena/models/seabed.hpp"
 
 namespace catena {
 
@@ -47,6 +49,13 @@ struct StaticPiece {
   /// Offset of the start from support a [m] and stretched length of [0, s_begin] [m].
   Vec2 offset_begin_m = Vec2::Zero();
   double stretched_begin_m = 0.0;
+  /// True for a piece resting on the seabed (docs/physics.md, "Seabed contact"): straight and
+  /// horizontal, V = 0, tension set by friction (grounded_tension_begin_n).
+  bool grounded = false;
+  /// Grounded pieces: H - C_B (weight resting on the seabed between the start and the touchdown
+  /// point) [N], before clipping at 0; the tension along the piece is
+  /// max(this + C_B w (s - s_begin), 0). Unused (0) on suspended pieces.
+  double grounded_tension_begin_n = 0.0;
 };
 
 /// The static state of the cable: the two end-force unknowns plus closed forms at any s.
@@ -62,6 +71,27 @@ class StaticSolution {
   StaticSolution(const CableProperties& cable, const Vec2& a_m, double H, double V_A);
   /// The equilibrium of a general line (validated) with forces (H, V_A) at support `a`.
   StaticSolution(const Line& line, const Vec2& a_m, double H, double V_A);
+  /// The equilibrium of a line (validated) on `seabed` (docs/physics.md, "Seabed contact"): the
+  /// grounded length L_g = `grounded_length_m` from A rests on the seabed; the rest is suspended
+  /// with horizontal force `H` [N], leaving the seabed tangentially (V = 0 at s = L_g). The grounded
+  /// pieces come first, cut at joints, points and where the friction tension reaches 0.
+  StaticSolution(const Line& line, const Vec2& a_m, const Seabed& seabed, double H, double grounded_length_m);
+
+  /// Records the seabed under a solution that does not touch it (L_g = 0; nothing else changes).
+  void set_seabed_without_contact(const Seabed& seabed) { seabed_ = seabed; }
+  /// True when the problem had a seabed (touching it or not).
+  bool has_seabed() const { return seabed_.has_value(); }
+  /// The seabed (requires has_seabed()).
+  const Seabed& seabed() const { return *seabed_; }
+  /// True when a grounded length rests on the seabed (L_g > 0).
+  bool has_contact() const { return grounded_length_m_ > 0.0; }
+  /// Unstretched grounded length L_g from A [m]; 0 without contact.
+  double grounded_length_m() const { return grounded_length_m_; }
+  /// Unstretched arc length of the touchdown point [m] (= L_g).
+  double touchdown_s_m() const { return grounded_length_m_; }
+  /// Horizontal force on the anchor (end A) [N]: H reduced by the seabed friction along the
+  /// grounded part, max(H - C_B (grounded weight), 0); H without contact.
+  double anchor_horizontal_force_n() const;
 
   /// The uniform cable. For a general line only length_m (the total) is meaningful: use
   /// segment_at() for the section at s.
@@ -78,9 +108,11 @@ class StaticSolution {
   double vertical_force_before_n(double s) const;
   /// Arc length of the lowest point of the line [m].
   double lowest_point_s_m() const;
-  /// H: horizontal component of the tension, constant along the cable [N].
+  /// H: horizontal component of the tension, constant along the cable [N]. With seabed contact:
+  /// that of the suspended part (the fairlead's); on the grounded part it is tension_n(s).
   double horizontal_force_n() const { return H_; }
-  /// V_A: vertical component of the tension at s = 0 (along t, i.e. toward b) [N].
+  /// V_A: vertical component of the tension at s = 0 (along t, i.e. toward b) [N]; 0 with seabed
+  /// contact (the seabed carries the grounded weight).
   double vertical_force_a_n() const { return V_A_; }
 
   /// V(s) = V_A + W0 s [N] (piecewise on a general line).
@@ -102,7 +134,8 @@ class StaticSolution {
   /// Stretched length of [0, s] [m].
   double stretched_length_m(double s) const;
 
-  /// Newton iterations used by solve_statics (0 when built directly).
+  /// Newton iterations used by solve_statics (0 when built directly); with seabed contact, the
+  /// steps of the bisection on H (each a bisection on L_g).
   int iterations = 0;
   /// |r(L) - (B - A)| at the solution [m].
   double closure_error_m = 0.0;
@@ -126,6 +159,8 @@ class StaticSolution {
   Vec2 a_m_ = Vec2::Zero();
   double H_ = 0.0;
   double V_A_ = 0.0;
+  std::optional<Seabed> seabed_;
+  double grounded_length_m_ = 0.0;
 };
 
 /// Offset r(L) - r(0) of a cable with end forces (H, V_A): the closure function of the Newton solve.
@@ -147,7 +182,8 @@ Vec2 catenary_end_offset(const CableProperties& cable, double H, double V_A);
 ///   returned with `converged == false` and `message` saying why (closure error, tolerance,
 ///   iterations). Callers check `converged` before using the solution.
 /// A general line (Problem::is_uniform() false) is solved by solve_line_statics
-/// (catena/statics/line_statics.hpp).
+/// (catena/statics/line_statics.hpp), a problem with a seabed by solve_seabed_statics
+/// (catena/statics/seabed_statics.hpp).
 StaticSolution solve_statics(const Problem& problem, const StaticsOptions& options = {});
 
 }  // namespace catena

@@ -4,7 +4,6 @@
 #include "statics/internal/catenary_segment.hpp"
 
 namespace catena::internal {
-namespace {
 
 CableProperties section_of(const LineSegment& segment, double length_m) {
   CableProperties section;
@@ -15,6 +14,8 @@ CableProperties section_of(const LineSegment& segment, double length_m) {
   section.added_mass_kg_per_m = segment.added_mass_kg_per_m;
   return section;
 }
+
+namespace {
 
 // Appends a piece starting at `s` with start state (V, r, stretched) and advances the state to
 // its end.

@@ -12,6 +12,9 @@
 
 namespace catena::internal {
 
+/// The section of `segment` as a cable of length `length_m` [m].
+CableProperties section_of(const LineSegment& segment, double length_m);
+
 /// The pieces of `line` (validated) with forces (H, V_A) at end A, from A to B.
 std::vector<StaticPiece> build_line_pieces(const Line& line, double H, double V_A);
 

@@ -1,0 +1,166 @@
+#include "catena/statics/seabed_statics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+#include "catena/core/error.hpp"
+#include "statics/internal/line_pieces.hpp"
+#include "statics/internal/seabed_pieces.hpp"
+
+namespace catena {
+namespace {
+
+// Bisection of a sign change on [lo, hi] down to adjacent doubles (or 1e-17 of the bracket, so
+// that a root at 0 does not walk through the subnormals): `below(x)` says whether x is on the
+// side of lo. Returns the last x on the side of lo.
+template <class Below>
+double bisect(double lo, double hi, Below below) {
+  const double floor = 1e-17 * std::abs(hi - lo);
+  for (int i = 0; i < 200 && std::abs(hi - lo) > floor; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= std::min(lo, hi) || mid >= std::max(lo, hi)) break;
+    (below(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+// The contact equations of one problem: the end offset of the line as a function of (H, L_g).
+struct ContactSystem {
+  const Line& line;
+  const Seabed& seabed;
+  double seabed_offset_z_m;
+  Vec2 chord_m;
+  // Evaluations of the reach residual (each one bisection for L_g): reported as the iterations.
+  mutable int evaluations = 0;
+
+  Vec2 end_offset(double H, double grounded_length) const {
+    const auto pieces =
+        internal::build_seabed_pieces(line, seabed.friction, seabed_offset_z_m, H, grounded_length);
+    return internal::line_end_offset(pieces, H);
+  }
+  // L_g with which the suspended part reaches the fairlead's height, or -1 when even L_g = 0 is
+  // too low (H too large for contact).
+  double grounded_length_for(double H) const {
+    auto above = [&](double Lg) { return end_offset(H, Lg).y() >= chord_m.y(); };
+    if (!above(0.0)) return -1.0;
+    return bisect(0.0, line.length_m() * (1.0 - 1e-12), above);
+  }
+  // Horizontal miss of the fairlead with force H (+inf when H is too large for contact).
+  double reach_residual(double H) const {
+    ++evaluations;
+    const double grounded_length = grounded_length_for(H);
+    if (grounded_length < 0.0) return kInfinity;
+    return end_offset(H, grounded_length).x() - chord_m.x();
+  }
+};
+
+// Sum of |weights| of the line [N]: the scale of H from which the bracket starts.
+double weight_scale(const Line& line) {
+  double scale = 0.0;
+  for (const LineSegment& segment : line.segments) scale += std::abs(segment.weight_n_per_m) * segment.length_m;
+  for (const PointAttachment& point : line.points) scale += std::abs(point.weight_n);
+  return scale > 0.0 ? scale : 1.0;
+}
+
+// The H of the contact solution by bisection on the reach residual (increasing in H), after
+// bracketing it by doubling and halving from the line's weight.
+double contact_horizontal_force(const ContactSystem& system) {
+  double hi = weight_scale(system.line);
+  for (int i = 0; i < 200 && !(system.reach_residual(hi) > 0.0); ++i) hi *= 2.0;
+  double lo = hi;
+  for (int i = 0; i < 120 && system.reach_residual(lo) >= 0.0; ++i) lo *= 0.5;
+  if (system.reach_residual(lo) >= 0.0) {
+    throw InvalidInput(fmt::format(
+        "No static equilibrium with the seabed: the line (L = {:.10g} m) is longer than the horizontal distance "
+        "{:.10g} m plus the height {:.10g} m of the fairlead above the seabed, so its grounded part would pass "
+        "the fairlead (it would fold on the seabed); shorten the line or move the ends apart",
+        system.line.length_m(), system.chord_m.x(), system.chord_m.y() - system.seabed_offset_z_m));
+  }
+  return bisect(lo, hi, [&](double H) { return system.reach_residual(H) < 0.0; });
+}
+
+// The cases outside the model, with the limit they hit.
+void check_supported(const StaticSolution& solution, const Line& line, double tolerance) {
+  const double Lg = solution.grounded_length_m();
+  for (std::size_t k = 0; k < line.segments.size(); ++k) {
+    if (line.segment_start_m(k) < Lg && !(line.segments[k].weight_n_per_m > 0.0)) {
+      throw InvalidInput(fmt::format(
+          "Invalid line.segments[{}]: seabed contact with a buoyant or weightless segment on the grounded part "
+          "(weight {} N/m, grounded length {:.6g} m) is not supported",
+          k, line.segments[k].weight_n_per_m, Lg));
+    }
+  }
+  for (std::size_t i = 0; i < line.points.size(); ++i) {
+    if (line.points[i].s_m <= Lg && line.points[i].weight_n < 0.0) {
+      throw InvalidInput(fmt::format(
+          "Invalid line.points[{}]: a buoy on the grounded part (s = {:.6g} m <= grounded length {:.6g} m) is "
+          "not supported",
+          i, line.points[i].s_m, Lg));
+    }
+  }
+  const double lowest = solution.position_m(solution.lowest_point_s_m()).y();
+  if (lowest < solution.seabed().z_m - tolerance) {
+    throw InvalidInput(fmt::format(
+        "seabed: the suspended part goes below the seabed again (lowest point {:.6g} m below it at s = {:.6g} m): "
+        "lift-off after touchdown and a second contact interval are not supported",
+        solution.seabed().z_m - lowest, solution.lowest_point_s_m()));
+  }
+}
+
+// The no-seabed solution is the answer when it stays on or above the seabed with V_A >= 0.
+bool stays_off_seabed(const StaticSolution& free, const Seabed& seabed, double tolerance) {
+  if (!free.converged || free.vertical_force_a_n() < 0.0) return false;
+  return free.position_m(free.lowest_point_s_m()).y() >= seabed.z_m - tolerance;
+}
+
+StaticSolution solve_contact(const Problem& problem, const StaticsOptions& options) {
+  const Line line = problem.as_line();
+  const Seabed& seabed = *problem.seabed;
+  const Vec2 chord = problem.supports.chord_m();
+  const ContactSystem system{line, seabed, seabed.z_m - problem.supports.a_m.y(), chord};
+  const double H = contact_horizontal_force(system);
+  const double grounded_length = system.grounded_length_for(H);
+  StaticSolution solution(line, problem.supports.a_m, seabed, H, std::max(grounded_length, 0.0));
+  const double scale = std::max(line.length_m(), chord.norm());
+  solution.iterations = system.evaluations;
+  solution.closure_error_m = (solution.offset_m(line.length_m()) - chord).norm();
+  check_supported(solution, line, 1e-9 * std::max(1.0, scale));
+  const double accepted = std::max(options.relative_tolerance * scale, 1e-11 * scale);
+  if (!(solution.closure_error_m <= accepted) || !std::isfinite(H)) {
+    solution.converged = false;
+    solution.message = fmt::format(
+        "Statics on the seabed did not converge: closure error {:.3e} m > {:.3e} m (H = {:.6g} N, grounded "
+        "length {:.6g} m); the touchdown may fall on a point weight, where the line leaves the seabed at an angle "
+        "(not supported)",
+        solution.closure_error_m, accepted, H, grounded_length);
+  }
+  return solution;
+}
+
+}  // namespace
+
+StaticSolution solve_seabed_statics(const Problem& problem, const StaticsOptions& options) {
+  problem.validate();
+  options.validate();
+  Problem free = problem;
+  free.seabed.reset();
+  if (!problem.seabed) return solve_statics(free, options);
+  const Seabed& seabed = *problem.seabed;
+  const double tolerance = 1e-9 * std::max(1.0, std::abs(seabed.z_m));
+  if (problem.supports.b_m.y() <= seabed.z_m + tolerance) {
+    throw InvalidInput(fmt::format(
+        "Invalid seabed.z = {}: end B (the fairlead) lies on the seabed (b.z = {}): a line entirely on the seabed "
+        "is not supported; the fairlead must be above the seabed",
+        seabed.z_m, problem.supports.b_m.y()));
+  }
+  StaticSolution solution = solve_statics(free, options);
+  if (stays_off_seabed(solution, seabed, tolerance)) {
+    solution.set_seabed_without_contact(seabed);
+    return solution;
+  }
+  return solve_contact(problem, options);
+}
+
+}  // namespace catena
