@@ -19,20 +19,22 @@ import os
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from ._catena import (Cable, CertifiedReference, Check, ConvergenceStudy, ExternalCheck, ForcedRequest,
-                      ForcedResponse, Groups, InvalidInput, Line, LineSegment, Mode, ModeComparison, Modes,
-                      ModeShapes, ParseError, PointAttachment, Problem, Request, ResolutionComparison, Result, Scene, SolverResult,
-                      Statics, Summary, __version__, dimensionless_groups, run_solver, solve_statics)
+from ._catena import (Cable, CertifiedReference, Check, ConvergenceStudy, dimensionless_groups,
+                      ExternalCheck, ForcedRequest, ForcedResponse, Groups, InvalidInput, Line, LineSegment,
+                      Mode, ModeComparison, Modes, ModeShapes, ParseError, PointAttachment, Problem, Request,
+                      ResolutionComparison, Result, run_solver, Scene, Seabed, solve_statics, SolverResult,
+                      Statics, Summary, __version__)
 from . import _catena
 from ._check_results import ORIGIN as _RESULTS_ORIGIN, _NotAValue, results_json_text
 from ._scene_dict import scene_toml_text
 
 __all__ = [
     "Cable", "CertifiedReference", "Check", "ConvergenceStudy", "ExternalCheck", "ForcedRequest",
-    "ForcedResponse", "Groups", "InvalidInput", "Knob", "Line", "LineSegment", "Mode", "ModeComparison", "Modes",
-    "ModeShapes", "ParseError", "PointAttachment", "Problem", "Request", "ResolutionComparison", "Result", "Scene", "SolverInfo",
-    "SolverResult", "Statics", "Summary", "check", "dimensionless_groups", "load_scene", "load_scenes",
-    "run_solver", "solve", "solve_statics", "solve_sweep", "solvers",
+    "ForcedResponse", "Groups", "InvalidInput", "Knob", "Line", "LineSegment", "Mode", "ModeComparison",
+    "Modes", "ModeShapes", "ParseError", "PointAttachment", "Problem", "Seabed", "Request",
+    "ResolutionComparison", "Result", "Scene", "SolverInfo", "SolverResult", "Statics", "Summary", "check",
+    "dimensionless_groups", "load_scene", "load_scenes", "run_solver", "solve", "solve_statics",
+    "solve_sweep", "solvers",
 ]
 
 

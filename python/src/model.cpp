@@ -8,6 +8,7 @@
 #include "catena/core/error.hpp"
 #include "catena/models/cable.hpp"
 #include "catena/models/line.hpp"
+#include "catena/models/seabed.hpp"
 #include "catena/solvers/solve_request.hpp"
 #include "catena/statics/problem_builders.hpp"
 
@@ -52,22 +53,49 @@ void bind_cable(py::module_& module) {
       });
 }
 
-Problem make_problem(const CableProperties& cable, const Point& b_m, const Point& a_m) {
+Problem make_problem(const CableProperties& cable, const Point& b_m, const Point& a_m,
+                     const std::optional<Seabed>& seabed) {
   Problem problem;
   problem.cable = cable;
   problem.supports.a_m = to_vec2(a_m);
   problem.supports.b_m = to_vec2(b_m);
+  problem.seabed = seabed;
   problem.validate();
   return problem;
 }
 
-Problem make_line_problem(const Line& line, const Point& b_m, const Point& a_m) {
+Problem make_line_problem(const Line& line, const Point& b_m, const Point& a_m, const std::optional<Seabed>& seabed) {
   Problem problem;
   problem.line = line;
   problem.supports.a_m = to_vec2(a_m);
   problem.supports.b_m = to_vec2(b_m);
+  problem.seabed = seabed;
   problem.validate();
   return problem;
+}
+
+Seabed make_seabed(double z_m, double friction, double stiffness, double tangential_stiffness) {
+  Seabed seabed{z_m, friction, stiffness, tangential_stiffness};
+  seabed.validate();
+  return seabed;
+}
+
+void bind_seabed(py::module_& module) {
+  py::class_<Seabed>(module, "Seabed",
+                     "A flat seabed at height z_m under end A (docs/physics.md, \"Seabed contact\"). Validated "
+                     "on construction (catena.InvalidInput names the field).")
+      .def(py::init(&make_seabed), py::arg("z_m"), py::kw_only(), py::arg("friction") = 0.0,
+           py::arg("stiffness_n_per_m2") = 0.0, py::arg("tangential_stiffness_n_per_m2") = 0.0)
+      .def_readonly("z_m", &Seabed::z_m, "seabed height [m]")
+      .def_readonly("friction", &Seabed::friction, "Coulomb coefficient C_B of the statics [-]")
+      .def_readonly("stiffness_n_per_m2", &Seabed::stiffness_n_per_m2,
+                    "vertical foundation stiffness per unit length k_s [N/m per m]")
+      .def_readonly("tangential_stiffness_n_per_m2", &Seabed::tangential_stiffness_n_per_m2,
+                    "foundation stiffness along and across the seabed [N/m per m]")
+      .def("__repr__", [](const Seabed& b) {
+        return fmt::format("Seabed(z_m={}, friction={}, stiffness_n_per_m2={}, tangential_stiffness_n_per_m2={})",
+                           b.z_m, b.friction, b.stiffness_n_per_m2, b.tangential_stiffness_n_per_m2);
+      });
 }
 
 void bind_problem(py::module_& module) {
@@ -75,9 +103,9 @@ void bind_problem(py::module_& module) {
                       "A cable between two fixed supports a and b in one vertical plane (x horizontal, "
                       "z up) [m]: the input of solve_statics and of every solver.")
       .def(py::init(&make_problem), py::arg("cable"), py::kw_only(), py::arg("b_m"),
-           py::arg("a_m") = Point{0.0, 0.0})
+           py::arg("a_m") = Point{0.0, 0.0}, py::arg("seabed") = py::none())
       .def_static("from_line", &make_line_problem, py::arg("line"), py::kw_only(), py::arg("b_m"),
-                  py::arg("a_m") = Point{0.0, 0.0},
+                  py::arg("a_m") = Point{0.0, 0.0}, py::arg("seabed") = py::none(),
                   "A general line (catena.Line) between supports a and b [m] (docs/physics.md, \"General lines\").")
       .def_readwrite("cable", &Problem::cable, "the uniform cable (unused when the problem is a general line)")
       .def_property_readonly(
@@ -86,6 +114,7 @@ void bind_problem(py::module_& module) {
             return p.line;
           },
           "the general line (a copy), or None for a uniform cable")
+      .def_readonly("seabed", &Problem::seabed, "the seabed (catena.Seabed), or None")
       .def_property_readonly("is_uniform", &Problem::is_uniform, "True for a uniform cable, False for a general line")
       .def_property_readonly("length_m", &Problem::length_m, "total unstretched length [m]")
       .def_property(
@@ -199,6 +228,7 @@ void bind_request(py::module_& module) {
 
 void bind_model(py::module_& module) {
   bind_cable(module);
+  bind_seabed(module);
   bind_problem(module);
   bind_forced_request(module);
   bind_request(module);

@@ -81,7 +81,11 @@ bool same_line(const Line& a, const Line& b) {
 
 // Given statics must belong to the problem's cable (or line) and be usable for dynamics.
 void check_given_statics(const Problem& problem, const StaticSolution& statics) {
-  if (problem.is_uniform() == statics.is_line() || !same_line(problem.as_line(), statics.line())) {
+  const bool same_seabed = problem.seabed.has_value() == statics.has_seabed() &&
+                           (!problem.seabed || (problem.seabed->z_m == statics.seabed().z_m &&
+                                                problem.seabed->friction == statics.seabed().friction));
+  if (!same_seabed) throw InvalidInput("statics: solved for another seabed than problem.seabed");
+  if (!same_line(problem.as_line(), statics.line())) {
     throw InvalidInput(fmt::format("statics: solved for another {} than problem.{} (use catena.solve_statics(problem))",
                                    problem.is_uniform() ? "cable" : "line", problem.is_uniform() ? "cable" : "line"));
   }

@@ -65,6 +65,11 @@ void bind_static_solution(py::module_& module) {
       .def_property_readonly("cable", &S::cable, "the uniform cable (for a general line only length_m, the total)")
       .def_property_readonly("is_line", &S::is_line, "True when solved for a general line")
       .def_property_readonly("line", &S::line, "the line (one segment for a uniform cable)")
+      .def_property_readonly("has_contact", &S::has_contact, "True when a grounded length rests on the seabed")
+      .def_property_readonly("grounded_length_m", &S::grounded_length_m,
+                             "unstretched grounded length L_g from end A [m]; 0 without contact")
+      .def_property_readonly("anchor_horizontal_force_n", &S::anchor_horizontal_force_n,
+                             "horizontal force on the anchor, H less the seabed friction [N]")
       .def_property_readonly("lowest_point_s_m", &S::lowest_point_s_m, "arc length of the lowest point [m]")
       .def("vertical_force_n", [](const S& st, py::array_t<double, py::array::forcecast> s) {
              return at_stations(s, [&](double x) { return st.vertical_force_n(x); }); },
