@@ -252,19 +252,31 @@ void polish(const FeMatrices& matrices, const ShiftInvertOperator& op, FeEigenSo
 // targets the lowest modes (K is positive definite for a taut chain); if it is singular (a chain
 // with a zero-stiffness mode), the shift is moved below the bottom of the spectrum, and the move
 // reported.
+// A guess in the standard form's coordinates, y = L^T x (empty without a usable guess).
+Vector standard_form_guess(const Vector* guess, const MassFactor& factor, Eigen::Index rows) {
+  Vector y;
+  if (!guess || guess->size() != rows) return y;
+  y.resize(rows);
+  factor.lower_transpose(guess->data(), y.data());
+  return y;
+}
+
 void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, double tolerance,
-                       int max_restarts, LanczosWorkspace& workspace, FeEigenSolution& out) {
+                       int max_restarts, LanczosWorkspace& workspace, const Vector* guess,
+                       FeEigenSolution& out) {
   ShiftInvertOperator op(matrices.stiffness, matrices.mass);
   const MassFactor factor(matrices.mass, matrices.dofs_per_node);
   StandardFormOperator standard(op, factor);
   const SymmetricOperator apply = [&standard](const double* x, double* y) { standard.perform_op(x, y); };
+  const Vector start_guess = standard_form_guess(guess, factor, standard.rows());
   double sigma = 0.0;
   for (int attempt = 0; attempt < 4; ++attempt) {
     try {
       standard.set_shift(sigma);
       const auto start = Clock::now();
-      LanczosResult lanczos = largest_magnitude_eigenpairs(apply, standard.rows(), modes, subspace,
-                                                                 tolerance, max_restarts, workspace);
+      LanczosResult lanczos =
+          largest_magnitude_eigenpairs(apply, standard.rows(), modes, subspace, tolerance, max_restarts,
+                                       workspace, start_guess.size() > 0 ? start_guess.data() : nullptr);
       out.iteration_time_s += seconds_since(start);
       out.restarts += lanczos.restarts;
       out.operations += lanczos.operations;
@@ -319,6 +331,23 @@ void prove_mode_count(const FeMatrices& matrices, int modes, FeEigenSolution& ou
 
 }  // namespace
 
+Vector mode_sum_guess(const Eigen::MatrixXd& modes, int dofs_per_node, Eigen::Index rows) {
+  const Vector sum = modes.rowwise().sum();
+  if (sum.size() == rows) return sum;
+  const Eigen::Index d = dofs_per_node, coarse_nodes = sum.size() / d;  // free nodes 1 .. Nc - 1
+  if (sum.size() % d != 0 || rows != d * (2 * coarse_nodes + 1)) return {};
+  Vector fine = Vector::Zero(rows);
+  // Fine free node f (1-based) is coarse node f / 2 when f is even, else the mean of its two
+  // coarse neighbours; coarse node c (0 and Nc fixed, so zero) is free unknown block c - 1.
+  auto coarse = [&](Eigen::Index c, Eigen::Index dof) {
+    return c >= 1 && c <= coarse_nodes ? sum[(c - 1) * d + dof] : 0.0;
+  };
+  for (Eigen::Index f = 1; f <= 2 * coarse_nodes + 1; ++f)
+    for (Eigen::Index dof = 0; dof < d; ++dof)
+      fine[(f - 1) * d + dof] = f % 2 == 0 ? coarse(f / 2, dof) : 0.5 * (coarse(f / 2, dof) + coarse(f / 2 + 1, dof));
+  return fine;
+}
+
 int count_eigenvalues_below(const FeMatrices& matrices, double shift) {
   BandedLdlt ldlt;
   if (!ldlt.factorize(matrices.stiffness, matrices.mass, shift)) return -1;
@@ -329,7 +358,8 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
                                    int modes,
                                    double tolerance,
                                    int max_restarts,
-                                   LanczosWorkspace* workspace) {
+                                   LanczosWorkspace* workspace,
+                                   const Vector* guess) {
   FeEigenSolution out;
   const auto n = static_cast<int>(matrices.stiffness.rows());
   if (modes <= 0) {
@@ -343,7 +373,8 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
     solve_dense(matrices, modes, out);
   } else {
     LanczosWorkspace own;
-    solve_iteratively(matrices, modes, subspace, tolerance, max_restarts, workspace ? *workspace : own, out);
+    solve_iteratively(matrices, modes, subspace, tolerance, max_restarts, workspace ? *workspace : own, guess,
+                      out);
   }
   if (out.termination != Termination::Converged) return out;
   if (dense) normalise_and_check(matrices, out);

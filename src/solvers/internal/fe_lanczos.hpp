@@ -51,13 +51,16 @@ struct LanczosResult {
 
 /// The `wanted` eigenpairs of largest magnitude of the symmetric operator `apply` of size `rows`,
 /// with a Krylov subspace of `subspace` vectors (clamped to [wanted + 1, rows]; wanted <= rows).
-/// The start vector is a fixed pseudo-random one, so runs are reproducible.
+/// The start vector is A r for a fixed pseudo-random r, so runs are reproducible; a `guess`
+/// (length `rows`, e.g. the sum of approximations to the wanted eigenvectors) replaces r but for a
+/// pseudo-random part of relative size 1e-6, which keeps every direction in the Krylov space.
 LanczosResult largest_magnitude_eigenpairs(const SymmetricOperator& apply,
                                            Eigen::Index rows,
                                            int wanted,
                                            int subspace,
                                            double tolerance,
                                            int max_restarts,
-                                           LanczosWorkspace& workspace);
+                                           LanczosWorkspace& workspace,
+                                           const double* guess = nullptr);
 
 }  // namespace catena::internal
