@@ -90,20 +90,19 @@ class MassFactor {
       y[i + 1] = l22_[node] * x[i + 1];
     }
   }
-  /// Y = L^{-T} X, column by column; L^{-1} = [1/l11, 0; -l21/(l11 l22), 1/l22] per node.
-  Eigen::MatrixXd inverse_transpose_times(const Eigen::MatrixXd& X) const {
-    Eigen::MatrixXd Y(X.rows(), X.cols());
+  /// X = L^{-T} X in place, column by column; L^{-1} = [1/l11, 0; -l21/(l11 l22), 1/l22] per
+  /// node.
+  void inverse_transpose_in_place(Eigen::MatrixXd& X) const {
     for (Eigen::Index c = 0; c < X.cols(); ++c) {
-      const double* x = X.col(c).data();
-      double* y = Y.col(c).data();
+      double* x = X.col(c).data();
       for (Eigen::Index node = 0, i = 0; node < nodes_; ++node, i += dofs_) {
-        y[i] = (1.0 / l11_[node]) * x[i];
+        const double second = dofs_ == 1 ? 0.0 : x[i + 1];
+        x[i] = (1.0 / l11_[node]) * x[i];
         if (dofs_ == 1) continue;
-        y[i] += (-l21_[node] / (l11_[node] * l22_[node])) * x[i + 1];
-        y[i + 1] = (1.0 / l22_[node]) * x[i + 1];
+        x[i] += (-l21_[node] / (l11_[node] * l22_[node])) * second;
+        x[i + 1] = (1.0 / l22_[node]) * second;
       }
     }
-    return Y;
   }
 
  private:
@@ -135,10 +134,10 @@ class StandardFormOperator {
   mutable Vector solved_;
 };
 
-// Residual and M-orthogonality of M-normalised eigenvectors.
-void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
-  const Eigen::MatrixXd K_phi = matrices.stiffness * out.eigenvectors;
-  const Eigen::MatrixXd M_phi = matrices.mass * out.eigenvectors;
+// Residual and M-orthogonality of M-normalised eigenvectors, given M phi. K phi is formed a
+// column at a time (one vector, not an n x k matrix of fresh pages).
+void check_eigenpairs(const FeMatrices& matrices, const Eigen::MatrixXd& M_phi, FeEigenSolution& out) {
+  Vector K_phi(out.eigenvectors.rows());
   out.max_residual = 0.0;
   out.max_backward_error = 0.0;
   // ||.||_1 of a symmetric matrix: the largest absolute column sum.
@@ -153,8 +152,9 @@ void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
   };
   const double k_norm = norm1(matrices.stiffness), m_norm = norm1(matrices.mass);
   for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
-    const double denominator = K_phi.col(i).norm();
-    const double r = (K_phi.col(i) - out.eigenvalues[i] * M_phi.col(i)).norm();
+    K_phi.noalias() = matrices.stiffness * out.eigenvectors.col(i);
+    const double denominator = K_phi.norm();
+    const double r = (K_phi - out.eigenvalues[i] * M_phi.col(i)).norm();
     out.max_residual = std::max(out.max_residual, denominator > 0.0 ? r / denominator : r);
     out.max_backward_error = std::max(
         out.max_backward_error,
@@ -165,17 +165,30 @@ void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
       (gram - Eigen::MatrixXd::Identity(gram.rows(), gram.cols())).cwiseAbs().maxCoeff();
 }
 
+// The Lanczos subspace for `modes` modes of an operator with `unknowns` unknowns.
+int lanczos_subspace(Eigen::Index unknowns, int modes) {
+  return static_cast<int>(std::min<Eigen::Index>(unknowns, std::max(2 * modes + 1, modes + 20)));
+}
+
+// Small problems, and those asking for nearly every mode, are solved densely.
+bool solved_densely(Eigen::Index unknowns, int modes) {
+  return unknowns <= 64 || lanczos_subspace(unknowns, modes) <= modes;
+}
+
 // Normwise backward error at which the eigenpairs are as good as double precision allows.
 constexpr double kBackwardErrorGoal = 1e-14;
 
 // M-normalises the vectors (the Ritz vectors are M-orthonormal already; this removes rounding
-// drift) and measures residual, backward error and M-orthogonality.
+// drift) and measures residual, backward error and M-orthogonality. M phi is formed once and
+// scaled with phi.
 void normalise_and_check(const FeMatrices& matrices, FeEigenSolution& out) {
+  Eigen::MatrixXd M_phi = matrices.mass * out.eigenvectors;
   for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
-    const double norm2 = out.eigenvectors.col(i).dot(matrices.mass * out.eigenvectors.col(i));
-    out.eigenvectors.col(i) /= std::sqrt(norm2);
+    const double norm = std::sqrt(out.eigenvectors.col(i).dot(M_phi.col(i)));
+    out.eigenvectors.col(i) /= norm;
+    M_phi.col(i) /= norm;
   }
-  check_eigenpairs(matrices, out);
+  check_eigenpairs(matrices, M_phi, out);
 }
 
 // Subspace (inverse) iteration with Rayleigh-Ritz on the converged Ritz vectors, with the
@@ -216,8 +229,8 @@ void solve_dense(const FeMatrices& matrices, int modes, FeEigenSolution& out) {
 }
 
 
-// lambda = sigma + 1 / theta, ascending, with the vectors mapped back by L^{-T}. The Lanczos
-// vectors are released as soon as they are mapped (one n x k matrix less at the peak).
+// lambda = sigma + 1 / theta, ascending, with the vectors mapped back by L^{-T} in place (the
+// Lanczos vectors become the eigenvectors: no second n x k matrix).
 void take_ritz_pairs(LanczosResult&& lanczos, double sigma, const MassFactor& factor,
                      FeEigenSolution& out) {
   const auto count = lanczos.values.size();
@@ -227,8 +240,8 @@ void take_ritz_pairs(LanczosResult&& lanczos, double sigma, const MassFactor& fa
   std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return lambda(a) < lambda(b); });
   out.eigenvalues.resize(count);
   for (Eigen::Index i = 0; i < count; ++i) out.eigenvalues[i] = lambda(order[static_cast<std::size_t>(i)]);
-  out.eigenvectors = factor.inverse_transpose_times(lanczos.vectors);
-  lanczos.vectors = Eigen::MatrixXd();
+  factor.inverse_transpose_in_place(lanczos.vectors);
+  out.eigenvectors = std::move(lanczos.vectors);
   // Largest theta first is already ascending lambda unless the shift moved into the spectrum.
   if (!std::is_sorted(order.begin(), order.end())) {
     const Eigen::MatrixXd unsorted = out.eigenvectors;
@@ -331,6 +344,10 @@ void prove_mode_count(const FeMatrices& matrices, int modes, FeEigenSolution& ou
 
 }  // namespace
 
+void reserve_for_largest_solve(LanczosWorkspace& workspace, Eigen::Index unknowns, int modes) {
+  if (!solved_densely(unknowns, modes)) workspace.reserve(unknowns, lanczos_subspace(unknowns, modes));
+}
+
 Vector mode_sum_guess(const Eigen::MatrixXd& modes, int dofs_per_node, Eigen::Index rows) {
   const Vector sum = modes.rowwise().sum();
   if (sum.size() == rows) return sum;
@@ -367,8 +384,8 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
     out.message = "no modes asked";
     return out;
   }
-  const int subspace = std::min(n, std::max(2 * modes + 1, modes + 20));
-  const bool dense = n <= 64 || subspace <= modes;
+  const int subspace = lanczos_subspace(n, modes);
+  const bool dense = solved_densely(n, modes);
   if (dense) {
     solve_dense(matrices, modes, out);
   } else {

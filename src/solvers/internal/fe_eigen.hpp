@@ -56,6 +56,10 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
                                    LanczosWorkspace* workspace = nullptr,
                                    const Vector* guess = nullptr);
 
+/// Makes `workspace` ready for the largest of several solves of `modes` modes (the largest has
+/// `unknowns` unknowns), so that the smaller ones use the same memory.
+void reserve_for_largest_solve(LanczosWorkspace& workspace, Eigen::Index unknowns, int modes);
+
 /// A start vector for the eigen solve of a level with `rows` unknowns from the eigenvectors
 /// `modes` of another level of the same chain: their sum, on the same mesh as it is, on a mesh
 /// twice as fine interpolated linearly (the coarse nodes are every other fine node; the end

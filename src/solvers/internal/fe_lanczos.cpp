@@ -12,7 +12,11 @@ namespace catena::internal {
 
 void LanczosWorkspace::reserve(Eigen::Index rows, int subspace) {
   const auto basis_size = static_cast<std::size_t>(rows) * static_cast<std::size_t>(subspace);
-  if (basis_.size() < basis_size) basis_.resize(basis_size);
+  if (basis_capacity_ < basis_size) {
+    basis_.reset();  // release before allocating: the old and new bases are never both alive
+    basis_ = std::make_unique_for_overwrite<double[]>(basis_size);
+    basis_capacity_ = basis_size;
+  }
   if (residual_.size() < static_cast<std::size_t>(rows)) residual_.resize(static_cast<std::size_t>(rows));
   if (coefficients_.size() < static_cast<std::size_t>(subspace)) {
     coefficients_.resize(static_cast<std::size_t>(subspace));

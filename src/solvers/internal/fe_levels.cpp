@@ -159,7 +159,11 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
                                      WorkMeter* meter) {
   FePlaneEigenReport report;
   long solved = 0;
-  LanczosWorkspace workspace;  // one basis for every level of this plane
+  LanczosWorkspace workspace;  // one basis for every level of this plane, sized for the largest
+  Eigen::Index largest = 0;
+  for (const auto& row : levels)
+    for (const FeLevel& level : row) largest = std::max<Eigen::Index>(largest, fe_unknowns(plane, level.chain.elements));
+  reserve_for_largest_solve(workspace, largest, modes);
   const FeEigenSolution* previous = nullptr;  // the last converged level: its modes start the next
   for (auto& row : levels) {
     for (FeLevel& level : row) {
