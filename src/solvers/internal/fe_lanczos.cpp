@@ -35,9 +35,18 @@ using BasisMap = Eigen::Map<Eigen::MatrixXd>;
 // 1/sqrt(2): a Gram-Schmidt pass that keeps less than this fraction of the norm has cancelled
 // enough that rounding may have left components along the basis; one more pass removes them.
 constexpr double kKeptNormForOnePass = 0.70710678118654752;
-// Early convergence checks from this many rows per subspace vector squared: the m x m eigenproblem
-// (~10 m^3 flops) then costs a few percent of a step's Gram-Schmidt pass (~4 rows m flops).
+// Early convergence checks every step from this many rows per subspace vector squared: the m x m
+// eigenproblem (~10 m^3 flops) then costs a few percent of a step's Gram-Schmidt pass (~4 rows m
+// flops). Smaller operators are checked every ceil(64 m^2 / rows) steps, the same share of the
+// cost, and not at all when that stride leaves no step to save.
 constexpr Eigen::Index kEarlyCheckRowsPerSubspaceSquared = 64;
+
+// Steps between early convergence checks (0: none before the subspace is full).
+int early_check_stride(Eigen::Index rows, int subspace, int wanted) {
+  const Eigen::Index work = kEarlyCheckRowsPerSubspaceSquared * subspace * subspace;
+  const auto stride = static_cast<int>((work + rows - 1) / rows);
+  return stride < subspace - wanted - 1 ? stride : 0;
+}
 // Rows of the basis rotated at a time in a restart (the block fits in cache).
 constexpr Eigen::Index kRotationRows = 512;
 
@@ -89,9 +98,9 @@ struct Run {
   // The size of the Krylov decomposition: `subspace`, or fewer when the wanted pairs converged
   // before the subspace was full.
   int size;
-  // Test for convergence after every step, not only when the subspace is full (for large
-  // operators, where a step costs far more than the small eigenproblem).
-  bool early_checks;
+  // Test for convergence every `check_stride` steps, not only when the subspace is full (0: only
+  // then), see early_check_stride.
+  int check_stride;
   double residual_norm = 0.0;  // beta_m
   std::uint64_t seed = 0x5eed5eedULL;
   long operations = 0;
@@ -138,12 +147,12 @@ int converged_count(const RitzPairs& ritz, int wanted, double tolerance) {
   return count;
 }
 
-// After step j (new vector j + 1 with coupling beta): with early checks, whether the wanted Ritz
+// After step j (new vector j + 1 with coupling beta): on a checked step, whether the wanted Ritz
 // pairs of the first j + 1 vectors have converged already; if so the decomposition ends there,
 // vector j + 1 standing for the residual direction. A breakdown (beta = 0) is never a stop: the
 // invariant subspace found may lack some wanted eigenvalues.
 bool converged_early(Run& run, int j, double beta) {
-  if (!run.early_checks || j + 1 <= run.wanted) return false;
+  if (run.check_stride == 0 || j + 1 <= run.wanted || (j + 1 - run.wanted) % run.check_stride != 0) return false;
   run.size = j + 1;
   run.residual_norm = beta;
   if (converged_count(ritz_pairs(run), run.wanted, run.tolerance) >= run.wanted) return true;
@@ -254,7 +263,7 @@ LanczosResult largest_magnitude_eigenpairs(const SymmetricOperator& apply, Eigen
   workspace.reserve(rows, m);
   Run run{apply, workspace.basis(), workspace.residual(), workspace.coefficients(), workspace.correction(),
           workspace.projection(), workspace.block(), m, wanted, tolerance, m,
-          rows >= kEarlyCheckRowsPerSubspaceSquared * m * m};
+          early_check_stride(rows, m, wanted)};
   run.block.resize(std::min(kRotationRows, rows), m);
   start(run, guess);
   LanczosResult result;
