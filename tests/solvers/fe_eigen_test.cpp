@@ -115,5 +115,27 @@ TEST(FeEigen, ModesAreMassOrthogonalWithSmallResidualAndBackwardError) {
   EXPECT_LE(bar.max_orthogonality_error, kMaxOrthogonalityError);
 }
 
+TEST(FeEigen, ModeSumGuessInterpolatesOntoTheMeshTwiceAsFine) {
+  // Two in-plane modes on 3 free coarse nodes (N = 4): the guess sums them; on N = 8 (7 free
+  // nodes) the even fine nodes take the coarse values, the odd ones the mean of their neighbours,
+  // with the fixed end nodes at zero.
+  Eigen::MatrixXd modes(6, 2);
+  modes.col(0) << 1.0, 2.0, 3.0, 4.0, 5.0, 6.0;
+  modes.col(1) << 1.0, 0.0, 1.0, 0.0, 1.0, 0.0;
+  const Vector same = internal::mode_sum_guess(modes, 2, 6);
+  ASSERT_EQ(same.size(), 6);
+  EXPECT_EQ(same[0], 2.0);
+  EXPECT_EQ(same[5], 6.0);
+  const Vector fine = internal::mode_sum_guess(modes, 2, 14);
+  ASSERT_EQ(fine.size(), 14);
+  // The sums (x, z) at coarse nodes 1, 2, 3 are (2, 2), (4, 4), (6, 6); fine nodes 1..7:
+  const std::vector<double> fine_x = {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 3.0}, fine_z = fine_x;
+  for (int node = 0; node < 7; ++node) {
+    EXPECT_DOUBLE_EQ(fine[2 * node], fine_x[static_cast<std::size_t>(node)]) << "x at fine node " << node + 1;
+    EXPECT_DOUBLE_EQ(fine[2 * node + 1], fine_z[static_cast<std::size_t>(node)]) << "z at fine node " << node + 1;
+  }
+  EXPECT_EQ(internal::mode_sum_guess(modes, 2, 10).size(), 0);
+}
+
 }  // namespace
 }  // namespace catena

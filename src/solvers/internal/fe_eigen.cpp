@@ -90,20 +90,19 @@ class MassFactor {
       y[i + 1] = l22_[node] * x[i + 1];
     }
   }
-  /// Y = L^{-T} X, column by column; L^{-1} = [1/l11, 0; -l21/(l11 l22), 1/l22] per node.
-  Eigen::MatrixXd inverse_transpose_times(const Eigen::MatrixXd& X) const {
-    Eigen::MatrixXd Y(X.rows(), X.cols());
+  /// X = L^{-T} X in place, column by column; L^{-1} = [1/l11, 0; -l21/(l11 l22), 1/l22] per
+  /// node.
+  void inverse_transpose_in_place(Eigen::MatrixXd& X) const {
     for (Eigen::Index c = 0; c < X.cols(); ++c) {
-      const double* x = X.col(c).data();
-      double* y = Y.col(c).data();
+      double* x = X.col(c).data();
       for (Eigen::Index node = 0, i = 0; node < nodes_; ++node, i += dofs_) {
-        y[i] = (1.0 / l11_[node]) * x[i];
+        const double second = dofs_ == 1 ? 0.0 : x[i + 1];
+        x[i] = (1.0 / l11_[node]) * x[i];
         if (dofs_ == 1) continue;
-        y[i] += (-l21_[node] / (l11_[node] * l22_[node])) * x[i + 1];
-        y[i + 1] = (1.0 / l22_[node]) * x[i + 1];
+        x[i] += (-l21_[node] / (l11_[node] * l22_[node])) * second;
+        x[i + 1] = (1.0 / l22_[node]) * second;
       }
     }
-    return Y;
   }
 
  private:
@@ -135,10 +134,10 @@ class StandardFormOperator {
   mutable Vector solved_;
 };
 
-// Residual and M-orthogonality of M-normalised eigenvectors.
-void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
-  const Eigen::MatrixXd K_phi = matrices.stiffness * out.eigenvectors;
-  const Eigen::MatrixXd M_phi = matrices.mass * out.eigenvectors;
+// Residual and M-orthogonality of M-normalised eigenvectors, given M phi. K phi is formed a
+// column at a time (one vector, not an n x k matrix of fresh pages).
+void check_eigenpairs(const FeMatrices& matrices, const Eigen::MatrixXd& M_phi, FeEigenSolution& out) {
+  Vector K_phi(out.eigenvectors.rows());
   out.max_residual = 0.0;
   out.max_backward_error = 0.0;
   // ||.||_1 of a symmetric matrix: the largest absolute column sum.
@@ -153,8 +152,9 @@ void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
   };
   const double k_norm = norm1(matrices.stiffness), m_norm = norm1(matrices.mass);
   for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
-    const double denominator = K_phi.col(i).norm();
-    const double r = (K_phi.col(i) - out.eigenvalues[i] * M_phi.col(i)).norm();
+    K_phi.noalias() = matrices.stiffness * out.eigenvectors.col(i);
+    const double denominator = K_phi.norm();
+    const double r = (K_phi - out.eigenvalues[i] * M_phi.col(i)).norm();
     out.max_residual = std::max(out.max_residual, denominator > 0.0 ? r / denominator : r);
     out.max_backward_error = std::max(
         out.max_backward_error,
@@ -165,17 +165,30 @@ void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
       (gram - Eigen::MatrixXd::Identity(gram.rows(), gram.cols())).cwiseAbs().maxCoeff();
 }
 
+// The Lanczos subspace for `modes` modes of an operator with `unknowns` unknowns.
+int lanczos_subspace(Eigen::Index unknowns, int modes) {
+  return static_cast<int>(std::min<Eigen::Index>(unknowns, std::max(2 * modes + 1, modes + 20)));
+}
+
+// Small problems, and those asking for nearly every mode, are solved densely.
+bool solved_densely(Eigen::Index unknowns, int modes) {
+  return unknowns <= 64 || lanczos_subspace(unknowns, modes) <= modes;
+}
+
 // Normwise backward error at which the eigenpairs are as good as double precision allows.
 constexpr double kBackwardErrorGoal = 1e-14;
 
 // M-normalises the vectors (the Ritz vectors are M-orthonormal already; this removes rounding
-// drift) and measures residual, backward error and M-orthogonality.
+// drift) and measures residual, backward error and M-orthogonality. M phi is formed once and
+// scaled with phi.
 void normalise_and_check(const FeMatrices& matrices, FeEigenSolution& out) {
+  Eigen::MatrixXd M_phi = matrices.mass * out.eigenvectors;
   for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
-    const double norm2 = out.eigenvectors.col(i).dot(matrices.mass * out.eigenvectors.col(i));
-    out.eigenvectors.col(i) /= std::sqrt(norm2);
+    const double norm = std::sqrt(out.eigenvectors.col(i).dot(M_phi.col(i)));
+    out.eigenvectors.col(i) /= norm;
+    M_phi.col(i) /= norm;
   }
-  check_eigenpairs(matrices, out);
+  check_eigenpairs(matrices, M_phi, out);
 }
 
 // Subspace (inverse) iteration with Rayleigh-Ritz on the converged Ritz vectors, with the
@@ -216,8 +229,8 @@ void solve_dense(const FeMatrices& matrices, int modes, FeEigenSolution& out) {
 }
 
 
-// lambda = sigma + 1 / theta, ascending, with the vectors mapped back by L^{-T}. The Lanczos
-// vectors are released as soon as they are mapped (one n x k matrix less at the peak).
+// lambda = sigma + 1 / theta, ascending, with the vectors mapped back by L^{-T} in place (the
+// Lanczos vectors become the eigenvectors: no second n x k matrix).
 void take_ritz_pairs(LanczosResult&& lanczos, double sigma, const MassFactor& factor,
                      FeEigenSolution& out) {
   const auto count = lanczos.values.size();
@@ -227,8 +240,8 @@ void take_ritz_pairs(LanczosResult&& lanczos, double sigma, const MassFactor& fa
   std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return lambda(a) < lambda(b); });
   out.eigenvalues.resize(count);
   for (Eigen::Index i = 0; i < count; ++i) out.eigenvalues[i] = lambda(order[static_cast<std::size_t>(i)]);
-  out.eigenvectors = factor.inverse_transpose_times(lanczos.vectors);
-  lanczos.vectors = Eigen::MatrixXd();
+  factor.inverse_transpose_in_place(lanczos.vectors);
+  out.eigenvectors = std::move(lanczos.vectors);
   // Largest theta first is already ascending lambda unless the shift moved into the spectrum.
   if (!std::is_sorted(order.begin(), order.end())) {
     const Eigen::MatrixXd unsorted = out.eigenvectors;
@@ -252,19 +265,31 @@ void polish(const FeMatrices& matrices, const ShiftInvertOperator& op, FeEigenSo
 // targets the lowest modes (K is positive definite for a taut chain); if it is singular (a chain
 // with a zero-stiffness mode), the shift is moved below the bottom of the spectrum, and the move
 // reported.
+// A guess in the standard form's coordinates, y = L^T x (empty without a usable guess).
+Vector standard_form_guess(const Vector* guess, const MassFactor& factor, Eigen::Index rows) {
+  Vector y;
+  if (!guess || guess->size() != rows) return y;
+  y.resize(rows);
+  factor.lower_transpose(guess->data(), y.data());
+  return y;
+}
+
 void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, double tolerance,
-                       int max_restarts, LanczosWorkspace& workspace, FeEigenSolution& out) {
+                       int max_restarts, LanczosWorkspace& workspace, const Vector* guess,
+                       FeEigenSolution& out) {
   ShiftInvertOperator op(matrices.stiffness, matrices.mass);
   const MassFactor factor(matrices.mass, matrices.dofs_per_node);
   StandardFormOperator standard(op, factor);
   const SymmetricOperator apply = [&standard](const double* x, double* y) { standard.perform_op(x, y); };
+  const Vector start_guess = standard_form_guess(guess, factor, standard.rows());
   double sigma = 0.0;
   for (int attempt = 0; attempt < 4; ++attempt) {
     try {
       standard.set_shift(sigma);
       const auto start = Clock::now();
-      LanczosResult lanczos = largest_magnitude_eigenpairs(apply, standard.rows(), modes, subspace,
-                                                                 tolerance, max_restarts, workspace);
+      LanczosResult lanczos =
+          largest_magnitude_eigenpairs(apply, standard.rows(), modes, subspace, tolerance, max_restarts,
+                                       workspace, start_guess.size() > 0 ? start_guess.data() : nullptr);
       out.iteration_time_s += seconds_since(start);
       out.restarts += lanczos.restarts;
       out.operations += lanczos.operations;
@@ -319,6 +344,27 @@ void prove_mode_count(const FeMatrices& matrices, int modes, FeEigenSolution& ou
 
 }  // namespace
 
+void reserve_for_largest_solve(LanczosWorkspace& workspace, Eigen::Index unknowns, int modes) {
+  if (!solved_densely(unknowns, modes)) workspace.reserve(unknowns, lanczos_subspace(unknowns, modes));
+}
+
+Vector mode_sum_guess(const Eigen::MatrixXd& modes, int dofs_per_node, Eigen::Index rows) {
+  const Vector sum = modes.rowwise().sum();
+  if (sum.size() == rows) return sum;
+  const Eigen::Index d = dofs_per_node, coarse_nodes = sum.size() / d;  // free nodes 1 .. Nc - 1
+  if (sum.size() % d != 0 || rows != d * (2 * coarse_nodes + 1)) return {};
+  Vector fine = Vector::Zero(rows);
+  // Fine free node f (1-based) is coarse node f / 2 when f is even, else the mean of its two
+  // coarse neighbours; coarse node c (0 and Nc fixed, so zero) is free unknown block c - 1.
+  auto coarse = [&](Eigen::Index c, Eigen::Index dof) {
+    return c >= 1 && c <= coarse_nodes ? sum[(c - 1) * d + dof] : 0.0;
+  };
+  for (Eigen::Index f = 1; f <= 2 * coarse_nodes + 1; ++f)
+    for (Eigen::Index dof = 0; dof < d; ++dof)
+      fine[(f - 1) * d + dof] = f % 2 == 0 ? coarse(f / 2, dof) : 0.5 * (coarse(f / 2, dof) + coarse(f / 2 + 1, dof));
+  return fine;
+}
+
 int count_eigenvalues_below(const FeMatrices& matrices, double shift) {
   BandedLdlt ldlt;
   if (!ldlt.factorize(matrices.stiffness, matrices.mass, shift)) return -1;
@@ -329,7 +375,8 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
                                    int modes,
                                    double tolerance,
                                    int max_restarts,
-                                   LanczosWorkspace* workspace) {
+                                   LanczosWorkspace* workspace,
+                                   const Vector* guess) {
   FeEigenSolution out;
   const auto n = static_cast<int>(matrices.stiffness.rows());
   if (modes <= 0) {
@@ -337,13 +384,14 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
     out.message = "no modes asked";
     return out;
   }
-  const int subspace = std::min(n, std::max(2 * modes + 1, modes + 20));
-  const bool dense = n <= 64 || subspace <= modes;
+  const int subspace = lanczos_subspace(n, modes);
+  const bool dense = solved_densely(n, modes);
   if (dense) {
     solve_dense(matrices, modes, out);
   } else {
     LanczosWorkspace own;
-    solve_iteratively(matrices, modes, subspace, tolerance, max_restarts, workspace ? *workspace : own, out);
+    solve_iteratively(matrices, modes, subspace, tolerance, max_restarts, workspace ? *workspace : own, guess,
+                      out);
   }
   if (out.termination != Termination::Converged) return out;
   if (dense) normalise_and_check(matrices, out);

@@ -47,11 +47,24 @@ struct FeEigenSolution {
 /// Lowest `modes` eigenpairs. `modes` must be < number of unknowns (the caller validates).
 /// `workspace` (optional) holds the Lanczos buffers between calls: pass the same one to the
 /// solves of one fe run (mesh and penalty levels) so that they allocate the basis once.
+/// `guess` (optional, one value per unknown) starts the Lanczos iteration near the wanted
+/// eigenvectors (mode_sum_guess); convergence is tested as without it.
 FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
                                    int modes,
                                    double tolerance,
                                    int max_restarts,
-                                   LanczosWorkspace* workspace = nullptr);
+                                   LanczosWorkspace* workspace = nullptr,
+                                   const Vector* guess = nullptr);
+
+/// Makes `workspace` ready for the largest of several solves of `modes` modes (the largest has
+/// `unknowns` unknowns), so that the smaller ones use the same memory.
+void reserve_for_largest_solve(LanczosWorkspace& workspace, Eigen::Index unknowns, int modes);
+
+/// A start vector for the eigen solve of a level with `rows` unknowns from the eigenvectors
+/// `modes` of another level of the same chain: their sum, on the same mesh as it is, on a mesh
+/// twice as fine interpolated linearly (the coarse nodes are every other fine node; the end
+/// nodes are fixed). Empty when the sizes fit neither.
+Vector mode_sum_guess(const Eigen::MatrixXd& modes, int dofs_per_node, Eigen::Index rows);
 
 /// Number of eigenvalues of K phi = lambda M phi below `shift` (negative pivots of
 /// LDLT(K - shift M)); -1 when the factorisation fails.

@@ -12,7 +12,11 @@ namespace catena::internal {
 
 void LanczosWorkspace::reserve(Eigen::Index rows, int subspace) {
   const auto basis_size = static_cast<std::size_t>(rows) * static_cast<std::size_t>(subspace);
-  if (basis_.size() < basis_size) basis_.resize(basis_size);
+  if (basis_capacity_ < basis_size) {
+    basis_.reset();  // release before allocating: the old and new bases are never both alive
+    basis_ = std::make_unique_for_overwrite<double[]>(basis_size);
+    basis_capacity_ = basis_size;
+  }
   if (residual_.size() < static_cast<std::size_t>(rows)) residual_.resize(static_cast<std::size_t>(rows));
   if (coefficients_.size() < static_cast<std::size_t>(subspace)) {
     coefficients_.resize(static_cast<std::size_t>(subspace));
@@ -31,6 +35,18 @@ using BasisMap = Eigen::Map<Eigen::MatrixXd>;
 // 1/sqrt(2): a Gram-Schmidt pass that keeps less than this fraction of the norm has cancelled
 // enough that rounding may have left components along the basis; one more pass removes them.
 constexpr double kKeptNormForOnePass = 0.70710678118654752;
+// Early convergence checks every step from this many rows per subspace vector squared: the m x m
+// eigenproblem (~10 m^3 flops) then costs a few percent of a step's Gram-Schmidt pass (~4 rows m
+// flops). Smaller operators are checked every ceil(64 m^2 / rows) steps, the same share of the
+// cost, and not at all when that stride leaves no step to save.
+constexpr Eigen::Index kEarlyCheckRowsPerSubspaceSquared = 64;
+
+// Steps between early convergence checks (0: none before the subspace is full).
+int early_check_stride(Eigen::Index rows, int subspace, int wanted) {
+  const Eigen::Index work = kEarlyCheckRowsPerSubspaceSquared * subspace * subspace;
+  const auto stride = static_cast<int>((work + rows - 1) / rows);
+  return stride < subspace - wanted - 1 ? stride : 0;
+}
 // Rows of the basis rotated at a time in a restart (the block fits in cache).
 constexpr Eigen::Index kRotationRows = 512;
 
@@ -77,6 +93,14 @@ struct Run {
   Matrix& projection;
   Matrix& block;
   int subspace;
+  int wanted;
+  double tolerance;
+  // The size of the Krylov decomposition: `subspace`, or fewer when the wanted pairs converged
+  // before the subspace was full.
+  int size;
+  // Test for convergence every `check_stride` steps, not only when the subspace is full (0: only
+  // then), see early_check_stride.
+  int check_stride;
   double residual_norm = 0.0;  // beta_m
   std::uint64_t seed = 0x5eed5eedULL;
   long operations = 0;
@@ -88,6 +112,52 @@ void fresh_direction(Run& run, Eigen::Index columns, Eigen::Ref<Eigen::VectorXd>
   orthogonalise(run.basis, columns, w, run.coefficients, run.correction);
   orthogonalise(run.basis, columns, w, run.coefficients, run.correction);
   w.normalize();
+}
+
+// The Ritz pairs of the projection, ordered by decreasing magnitude.
+struct RitzPairs {
+  Eigen::VectorXd values;   // ordered
+  Matrix vectors;           // columns in the same order
+  Eigen::VectorXd residuals;  // |beta_m s_mi|
+};
+
+RitzPairs ritz_pairs(const Run& run) {
+  const int m = run.size;
+  Eigen::SelfAdjointEigenSolver<Matrix> eigen(run.projection.topLeftCorner(m, m));
+  std::vector<int> order(static_cast<std::size_t>(m));
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return std::abs(eigen.eigenvalues()[a]) > std::abs(eigen.eigenvalues()[b]);
+  });
+  RitzPairs ritz{Eigen::VectorXd(m), Matrix(m, m), Eigen::VectorXd(m)};
+  for (int i = 0; i < m; ++i) {
+    ritz.values[i] = eigen.eigenvalues()[order[static_cast<std::size_t>(i)]];
+    ritz.vectors.col(i) = eigen.eigenvectors().col(order[static_cast<std::size_t>(i)]);
+    ritz.residuals[i] = std::abs(run.residual_norm * ritz.vectors(m - 1, i));
+  }
+  return ritz;
+}
+
+int converged_count(const RitzPairs& ritz, int wanted, double tolerance) {
+  // Below eps^(2/3) a Ritz value's magnitude is no scale for its residual.
+  const double floor = std::pow(std::numeric_limits<double>::epsilon(), 2.0 / 3.0);
+  int count = 0;
+  for (int i = 0; i < wanted; ++i)
+    if (ritz.residuals[i] < tolerance * std::max(floor, std::abs(ritz.values[i]))) ++count;
+  return count;
+}
+
+// After step j (new vector j + 1 with coupling beta): on a checked step, whether the wanted Ritz
+// pairs of the first j + 1 vectors have converged already; if so the decomposition ends there,
+// vector j + 1 standing for the residual direction. A breakdown (beta = 0) is never a stop: the
+// invariant subspace found may lack some wanted eigenvalues.
+bool converged_early(Run& run, int j, double beta) {
+  if (run.check_stride == 0 || j + 1 <= run.wanted || (j + 1 - run.wanted) % run.check_stride != 0) return false;
+  run.size = j + 1;
+  run.residual_norm = beta;
+  if (converged_count(ritz_pairs(run), run.wanted, run.tolerance) >= run.wanted) return true;
+  run.size = run.subspace;
+  return false;
 }
 
 // Lanczos steps from basis vector `from` to the end of the subspace. Column j + 1 (or the
@@ -122,44 +192,12 @@ void extend(Run& run, int from) {
     }
     if (beta > 0.0) {
       w /= beta;
+      if (converged_early(run, j, beta)) return;
     } else {
       fresh_direction(run, j + 1, w);
     }
     run.projection(j, j + 1) = run.projection(j + 1, j) = beta;
   }
-}
-
-// The Ritz pairs of the projection, ordered by decreasing magnitude.
-struct RitzPairs {
-  Eigen::VectorXd values;   // ordered
-  Matrix vectors;           // columns in the same order
-  Eigen::VectorXd residuals;  // |beta_m s_mi|
-};
-
-RitzPairs ritz_pairs(const Run& run) {
-  const int m = run.subspace;
-  Eigen::SelfAdjointEigenSolver<Matrix> eigen(run.projection.topLeftCorner(m, m));
-  std::vector<int> order(static_cast<std::size_t>(m));
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return std::abs(eigen.eigenvalues()[a]) > std::abs(eigen.eigenvalues()[b]);
-  });
-  RitzPairs ritz{Eigen::VectorXd(m), Matrix(m, m), Eigen::VectorXd(m)};
-  for (int i = 0; i < m; ++i) {
-    ritz.values[i] = eigen.eigenvalues()[order[static_cast<std::size_t>(i)]];
-    ritz.vectors.col(i) = eigen.eigenvectors().col(order[static_cast<std::size_t>(i)]);
-    ritz.residuals[i] = std::abs(run.residual_norm * ritz.vectors(m - 1, i));
-  }
-  return ritz;
-}
-
-int converged_count(const RitzPairs& ritz, int wanted, double tolerance) {
-  // Below eps^(2/3) a Ritz value's magnitude is no scale for its residual.
-  const double floor = std::pow(std::numeric_limits<double>::epsilon(), 2.0 / 3.0);
-  int count = 0;
-  for (int i = 0; i < wanted; ++i)
-    if (ritz.residuals[i] < tolerance * std::max(floor, std::abs(ritz.values[i]))) ++count;
-  return count;
 }
 
 // Replaces the first `columns` basis vectors by basis * s (the Ritz vectors), in place, a block of
@@ -195,11 +233,21 @@ int kept_vectors(int wanted, int converged, int subspace) {
   return std::max(1, std::min(kept, subspace - 1));
 }
 
-// The start vector: A r for a fixed pseudo-random r. For a shift-invert operator this damps the
-// components along eigenvalues far from the shift (a stiff chain's axial modes) by their tiny
-// theta, which Ritz vectors would otherwise carry at the size of the convergence tolerance.
-void start(Run& run) {
+// Relative size of the pseudo-random part mixed into a guessed start vector.
+constexpr double kGuessPerturbation = 1e-6;
+
+// The start vector: A r for r a fixed pseudo-random vector or the guess. For a shift-invert
+// operator this damps the components along eigenvalues far from the shift (a stiff chain's axial
+// modes) by their tiny theta, which Ritz vectors would otherwise carry at the size of the
+// convergence tolerance.
+void start(Run& run, const double* guess) {
   fill_pseudo_random(run.residual, run.seed);
+  if (guess) {
+    const Eigen::Map<const Eigen::VectorXd> g(guess, run.residual.size());
+    const double g_norm = g.norm(), r_norm = run.residual.norm();
+    if (g_norm > 0.0 && std::isfinite(g_norm))
+      run.residual = g / g_norm + (kGuessPerturbation / r_norm) * run.residual;
+  }
   run.apply(run.residual.data(), run.basis.col(0).data());
   ++run.operations;
   if (!(run.basis.col(0).norm() > 0.0)) run.basis.col(0) = run.residual;
@@ -210,13 +258,14 @@ void start(Run& run) {
 
 LanczosResult largest_magnitude_eigenpairs(const SymmetricOperator& apply, Eigen::Index rows, int wanted,
                                            int subspace, double tolerance, int max_restarts,
-                                           LanczosWorkspace& workspace) {
+                                           LanczosWorkspace& workspace, const double* guess) {
   const int m = static_cast<int>(std::min<Eigen::Index>(rows, std::max(subspace, wanted + 1)));
   workspace.reserve(rows, m);
   Run run{apply, workspace.basis(), workspace.residual(), workspace.coefficients(), workspace.correction(),
-          workspace.projection(), workspace.block(), m};
+          workspace.projection(), workspace.block(), m, wanted, tolerance, m,
+          early_check_stride(rows, m, wanted)};
   run.block.resize(std::min(kRotationRows, rows), m);
-  start(run);
+  start(run, guess);
   LanczosResult result;
   int from = 0;
   for (;; ++result.restarts) {
@@ -226,7 +275,7 @@ LanczosResult largest_magnitude_eigenpairs(const SymmetricOperator& apply, Eigen
     if (converged >= wanted || m == rows || result.restarts >= max_restarts) {
       result.converged = converged >= wanted;
       result.values = ritz.values.head(wanted);
-      result.vectors.noalias() = run.basis * ritz.vectors.leftCols(wanted);
+      result.vectors.noalias() = run.basis.leftCols(run.size) * ritz.vectors.leftCols(wanted);
       break;
     }
     from = kept_vectors(wanted, converged, m);

@@ -13,17 +13,20 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace catena::internal {
 
 /// Buffers of one Lanczos run, kept between runs: the n x m basis, the projected matrix and
-/// work vectors. Growing reallocates; a run of the same or smaller size reuses the memory.
+/// work vectors. Growing reallocates, neither copying nor zeroing the basis (every run writes
+/// each column before reading it); a run of the same or smaller size reuses the memory, so a
+/// caller that reserves for its largest run first touches the basis pages once.
 class LanczosWorkspace {
  public:
   /// Makes room for a basis of `subspace` vectors of length `rows`.
   void reserve(Eigen::Index rows, int subspace);
-  Eigen::Map<Eigen::MatrixXd> basis() { return {basis_.data(), rows_, subspace_}; }
+  Eigen::Map<Eigen::MatrixXd> basis() { return {basis_.get(), rows_, subspace_}; }
   Eigen::Map<Eigen::VectorXd> residual() { return {residual_.data(), rows_}; }
   Eigen::Map<Eigen::VectorXd> coefficients() { return {coefficients_.data(), subspace_}; }
   Eigen::Map<Eigen::VectorXd> correction() { return {correction_.data(), subspace_}; }
@@ -33,7 +36,9 @@ class LanczosWorkspace {
  private:
   Eigen::Index rows_ = 0;
   int subspace_ = 0;
-  std::vector<double> basis_, residual_, coefficients_, correction_;
+  std::unique_ptr<double[]> basis_;
+  std::size_t basis_capacity_ = 0;
+  std::vector<double> residual_, coefficients_, correction_;
   Eigen::MatrixXd projection_, block_;
 };
 
@@ -51,13 +56,16 @@ struct LanczosResult {
 
 /// The `wanted` eigenpairs of largest magnitude of the symmetric operator `apply` of size `rows`,
 /// with a Krylov subspace of `subspace` vectors (clamped to [wanted + 1, rows]; wanted <= rows).
-/// The start vector is a fixed pseudo-random one, so runs are reproducible.
+/// The start vector is A r for a fixed pseudo-random r, so runs are reproducible; a `guess`
+/// (length `rows`, e.g. the sum of approximations to the wanted eigenvectors) replaces r but for a
+/// pseudo-random part of relative size 1e-6, which keeps every direction in the Krylov space.
 LanczosResult largest_magnitude_eigenpairs(const SymmetricOperator& apply,
                                            Eigen::Index rows,
                                            int wanted,
                                            int subspace,
                                            double tolerance,
                                            int max_restarts,
-                                           LanczosWorkspace& workspace);
+                                           LanczosWorkspace& workspace,
+                                           const double* guess = nullptr);
 
 }  // namespace catena::internal

@@ -159,14 +159,22 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
                                      WorkMeter* meter) {
   FePlaneEigenReport report;
   long solved = 0;
-  LanczosWorkspace workspace;  // one basis for every level of this plane
+  LanczosWorkspace workspace;  // one basis for every level of this plane, sized for the largest
+  Eigen::Index largest = 0;
+  for (const auto& row : levels)
+    for (const FeLevel& level : row) largest = std::max<Eigen::Index>(largest, fe_unknowns(plane, level.chain.elements));
+  reserve_for_largest_solve(workspace, largest, modes);
+  const FeEigenSolution* previous = nullptr;  // the last converged level: its modes start the next
   for (auto& row : levels) {
     for (FeLevel& level : row) {
       const auto start = Clock::now();
       level.matrices[plane] = assemble(plane, level.chain);
       timings.assembly_s += seconds_since(start);
-      FeEigenSolution eigen =
-          solve_lowest_modes(level.matrices[plane], modes, options.eigen_tolerance, options.max_restarts, &workspace);
+      const FeMatrices& matrices = level.matrices[plane];
+      const Vector guess = previous ? mode_sum_guess(previous->eigenvectors, matrices.dofs_per_node, matrices.mass.rows())
+                                    : Vector();
+      FeEigenSolution eigen = solve_lowest_modes(matrices, modes, options.eigen_tolerance, options.max_restarts,
+                                                 &workspace, guess.size() > 0 ? &guess : nullptr);
       timings.factorization_s += eigen.factorization_time_s;
       timings.eigen_iterations_s += eigen.iteration_time_s;
       report.restarts += eigen.restarts;
@@ -183,6 +191,7 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
         report.max_backward_error = std::max(report.max_backward_error, eigen.max_backward_error);
       }
       level.eigen[plane] = std::move(eigen);
+      if (level.eigen[plane].termination == Termination::Converged) previous = &level.eigen[plane];
       if (meter && meter->stop_after(++solved)) return report;
     }
   }
