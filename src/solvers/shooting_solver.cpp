@@ -122,6 +122,18 @@ ForcedOutcome line_forced_declined() {
   return outcome;
 }
 
+// Friction that brings the static tension on the seabed to zero leaves that stretch with no
+// transverse stiffness but the foundation's: the equations divide by T there, in both planes.
+std::optional<std::string> slack_on_seabed(const StaticSolution& statics) {
+  if (!statics.has_contact() || statics.anchor_horizontal_force_n() > 0.0) return std::nullopt;
+  return fmt::format(
+      "the seabed friction (seabed.friction = {:.6g}) brings the static tension on the grounded "
+      "part to zero before the anchor (H = {:.6g} N < C_B w L_g): that stretch has no transverse "
+      "stiffness but the foundation's and the transverse equations of both planes are singular "
+      "there; lower seabed.friction below H / (w L_g) or shorten the grounded length",
+      statics.seabed().friction, statics.horizontal_force_n());
+}
+
 // The numerics of the shooting solver for one problem.
 class ShootingNumerics final : public SolverNumerics {
  public:
@@ -159,6 +171,7 @@ class ShootingNumerics final : public SolverNumerics {
 // vertical cable), the principal solutions are not defined.
 std::optional<std::string> ShootingNumerics::not_applicable() const {
   const StaticSolution& statics = context_.statics;
+  if (auto reason = slack_on_seabed(statics)) return reason;
   const double L = statics.cable().length_m;
   const double V_A = statics.vertical_force_a_n();
   const double V_B = statics.vertical_force_n(L);

