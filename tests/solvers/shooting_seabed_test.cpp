@@ -99,5 +99,79 @@ TEST(ShootingSeabed, LineEntirelyOnTheSeabedIsAStringAndABarOnAFoundation) {
   expect_close(omegas(*out.inplane), inplane, 1e-10);
 }
 
+// The chain of tests/statics/seabed_statics_test.cpp: 1000 m in 200 m of water, 40% grounded.
+Problem chain_on_seabed(double friction, double k_s) {
+  Problem p;
+  p.cable = {1000.0, 1200.0, 8e8, 150.0, 20.0};
+  p.supports.a_m = Vec2(0.0, -200.0);
+  p.supports.b_m = Vec2(955.85, 0.0);
+  p.seabed = Seabed{-200.0, friction, k_s, 0.0};
+  return p;
+}
+
+ModalResult plane_of(const SolverOutput& out, Plane plane) {
+  return plane == Plane::InPlane ? *out.inplane : *out.outofplane;
+}
+
+void expect_converged_within(const SolverOutput& out, double estimate) {
+  for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
+    const ModalResult r = plane_of(out, plane);
+    ASSERT_EQ(r.summary.termination, Termination::Converged) << r.summary.message;
+    EXPECT_EQ(r.modes.size(), 10u);
+    EXPECT_LE(r.summary.max_error_estimate, estimate) << to_string(plane);
+    EXPECT_GE(r.proved_count_below_top, 10) << to_string(plane);
+  }
+}
+
+TEST(ShootingSeabed, FortyPercentGroundedChainConvergesWithAndWithoutFriction) {
+  ShootingSolverOptions options;
+  options.relative_tolerance = 1e-11;
+  for (double friction : {0.0, 0.1}) {
+    const Problem p = chain_on_seabed(friction, 3e6);
+    const StaticSolution statics = solve_statics(p);
+    ASSERT_TRUE(statics.converged && statics.has_contact());
+    EXPECT_NEAR(statics.grounded_length_m() / 1000.0, 0.4, 0.05);
+    const SolverOutput out = solve_with(p, statics, 10, 10, options);
+    expect_converged_within(out, 1e-9);
+    std::printf("C_B = %g: in plane %.12g ... %.12g, out of plane %.12g ... %.12g rad/s\n", friction,
+                out.inplane->modes.front().omega_rad_s, out.inplane->modes.back().omega_rad_s,
+                out.outofplane->modes.front().omega_rad_s, out.outofplane->modes.back().omega_rad_s);
+  }
+}
+
+// A line whose free catenary leaves A horizontally (V_A = 0) touches down exactly at A.
+TEST(ShootingSeabed, TouchdownExactlyAtTheAnchorReproducesTheLineWithoutSeabed) {
+  Problem p = chain_on_seabed(0.5, 3e6);
+  const double H = 1.5e6;
+  p.supports.b_m = p.supports.a_m + catenary_end_offset(p.cable, H, 0.0);
+  Problem free = p;
+  free.seabed.reset();
+  const SolverOutput free_out = solve_with(free, StaticSolution(p.cable, p.supports.a_m, H, 0.0), 8, 8);
+  const SolverOutput free_solved = solve_with(free, solve_statics(free), 8, 8);
+  // The seabed statics with L_g = 0 exactly, and as solved (L_g within rounding of 0).
+  const StaticSolution at_a(p.as_line(), p.supports.a_m, *p.seabed, H, 0.0);
+  const SolverOutput exact_out = solve_with(p, at_a, 8, 8);
+  const SolverOutput solved_out = solve_with(p, solve_statics(p), 8, 8);
+  for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
+    expect_close(omegas(plane_of(exact_out, plane)), omegas(plane_of(free_out, plane)), 1e-12);
+    expect_close(omegas(plane_of(solved_out, plane)), omegas(plane_of(free_solved, plane)), 1e-9);
+  }
+}
+
+TEST(ShootingSeabed, FrictionThatSlackensTheGroundedPartIsDeclinedWithAReason) {
+  const GroundedString g;
+  Problem p = g.problem();
+  p.seabed->friction = 1.0;  // C_B w L = 5000 N of friction against H = 1e5 N: still taut
+  const StaticSolution taut(p.as_line(), p.supports.a_m, *p.seabed, g.H, g.L);
+  EXPECT_EQ(solve_with(p, taut, 3, 3).inplane->summary.termination, Termination::Converged);
+  p.seabed->friction = 40.0;  // 2e5 N of friction: the tension reaches 0 halfway
+  const StaticSolution slack(p.as_line(), p.supports.a_m, *p.seabed, g.H, g.L);
+  const SolverOutput out = solve_with(p, slack, 3, 3);
+  EXPECT_EQ(out.summary.termination, Termination::NotApplicable);
+  EXPECT_NE(out.summary.message.find("seabed.friction"), std::string::npos) << out.summary.message;
+  EXPECT_FALSE(out.inplane.has_value() && !out.inplane->modes.empty());
+  EXPECT_FALSE(out.outofplane.has_value() && !out.outofplane->modes.empty());
+}
+
 }  // namespace
 }  // namespace catena
