@@ -173,5 +173,35 @@ TEST(ShootingSeabed, FrictionThatSlackensTheGroundedPartIsDeclinedWithAReason) {
   EXPECT_FALSE(out.outofplane.has_value() && !out.outofplane->modes.empty());
 }
 
+// As k_s grows the grounded part is pinned vertically: the in-plane frequencies converge, their
+// change per decade of k_s shrinking by a steady factor (printed with the observed order in k_s).
+TEST(ShootingSeabed, InPlaneFrequenciesConvergeAsTheSeabedStiffens) {
+  ShootingSolverOptions options;
+  options.relative_tolerance = 1e-11;
+  std::vector<std::vector<double>> table;
+  // 3e8 and beyond cost minutes (the steps grow as L_g sqrt(k_s / T): docs/methods/shooting.md).
+  const std::vector<double> stiffnesses{3e3, 3e4, 3e5, 3e6, 3e7};
+  for (double k_s : stiffnesses) {
+    const Problem p = chain_on_seabed(0.0, k_s);
+    const SolverOutput out = solve_with(p, solve_statics(p), 10, 0, options);
+    ASSERT_EQ(out.inplane->summary.termination, Termination::Converged) << out.inplane->summary.message;
+    table.push_back(omegas(*out.inplane));
+    std::printf("k_s = %.0e:", k_s);
+    for (double w : table.back()) std::printf(" %.12f", w);
+    std::printf("\n");
+  }
+  for (std::size_t j = 2; j < table.size(); ++j) {
+    std::printf("k_s = %.0e, observed order of the change per decade:", stiffnesses[j]);
+    for (std::size_t n = 0; n < 10; ++n) {
+      const double before = table[j - 1][n] - table[j - 2][n], now = table[j][n] - table[j - 1][n];
+      const double order = std::log10(std::abs(before / now));
+      std::printf(" %.3f", order);
+      // The boundary layer at the touchdown point has the width sqrt(T / k_s): order 1/2.
+      if (j >= 3) EXPECT_NEAR(order, 0.5, 0.05) << "k_s = " << stiffnesses[j] << ", mode " << n + 1;
+    }
+    std::printf("\n");
+  }
+}
+
 }  // namespace
 }  // namespace catena
