@@ -17,6 +17,8 @@
 
 #include "catena/solvers/shooting_solver.hpp"
 #include "catena/statics/seabed_statics.hpp"
+#include "solvers/internal/shooting_coefficients.hpp"
+#include "solvers/internal/shooting_integrator.hpp"
 #include "solvers/solver_test_support.hpp"
 
 namespace catena {
@@ -97,6 +99,35 @@ TEST(ShootingSeabed, LineEntirelyOnTheSeabedIsAStringAndABarOnAFoundation) {
   inplane.resize(12);
   expect_close(omegas(*out.outofplane), outofplane, 1e-10);
   expect_close(omegas(*out.inplane), inplane, 1e-10);
+}
+
+// The conjugate-point count with the foundation: below sqrt(k (1+e) / M) the transverse C is
+// negative and the phase is not monotone along s, yet at every trial frequency between the exact
+// roots (and from either end) the count equals the number of exact frequencies below it.
+TEST(ShootingSeabed, ConjugatePointCountIsExactWithTheFoundation) {
+  const GroundedString g;
+  const internal::ShootingCoefficients k = internal::ShootingCoefficients::from_statics(g.statics());
+  internal::IntegratorSettings settings;
+  settings.relative_tolerance = 1e-11;
+  std::vector<double> inplane, outofplane;
+  for (int n = 1; n <= 14; ++n) {
+    inplane.push_back(g.string(n, g.k_s));
+    inplane.push_back(g.bar(n));
+    outofplane.push_back(g.string(n, g.k_t));
+  }
+  std::sort(inplane.begin(), inplane.end());
+  for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
+    const std::vector<double>& exact = plane == Plane::InPlane ? inplane : outofplane;
+    internal::ShootingIntegrator integrator(plane, k, settings);
+    for (int j = 0; j < 12; ++j) {
+      const double omega = j == 0 ? 0.5 * exact[0] : 0.5 * (exact[j - 1] + exact[j]);
+      for (bool from_b : {false, true}) {
+        const internal::Shot shot = integrator.shoot(omega, 1.0, nullptr, from_b);
+        EXPECT_EQ(shot.count, j) << to_string(plane) << " at " << omega << " rad/s, from b " << from_b;
+        EXPECT_LT(shot.phase_defect, 1e-3);
+      }
+    }
+  }
 }
 
 // The chain of tests/statics/seabed_statics_test.cpp: 1000 m in 200 m of water, 40% grounded.

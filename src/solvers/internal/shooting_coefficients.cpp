@@ -66,6 +66,8 @@ ShootingCoefficients ShootingCoefficients::from_statics(const StaticSolution& st
   c.V_A = statics.vertical_force_a_n();
   if (statics.is_line()) {
     for (const StaticPiece& piece : statics.pieces()) {
+      // A line entirely on the seabed ends in an empty suspended piece: nothing to integrate.
+      if (statics.has_contact() && !piece.grounded && piece.section.length_m <= 0.0) continue;
       c.pieces.push_back(piece.grounded ? grounded_piece_of(piece, statics.seabed())
                                         : piece_of(piece.section, piece.s_begin_m, piece.vertical_begin_n));
     }
