@@ -148,7 +148,7 @@ class ShootingNumerics final : public SolverNumerics {
   void describe(SolverSummary& summary) const override;
   ModalResult modes(Plane plane, int count) override;
   ForcedOutcome forced(const ForcedRequest& request) override {
-    if (k_.is_line()) return line_forced_declined();
+    if (k_.is_line() && !is_uniform_cable_on_seabed()) return line_forced_declined();
     WorkMeter meter(context_, "shooting", "forced frequencies", static_cast<long>(request.omegas_rad_s.size()));
     ForcedOutcome outcome = shooting_forced_responses(k_, request, context_.request.stations_m(k_.length_m),
                                                       integrator_settings(options_), &meter);
@@ -161,6 +161,13 @@ class ShootingNumerics final : public SolverNumerics {
                  int count, ModalResult& result) const;
   void finish_summary(const ShootingRootFinder& finder, const ShootingIntegrator& integrator,
                       Plane plane, int count, ModalResult& result) const;
+
+  // A uniform cable resting on the seabed is shot in pieces (grounded, suspended) with no point
+  // jump: its forced response is that of the uniform cable, and is computed (the tests check it
+  // against the exact response of a line lying on the seabed).
+  bool is_uniform_cable_on_seabed() const {
+    return context_.statics.has_contact() && context_.problem.is_uniform() && k_.points.empty();
+  }
 
   const SolveContext& context_;
   ShootingSolverOptions options_;
