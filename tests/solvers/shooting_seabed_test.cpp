@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "catena/solvers/shooting_solver.hpp"
@@ -213,6 +214,10 @@ TEST(ShootingSeabed, FortyPercentGroundedChainConvergesWithAndWithoutFriction) {
     EXPECT_NEAR(statics.grounded_length_m() / 1000.0, 0.4, 0.05);
     const SolverOutput out = solve_with(p, statics, 10, 10, options);
     expect_converged_within(out, 1e-9);
+    const std::vector<std::string>& notes = out.summary.notes;
+    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& note) {
+      return note.find("Winkler foundation (k_s = 3e+06") != std::string::npos;
+    }));
     std::printf("C_B = %g: in plane %.12g ... %.12g, out of plane %.12g ... %.12g rad/s\n", friction,
                 out.inplane->modes.front().omega_rad_s, out.inplane->modes.back().omega_rad_s,
                 out.outofplane->modes.front().omega_rad_s, out.outofplane->modes.back().omega_rad_s);
