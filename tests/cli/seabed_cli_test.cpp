@@ -1,7 +1,7 @@
 // `catena solve` on a line over a seabed (docs/scene-format.md, "Seabed"): the statics writes the
 // seabed block; shooting solves a line with contact and the other solvers decline it, with their
-// reason; a seabed the line does
-// not touch changes no frequency; bad seabed input exits 2 naming the field.
+// reason; a seabed the line does not touch changes no frequency; bad seabed input exits 2 naming
+// the field.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
