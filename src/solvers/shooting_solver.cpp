@@ -19,7 +19,6 @@
 #include "solvers/internal/shooting_integrator.hpp"
 #include "solvers/internal/shooting_modes.hpp"
 #include "solvers/internal/shooting_root_finder.hpp"
-#include "solvers/internal/line_applicability.hpp"
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
 #include "solvers/internal/work_meter.hpp"
@@ -111,6 +110,18 @@ void mark_failed(Plane plane, const ShootingFailure& failure, SolverSummary& sum
   summary.message = fmt::format("Numerical failure ({}): {}", to_string(plane), failure.what());
 }
 
+// Friction that brings the static tension on the seabed to zero leaves that stretch with no
+// transverse stiffness but the foundation's: the equations divide by T there, in both planes.
+std::optional<std::string> slack_on_seabed(const StaticSolution& statics) {
+  if (!statics.has_contact() || statics.anchor_horizontal_force_n() > 0.0) return std::nullopt;
+  return fmt::format(
+      "the seabed friction (seabed.friction = {:.6g}) brings the static tension on the grounded "
+      "part to zero before the anchor (H = {:.6g} N < C_B w L_g): that stretch has no transverse "
+      "stiffness but the foundation's and the transverse equations of both planes are singular "
+      "there; lower seabed.friction below H / (w L_g) or shorten the grounded length",
+      statics.seabed().friction, statics.horizontal_force_n());
+}
+
 // The numerics of the shooting solver for one problem.
 class ShootingNumerics final : public SolverNumerics {
  public:
@@ -147,7 +158,7 @@ class ShootingNumerics final : public SolverNumerics {
 // vertical cable), the principal solutions are not defined.
 std::optional<std::string> ShootingNumerics::not_applicable() const {
   const StaticSolution& statics = context_.statics;
-  if (auto reason = seabed_dynamics_not_implemented(statics)) return reason;
+  if (auto reason = slack_on_seabed(statics)) return reason;
   const double L = statics.cable().length_m;
   const double V_A = statics.vertical_force_a_n();
   const double V_B = statics.vertical_force_n(L);
@@ -163,6 +174,15 @@ void ShootingNumerics::describe(SolverSummary& summary) const {
       "exact linearisation about the closed-form static catenary; A^{-1} used, so EA = inf is "
       "exact (no penalty); counting by the conjugate points of the principal solution (phase of "
       "det(Phi + iF), Morse index / Sturm)");
+  const StaticSolution& statics = context_.statics;
+  if (statics.has_contact()) {
+    summary.notes.push_back(fmt::format(
+        "seabed contact: the grounded {:.6g} m from A move on a Winkler foundation (k_s = {:.6g}, "
+        "k_t = {:.6g} N/m per m of seabed) with the friction tension of the statics, the contact "
+        "set fixed; matched to the suspended part at the touchdown point",
+        statics.grounded_length_m(), statics.seabed().stiffness_n_per_m2,
+        statics.seabed().tangential_stiffness_n_per_m2));
+  }
 }
 
 // Frequencies (and shapes, tension) of one plane. A straight (vertical, H = 0) inextensible

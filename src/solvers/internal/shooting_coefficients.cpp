@@ -34,11 +34,29 @@ ShootingPoint point_of(const PointAttachment& attachment, const StaticSolution& 
   return p;
 }
 
-double piece_tension(double H, const ShootingPiece& p, double s) {
-  return std::hypot(H, p.V_begin + p.W0 * (s - p.s_begin));
+// A grounded piece of the seabed statics: V = 0, the friction tension, the foundation springs.
+ShootingPiece grounded_piece_of(const StaticPiece& piece, const Seabed& seabed) {
+  ShootingPiece p = piece_of(piece.section, piece.s_begin_m, 0.0);
+  p.grounded = true;
+  p.W0 = 0.0;
+  p.tension_begin = piece.grounded_tension_begin_n;
+  p.tension_slope = seabed.friction * piece.section.weight_n_per_m;
+  p.foundation_normal = seabed.stiffness_n_per_m2;
+  p.foundation_tangential = seabed.tangential_stiffness_n_per_m2;
+  return p;
 }
 
 }  // namespace
+
+double ShootingPiece::tension(double H, double s) const {
+  if (grounded) return std::max(tension_begin + tension_slope * (s - s_begin), 0.0);
+  return std::hypot(H, V_begin + W0 * (s - s_begin));
+}
+
+double ShootingPiece::min_tension(double H) const {
+  // Monotone on a piece (|V| linear, or the friction profile): the extremes are at the ends.
+  return std::min(tension(H, s_begin), tension(H, s_end));
+}
 
 ShootingCoefficients ShootingCoefficients::from_statics(const StaticSolution& statics) {
   const CableProperties& cable = statics.cable();
@@ -48,7 +66,10 @@ ShootingCoefficients ShootingCoefficients::from_statics(const StaticSolution& st
   c.V_A = statics.vertical_force_a_n();
   if (statics.is_line()) {
     for (const StaticPiece& piece : statics.pieces()) {
-      c.pieces.push_back(piece_of(piece.section, piece.s_begin_m, piece.vertical_begin_n));
+      // A line entirely on the seabed ends in an empty suspended piece: nothing to integrate.
+      if (statics.has_contact() && !piece.grounded && piece.section.length_m <= 0.0) continue;
+      c.pieces.push_back(piece.grounded ? grounded_piece_of(piece, statics.seabed())
+                                        : piece_of(piece.section, piece.s_begin_m, piece.vertical_begin_n));
     }
     c.pieces.back().s_end = cable.length_m;
     for (const PointAttachment& point : statics.line().points) {
@@ -90,7 +111,10 @@ double ShootingCoefficients::vertical_force(double s) const {
   return p.V_begin + p.W0 * (s - p.s_begin);
 }
 
-double ShootingCoefficients::tension(double s) const { return std::hypot(H, vertical_force(s)); }
+double ShootingCoefficients::tension(double s) const {
+  if (pieces.empty()) return std::hypot(H, vertical_force(s));
+  return piece_at(s).tension(H, s);
+}
 
 Vec2 ShootingCoefficients::tangent(double s) const {
   const double V = vertical_force(s);
@@ -114,6 +138,10 @@ bool ShootingCoefficients::is_inextensible() const {
                      [](const ShootingPiece& p) { return p.compliance == 0.0; });
 }
 
+bool ShootingCoefficients::has_grounded_piece() const {
+  return std::any_of(pieces.begin(), pieces.end(), [](const ShootingPiece& p) { return p.grounded; });
+}
+
 bool is_straight_inextensible(const ShootingCoefficients& k) {
   return k.H == 0.0 && k.is_inextensible();
 }
@@ -126,7 +154,7 @@ double transverse_travel_time(const ShootingCoefficients& k) {
     double sum = 0.0;
     for (int i = 0; i <= kIntervals; ++i) {
       const double s = piece.s_begin + i * h;
-      const double T = piece_tension(k.H, piece, s);
+      const double T = piece.tension(k.H, s);
       const double value = std::sqrt(piece.M * (1.0 + T * piece.compliance) / T);
       const double weight = (i == 0 || i == kIntervals) ? 1.0 : (i % 2 ? 4.0 : 2.0);
       sum += weight * value;

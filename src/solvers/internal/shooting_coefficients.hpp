@@ -13,7 +13,11 @@
 
 namespace catena::internal {
 
-/// One piece between consecutive breaks (joints, points): V = V_begin + W0 (s - s_begin).
+/// One piece between consecutive breaks (joints, points, the touchdown point):
+/// V = V_begin + W0 (s - s_begin). A grounded piece (docs/methods/shooting.md, "Seabed contact")
+/// lies straight along +x on the seabed with V = 0 (W0 = 0: the seabed carries its weight), the
+/// friction tension max(tension_begin + tension_slope (s - s_begin), 0), and the foundation
+/// springs per stretched length of seabed.
 struct ShootingPiece {
   double s_begin = 0.0;     ///< unstretched arc length of the start [m]
   double s_end = 1.0;       ///< unstretched arc length of the end [m]
@@ -22,6 +26,16 @@ struct ShootingPiece {
   double compliance = 0.0;  ///< 1/EA [1/N], 0 when inextensible
   double m = 1.0;           ///< mass [kg/m]
   double M = 1.0;           ///< normal mass m + ma [kg/m]
+  bool grounded = false;              ///< resting on the seabed
+  double tension_begin = 0.0;         ///< grounded: tension at the start before clipping [N]
+  double tension_slope = 0.0;         ///< grounded: C_B w [N/m]
+  double foundation_normal = 0.0;     ///< grounded: k_s, vertical [N/m per m of seabed]
+  double foundation_tangential = 0.0; ///< grounded: k_t, along and across [N/m per m of seabed]
+
+  /// T(s) [N] for the horizontal force H of the suspended part.
+  double tension(double H, double s) const;
+  /// The smallest static tension on the piece [N].
+  double min_tension(double H) const;
 };
 
 /// A point attachment: its inertia in the local static directions (t the bisector of the
@@ -67,6 +81,8 @@ struct ShootingCoefficients {
   bool is_line() const { return pieces.size() > 1 || !points.empty(); }
   /// True when every piece is inextensible.
   bool is_inextensible() const;
+  /// True when a piece rests on the seabed.
+  bool has_grounded_piece() const;
 };
 
 /// A straight (vertical, H = 0) inextensible cable: its axial direction is rigid, det Phi(L)

@@ -110,6 +110,23 @@ Basis<D> to_physical(const Basis<D>& carried, const RhsData& data) {
   return out;
 }
 
+// The Winkler foundation under a grounded piece (docs/methods/shooting.md, "Seabed contact"):
+// springs k per metre of seabed, k (1 + e) per unstretched metre, enter the force balance as
+// F' = -(w^2 Mmat - Kf) D, Kf = (1 + e)(k_t t t^T + k_s n n^T) (out of plane k_t), t = +x: in the
+// scaled, carried variables C -> C - L^2 Q Kf Q^T / (T_ref kappa^2).
+template <int D>
+void subtract_foundation(const RhsData& data, const ShootingPiece& p, double e, Square<D>& C) {
+  const ShootingCoefficients& k = data.coefficients;
+  const double scale = k.length_m * k.length_m * (1.0 + e) / (k.t_ref * data.kappa2);
+  if constexpr (D == 1) {
+    C(0, 0) -= scale * p.foundation_tangential;
+  } else {
+    const Vec2 tq = data.to_axial_force * Vec2(1.0, 0.0), nq = data.to_axial_force * Vec2(0.0, 1.0);
+    C -= scale * (p.foundation_tangential * tq * tq.transpose() +
+                  p.foundation_normal * nq * nq.transpose());
+  }
+}
+
 // B and C of the scaled system at x (see the header). From b the variable is x' = 1 - s/L and the
 // force is carried as -F^, which leaves the equations unchanged.
 template <int D>
@@ -118,7 +135,9 @@ void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C) 
   const ShootingPiece& p = k.pieces[data.piece];
   const double s = k.length_m * (data.from_b ? 1.0 - x : x);
   const double V = p.V_begin + p.W0 * (s - p.s_begin);
-  const double T = std::hypot(k.H, V);
+  const double T_direction = std::hypot(k.H, V);
+  // On the seabed the tension is the friction profile and the tangent +x (V = 0).
+  const double T = p.grounded ? p.tension(k.H, s) : T_direction;
   const double e = T * p.compliance;
   const double b_normal = k.t_ref * (1.0 + e) / T;
   if constexpr (D == 1) {
@@ -126,7 +145,7 @@ void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C) 
     C(0, 0) = (data.omega2 / data.kappa2) * (p.M / k.M);
   } else {
     const double b_tangent = k.t_ref * p.compliance;
-    const Vec2 t(k.H / T, V / T);
+    const Vec2 t(k.H / T_direction, V / T_direction);
     const Vec2 n(-t.y(), t.x());
     const double mass_ratio = p.m / k.M;
     const Vec2 tp = data.to_axial * t, np = data.to_axial * n;
@@ -135,6 +154,7 @@ void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C) 
     C = (data.omega2 / data.kappa2) *
         (mass_ratio * tq * tq.transpose() + (p.M / k.M) * nq * nq.transpose());
   }
+  if (p.grounded) subtract_foundation<D>(data, p, e, C);
 }
 
 template <int D>

@@ -14,12 +14,13 @@
 /// plane (D = 1). B is finite for EA = inf (exact inextensible cable). The principal solutions
 /// start at Phi = 0, F = I: a 2D x D basis Y = [Phi; F].
 ///
-/// Counting (Morse index / Sturm). The phase theta = arg det(Phi + i F) decreases monotonically
-/// along x,
+/// Counting (Morse index / Sturm). The phase theta = arg det(Phi + i F) evolves along x as
 ///
 ///     d theta / dx = -tr[ G^{-1} (Phi^T C Phi + F^T B F) ],   G = Phi^T Phi + F^T F,
 ///
-/// and is integrated as one extra ODE component (so it never needs unwrapping). At the far end
+/// (monotone decreasing where C >= 0; a seabed foundation makes C indefinite, and then only its
+/// crossings of det Phi = 0 are one-way, which is all the count needs: docs/methods/shooting.md,
+/// "Seabed contact"), and is integrated as one extra ODE component (so it never needs unwrapping). At the far end
 /// it gives the number of conjugate points, i.e. of eigenfrequencies below w, by
 /// count_conjugate_points (shooting_conjugate_count.hpp). Out of plane this is Pruefer's angle.
 ///
