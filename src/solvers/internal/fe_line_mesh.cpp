@@ -60,18 +60,28 @@ FeLineMesh uniform_cable_mesh(const CableProperties& cable, int elements) {
   return mesh;
 }
 
+bool meshed_as_one_piece(const Problem& problem, const StaticSolution& statics) {
+  return (problem.is_uniform() && !statics.has_contact()) || statics.pieces().empty();
+}
+
 FeLineMesh make_line_mesh(const Problem& problem, const StaticSolution& statics, int elements) {
-  if (problem.is_uniform() || statics.pieces().empty()) return uniform_cable_mesh(problem.cable, elements);
+  if (meshed_as_one_piece(problem, statics)) return uniform_cable_mesh(problem.cable, elements);
+  const Line line = problem.as_line();
   FeLineMesh mesh;
-  mesh.points = problem.line.points;
+  mesh.points = line.points;
+  if (statics.has_contact()) mesh.seabed = statics.seabed();
   std::vector<double> lengths;
   for (std::size_t p = 0; p < statics.pieces().size(); ++p) {
     const StaticPiece& source = statics.pieces()[p];
+    // A line lying entirely on the seabed ends with an empty suspended piece.
+    if (!(source.section.length_m > 0.0)) continue;
     FeMeshPiece piece;
     piece.segment = source.segment;
-    piece.section = problem.line.segments[source.segment];
+    piece.section = line.segments[source.segment];
     piece.section.length_m = source.section.length_m;
-    piece.point_at_start = p == 0 ? -1 : point_at(problem.line, source.s_begin_m);
+    piece.point_at_start = p == 0 ? -1 : point_at(line, source.s_begin_m);
+    piece.grounded = source.grounded;
+    piece.grounded_tension_begin_n = source.grounded_tension_begin_n;
     mesh.pieces.push_back(piece);
     lengths.push_back(piece.section.length_m);
   }
