@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <vector>
 
 #include "catena/core/types.hpp"
@@ -80,8 +79,6 @@ TEST(FeSeabed, LineOnTheSeabedIsAStringAndABarOnAWinklerFoundation) {
   inplane = sorted_first(inplane, 8);
   for (int i = 0; i < 8; ++i) {
     const Mode& mode = out.inplane->modes[static_cast<std::size_t>(i)];
-    std::printf("in plane %d: %.15g vs %.15g (%.2e, est %.2e)\n", i + 1, mode.omega_rad_s, inplane[static_cast<std::size_t>(i)],
-                relative_error(mode.omega_rad_s, inplane[static_cast<std::size_t>(i)]), mode.relative_error_estimate);
     EXPECT_LT(relative_error(mode.omega_rad_s, inplane[static_cast<std::size_t>(i)]), 1e-9) << "in plane " << i + 1;
   }
   EXPECT_EQ(out.inplane->proved_count_below_top, 8);
@@ -102,21 +99,122 @@ Problem forty_percent_grounded(double friction, double vertical_stiffness) {
   return p;
 }
 
-TEST(FeSeabedExplore, Forty) {
+SolverOutput solve_forty(double friction, double vertical_stiffness, int elements, bool richardson = true) {
+  const Problem problem = forty_percent_grounded(friction, vertical_stiffness);
+  const StaticSolution statics = solve_seabed_statics(problem);
+  FeSolverOptions options;
+  options.elements = elements;
+  options.richardson = richardson;
+  return solve_grounded(problem, statics, modes_request(10, 10), options);
+}
+
+// The discrete chain's horizontal force and touchdown vertical force converge to the continuous
+// statics' (H, 0) at O(l0^2): the error falls by 4 per halving.
+TEST(FeSeabed, DiscreteStaticsConvergesAtSecondOrder) {
   for (double friction : {0.0, 0.1}) {
     const Problem problem = forty_percent_grounded(friction, 3e6);
     const StaticSolution statics = solve_seabed_statics(problem);
-    std::printf("C_B %g: H %.10g L_g %.10g\n", friction, statics.horizontal_force_n(), statics.grounded_length_m());
-    for (int N : {200, 400, 800, 1600, 3200, 6400, 12800}) {
-      FeSolverOptions options;
-      options.elements = N;
-      const SolverOutput out = solve_grounded(problem, statics, modes_request(10, 10), options);
-      if (!out.inplane || !out.outofplane) { std::printf("%s\n", out.summary.message.c_str()); continue; }
-      std::printf("N %d: %s | %s\n", N, out.inplane->summary.message.c_str(), out.outofplane->summary.message.c_str());
-      for (int i : {0, 4, 9}) std::printf("   %d  in %.15g (%.2e)  out %.15g (%.2e)\n", i + 1, out.inplane->modes[i].omega_rad_s,
-        out.inplane->modes[i].relative_error_estimate, out.outofplane->modes[i].omega_rad_s, out.outofplane->modes[i].relative_error_estimate);
+    std::vector<double> h_error, v_error;
+    for (int N : {100, 200, 400}) {
+      const internal::FeLineMesh mesh = internal::make_line_mesh(problem, statics, N);
+      const internal::FeChain chain = internal::solve_chain_statics(problem, statics, mesh, problem.cable.axial_stiffness_n);
+      ASSERT_TRUE(chain.in_equilibrium()) << chain.failure;
+      ASSERT_GT(chain.grounded_elements, 0);
+      h_error.push_back(std::abs(chain.horizontal_force_n - statics.horizontal_force_n()));
+      v_error.push_back(std::abs(chain.vertical_force_a_n));
+    }
+    for (std::size_t k = 0; k + 1 < h_error.size(); ++k) {
+      EXPECT_NEAR(std::log2(h_error[k] / h_error[k + 1]), 2.0, 0.1) << "C_B = " << friction;
+      EXPECT_NEAR(std::log2(v_error[k] / v_error[k + 1]), 2.0, 0.1) << "C_B = " << friction;
+    }
+    EXPECT_LT(h_error.back() / statics.horizontal_force_n(), 1e-5);
+  }
+}
+
+// Without Richardson the frequencies of the 40 %-grounded line converge at O(l0^2), with and
+// without friction, in both planes.
+TEST(FeSeabed, ObservedOrderTwoOnTheGroundedLine) {
+  for (double friction : {0.0, 0.1}) {
+    std::vector<SolverOutput> out;
+    for (int N : {200, 400, 800}) out.push_back(solve_forty(friction, 3e6, N, false));
+    for (int i : {0, 4, 9}) {
+      for (bool inplane : {true, false}) {
+        auto omega = [&](std::size_t k) {
+          return (inplane ? out[k].inplane : out[k].outofplane)->modes[static_cast<std::size_t>(i)].omega_rad_s;
+        };
+        const double order = std::log2((omega(0) - omega(1)) / (omega(1) - omega(2)));
+        EXPECT_NEAR(order, 2.0, 0.05) << "C_B = " << friction << (inplane ? " in" : " out") << " mode " << i + 1;
+      }
     }
   }
 }
+
+// The 40 %-grounded line with 10 modes per plane: converged, the mode count proved by inertia,
+// the N = 1600 and 3200 results within their estimates of each other.
+TEST(FeSeabed, FortyPercentGroundedConvergesWithinItsEstimate) {
+  for (double friction : {0.0, 0.1}) {
+    const SolverOutput coarse = solve_forty(friction, 3e6, 1600), fine = solve_forty(friction, 3e6, 3200);
+    for (bool inplane : {true, false}) {
+      const ModalResult& a = *(inplane ? coarse.inplane : coarse.outofplane);
+      const ModalResult& b = *(inplane ? fine.inplane : fine.outofplane);
+      ASSERT_EQ(a.summary.termination, Termination::Converged) << a.summary.message;
+      ASSERT_EQ(b.modes.size(), 10u);
+      EXPECT_EQ(b.proved_count_below_top, 10);
+      for (std::size_t i = 0; i < 10; ++i)
+        EXPECT_LT(relative_error(a.modes[i].omega_rad_s, b.modes[i].omega_rad_s), a.modes[i].relative_error_estimate);
+    }
+  }
+}
+
+// As k_s grows the grounded part's vertical motion is confined to a layer of width
+// sqrt(H / k_s) at the touchdown point, so the frequencies approach the rigid-seabed limit as
+// k_s^(-1/2): each tenfold k_s shrinks the change by sqrt(10) (observed order 1/2 in k_s).
+TEST(FeSeabed, FrequenciesConvergeAsTheSeabedStiffens) {
+  std::vector<double> omega;
+  for (double ks : {3e5, 3e6, 3e7, 3e8, 3e9}) omega.push_back(solve_forty(0.1, ks, 800).inplane->modes[0].omega_rad_s);
+  for (std::size_t k = 0; k + 2 < omega.size(); ++k) {
+    const double order = std::log10((omega[k + 1] - omega[k]) / (omega[k + 2] - omega[k + 1]));
+    EXPECT_NEAR(order, 0.5, 0.01) << "k_s = 3e" << k + 5;
+  }
+}
+
+// A touchdown exactly at A (the free line leaves A horizontally): the statics finds at most a
+// rounding-sized grounded length, and fe's frequencies equal those of the line without a seabed.
+TEST(FeSeabed, TouchdownAtTheAnchorReproducesTheFreeLine) {
+  Problem free_line;
+  free_line.cable = {1000.0, 1200.0, 8e8, 150.0, 20.0};
+  free_line.supports.a_m = Vec2(0.0, -200.0);
+  free_line.supports.b_m = free_line.supports.a_m + catenary_end_offset(free_line.cable, 5e5, 0.0);
+  Problem on_seabed = free_line;
+  on_seabed.seabed = Seabed{-200.0, 0.1, 3e6, 1e4};
+  const StaticSolution free_statics = solve_statics(free_line), seabed_statics = solve_seabed_statics(on_seabed);
+  ASSERT_LT(seabed_statics.grounded_length_m(), 1e-6);
+  FeSolverOptions options;
+  options.elements = 400;
+  const SolverOutput a = solve_grounded(free_line, free_statics, modes_request(6, 6), options);
+  const SolverOutput b = solve_grounded(on_seabed, seabed_statics, modes_request(6, 6), options);
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_LT(relative_error(a.inplane->modes[i].omega_rad_s, b.inplane->modes[i].omega_rad_s), 1e-9)
+        << b.inplane->summary.message;
+    EXPECT_LT(relative_error(a.outofplane->modes[i].omega_rad_s, b.outofplane->modes[i].omega_rad_s), 1e-9);
+  }
+}
+
+// Friction C_B = 3 (its drop 3 w L_g exceeds H) leaves part of the grounded length without tension: out of plane (k_t = 0) it
+// has no stiffness, and fe declines that plane saying what to change; in plane the vertical
+// foundation holds it (and the axial EA), so that plane is solved. With k_s = 0 both decline.
+TEST(FeSeabed, SlackGroundedStretchWithoutFoundationIsDeclined) {
+  const SolverOutput out = solve_forty(3.0, 3e6, 400);
+  ASSERT_TRUE(out.outofplane && out.inplane);
+  EXPECT_EQ(out.outofplane->summary.termination, Termination::NotApplicable);
+  EXPECT_NE(out.outofplane->summary.message.find("[seabed].tangential_stiffness > 0"), std::string::npos)
+      << out.outofplane->summary.message;
+  EXPECT_TRUE(out.outofplane->modes.empty());
+  EXPECT_EQ(out.inplane->summary.termination, Termination::Converged) << out.inplane->summary.message;
+  const SolverOutput soft = solve_forty(3.0, 0.0, 400);
+  EXPECT_EQ(soft.inplane->summary.termination, Termination::NotApplicable);
+  EXPECT_NE(soft.inplane->summary.message.find("[seabed].stiffness > 0"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace catena
