@@ -163,16 +163,44 @@ json request_json(const SolveRequest& request) {
 
 // The state at arc length s: position, stretched length from a, and the forces on both sides (they
 // differ at a point attachment by its weight).
+// On the seabed (s < L_g) the force is horizontal and set by friction: it jumps at a clump weight.
 json node_json(const StaticSolution& statics, const std::string& kind, std::size_t index, double s) {
   const Vec2 r = statics.position_m(s);
-  const double H = statics.horizontal_force_n();
   const double before = statics.vertical_force_before_n(s);
   const double after = statics.vertical_force_n(s);
+  const bool grounded = statics.has_contact() && s < statics.grounded_length_m();
+  const double H = grounded ? statics.tension_n(s) : statics.horizontal_force_n();
+  const double tension_before = grounded ? statics.tension_n(std::nextafter(s, 0.0)) : std::hypot(H, before);
   return {{key::kind, kind}, {key::index, index}, {key::s_m, s}, {key::x_m, r.x()}, {key::z_m, r.y()},
           {key::stretched_length_m, statics.stretched_length_m(s)},
           {key::horizontal_force_n, H},
           {key::vertical_force_before_n, before}, {key::vertical_force_after_n, after},
-          {key::tension_before_n, std::hypot(H, before)}, {key::tension_after_n, std::hypot(H, after)}};
+          {key::tension_before_n, tension_before}, {key::tension_after_n, std::hypot(H, after)}};
+}
+
+// The seabed block (docs/json-layout.md, "Seabed"): contact, grounded length, touchdown point, the
+// forces on the anchor (A) and the fairlead (B).
+json seabed_json(const StaticSolution& statics) {
+  const Seabed& seabed = statics.seabed();
+  const double L = statics.cable().length_m;
+  const double Lg = statics.grounded_length_m();
+  const Vec2 touchdown = statics.position_m(Lg);
+  const char* model = statics.has_contact()
+                          ? "flat seabed: grounded length straight on it from the anchor, tangential touchdown, "
+                            "Coulomb friction C_B w per unit length (MAP++/MoorPy convention)"
+                          : "flat seabed: no contact (the line stays on or above the seabed)";
+  return {{key::z_m, seabed.z_m},
+          {key::friction, seabed.friction},
+          {key::stiffness_n_per_m2, seabed.stiffness_n_per_m2},
+          {key::tangential_stiffness_n_per_m2, seabed.tangential_stiffness_n_per_m2},
+          {key::contact, statics.has_contact()},
+          {key::contact_model, model},
+          {key::grounded_length_m, Lg},
+          {key::touchdown, {{key::s_m, Lg}, {key::x_m, touchdown.x()}, {key::z_m, touchdown.y()}}},
+          {key::anchor_horizontal_force_n, statics.anchor_horizontal_force_n()},
+          {key::anchor_vertical_force_n, statics.vertical_force_a_n()},
+          {key::fairlead_horizontal_force_n, statics.horizontal_force_n()},
+          {key::fairlead_vertical_force_n, statics.vertical_force_n(L)}};
 }
 
 // Per joint and per point of a general line, in order of s; and the stretched length of each
@@ -228,6 +256,7 @@ json statics_json(const StaticSolution& statics, const SolveRequest& request) {
   const Vec2 low = statics.position_m(s_low);
   out[key::lowest_point] = {{key::s_m, s_low}, {key::x_m, low.x()}, {key::z_m, low.y()}};
   if (statics.is_line()) add_line_statics(out, statics);
+  if (statics.has_seabed()) out[key::seabed] = seabed_json(statics);
   return out;
 }
 

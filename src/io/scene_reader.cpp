@@ -175,7 +175,7 @@ Problem read_gale(TableReader& root, const std::string& origin) {
 }
 
 // Reads the one cable form of the scene into a Problem.
-Problem read_problem(TableReader& root, const std::string& origin) {
+Problem read_cable_form(TableReader& root, const std::string& origin) {
   const bool physical = root.has("cable");
   const bool line = root.has("line");
   const bool taut = root.has("taut_inclined");
@@ -190,6 +190,37 @@ Problem read_problem(TableReader& root, const std::string& origin) {
   if (line) return read_line(root, origin);
   if (taut) return read_taut_inclined(root, origin);
   return read_gale(root, origin);
+}
+
+// [seabed] (docs/scene-format.md): the flat seabed under a [cable] or [line]; end A must lie on it.
+void read_seabed(TableReader& root, Problem& problem, const std::string& origin) {
+  TableReader table = root.subtable("seabed");
+  Seabed seabed;
+  seabed.z_m = table.checked("z", any_value, "finite", "m");
+  seabed.friction = table.checked("friction", non_negative, "finite and >= 0", "-", 0.0);
+  seabed.stiffness_n_per_m2 = table.checked("stiffness", non_negative, "finite and >= 0", "N/m per m", 0.0);
+  seabed.tangential_stiffness_n_per_m2 =
+      table.checked("tangential_stiffness", non_negative, "finite and >= 0", "N/m per m", 0.0);
+  table.finish();
+  problem.seabed = seabed;
+  try {
+    problem.validate();
+  } catch (const InvalidInput& error) {
+    throw InvalidInput(fmt::format("{}: [seabed]: {}", origin, error.what()));
+  }
+}
+
+// Reads the one cable form of the scene, and its seabed, into a Problem.
+Problem read_problem(TableReader& root, const std::string& origin) {
+  Problem problem = read_cable_form(root, origin);
+  if (root.has("seabed")) {
+    if (problem.form != ProblemForm::Physical) {
+      throw InvalidInput(fmt::format("{}: [seabed] goes with [cable] or [line], not with [{}]", origin,
+                                     to_string(problem.form)));
+    }
+    read_seabed(root, problem, origin);
+  }
+  return problem;
 }
 
 FrequencyUnit read_frequency_unit(TableReader& table, const std::string& key, const std::string& fallback) {

@@ -139,6 +139,7 @@ class AiryNumerics final : public SolverNumerics {
 
   std::optional<std::string> not_applicable() const override {
     if (auto reason = uniform_cable_only(context_.problem, "the Airy boundary-layer solution")) return reason;
+    if (auto reason = no_seabed_contact(context_.statics, "the Airy boundary-layer solution")) return reason;
     return airy_not_applicable_reason(context_.problem, context_.statics, context_.groups, options_);
   }
 

@@ -218,6 +218,7 @@ class AsymptoticNumerics final : public SolverNumerics {
 
   std::optional<std::string> not_applicable() const override {
     if (auto reason = uniform_cable_only(context_.problem, "the taut-cable asymptotic expansion")) return reason;
+    if (auto reason = no_seabed_contact(context_.statics, "the taut-cable asymptotic expansion")) return reason;
     return asymptotic_not_applicable_reason(context_.problem, context_.statics, context_.groups, options_);
   }
 

@@ -20,6 +20,7 @@
 #include "solvers/internal/fe_summary.hpp"
 #include "solvers/internal/knob_table.hpp"
 #include "solvers/internal/mode_tools.hpp"
+#include "solvers/internal/line_applicability.hpp"
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
 #include "solvers/internal/work_meter.hpp"
@@ -73,6 +74,7 @@ class FeNumerics final : public SolverNumerics {
                            context.request.outofplane_modes)) {}
 
   std::optional<std::string> not_applicable() const override {
+    if (auto reason = seabed_dynamics_not_implemented(context_.statics)) return reason;
     return fe_penalty_not_applicable(plan_);
   }
   void describe(SolverSummary& summary) const override { describe_fe_run(plan_, summary); }

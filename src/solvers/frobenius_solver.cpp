@@ -83,6 +83,7 @@ class FrobeniusNumerics final : public SolverNumerics {
 
   std::optional<std::string> not_applicable() const override {
     if (auto reason = uniform_cable_only(context_.problem, "the Frobenius series of the catenary")) return reason;
+    if (auto reason = no_seabed_contact(context_.statics, "the Frobenius series of the catenary")) return reason;
     return frobenius_not_applicable_reason(context_.problem, context_.groups);
   }
   void describe(SolverSummary& summary) const override;

@@ -19,6 +19,7 @@
 #include "solvers/internal/shooting_integrator.hpp"
 #include "solvers/internal/shooting_modes.hpp"
 #include "solvers/internal/shooting_root_finder.hpp"
+#include "solvers/internal/line_applicability.hpp"
 #include "solvers/internal/solver_driver.hpp"
 #include "solvers/internal/solver_entries.hpp"
 #include "solvers/internal/work_meter.hpp"
@@ -159,6 +160,7 @@ class ShootingNumerics final : public SolverNumerics {
 // vertical cable), the principal solutions are not defined.
 std::optional<std::string> ShootingNumerics::not_applicable() const {
   const StaticSolution& statics = context_.statics;
+  if (auto reason = seabed_dynamics_not_implemented(statics)) return reason;
   const double L = statics.cable().length_m;
   const double V_A = statics.vertical_force_a_n();
   const double V_B = statics.vertical_force_n(L);
