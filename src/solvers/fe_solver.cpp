@@ -74,7 +74,6 @@ class FeNumerics final : public SolverNumerics {
                            context.request.outofplane_modes)) {}
 
   std::optional<std::string> not_applicable() const override {
-    if (auto reason = seabed_dynamics_not_implemented(context_.statics)) return reason;
     return fe_penalty_not_applicable(plan_);
   }
   void describe(SolverSummary& summary) const override { describe_fe_run(plan_, summary); }
