@@ -27,8 +27,8 @@ TEST(FeForcedRichardson, CubicInterpolationIsExactForCubicsInsideAndPastTheEnds)
 // (displacement) and midpoints (tension).
 internal::FeResponseField synthetic(int elements, double length) {
   internal::FeResponseField field;
-  field.element_length_m = length / elements;
-  const double h = field.element_length_m;
+  const double h = length / elements;
+  field.pieces = {{0, static_cast<std::size_t>(elements), 0.0, h}};
   auto f = [](double s) { return std::sin(2.0 * s); };
   auto g = [](double s) { return 5.0 * std::cos(3.0 * s); };
   for (int i = 0; i <= elements; ++i) {

@@ -79,7 +79,9 @@ void lay_out_chain(FeChain& chain, const FeLineMesh& mesh, double penalty_axial_
   chain.node_inertia.assign(static_cast<std::size_t>(N) + 1, FeNodeInertia{});
   int j = 0;
   double s = 0.0;
+  chain.piece_first_element.clear();
   for (const FeMeshPiece& piece : mesh.pieces) {
+    chain.piece_first_element.push_back(j);
     if (piece.point_at_start >= 0) {
       const PointAttachment& point = mesh.points[static_cast<std::size_t>(piece.point_at_start)];
       chain.node_inertia[static_cast<std::size_t>(j)] = {point.mass_kg + point.tangential_added_mass_kg(),

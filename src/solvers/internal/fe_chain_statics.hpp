@@ -48,6 +48,10 @@ struct FeChain {
   Vector grounded_tension_offset_n;
   double foundation_vertical_n_per_m2 = 0.0;
   double foundation_tangential_n_per_m2 = 0.0;
+  /// The first element of each mesh piece (fe_line_mesh.hpp), ascending from 0: within a piece the
+  /// elements are equal and the response smooth; joints, points and the touchdown point are
+  /// piece boundaries.
+  std::vector<int> piece_first_element;
   /// Per node i = 0..N: unstretched arc length s_i [m] and the inertia of a point attachment there.
   Vector node_s_m;
   std::vector<FeNodeInertia> node_inertia;

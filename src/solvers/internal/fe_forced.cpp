@@ -147,6 +147,20 @@ bool near_natural(double omega, const std::vector<FeNaturalFrequency>& naturals)
   });
 }
 
+// The chain's pieces of equal elements, for the Richardson step and the sampling
+// (fe_forced_richardson.hpp).
+std::vector<FeResponseField::Piece> response_pieces(const FeChain& chain) {
+  std::vector<FeResponseField::Piece> pieces;
+  const std::vector<int>& first = chain.piece_first_element;
+  for (std::size_t p = 0; p < first.size(); ++p) {
+    const int begin = first[p];
+    const int end = p + 1 < first.size() ? first[p + 1] : chain.elements;
+    pieces.push_back({static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin), chain.node_s_m[begin],
+                      chain.element_length_m[begin]});
+  }
+  return pieces;
+}
+
 }  // namespace
 
 Plane forced_plane(const ForcedRequest& request) {
@@ -213,15 +227,7 @@ FeLevelResponse respond_on_level(Plane plane,
         omega, chain.elements);
     return out;
   }
-  // The Richardson step and the sampling take equal elements (fe_forced_richardson.hpp): a line
-  // whose pieces have unequal elements is declined for now, a uniform one is as a cable.
-  const Vector& lengths = chain.element_length_m;
-  if (lengths.size() == 0 || lengths.maxCoeff() != lengths.minCoeff()) {
-    out.diagnostic = "fe's forced response on a line with unequal element lengths is not implemented "
-                     "(its Richardson step in h takes equal elements)";
-    return out;
-  }
-  out.field.element_length_m = lengths[0];
+  out.field.pieces = response_pieces(chain);
   out.field.nodes = node_displacements(plane, chain.elements, x, end_a, end_b);
   if (plane == Plane::InPlane) out.field.tension = element_tension(chain, out.field.nodes);
   out.ok = true;

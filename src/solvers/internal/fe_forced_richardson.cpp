@@ -45,14 +45,38 @@ double max_abs_difference(const Vector& a, const Vector& b) {
   return (a.size() && a.size() == b.size()) ? (a - b).cwiseAbs().maxCoeff() : 0.0;
 }
 
-}  // namespace
-
-double cubic_interpolate(const std::vector<double>& values, double first, double spacing, double x) {
-  if (values.empty()) return 0.0;
-  const Stencil st = stencil_at(values.size(), first, spacing, x);
+// cubic_interpolate on the `count` values from `values`.
+double cubic_interpolate_span(const double* values, std::size_t count, double first, double spacing, double x) {
+  if (count == 0) return 0.0;
+  const Stencil st = stencil_at(count, first, spacing, x);
   double sum = 0.0;
   for (std::size_t i = 0; i < st.count; ++i) sum += st.weight[i] * values[st.first + i];
   return sum;
+}
+
+using Piece = FeResponseField::Piece;
+
+// The piece containing s (at a boundary: the one toward b).
+const Piece& piece_at(const std::vector<Piece>& pieces, double s) {
+  const auto after = std::upper_bound(pieces.begin(), pieces.end(), s,
+                                      [](double x, const Piece& piece) { return x < piece.s_begin_m; });
+  return after == pieces.begin() ? pieces.front() : *(after - 1);
+}
+
+// Within `piece`: the nodal values (elements + 1 of them) and the element-midpoint values at s.
+double at_nodes(const std::vector<double>& values, const Piece& piece, double s) {
+  return cubic_interpolate_span(values.data() + piece.first, piece.elements + 1, piece.s_begin_m,
+                                piece.element_length_m, s);
+}
+double at_midpoints(const std::vector<double>& values, const Piece& piece, double s) {
+  return cubic_interpolate_span(values.data() + piece.first, piece.elements,
+                                piece.s_begin_m + 0.5 * piece.element_length_m, piece.element_length_m, s);
+}
+
+}  // namespace
+
+double cubic_interpolate(const std::vector<double>& values, double first, double spacing, double x) {
+  return cubic_interpolate_span(values.data(), values.size(), first, spacing, x);
 }
 
 FeResponseField extrapolate_field_in_kappa(const FeResponseField& at_kappa, const FeResponseField& at_2kappa) {
@@ -64,17 +88,20 @@ FeResponseField extrapolate_field_in_kappa(const FeResponseField& at_kappa, cons
 
 FeResponseField richardson_field(const FeResponseField& coarse, const FeResponseField& fine) {
   const std::size_t elements = coarse.nodes.size() - 1;
-  if (fine.nodes.size() != 2 * elements + 1)
+  if (fine.nodes.size() != 2 * elements + 1 || fine.pieces.size() != coarse.pieces.size())
     throw std::logic_error("richardson_field: the fine mesh must have twice the coarse mesh's elements");
   FeResponseField out = coarse;
+  // Every piece doubles its elements, so coarse node i is fine node 2 i.
   for (std::size_t i = 0; i <= elements; ++i) out.nodes[i] = (4.0 * fine.nodes[2 * i] - coarse.nodes[i]) / 3.0;
   if (coarse.tension.size()) {
     const std::vector<double> fine_tension = as_std(fine.tension);
-    const double h = fine.element_length_m;
-    for (std::size_t j = 0; j < elements; ++j) {
-      const double s = (static_cast<double>(j) + 0.5) * coarse.element_length_m;
-      out.tension[static_cast<Index>(j)] =
-          (4.0 * cubic_interpolate(fine_tension, 0.5 * h, h, s) - coarse.tension[static_cast<Index>(j)]) / 3.0;
+    for (std::size_t p = 0; p < coarse.pieces.size(); ++p) {
+      const Piece& piece = coarse.pieces[p];
+      for (std::size_t k = 0; k < piece.elements; ++k) {
+        const double s = piece.s_begin_m + (static_cast<double>(k) + 0.5) * piece.element_length_m;
+        const auto j = static_cast<Index>(piece.first + k);
+        out.tension[j] = (4.0 * at_midpoints(fine_tension, fine.pieces[p], s) - coarse.tension[j]) / 3.0;
+      }
     }
   }
   return out;
@@ -82,7 +109,6 @@ FeResponseField richardson_field(const FeResponseField& coarse, const FeResponse
 
 FeSampled sample_field(Plane plane, const FeResponseField& field, const Vector& stations,
                        const StaticSolution& statics) {
-  const double h = field.element_length_m;
   const std::vector<double> x = component(field.nodes, 0), z = component(field.nodes, 1);
   const std::vector<double> tension = as_std(field.tension);
   const Index points = stations.size();
@@ -96,11 +122,12 @@ FeSampled sample_field(Plane plane, const FeResponseField& field, const Vector& 
   out.tension = Vector::Zero(points);
   for (Index p = 0; p < points; ++p) {
     const double s = stations[p];
-    const Vec2 d(cubic_interpolate(x, 0.0, h, s), cubic_interpolate(z, 0.0, h, s));
+    const Piece& piece = piece_at(field.pieces, s);
+    const Vec2 d(at_nodes(x, piece, s), at_nodes(z, piece, s));
     if (plane == Plane::InPlane) {
       out.u[p] = d.dot(statics.tangent(s));
       out.w[p] = d.dot(statics.normal(s));
-      if (!tension.empty()) out.tension[p] = cubic_interpolate(tension, 0.5 * h, h, s);
+      if (!tension.empty()) out.tension[p] = at_midpoints(tension, piece, s);
     } else {
       out.v[p] = d.x();
     }

@@ -22,7 +22,16 @@ namespace catena::internal {
 /// One mesh's forced response before sampling: the displacement of every node (ends included;
 /// in plane (x, z), out of plane (v, 0)) and, in plane, every element's dynamic tension.
 struct FeResponseField {
-  double element_length_m = 0.0;  // unstretched: node i at s = i l0, midpoint j at (j + 1/2) l0
+  /// One piece of equal elements: its first element, element count, start s and l0 [m].
+  struct Piece {
+    std::size_t first = 0;
+    std::size_t elements = 0;
+    double s_begin_m = 0.0;
+    double element_length_m = 0.0;
+  };
+  /// The pieces from A (one for a uniform cable). Every interpolation stays within one piece, so
+  /// that the kinks of the response at joints, points and the touchdown point do not spoil it.
+  std::vector<Piece> pieces;
   std::vector<Vec2> nodes;
   Vector tension;  // empty out of plane
 };
@@ -36,7 +45,7 @@ double cubic_interpolate(const std::vector<double>& values, double first, double
 FeResponseField extrapolate_field_in_kappa(const FeResponseField& at_kappa, const FeResponseField& at_2kappa);
 
 /// Richardson in h for order 2 and mesh ratio 2, (4 fine - coarse) / 3, on the coarse mesh's nodes
-/// and element midpoints. `fine` must have exactly twice the coarse mesh's elements.
+/// and element midpoints. `fine` must have the same pieces with twice the elements each.
 FeResponseField richardson_field(const FeResponseField& coarse, const FeResponseField& fine);
 
 /// The field on the stations, by cubic interpolation: displacements projected on the continuous
