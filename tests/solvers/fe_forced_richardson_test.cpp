@@ -1,6 +1,7 @@
 // Richardson in h of the fe forced response (src/solvers/internal/fe_forced_richardson.cpp): cubic
 // interpolation is exact for cubics (inside and past the ends), and a field with an O(h^2) error
-// on the nodes and midpoints is extrapolated to O(h^4) on coinciding points.
+// on the nodes and midpoints is extrapolated to O(h^4) on coinciding points; on a mesh of pieces
+// the interpolation stays within each piece, so a kink at a piece boundary does not spoil it.
 #include "solvers/internal/fe_forced_richardson.hpp"
 
 #include <gtest/gtest.h>
@@ -77,6 +78,22 @@ TEST(FeForcedRichardson, TheSecondOrderErrorCancelsOnCoincidingPoints) {
   EXPECT_LT(coarse.tension, 1e-2 * coarse.raw);
   EXPECT_NEAR(std::log2(coarse.displacement / fine.displacement), 4.0, 0.4);
   EXPECT_NEAR(std::log2(coarse.tension / fine.tension), 4.0, 0.4);
+}
+
+// Two pieces of different element lengths, [0, 1] with 8 elements and [1, 3] with 5, and a field
+// that is a different cubic on each with a kink at s = 1: sampled exactly everywhere, because no
+// stencil crosses the kink (one that did would be off by about 0.1 next to it).
+TEST(FeForcedRichardson, InterpolatesWithinEachPieceOfAPiecewiseMesh) {
+  auto f = [](double s) { return s <= 1.0 ? s * s * s : 1.0 - 2.0 * (s - 1.0) + cubic(s - 1.0) - cubic(0.0); };
+  internal::FeResponseField field;
+  field.pieces = {{0, 8, 0.0, 1.0 / 8.0}, {8, 5, 1.0, 2.0 / 5.0}};
+  for (int i = 0; i <= 8; ++i) field.nodes.emplace_back(f(i / 8.0), 0.0);
+  for (int i = 1; i <= 5; ++i) field.nodes.emplace_back(f(1.0 + 0.4 * i), 0.0);
+  const Vector stations = Vector::LinSpaced(61, 0.0, 3.0);
+  const StaticSolution unused;
+  const internal::FeSampled sampled = internal::sample_field(Plane::OutOfPlane, field, stations, unused);
+  for (Index p = 0; p < stations.size(); ++p)
+    EXPECT_NEAR(sampled.v[p], f(stations[p]), 1e-13) << "s = " << stations[p];
 }
 
 TEST(FeForcedRichardson, RefusesMeshesThatAreNotOneHalvingApart) {

@@ -89,6 +89,26 @@ TEST(FeSeabed, LineOnTheSeabedIsAStringAndABarOnAWinklerFoundation) {
 }  // namespace catena
 namespace catena {
 namespace {
+// k_s = k_t = 0 with contact: the grounded line is a free string on the seabed (bilateral
+// contact), omega_n = (n pi / L) sqrt(H / ((1 + e) M)) in both transverse directions.
+TEST(FeSeabed, WithoutFoundationTheGroundedLineIsAFreeString) {
+  Problem problem = line_on_seabed();
+  problem.seabed->stiffness_n_per_m2 = 0.0;
+  problem.seabed->tangential_stiffness_n_per_m2 = 0.0;
+  const StaticSolution statics(problem.as_line(), problem.supports.a_m, *problem.seabed, kTension, kLength);
+  FeSolverOptions options;
+  options.elements = 400;
+  const SolverOutput out = solve_grounded(problem, statics, modes_request(4, 4), options);
+  ASSERT_TRUE(out.inplane && out.outofplane) << out.summary.message;
+  ASSERT_EQ(out.inplane->modes.size(), 4u) << out.inplane->summary.message;
+  const double c = std::sqrt(kTension / ((1.0 + kTension / kAxial) * (kMass + kAdded)));
+  for (std::size_t i = 0; i < 4; ++i) {
+    const double exact = (static_cast<double>(i) + 1.0) * kPi / kLength * c;
+    EXPECT_LT(relative_error(out.inplane->modes[i].omega_rad_s, exact), 1e-9) << "in plane " << i + 1;
+    EXPECT_LT(relative_error(out.outofplane->modes[i].omega_rad_s, exact), 1e-9) << "out of plane " << i + 1;
+  }
+}
+
 // The forced response of the line lying on the seabed, end B driven at omega, against the exact
 // solutions of the bar and string on a foundation with A fixed: X(s) = d sin(q s) / sin(q L) with
 // q^2 = (omega^2 m - k_t) / EA (axial, tension EA X'), q^2 = (omega^2 M - k) (1 + e) / H (vertical
