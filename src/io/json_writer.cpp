@@ -122,7 +122,7 @@ json line_json(const Line& line) {
   return {{key::segments, segments}, {key::points, points}};
 }
 
-json problem_json(const Problem& problem) {
+json problem_form_json(const Problem& problem) {
   const CableProperties& c = problem.cable;
   if (!problem.is_uniform()) {
     return {{key::form, "line"},
@@ -142,6 +142,19 @@ json problem_json(const Problem& problem) {
           {key::supports,
            {{key::a_m, {problem.supports.a_m.x(), problem.supports.a_m.y()}},
             {key::b_m, {problem.supports.b_m.x(), problem.supports.b_m.y()}}}}};
+}
+
+// The problem, with its seabed when it has one.
+json problem_json(const Problem& problem) {
+  json out = problem_form_json(problem);
+  if (problem.seabed) {
+    const Seabed& bed = *problem.seabed;
+    out[key::seabed] = {{key::z_m, bed.z_m},
+                        {key::friction, bed.friction},
+                        {key::stiffness_n_per_m2, bed.stiffness_n_per_m2},
+                        {key::tangential_stiffness_n_per_m2, bed.tangential_stiffness_n_per_m2}};
+  }
+  return out;
 }
 
 json request_json(const SolveRequest& request) {

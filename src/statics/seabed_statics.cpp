@@ -32,6 +32,8 @@ struct ContactSystem {
   const Seabed& seabed;
   double seabed_offset_z_m;
   Vec2 chord_m;
+  // Evaluations of the reach residual (each one bisection for L_g): reported as the iterations.
+  mutable int evaluations = 0;
 
   Vec2 end_offset(double H, double grounded_length) const {
     const auto pieces =
@@ -47,6 +49,7 @@ struct ContactSystem {
   }
   // Horizontal miss of the fairlead with force H (+inf when H is too large for contact).
   double reach_residual(double H) const {
+    ++evaluations;
     const double grounded_length = grounded_length_for(H);
     if (grounded_length < 0.0) return kInfinity;
     return end_offset(H, grounded_length).x() - chord_m.x();
@@ -121,7 +124,7 @@ StaticSolution solve_contact(const Problem& problem, const StaticsOptions& optio
   const double grounded_length = system.grounded_length_for(H);
   StaticSolution solution(line, problem.supports.a_m, seabed, H, std::max(grounded_length, 0.0));
   const double scale = std::max(line.length_m(), chord.norm());
-  solution.iterations = 1;
+  solution.iterations = system.evaluations;
   solution.closure_error_m = (solution.offset_m(line.length_m()) - chord).norm();
   check_supported(solution, line, 1e-9 * std::max(1.0, scale));
   const double accepted = std::max(options.relative_tolerance * scale, 1e-11 * scale);

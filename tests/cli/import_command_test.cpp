@@ -113,6 +113,10 @@ TEST(ImportCommand, V1DeckUsesItsOptionsAndRefusesABridle) {
   EXPECT_NE(text.find("[seabed]"), std::string::npos) << text;
   EXPECT_NE(text.find("stiffness = 200000.0"), std::string::npos) << text;  // kBot 2e6 Pa/m x 0.1 m
   EXPECT_NE(text.find("Needs: [seabed]"), std::string::npos) << text;
+  // The [seabed] table it writes is read: the statics lays part of the chain on the seabed.
+  const CliRun solve = run_cli("solve " + (out / "v1-line-1.toml").string() + " --solver fe");
+  EXPECT_EQ(solve.exit_code, 0) << solve.output;
+  EXPECT_NE(solve.output.find("grounded length"), std::string::npos) << solve.output;
   for (const char* line : {"2 ", "3 ", "4 "}) {
     EXPECT_NE(run.output.find(std::string(line) + "         not converted: 3 lines meet at free point 4"), std::string::npos)
         << run.output;

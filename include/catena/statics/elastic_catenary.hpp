@@ -134,7 +134,8 @@ class StaticSolution {
   /// Stretched length of [0, s] [m].
   double stretched_length_m(double s) const;
 
-  /// Newton iterations used by solve_statics (0 when built directly).
+  /// Newton iterations used by solve_statics (0 when built directly); with seabed contact, the
+  /// steps of the bisection on H (each a bisection on L_g).
   int iterations = 0;
   /// |r(L) - (B - A)| at the solution [m].
   double closure_error_m = 0.0;
