@@ -45,7 +45,7 @@ std::vector<int> proportional_counts(const std::vector<double>& lengths, int ele
 constexpr double kTouchdownLayerWidths = 10.0;
 constexpr double kTouchdownLayerElementsPerWidth = 32.0;
 
-void refine_touchdown_layer(FeLineMesh& mesh, const StaticSolution& statics) {
+void refine_touchdown_layer(FeLineMesh& mesh) {
   std::size_t last = 0;  // the grounded piece that ends at the touchdown point
   while (last + 1 < mesh.pieces.size() && mesh.pieces[last + 1].grounded) ++last;
   FeMeshPiece& piece = mesh.pieces[last];
@@ -69,7 +69,6 @@ void refine_touchdown_layer(FeLineMesh& mesh, const StaticSolution& statics) {
   piece.section.length_m = length - layer;
   piece.elements = std::max(1, static_cast<int>(std::lround(piece.elements * (length - layer) / length)));
   mesh.pieces.insert(mesh.pieces.begin() + static_cast<std::ptrdiff_t>(last) + 1, near);
-  (void)statics;
 }
 
 }  // namespace
@@ -122,7 +121,7 @@ FeLineMesh make_line_mesh(const Problem& problem, const StaticSolution& statics,
   }
   const std::vector<int> counts = proportional_counts(lengths, elements);
   for (std::size_t p = 0; p < counts.size(); ++p) mesh.pieces[p].elements = counts[p];
-  if (mesh.seabed) refine_touchdown_layer(mesh, statics);
+  if (mesh.seabed) refine_touchdown_layer(mesh);
   return mesh;
 }
 
