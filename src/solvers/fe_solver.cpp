@@ -15,6 +15,7 @@
 #include "solvers/internal/fe_extrapolation.hpp"
 #include "solvers/internal/fe_forced.hpp"
 #include "solvers/internal/fe_levels.hpp"
+#include "solvers/internal/fe_seabed_contact.hpp"
 #include "solvers/internal/fe_shapes.hpp"
 #include "solvers/internal/fe_summary.hpp"
 #include "solvers/internal/knob_table.hpp"
@@ -73,7 +74,6 @@ class FeNumerics final : public SolverNumerics {
                            context.request.outofplane_modes)) {}
 
   std::optional<std::string> not_applicable() const override {
-    if (auto reason = seabed_dynamics_not_implemented(context_.statics)) return reason;
     return fe_penalty_not_applicable(plan_);
   }
   void describe(SolverSummary& summary) const override { describe_fe_run(plan_, summary); }
@@ -81,6 +81,12 @@ class FeNumerics final : public SolverNumerics {
   ModalResult modes(Plane plane, int count) override;
   ForcedOutcome forced(const ForcedRequest& request) override {
     const Plane plane = forced_plane(request);
+    if (auto singular = seabed_plane_singular(plane, context_.statics)) {
+      ForcedOutcome declined;
+      declined.summary.termination = Termination::NotApplicable;
+      declined.summary.message = *singular;
+      return declined;
+    }
     std::string note;
     if (naturals_[plane].empty()) note = compute_naturals_for(plane, request);
     ForcedOutcome outcome = fe_forced_response(request, context_, plan_, levels_, naturals_[plane], timings_);
@@ -236,6 +242,11 @@ ModalResult FeNumerics::modes(Plane plane, int count) {
   SolverSummary& summary = result.summary;
   summary.resolution = fe_resolution(plan_);
   if (options_.tolerance > 0.0) summary.accuracy_target = options_.tolerance;
+  if (auto singular = seabed_plane_singular(plane, context_.statics)) {
+    summary.termination = Termination::NotApplicable;
+    summary.message = *singular;
+    return result;
+  }
   WorkMeter meter(context_, "fe", std::string(to_string(plane)) + " eigen solves (mesh levels)", level_count(levels_));
   const FePlaneEigenReport eigen = solve_level_modes(levels_, plane, count, options_, timings_, &meter);
   summary.termination = eigen.termination;

@@ -1,7 +1,7 @@
 // `catena solve` on a line over a seabed (docs/scene-format.md, "Seabed"): the statics writes the
-// seabed block; shooting solves a line with contact and the other solvers decline it, with their
-// reason; a seabed the line does not touch changes no frequency; bad seabed input exits 2 naming
-// the field.
+// seabed block; fe and shooting solve a line with contact, the other solvers decline it with their
+// reason; a seabed the line does not touch changes no frequency; bad seabed input exits 2 naming the
+// field.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -52,12 +52,12 @@ TEST(SeabedCli, StaticsOnlySceneWritesTheSeabedBlock) {
   EXPECT_EQ(scene_json["problem"]["seabed"]["stiffness_n_per_m2"].get<double>(), 3.0e6);
 }
 
-// shooting solves it (docs/methods/shooting.md, "Seabed contact"); the others decline with a reason.
-TEST(SeabedCli, ShootingSolvesALineWithContactAndTheOthersDecline) {
+// fe and shooting solve it (docs/methods/fe.md and docs/methods/shooting.md, "Seabed contact"); the
+// others decline with a reason.
+TEST(SeabedCli, FeAndShootingSolveALineWithContactAndTheOthersDecline) {
   const fs::path scene = write_temp_file(kFolder, "modes.toml", chain(955.85, 0.0) + kSeabed + kModes);
   const CliRun run = run_cli("solve " + scene.string());
-  EXPECT_NE(run.output.find("solver fe: not-applicable: seabed contact dynamics: not implemented in this build"),
-            std::string::npos)
+  EXPECT_NE(run.output.find("solver fe: converged: Converged: 3 of 3 in-plane modes"), std::string::npos)
       << run.output;
   EXPECT_NE(run.output.find("solver shooting: converged"), std::string::npos) << run.output;
   for (const char* solver : {"frobenius", "asymptotic", "airy"}) {

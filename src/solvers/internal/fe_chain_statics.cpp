@@ -25,10 +25,20 @@ void lump_weights(FeChain& chain, const FeLineMesh& mesh) {
   }
   // Within a piece the closed form from the piece's start, so that rounding does not accumulate
   // element by element.
+  // With seabed contact the grounded weight (with a point at the touchdown point, as in the
+  // statics) rests on the seabed: the suspended part counts from the touchdown node.
   double before = 0.0;  // weight from s = 0 to the start of the piece (after a point there)
   int j = 0;
+  bool after_grounded = false;
   for (const FeMeshPiece& piece : mesh.pieces) {
-    if (piece.point_at_start >= 0) before += mesh.points[static_cast<std::size_t>(piece.point_at_start)].weight_n;
+    if (piece.grounded) {
+      for (int k = 0; k < piece.elements; ++k, ++j) chain.vertical_offset_n[j] = 0.0;
+      after_grounded = true;
+      continue;
+    }
+    if (piece.point_at_start >= 0 && !after_grounded)
+      before += mesh.points[static_cast<std::size_t>(piece.point_at_start)].weight_n;
+    after_grounded = false;
     const double W0 = piece.section.weight_n_per_m;
     const double l0 = chain.element_length_m[j];
     for (int k = 0; k < piece.elements; ++k, ++j) chain.vertical_offset_n[j] = before + W0 * l0 * (k + 0.5);
@@ -36,8 +46,28 @@ void lump_weights(FeChain& chain, const FeLineMesh& mesh) {
   }
 }
 
+// The grounded elements (the mesh's grounded pieces come first) and their static tension relative
+// to the continuous H: the friction profile at each element's midpoint (docs/physics.md, "Seabed
+// contact"), which is linear on a piece, so the midpoint value is the element's mean tension.
+void lay_out_contact(FeChain& chain, const FeLineMesh& mesh, double continuous_horizontal_force_n) {
+  chain.grounded_tension_offset_n.resize(0);
+  if (!mesh.seabed) return;
+  chain.foundation_vertical_n_per_m2 = mesh.seabed->stiffness_n_per_m2;
+  chain.foundation_tangential_n_per_m2 = mesh.seabed->tangential_stiffness_n_per_m2;
+  std::vector<double> offsets;
+  for (const FeMeshPiece& piece : mesh.pieces) {
+    if (!piece.grounded) break;
+    const double l0 = piece.section.length_m / piece.elements;
+    const double slope = mesh.seabed->friction * piece.section.weight_n_per_m;
+    for (int k = 0; k < piece.elements; ++k)
+      offsets.push_back(piece.grounded_tension_begin_n + slope * l0 * (k + 0.5) - continuous_horizontal_force_n);
+  }
+  chain.grounded_elements = static_cast<int>(offsets.size());
+  chain.grounded_tension_offset_n = Eigen::Map<const Vector>(offsets.data(), chain.grounded_elements);
+}
+
 // The sections of the elements, the nodes' arc lengths and point inertias, and the lumped weights.
-void lay_out_chain(FeChain& chain, const FeLineMesh& mesh, double penalty_axial_stiffness_n) {
+void lay_out_chain(FeChain& chain, const FeLineMesh& mesh, double penalty_axial_stiffness_n, double continuous_h_n) {
   const int N = mesh.elements();
   chain.elements = N;
   chain.equal_elements = mesh.is_one_piece();
@@ -50,6 +80,7 @@ void lay_out_chain(FeChain& chain, const FeLineMesh& mesh, double penalty_axial_
   chain.piece_first_element.clear();
   int j = 0;
   double s = 0.0;
+  chain.piece_first_element.clear();
   for (const FeMeshPiece& piece : mesh.pieces) {
     chain.piece_first_element.push_back(j);
     if (piece.point_at_start >= 0) {
@@ -71,6 +102,7 @@ void lay_out_chain(FeChain& chain, const FeLineMesh& mesh, double penalty_axial_
   }
   chain.node_s_m[N] = s;
   lump_weights(chain, mesh);
+  lay_out_contact(chain, mesh, continuous_h_n);
 }
 
 // Fills the per-element forces, lengths and node positions of a chain with support forces (H, V_A).
@@ -83,11 +115,18 @@ void build_chain(FeChain& chain, double H, double V_A) {
   chain.direction.resize(static_cast<std::size_t>(N));
   chain.node_offset_m.assign(static_cast<std::size_t>(N) + 1, Vec2::Zero());
   for (int j = 0; j < N; ++j) {
-    // Element j carries the continuous force at its midpoint (see lump_weights).
-    const double V = V_A + chain.vertical_offset_n[j];
-    const double T = std::hypot(H, V);
-    chain.tension_n[j] = T;
-    chain.direction[static_cast<std::size_t>(j)] = T > 0.0 ? Vec2(H / T, V / T) : Vec2(0.0, 1.0);
+    if (j < chain.grounded_elements) {
+      // On the seabed: horizontal, with the friction profile (lay_out_contact).
+      chain.tension_n[j] = std::max(H + chain.grounded_tension_offset_n[j], 0.0);
+      chain.direction[static_cast<std::size_t>(j)] = Vec2(1.0, 0.0);
+    } else {
+      // Element j carries the continuous force at its midpoint (see lump_weights).
+      const double V = V_A + chain.vertical_offset_n[j];
+      const double T = std::hypot(H, V);
+      chain.tension_n[j] = T;
+      chain.direction[static_cast<std::size_t>(j)] = T > 0.0 ? Vec2(H / T, V / T) : Vec2(0.0, 1.0);
+    }
+    const double T = chain.tension_n[j];
     chain.stretched_length_m[j] = chain.element_length_m[j] * (1.0 + T / chain.axial_stiffness_n[j]);
     chain.node_offset_m[static_cast<std::size_t>(j) + 1] =
         chain.node_offset_m[static_cast<std::size_t>(j)] +
@@ -99,6 +138,11 @@ void build_chain(FeChain& chain, double H, double V_A) {
 Eigen::Matrix2d closure_jacobian(const FeChain& chain) {
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
   for (int j = 0; j < chain.elements; ++j) {
+    if (j < chain.grounded_elements) {
+      // Only the grounded tension's stretch depends on H (while it is positive).
+      if (chain.tension_n[j] > 0.0) J(0, 0) += chain.element_length_m[j] / chain.axial_stiffness_n[j];
+      continue;
+    }
     const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
     J += chain.element_length_m[j] * ((Eigen::Matrix2d::Identity() - t * t.transpose()) / chain.tension_n[j] +
                                       Eigen::Matrix2d::Identity() / chain.axial_stiffness_n[j]);
@@ -115,13 +159,17 @@ void close_chain(FeChain& chain, const Problem& problem, const StaticSolution& s
   double H = statics.horizontal_force_n();
   double V_A = statics.vertical_force_a_n();
   const bool vertical = H == 0.0;
+  // A line lying entirely on the seabed closes in x through H alone.
+  const bool all_grounded = chain.grounded_elements == chain.elements;
   const double tolerance = 1e-14 * std::max(L, chord.norm());
   build_chain(chain, H, V_A);
   Vec2 residual = chain.node_offset_m.back() - chord;
   int iteration = 0;
   for (; iteration < 100 && residual.norm() > tolerance; ++iteration) {
     const Eigen::Matrix2d J = closure_jacobian(chain);
-    const Vec2 step = vertical ? Vec2(0.0, -residual.y() / J(1, 1)) : Vec2(-J.ldlt().solve(residual));
+    const Vec2 step = vertical       ? Vec2(0.0, -residual.y() / J(1, 1))
+                      : all_grounded ? Vec2(-residual.x() / J(0, 0), 0.0)
+                                     : Vec2(-J.ldlt().solve(residual));
     double alpha = 1.0;
     FeChain trial = chain;
     for (int k = 0; k < 40; ++k, alpha *= 0.5) {
@@ -155,7 +203,7 @@ FeChain solve_chain_statics(const Problem& problem,
                             const FeLineMesh& mesh,
                             double penalty_axial_stiffness_n) {
   FeChain chain;
-  lay_out_chain(chain, mesh, penalty_axial_stiffness_n);
+  lay_out_chain(chain, mesh, penalty_axial_stiffness_n, statics.horizontal_force_n());
   const int elements = chain.elements;
   if (problem.prescribed_forces) {
     // Tension-specified problems keep their forces: re-solving them from the geometry would
@@ -167,7 +215,8 @@ FeChain solve_chain_statics(const Problem& problem,
     if (!chain.in_equilibrium()) return chain;
   }
   chain.closure_error_m = (chain.node_offset_m.back() - problem.supports.chord_m()).norm();
-  for (int j = 0; j < elements; ++j) {
+  // A grounded element may be slack (friction): the seabed holds it.
+  for (int j = chain.grounded_elements; j < elements; ++j) {
     if (!(chain.tension_n[j] > 0.0) || !std::isfinite(chain.tension_n[j])) {
       chain.failure = fmt::format(
           "discrete statics (N = {}): tension {:.3e} N in element {} is not positive: the chain "
@@ -177,6 +226,13 @@ FeChain solve_chain_statics(const Problem& problem,
     }
   }
   return chain;
+}
+
+double FeChain::grounded_share_m(int i) const {
+  double share = 0.0;
+  if (i >= 1 && i - 1 < grounded_elements) share += 0.5 * element_length_m[i - 1];
+  if (i < grounded_elements) share += 0.5 * element_length_m[i];
+  return share;
 }
 
 FeChain solve_chain_statics(const Problem& problem,

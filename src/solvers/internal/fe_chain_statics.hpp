@@ -38,12 +38,27 @@ struct FeChain {
   Vector mass_kg_per_m;
   Vector normal_mass_kg_per_m;
   Vector vertical_offset_n;
+  /// Seabed contact (docs/methods/fe.md, "Seabed contact"): the first `grounded_elements` elements
+  /// lie on the seabed, horizontal, with tension max(H + grounded_tension_offset_n[j], 0) (the
+  /// continuous friction profile at the element's midpoint, shifted with the chain's own H); the
+  /// others are suspended from the touchdown node, where the chain's vertical force is V_A
+  /// (vertical_offset_n then counts only the weight beyond the touchdown point). The foundation
+  /// stiffnesses k_s (vertical) and k_t (along and across) act on the grounded elements [N/m/m].
+  int grounded_elements = 0;
+  Vector grounded_tension_offset_n;
+  double foundation_vertical_n_per_m2 = 0.0;
+  double foundation_tangential_n_per_m2 = 0.0;
+  /// The first element of each mesh piece (fe_line_mesh.hpp), ascending from 0: within a piece the
+  /// elements are equal and the response smooth; joints, points and the touchdown point are
+  /// piece boundaries.
+  std::vector<int> piece_first_element;
   /// Per node i = 0..N: unstretched arc length s_i [m] and the inertia of a point attachment there.
   Vector node_s_m;
   std::vector<FeNodeInertia> node_inertia;
   /// The first element of each piece of the mesh (fe_line_mesh.hpp), in order; {0} for a cable.
   std::vector<int> piece_first_element;
-  /// Support force (H, V_A) of the chain [N].
+  /// Support force (H, V_A) of the chain [N]; with seabed contact, H of the suspended part and the
+  /// vertical force just beyond the touchdown node (O(l0^2), the discrete chain's correction).
   double horizontal_force_n = 0.0;
   double vertical_force_a_n = 0.0;
   /// Per element j = 0..N-1: tension T_j [N], unit direction t_j, stretched length l_j [m].
@@ -62,6 +77,10 @@ struct FeChain {
   std::string failure;
 
   bool in_equilibrium() const { return failure.empty(); }
+  bool has_contact() const { return grounded_elements > 0; }
+  /// Length of unstretched grounded element next to node i on each side that the node carries:
+  /// half of each grounded neighbour's l0 [m] (the foundation is lumped like the mass).
+  double grounded_share_m(int i) const;
 };
 
 /// Solves the discrete statics on `mesh`, with the axial stiffness `penalty_axial_stiffness_n`

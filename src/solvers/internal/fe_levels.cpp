@@ -62,7 +62,7 @@ void plan_penalty_strain(FePlan& plan, const Problem& problem, const StaticSolut
 // Each mesh's layout; on a line the counts of the finer meshes are doubled from the coarsest, and
 // `meshes` becomes their totals (a piece too short for its share gets one element anyway).
 void plan_layouts(FePlan& plan, const Problem& problem, const StaticSolution& statics) {
-  if (problem.is_uniform()) {
+  if (meshed_as_one_piece(problem, statics)) {
     for (int elements : plan.meshes) plan.mesh_layouts.push_back(uniform_cable_mesh(problem.cable, elements));
     return;
   }

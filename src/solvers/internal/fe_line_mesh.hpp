@@ -5,6 +5,7 @@
 /// count, proportional to its length and at least one, and a finer level doubles every count, so
 /// that node i of a mesh is node 2i of the next (the node mapping of fe_extrapolation.hpp).
 
+#include <optional>
 #include <vector>
 
 #include "catena/models/cable.hpp"
@@ -21,12 +22,18 @@ struct FeMeshPiece {
   int elements = 1;
   /// Index in Line::points of the point attachment at the piece's start (-1: none).
   int point_at_start = -1;
+  /// True for a piece resting on the seabed (StaticPiece::grounded); its static tension is
+  /// max(grounded_tension_begin_n + C_B w (s - s_begin), 0) (docs/physics.md, "Seabed contact").
+  bool grounded = false;
+  double grounded_tension_begin_n = 0.0;
 };
 
 /// The pieces of one mesh, in order from A, and the line's point attachments.
 struct FeLineMesh {
   std::vector<FeMeshPiece> pieces;
   std::vector<PointAttachment> points;
+  /// The seabed when the line rests on it (grounded pieces first), else empty.
+  std::optional<Seabed> seabed;
 
   /// Total number of elements.
   int elements() const;
@@ -39,8 +46,12 @@ struct FeLineMesh {
 /// The one-piece mesh of a uniform cable with `elements` elements.
 FeLineMesh uniform_cable_mesh(const CableProperties& cable, int elements);
 
+/// True when `problem` is meshed as one piece: a uniform cable that does not rest on a seabed.
+bool meshed_as_one_piece(const Problem& problem, const StaticSolution& statics);
+
 /// The mesh of `problem` with about `elements` elements: a uniform cable gets exactly that many; a
-/// line's pieces (statics.pieces()) share them in proportion to their lengths (largest
+/// line's pieces (and those of a cable resting on the seabed, whose touchdown point and
+/// zero-tension point are cuts of the statics, hence nodes) (statics.pieces()) share them in proportion to their lengths (largest
 /// remainder), each getting at least one, so the total can exceed `elements` by the pieces that
 /// are too short for their share.
 FeLineMesh make_line_mesh(const Problem& problem, const StaticSolution& statics, int elements);

@@ -20,7 +20,8 @@ void fill_block_tridiagonal(SparseMatrix& matrix,
                             const std::vector<Eigen::Matrix<double, P, P>>& element,
                             const std::vector<Eigen::Matrix<double, P, P>>& node,
                             int elements,
-                            bool diagonal_only) {
+                            bool diagonal_only,
+                            const std::vector<Eigen::Matrix<double, P, P>>* node_stiffness = nullptr) {
   const int free_nodes = elements - 1;
   const Eigen::Index n = static_cast<Eigen::Index>(P) * free_nodes;
   const Eigen::Index nonzeros = diagonal_only ? P * n : 3 * P * n - 2 * P * P;
@@ -47,7 +48,8 @@ void fill_block_tridiagonal(SparseMatrix& matrix,
       const auto& left = element[static_cast<std::size_t>(i) - 1];  // nodes i-1, i
       const auto& right = element[static_cast<std::size_t>(i)];     // nodes i, i+1
       if (i > 1) put(i - 1, left, -1.0);
-      const Eigen::Matrix<double, P, P> diagonal = left + right;
+      Eigen::Matrix<double, P, P> diagonal = left + right;
+      if (node_stiffness) diagonal += (*node_stiffness)[static_cast<std::size_t>(i)];
       put(i, diagonal, 1.0);
       if (i < free_nodes) put(i + 1, right, -1.0);
     }
@@ -81,6 +83,27 @@ Eigen::Matrix2d half_element_mass(const FeChain& chain, int j) {
   const Eigen::Matrix2d ttT = t * t.transpose();
   const double M = chain.normal_mass_kg_per_m[j];
   return 0.5 * chain.element_length_m[j] * (chain.mass_kg_per_m[j] * ttT + M * (Eigen::Matrix2d::Identity() - ttT));
+
+// The seabed foundation on the free nodes (docs/methods/fe.md, "Seabed contact"), lumped like the
+// mass: node i carries k times half of each grounded neighbour's l0, k_t on x (along the seabed)
+// and k_s on z in plane, k_t out of plane. Empty without contact.
+std::vector<Eigen::Matrix2d> inplane_foundation(const FeChain& chain) {
+  if (!chain.has_contact()) return {};
+  std::vector<Eigen::Matrix2d> node(static_cast<std::size_t>(chain.elements) + 1, Eigen::Matrix2d::Zero());
+  for (int i = 1; i < chain.elements; ++i) {
+    const double share = chain.grounded_share_m(i);
+    node[static_cast<std::size_t>(i)].diagonal() << chain.foundation_tangential_n_per_m2 * share,
+        chain.foundation_vertical_n_per_m2 * share;
+  }
+  return node;
+}
+
+std::vector<Eigen::Matrix<double, 1, 1>> outofplane_foundation(const FeChain& chain) {
+  if (!chain.has_contact()) return {};
+  std::vector<Eigen::Matrix<double, 1, 1>> node(static_cast<std::size_t>(chain.elements) + 1);
+  for (int i = 0; i <= chain.elements; ++i)
+    node[static_cast<std::size_t>(i)](0, 0) = chain.foundation_tangential_n_per_m2 * chain.grounded_share_m(i);
+  return node;
 }
 
 }  // namespace
@@ -120,7 +143,8 @@ FeMatrices assemble_inplane(const FeChain& chain) {
     if (point.tangential_kg > 0.0 || point.normal_kg > 0.0)
       node[static_cast<std::size_t>(i)] += point.tangential_kg * ttT + point.normal_kg * nnT;
   }
-  fill_block_tridiagonal<2>(out.stiffness, element, node, N, false);
+  const std::vector<Eigen::Matrix2d> foundation = inplane_foundation(chain);
+  fill_block_tridiagonal<2>(out.stiffness, element, node, N, false, foundation.empty() ? nullptr : &foundation);
   fill_block_tridiagonal<2>(out.mass, element, node, N, true);
   // Columns 0-1: node a's (x, z); columns 2-3: node b's.
   const Eigen::Index n = out.stiffness.rows();
@@ -151,7 +175,8 @@ FeMatrices assemble_outofplane(const FeChain& chain) {
                                 : half_sum(chain, chain.normal_mass_kg_per_m, i)) +
         chain.node_inertia[static_cast<std::size_t>(i)].outofplane_kg;
   }
-  fill_block_tridiagonal<1>(out.stiffness, element, node, N, false);
+  const std::vector<Block> foundation = outofplane_foundation(chain);
+  fill_block_tridiagonal<1>(out.stiffness, element, node, N, false, foundation.empty() ? nullptr : &foundation);
   fill_block_tridiagonal<1>(out.mass, element, node, N, true);
   const Eigen::Index n = out.stiffness.rows();
   const std::vector<Eigen::Triplet<double>> b_entries = {{0, 0, -element.front()(0, 0)},

@@ -3,8 +3,8 @@
 /// Which solvers take a general line (docs/physics.md, "General lines"): the analytic models
 /// (frobenius, asymptotic, airy) are models of one uniform cable, and decline a line of several
 /// segments or with point attachments with this reason; and which take a line resting on the
-/// seabed (docs/physics.md, "Seabed contact"): none yet. A seabed the line does not touch changes
-/// nothing.
+/// seabed (docs/physics.md, "Seabed contact"): fe (docs/methods/fe.md, "Seabed contact"); shooting
+/// declines until its dynamics lands. A seabed the line does not touch changes nothing.
 
 #include <optional>
 #include <string>
@@ -29,7 +29,7 @@ inline std::optional<std::string> no_seabed_contact(const StaticSolution& static
          std::to_string(statics.grounded_length_m()) + " m of its length on the seabed";
 }
 
-/// fe and shooting on a line with seabed contact, until its linear dynamics is built.
+/// shooting on a line with seabed contact, until its linear dynamics is built.
 inline std::optional<std::string> seabed_dynamics_not_implemented(const StaticSolution& statics) {
   if (!statics.has_contact()) return std::nullopt;
   return std::string("seabed contact dynamics: not implemented in this build");
