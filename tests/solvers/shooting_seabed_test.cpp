@@ -1,8 +1,8 @@
 // Tests of the `shooting` solver on a line resting on the seabed (docs/methods/shooting.md,
 // "Seabed contact"):
 //  - a taut line lying entirely on the seabed: out of plane a string on an elastic foundation,
-//    w^2 = (T/(1+e) (n pi/L)^2 + k_t (1+e)) / M; in plane the same with k_s merged with the bar on
-//    a foundation, w^2 = (EA (n pi/L)^2 + k_t (1+e)) / m (L unstretched, k per metre of seabed);
+//    w^2 = (T/(1+e) (n pi/L)^2 + k_t) / M; in plane the same with k_s merged with the bar on
+//    a foundation, w^2 = (EA (n pi/L)^2 + k_t) / m (L unstretched, k per unstretched metre);
 //    the conjugate-point count stays exact with the foundation (every mode found in order);
 //  - a line touching down exactly at A reproduces the line without a seabed;
 //  - the 40%-grounded chain (tests/statics/seabed_statics_test.cpp): 10 modes per plane converge
@@ -66,14 +66,14 @@ struct GroundedString {
     return StaticSolution(p.as_line(), p.supports.a_m, *p.seabed, H, L);
   }
   double e() const { return H / EA; }
-  // Transverse string on a foundation k (per metre of seabed), unstretched measure.
+  // Transverse string on a foundation k (per unstretched metre), unstretched measure.
   double string(int n, double k) const {
     const double q = n * kPi / L;
-    return std::sqrt((H / (1.0 + e()) * q * q + k * (1.0 + e())) / (m + ma));
+    return std::sqrt((H / (1.0 + e()) * q * q + k) / (m + ma));
   }
   double bar(int n) const {
     const double q = n * kPi / L;
-    return std::sqrt((EA * q * q + k_t * (1.0 + e())) / m);
+    return std::sqrt((EA * q * q + k_t) / m);
   }
 };
 
@@ -103,12 +103,12 @@ TEST(ShootingSeabed, LineEntirelyOnTheSeabedIsAStringAndABarOnAFoundation) {
 }
 
 // Forced at B, the line lying on the seabed responds as a string or bar on a foundation:
-// y(s) = a sin(q s) / sin(q L), q^2 = (w^2 mass - k (1+e)) / stiffness (sinh when q^2 < 0).
+// y(s) = a sin(q s) / sin(q L), q^2 = (w^2 mass - k) / stiffness (sinh when q^2 < 0).
 TEST(ShootingSeabed, ForcedResponseOfALineOnTheSeabedIsExact) {
   const GroundedString g;
   const double e = g.e(), a = 0.01, omega = 45.0;  // between modes in every direction
   auto exact = [&](double mass, double k, double stiffness, double s) {
-    const double q2 = (omega * omega * mass - k * (1.0 + e)) / stiffness;
+    const double q2 = (omega * omega * mass - k) / stiffness;
     if (q2 < 0.0) return a * std::sinh(std::sqrt(-q2) * s) / std::sinh(std::sqrt(-q2) * g.L);
     return a * std::sin(std::sqrt(q2) * s) / std::sin(std::sqrt(q2) * g.L);
   };
@@ -151,7 +151,7 @@ TEST(ShootingSeabed, ForcedResponseOfALineOnTheSeabedIsExact) {
   }
 }
 
-// The conjugate-point count with the foundation: below sqrt(k (1+e) / M) the transverse C is
+// The conjugate-point count with the foundation: below sqrt(k / M) the transverse C is
 // negative and the phase is not monotone along s, yet at every trial frequency between the exact
 // roots (and from either end) the count equals the number of exact frequencies below it.
 TEST(ShootingSeabed, ConjugatePointCountIsExactWithTheFoundation) {

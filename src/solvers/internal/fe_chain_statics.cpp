@@ -77,7 +77,6 @@ void lay_out_chain(FeChain& chain, const FeLineMesh& mesh, double penalty_axial_
   chain.normal_mass_kg_per_m.resize(N);
   chain.node_s_m.resize(N + 1);
   chain.node_inertia.assign(static_cast<std::size_t>(N) + 1, FeNodeInertia{});
-  chain.piece_first_element.clear();
   int j = 0;
   double s = 0.0;
   chain.piece_first_element.clear();

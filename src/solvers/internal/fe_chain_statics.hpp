@@ -55,8 +55,6 @@ struct FeChain {
   /// Per node i = 0..N: unstretched arc length s_i [m] and the inertia of a point attachment there.
   Vector node_s_m;
   std::vector<FeNodeInertia> node_inertia;
-  /// The first element of each piece of the mesh (fe_line_mesh.hpp), in order; {0} for a cable.
-  std::vector<int> piece_first_element;
   /// Support force (H, V_A) of the chain [N]; with seabed contact, H of the suspended part and the
   /// vertical force just beyond the touchdown node (O(l0^2), the discrete chain's correction).
   double horizontal_force_n = 0.0;

@@ -83,6 +83,7 @@ Eigen::Matrix2d half_element_mass(const FeChain& chain, int j) {
   const Eigen::Matrix2d ttT = t * t.transpose();
   const double M = chain.normal_mass_kg_per_m[j];
   return 0.5 * chain.element_length_m[j] * (chain.mass_kg_per_m[j] * ttT + M * (Eigen::Matrix2d::Identity() - ttT));
+}
 
 // The seabed foundation on the free nodes (docs/methods/fe.md, "Seabed contact"), lumped like the
 // mass: node i carries k times half of each grounded neighbour's l0, k_t on x (along the seabed)

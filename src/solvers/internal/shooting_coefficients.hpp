@@ -29,8 +29,8 @@ struct ShootingPiece {
   bool grounded = false;              ///< resting on the seabed
   double tension_begin = 0.0;         ///< grounded: tension at the start before clipping [N]
   double tension_slope = 0.0;         ///< grounded: C_B w [N/m]
-  double foundation_normal = 0.0;     ///< grounded: k_s, vertical [N/m per m of seabed]
-  double foundation_tangential = 0.0; ///< grounded: k_t, along and across [N/m per m of seabed]
+  double foundation_normal = 0.0;     ///< grounded: k_s, vertical [N/m per unstretched m]
+  double foundation_tangential = 0.0; ///< grounded: k_t, along and across [N/m per unstretched m]
 
   /// T(s) [N] for the horizontal force H of the suspended part.
   double tension(double H, double s) const;

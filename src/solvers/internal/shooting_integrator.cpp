@@ -111,13 +111,13 @@ Basis<D> to_physical(const Basis<D>& carried, const RhsData& data) {
 }
 
 // The Winkler foundation under a grounded piece (docs/methods/shooting.md, "Seabed contact"):
-// springs k per metre of seabed, k (1 + e) per unstretched metre, enter the force balance as
-// F' = -(w^2 Mmat - Kf) D, Kf = (1 + e)(k_t t t^T + k_s n n^T) (out of plane k_t), t = +x: in the
-// scaled, carried variables C -> C - L^2 Q Kf Q^T / (T_ref kappa^2).
+// springs k per unstretched metre (like m, M and W0: docs/physics.md, "Seabed contact: linear
+// dynamics") enter the force balance as F' = -(w^2 Mmat - Kf) D, Kf = k_t t t^T + k_s n n^T (out of
+// plane k_t), t = +x: in the scaled, carried variables C -> C - L^2 Q Kf Q^T / (T_ref kappa^2).
 template <int D>
-void subtract_foundation(const RhsData& data, const ShootingPiece& p, double e, Square<D>& C) {
+void subtract_foundation(const RhsData& data, const ShootingPiece& p, Square<D>& C) {
   const ShootingCoefficients& k = data.coefficients;
-  const double scale = k.length_m * k.length_m * (1.0 + e) / (k.t_ref * data.kappa2);
+  const double scale = k.length_m * k.length_m / (k.t_ref * data.kappa2);
   if constexpr (D == 1) {
     C(0, 0) -= scale * p.foundation_tangential;
   } else {
@@ -154,7 +154,7 @@ void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C) 
     C = (data.omega2 / data.kappa2) *
         (mass_ratio * tq * tq.transpose() + (p.M / k.M) * nq * nq.transpose());
   }
-  if (p.grounded) subtract_foundation<D>(data, p, e, C);
+  if (p.grounded) subtract_foundation<D>(data, p, C);
 }
 
 template <int D>
