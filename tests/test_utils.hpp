@@ -29,6 +29,17 @@ inline Problem split_into_segments(const Problem& uniform, int pieces) {
 }
 
 /// Symmetric relative difference (Boost.Math); infinite when one value is non-finite.
+// The seabed tests' chain (tests/statics/seabed_statics_test.cpp): 1000 m in 200 m of water with
+// 40 % of its length on the seabed, Coulomb friction `friction` and vertical foundation `k_s`.
+inline Problem forty_percent_grounded_chain(double friction, double k_s) {
+  Problem p;
+  p.cable = {1000.0, 1200.0, 8e8, 150.0, 20.0};
+  p.supports.a_m = Vec2(0.0, -200.0);
+  p.supports.b_m = Vec2(955.85, 0.0);
+  p.seabed = Seabed{-200.0, friction, k_s, 0.0};
+  return p;
+}
+
 inline double relative_error(double a, double b) { return boost::math::relative_difference(a, b); }
 
 /// -log10(relative error), capped at 16.

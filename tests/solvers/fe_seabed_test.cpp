@@ -166,18 +166,9 @@ TEST(FeSeabed, ForcedResponseOfTheLineOnTheSeabedIsExact) {
   }
 }
 
-// A chain of 1000 m in 200 m of water, 40 % of it on the seabed (the statics' test line).
-Problem forty_percent_grounded(double friction, double vertical_stiffness) {
-  Problem p;
-  p.cable = {1000.0, 1200.0, 8e8, 150.0, 20.0};
-  p.supports.a_m = Vec2(0.0, -200.0);
-  p.supports.b_m = Vec2(955.85, 0.0);
-  p.seabed = Seabed{-200.0, friction, vertical_stiffness, 0.0};
-  return p;
-}
 
 SolverOutput solve_forty(double friction, double vertical_stiffness, int elements, bool richardson = true) {
-  const Problem problem = forty_percent_grounded(friction, vertical_stiffness);
+  const Problem problem = testing::forty_percent_grounded_chain(friction, vertical_stiffness);
   const StaticSolution statics = solve_seabed_statics(problem);
   FeSolverOptions options;
   options.elements = elements;
@@ -189,7 +180,7 @@ SolverOutput solve_forty(double friction, double vertical_stiffness, int element
 // statics' (H, 0) at O(l0^2): the error falls by 4 per halving.
 TEST(FeSeabed, DiscreteStaticsConvergesAtSecondOrder) {
   for (double friction : {0.0, 0.1}) {
-    const Problem problem = forty_percent_grounded(friction, 3e6);
+    const Problem problem = testing::forty_percent_grounded_chain(friction, 3e6);
     const StaticSolution statics = solve_seabed_statics(problem);
     std::vector<double> h_error, v_error;
     for (int N : {100, 200, 400}) {

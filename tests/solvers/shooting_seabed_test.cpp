@@ -21,6 +21,7 @@
 #include "solvers/internal/shooting_coefficients.hpp"
 #include "solvers/internal/shooting_integrator.hpp"
 #include "solvers/solver_test_support.hpp"
+#include "test_utils.hpp"
 
 namespace catena {
 namespace {
@@ -180,15 +181,6 @@ TEST(ShootingSeabed, ConjugatePointCountIsExactWithTheFoundation) {
   }
 }
 
-// The chain of tests/statics/seabed_statics_test.cpp: 1000 m in 200 m of water, 40% grounded.
-Problem chain_on_seabed(double friction, double k_s) {
-  Problem p;
-  p.cable = {1000.0, 1200.0, 8e8, 150.0, 20.0};
-  p.supports.a_m = Vec2(0.0, -200.0);
-  p.supports.b_m = Vec2(955.85, 0.0);
-  p.seabed = Seabed{-200.0, friction, k_s, 0.0};
-  return p;
-}
 
 ModalResult plane_of(const SolverOutput& out, Plane plane) {
   return plane == Plane::InPlane ? *out.inplane : *out.outofplane;
@@ -208,7 +200,7 @@ TEST(ShootingSeabed, FortyPercentGroundedChainConvergesWithAndWithoutFriction) {
   ShootingSolverOptions options;
   options.relative_tolerance = 1e-11;
   for (double friction : {0.0, 0.1}) {
-    const Problem p = chain_on_seabed(friction, 3e6);
+    const Problem p = testing::forty_percent_grounded_chain(friction, 3e6);
     const StaticSolution statics = solve_statics(p);
     ASSERT_TRUE(statics.converged && statics.has_contact());
     EXPECT_NEAR(statics.grounded_length_m() / 1000.0, 0.4, 0.05);
@@ -226,7 +218,7 @@ TEST(ShootingSeabed, FortyPercentGroundedChainConvergesWithAndWithoutFriction) {
 
 // A line whose free catenary leaves A horizontally (V_A = 0) touches down exactly at A.
 TEST(ShootingSeabed, TouchdownExactlyAtTheAnchorReproducesTheLineWithoutSeabed) {
-  Problem p = chain_on_seabed(0.5, 3e6);
+  Problem p = testing::forty_percent_grounded_chain(0.5, 3e6);
   const double H = 1.5e6;
   p.supports.b_m = p.supports.a_m + catenary_end_offset(p.cable, H, 0.0);
   Problem free = p;
@@ -267,7 +259,7 @@ TEST(ShootingSeabed, InPlaneFrequenciesConvergeAsTheSeabedStiffens) {
   // 3e8 and beyond cost minutes (the steps grow as L_g sqrt(k_s / T): docs/methods/shooting.md).
   const std::vector<double> stiffnesses{3e3, 3e4, 3e5, 3e6, 3e7};
   for (double k_s : stiffnesses) {
-    const Problem p = chain_on_seabed(0.0, k_s);
+    const Problem p = testing::forty_percent_grounded_chain(0.0, k_s);
     const SolverOutput out = solve_with(p, solve_statics(p), 10, 0, options);
     ASSERT_EQ(out.inplane->summary.termination, Termination::Converged) << out.inplane->summary.message;
     table.push_back(omegas(*out.inplane));
