@@ -76,7 +76,12 @@ class FeNumerics final : public SolverNumerics {
   std::optional<std::string> not_applicable() const override {
     return fe_penalty_not_applicable(plan_);
   }
-  void describe(SolverSummary& summary) const override { describe_fe_run(plan_, summary); }
+  void describe(SolverSummary& summary) const override {
+    describe_fe_run(plan_, summary);
+    if (auto note = seabed_model_note(context_.statics, "lumped on the grounded nodes like the mass; the touchdown point "
+                                                        "is a node, the layer sqrt(T/k_s) beyond it a piece of its own"))
+      summary.notes.push_back(*note);
+  }
   std::optional<Outcome> prepare() override;
   ModalResult modes(Plane plane, int count) override;
   ForcedOutcome forced(const ForcedRequest& request) override {

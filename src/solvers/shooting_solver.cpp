@@ -14,6 +14,7 @@
 
 #include "catena/core/error.hpp"
 #include "solvers/internal/knob_table.hpp"
+#include "solvers/internal/line_applicability.hpp"
 #include "solvers/internal/shooting_coefficients.hpp"
 #include "solvers/internal/shooting_forced.hpp"
 #include "solvers/internal/shooting_integrator.hpp"
@@ -174,15 +175,8 @@ void ShootingNumerics::describe(SolverSummary& summary) const {
       "exact linearisation about the closed-form static catenary; A^{-1} used, so EA = inf is "
       "exact (no penalty); counting by the conjugate points of the principal solution (phase of "
       "det(Phi + iF), Morse index / Sturm)");
-  const StaticSolution& statics = context_.statics;
-  if (statics.has_contact()) {
-    summary.notes.push_back(fmt::format(
-        "seabed contact: the grounded {:.6g} m from A move on a Winkler foundation (k_s = {:.6g}, "
-        "k_t = {:.6g} N/m per m of seabed) with the friction tension of the statics, the contact "
-        "set fixed; matched to the suspended part at the touchdown point",
-        statics.grounded_length_m(), statics.seabed().stiffness_n_per_m2,
-        statics.seabed().tangential_stiffness_n_per_m2));
-  }
+  const char* how = "integrated piece by piece, matched to the suspended part at the touchdown point";
+  if (auto note = seabed_model_note(context_.statics, how)) summary.notes.push_back(*note);
 }
 
 // Frequencies (and shapes, tension) of one plane. A straight (vertical, H = 0) inextensible

@@ -231,6 +231,11 @@ TEST(FeSeabed, FortyPercentGroundedConvergesWithinItsEstimate) {
       for (std::size_t i = 0; i < 10; ++i)
         EXPECT_LT(relative_error(a.modes[i].omega_rad_s, b.modes[i].omega_rad_s), a.modes[i].relative_error_estimate);
     }
+    // The summary says which dynamic model of the contact fe solved.
+    const std::vector<std::string>& notes = coarse.summary.notes;
+    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& note) {
+      return note.find("Winkler foundation (k_s = 3e+06") != std::string::npos;
+    }));
   }
 }
 

@@ -3,9 +3,11 @@
 /// Which solvers take a general line (docs/physics.md, "General lines"): the analytic models
 /// (frobenius, asymptotic, airy) are models of one uniform cable, and decline a line of several
 /// segments or with point attachments with this reason; and which take a line resting on the
-/// seabed (docs/physics.md, "Seabed contact"): fe (docs/methods/fe.md, "Seabed contact"); shooting
-/// declines until its dynamics lands. A seabed the line does not touch changes nothing.
+/// seabed (docs/physics.md, "Seabed contact"): fe and shooting (docs/methods/fe.md and
+/// docs/methods/shooting.md, "Seabed contact"), which say in their summary which model they used.
+/// A seabed the line does not touch changes nothing.
 
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -29,10 +31,17 @@ inline std::optional<std::string> no_seabed_contact(const StaticSolution& static
          std::to_string(statics.grounded_length_m()) + " m of its length on the seabed";
 }
 
-/// shooting on a line with seabed contact, until its linear dynamics is built.
-inline std::optional<std::string> seabed_dynamics_not_implemented(const StaticSolution& statics) {
+/// The note fe and shooting put in their summary on a line with seabed contact: the dynamic model
+/// they solved (`discretisation` says how), or nullopt without contact.
+inline std::optional<std::string> seabed_model_note(const StaticSolution& statics, const std::string& discretisation) {
   if (!statics.has_contact()) return std::nullopt;
-  return std::string("seabed contact dynamics: not implemented in this build");
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "seabed contact: the grounded %.6g m from A move on a Winkler foundation (k_s = %.6g, k_t = %.6g "
+                "N/m per unstretched m) with the friction tension of the statics, the contact set fixed; ",
+                statics.grounded_length_m(), statics.seabed().stiffness_n_per_m2,
+                statics.seabed().tangential_stiffness_n_per_m2);
+  return text + discretisation;
 }
 
 }  // namespace catena::internal
