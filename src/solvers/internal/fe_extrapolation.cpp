@@ -11,7 +11,8 @@ namespace {
 
 // The displacement of the free nodes of a chain of `elements` elements, restricted to the nodes
 // of a chain of `coarse_elements` (a divisor): node i of the coarse chain is node i r of the fine.
-Eigen::MatrixXd restrict_to_nodes(const Eigen::MatrixXd& vectors, int elements, int coarse_elements, Plane plane) {
+Eigen::MatrixXd restrict_to_nodes(const Eigen::Ref<const Eigen::MatrixXd>& vectors, int elements, int coarse_elements,
+                                  Plane plane) {
   const int per_node = plane == Plane::InPlane ? 2 : 1;
   const int ratio = elements / coarse_elements;
   Eigen::MatrixXd out(per_node * (coarse_elements - 1), vectors.cols());
@@ -21,7 +22,7 @@ Eigen::MatrixXd restrict_to_nodes(const Eigen::MatrixXd& vectors, int elements, 
 }
 
 // The greedy assignment of match_modes on the MAC between the columns of a and b.
-std::vector<int> assign_by_mac(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+std::vector<int> assign_by_mac(const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const Eigen::MatrixXd>& b) {
   const Eigen::MatrixXd cross = a.transpose() * b;
   const Vector na = a.colwise().squaredNorm().transpose(), nb = b.colwise().squaredNorm().transpose();
   const auto n = static_cast<int>(a.cols());
@@ -51,12 +52,16 @@ std::vector<int> assign_by_mac(const Eigen::MatrixXd& a, const Eigen::MatrixXd& 
 
 }  // namespace
 
-std::vector<int> match_modes(const Eigen::MatrixXd& reference,
+std::vector<int> match_modes(const Eigen::Ref<const Eigen::MatrixXd>& reference,
                              int reference_elements,
-                             const Eigen::MatrixXd& other,
+                             const Eigen::Ref<const Eigen::MatrixXd>& other,
                              int other_elements,
                              Plane plane) {
   const int common = std::min(reference_elements, other_elements);
+  // A mesh whose nodes are all common is used as it is, not copied.
+  if (reference_elements == common && other_elements == common) return assign_by_mac(reference, other);
+  if (reference_elements == common) return assign_by_mac(reference, restrict_to_nodes(other, other_elements, common, plane));
+  if (other_elements == common) return assign_by_mac(restrict_to_nodes(reference, reference_elements, common, plane), other);
   return assign_by_mac(restrict_to_nodes(reference, reference_elements, common, plane),
                        restrict_to_nodes(other, other_elements, common, plane));
 }
@@ -64,15 +69,26 @@ std::vector<int> match_modes(const Eigen::MatrixXd& reference,
 // Pairing by shape, not by rank: near a cross-over the order of two close modes can differ
 // between meshes (the discretisation error moves the crossing), and pairing by rank would then
 // extrapolate one mode's frequency with the other's.
+// The reference level matches itself mode for mode: it is not compared with itself (at N = 1e6
+// that comparison copied and multiplied two n x k blocks for nothing). Column blocks are passed
+// as references, not copied.
 FeModeMatches match_level_modes(const FeLevels& levels, const FePlan& plan, Plane plane, int available) {
   const FeLevel& reference = levels[static_cast<std::size_t>(plan.main_fine)][0];
-  const Eigen::MatrixXd reference_vectors = reference.eigen.at(plane).eigenvectors.leftCols(available);
+  const auto reference_vectors = reference.eigen.at(plane).eigenvectors.leftCols(available);
   FeModeMatches matches(levels.size(), std::vector<std::vector<int>>(plan.penalties()));
-  for (std::size_t m = 0; m < levels.size(); ++m)
-    for (std::size_t k = 0; k < plan.penalties(); ++k)
+  for (std::size_t m = 0; m < levels.size(); ++m) {
+    for (std::size_t k = 0; k < plan.penalties(); ++k) {
+      const FeLevel& level = levels[m][k];
+      if (&level == &reference) {
+        std::vector<int> identity(static_cast<std::size_t>(available));
+        for (int i = 0; i < available; ++i) identity[static_cast<std::size_t>(i)] = i;
+        matches[m][k] = identity;
+        continue;
+      }
       matches[m][k] = match_modes(reference_vectors, reference.chain.elements,
-                                  levels[m][k].eigen.at(plane).eigenvectors.leftCols(available),
-                                  levels[m][k].chain.elements, plane);
+                                  level.eigen.at(plane).eigenvectors.leftCols(available), level.chain.elements, plane);
+    }
+  }
   return matches;
 }
 

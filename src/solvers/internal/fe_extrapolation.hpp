@@ -18,9 +18,9 @@ namespace catena::internal {
 /// largest modal assurance criterion MAC = (a.b)^2 / (a.a b.b) on the common nodes, assigned
 /// greedily from the best pair down (each mode used once). The meshes' element counts must
 /// divide one another (they differ by powers of two), so the coarser mesh's nodes are common.
-std::vector<int> match_modes(const Eigen::MatrixXd& reference,
+std::vector<int> match_modes(const Eigen::Ref<const Eigen::MatrixXd>& reference,
                              int reference_elements,
-                             const Eigen::MatrixXd& other,
+                             const Eigen::Ref<const Eigen::MatrixXd>& other,
                              int other_elements,
                              Plane plane);
 
