@@ -53,10 +53,8 @@ void bind_cable(py::module_& module) {
       });
 }
 
-Problem make_problem(const CableProperties& cable, const Point& b_m, const Point& a_m,
-                     const std::optional<Seabed>& seabed) {
-  Problem problem;
-  problem.cable = cable;
+// The supports and seabed of a problem, then the whole problem validated.
+Problem with_supports(Problem problem, const Point& b_m, const Point& a_m, const std::optional<Seabed>& seabed) {
   problem.supports.a_m = to_vec2(a_m);
   problem.supports.b_m = to_vec2(b_m);
   problem.seabed = seabed;
@@ -64,14 +62,17 @@ Problem make_problem(const CableProperties& cable, const Point& b_m, const Point
   return problem;
 }
 
+Problem make_problem(const CableProperties& cable, const Point& b_m, const Point& a_m,
+                     const std::optional<Seabed>& seabed) {
+  Problem problem;
+  problem.cable = cable;
+  return with_supports(problem, b_m, a_m, seabed);
+}
+
 Problem make_line_problem(const Line& line, const Point& b_m, const Point& a_m, const std::optional<Seabed>& seabed) {
   Problem problem;
   problem.line = line;
-  problem.supports.a_m = to_vec2(a_m);
-  problem.supports.b_m = to_vec2(b_m);
-  problem.seabed = seabed;
-  problem.validate();
-  return problem;
+  return with_supports(problem, b_m, a_m, seabed);
 }
 
 Seabed make_seabed(double z_m, double friction, double stiffness, double tangential_stiffness) {

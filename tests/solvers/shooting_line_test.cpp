@@ -25,6 +25,7 @@ namespace catena {
 namespace {
 
 using catena::testing::split_into_segments;
+using catena::testing::omegas;
 
 // rtol 1e-12 gives the frequencies of smooth problems to a few 1e-12 (shooting_solver_test.cpp).
 constexpr double kRelTol = 1e-9;
@@ -38,12 +39,6 @@ ShootingSolverOptions tight() {
 testing::SolvedProblem solve(const Problem& problem, int inplane, int outofplane) {
   return testing::solve_problem(solve_shooting, problem, testing::modes_request(inplane, outofplane),
                                 tight());
-}
-
-std::vector<double> omegas(const ModalResult& result) {
-  std::vector<double> out;
-  for (const Mode& mode : result.modes) out.push_back(mode.omega_rad_s);
-  return out;
 }
 
 void expect_close(const std::vector<double>& got, const std::vector<double>& want, double tol) {

@@ -26,16 +26,12 @@
 namespace catena {
 namespace {
 
+using testing::omegas;
+
 ShootingSolverOptions tight() {
   ShootingSolverOptions options;
   options.relative_tolerance = 1e-12;
   return options;
-}
-
-std::vector<double> omegas(const ModalResult& result) {
-  std::vector<double> out;
-  for (const Mode& mode : result.modes) out.push_back(mode.omega_rad_s);
-  return out;
 }
 
 // Also prints the largest relative difference (the numbers of docs/methods/shooting.md).

@@ -2,6 +2,8 @@
 // What every solver test does before asserting: the shared statics and groups of a problem, the
 // solver's output, and a modes-only request. One place, so the solver tests stay about the solver.
 
+#include <vector>
+
 #include "catena/models/cable.hpp"
 #include "catena/solvers/modal_result.hpp"
 #include "catena/solvers/solve_request.hpp"
@@ -39,6 +41,13 @@ inline SolveRequest modes_request(int inplane, int outofplane) {
   request.inplane_modes = inplane;
   request.outofplane_modes = outofplane;
   return request;
+}
+
+/// The frequencies of one plane's modes, lowest first [rad/s].
+inline std::vector<double> omegas(const ModalResult& result) {
+  std::vector<double> out;
+  for (const Mode& mode : result.modes) out.push_back(mode.omega_rad_s);
+  return out;
 }
 
 }  // namespace catena::testing
