@@ -89,5 +89,30 @@ TEST(SceneRunner, PerturbationChangesOnlyTheChosenFrequency) {
   EXPECT_EQ(to_string(Verdict::SourceDiscrepancy), "SOURCE");
 }
 
+// The forced check's condition number needs the natural frequencies above the forcing: where no
+// solver's output holds them, fe solves for them even when the scene did not run it, and they
+// agree with shooting's to fe's accuracy.
+TEST(SceneRunner, ForcedConditioningIsSolvedByFeWhenNoOutputHoldsTheModes) {
+  SceneRunOptions options = options_with_tables();
+  options.only_solvers = {"shooting"};
+  const std::string forced =
+      "[request]\ninplane_modes = 0\n[request.forced]\nend = \"b\"\ndirection = \"tangential\"\n"
+      "amplitude = 0.01\nfrequencies = [3.0, 9.0]\n";
+  const SceneResult result = run_scene(scene_from(kLine, forced), options);
+  ASSERT_TRUE(result.error.empty()) << result.error;
+  const ForcedConditioning& conditioning = result.forced_conditioning;
+  EXPECT_EQ(conditioning.solver, "fe");
+  EXPECT_NE(conditioning.note.find("solved for the condition number"), std::string::npos) << conditioning.note;
+  ASSERT_GE(conditioning.omegas_rad_s.size(), 2u);
+  EXPECT_GT(conditioning.omegas_rad_s.back(), 9.0);
+
+  options.only_solvers = {"shooting"};
+  const SceneResult modes = run_scene(scene_from(kLine, "[request]\ninplane_modes = 2\n"), options);
+  ASSERT_TRUE(modes.outputs.at(0).inplane);
+  for (std::size_t n = 0; n < 2; ++n)
+    EXPECT_NEAR(conditioning.omegas_rad_s[n], modes.outputs[0].inplane->modes[n].omega_rad_s,
+                1e-5 * conditioning.omegas_rad_s[n]);
+}
+
 }  // namespace
 }  // namespace catena
