@@ -204,7 +204,8 @@ void FeNumerics::attach_shape(Plane plane, int i, const FeModeMatches& matches, 
 }
 
 // Mode i: the extrapolated frequency, its relative error estimate (plus the rounding floor in
-// plane), and its shape.
+// plane, and the statics' rounding floor where the estimate mesh makes the estimate tight), and
+// its shape.
 Mode FeNumerics::extrapolated_mode(Plane plane, int i, const FeModeMatches& matches,
                                    const FeExtrapolatedFrequency& frequency, const Vector& stations) const {
   const double omega = frequency.omega_rad_s, error = frequency.error_rad_s;
@@ -214,6 +215,8 @@ Mode FeNumerics::extrapolated_mode(Plane plane, int i, const FeModeMatches& matc
   mode.relative_error_estimate = (error >= 0.0 && omega > 0.0) ? error / omega : -1.0;
   if (plane == Plane::InPlane && mode.relative_error_estimate >= 0.0)
     mode.relative_error_estimate += plan_.rounding_floor(context_.groups.t0_n, mode.index);
+  if (plan_.has_estimate_mesh() && mode.relative_error_estimate >= 0.0)
+    mode.relative_error_estimate += plan_.statics_floor(context_.groups.t0_n);
   attach_shape(plane, i, matches, stations, mode);
   return mode;
 }

@@ -69,6 +69,40 @@ TEST(FeExtrapolation, PenaltyIsExtrapolatedLinearlyToZero) {
   EXPECT_NEAR(result.error_rad_s, 2.0 * 0.75e-4 / 3.0 + 0.04, 1e-12);
 }
 
+// With the estimate mesh N/2: omega(h) = 5 + 3 h^2 + 4 h^4 on h = 1/50, 1/100, 1/200. The
+// estimate is |R(N, 2N) - R(N/2, N)| = 15/16 of R(N/2, N)'s h^4 error: about 15x the result's
+// own error (4 h^4 / 4 at h = 1/100, R's leading error), far tighter than the correction
+// (~7.5e-5) yet still above the error.
+internal::FePlan three_mesh_plan() {
+  internal::FePlan plan = two_mesh_plan(true, false);
+  plan.meshes = {50, 100, 200};
+  plan.estimate_coarse = 0;
+  plan.main_coarse = 1;
+  plan.main_fine = 2;
+  return plan;
+}
+
+TEST(FeExtrapolation, TheEstimateMeshBoundsTheExtrapolatedErrorTightly) {
+  auto omega = [](double h) { return 5.0 + 3.0 * h * h + 4.0 * std::pow(h, 4); };
+  const auto result =
+      internal::extrapolate_frequency(three_mesh_plan(), {{omega(1.0 / 50)}, {omega(1.0 / 100)}, {omega(1.0 / 200)}});
+  const double error = std::abs(result.omega_rad_s - 5.0);
+  EXPECT_GT(error, 0.0);
+  EXPECT_GE(result.error_rad_s, error);        // an upper bound ...
+  EXPECT_LE(result.error_rad_s, 20.0 * error);  // ... about 15x, not the correction's ~1e4x
+  const double correction = (omega(1.0 / 200) - omega(1.0 / 100)) / 3.0;
+  EXPECT_LT(result.error_rad_s, 1e-2 * std::abs(correction));
+}
+
+TEST(FeExtrapolation, WithoutOrderTwoTheCorrectionStaysTheEstimate) {
+  // omega(h) = 5 + 3 h (first order: a kink the mesh does not follow): observed order 1, so the
+  // extrapolated difference is not trusted and the Richardson correction is the estimate.
+  auto omega = [](double h) { return 5.0 + 3.0 * h; };
+  const double fine = omega(1.0 / 200), coarse = omega(1.0 / 100);
+  const auto result = internal::extrapolate_frequency(three_mesh_plan(), {{omega(1.0 / 50)}, {coarse}, {fine}});
+  EXPECT_NEAR(result.error_rad_s, std::abs(fine - coarse) / 3.0, 1e-15);
+}
+
 TEST(FeExtrapolation, ObservedOrderOfASecondOrderSequence) {
   auto omega = [](double h) { return 1.0 + 0.5 * h * h; };
   EXPECT_NEAR(internal::observed_order(omega(0.1), omega(0.05), omega(0.025)), 2.0, 1e-9);

@@ -18,11 +18,17 @@ TEST(FeLevels, PlanMeshesFollowTheOptions) {
   const auto plan = [&](const FeSolverOptions& options, int inplane = 3) {
     return internal::make_fe_plan(problem, statics, options, inplane, 0);
   };
+  // Richardson on N, 2N, with N/2 for the error estimate (it resolves the 3 modes).
   const internal::FePlan richardson = plan({.elements = 100});
-  EXPECT_EQ(richardson.meshes, (std::vector<int>{100, 200}));
-  EXPECT_TRUE(richardson.richardson && richardson.has_coarse());
+  EXPECT_EQ(richardson.meshes, (std::vector<int>{50, 100, 200}));
+  EXPECT_TRUE(richardson.richardson && richardson.has_coarse() && richardson.has_estimate_mesh());
+  EXPECT_EQ(richardson.meshes[static_cast<std::size_t>(richardson.main_coarse)], 100);
   EXPECT_EQ(richardson.finest_elements(), 200);
-  EXPECT_EQ(plan({.elements = 100, .observed_order = true}).meshes, (std::vector<int>{100, 200, 400}));
+  EXPECT_EQ(plan({.elements = 100, .observed_order = true}).meshes, (std::vector<int>{50, 100, 200, 400}));
+  // N/2 = 5 elements resolve 2 modes, not 3: no estimate mesh; an odd N/2 count is not halved.
+  EXPECT_EQ(plan({.elements = 10}).meshes, (std::vector<int>{10, 20}));
+  EXPECT_EQ(plan({.elements = 101}, 1).meshes, (std::vector<int>{101, 202}));
+  EXPECT_FALSE(plan({.elements = 10}).has_estimate_mesh());
   const internal::FePlan estimate = plan({.elements = 100, .richardson = false});
   EXPECT_EQ(estimate.meshes, (std::vector<int>{50, 100}));
   EXPECT_FALSE(estimate.richardson);
@@ -59,6 +65,16 @@ TEST(FeLevels, RoundingFloorGrowsLikeNSquaredOverModeSquared) {
   EXPECT_DOUBLE_EQ(plan.rounding_floor(10.0, 1), 4.0 * floor1);
 }
 
+TEST(FeLevels, StaticsFloorGrowsLikeNAndTheStiffnessRatio) {
+  internal::FePlan plan;
+  plan.meshes = {100, 200};
+  plan.main_fine = 1;
+  plan.axial_stiffness_n = {1e6};
+  EXPECT_DOUBLE_EQ(plan.statics_floor(10.0), 0.5 * 2.220446049250313e-16 * 1e5 * 200.0);
+  plan.axial_stiffness_n = {2e6};
+  EXPECT_DOUBLE_EQ(plan.statics_floor(10.0), 2.0 * 0.5 * 2.220446049250313e-16 * 1e5 * 200.0);
+}
+
 TEST(FeLevels, EveryLevelIsSolvedAndProved) {
   const Problem problem = make_gale_xi_problem(-0.5, 0.5);
   const StaticSolution statics = solve_statics(problem);
@@ -68,10 +84,11 @@ TEST(FeLevels, EveryLevelIsSolvedAndProved) {
   std::string failure;
   internal::FeLevels levels = internal::solve_level_statics(problem, statics, plan, timings, failure);
   ASSERT_TRUE(failure.empty()) << failure;
-  ASSERT_EQ(levels.size(), 2u);
+  ASSERT_EQ(levels.size(), 3u);  // N/2, N, 2N
   ASSERT_EQ(levels[0].size(), 2u);  // two penalties
-  EXPECT_EQ(levels[1][1].chain.elements, 120);
-  EXPECT_EQ(levels[1][1].chain.axial_stiffness_n[0], plan.axial_stiffness_n[1]);
+  EXPECT_EQ(levels[0][1].chain.elements, 30);
+  EXPECT_EQ(levels[2][1].chain.elements, 120);
+  EXPECT_EQ(levels[2][1].chain.axial_stiffness_n[0], plan.axial_stiffness_n[1]);
   const internal::FePlaneEigenReport report = internal::solve_level_modes(levels, Plane::InPlane, 4, options, timings);
   EXPECT_EQ(report.termination, Termination::Converged);
   EXPECT_TRUE(report.warnings.empty());

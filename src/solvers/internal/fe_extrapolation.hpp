@@ -2,7 +2,9 @@
 /// \file
 /// The `fe` solver's extrapolation (docs/methods/fe.md): modes paired across levels by their shapes
 /// (largest MAC on the common nodes), Richardson in the mesh (order 2, mesh ratio 2:
-/// omega = omega_2N + (omega_2N - omega_N) / 3, the correction being the error estimate), linear
+/// omega = omega_2N + (omega_2N - omega_N) / 3; the error estimate is the difference from the
+/// Richardson value on N/2, N where that mesh was solved and the frequencies show their order 2,
+/// else the correction itself), linear
 /// extrapolation in the penalty kappa to 0 for an inextensible cable (2 omega_kappa -
 /// omega_2kappa), and the observed convergence order of the unextrapolated frequencies.
 
@@ -38,8 +40,9 @@ std::vector<std::vector<double>> level_omegas(const FeLevels& levels,
 /// A frequency extrapolated in the mesh (Richardson, when planned) and in kappa (inextensible).
 struct FeExtrapolatedFrequency {
   double omega_rad_s = 0.0;
-  /// Absolute error estimate [rad/s]: the Richardson correction, plus the kappa correction when
-  /// penalised; -1 without a coarse mesh.
+  /// Absolute error estimate [rad/s]: |R(N, 2N) - R(N/2, N)| with the estimate mesh N/2 where the
+  /// unextrapolated frequencies converge at order 2 (within 0.25), else the Richardson correction;
+  /// plus the kappa correction when penalised; -1 without a coarse mesh.
   double error_rad_s = -1.0;
 };
 

@@ -85,6 +85,15 @@ FeLineMesh FeLineMesh::refined(int factor) const {
   return out;
 }
 
+std::optional<FeLineMesh> FeLineMesh::halved() const {
+  FeLineMesh out = *this;
+  for (FeMeshPiece& piece : out.pieces) {
+    if (piece.elements % 2 != 0) return std::nullopt;
+    piece.elements /= 2;
+  }
+  return out;
+}
+
 FeLineMesh uniform_cable_mesh(const CableProperties& cable, int elements) {
   FeLineMesh mesh;
   FeMeshPiece piece;

@@ -39,6 +39,9 @@ struct FeLineMesh {
   int elements() const;
   /// The same pieces with every element count multiplied by `factor`.
   FeLineMesh refined(int factor) const;
+  /// The same pieces with every element count halved; nullopt when a count is odd (the halved
+  /// mesh's nodes would not all be nodes of this one).
+  std::optional<FeLineMesh> halved() const;
   /// True for one piece (a uniform cable, or a line of one segment and no points).
   bool is_one_piece() const { return pieces.size() == 1; }
 };
