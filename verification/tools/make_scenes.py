@@ -77,10 +77,13 @@ outofplane_modes = {n if plane == "outofplane" else 0}
 
 # fe is asked for the 1e-6 its checks hold it to (verification/tolerances.toml), so that it names the
 # modes it cannot certify (docs/verdicts.md, "Declared misses"): near-taut inextensible cables sit at
-# its penalty floor.
+# its penalty floor. shooting is asked for 1.1e-11 (rtol 1e-12), close to frobenius's 1e-11, so
+# that the two hold each other to the sum of their targets (docs/verdicts.md, "Tolerances"): each
+# sees a change of the other at 10x its target (docs/mutation.md). shooting's defaults are checked
+# on the other scenes.
 [solvers]
 fe = {{ tolerance = 1e-6 }}
-shooting = {{}}
+shooting = {{ rtol = 1e-12, root_tolerance = 1e-12 }}
 frobenius = {{}}
 asymptotic = {{}}
 airy = {{}}

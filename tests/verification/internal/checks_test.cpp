@@ -315,6 +315,22 @@ TEST(Checks, AFrequencyToleranceIsTheSameWhateverTheEstimates) {
   EXPECT_EQ(boastful.verdict, Verdict::Fail);
 }
 
+TEST(Checks, TwoExactSolversAskedForMoreAreHeldToTheSumOfTheirTargetsNeverMore) {
+  // frobenius and shooting 1e-10 apart: inside the rule (1e-9) at the defaults ...
+  SceneResult r = gale_result();
+  r.outputs = {output_with("shooting", {1.0, 2.0}, 1e-11), output_with("frobenius", {1.0, 2.0 * (1 + 1e-10)}, 1e-12)};
+  EXPECT_EQ(find(run_checks(r), "frequency", 2)->verdict, Verdict::Pass);
+  // ... but a scene that asked shooting for 1.1e-11 and frobenius for 1e-11 holds them to 2.1e-11.
+  r.outputs[0].inplane->summary.accuracy_target = 1.1e-11;
+  r.outputs[1].inplane->summary.accuracy_target = 1e-11;
+  const CheckResult tight = *find(run_checks(r), "frequency", 2);
+  EXPECT_DOUBLE_EQ(tight.tolerance, 2.1e-11);
+  EXPECT_EQ(tight.verdict, Verdict::Fail);
+  // Targets looser than the rule never widen it.
+  r.outputs[0].inplane->summary.accuracy_target = 1e-3;
+  EXPECT_EQ(find(run_checks(r), "frequency", 2)->tolerance, 1e-9);
+}
+
 TEST(Checks, AForcedToleranceIsTheSameWhateverTheEstimates) {
   SceneResult r = gale_result();
   r.outputs = {forced_output("fe", 224.0, 1e-6), forced_output("shooting", 224.385, 1e-8)};
