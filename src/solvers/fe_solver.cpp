@@ -17,6 +17,7 @@
 #include "solvers/internal/fe_levels.hpp"
 #include "solvers/internal/fe_seabed_contact.hpp"
 #include "solvers/internal/fe_shapes.hpp"
+#include "solvers/internal/line_modal_mass.hpp"
 #include "solvers/internal/fe_summary.hpp"
 #include "solvers/internal/knob_table.hpp"
 #include "solvers/internal/mode_tools.hpp"
