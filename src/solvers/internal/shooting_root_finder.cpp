@@ -12,6 +12,23 @@
 
 namespace catena::internal {
 
+namespace {
+
+// Counts the shots taken while it lives under one purpose of the ShotTally.
+class PurposeScope {
+ public:
+  PurposeScope(long*& slot, long* purpose) : slot_(slot), saved_(slot) { slot_ = purpose; }
+  ~PurposeScope() { slot_ = saved_; }
+  PurposeScope(const PurposeScope&) = delete;
+  PurposeScope& operator=(const PurposeScope&) = delete;
+
+ private:
+  long*& slot_;
+  long* saved_;
+};
+
+}  // namespace
+
 ShootingRootFinder::ShootingRootFinder(ShotFunction shoot, const RootFinderSettings& settings,
                                        double first_guess_rad_s, bool scalar)
     : shoot_(std::move(shoot)), settings_(settings), first_guess_(first_guess_rad_s), scalar_(scalar) {}
@@ -86,12 +103,13 @@ const ShootingRootFinder::Sample& ShootingRootFinder::evaluate(double omega) {
   if (shots_ >= kMaxShots) throw ShootingFailure(fmt::format("more than {} shots", kMaxShots));
   Shot shot = shoot_(omega, 1.0);
   ++shots_;
+  ++*purpose_;
   if (shot.phase_defect > kMaxPhaseDefect) {
     // The integrated phase fixes the winding, so it must be right to well within pi: re-shoot
     // at 100x tighter tolerances (never seen in the tests; a safety net).
     shot = shoot_(omega, 0.01);
     ++shots_;
-    ++phase_retries_;
+    ++tally_.phase_retries;
   }
   max_phase_defect_ = std::max(max_phase_defect_, shot.phase_defect);
   const Sample sample{shot.count, shot.angle_min, shot.angle_max, shot.determinant};
@@ -176,12 +194,14 @@ double ShootingRootFinder::end_value(const Sample& sample, int n) const {
 ShootingRootFinder::Sample ShootingRootFinder::shoot_sample(double omega, double factor) {
   const Shot shot = shoot_(omega, factor);
   ++shots_;
+  ++*purpose_;
   return {shot.count, shot.angle_min, shot.angle_max, shot.determinant};
 }
 
 // Brent on the root function in the count bracket [lo, hi], on the cached shots at the solver's
 // tolerances.
 Root ShootingRootFinder::refine(int n, double lo, double hi) {
+  const PurposeScope scope(purpose_, &tally_.refining);
   auto f = [this, n](double omega) { return end_value(evaluate(omega), n); };
   const auto [a, b] = brent_zero(f, lo, hi, f(lo), f(hi), settings_.root_tolerance);
   const Sample sa = evaluate(a);
@@ -205,6 +225,7 @@ Root ShootingRootFinder::root_in_bracket(int n, double a, double b, const Sample
   if (settings_.error_estimate && (scalar_ ? slope > 0.0 : slope != 0.0)) {
     // CVODE takes tolerances down to about 1e-15 (the rtol knob's range ends at 1e-14): no tighter.
     const double floor = std::min(factor, 1e-15 / settings_.relative_tolerance);
+    const PurposeScope scope(purpose_, &tally_.estimate);
     const Sample tight = shoot_sample(root.omega, std::max(0.01 * factor, floor));
     const double here = fa + slope * (root.omega - a);
     integration_error = std::abs((end_value(tight, n) - here) / slope);
@@ -227,6 +248,7 @@ Root ShootingRootFinder::refine_tighter(int n, Root root, double lo, double hi) 
   for (const double factor : {0.1, 0.01}) {
     if (root.relative_error <= settings_.target) break;
     ++tightened_;
+    const PurposeScope scope(purpose_, &tally_.tightening);
     auto f = [this, n, factor](double omega) { return end_value(shoot_sample(omega, factor), n); };
     double a = lo, b = hi, fa = 0.0, fb = 0.0;
     double half = std::max(root.relative_error, settings_.root_tolerance) * root.omega;

@@ -48,6 +48,15 @@ struct Root {
   double residual = 0.0;  ///< smaller |determinant| at the final bracket ends
 };
 
+/// Shots by purpose (the solver's notes; docs/methods/shooting.md, "Cost per root").
+struct ShotTally {
+  long bracketing = 0;     ///< counting samples that bracket a mode (and the upper bound)
+  long refining = 0;       ///< root-function samples inside a certified count bracket
+  long estimate = 0;       ///< error-estimate shots at 100x tighter tolerances
+  long tightening = 0;     ///< re-bracketing at tighter tolerances (estimates above the target)
+  long phase_retries = 0;  ///< re-shots of a sample whose integrated phase was off
+};
+
 /// One shot at `omega` [rad/s] with the integrator's tolerances scaled by `tolerance_factor`.
 using ShotFunction = std::function<Shot(double omega, double tolerance_factor)>;
 
@@ -72,9 +81,10 @@ class ShootingRootFinder {
   /// The count at the smallest sample above the top root (-1 when none).
   int proved_count() const { return proved_count_; }
   double max_phase_defect() const { return max_phase_defect_; }
-  long phase_retries() const { return phase_retries_; }
+  long phase_retries() const { return tally_.phase_retries; }
   /// Refinements at tighter tolerances (roots whose first estimate exceeded the target).
   long tightened() const { return tightened_; }
+  const ShotTally& tally() const { return tally_; }
 
  private:
   // One evaluation of the end function: the count of eigenvalues below omega, the end
@@ -108,8 +118,9 @@ class ShootingRootFinder {
   long shots_ = 0;
   int proved_count_ = -1;
   double max_phase_defect_ = 0.0;
-  long phase_retries_ = 0;
   long tightened_ = 0;
+  ShotTally tally_;
+  long* purpose_ = &tally_.bracketing;  ///< where the next shot is counted
 };
 
 }  // namespace catena::internal
