@@ -31,7 +31,11 @@ class PurposeScope {
 
 ShootingRootFinder::ShootingRootFinder(ShotFunction shoot, const RootFinderSettings& settings,
                                        double first_guess_rad_s, bool scalar)
-    : shoot_(std::move(shoot)), settings_(settings), first_guess_(first_guess_rad_s), scalar_(scalar) {}
+    : shoot_(std::move(shoot)),
+      settings_(settings),
+      first_guess_(first_guess_rad_s),
+      scalar_(scalar),
+      predictor_(0.25 * settings.root_tolerance) {}
 
 double ShootingRootFinder::count_function(const Sample& sample, int n) {
   return internal::count_function(sample.count, sample.angle_min, sample.angle_max, n);
@@ -52,21 +56,23 @@ std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::strin
     // Out of plane the continuous count c = N + (abar - pi)/(2 pi) (Pruefer's angle) is smooth
     // and monotone in omega, and c = n exactly at the n-th eigenvalue: any two samples with
     // counts < n and >= n bracket it, and Brent converges on the nearly linear c - n at once.
+    sample_prediction(n);
     const auto [lo, hi] = bracket(n);
-    roots.push_back(refine_to_target(n, lo, hi, warnings));
+    record(refine_to_target(n, lo, hi, warnings), roots);
     ++n;
     if (stop_after(n - 1)) return finish(roots);
   }
-  while (n <= num_modes) {
+  for (int predicted = 0; n <= num_modes;) {
+    if (predicted < n) sample_prediction(predicted = n);
     const auto [lo, hi] = bracket(n);
     const Sample& a = samples_.at(lo);
     const Sample& b = samples_.at(hi);
     if (a.count == n - 1 && b.count == n && a.determinant * b.determinant < 0.0) {
-      roots.push_back(refine_to_target(n, lo, hi, warnings));
+      record(refine_to_target(n, lo, hi, warnings), roots);
       ++n;
       if (stop_after(n - 1)) break;
     } else if (hi - lo <= settings_.root_tolerance * hi) {
-      roots.push_back(multiple_root(n, lo, hi, warnings));
+      record(multiple_root(n, lo, hi, warnings), roots);
       n += roots.back().multiplicity;
       if (stop_after(n - 1)) break;
     } else {
@@ -74,6 +80,35 @@ std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::strin
     }
   }
   return finish(roots);
+}
+
+void ShootingRootFinder::record(const Root& root, std::vector<Root>& roots) {
+  roots.push_back(root);
+  for (int j = 0; j < root.multiplicity; ++j) predictor_.add(root.omega);
+}
+
+// Counting samples around the predicted root of mode n (shooting_root_prediction.hpp): below it
+// first, then above it, or further below when the root turned out to be lower. Only samples
+// inside the count bracket are taken; the bracket logic decides what they prove.
+void ShootingRootFinder::sample_prediction(int n) {
+  const std::optional<RootPrediction> prediction = predictor_.next();
+  if (!prediction) return;
+  const auto [lo, hi] = bracket(n);
+  auto inside = [lo = lo, hi = hi](double omega) { return omega > lo && omega < hi; };
+  if (scalar_) {
+    // The continuous count is nearly linear: one sample at the prediction leaves Brent a bracket
+    // end close to the root and the other a good secant partner (its value there is about -1).
+    if (inside(prediction->omega)) evaluate(prediction->omega);
+    return;
+  }
+  const double below = prediction->omega - prediction->half_width;
+  const double above = prediction->omega + prediction->half_width;
+  if (!inside(below) || evaluate(below).count < n) {
+    if (inside(above)) evaluate(above);
+    return;
+  }
+  const double further = prediction->omega - 3.0 * prediction->half_width;
+  if (inside(further)) evaluate(further);
 }
 
 // Mode n in its count bracket, refined at tighter tolerances when its estimate exceeds the target;

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "solvers/internal/shooting_integrator.hpp"
+#include "solvers/internal/shooting_root_prediction.hpp"
 #include "solvers/internal/work_meter.hpp"
 
 namespace catena::internal {
@@ -98,6 +99,8 @@ class ShootingRootFinder {
   static double count_function(const Sample& sample, int n);
 
   std::vector<Root> finish(std::vector<Root>& roots);
+  void record(const Root& root, std::vector<Root>& roots);
+  void sample_prediction(int n);
   const Sample& evaluate(double omega);
   void raise_to_count(double& top, int num_modes);
   std::pair<double, double> bracket(int n) const;
@@ -115,6 +118,7 @@ class ShootingRootFinder {
   double first_guess_;
   bool scalar_;
   std::map<double, Sample> samples_;
+  RootPredictor predictor_;
   long shots_ = 0;
   int proved_count_ = -1;
   double max_phase_defect_ = 0.0;
