@@ -263,11 +263,13 @@ void ShootingNumerics::finish_summary(const ShootingRootFinder& finder,
       found == count ? "Converged" : "No convergence", found, count, to_string(plane),
       result.proved_count_below_top, result.modes.empty() ? 0.0 : result.modes.back().omega_rad_s,
       summary.max_error_estimate);
+  const ShotTally& tally = finder.tally();
   summary.notes.push_back(fmt::format(
-      "{} shots, {} CVODE steps, {} RHS evaluations; principal pair re-orthonormalised {} times "
+      "{} shots ({} bracketing by counts, {} refining, {} error estimates, {} tightening), {} CVODE steps, {} RHS evaluations; principal pair re-orthonormalised {} times "
       "(max log volume growth {:.3g}); max phase defect {:.2e} rad ({} re-shots for phase); {} "
       "refinements at tighter tolerances for estimates above the target {:.2g}",
-      finder.shots(), integrator.total_steps(), integrator.total_rhs_evaluations(),
+      finder.shots(), tally.bracketing, tally.refining, tally.estimate, tally.tightening,
+      integrator.total_steps(), integrator.total_rhs_evaluations(),
       integrator.total_reorthonormalisations(), integrator.max_log_growth(),
       finder.max_phase_defect(), finder.phase_retries(), finder.tightened(),
       summary.accuracy_target));

@@ -12,9 +12,30 @@
 
 namespace catena::internal {
 
+namespace {
+
+// Counts the shots taken while it lives under one purpose of the ShotTally.
+class PurposeScope {
+ public:
+  PurposeScope(long*& slot, long* purpose) : slot_(slot), saved_(slot) { slot_ = purpose; }
+  ~PurposeScope() { slot_ = saved_; }
+  PurposeScope(const PurposeScope&) = delete;
+  PurposeScope& operator=(const PurposeScope&) = delete;
+
+ private:
+  long*& slot_;
+  long* saved_;
+};
+
+}  // namespace
+
 ShootingRootFinder::ShootingRootFinder(ShotFunction shoot, const RootFinderSettings& settings,
                                        double first_guess_rad_s, bool scalar)
-    : shoot_(std::move(shoot)), settings_(settings), first_guess_(first_guess_rad_s), scalar_(scalar) {}
+    : shoot_(std::move(shoot)),
+      settings_(settings),
+      first_guess_(first_guess_rad_s),
+      scalar_(scalar),
+      predictor_(0.25 * settings.root_tolerance) {}
 
 double ShootingRootFinder::count_function(const Sample& sample, int n) {
   return internal::count_function(sample.count, sample.angle_min, sample.angle_max, n);
@@ -35,21 +56,23 @@ std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::strin
     // Out of plane the continuous count c = N + (abar - pi)/(2 pi) (Pruefer's angle) is smooth
     // and monotone in omega, and c = n exactly at the n-th eigenvalue: any two samples with
     // counts < n and >= n bracket it, and Brent converges on the nearly linear c - n at once.
+    sample_prediction(n);
     const auto [lo, hi] = bracket(n);
-    roots.push_back(refine_to_target(n, lo, hi, warnings));
+    record(refine_to_target(n, lo, hi, warnings), roots);
     ++n;
     if (stop_after(n - 1)) return finish(roots);
   }
-  while (n <= num_modes) {
+  for (int predicted = 0; n <= num_modes;) {
+    if (predicted < n) sample_prediction(predicted = n);
     const auto [lo, hi] = bracket(n);
     const Sample& a = samples_.at(lo);
     const Sample& b = samples_.at(hi);
     if (a.count == n - 1 && b.count == n && a.determinant * b.determinant < 0.0) {
-      roots.push_back(refine_to_target(n, lo, hi, warnings));
+      record(refine_to_target(n, lo, hi, warnings), roots);
       ++n;
       if (stop_after(n - 1)) break;
     } else if (hi - lo <= settings_.root_tolerance * hi) {
-      roots.push_back(multiple_root(n, lo, hi, warnings));
+      record(multiple_root(n, lo, hi, warnings), roots);
       n += roots.back().multiplicity;
       if (stop_after(n - 1)) break;
     } else {
@@ -57,6 +80,35 @@ std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::strin
     }
   }
   return finish(roots);
+}
+
+void ShootingRootFinder::record(const Root& root, std::vector<Root>& roots) {
+  roots.push_back(root);
+  for (int j = 0; j < root.multiplicity; ++j) predictor_.add(root.omega);
+}
+
+// Counting samples around the predicted root of mode n (shooting_root_prediction.hpp): below it
+// first, then above it, or further below when the root turned out to be lower. Only samples
+// inside the count bracket are taken; the bracket logic decides what they prove.
+void ShootingRootFinder::sample_prediction(int n) {
+  const std::optional<RootPrediction> prediction = predictor_.next();
+  if (!prediction) return;
+  const auto [lo, hi] = bracket(n);
+  auto inside = [lo = lo, hi = hi](double omega) { return omega > lo && omega < hi; };
+  if (scalar_) {
+    // The continuous count is nearly linear: one sample at the prediction leaves Brent a bracket
+    // end close to the root and the other a good secant partner (its value there is about -1).
+    if (inside(prediction->omega)) evaluate(prediction->omega);
+    return;
+  }
+  const double below = prediction->omega - prediction->half_width;
+  const double above = prediction->omega + prediction->half_width;
+  if (!inside(below) || evaluate(below).count < n) {
+    if (inside(above)) evaluate(above);
+    return;
+  }
+  const double further = prediction->omega - 3.0 * prediction->half_width;
+  if (inside(further)) evaluate(further);
 }
 
 // Mode n in its count bracket, refined at tighter tolerances when its estimate exceeds the target;
@@ -86,12 +138,13 @@ const ShootingRootFinder::Sample& ShootingRootFinder::evaluate(double omega) {
   if (shots_ >= kMaxShots) throw ShootingFailure(fmt::format("more than {} shots", kMaxShots));
   Shot shot = shoot_(omega, 1.0);
   ++shots_;
+  ++*purpose_;
   if (shot.phase_defect > kMaxPhaseDefect) {
     // The integrated phase fixes the winding, so it must be right to well within pi: re-shoot
     // at 100x tighter tolerances (never seen in the tests; a safety net).
     shot = shoot_(omega, 0.01);
     ++shots_;
-    ++phase_retries_;
+    ++tally_.phase_retries;
   }
   max_phase_defect_ = std::max(max_phase_defect_, shot.phase_defect);
   const Sample sample{shot.count, shot.angle_min, shot.angle_max, shot.determinant};
@@ -176,12 +229,14 @@ double ShootingRootFinder::end_value(const Sample& sample, int n) const {
 ShootingRootFinder::Sample ShootingRootFinder::shoot_sample(double omega, double factor) {
   const Shot shot = shoot_(omega, factor);
   ++shots_;
+  ++*purpose_;
   return {shot.count, shot.angle_min, shot.angle_max, shot.determinant};
 }
 
 // Brent on the root function in the count bracket [lo, hi], on the cached shots at the solver's
 // tolerances.
 Root ShootingRootFinder::refine(int n, double lo, double hi) {
+  const PurposeScope scope(purpose_, &tally_.refining);
   auto f = [this, n](double omega) { return end_value(evaluate(omega), n); };
   const auto [a, b] = brent_zero(f, lo, hi, f(lo), f(hi), settings_.root_tolerance);
   const Sample sa = evaluate(a);
@@ -205,6 +260,7 @@ Root ShootingRootFinder::root_in_bracket(int n, double a, double b, const Sample
   if (settings_.error_estimate && (scalar_ ? slope > 0.0 : slope != 0.0)) {
     // CVODE takes tolerances down to about 1e-15 (the rtol knob's range ends at 1e-14): no tighter.
     const double floor = std::min(factor, 1e-15 / settings_.relative_tolerance);
+    const PurposeScope scope(purpose_, &tally_.estimate);
     const Sample tight = shoot_sample(root.omega, std::max(0.01 * factor, floor));
     const double here = fa + slope * (root.omega - a);
     integration_error = std::abs((end_value(tight, n) - here) / slope);
@@ -227,6 +283,7 @@ Root ShootingRootFinder::refine_tighter(int n, Root root, double lo, double hi) 
   for (const double factor : {0.1, 0.01}) {
     if (root.relative_error <= settings_.target) break;
     ++tightened_;
+    const PurposeScope scope(purpose_, &tally_.tightening);
     auto f = [this, n, factor](double omega) { return end_value(shoot_sample(omega, factor), n); };
     double a = lo, b = hi, fa = 0.0, fb = 0.0;
     double half = std::max(root.relative_error, settings_.root_tolerance) * root.omega;

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "solvers/internal/shooting_integrator.hpp"
+#include "solvers/internal/shooting_root_prediction.hpp"
 #include "solvers/internal/work_meter.hpp"
 
 namespace catena::internal {
@@ -48,6 +49,15 @@ struct Root {
   double residual = 0.0;  ///< smaller |determinant| at the final bracket ends
 };
 
+/// Shots by purpose (the solver's notes; docs/methods/shooting.md, "Cost per root").
+struct ShotTally {
+  long bracketing = 0;     ///< counting samples that bracket a mode (and the upper bound)
+  long refining = 0;       ///< root-function samples inside a certified count bracket
+  long estimate = 0;       ///< error-estimate shots at 100x tighter tolerances
+  long tightening = 0;     ///< re-bracketing at tighter tolerances (estimates above the target)
+  long phase_retries = 0;  ///< re-shots of a sample whose integrated phase was off
+};
+
 /// One shot at `omega` [rad/s] with the integrator's tolerances scaled by `tolerance_factor`.
 using ShotFunction = std::function<Shot(double omega, double tolerance_factor)>;
 
@@ -72,9 +82,10 @@ class ShootingRootFinder {
   /// The count at the smallest sample above the top root (-1 when none).
   int proved_count() const { return proved_count_; }
   double max_phase_defect() const { return max_phase_defect_; }
-  long phase_retries() const { return phase_retries_; }
+  long phase_retries() const { return tally_.phase_retries; }
   /// Refinements at tighter tolerances (roots whose first estimate exceeded the target).
   long tightened() const { return tightened_; }
+  const ShotTally& tally() const { return tally_; }
 
  private:
   // One evaluation of the end function: the count of eigenvalues below omega, the end
@@ -88,6 +99,8 @@ class ShootingRootFinder {
   static double count_function(const Sample& sample, int n);
 
   std::vector<Root> finish(std::vector<Root>& roots);
+  void record(const Root& root, std::vector<Root>& roots);
+  void sample_prediction(int n);
   const Sample& evaluate(double omega);
   void raise_to_count(double& top, int num_modes);
   std::pair<double, double> bracket(int n) const;
@@ -105,11 +118,13 @@ class ShootingRootFinder {
   double first_guess_;
   bool scalar_;
   std::map<double, Sample> samples_;
+  RootPredictor predictor_;
   long shots_ = 0;
   int proved_count_ = -1;
   double max_phase_defect_ = 0.0;
-  long phase_retries_ = 0;
   long tightened_ = 0;
+  ShotTally tally_;
+  long* purpose_ = &tally_.bracketing;  ///< where the next shot is counted
 };
 
 }  // namespace catena::internal
