@@ -238,7 +238,7 @@ void ShootingNumerics::add_modes(ShootingIntegrator& integrator, const std::vect
         roots.size() - clusters.size(), merge));
   }
   const bool string_only = plane == Plane::InPlane && is_straight_inextensible(k_);
-  ShootingModeBuilder builder(integrator, k_, context_.groups, context_.request, plane, string_only);
+  ShootingModeBuilder builder(integrator, k_, context_, plane, string_only);
   try {
     for (const std::vector<Root>& cluster : clusters) builder.add_cluster(cluster, count, result.modes);
   } catch (const ShootingFailure& failure) {

@@ -106,6 +106,26 @@ TEST(ShootingLine, SplitUniformCableReproducesOneSegment) {
   }
 }
 
+// The modal mass of a line's mode (src/solvers/internal/line_modal_mass.hpp): a uniform cable
+// given as 2 identical segments has the cable's modal masses, in both planes.
+TEST(ShootingLine, SplitUniformCableHasTheCablesModalMasses) {
+  SolveRequest request = testing::modes_request(4, 4);
+  request.shapes = true;
+  request.points = 201;
+  const Problem uniform = sagging_cable();
+  const auto reference = testing::solve_problem(solve_shooting, uniform, request, tight());
+  const auto line = testing::solve_problem(solve_shooting, split_into_segments(uniform, 2), request, tight());
+  for (const auto plane : {&SolverOutput::inplane, &SolverOutput::outofplane}) {
+    const auto& want = (reference.output.*plane)->modes;
+    const auto& got = (line.output.*plane)->modes;
+    ASSERT_EQ(got.size(), want.size());
+    for (std::size_t j = 0; j < got.size(); ++j) {
+      ASSERT_GT(want[j].modal_mass_kg, 0.0);
+      EXPECT_NEAR(got[j].modal_mass_kg / want[j].modal_mass_kg, 1.0, 1e-8) << "mode " << j + 1;
+    }
+  }
+}
+
 TEST(ShootingLine, TwoMassesOutOfPlaneMatchTheMatchingCondition) {
   const double L1 = 4.0, L2 = 6.3, m1 = 1.0, m2 = 3.7;
   const Problem p = taut_line({{L1, 0.0, kEA, m1, 0.0}, {L2, 0.0, kEA, m2, 0.0}});

@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 
+#include "solvers/internal/line_modal_mass.hpp"
 #include "solvers/internal/mode_tools.hpp"
 
 namespace catena::internal {
@@ -21,18 +22,17 @@ std::vector<std::vector<Root>> cluster_roots(const std::vector<Root>& roots, dou
 }
 
 ShootingModeBuilder::ShootingModeBuilder(ShootingIntegrator& integrator,
-                                         const ShootingCoefficients& k,
-                                         const DimensionlessGroups& groups,
-                                         const SolveRequest& request, Plane plane, bool string_only)
+                                         const ShootingCoefficients& k, const SolveContext& context,
+                                         Plane plane, bool string_only)
     : integrator_(integrator),
       k_(k),
-      groups_(groups),
-      request_(request),
+      context_(context),
+      request_(context.request),
       plane_(plane),
       integration_plane_(string_only ? Plane::OutOfPlane : plane),
       string_only_(string_only),
-      want_profile_(request.shapes || request.tension),
-      stations_(request.stations_m(k.length_m)),
+      want_profile_(request_.shapes || request_.tension),
+      stations_(request_.stations_m(k.length_m)),
       stations_x_(scaled_stations(stations_, k.length_m, false)) {}
 
 void ShootingModeBuilder::add_cluster(const std::vector<Root>& cluster, int num_modes,
@@ -56,7 +56,7 @@ void ShootingModeBuilder::add_cluster(const std::vector<Root>& cluster, int num_
     for (int j = 0; j < root.multiplicity && static_cast<int>(modes.size()) < num_modes; ++j) {
       Mode mode;
       mode.index = static_cast<int>(modes.size()) + 1;
-      set_mode_frequency(mode, root.omega, groups_);
+      set_mode_frequency(mode, root.omega, context_.groups);
       mode.relative_error_estimate = root.relative_error;
       mode.multiplicity = root.multiplicity;
       if (want_profile_ && member < vectors.size()) set_shape(mode, shot, vectors[member++]);
@@ -115,9 +115,8 @@ void ShootingModeBuilder::set_shape(Mode& mode, const Shot& shot,
       mode.max_abs_tension_n = 0.0;
     }
   }
-  // The modal mass of a general line would need its pieces' densities and its point masses at
-  // the points (not stations): not computed yet.
-  if (k_.is_line()) mode.modal_mass_kg = -1.0;
+  // A general line: each segment's densities and each point's mass at its own arc length.
+  if (!context_.problem.is_uniform()) mode.modal_mass_kg = line_modal_mass(plane_, mode, context_.problem.line, context_.statics);
   if (!request_.shapes) drop_shape_fields(mode);
 }
 

@@ -11,6 +11,7 @@
 
 #include "catena/solvers/modal_result.hpp"
 #include "catena/solvers/solve_request.hpp"
+#include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "solvers/internal/shooting_coefficients.hpp"
 #include "solvers/internal/shooting_integrator.hpp"
@@ -28,9 +29,10 @@ class ShootingModeBuilder {
  public:
   /// `plane`: the plane the modes belong to; `string_only`: an in-plane problem solved as the
   /// transverse string (straight inextensible cable), whose integrator is out of plane.
-  ShootingModeBuilder(ShootingIntegrator& integrator, const ShootingCoefficients& k,
-                      const DimensionlessGroups& groups, const SolveRequest& request, Plane plane,
-                      bool string_only);
+  /// `context`: the solve's problem (a general line's densities and points give its modal
+  /// mass), statics, groups and request.
+  ShootingModeBuilder(ShootingIntegrator& integrator, const ShootingCoefficients& k, const SolveContext& context,
+                      Plane plane, bool string_only);
 
   /// Appends the modes of one cluster to `modes`, numbered on from modes.size() + 1 and at most
   /// `num_modes` in all. Throws ShootingFailure when the shape shot fails.
@@ -47,7 +49,7 @@ class ShootingModeBuilder {
 
   ShootingIntegrator& integrator_;
   const ShootingCoefficients& k_;
-  const DimensionlessGroups& groups_;
+  const SolveContext& context_;
   const SolveRequest& request_;
   Plane plane_;
   Plane integration_plane_;
