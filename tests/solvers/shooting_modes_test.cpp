@@ -38,6 +38,15 @@ IntegratorSettings tight() {
   return settings;
 }
 
+// The builder's context: a uniform cable (its modal mass from the coefficients' densities),
+// default groups and the given request.
+SolveContext context_for(const SolveRequest& request) {
+  static const Problem problem;
+  static const StaticSolution statics;
+  static const DimensionlessGroups groups;
+  return SolveContext{problem, statics, groups, request};
+}
+
 // T = 1 N, L = 1 m, EA = 4 N: transverse modes omega_n = n pi / sqrt(1 + e), e = 0.25.
 const ShootingCoefficients kString = testing::horizontal_string(1.0, 1.0, 4.0);
 double string_mode(int n) { return n * kPi / std::sqrt(1.25); }
@@ -47,8 +56,8 @@ TEST(ShootingModes, OutOfPlaneShapesAreNormalisedSinesWithTheirModalMass) {
   SolveRequest request;
   request.shapes = true;
   request.tension = true;
-  const DimensionlessGroups groups;
-  ShootingModeBuilder builder(integrator, kString, groups, request, Plane::OutOfPlane, false);
+  const SolveContext context = context_for(request);
+  ShootingModeBuilder builder(integrator, kString, context, Plane::OutOfPlane, false);
   std::vector<Mode> modes;
   for (int n = 1; n <= 3; ++n) builder.add_cluster({root_at(string_mode(n))}, 3, modes);
   ASSERT_EQ(modes.size(), 3u);
@@ -72,8 +81,8 @@ TEST(ShootingModes, OutOfPlaneShapesAreNormalisedSinesWithTheirModalMass) {
 TEST(ShootingModes, AMultipleRootGivesThatManyModesUpToTheCount) {
   ShootingIntegrator integrator(Plane::OutOfPlane, kString, tight());
   SolveRequest request;  // frequencies only: no shape shot at all
-  const DimensionlessGroups groups;
-  ShootingModeBuilder builder(integrator, kString, groups, request, Plane::OutOfPlane, false);
+  const SolveContext context = context_for(request);
+  ShootingModeBuilder builder(integrator, kString, context, Plane::OutOfPlane, false);
   std::vector<Mode> modes;
   builder.add_cluster({root_at(2.0, 2), root_at(2.0 + 1e-12)}, 2, modes);
   ASSERT_EQ(modes.size(), 2u);
@@ -94,8 +103,8 @@ TEST(ShootingModes, StraightInextensibleInPlaneModesAreStringModesInW) {
   SolveRequest request;
   request.shapes = true;
   request.tension = true;
-  const DimensionlessGroups groups;
-  ShootingModeBuilder builder(integrator, k, groups, request, Plane::InPlane, true);
+  const SolveContext context = context_for(request);
+  ShootingModeBuilder builder(integrator, k, context, Plane::InPlane, true);
   std::vector<Mode> modes;
   builder.add_cluster({root_at(2.0 * kPi)}, 1, modes);
   ASSERT_EQ(modes.size(), 1u);
