@@ -13,6 +13,7 @@
 #include <complex>
 
 #include "solvers/internal/shooting_conjugate_count.hpp"
+#include "solvers/internal/shooting_grounded.hpp"
 #include "solvers/internal/shooting_sundials_handles.hpp"
 
 namespace catena::internal {
@@ -107,6 +108,21 @@ Basis<D> to_physical(const Basis<D>& carried, const RhsData& data) {
     out.template topRows<D>() = data.to_axial_force.transpose() * out.template topRows<D>();
     out.template bottomRows<D>() = data.to_axial.transpose() * out.template bottomRows<D>();
   }
+  return out;
+}
+
+// The carried basis [Phi~; F~] of a physical one [Phi^; F^] shot from a (the inverse of
+// to_physical): Phi~ = kappa P Phi^, F~ = P^{-T} F^ / kappa.
+template <int D>
+Basis<D> to_carried(const Basis<D>& physical, const RhsData& data) {
+  const double kappa = std::sqrt(data.kappa2);
+  Basis<D> out = physical;
+  if constexpr (D == 2) {
+    out.template topRows<D>() = data.to_axial * physical.template topRows<D>();
+    out.template bottomRows<D>() = data.to_axial_force * physical.template bottomRows<D>();
+  }
+  out.template topRows<D>() *= kappa;
+  out.template bottomRows<D>() /= kappa;
   return out;
 }
 
@@ -350,6 +366,10 @@ struct ShootingIntegrator::Impl {
             "CVodeSetJacFn");
     }
     check(CVodeSetMaxNumSteps(cvode.get(), settings.max_steps), "CVodeSetMaxNumSteps");
+    const std::size_t run = grounded_run_length(data.coefficients, dimension);
+    if (run > 0) {
+      grounded = std::make_unique<GroundedRun>(data.coefficients, dimension, run, settings.max_steps);
+    }
   }
 
   void check(int flag, const char* call, double x = 0.0) const {
@@ -376,6 +396,10 @@ struct ShootingIntegrator::Impl {
   void finish_shot(Shot& shot);
   template <int D>
   void cross_break(double x, StepCounts& finished);
+  template <int D>
+  double shoot_grounded(Shot& shot, StationRecorder<D>& recorder, StepCounts& finished);
+  template <int D>
+  void set_grounded_state(const GroundedFrame& frame, Shot& shot, Eigen::VectorXd& pushed);
   double stop_time() const { return next_break < breaks.size() ? breaks[next_break].x : 1.0; }
   void add_segment_counts(StepCounts& counts) const;
 
@@ -393,6 +417,9 @@ struct ShootingIntegrator::Impl {
   RhsData data;
   std::vector<Break> breaks;  // of the current shot, in the order of integration
   std::size_t next_break = 0;
+  // The seabed part of a shot from A (shooting_grounded.hpp); null when the line starts off it.
+  std::unique_ptr<GroundedRun> grounded;
+  bool grounded_shot = false;  // this shot starts with the grounded run
   long total_steps = 0;
   long total_rhs = 0;
   long total_reorthonormalisations = 0;
@@ -417,6 +444,13 @@ void ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor,
   void* mem = cvode.get();
   const double rtol = settings.relative_tolerance * tolerance_factor;
   const double atol = settings.absolute_tolerance * tolerance_factor;
+  grounded_shot = grounded && !from_b;
+  if (grounded_shot) {
+    // The grounded run's columns start as F^ = I in the physical variables: in the carried ones
+    // F~ = Q / kappa (det > 0, so the sign of det Phi and the phase are those of F~ = I).
+    Y.template bottomRows<D>() = to_carried<D>(Basis<D>(Y), data).template bottomRows<D>();
+    grounded->begin(data.omega2, rtol, atol);
+  }
   check(CVodeReInit(mem, 0.0, y.get()), "CVodeReInit");
   // The phase only has to be right to well within pi (it fixes the winding; the fractional part
   // comes from arg det Z at the end), so its absolute tolerance is looser: 1e-6 rad per step.
@@ -477,13 +511,65 @@ void ShootingIntegrator::Impl::cross_break(double x, StepCounts& finished) {
   check(CVodeSetStopTime(cvode.get(), stop_time()), "CVodeSetStopTime");
 }
 
+// The grounded run's frame as the carried state: the growth since the last R factor goes into
+// new diagonal R factors (each at most e^600, so that they stay finite; the grounded columns grow
+// by up to e^20000 on a stiff foundation), the unit columns become the carried basis, and the
+// phase is the one whose count formula gives the run's count (the count is the same in every
+// frame: it counts the zeros of det Phi).
+template <int D>
+void ShootingIntegrator::Impl::set_grounded_state(const GroundedFrame& frame, Shot& shot,
+                                                  Eigen::VectorXd& pushed) {
+  constexpr double kLargestLogFactor = 600.0;
+  Eigen::VectorXd growth = frame.log_scale - pushed;
+  pushed = frame.log_scale;
+  shot.log_growth += growth.sum();
+  do {
+    const Eigen::VectorXd step = growth.cwiseMax(-kLargestLogFactor).cwiseMin(kLargestLogFactor);
+    shot.segment_r.emplace_back(step.array().exp().matrix().asDiagonal());
+    growth -= step;
+  } while (growth.cwiseAbs().maxCoeff() > 0.0);
+  Basis<D> physical = Basis<D>::Zero();
+  for (int j = 0; j < D; ++j) {
+    physical(j, j) = frame.phi(j);
+    physical(D + j, j) = frame.force(j);
+  }
+  Eigen::Map<Basis<D>> Y(y.data());
+  Y = to_carried<D>(physical, data);
+  const Square<D> Phi = Y.template topRows<D>(), F = Y.template bottomRows<D>();
+  y.data()[2 * D * D] =
+      kPi * (D - frame.count) - 0.5 * unitary_angles<D>(Phi, F).sum();
+}
+
+// The grounded run from x = 0 to its end, recording the stations on it; CVODE restarted there
+// on the next piece. Returns the x where the run ended.
+template <int D>
+double ShootingIntegrator::Impl::shoot_grounded(Shot& shot, StationRecorder<D>& recorder,
+                                                StepCounts& finished) {
+  const double end = grounded->end_x();
+  Eigen::VectorXd pushed = Eigen::VectorXd::Zero(D);
+  const Eigen::Map<const Basis<D>> Y(y.data());
+  while (recorder.next_at_or_before(end)) {
+    set_grounded_state<D>(grounded->advance_to(recorder.next_station()), shot, pushed);
+    recorder.record(Y);
+  }
+  set_grounded_state<D>(grounded->advance_to(end), shot, pushed);
+  finished.steps += grounded->steps();
+  finished.rhs += grounded->rhs_evaluations();
+  next_break = grounded->pieces();
+  if (end >= 1.0) return 1.0;
+  data.piece = next_break;
+  check(CVodeReInit(cvode.get(), end, y.get()), "CVodeReInit", end);
+  check(CVodeSetStopTime(cvode.get(), stop_time()), "CVodeSetStopTime", end);
+  return end;
+}
+
 // CVODE one step at a time from x = 0 to 1, recording stations and guarding independence.
 template <int D>
 void ShootingIntegrator::Impl::integrate(Shot& shot, StationRecorder<D>& recorder, bool from_b) {
   const Eigen::Map<const Basis<D>> Y(y.data());
   StepCounts finished;
   long steps_total = 0;
-  double x = 0.0;
+  double x = grounded_shot ? shoot_grounded<D>(shot, recorder, finished) : 0.0;
   while (x < 1.0) {
     const int flag = CVode(cvode.get(), stop_time(), y.get(), &x, CV_ONE_STEP);
     check(flag, "CVode", from_b ? 1.0 - x : x);

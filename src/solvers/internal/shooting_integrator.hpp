@@ -31,6 +31,12 @@
 /// diagonal R (so det R > 0: the sign of det Phi and theta are unchanged) and CVODE is restarted.
 /// The R factors are kept so that a combination of the final basis maps back to every segment.
 ///
+/// Seabed. A shot from a starts with the grounded pieces of a line resting on the seabed
+/// (shooting_grounded.hpp): there the directions decouple and each column is integrated as a
+/// Pruefer pair, whose cost does not grow with the foundation's stiffness; the growth goes into
+/// diagonal R factors, and the general shot takes over at the touchdown point with the phase set
+/// from the grounded count.
+///
 /// Balancing. The shot integrates Phi~ = kappa Phi^, F~ = F^ / kappa with kappa^2 = max(Omega, 1)
 /// (a constant symplectic scaling: B -> kappa^2 B, C -> C / kappa^2). It balances B and C for the
 /// transverse wave so that the phase turns at a nearly uniform rate; unbalanced, the Pruefer-type
