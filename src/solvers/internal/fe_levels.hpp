@@ -71,8 +71,9 @@ struct FePlan {
   /// The largest extensible segment's EA on a line with inextensible segments too (else 0) [N]:
   /// it joins the penalty in the rounding floor.
   double stiffest_extensible_n = 0.0;
-  std::vector<double> kappas;             // the penalties kappa, 2 kappa (inextensible only)
-  /// Inextensible only: the largest end tension over the smaller penalty stiffness (2 kappa),
+  /// The penalties kappa, 2 kappa (the result) and 4 kappa (its error estimate); inextensible only.
+  std::vector<double> kappas;
+  /// Inextensible only: the largest end tension over the penalty stiffness at 2 kappa,
   /// and the relative slack (L - |chord|) / L (see kMaxPenaltyStrainOverSlack).
   double penalty_strain = 0.0;
   double relative_slack = 0.0;
