@@ -92,7 +92,8 @@ struct FePlan {
   /// sums N element chords, so its length is known to about eps L N at worst, which moves the
   /// tension by (EA/T0) eps N relative and every frequency by half that. Measured on a taut
   /// two-segment line (EA/T = 1e3, N = 2000): H off by 2e-11, the frequencies by 1.0e-11, bound
-  /// 2.2e-10. Added to every estimate once the estimate mesh can make it the largest term.
+  /// 2.2e-10. Added to every estimate once the estimate mesh can make it the largest term, unless
+  /// the end forces are prescribed (kept exactly: the chain's tension has no closure error).
   double statics_floor(double t0_n) const;
 };
 
