@@ -145,14 +145,6 @@ double norm1(const SparseMatrix& A) {
   return best;
 }
 
-// y = A x for a symmetric compressed-column A, as the transpose's product: each y_r is a dot
-// product of column r with x (a gather), where A x would scatter every column into y, a chain of
-// dependent loads and stores. Column r holds row r's entries in the same ascending order as A x
-// sums them, so the result is the same to the last bit.
-void symmetric_times(const SparseMatrix& A, const Eigen::Ref<const Vector>& x, Vector& y) {
-  y.noalias() = A.transpose() * x;
-}
-
 // Residual, backward error and M-orthogonality of M-normalised eigenvectors. M phi and K phi are
 // formed a column at a time into two vectors (a sparse matrix times an n x k block in Eigen walks
 // the block by rows, several times slower, and would need an n x k temporary of fresh pages).
@@ -164,8 +156,8 @@ void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
   const double k_norm = norm1(matrices.stiffness), m_norm = norm1(matrices.mass);
   Eigen::MatrixXd gram(phi.cols(), phi.cols());
   for (Eigen::Index i = 0; i < phi.cols(); ++i) {
-    symmetric_times(matrices.mass, phi.col(i), M_phi);
-    symmetric_times(matrices.stiffness, phi.col(i), K_phi);
+    M_phi.noalias() = matrices.mass * phi.col(i);
+    K_phi.noalias() = matrices.stiffness * phi.col(i);
     const double denominator = K_phi.norm();
     const double r = (K_phi - out.eigenvalues[i] * M_phi).norm();
     out.max_residual = std::max(out.max_residual, denominator > 0.0 ? r / denominator : r);
@@ -195,7 +187,7 @@ constexpr double kBackwardErrorGoal = 1e-14;
 void normalise_and_check(const FeMatrices& matrices, FeEigenSolution& out) {
   Vector M_phi(out.eigenvectors.rows());
   for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
-    symmetric_times(matrices.mass, out.eigenvectors.col(i), M_phi);
+    M_phi.noalias() = matrices.mass * out.eigenvectors.col(i);
     out.eigenvectors.col(i) /= std::sqrt(out.eigenvectors.col(i).dot(M_phi));
   }
   check_eigenpairs(matrices, out);

@@ -72,18 +72,17 @@ struct Orthogonalised {
 // traffic as reading V.
 constexpr Eigen::Index kCombinationRows = 256;
 
-// w -= V c, a block of rows at a time; returns ||w|| afterwards (summed while the block is hot).
+// w -= V c, a block of rows at a time; returns ||w|| afterwards. Each row's sum is formed as the
+// whole-vector product forms it, and the norm is taken over the whole vector as before, so the
+// results are the same to the last bit (a norm summed block by block would not be).
 template <typename Columns, typename Coefficients>
 double subtract_combination(const Columns& V, const Coefficients& c, Eigen::Ref<Eigen::VectorXd> w) {
   const Eigen::Index rows = w.size();
-  double squared = 0.0;
   for (Eigen::Index r = 0; r < rows; r += kCombinationRows) {
     const Eigen::Index count = std::min(kCombinationRows, rows - r);
-    auto segment = w.segment(r, count);
-    segment.noalias() -= V.middleRows(r, count) * c;
-    squared += segment.squaredNorm();
+    w.segment(r, count).noalias() -= V.middleRows(r, count) * c;
   }
-  return std::sqrt(squared);
+  return w.norm();
 }
 
 // Classical Gram-Schmidt of w against the first `columns` basis vectors, a second pass only when
