@@ -66,21 +66,39 @@ struct Orthogonalised {
   bool in_span = false;  // what is left of w is rounding: w lay in the span of the basis
 };
 
-// Rows of the basis combined at a time when subtracting V c from w: the block of w stays in the
-// first-level cache while every column passes over it. The whole-vector product w -= V c re-reads
-// and re-writes w once per small group of columns, which at a million rows costs as much memory
-// traffic as reading V.
+// Rows of the basis combined at a time when subtracting V c from w (their partial sums stay in
+// the first-level cache).
 constexpr Eigen::Index kCombinationRows = 256;
 
-// w -= V c, a block of rows at a time; returns ||w|| afterwards. Each row's sum is formed as the
-// whole-vector product forms it, and the norm is taken over the whole vector as before, so the
-// results are the same to the last bit (a norm summed block by block would not be).
-template <typename Columns, typename Coefficients>
-double subtract_combination(const Columns& V, const Coefficients& c, Eigen::Ref<Eigen::VectorXd> w) {
+// w -= V c, returning ||w|| afterwards. Eigen's product (with fewer than 128 columns) forms each
+// row's sum over all the columns at once, reading every column's next cache line in turn: 30
+// concurrent streams, more than the prefetcher follows, so at a million rows it ran at a third of
+// the speed of the V^T w pass over the same memory. Here a block of rows sums four columns at a
+// time, which reads four streams. Each row's sum is the same: acc = 0, acc += v_c c_c for the
+// columns in order, then w -= acc (the product's w + (-1) acc), so the result is the same to the
+// last bit; the norm is taken over the whole vector as before.
+double subtract_combination(const BasisMap& basis, Eigen::Index columns, const Eigen::Ref<const Eigen::VectorXd>& c,
+                            Eigen::Ref<Eigen::VectorXd> w) {
   const Eigen::Index rows = w.size();
-  for (Eigen::Index r = 0; r < rows; r += kCombinationRows) {
-    const Eigen::Index count = std::min(kCombinationRows, rows - r);
-    w.segment(r, count).noalias() -= V.middleRows(r, count) * c;
+  const double* V = basis.data();
+  double* x = w.data();
+  alignas(64) double acc[kCombinationRows];
+  for (Eigen::Index r0 = 0; r0 < rows; r0 += kCombinationRows) {
+    const Eigen::Index count = std::min(kCombinationRows, rows - r0);
+    std::fill(acc, acc + count, 0.0);
+    Eigen::Index k = 0;
+    for (; k + 4 <= columns; k += 4) {
+      const double* v0 = V + k * rows + r0;
+      const double *v1 = v0 + rows, *v2 = v1 + rows, *v3 = v2 + rows;
+      const double c0 = c[k], c1 = c[k + 1], c2 = c[k + 2], c3 = c[k + 3];
+      for (Eigen::Index r = 0; r < count; ++r) acc[r] = (((acc[r] + v0[r] * c0) + v1[r] * c1) + v2[r] * c2) + v3[r] * c3;
+    }
+    for (; k < columns; ++k) {
+      const double* v = V + k * rows + r0;
+      const double ck = c[k];
+      for (Eigen::Index r = 0; r < count; ++r) acc[r] = acc[r] + v[r] * ck;
+    }
+    for (Eigen::Index r = 0; r < count; ++r) x[r0 + r] = x[r0 + r] - acc[r];
   }
   return w.norm();
 }
@@ -93,11 +111,11 @@ Orthogonalised orthogonalise(const BasisMap& basis, Eigen::Index columns, Eigen:
   auto coefficients = h.head(columns);
   const double before = w.norm();
   coefficients.noalias() = V.transpose() * w;
-  const double after = subtract_combination(V, coefficients, w);
+  const double after = subtract_combination(basis, columns, coefficients, w);
   if (after > kKeptNormForOnePass * before) return {after, false};
   auto again = correction.head(columns);
   again.noalias() = V.transpose() * w;
-  const double twice = subtract_combination(V, again, w);
+  const double twice = subtract_combination(basis, columns, again, w);
   coefficients += again;
   return {twice, !(twice > kKeptNormForOnePass * after)};
 }
