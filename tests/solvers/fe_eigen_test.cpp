@@ -137,5 +137,26 @@ TEST(FeEigen, ModeSumGuessInterpolatesOntoTheMeshTwiceAsFine) {
   EXPECT_EQ(internal::mode_sum_guess(modes, 2, 10).size(), 0);
 }
 
+// One FeEigenWorkspace for several solves (as fe's levels share it: a smaller solve after a
+// larger one, then the larger again) gives the same eigenpairs and inertia, bit for bit, as a
+// fresh workspace per solve: reused memory carries nothing from one solve into the next.
+TEST(FeEigen, ASharedWorkspaceChangesNoResult) {
+  const Problem problem = make_taut_inclined_problem(0.1, 30.0, 50.0, 0.6);
+  const StaticSolution statics = solve_statics(problem);
+  internal::FeEigenWorkspace shared;
+  internal::reserve_for_largest_solve(shared, internal::fe_unknowns(Plane::InPlane, 400), 10);
+  for (int elements : {400, 200, 400}) {
+    const internal::FeMatrices matrices = internal::assemble(
+        Plane::InPlane, internal::solve_chain_statics(problem, statics, elements, problem.cable.axial_stiffness_n));
+    const internal::FeEigenSolution fresh = internal::solve_lowest_modes(matrices, 10, 1e-13, 1000);
+    const internal::FeEigenSolution reused = internal::solve_lowest_modes(matrices, 10, 1e-13, 1000, &shared);
+    ASSERT_EQ(reused.termination, Termination::Converged) << reused.message;
+    EXPECT_EQ(reused.eigenvalues, fresh.eigenvalues) << "N = " << elements;
+    EXPECT_EQ(reused.eigenvectors, fresh.eigenvectors) << "N = " << elements;
+    EXPECT_EQ(reused.inertia_count, fresh.inertia_count);
+    EXPECT_EQ(reused.inertia_shift, fresh.inertia_shift);
+  }
+}
+
 }  // namespace
 }  // namespace catena

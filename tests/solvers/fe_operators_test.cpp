@@ -55,5 +55,24 @@ TEST(FeOperators, RigidTranslationCarriesNoElasticForce) {
   }
 }
 
+// FeMatrices moves swap the sparse matrices (Eigen 3.4's have no move operations): the target
+// holds exactly the source's entries, and the source is left empty, not a copy.
+TEST(FeOperators, MovesTakeTheMatricesWithoutCopying) {
+  const internal::FeChain chain = taut_chain(12);
+  const internal::FeMatrices original = internal::assemble(Plane::InPlane, chain);
+  internal::FeMatrices source = original;
+  const double* stiffness_values = source.stiffness.valuePtr();
+  internal::FeMatrices moved(std::move(source));
+  EXPECT_EQ(moved.stiffness.valuePtr(), stiffness_values);  // the same storage, not a copy
+  EXPECT_EQ(source.stiffness.nonZeros(), 0);
+  internal::FeMatrices assigned;
+  assigned = std::move(moved);
+  EXPECT_EQ(assigned.stiffness.valuePtr(), stiffness_values);
+  EXPECT_EQ(assigned.dofs_per_node, original.dofs_per_node);
+  EXPECT_EQ(Eigen::MatrixXd(assigned.stiffness), Eigen::MatrixXd(original.stiffness));
+  EXPECT_EQ(Eigen::MatrixXd(assigned.mass), Eigen::MatrixXd(original.mass));
+  EXPECT_EQ(Eigen::MatrixXd(assigned.boundary_coupling), Eigen::MatrixXd(original.boundary_coupling));
+}
+
 }  // namespace
 }  // namespace catena

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "catena/statics/problem_builders.hpp"
+#include "solvers/internal/fe_operators.hpp"
+#include "solvers/internal/mode_tools.hpp"
 
 namespace catena {
 namespace {
@@ -69,6 +71,42 @@ TEST(FeShapes, ModeOnStationsIsNormalised) {
   EXPECT_EQ(mode.normalised_by, "v");
   EXPECT_NEAR(mode.v.maxCoeff(), 1.0, 1e-12);  // the peak made positive and 1
   EXPECT_EQ(mode.tension_n, Vector::Zero(11));  // no first-order tension out of plane
+}
+
+// mode_on_stations reads the nodes next to each station from the eigenvector in place; the result
+// must be the same, bit for bit, as sampling the full copy of the nodes (node_displacements) with
+// every element's tension (element_tension).
+TEST(FeShapes, ModeOnStationsEqualsSamplingTheCopiedNodes) {
+  const Problem problem = make_taut_inclined_problem(0.1, 30.0, 50.0, 0.6);
+  const StaticSolution statics = solve_statics(problem);
+  const internal::FeChain chain = internal::solve_chain_statics(problem, statics, 16, problem.cable.axial_stiffness_n);
+  const Vector stations = Vector::LinSpaced(23, 0.0, problem.length_m());
+  for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
+    const Vector free = Vector::LinSpaced(internal::fe_unknowns(plane, 16), -1.0, 2.0).array().sin();
+    const std::vector<Vec2> D = internal::node_displacements(plane, 16, free);
+    const Vector tau = internal::element_tension(chain, D);
+    const bool inplane = plane == Plane::InPlane;
+    const internal::FeSampled copied =
+        internal::sample_on_stations(plane, chain, D, inplane ? &tau : nullptr, stations, statics);
+    Mode expected;
+    expected.s_m = stations;
+    if (inplane) {
+      expected.u = copied.u;
+      expected.w = copied.w;
+      expected.tension_n = copied.tension;
+      internal::normalise_inplane_mode(expected);
+    } else {
+      expected.v = copied.v;
+      internal::normalise_outofplane_mode(expected);
+    }
+    const Mode mode = internal::mode_on_stations(plane, chain, free, stations, statics, true);
+    EXPECT_EQ(mode.u, expected.u);
+    EXPECT_EQ(mode.w, expected.w);
+    EXPECT_EQ(mode.v, expected.v);
+    if (inplane) {
+      EXPECT_EQ(mode.tension_n, expected.tension_n);
+    }
+  }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace catena::internal {
 namespace {
@@ -104,6 +105,18 @@ void lay_out_chain(FeChain& chain, const FeLineMesh& mesh, double penalty_axial_
   lay_out_contact(chain, mesh, continuous_h_n);
 }
 
+// Element j's tension and unit direction under support forces (H, V_A).
+std::pair<double, Vec2> element_force(const FeChain& chain, int j, double H, double V_A) {
+  if (j < chain.grounded_elements) {
+    // On the seabed: horizontal, with the friction profile (lay_out_contact).
+    return {std::max(H + chain.grounded_tension_offset_n[j], 0.0), Vec2(1.0, 0.0)};
+  }
+  // Element j carries the continuous force at its midpoint (see lump_weights).
+  const double V = V_A + chain.vertical_offset_n[j];
+  const double T = std::hypot(H, V);
+  return {T, T > 0.0 ? Vec2(H / T, V / T) : Vec2(0.0, 1.0)};
+}
+
 // Fills the per-element forces, lengths and node positions of a chain with support forces (H, V_A).
 void build_chain(FeChain& chain, double H, double V_A) {
   const int N = chain.elements;
@@ -112,25 +125,28 @@ void build_chain(FeChain& chain, double H, double V_A) {
   chain.tension_n.resize(N);
   chain.stretched_length_m.resize(N);
   chain.direction.resize(static_cast<std::size_t>(N));
-  chain.node_offset_m.assign(static_cast<std::size_t>(N) + 1, Vec2::Zero());
+  chain.node_offset_m.resize(static_cast<std::size_t>(N) + 1);
+  chain.node_offset_m.front() = Vec2::Zero();
   for (int j = 0; j < N; ++j) {
-    if (j < chain.grounded_elements) {
-      // On the seabed: horizontal, with the friction profile (lay_out_contact).
-      chain.tension_n[j] = std::max(H + chain.grounded_tension_offset_n[j], 0.0);
-      chain.direction[static_cast<std::size_t>(j)] = Vec2(1.0, 0.0);
-    } else {
-      // Element j carries the continuous force at its midpoint (see lump_weights).
-      const double V = V_A + chain.vertical_offset_n[j];
-      const double T = std::hypot(H, V);
-      chain.tension_n[j] = T;
-      chain.direction[static_cast<std::size_t>(j)] = T > 0.0 ? Vec2(H / T, V / T) : Vec2(0.0, 1.0);
-    }
-    const double T = chain.tension_n[j];
+    const auto [T, t] = element_force(chain, j, H, V_A);
+    chain.tension_n[j] = T;
+    chain.direction[static_cast<std::size_t>(j)] = t;
     chain.stretched_length_m[j] = chain.element_length_m[j] * (1.0 + T / chain.axial_stiffness_n[j]);
     chain.node_offset_m[static_cast<std::size_t>(j) + 1] =
-        chain.node_offset_m[static_cast<std::size_t>(j)] +
-        chain.stretched_length_m[j] * chain.direction[static_cast<std::size_t>(j)];
+        chain.node_offset_m[static_cast<std::size_t>(j)] + chain.stretched_length_m[j] * t;
   }
+}
+
+// The last node's offset under (H, V_A), computed as build_chain computes it (the same operations
+// in the same order, so the same bits) without storing the elements: the line search tries steps
+// without copying the chain.
+Vec2 closure_end(const FeChain& chain, double H, double V_A) {
+  Vec2 end = Vec2::Zero();
+  for (int j = 0; j < chain.elements; ++j) {
+    const auto [T, t] = element_force(chain, j, H, V_A);
+    end = end + (chain.element_length_m[j] * (1.0 + T / chain.axial_stiffness_n[j])) * t;
+  }
+  return end;
 }
 
 // d(r_N)/d(H, V_A) = sum_j l0_j [(I - t t^T)/T + I/EA_j] (symmetric).
@@ -170,16 +186,19 @@ void close_chain(FeChain& chain, const Problem& problem, const StaticSolution& s
                       : all_grounded ? Vec2(-residual.x() / J(0, 0), 0.0)
                                      : Vec2(-J.ldlt().solve(residual));
     double alpha = 1.0;
-    FeChain trial = chain;
+    // The accepted step (the last one tried if none decreases the residual; the chain keeps its
+    // forces if every trial had H <= 0).
+    double H_next = H, V_next = V_A;
     for (int k = 0; k < 40; ++k, alpha *= 0.5) {
       const double H_trial = H + alpha * step.x();
       if (!vertical && H_trial <= 0.0) continue;
-      build_chain(trial, H_trial, V_A + alpha * step.y());
-      if ((trial.node_offset_m.back() - chord).norm() < residual.norm() || k == 39) break;
+      H_next = H_trial;
+      V_next = V_A + alpha * step.y();
+      if ((closure_end(chain, H_next, V_next) - chord).norm() < residual.norm()) break;
     }
-    H = trial.horizontal_force_n;
-    V_A = trial.vertical_force_a_n;
-    chain = std::move(trial);
+    H = H_next;
+    V_A = V_next;
+    build_chain(chain, H, V_A);
     const Vec2 next = chain.node_offset_m.back() - chord;
     const bool stalled = next.norm() >= residual.norm() && next.norm() > tolerance;
     residual = next;

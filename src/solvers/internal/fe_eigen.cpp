@@ -25,8 +25,8 @@ double seconds_since(Clock::time_point start) {
 class ShiftInvertOperator {
  public:
   using Scalar = double;
-  ShiftInvertOperator(const SparseMatrix& stiffness, const SparseMatrix& mass)
-      : stiffness_(stiffness), mass_(mass) {}
+  ShiftInvertOperator(const SparseMatrix& stiffness, const SparseMatrix& mass, BandedLdlt& ldlt)
+      : stiffness_(stiffness), mass_(mass), ldlt_(ldlt) {}
   Eigen::Index rows() const { return stiffness_.rows(); }
   Eigen::Index cols() const { return stiffness_.cols(); }
   void set_shift(double sigma) {
@@ -48,7 +48,7 @@ class ShiftInvertOperator {
  private:
   const SparseMatrix& stiffness_;
   const SparseMatrix& mass_;
-  BandedLdlt ldlt_;
+  BandedLdlt& ldlt_;
 };
 
 // The block-diagonal Cholesky factor L of the lumped mass, M = L L^T: per node l11, l21, l22 of
@@ -134,33 +134,37 @@ class StandardFormOperator {
   mutable Vector solved_;
 };
 
-// Residual and M-orthogonality of M-normalised eigenvectors, given M phi. K phi is formed a
-// column at a time (one vector, not an n x k matrix of fresh pages).
-void check_eigenpairs(const FeMatrices& matrices, const Eigen::MatrixXd& M_phi, FeEigenSolution& out) {
-  Vector K_phi(out.eigenvectors.rows());
+// ||.||_1 of a symmetric matrix: the largest absolute column sum.
+double norm1(const SparseMatrix& A) {
+  double best = 0.0;
+  for (Eigen::Index c = 0; c < A.outerSize(); ++c) {
+    double sum = 0.0;
+    for (SparseMatrix::InnerIterator it(A, c); it; ++it) sum += std::abs(it.value());
+    best = std::max(best, sum);
+  }
+  return best;
+}
+
+// Residual, backward error and M-orthogonality of M-normalised eigenvectors. M phi and K phi are
+// formed a column at a time into two vectors, not as n x k blocks (fresh pages at every level;
+// each column's products are the same sums either way).
+void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
+  const Eigen::MatrixXd& phi = out.eigenvectors;
+  Vector K_phi(phi.rows()), M_phi(phi.rows());
   out.max_residual = 0.0;
   out.max_backward_error = 0.0;
-  // ||.||_1 of a symmetric matrix: the largest absolute column sum.
-  auto norm1 = [](const SparseMatrix& A) {
-    double best = 0.0;
-    for (Eigen::Index c = 0; c < A.outerSize(); ++c) {
-      double sum = 0.0;
-      for (SparseMatrix::InnerIterator it(A, c); it; ++it) sum += std::abs(it.value());
-      best = std::max(best, sum);
-    }
-    return best;
-  };
   const double k_norm = norm1(matrices.stiffness), m_norm = norm1(matrices.mass);
-  for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
-    K_phi.noalias() = matrices.stiffness * out.eigenvectors.col(i);
+  Eigen::MatrixXd gram(phi.cols(), phi.cols());
+  for (Eigen::Index i = 0; i < phi.cols(); ++i) {
+    M_phi.noalias() = matrices.mass * phi.col(i);
+    K_phi.noalias() = matrices.stiffness * phi.col(i);
     const double denominator = K_phi.norm();
-    const double r = (K_phi - out.eigenvalues[i] * M_phi.col(i)).norm();
+    const double r = (K_phi - out.eigenvalues[i] * M_phi).norm();
     out.max_residual = std::max(out.max_residual, denominator > 0.0 ? r / denominator : r);
     out.max_backward_error = std::max(
-        out.max_backward_error,
-        r / ((k_norm + std::abs(out.eigenvalues[i]) * m_norm) * out.eigenvectors.col(i).norm()));
+        out.max_backward_error, r / ((k_norm + std::abs(out.eigenvalues[i]) * m_norm) * phi.col(i).norm()));
+    gram.col(i).noalias() = phi.transpose() * M_phi;
   }
-  const Eigen::MatrixXd gram = out.eigenvectors.transpose() * M_phi;
   out.max_orthogonality_error =
       (gram - Eigen::MatrixXd::Identity(gram.rows(), gram.cols())).cwiseAbs().maxCoeff();
 }
@@ -179,16 +183,14 @@ bool solved_densely(Eigen::Index unknowns, int modes) {
 constexpr double kBackwardErrorGoal = 1e-14;
 
 // M-normalises the vectors (the Ritz vectors are M-orthonormal already; this removes rounding
-// drift) and measures residual, backward error and M-orthogonality. M phi is formed once and
-// scaled with phi.
+// drift) and measures residual, backward error and M-orthogonality.
 void normalise_and_check(const FeMatrices& matrices, FeEigenSolution& out) {
-  Eigen::MatrixXd M_phi = matrices.mass * out.eigenvectors;
+  Vector M_phi(out.eigenvectors.rows());
   for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
-    const double norm = std::sqrt(out.eigenvectors.col(i).dot(M_phi.col(i)));
-    out.eigenvectors.col(i) /= norm;
-    M_phi.col(i) /= norm;
+    M_phi.noalias() = matrices.mass * out.eigenvectors.col(i);
+    out.eigenvectors.col(i) /= std::sqrt(out.eigenvectors.col(i).dot(M_phi));
   }
-  check_eigenpairs(matrices, M_phi, out);
+  check_eigenpairs(matrices, out);
 }
 
 // Subspace (inverse) iteration with Rayleigh-Ritz on the converged Ritz vectors, with the
@@ -275,9 +277,9 @@ Vector standard_form_guess(const Vector* guess, const MassFactor& factor, Eigen:
 }
 
 void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, double tolerance,
-                       int max_restarts, LanczosWorkspace& workspace, const Vector* guess,
+                       int max_restarts, FeEigenWorkspace& workspace, const Vector* guess,
                        FeEigenSolution& out) {
-  ShiftInvertOperator op(matrices.stiffness, matrices.mass);
+  ShiftInvertOperator op(matrices.stiffness, matrices.mass, workspace.factor);
   const MassFactor factor(matrices.mass, matrices.dofs_per_node);
   StandardFormOperator standard(op, factor);
   const SymmetricOperator apply = [&standard](const double* x, double* y) { standard.perform_op(x, y); };
@@ -289,7 +291,7 @@ void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, doub
       const auto start = Clock::now();
       LanczosResult lanczos =
           largest_magnitude_eigenpairs(apply, standard.rows(), modes, subspace, tolerance, max_restarts,
-                                       workspace, start_guess.size() > 0 ? start_guess.data() : nullptr);
+                                       workspace.lanczos, start_guess.size() > 0 ? start_guess.data() : nullptr);
       out.iteration_time_s += seconds_since(start);
       out.restarts += lanczos.restarts;
       out.operations += lanczos.operations;
@@ -324,11 +326,11 @@ void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, doub
 // above the eigenvalue's rounding error, which for a stiff penalised chain is set by the residual
 // floor eps ||K|| / ||K phi|| rather than by the convergence tolerance, and far below any physical
 // gap between modes.
-void prove_mode_count(const FeMatrices& matrices, int modes, FeEigenSolution& out) {
+void prove_mode_count(const FeMatrices& matrices, int modes, BandedLdlt& factor, FeEigenSolution& out) {
   const auto start = Clock::now();
   const double top = out.eigenvalues[out.eigenvalues.size() - 1];
   out.inertia_shift = top + std::max(1e-9, 10.0 * out.max_residual) * std::abs(top);
-  out.inertia_count = count_eigenvalues_below(matrices, out.inertia_shift);
+  out.inertia_count = count_eigenvalues_below(matrices, out.inertia_shift, factor);
   out.factorization_time_s += seconds_since(start);
   if (out.inertia_count != modes) {
     out.termination = Termination::NoConvergence;
@@ -344,8 +346,8 @@ void prove_mode_count(const FeMatrices& matrices, int modes, FeEigenSolution& ou
 
 }  // namespace
 
-void reserve_for_largest_solve(LanczosWorkspace& workspace, Eigen::Index unknowns, int modes) {
-  if (!solved_densely(unknowns, modes)) workspace.reserve(unknowns, lanczos_subspace(unknowns, modes));
+void reserve_for_largest_solve(FeEigenWorkspace& workspace, Eigen::Index unknowns, int modes) {
+  if (!solved_densely(unknowns, modes)) workspace.lanczos.reserve(unknowns, lanczos_subspace(unknowns, modes));
 }
 
 Vector mode_sum_guess(const Eigen::MatrixXd& modes, int dofs_per_node, Eigen::Index rows) {
@@ -365,17 +367,21 @@ Vector mode_sum_guess(const Eigen::MatrixXd& modes, int dofs_per_node, Eigen::In
   return fine;
 }
 
+int count_eigenvalues_below(const FeMatrices& matrices, double shift, BandedLdlt& factor) {
+  if (!factor.factorize(matrices.stiffness, matrices.mass, shift)) return -1;
+  return factor.negative_pivots();
+}
+
 int count_eigenvalues_below(const FeMatrices& matrices, double shift) {
-  BandedLdlt ldlt;
-  if (!ldlt.factorize(matrices.stiffness, matrices.mass, shift)) return -1;
-  return ldlt.negative_pivots();
+  BandedLdlt factor;
+  return count_eigenvalues_below(matrices, shift, factor);
 }
 
 FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
                                    int modes,
                                    double tolerance,
                                    int max_restarts,
-                                   LanczosWorkspace* workspace,
+                                   FeEigenWorkspace* workspace,
                                    const Vector* guess) {
   FeEigenSolution out;
   const auto n = static_cast<int>(matrices.stiffness.rows());
@@ -386,16 +392,16 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
   }
   const int subspace = lanczos_subspace(n, modes);
   const bool dense = solved_densely(n, modes);
+  FeEigenWorkspace own;
+  FeEigenWorkspace& work = workspace ? *workspace : own;
   if (dense) {
     solve_dense(matrices, modes, out);
   } else {
-    LanczosWorkspace own;
-    solve_iteratively(matrices, modes, subspace, tolerance, max_restarts, workspace ? *workspace : own, guess,
-                      out);
+    solve_iteratively(matrices, modes, subspace, tolerance, max_restarts, work, guess, out);
   }
   if (out.termination != Termination::Converged) return out;
   if (dense) normalise_and_check(matrices, out);
-  prove_mode_count(matrices, modes, out);
+  prove_mode_count(matrices, modes, work.factor, out);
   return out;
 }
 

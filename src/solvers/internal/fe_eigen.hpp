@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "catena/solvers/solver_summary.hpp"
+#include "solvers/internal/fe_banded_ldlt.hpp"
 #include "solvers/internal/fe_lanczos.hpp"
 #include "solvers/internal/fe_operators.hpp"
 
@@ -44,21 +45,29 @@ struct FeEigenSolution {
   std::vector<std::string> warnings;
 };
 
+/// The memory of the eigen solves of one fe run, kept between its levels: the Lanczos basis and
+/// the banded factor (the shift-invert one, then reused for the inertia count). Memory a solve
+/// touches first costs a page fault per 4 KiB; reused, it costs nothing.
+struct FeEigenWorkspace {
+  LanczosWorkspace lanczos;
+  BandedLdlt factor;
+};
+
 /// Lowest `modes` eigenpairs. `modes` must be < number of unknowns (the caller validates).
-/// `workspace` (optional) holds the Lanczos buffers between calls: pass the same one to the
-/// solves of one fe run (mesh and penalty levels) so that they allocate the basis once.
+/// `workspace` (optional) holds the buffers between calls: pass the same one to the solves of one
+/// fe run (mesh and penalty levels) so that they allocate the basis and the factor once.
 /// `guess` (optional, one value per unknown) starts the Lanczos iteration near the wanted
 /// eigenvectors (mode_sum_guess); convergence is tested as without it.
 FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
                                    int modes,
                                    double tolerance,
                                    int max_restarts,
-                                   LanczosWorkspace* workspace = nullptr,
+                                   FeEigenWorkspace* workspace = nullptr,
                                    const Vector* guess = nullptr);
 
 /// Makes `workspace` ready for the largest of several solves of `modes` modes (the largest has
 /// `unknowns` unknowns), so that the smaller ones use the same memory.
-void reserve_for_largest_solve(LanczosWorkspace& workspace, Eigen::Index unknowns, int modes);
+void reserve_for_largest_solve(FeEigenWorkspace& workspace, Eigen::Index unknowns, int modes);
 
 /// A start vector for the eigen solve of a level with `rows` unknowns from the eigenvectors
 /// `modes` of another level of the same chain: their sum, on the same mesh as it is, on a mesh
@@ -67,7 +76,9 @@ void reserve_for_largest_solve(LanczosWorkspace& workspace, Eigen::Index unknown
 Vector mode_sum_guess(const Eigen::MatrixXd& modes, int dofs_per_node, Eigen::Index rows);
 
 /// Number of eigenvalues of K phi = lambda M phi below `shift` (negative pivots of
-/// LDLT(K - shift M)); -1 when the factorisation fails.
+/// LDLT(K - shift M)); -1 when the factorisation fails. The second form factors into `factor`
+/// (its storage reused).
 int count_eigenvalues_below(const FeMatrices& matrices, double shift);
+int count_eigenvalues_below(const FeMatrices& matrices, double shift, BandedLdlt& factor);
 
 }  // namespace catena::internal

@@ -66,6 +66,54 @@ struct Orthogonalised {
   bool in_span = false;  // what is left of w is rounding: w lay in the span of the basis
 };
 
+// Rows of the basis combined at a time when subtracting V c from w (their partial sums stay in
+// the first-level cache).
+constexpr Eigen::Index kCombinationRows = 256;
+
+// acc += V(rows r0 .. r0 + count, columns k0 .. k1) c(k0 .. k1), the columns in order, four at a
+// time.
+void accumulate_columns(const double* V, Eigen::Index rows, Eigen::Index r0, Eigen::Index count, Eigen::Index k0,
+                        Eigen::Index k1, const double* c, double* acc) {
+  Eigen::Index k = k0;
+  for (; k + 4 <= k1; k += 4) {
+    const double* v0 = V + k * rows + r0;
+    const double *v1 = v0 + rows, *v2 = v1 + rows, *v3 = v2 + rows;
+    const double c0 = c[k], c1 = c[k + 1], c2 = c[k + 2], c3 = c[k + 3];
+    for (Eigen::Index r = 0; r < count; ++r) acc[r] = (((acc[r] + v0[r] * c0) + v1[r] * c1) + v2[r] * c2) + v3[r] * c3;
+  }
+  for (; k < k1; ++k) {
+    const double* v = V + k * rows + r0;
+    const double ck = c[k];
+    for (Eigen::Index r = 0; r < count; ++r) acc[r] = acc[r] + v[r] * ck;
+  }
+}
+
+// w -= V c, returning ||w|| afterwards. Eigen's product forms each row's sum over a block of
+// columns (all of them below 128 columns) at once, reading every column's next cache line in turn:
+// 30 concurrent streams, more than the prefetcher follows, so at a million rows it ran at a third
+// of the speed of the V^T w pass over the same memory. Here a block of rows sums four columns at
+// a time (four streams). Each row gets the same sums as from Eigen's product: per column block
+// (Eigen's split: all columns below 128, else 16 or 4), acc = 0, acc += v_k c_k in order, then
+// w + (-1) acc; and the norm is taken over the whole vector. So the result is the same to the
+// last bit.
+double subtract_combination(const BasisMap& basis, Eigen::Index columns, const Eigen::Ref<const Eigen::VectorXd>& c,
+                            Eigen::Ref<Eigen::VectorXd> w) {
+  const Eigen::Index rows = w.size();
+  const Eigen::Index column_block =
+      columns < 128 ? columns : (rows * static_cast<Eigen::Index>(sizeof(double)) < 32000 ? 16 : 4);
+  double* x = w.data();
+  alignas(64) double acc[kCombinationRows];
+  for (Eigen::Index r0 = 0; r0 < rows; r0 += kCombinationRows) {
+    const Eigen::Index count = std::min(kCombinationRows, rows - r0);
+    for (Eigen::Index k0 = 0; k0 < columns; k0 += column_block) {
+      std::fill(acc, acc + count, 0.0);
+      accumulate_columns(basis.data(), rows, r0, count, k0, std::min(k0 + column_block, columns), c.data(), acc);
+      for (Eigen::Index r = 0; r < count; ++r) x[r0 + r] = x[r0 + r] - acc[r];
+    }
+  }
+  return w.norm();
+}
+
 // Classical Gram-Schmidt of w against the first `columns` basis vectors, a second pass only when
 // the first kept less than 1/sqrt(2) of the norm (DGKS). `h` receives the total coefficients.
 Orthogonalised orthogonalise(const BasisMap& basis, Eigen::Index columns, Eigen::Ref<Eigen::VectorXd> w,
@@ -74,14 +122,12 @@ Orthogonalised orthogonalise(const BasisMap& basis, Eigen::Index columns, Eigen:
   auto coefficients = h.head(columns);
   const double before = w.norm();
   coefficients.noalias() = V.transpose() * w;
-  w.noalias() -= V * coefficients;
-  const double after = w.norm();
+  const double after = subtract_combination(basis, columns, coefficients, w);
   if (after > kKeptNormForOnePass * before) return {after, false};
   auto again = correction.head(columns);
   again.noalias() = V.transpose() * w;
-  w.noalias() -= V * again;
+  const double twice = subtract_combination(basis, columns, again, w);
   coefficients += again;
-  const double twice = w.norm();
   return {twice, !(twice > kKeptNormForOnePass * after)};
 }
 

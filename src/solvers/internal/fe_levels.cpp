@@ -184,7 +184,7 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
                                      WorkMeter* meter) {
   FePlaneEigenReport report;
   long solved = 0;
-  LanczosWorkspace workspace;  // one basis for every level of this plane, sized for the largest
+  FeEigenWorkspace workspace;  // one basis and factor for every level of this plane
   Eigen::Index largest = 0;
   for (const auto& row : levels)
     for (const FeLevel& level : row) largest = std::max<Eigen::Index>(largest, fe_unknowns(plane, level.chain.elements));

@@ -8,6 +8,32 @@
 
 namespace catena::internal {
 
+namespace {
+
+// Node i's displacement read from the free unknowns in place (the end nodes' given): the samples
+// of a mode need a few nodes per station, not a copy of all N + 1.
+struct FreeNodes {
+  Plane plane;
+  int elements;
+  const double* free;
+  Vec2 end_a, end_b;
+  Vec2 operator[](std::size_t node) const {
+    const auto i = static_cast<int>(node);
+    if (i == 0) return end_a;
+    if (i == elements) return end_b;
+    return plane == Plane::InPlane ? Vec2(free[2 * (i - 1)], free[2 * (i - 1) + 1]) : Vec2(free[i - 1], 0.0);
+  }
+};
+
+// tau_j = EA t_j . (D_{j+1} - D_j) / l0 for any node access D.
+template <typename Nodes>
+double tension_of_element(const FeChain& chain, const Nodes& D, int j) {
+  const auto k = static_cast<std::size_t>(j);
+  return chain.axial_stiffness_n[j] * chain.direction[k].dot(D[k + 1] - D[k]) / chain.element_length_m[j];
+}
+
+}  // namespace
+
 std::vector<Vec2> node_displacements(Plane plane,
                                      int elements,
                                      const Eigen::Ref<const Vector>& free,
@@ -26,11 +52,7 @@ std::vector<Vec2> node_displacements(Plane plane,
 
 Vector element_tension(const FeChain& chain, const std::vector<Vec2>& D) {
   Vector tau(chain.elements);
-  for (int j = 0; j < chain.elements; ++j) {
-    const auto k = static_cast<std::size_t>(j);
-    tau[j] = chain.axial_stiffness_n[j] * chain.direction[k].dot(D[k + 1] - D[k]) /
-             chain.element_length_m[j];
-  }
+  for (int j = 0; j < chain.elements; ++j) tau[j] = tension_of_element(chain, D, j);
   return tau;
 }
 
@@ -68,12 +90,13 @@ StationPlace place_of(const FeChain& chain, double s) {
 
 }  // namespace
 
-FeSampled sample_on_stations(Plane plane,
-                             const FeChain& chain,
-                             const std::vector<Vec2>& D,
-                             const Vector* tau,
-                             const Vector& stations,
-                             const StaticSolution& statics) {
+namespace {
+
+// The samples for any node access D; `tension_at(j)` gives element j's tension (a null pointer:
+// no tension asked).
+template <typename Nodes, typename TensionAt>
+FeSampled sample_nodes(Plane plane, const FeChain& chain, const Nodes& D, const TensionAt* tension_at,
+                       const Vector& stations, const StaticSolution& statics) {
   FeSampled out;
   const Index points = stations.size();
   if (plane == Plane::InPlane) {
@@ -82,7 +105,7 @@ FeSampled sample_on_stations(Plane plane,
   } else {
     out.v.resize(points);
   }
-  if (tau) out.tension.resize(points);
+  if (tension_at) out.tension.resize(points);
   for (Index p = 0; p < points; ++p) {
     const double s = stations[p];
     const StationPlace at = place_of(chain, s);
@@ -94,9 +117,21 @@ FeSampled sample_on_stations(Plane plane,
     } else {
       out.v[p] = d.x();
     }
-    if (tau) out.tension[p] = (1.0 - at.g) * (*tau)[at.j] + at.g * (*tau)[at.j + 1];
+    if (tension_at) out.tension[p] = (1.0 - at.g) * (*tension_at)(at.j) + at.g * (*tension_at)(at.j + 1);
   }
   return out;
+}
+
+}  // namespace
+
+FeSampled sample_on_stations(Plane plane,
+                             const FeChain& chain,
+                             const std::vector<Vec2>& D,
+                             const Vector* tau,
+                             const Vector& stations,
+                             const StaticSolution& statics) {
+  const auto tension_at = [tau](int j) { return (*tau)[j]; };
+  return sample_nodes(plane, chain, D, tau ? &tension_at : nullptr, stations, statics);
 }
 
 Mode mode_on_stations(Plane plane,
@@ -105,11 +140,12 @@ Mode mode_on_stations(Plane plane,
                       const Vector& stations,
                       const StaticSolution& statics,
                       bool with_tension) {
-  const std::vector<Vec2> D = node_displacements(plane, chain.elements, eigenvector);
-  Vector tau;
-  if (with_tension && plane == Plane::InPlane) tau = element_tension(chain, D);
-  const FeSampled sampled = sample_on_stations(
-      plane, chain, D, (with_tension && plane == Plane::InPlane) ? &tau : nullptr, stations, statics);
+  // The nodes and element tensions next to each station only (at N = 1e6 a copy of every node per
+  // mode costs more than the sampling).
+  const FreeNodes D{plane, chain.elements, eigenvector.data(), Vec2::Zero(), Vec2::Zero()};
+  const auto tension_at = [&](int j) { return tension_of_element(chain, D, j); };
+  const FeSampled sampled = sample_nodes(plane, chain, D, (with_tension && plane == Plane::InPlane) ? &tension_at : nullptr,
+                                         stations, statics);
   Mode mode;
   mode.s_m = stations;
   if (plane == Plane::InPlane) {
