@@ -61,7 +61,9 @@ const KnobTable<ShootingSolverOptions>& shooting_knobs() {
        real_knob("max_condition", &O::max_condition, Range::closed(2.0, 1e8),
                  "re-orthonormalise the principal pair when cond(Gram) exceeds this"),
        flag_knob("error_estimate", &O::error_estimate,
-                 "one extra shot per mode at 10x tighter tolerances")});
+                 "one extra shot per mode at 100x tighter tolerances"),
+       choice_knob("root_finder", &O::newton, {{"newton", true}, {"brent", false}},
+                   "refine each root by Newton with the shot's frequency derivative, or by Brent")});
   return table;
 }
 
@@ -207,6 +209,11 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
   ShootingRootFinder finder(
       [&integrator](double omega, double factor) { return integrator->shoot(omega, factor); },
       root_finder_settings(options_), guess, integration_plane == Plane::OutOfPlane);
+  if (options_.newton) {
+    finder.set_slope_shots([&integrator](double omega, double factor) {
+      return integrator->shoot(omega, factor, nullptr, false, true);
+    });
+  }
   WorkMeter meter(context_, "shooting", std::string(to_string(plane)) + " modes", count);
   try {
     const std::vector<Root> roots = finder.find(count, summary.warnings, &meter);

@@ -1,9 +1,9 @@
 // Tests of the frequency derivative a shot can carry (shooting_integrator.hpp, "Frequency
 // derivative"): the slopes of the normalised end determinant and of the end angle against central
 // finite differences of two shots, on a taut string (both planes, with frequent
-// re-orthonormalisations) and on a two-piece line with a point mass at the joint (the jump). The
-// balancing is off so that the carried variables do not depend on the frequency and the finite
-// difference sees the same function as the slope.
+// re-orthonormalisations) and on a two-piece line with a point mass at the joint (the jump), with
+// the balancing off (carried variables independent of the frequency) and on (the slope includes
+// the balancing's own change with the frequency, so that it is that of the values returned).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,12 +15,12 @@
 namespace catena::internal {
 namespace {
 
-IntegratorSettings tight(double max_condition = 1e2) {
+IntegratorSettings tight(double max_condition = 1e2, bool balance = false) {
   IntegratorSettings settings;
   settings.relative_tolerance = 1e-12;
   settings.absolute_tolerance = 1e-14;
   settings.max_condition = max_condition;
-  settings.balance = false;
+  settings.balance = balance;
   return settings;
 }
 
@@ -50,8 +50,8 @@ ShootingCoefficients line_with_point() {
 // The slope of the shot at omega against the central difference of the plain shots at
 // omega (1 -+ 1e-5).
 void expect_slopes_match(Plane plane, const ShootingCoefficients& k, double omega,
-                         double max_condition = 1e2) {
-  ShootingIntegrator integrator(plane, k, tight(max_condition));
+                         double max_condition = 1e2, bool balance = false) {
+  ShootingIntegrator integrator(plane, k, tight(max_condition, balance));
   const Shot shot = integrator.shoot(omega, 1.0, nullptr, false, true);
   ASSERT_TRUE(shot.has_slope);
   const Shot plain = integrator.shoot(omega);
@@ -92,6 +92,18 @@ TEST(ShootingSlope, CrossesAPointMassJump) {
   for (double omega : {1.7, 6.1, 13.9}) {
     expect_slopes_match(Plane::InPlane, line, omega);
     expect_slopes_match(Plane::OutOfPlane, line, omega);
+  }
+}
+
+TEST(ShootingSlope, IncludesTheBalancing) {
+  // kappa^2 = max(Omega, 1) moves with the frequency above Omega = 1 (Omega = omega here).
+  const ShootingCoefficients string = testing::horizontal_string(1.0, 1.0, 4.0);
+  const ShootingCoefficients line = line_with_point();
+  for (double omega : {4.7, 17.3}) {
+    expect_slopes_match(Plane::InPlane, string, omega, 1e2, true);
+    expect_slopes_match(Plane::OutOfPlane, string, omega, 1e2, true);
+    expect_slopes_match(Plane::InPlane, line, omega, 1e2, true);
+    expect_slopes_match(Plane::OutOfPlane, line, omega, 1e2, true);
   }
 }
 

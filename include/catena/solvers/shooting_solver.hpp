@@ -82,7 +82,7 @@ enum class ShootingMethod {
 std::string to_string(ShootingMethod method);
 
 /// Options of the shooting solver. Scene knobs: `rtol`, `atol`, `root_tolerance`, `method`,
-/// `nonlinear_solver`, `max_steps`, `max_condition`, `error_estimate`.
+/// `nonlinear_solver`, `max_steps`, `max_condition`, `error_estimate`, `root_finder`.
 struct ShootingSolverOptions {
   /// CVODE relative tolerance [-] (knob `rtol`). In [1e-14, 1e-2].
   double relative_tolerance = 1e-10;
@@ -110,6 +110,10 @@ struct ShootingSolverOptions {
   /// Estimate each frequency's integration error by one extra shot at 10x tighter tolerances
   /// (knob `error_estimate`). When false the estimate is the root bracket plus 10 rtol.
   bool error_estimate = true;
+  /// Root refinement (knob `root_finder` = "newton" | "brent"): safeguarded Newton steps with
+  /// the frequency derivative carried by the shot (the variational equation; Brent's method takes
+  /// over where a step leaves the sign bracket or does not shrink), or Brent's method alone.
+  bool newton = true;
 
   /// absolute_tolerance with the default applied.
   double effective_absolute_tolerance() const;

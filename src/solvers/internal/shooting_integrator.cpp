@@ -357,12 +357,12 @@ struct StepCounts {
 
 // One CVODE instance with its vectors and linear algebra, for a state of `size` components.
 struct CvodeWorkspace {
-  CvodeWorkspace(SUNContext context, sunindextype size, const IntegratorSettings& s)
+  CvodeWorkspace(SUNContext context, sunindextype size, const IntegratorSettings& s, bool fixed_point)
       : y(size, context),
         scratch(size, context),
         matrix(SUNDenseMatrix(size, size, context)),
         linear_solver(SUNLinSol_Dense(y.get(), matrix.get(), context)),
-        nonlinear_solver(s.fixed_point ? SUNNonlinSol_FixedPoint(y.get(), 0, context) : nullptr),
+        nonlinear_solver(fixed_point ? SUNNonlinSol_FixedPoint(y.get(), 0, context) : nullptr),
         cvode(s.use_bdf ? CV_BDF : CV_ADAMS, context) {}
   bool ok() const {
     return y.ok() && scratch.ok() && matrix.ok() && linear_solver.ok() && cvode.ok();
@@ -396,7 +396,8 @@ struct ShootingIntegrator::Impl {
   // derivative (Y, the phase and the scaled derivative of Y: header, "Frequency derivative").
   std::unique_ptr<CvodeWorkspace> make_workspace(bool slope) {
     const int block = 2 * dimension * dimension;
-    auto w = std::make_unique<CvodeWorkspace>(context.get(), slope ? 2 * block + 1 : block + 1, settings);
+    const bool fixed_point = settings.fixed_point;
+    auto w = std::make_unique<CvodeWorkspace>(context.get(), slope ? 2 * block + 1 : block + 1, settings, fixed_point);
     if (!w->ok()) throw ShootingFailure("could not allocate the SUNDIALS objects");
     void* mem = w->cvode.get();
     N_VConst(0.0, w->y.get());
@@ -406,7 +407,7 @@ struct ShootingIntegrator::Impl {
                                    : (slope ? jacobian<1, true> : jacobian<1, false>);
     check(CVodeInit(mem, f, 0.0, w->y.get()), "CVodeInit");
     check(CVodeSetUserData(mem, &data), "CVodeSetUserData");
-    if (settings.fixed_point) {
+    if (fixed_point) {
       // Functional iteration (no Jacobian, no linear solve): the system is not stiff.
       if (!w->nonlinear_solver.get())
         throw ShootingFailure("could not allocate SUNNonlinSol_FixedPoint");
@@ -684,15 +685,20 @@ void ShootingIntegrator::Impl::finish_shot(Shot& shot) {
 }
 
 // The frequency derivatives of the normalised end determinant h = det Phi / sqrt(det G) and of
-// the end angle (D = 1: -2 arg(Phi + i F)) from the carried slope S = c w dY/dw:
+// the end angle (D = 1: -2 arg(Phi + i F)) from the carried slope S = c w dY/dw and the balancing's
+// own change with w (the start F~ = I is a right factor, which changes neither h nor the angle):
 //   dh = [tr(adj(Phi) dPhi) - h sqrt(det G) tr(G^{-1} dG) / 2] / sqrt(det G),
 //   dG = dPhi^T Phi + Phi^T dPhi + dF^T F + F^T dF,   d angle = -2 (Phi dF - F dPhi) / (Phi^2 + F^2).
 template <int D>
 void ShootingIntegrator::Impl::set_slopes(Shot& shot, const Square<D>& Phi, const Square<D>& F) const {
   const Eigen::Map<const Basis<D>> S(ws->y.data() + 2 * D * D + 1);
   const double to_slope = 1.0 / (data.slope_scale * shot.omega_rad_s);  // S -> dY/dw
-  const Square<D> dPhi = to_slope * S.template topRows<D>();
-  const Square<D> dF = to_slope * S.template bottomRows<D>();
+  // The balancing kappa^2 = max(Omega, 1) moves with w as well (kappa ~ sqrt(w) above 1): the
+  // carried Phi~ = kappa Phi^ and F~ = F^ / kappa gain +-(dkappa/dw / kappa) = +-1/(2 w) of
+  // themselves, so that the slopes are those of the function the shots evaluate.
+  const double balance_rate = data.kappa2 > 1.0 ? 0.5 / shot.omega_rad_s : 0.0;
+  const Square<D> dPhi = to_slope * S.template topRows<D>() + balance_rate * Phi;
+  const Square<D> dF = to_slope * S.template bottomRows<D>() - balance_rate * F;
   const Square<D> G = Phi.transpose() * Phi + F.transpose() * F;
   const Square<D> dG = dPhi.transpose() * Phi + Phi.transpose() * dPhi + dF.transpose() * F +
                        F.transpose() * dF;

@@ -44,7 +44,9 @@
 /// The scale c = atol / (kSlopeAccuracy kappa^2) keeps S near atol / kSlopeAccuracy, so that CVODE
 /// controls it to about kSlopeAccuracy relative (enough for Newton's step) and it does not shorten
 /// the steps of Y. The slopes of the normalised end determinant and of the end angle follow from
-/// S at the end. Not carried through the grounded run (its shots come without a slope).
+/// S at the end, with the change of kappa itself (kappa ~ sqrt(w) where Omega > 1): they are the
+/// total derivatives of the values the shots return. Not carried through the grounded run (its
+/// shots come without a slope).
 ///
 /// Balancing. The shot integrates Phi~ = kappa Phi^, F~ = F^ / kappa with kappa^2 = max(Omega, 1)
 /// (a constant symplectic scaling: B -> kappa^2 B, C -> C / kappa^2). It balances B and C for the
@@ -113,7 +115,7 @@ struct Shot {
   /// R factors of the re-orthonormalisations, in order (segment k starts after R_k).
   std::vector<Eigen::MatrixXd> segment_r;
   /// A shot asked for with_slope (and not starting on the seabed): the frequency derivatives of
-  /// `determinant` and (D = 1) of the end angle [1/(rad/s), rad/(rad/s)] at fixed balancing.
+  /// `determinant` and (D = 1) of the end angle [1/(rad/s), rad/(rad/s)].
   bool has_slope = false;
   double determinant_slope = 0.0;
   double angle_slope = 0.0;

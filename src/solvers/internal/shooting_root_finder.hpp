@@ -14,6 +14,8 @@
 /// as one root of that multiplicity.
 
 #include <functional>
+#include <limits>
+#include <optional>
 #include <map>
 #include <string>
 #include <utility>
@@ -78,6 +80,11 @@ class ShootingRootFinder {
   /// early (fewer roots, the lowest ones).
   std::vector<Root> find(int num_modes, std::vector<std::string>& warnings, WorkMeter* meter = nullptr);
 
+  /// Shots that carry the frequency derivative (ShootingIntegrator::shoot with_slope): given,
+  /// each root is refined by safeguarded Newton steps inside its sign bracket (refine_newton)
+  /// instead of Brent's method.
+  void set_slope_shots(ShotFunction shoot_with_slope) { shoot_with_slope_ = std::move(shoot_with_slope); }
+
   long shots() const { return shots_; }
   /// The count at the smallest sample above the top root (-1 when none).
   int proved_count() const { return proved_count_; }
@@ -95,6 +102,9 @@ class ShootingRootFinder {
     double angle_min = 0.0;
     double angle_max = 0.0;
     double determinant = 0.0;
+    /// d(root function)/d omega when the shot carried the slope, NaN otherwise: the
+    /// determinant's in plane, the continuous count's (angle slope / 2 pi) for D = 1.
+    double slope = std::numeric_limits<double>::quiet_NaN();
   };
   static double count_function(const Sample& sample, int n);
 
@@ -110,10 +120,32 @@ class ShootingRootFinder {
   Sample shoot_sample(double omega, double factor);
   Root refine_to_target(int n, double lo, double hi, std::vector<std::string>& warnings);
   Root refine(int n, double lo, double hi);
+  const Sample& evaluate_with_slope(double omega);
+  Sample cached_shot(double omega, const ShotFunction& shoot);
+  double newton_start(int n, double a, double b) const;
+  struct ModelPoint {
+    double x = 0.0;
+    double g = 0.0;   ///< the function Newton works on (model_point)
+    double dg = 0.0;  ///< its slope
+    bool tangent = false;  ///< g = tan(pi h) rather than h
+  };
+  ModelPoint model_point(double x, double f, double slope) const;
+  static double model_step(const ModelPoint& current, const std::optional<ModelPoint>& previous);
+  std::optional<Root> tight_newton_root(int n, double lo, double hi, double& x0);
+  std::optional<Sample> tight_slope_sample(double omega);
+  struct ModelPoint;
+  double normal_tolerance_root(int n, double lo, double hi, double base, bool hermite,
+                               const ModelPoint& tight) const;
+  std::optional<double> newton_error_bound(double step, double last_step, double omega) const;
+  void close_top_bracket(const std::vector<Root>& roots);
+  Sample to_sample(const Shot& shot) const;
+  std::optional<Root> refine_newton(int n, double& lo, double& hi);
+  Root newton_root(int n, double omega, double step, const Sample& last);
   Root root_in_bracket(int n, double a, double b, const Sample& sa, const Sample& sb, double factor);
   Root refine_tighter(int n, Root root, double lo, double hi);
 
   ShotFunction shoot_;
+  ShotFunction shoot_with_slope_;
   RootFinderSettings settings_;
   double first_guess_;
   bool scalar_;
