@@ -367,16 +367,18 @@ std::optional<Root> ShootingRootFinder::refine_newton(int n, double& lo, double&
 // nearer bracket end as the step before the first), and its error estimate is the distance to
 // the root the samples at the solver's tolerances give (normal_tolerance_root), i.e. the change
 // of the root at 100x tighter tolerances, plus that bound; kept when below half the target.
-// Taken when the start is within kTightStartBracket of the nearer bracket end; otherwise, or when
-// it does not converge, `x0` is left at the best point found for the shots at the solver's
-// tolerances.
+// Taken when the start is within kTightStartBracket of the nearer bracket end, and that end
+// carries a slope or the bracket is that narrow (the predicted samples); when it does not converge
+// `x0` is left at the tight Newton point, for the shots at the solver's tolerances.
 std::optional<Root> ShootingRootFinder::tight_newton_root(int n, double lo, double hi, double& x0) {
   if (!settings_.error_estimate) return std::nullopt;
   const bool near_lo = x0 - lo <= hi - x0;
   const double end = near_lo ? lo : hi;
   const bool hermite = !std::isnan(samples_.at(end).slope);
   const double last = std::abs(x0 - end);
-  if (last > kTightStartBracket * x0) return std::nullopt;
+  if (last > kTightStartBracket * x0 || (!hermite && hi - lo > kTightStartBracket * hi)) {
+    return std::nullopt;
+  }
   const std::optional<Sample> tight = tight_slope_sample(x0);
   if (!tight) return std::nullopt;
   const ModelPoint point = model_point(x0, end_value(*tight, n), tight->slope);
@@ -411,13 +413,12 @@ std::optional<ShootingRootFinder::Sample> ShootingRootFinder::tight_slope_sample
 
 // The root of the samples at the solver's tolerances near the tight point, of a quadratic (in the
 // function Newton works on) with the tight point's slope (a slope differs between the two
-// tolerances by far less than a value does) and: the value and slope of the nearer end `end`
-// (hermite); the values of both ends of a bracket narrower than kTightStartBracket; the value of
-// the nearer end alone (a line). Three Newton steps on it from the tight point.
+// tolerances by far less than a value does) and either the value and slope of the nearer end
+// `end` (hermite) or the values of both ends. Three Newton steps on it from the tight point.
 double ShootingRootFinder::normal_tolerance_root(int n, double lo, double hi, double end,
                                                  bool hermite, const ModelPoint& tight) const {
-  const bool narrow = !hermite && hi - lo <= kTightStartBracket * hi;
-  const double base = narrow ? lo : end;
+  const bool narrow = !hermite;
+  const double base = hermite ? end : lo;
   const Sample& sb = samples_.at(base);
   const ModelPoint b = model_point(base, end_value(sb, n), sb.slope);
   const Sample& sh = samples_.at(hi);
@@ -426,11 +427,8 @@ double ShootingRootFinder::normal_tolerance_root(int n, double lo, double hi, do
     return std::numeric_limits<double>::quiet_NaN();
   }
   const double t0 = tight.x - base;
-  double linear = tight.dg, curvature = 0.0, width = 0.0;
-  if (hermite) {
-    linear = b.dg;
-    curvature = 0.5 * (tight.dg - b.dg) / t0;
-  } else if (narrow) {
+  double linear = b.dg, curvature = 0.5 * (tight.dg - b.dg) / t0, width = 0.0;
+  if (narrow) {
     width = hi - lo;
     linear = (top.g - b.g) / width;
     const double lever = 2.0 * t0 - width;
