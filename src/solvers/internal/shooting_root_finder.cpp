@@ -19,6 +19,10 @@ namespace {
 // (tight_newton_root): the predicted samples leave brackets of 1e-7 to 1e-4.
 constexpr double kTightStartBracket = 1e-3;
 
+// Newton steps shorter than this (relative) are taken as they are, without model_step's
+// curvature correction: the error they leave is then bounded by newton_error_bound.
+constexpr double kNewtonRegion = 1e-3;
+
 // Counts the shots taken while it lives under one purpose of the ShotTally.
 class PurposeScope {
  public:
@@ -173,6 +177,9 @@ const ShootingRootFinder::Sample& ShootingRootFinder::evaluate_with_slope(double
   if (it != samples_.end() && !std::isnan(it->second.slope)) return it->second;
   Sample& slot = samples_[omega];
   slot = cached_shot(omega, shoot_with_slope_);
+  // A shot that cannot carry the slope (a line starting on the seabed: the grounded run) leaves
+  // the refinement to Brent for good.
+  if (std::isnan(slot.slope)) shoot_with_slope_ = nullptr;
   return slot;
 }
 
@@ -333,7 +340,7 @@ std::optional<Root> ShootingRootFinder::refine_newton(int n, double& lo, double&
   for (int shot = 0; shot < kMaxNewtonShots; ++shot) {
     const Sample& sample = evaluate_with_slope(x);
     const double f = end_value(sample, n);
-    if (f == 0.0) return std::nullopt;
+    if (f == 0.0 || !shoot_with_slope_) return std::nullopt;
     if ((f > 0.0) == (fb > 0.0)) {
       hi = x;
       fb = f;
@@ -407,6 +414,7 @@ std::optional<ShootingRootFinder::Sample> ShootingRootFinder::tight_slope_sample
   const Shot shot = shoot_with_slope_(omega, std::max(0.01, floor));
   ++shots_;
   ++*purpose_;
+  if (!shot.has_slope) shoot_with_slope_ = nullptr;  // as in evaluate_with_slope
   if (!shot.has_slope || shot.phase_defect > kMaxPhaseDefect) return std::nullopt;
   return to_sample(shot);
 }
@@ -457,11 +465,14 @@ ShootingRootFinder::ModelPoint ShootingRootFinder::model_point(double x, double 
 
 // The step to the root of the Moebius function g(w) = (g1 + a t) / (1 + c t), t = w - x1, that
 // has the value and slope of the current point and the value of the previous one (Newton's step
-// -g1/g1' when there is none or the fit is degenerate): exact for the localised mode's step
-// above, and Newton's step with a curvature correction elsewhere.
+// -g1/g1' when there is none or the fit is degenerate, and within kNewtonRegion of the root):
+// exact for the localised mode's step above, and Newton's step with a curvature correction
+// elsewhere.
 double ShootingRootFinder::model_step(const ModelPoint& current,
                                       const std::optional<ModelPoint>& previous) {
   const double newton = -current.g / current.dg;
+  // Near the root plain Newton converges quadratically, and its step bounds the error left.
+  if (std::abs(newton) <= kNewtonRegion * std::abs(current.x)) return newton;
   if (!previous || previous->tangent != current.tangent) return newton;
   const double t0 = previous->x - current.x, dg = previous->g - current.g;
   if (t0 == 0.0 || dg == 0.0) return newton;
@@ -474,12 +485,15 @@ double ShootingRootFinder::model_step(const ModelPoint& current,
 // (none otherwise): the step itself once it is within the root tolerance, or, where the steps
 // show quadratic convergence (this one below a tenth of the last), step^2 / last_step, which is
 // 1/(step/last) times the quadratic prediction step^3 / last^2 (the error falls as K e^2 with
-// K = step / last^2), when that is within a quarter of the root tolerance.
+// K = step / last^2), plus the part an error of the slope leaves, when that is within a quarter
+// of the root tolerance.
 std::optional<double> ShootingRootFinder::newton_error_bound(double step, double last_step,
                                                              double omega) const {
+  // kSlopeMargin: the slope's own relative error, which leaves that fraction of the step.
+  constexpr double kSlopeMargin = 1e-3;
   const double tolerance = settings_.root_tolerance * omega;
   if (step <= tolerance) return step;
-  const double quadratic = step * step / last_step;
+  const double quadratic = step * step / last_step + kSlopeMargin * step;
   if (std::isfinite(last_step) && step <= 0.1 * last_step && quadratic <= 0.25 * tolerance) {
     return quadratic;
   }
