@@ -216,7 +216,8 @@ Mode FeNumerics::extrapolated_mode(Plane plane, int i, const FeModeMatches& matc
   mode.relative_error_estimate = (error >= 0.0 && omega > 0.0) ? error / omega : -1.0;
   if (plane == Plane::InPlane && mode.relative_error_estimate >= 0.0)
     mode.relative_error_estimate += plan_.rounding_floor(context_.groups.t0_n, mode.index);
-  if (plan_.has_estimate_mesh() && mode.relative_error_estimate >= 0.0)
+  // Prescribed end forces are kept exactly (no Newton on the closure): no statics rounding floor.
+  if (plan_.has_estimate_mesh() && mode.relative_error_estimate >= 0.0 && !context_.problem.prescribed_forces)
     mode.relative_error_estimate += plan_.statics_floor(context_.groups.t0_n);
   attach_shape(plane, i, matches, stations, mode);
   return mode;

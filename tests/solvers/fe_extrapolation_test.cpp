@@ -103,6 +103,23 @@ TEST(FeExtrapolation, WithoutOrderTwoTheCorrectionStaysTheEstimate) {
   EXPECT_NEAR(result.error_rad_s, std::abs(fine - coarse) / 3.0, 1e-15);
 }
 
+TEST(FeExtrapolation, TheThirdPenaltyBoundsTheLinearExtrapolationsError) {
+  // omega(kappa) = 7 + 40 kappa + 2e4 kappa^2 on one mesh (no coarse mesh: its estimate is 0).
+  auto omega = [](double kappa) { return 7.0 + 40.0 * kappa + 2e4 * kappa * kappa; };
+  internal::FePlan plan = two_mesh_plan(true, true);
+  plan.axial_stiffness_n = {4e6, 2e6, 1e6};
+  const double k = 1e-3;
+  const std::vector<std::vector<double>> table = {{omega(k), omega(2 * k), omega(4 * k)},
+                                                  {omega(k), omega(2 * k), omega(4 * k)}};
+  const auto result = internal::extrapolate_frequency(plan, table);
+  const double error = std::abs(result.omega_rad_s - 7.0);  // 2e4 x 2 k^2 = 0.04
+  EXPECT_NEAR(error, 0.04, 1e-12);
+  EXPECT_GE(result.error_rad_s, error);
+  EXPECT_LE(result.error_rad_s, 2.0 * error + 1e-12);
+  // The correction |w(kappa) - w(2 kappa)| = 0.1 overstated it; the third penalty does not.
+  EXPECT_LT(result.error_rad_s, std::abs(omega(k) - omega(2 * k)));
+}
+
 TEST(FeExtrapolation, ObservedOrderOfASecondOrderSequence) {
   auto omega = [](double h) { return 1.0 + 0.5 * h * h; };
   EXPECT_NEAR(internal::observed_order(omega(0.1), omega(0.05), omega(0.025)), 2.0, 1e-9);

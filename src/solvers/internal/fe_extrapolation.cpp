@@ -149,10 +149,15 @@ FeExtrapolatedFrequency extrapolate_frequency(const FePlan& plan,
   }
   if (!plan.inextensible) return {per_penalty[0], per_penalty_error[0]};
   // Linear in kappa (Irvine's 1/lambda^2 is linear in the extensibility): 2 w(kappa) - w(2 kappa).
-  const double error = per_penalty_error[0] < 0.0
-                           ? -1.0
-                           : per_penalty_error[0] + std::abs(per_penalty[0] - per_penalty[1]);
-  return {2.0 * per_penalty[0] - per_penalty[1], error};
+  const double linear = 2.0 * per_penalty[0] - per_penalty[1];
+  const double kappa_error = per_penalty.size() > 2 ? kappa_extrapolation_error(per_penalty[0], per_penalty[1], per_penalty[2])
+                                                     : std::abs(per_penalty[0] - per_penalty[1]);
+  const double error = per_penalty_error[0] < 0.0 ? -1.0 : per_penalty_error[0] + kappa_error;
+  return {linear, error};
+}
+
+double kappa_extrapolation_error(double at_kappa, double at_2kappa, double at_4kappa) {
+  return 2.0 * std::abs(2.0 * at_kappa - 3.0 * at_2kappa + at_4kappa) / 3.0;
 }
 
 double observed_order(double coarse, double middle, double fine) {

@@ -4,9 +4,9 @@
 /// (largest MAC on the common nodes), Richardson in the mesh (order 2, mesh ratio 2:
 /// omega = omega_2N + (omega_2N - omega_N) / 3; the error estimate is the difference from the
 /// Richardson value on N/2, N where that mesh was solved and the frequencies show their order 2,
-/// else the correction itself), linear
-/// extrapolation in the penalty kappa to 0 for an inextensible cable (2 omega_kappa -
-/// omega_2kappa), and the observed convergence order of the unextrapolated frequencies.
+/// else the correction itself), linear extrapolation in the penalty kappa to 0 for an
+/// inextensible cable (2 omega_kappa - omega_2kappa, its error from 4 kappa), and the observed
+/// convergence order of the unextrapolated frequencies.
 
 #include <Eigen/Dense>
 #include <vector>
@@ -42,13 +42,22 @@ struct FeExtrapolatedFrequency {
   double omega_rad_s = 0.0;
   /// Absolute error estimate [rad/s]: |R(N, 2N) - R(N/2, N)| with the estimate mesh N/2 where the
   /// unextrapolated frequencies converge at order 2 (within 0.25), else the Richardson correction;
-  /// plus the kappa correction when penalised; -1 without a coarse mesh.
+  /// plus, when penalised, kappa_extrapolation_error (the kappa correction |w_kappa - w_2kappa| on
+  /// a plan of two penalties); -1 without a coarse mesh.
   double error_rad_s = -1.0;
 };
 
 /// Extrapolates one mode from its frequencies on every level, omega[mesh][penalty].
 FeExtrapolatedFrequency extrapolate_frequency(const FePlan& plan,
                                               const std::vector<std::vector<double>>& omega);
+
+/// The error estimate of the linear extrapolation 2 a - b to kappa = 0 from the values at kappa,
+/// 2 kappa and 4 kappa: twice its distance from the quadratic through the three,
+/// |(8 a - 6 b + c) / 3 - (2 a - b)| = |2 a - 3 b + c| / 3, which is the linear value's leading
+/// O(kappa^2) error exactly (w = w0 + A kappa + B kappa^2: 2 B kappa^2 both); the factor 2 covers
+/// the next term. Before the third penalty the estimate was the correction |a - b| itself, which
+/// bounds the unextrapolated error, not the extrapolated one.
+double kappa_extrapolation_error(double at_kappa, double at_2kappa, double at_4kappa);
 
 /// Observed order p = log2((coarse - middle) / (middle - fine)) of three frequencies on meshes
 /// N, 2N, 4N; 0 when the differences do not shrink monotonically.

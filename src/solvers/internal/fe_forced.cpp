@@ -62,12 +62,15 @@ std::vector<FeFieldPiece> field_pieces(const FeChain& chain) {
 
 double max_abs(const Vector& x) { return x.size() ? x.cwiseAbs().maxCoeff() : 0.0; }
 
-// One mesh's response, extrapolated to kappa = 0 when penalised (2 a - b over its two levels),
-// and the field at the first penalty, whose distance from it is the kappa correction.
+// One mesh's response, extrapolated to kappa = 0 when penalised (2 a - b over its first two
+// levels), and the field whose distance from it is the kappa term of the estimate: the quadratic
+// through the three penalties (twice that distance is the estimate, as for the frequencies,
+// fe_extrapolation.hpp), or the field at the first penalty on a plan of two.
 struct MeshResponse {
   std::string diagnostic;  // empty when every level gave a response
   FeResponseField field;
-  FeResponseField at_first_penalty;
+  FeResponseField kappa_reference;
+  double kappa_factor = 1.0;
 };
 
 MeshResponse respond_on_mesh(const Forcing& forcing, const std::vector<FeLevel>& mesh, double omega) {
@@ -81,15 +84,16 @@ MeshResponse respond_on_mesh(const Forcing& forcing, const std::vector<FeLevel>&
     }
     fields.push_back(std::move(response.field));
   }
-  out.at_first_penalty = fields[0];
-  out.field = fields.size() == 2 ? extrapolate_field_in_kappa(fields[0], fields[1]) : fields[0];
+  out.field = fields.size() >= 2 ? extrapolate_field_in_kappa(fields[0], fields[1]) : fields[0];
+  out.kappa_reference = fields.size() == 3 ? quadratic_field_in_kappa(fields[0], fields[1], fields[2]) : fields[0];
+  out.kappa_factor = fields.size() == 3 ? 2.0 : 1.0;
   return out;
 }
 
 // The error estimate's pieces, absolute over the stations (in the peak tension's unit).
 struct ForcedErrorParts {
   double mesh = 0.0;   // the Richardson correction |R - fine| (without Richardson: |fine - coarse|)
-  double kappa = 0.0;  // the kappa correction on the fine mesh (inextensible)
+  double kappa = 0.0;  // the kappa term on the fine mesh (inextensible, MeshResponse)
 };
 
 // The relative error estimate of the peak tension: the mesh term plus the kappa term plus the
@@ -129,8 +133,10 @@ void respond(ForcedResponse& response, const Forcing& forcing, const FePlan& pla
     parts.mesh = max_station_difference(fine_sampled, other, in_plane);
   }
   if (plan.inextensible) {
-    parts.kappa = max_station_difference(
-        fine_sampled, sample_field(forcing.plane, fine.at_first_penalty, forcing.stations, forcing.statics), in_plane);
+    parts.kappa = fine.kappa_factor *
+                  max_station_difference(fine_sampled,
+                                         sample_field(forcing.plane, fine.kappa_reference, forcing.stations, forcing.statics),
+                                         in_plane);
   }
   response.u = result.u;
   response.w = result.w;

@@ -64,6 +64,15 @@ FeResponseField extrapolate_field_in_kappa(const FeResponseField& at_kappa, cons
   return out;
 }
 
+FeResponseField quadratic_field_in_kappa(const FeResponseField& at_kappa, const FeResponseField& at_2kappa,
+                                         const FeResponseField& at_4kappa) {
+  FeResponseField out = at_kappa;
+  for (std::size_t i = 0; i < out.nodes.size(); ++i)
+    out.nodes[i] = (8.0 * at_kappa.nodes[i] - 6.0 * at_2kappa.nodes[i] + at_4kappa.nodes[i]) / 3.0;
+  if (out.tension.size()) out.tension = (8.0 * at_kappa.tension - 6.0 * at_2kappa.tension + at_4kappa.tension) / 3.0;
+  return out;
+}
+
 FeResponseField richardson_field(const FeResponseField& coarse, const FeResponseField& fine) {
   const std::size_t elements = coarse.nodes.size() - 1;
   bool nested = fine.nodes.size() == 2 * elements + 1 && fine.pieces.size() == coarse.pieces.size();

@@ -48,6 +48,11 @@ double cubic_interpolate(const double* values, std::size_t count, double first, 
 /// Linear extrapolation to kappa = 0 of the fields at kappa (`at_kappa`) and 2 kappa: 2a - b.
 FeResponseField extrapolate_field_in_kappa(const FeResponseField& at_kappa, const FeResponseField& at_2kappa);
 
+/// The quadratic in kappa through the fields at kappa, 2 kappa and 4 kappa, at kappa = 0:
+/// (8a - 6b + c) / 3. Its distance from the linear extrapolation is the latter's O(kappa^2) error.
+FeResponseField quadratic_field_in_kappa(const FeResponseField& at_kappa, const FeResponseField& at_2kappa,
+                                         const FeResponseField& at_4kappa);
+
 /// Richardson in h for order 2 and mesh ratio 2, (4 fine - coarse) / 3, on the coarse mesh's nodes
 /// and element midpoints. `fine` must have the same pieces with exactly twice the elements each.
 FeResponseField richardson_field(const FeResponseField& coarse, const FeResponseField& fine);

@@ -56,7 +56,7 @@ void plan_penalty_strain(FePlan& plan, const Problem& problem, const StaticSolut
   for (const StaticPiece& piece : statics.pieces())
     largest_tension = std::max({largest_tension, statics.tension_n(piece.s_begin_m),
                                 std::hypot(statics.horizontal_force_n(), statics.vertical_force_before_n(piece.s_begin_m))});
-  plan.penalty_strain = largest_tension / plan.axial_stiffness_n.back();
+  plan.penalty_strain = largest_tension / plan.axial_stiffness_n[1];  // at 2 kappa
 }
 
 // Each mesh's layout; on a line the counts of the finer meshes are doubled from the coarsest, and
@@ -105,7 +105,10 @@ void plan_penalties(FePlan& plan, const Problem& problem, const StaticSolution& 
   plan.stiffest_extensible_n = stiffest;
   double reference = statics.horizontal_force_n();
   if (!(reference > 0.0)) reference = std::max(statics.tension_n(0.0), statics.tension_n(problem.length_m()));
-  plan.kappas = {kappa, 2.0 * kappa};
+  // kappa and 2 kappa give the result (linear extrapolation); 4 kappa its error estimate: the
+  // quadratic through the three, whose distance from the linear one is the latter's leading
+  // O(kappa^2) error (fe_extrapolation.hpp).
+  plan.kappas = {kappa, 2.0 * kappa, 4.0 * kappa};
   for (double k : plan.kappas) plan.axial_stiffness_n.push_back(reference / k);
   plan_penalty_strain(plan, problem, statics);
 }
@@ -123,7 +126,7 @@ std::optional<std::string> fe_penalty_not_applicable(const FePlan& plan) {
       "is not small against the relative slack (L - chord)/L = {:.3g} (ratio {:.3g} > {:g}), so the penalised "
       "chain's sag and tension are not the inextensible cable's; a kappa below {:.3g} would be needed, where the "
       "stiff penalty springs' rounding error grows like 1/kappa",
-      plan.penalty_strain, plan.kappas.back(), plan.relative_slack, ratio, kMaxPenaltyStrainOverSlack,
+      plan.penalty_strain, plan.kappas[1], plan.relative_slack, ratio, kMaxPenaltyStrainOverSlack,
       plan.kappas.front() * kMaxPenaltyStrainOverSlack / std::max(ratio, 1e-300));
 }
 

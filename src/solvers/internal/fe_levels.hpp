@@ -71,8 +71,9 @@ struct FePlan {
   /// The largest extensible segment's EA on a line with inextensible segments too (else 0) [N]:
   /// it joins the penalty in the rounding floor.
   double stiffest_extensible_n = 0.0;
-  std::vector<double> kappas;             // the penalties kappa, 2 kappa (inextensible only)
-  /// Inextensible only: the largest end tension over the smaller penalty stiffness (2 kappa),
+  /// The penalties kappa, 2 kappa (the result) and 4 kappa (its error estimate); inextensible only.
+  std::vector<double> kappas;
+  /// Inextensible only: the largest end tension over the penalty stiffness at 2 kappa,
   /// and the relative slack (L - |chord|) / L (see kMaxPenaltyStrainOverSlack).
   double penalty_strain = 0.0;
   double relative_slack = 0.0;
@@ -91,7 +92,8 @@ struct FePlan {
   /// sums N element chords, so its length is known to about eps L N at worst, which moves the
   /// tension by (EA/T0) eps N relative and every frequency by half that. Measured on a taut
   /// two-segment line (EA/T = 1e3, N = 2000): H off by 2e-11, the frequencies by 1.0e-11, bound
-  /// 2.2e-10. Added to every estimate once the estimate mesh can make it the largest term.
+  /// 2.2e-10. Added to every estimate once the estimate mesh can make it the largest term, unless
+  /// the end forces are prescribed (kept exactly: the chain's tension has no closure error).
   double statics_floor(double t0_n) const;
 };
 

@@ -62,6 +62,7 @@ std::string fe_resolution(const FePlan& plan) {
   if (plan.inextensible) {
     resolution += fmt::format("; penalty kappa = {:.1e} and {:.1e}, extrapolated to 0", plan.kappas[0],
                               plan.kappas[1]);
+    if (plan.kappas.size() > 2) resolution += fmt::format(" ({:.1e} for the estimate)", plan.kappas[2]);
   }
   return resolution;
 }

@@ -179,8 +179,7 @@ void GroundedRun::Impl::integrate_to(double x) {
   }
 }
 
-// The physical columns of the balanced pairs, with psi continued in the physical variables (it
-// crosses the axes together with the balanced angle, so the two differ by less than pi / 2).
+// The physical columns of the balanced pairs and the zeros of their phi on (0, x].
 GroundedFrame GroundedRun::Impl::frame() const {
   const int D = data.dimension;
   GroundedFrame f;
@@ -196,11 +195,12 @@ GroundedFrame GroundedRun::Impl::frame() const {
     f.phi(j) = phi / norm;
     f.force(j) = force / norm;
     f.log_scale(j) = state[2 * j + 1] + std::log(norm);
-    const double psi =
-        psi_balanced + std::remainder(std::atan2(force, phi) - psi_balanced, 2.0 * kPi);
-    f.count += count_conjugate_points<1>(FrameBlock<1>::Constant(f.phi(j)),
-                                         FrameBlock<1>::Constant(f.force(j)), psi)
-                   .count;
+    // The zeros of phi are where psi crosses pi/2 - k pi, always downwards (there psi' = -b~ < 0),
+    // starting from pi/2 at A: their number is read off the continuous psi alone. (The count
+    // formula of count_conjugate_points put the cut of its unitary angle where phi is zero to
+    // rounding, so at a root the count could differ from psi's by one; a tightened estimate shot
+    // of a line entirely on the seabed came out two zeros high.)
+    f.count += static_cast<int>(std::floor((0.5 * kPi - psi_balanced) / kPi));
   }
   return f;
 }

@@ -607,8 +607,16 @@ void ShootingIntegrator::Impl::set_grounded_state(const GroundedFrame& frame, Sh
   Eigen::Map<Basis<D>> Y(ws->y.data());
   Y = to_carried<D>(physical, data);
   const Square<D> Phi = Y.template topRows<D>(), F = Y.template bottomRows<D>();
-  ws->y.data()[2 * D * D] =
-      kPi * (D - frame.count) - 0.5 * unitary_angles<D>(Phi, F).sum();
+  // The count formula fixes the phase only modulo pi (the unitary angles give 2 theta): the phase
+  // carried is the value of arg det(Phi + i F) nearest to it, so that phase and basis agree to
+  // rounding. They differ by pi only where a column's displacement is zero to rounding at the
+  // run's end (the run counts that zero, the basis's sign may not): the end is then a root, on
+  // whichever side of it the count falls. Taking the formula's value there left a phase defect of
+  // pi, a re-shot and an off-by-one count at the tightened estimate shot (a line entirely on the
+  // seabed, mode 5: estimate 7e-2 for a root right to 1e-13).
+  const double from_count = kPi * (D - frame.count) - 0.5 * unitary_angles<D>(Phi, F).sum();
+  const double modulo = frame_phase<D>(Phi, F);
+  ws->y.data()[2 * D * D] = modulo + 2.0 * kPi * std::round((from_count - modulo) / (2.0 * kPi));
 }
 
 // The grounded run from x = 0 to its end, recording the stations on it; CVODE restarted there
