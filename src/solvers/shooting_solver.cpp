@@ -287,8 +287,9 @@ void ShootingNumerics::finish_summary(const ShootingRootFinder& finder,
 SolverEntry make_shooting_entry() {
   return make_solver_entry(
       "exact linear boundary-value solution: principal solutions integrated with SUNDIALS CVODE, "
-      "modes counted by conjugate points (Morse index) and refined by Brent's method on a "
-      "count-aware phase function; any sag, inclination, EA (inf exact), added mass",
+      "modes counted by conjugate points (Morse index) and refined by safeguarded Newton steps "
+      "with the frequency derivative of the shot (Brent's method as fallback) on a count-aware "
+      "phase function; any sag, inclination, EA (inf exact), added mass",
       shooting_knobs(), [](const SolveContext& context, const ShootingSolverOptions& options) {
         return std::make_unique<ShootingNumerics>(context, options);
       });

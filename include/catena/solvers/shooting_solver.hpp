@@ -26,9 +26,11 @@
 /// smallest with count n (new samples by a phase-extrapolated guess or bisection). Inside such a
 /// certified bracket det Phi(L) / sqrt(det(Phi^T Phi + F^T F)) -- a smooth function of w in
 /// [-1, 1], invariant under the re-orthonormalisation below -- changes sign exactly once, and
-/// Brent's method refines the root to `root_tolerance`. Out of plane the continuous count
+/// the root is refined to `root_tolerance` by safeguarded Newton steps, each shot carrying the
+/// frequency derivative from the variational equation (Brent's method where a step leaves the
+/// bracket or does not shrink, or with `root_finder = "brent"`). Out of plane the continuous count
 /// N + (angle - pi)/(2 pi) (Pruefer) is itself smooth and equals n at the n-th eigenvalue, so
-/// Brent works on it directly from any count bracket. Several eigenvalues inside a bracket
+/// the refinement works on it directly from any count bracket. Several eigenvalues inside a bracket
 /// narrower than the tolerance (an exactly double root, e.g. Irvine's cross-over, where the count
 /// jumps by 2) are returned as that many modes at the same frequency; roots closer than
 /// 1000 rtol share a joint null space for their shapes, mass-orthogonalised.
