@@ -140,7 +140,7 @@ class ShootingRootFinder {
   void close_top_bracket(const std::vector<Root>& roots);
   Sample to_sample(const Shot& shot) const;
   std::optional<Root> refine_newton(int n, double& lo, double& hi);
-  Root newton_root(int n, double omega, double step, const Sample& last);
+  Root newton_root(int n, double omega, double step, const Sample& last, double lo, double hi);
   Root root_in_bracket(int n, double a, double b, const Sample& sa, const Sample& sb, double factor);
   Root refine_tighter(int n, Root root, double lo, double hi);
 
