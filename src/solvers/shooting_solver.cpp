@@ -209,7 +209,10 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
   ShootingRootFinder finder(
       [&integrator](double omega, double factor) { return integrator->shoot(omega, factor); },
       root_finder_settings(options_), guess, integration_plane == Plane::OutOfPlane);
-  if (options_.newton) {
+  // A general line keeps Brent: its shots restart CVODE at every break, where a shot with the
+  // slope pays its larger dense solve again, and there Newton's fewer shots cost more time
+  // (docs/methods/shooting.md, "Newton refinement").
+  if (options_.newton && !k_.is_line()) {
     finder.set_slope_shots([&integrator](double omega, double factor) {
       return integrator->shoot(omega, factor, nullptr, false, true);
     });

@@ -114,7 +114,9 @@ struct ShootingSolverOptions {
   bool error_estimate = true;
   /// Root refinement (knob `root_finder` = "newton" | "brent"): safeguarded Newton steps with
   /// the frequency derivative carried by the shot (the variational equation; Brent's method takes
-  /// over where a step leaves the sign bracket or does not shrink), or Brent's method alone.
+  /// over where a step leaves the sign bracket or does not shrink), or Brent's method alone. A
+  /// general line (several segments or point attachments) and a line starting on the seabed are
+  /// refined by Brent either way (measured cheaper there: docs/methods/shooting.md).
   bool newton = true;
 
   /// absolute_tolerance with the default applied.
