@@ -14,6 +14,8 @@
 
 #include "catena/core/types.hpp"
 #include "solvers/internal/shooting_conjugate_count.hpp"
+#include "shooting_test_strings.hpp"
+#include "solvers/internal/shooting_integrator.hpp"
 #include "solvers/internal/shooting_root_finder.hpp"
 
 namespace catena::internal {
@@ -168,6 +170,43 @@ TEST(ShootingNewton, SafeguardFindsEveryModeThroughASteepStep) {
   }
   EXPECT_EQ(scalar.proved, 12);
   EXPECT_EQ(pair.proved, 12);
+}
+
+// The real shot on a taut string (T = 1 N, EA = 4 N, L = 1 m, m = M = 1 kg/m), out of plane:
+// omega_n = n pi / sqrt(1.25), found with the slopes to 1e-11 in fewer shots than by Brent
+// (50 against 76).
+TEST(ShootingNewton, TautStringWithTheIntegratorsSlope) {
+  IntegratorSettings integration;
+  integration.relative_tolerance = 1e-12;
+  integration.absolute_tolerance = 1e-14;
+  ShootingIntegrator integrator(Plane::OutOfPlane, testing::horizontal_string(1.0, 1.0, 4.0),
+                                integration);
+  long with_newton = 0;
+  for (const bool newton : {true, false}) {
+    ShootingRootFinder finder([&](double w, double f) { return integrator.shoot(w, f); },
+                              settings(1e-12), 2.3, true);
+    if (newton) {
+      finder.set_slope_shots(
+          [&](double w, double f) { return integrator.shoot(w, f, nullptr, false, true); });
+    }
+    std::vector<std::string> warnings;
+    const std::vector<Root> roots = finder.find(12, warnings);
+    ASSERT_EQ(roots.size(), 12u);
+    for (int n = 1; n <= 12; ++n) {
+      const double exact = n * kPi / std::sqrt(1.25);
+      EXPECT_NEAR(roots[n - 1].omega, exact, 1e-11 * exact) << n << " newton " << newton;
+    }
+    EXPECT_EQ(finder.proved_count(), 12);
+    if (newton) {
+      with_newton = finder.shots();
+      // 50 here: 17 counting samples, 25 Newton shots, 8 estimate shots (4 roots from a tight
+      // first shot).
+      EXPECT_LE(with_newton, 54) << finder.tally().bracketing << " " << finder.tally().refining
+                                 << " " << finder.tally().estimate;
+    } else {
+      EXPECT_LT(with_newton, finder.shots()) << "brent " << finder.shots();
+    }
+  }
 }
 
 }  // namespace
