@@ -490,7 +490,7 @@ double ShootingRootFinder::model_step(const ModelPoint& current,
 std::optional<double> ShootingRootFinder::newton_error_bound(double step, double last_step,
                                                              double omega) const {
   // kSlopeMargin: the slope's own relative error, which leaves that fraction of the step.
-  constexpr double kSlopeMargin = 1e-3;
+  constexpr double kSlopeMargin = 1e-4;
   const double tolerance = settings_.root_tolerance * omega;
   if (step <= tolerance) return step;
   const double quadratic = step * step / last_step + kSlopeMargin * step;
