@@ -1,15 +1,17 @@
 #pragma once
 /// \file
 /// The root finder of the `shooting` solver (docs/methods/shooting.md): brackets each natural
-/// frequency by conjugate-point counts and refines it with Brent's method.
+/// frequency by conjugate-point counts and refines it by safeguarded Newton steps with the shot's
+/// frequency derivative (set_slope_shots; docs/methods/shooting.md, "Newton refinement"), or with
+/// Brent's method.
 ///
 /// Mode n is the root of the count-aware function h_n (count_function in
 /// shooting_conjugate_count.hpp), bracketed by any two samples with counts < n and >= n: the sign
 /// of h_n certifies the count, so no mode can be skipped. New samples inside a count bracket are
 /// placed by a phase-extrapolated guess or bisection. For a one-component problem (out of plane,
-/// or a straight inextensible cable) h_n is smooth across the eigenvalue and Brent works on it
-/// directly; in plane Brent works on the normalised end determinant, which changes sign exactly
-/// once inside a bracket whose counts are n - 1 and n. Several eigenvalues inside a bracket
+/// or a straight inextensible cable) h_n is smooth across the eigenvalue and the refinement works on it
+/// directly; in plane the refinement works on the normalised end determinant, which changes sign
+/// exactly once inside a bracket whose counts are n - 1 and n. Several eigenvalues inside a bracket
 /// narrower than the tolerance (an exactly double root, e.g. Irvine's cross-over) are returned
 /// as one root of that multiplicity.
 
