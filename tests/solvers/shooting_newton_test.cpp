@@ -27,7 +27,8 @@ using Phase = std::function<double(double)>;
 // of the normalised determinant and of the end angle (central differences of the closed form,
 // accurate to ~1e-9 relative: far beyond what Newton needs).
 template <int D>
-Shot string_shot(const Phase& p, const double (&rates)[D], double omega, bool with_slope, long& shots) {
+Shot string_shot(const Phase& p, const double (&rates)[D], double omega, bool with_slope,
+                 long& shots) {
   ++shots;
   auto frame = [&](double w, Shot& shot) {
     FrameBlock<D> Phi = FrameBlock<D>::Zero(), F = FrameBlock<D>::Zero();

@@ -380,7 +380,8 @@ struct StepCounts {
 
 // One CVODE instance with its vectors and linear algebra, for a state of `size` components.
 struct CvodeWorkspace {
-  CvodeWorkspace(SUNContext context, sunindextype size, const IntegratorSettings& s, bool fixed_point)
+  CvodeWorkspace(SUNContext context, sunindextype size, const IntegratorSettings& s,
+                 bool fixed_point)
       : y(size, context),
         scratch(size, context),
         matrix(SUNDenseMatrix(size, size, context)),
@@ -420,7 +421,8 @@ struct ShootingIntegrator::Impl {
   std::unique_ptr<CvodeWorkspace> make_workspace(bool slope) {
     const int block = 2 * dimension * dimension;
     const bool fixed_point = settings.fixed_point;
-    auto w = std::make_unique<CvodeWorkspace>(context.get(), slope ? 2 * block + 1 : block + 1, settings, fixed_point);
+    const sunindextype size = slope ? 2 * block + 1 : block + 1;
+    auto w = std::make_unique<CvodeWorkspace>(context.get(), size, settings, fixed_point);
     if (!w->ok()) throw ShootingFailure("could not allocate the SUNDIALS objects");
     void* mem = w->cvode.get();
     N_VConst(0.0, w->y.get());

@@ -202,7 +202,9 @@ ShootingRootFinder::Sample ShootingRootFinder::cached_shot(double omega, const S
 
 ShootingRootFinder::Sample ShootingRootFinder::to_sample(const Shot& shot) const {
   Sample sample{shot.count, shot.angle_min, shot.angle_max, shot.determinant};
-  if (shot.has_slope) sample.slope = scalar_ ? shot.angle_slope / (2.0 * kPi) : shot.determinant_slope;
+  if (shot.has_slope) {
+    sample.slope = scalar_ ? shot.angle_slope / (2.0 * kPi) : shot.determinant_slope;
+  }
   return sample;
 }
 
@@ -457,7 +459,8 @@ double ShootingRootFinder::normal_tolerance_root(int n, double lo, double hi, do
 // (h ~ h0 + atan((w - p) / gamma) / pi, its slope there hundreds of times that between the
 // modes), where Newton on h overshoots from either side; g is then a Moebius function of w.
 // Only within half a mode of the root: tan(pi h) vanishes at the neighbouring roots too (h = -+1).
-ShootingRootFinder::ModelPoint ShootingRootFinder::model_point(double x, double f, double slope) const {
+ShootingRootFinder::ModelPoint ShootingRootFinder::model_point(double x, double f,
+                                                               double slope) const {
   if (!scalar_ || std::abs(f) >= 0.5) return {x, f, slope, false};
   const double c = std::cos(kPi * f);
   return {x, std::tan(kPi * f), kPi * slope / (c * c), true};
@@ -522,7 +525,9 @@ Root ShootingRootFinder::newton_root(int n, double omega, double step, const Sam
     integration_error = std::abs(correction);
     // Within the sign bracket, whose samples prove the count on either side of the root.
     const double moved = omega + correction;
-    if (integration_error <= settings_.target * omega && moved > lo && moved < hi) root.omega = moved;
+    if (integration_error <= settings_.target * omega && moved > lo && moved < hi) {
+      root.omega = moved;
+    }
   }
   root.relative_error = (step + integration_error) / omega;
   root.relative_error = std::max(root.relative_error, settings_.estimate_floor);

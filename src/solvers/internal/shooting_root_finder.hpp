@@ -9,11 +9,11 @@
 /// shooting_conjugate_count.hpp), bracketed by any two samples with counts < n and >= n: the sign
 /// of h_n certifies the count, so no mode can be skipped. New samples inside a count bracket are
 /// placed by a phase-extrapolated guess or bisection. For a one-component problem (out of plane,
-/// or a straight inextensible cable) h_n is smooth across the eigenvalue and the refinement works on it
-/// directly; in plane the refinement works on the normalised end determinant, which changes sign
-/// exactly once inside a bracket whose counts are n - 1 and n. Several eigenvalues inside a bracket
-/// narrower than the tolerance (an exactly double root, e.g. Irvine's cross-over) are returned
-/// as one root of that multiplicity.
+/// or a straight inextensible cable) h_n is smooth across the eigenvalue and the refinement works
+/// on it directly; in plane it works on the normalised end determinant, which changes sign exactly
+/// once inside a bracket whose counts are n - 1 and n. Several eigenvalues inside a bracket
+/// narrower than the tolerance (an exactly double root, e.g. Irvine's cross-over) are returned as
+/// one root of that multiplicity.
 
 #include <functional>
 #include <limits>
@@ -85,7 +85,9 @@ class ShootingRootFinder {
   /// Shots that carry the frequency derivative (ShootingIntegrator::shoot with_slope): given,
   /// each root is refined by safeguarded Newton steps inside its sign bracket (refine_newton)
   /// instead of Brent's method.
-  void set_slope_shots(ShotFunction shoot_with_slope) { shoot_with_slope_ = std::move(shoot_with_slope); }
+  void set_slope_shots(ShotFunction shoot_with_slope) {
+    shoot_with_slope_ = std::move(shoot_with_slope);
+  }
 
   long shots() const { return shots_; }
   /// The count at the smallest sample above the top root (-1 when none).
