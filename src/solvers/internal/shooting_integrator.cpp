@@ -12,6 +12,7 @@
 #include <cmath>
 #include <complex>
 
+#include "solvers/internal/shooting_block_solver.hpp"
 #include "solvers/internal/shooting_conjugate_count.hpp"
 #include "solvers/internal/shooting_grounded.hpp"
 #include "solvers/internal/shooting_sundials_handles.hpp"
@@ -380,13 +381,16 @@ struct StepCounts {
 
 // One CVODE instance with its vectors and linear algebra, for a state of `size` components.
 struct CvodeWorkspace {
+  // `slope_block` > 0: the state [Y, phase, S] of a shot with the slope, Y and S of that many
+  // components, solved by blocks (shooting_block_solver.hpp).
   CvodeWorkspace(SUNContext context, sunindextype size, const IntegratorSettings& s,
-                 bool fixed_point)
+                 int slope_block)
       : y(size, context),
         scratch(size, context),
         matrix(SUNDenseMatrix(size, size, context)),
-        linear_solver(SUNLinSol_Dense(y.get(), matrix.get(), context)),
-        nonlinear_solver(fixed_point ? SUNNonlinSol_FixedPoint(y.get(), 0, context) : nullptr),
+        linear_solver(slope_block > 0 ? make_block_linear_solver(context, slope_block)
+                                      : SUNLinSol_Dense(y.get(), matrix.get(), context)),
+        nonlinear_solver(s.fixed_point ? SUNNonlinSol_FixedPoint(y.get(), 0, context) : nullptr),
         cvode(s.use_bdf ? CV_BDF : CV_ADAMS, context) {}
   bool ok() const {
     return y.ok() && scratch.ok() && matrix.ok() && linear_solver.ok() && cvode.ok();
@@ -422,7 +426,7 @@ struct ShootingIntegrator::Impl {
     const int block = 2 * dimension * dimension;
     const bool fixed_point = settings.fixed_point;
     const sunindextype size = slope ? 2 * block + 1 : block + 1;
-    auto w = std::make_unique<CvodeWorkspace>(context.get(), size, settings, fixed_point);
+    auto w = std::make_unique<CvodeWorkspace>(context.get(), size, settings, slope ? block : 0);
     if (!w->ok()) throw ShootingFailure("could not allocate the SUNDIALS objects");
     void* mem = w->cvode.get();
     N_VConst(0.0, w->y.get());
