@@ -61,7 +61,9 @@ const KnobTable<ShootingSolverOptions>& shooting_knobs() {
        real_knob("max_condition", &O::max_condition, Range::closed(2.0, 1e8),
                  "re-orthonormalise the principal pair when cond(Gram) exceeds this"),
        flag_knob("error_estimate", &O::error_estimate,
-                 "one extra shot per mode at 10x tighter tolerances")});
+                 "one extra shot per mode at 100x tighter tolerances"),
+       choice_knob("root_finder", &O::newton, {{"newton", true}, {"brent", false}},
+                   "refine each root by Newton with the shot's frequency derivative, or by Brent")});
   return table;
 }
 
@@ -207,6 +209,14 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
   ShootingRootFinder finder(
       [&integrator](double omega, double factor) { return integrator->shoot(omega, factor); },
       root_finder_settings(options_), guess, integration_plane == Plane::OutOfPlane);
+  // A general line keeps Brent: its shots restart CVODE at every break, where a shot with the
+  // slope pays its larger dense solve again, and there Newton's fewer shots cost more time
+  // (docs/methods/shooting.md, "Newton refinement").
+  if (options_.newton && !k_.is_line()) {
+    finder.set_slope_shots([&integrator](double omega, double factor) {
+      return integrator->shoot(omega, factor, nullptr, false, true);
+    });
+  }
   WorkMeter meter(context_, "shooting", std::string(to_string(plane)) + " modes", count);
   try {
     const std::vector<Root> roots = finder.find(count, summary.warnings, &meter);
@@ -280,8 +290,9 @@ void ShootingNumerics::finish_summary(const ShootingRootFinder& finder,
 SolverEntry make_shooting_entry() {
   return make_solver_entry(
       "exact linear boundary-value solution: principal solutions integrated with SUNDIALS CVODE, "
-      "modes counted by conjugate points (Morse index) and refined by Brent's method on a "
-      "count-aware phase function; any sag, inclination, EA (inf exact), added mass",
+      "modes counted by conjugate points (Morse index) and refined by safeguarded Newton steps "
+      "with the frequency derivative of the shot (Brent's method as fallback) on a count-aware "
+      "phase function; any sag, inclination, EA (inf exact), added mass",
       shooting_knobs(), [](const SolveContext& context, const ShootingSolverOptions& options) {
         return std::make_unique<ShootingNumerics>(context, options);
       });

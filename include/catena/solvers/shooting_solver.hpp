@@ -26,9 +26,11 @@
 /// smallest with count n (new samples by a phase-extrapolated guess or bisection). Inside such a
 /// certified bracket det Phi(L) / sqrt(det(Phi^T Phi + F^T F)) -- a smooth function of w in
 /// [-1, 1], invariant under the re-orthonormalisation below -- changes sign exactly once, and
-/// Brent's method refines the root to `root_tolerance`. Out of plane the continuous count
+/// the root is refined to `root_tolerance` by safeguarded Newton steps, each shot carrying the
+/// frequency derivative from the variational equation (Brent's method where a step leaves the
+/// bracket or does not shrink, or with `root_finder = "brent"`). Out of plane the continuous count
 /// N + (angle - pi)/(2 pi) (Pruefer) is itself smooth and equals n at the n-th eigenvalue, so
-/// Brent works on it directly from any count bracket. Several eigenvalues inside a bracket
+/// the refinement works on it directly from any count bracket. Several eigenvalues inside a bracket
 /// narrower than the tolerance (an exactly double root, e.g. Irvine's cross-over, where the count
 /// jumps by 2) are returned as that many modes at the same frequency; roots closer than
 /// 1000 rtol share a joint null space for their shapes, mass-orthogonalised.
@@ -82,7 +84,7 @@ enum class ShootingMethod {
 std::string to_string(ShootingMethod method);
 
 /// Options of the shooting solver. Scene knobs: `rtol`, `atol`, `root_tolerance`, `method`,
-/// `nonlinear_solver`, `max_steps`, `max_condition`, `error_estimate`.
+/// `nonlinear_solver`, `max_steps`, `max_condition`, `error_estimate`, `root_finder`.
 struct ShootingSolverOptions {
   /// CVODE relative tolerance [-] (knob `rtol`). In [1e-14, 1e-2].
   double relative_tolerance = 1e-10;
@@ -110,6 +112,12 @@ struct ShootingSolverOptions {
   /// Estimate each frequency's integration error by one extra shot at 10x tighter tolerances
   /// (knob `error_estimate`). When false the estimate is the root bracket plus 10 rtol.
   bool error_estimate = true;
+  /// Root refinement (knob `root_finder` = "newton" | "brent"): safeguarded Newton steps with
+  /// the frequency derivative carried by the shot (the variational equation; Brent's method takes
+  /// over where a step leaves the sign bracket or does not shrink), or Brent's method alone. A
+  /// general line (several segments or point attachments) and a line starting on the seabed are
+  /// refined by Brent either way (measured cheaper there: docs/methods/shooting.md).
+  bool newton = true;
 
   /// absolute_tolerance with the default applied.
   double effective_absolute_tolerance() const;

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <complex>
 
+#include "solvers/internal/shooting_block_solver.hpp"
 #include "solvers/internal/shooting_conjugate_count.hpp"
 #include "solvers/internal/shooting_grounded.hpp"
 #include "solvers/internal/shooting_sundials_handles.hpp"
@@ -41,7 +42,33 @@ struct RhsData {
   Eigen::Matrix2d to_axial_force = Eigen::Matrix2d::Identity();
   // The piece being integrated (a general line restarts CVODE at every break).
   std::size_t piece = 0;
+  // A shot with the frequency derivative carries S = slope_scale w dY/dw after Y and the phase
+  // (header, "Frequency derivative").
+  double slope_scale = 0.0;
+  // The tolerances of the current shot (slope_error_weights).
+  double rtol = 1e-10;
+  double atol = 1e-12;
+  double atol_phase = 1e-6;
 };
+
+// CVODE's error weights for a shot with the slope: those of the plain shot for Y and the phase,
+// none for S, and the weights scaled by sqrt(N / N_plain) so that the root-mean-square norm over
+// all N components equals the plain shot's over its own. The steps are then chosen for Y and the
+// phase exactly as without the slope: S, integrated with the same steps (the variational equation
+// is linear, so the corrector solves it exactly), is as accurate as Y, and Y as accurate as in a
+// plain shot. (Weighted in the norm, S added components of small error that let Y's error grow:
+// on gale-b-5-sag0.90 the first out-of-plane root moved by 3.3e-10 against 2.5e-11 plain.)
+int slope_error_weights(N_Vector y, N_Vector weights, void* user_data) {
+  const auto& data = *static_cast<const RhsData*>(user_data);
+  const double* state = N_VGetArrayPointer(y);
+  double* w = N_VGetArrayPointer(weights);
+  const int block = 2 * data.dimension * data.dimension;
+  const double dilution = std::sqrt((2.0 * block + 1.0) / (block + 1.0));
+  for (int i = 0; i < block; ++i) w[i] = dilution / (data.rtol * std::abs(state[i]) + data.atol);
+  w[block] = dilution / (data.rtol * std::abs(state[block]) + data.atol_phase);
+  for (int i = block + 1; i <= 2 * block; ++i) w[i] = 0.0;
+  return 0;
+}
 
 // A break of a general line in the order of integration: a joint or a point attachment, where
 // CVODE is restarted on the next piece (and the internal force jumps at a point).
@@ -146,7 +173,8 @@ void subtract_foundation(const RhsData& data, const ShootingPiece& p, Square<D>&
 // B and C of the scaled system at x (see the header). From b the variable is x' = 1 - s/L and the
 // force is carried as -F^, which leaves the equations unchanged.
 template <int D>
-void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C) {
+void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C,
+                     Square<D>* inertia = nullptr) {
   const ShootingCoefficients& k = data.coefficients;
   const ShootingPiece& p = k.pieces[data.piece];
   const double s = k.length_m * (data.from_b ? 1.0 - x : x);
@@ -170,16 +198,23 @@ void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C) 
     C = (data.omega2 / data.kappa2) *
         (mass_ratio * tq * tq.transpose() + (p.M / k.M) * nq * nq.transpose());
   }
+  if (inertia) *inertia = C;
   if (p.grounded) subtract_foundation<D>(data, p, C);
 }
 
-template <int D>
+// Y' = A Y with A = [0 B; -C 0], the phase, and for a shot with the slope S' = A S - 2 c [0; Ci Phi]
+// (Ci the inertia part of C, c the slope scale): the derivative of Y' = A Y with respect to
+// log w, as C's inertia part is proportional to w^2 and nothing else depends on w (the balancing
+// kappa is held at its value for the shot).
+template <int D, bool Slope>
 int rhs(double x, N_Vector y, N_Vector ydot, void* user_data) {
   const auto& data = *static_cast<const RhsData*>(user_data);
-  Eigen::Map<const Basis<D>> Y(N_VGetArrayPointer(y));
-  Eigen::Map<Basis<D>> dY(N_VGetArrayPointer(ydot));
-  Square<D> B, C;
-  coefficients_at<D>(data, x, B, C);
+  double* state = N_VGetArrayPointer(y);
+  double* derivative = N_VGetArrayPointer(ydot);
+  Eigen::Map<const Basis<D>> Y(state);
+  Eigen::Map<Basis<D>> dY(derivative);
+  Square<D> B, C, inertia;
+  coefficients_at<D>(data, x, B, C, Slope ? &inertia : nullptr);
   const auto Phi = Y.template topRows<D>();
   const auto F = Y.template bottomRows<D>();
   dY.template topRows<D>() = B * F;
@@ -187,25 +222,39 @@ int rhs(double x, N_Vector y, N_Vector ydot, void* user_data) {
   // Phase theta = arg det(Phi + i F); its derivative is -tr(G^{-1} N) (header).
   const Square<D> G = Phi.transpose() * Phi + F.transpose() * F;
   const Square<D> N = Phi.transpose() * C * Phi + F.transpose() * B * F;
-  N_VGetArrayPointer(ydot)[2 * D * D] = -(G.inverse() * N).trace();
+  derivative[2 * D * D] = -(G.inverse() * N).trace();
+  if constexpr (Slope) {
+    Eigen::Map<const Basis<D>> S(state + 2 * D * D + 1);
+    Eigen::Map<Basis<D>> dS(derivative + 2 * D * D + 1);
+    dS.template topRows<D>() = B * S.template bottomRows<D>();
+    dS.template bottomRows<D>() =
+        -C * S.template topRows<D>() - (2.0 * data.slope_scale) * inertia * Phi;
+  }
   return 0;
 }
 
 // Analytic Jacobian of the linear part; the phase row is left zero (the phase feeds back into
 // nothing, so the modified Newton iteration still converges for it).
-template <int D>
+template <int D, bool Slope>
 int jacobian(
     double x, N_Vector, N_Vector, SUNMatrix J, void* user_data, N_Vector, N_Vector, N_Vector) {
   const auto& data = *static_cast<const RhsData*>(user_data);
-  Square<D> B, C;
-  coefficients_at<D>(data, x, B, C);
+  Square<D> B, C, inertia;
+  coefficients_at<D>(data, x, B, C, &inertia);
   SUNMatZero(J);
+  const int slope_base = 2 * D * D + 1;
   for (int column = 0; column < D; ++column) {
     const int base = 2 * D * column;
     for (int r = 0; r < D; ++r) {
       for (int k = 0; k < D; ++k) {
         SM_ELEMENT_D(J, base + r, base + D + k) = B(r, k);
         SM_ELEMENT_D(J, base + D + r, base + k) = -C(r, k);
+        if constexpr (Slope) {
+          const int sb = slope_base + base;
+          SM_ELEMENT_D(J, sb + r, sb + D + k) = B(r, k);
+          SM_ELEMENT_D(J, sb + D + r, sb + k) = -C(r, k);
+          SM_ELEMENT_D(J, sb + D + r, base + k) = -2.0 * data.slope_scale * inertia(r, k);
+        }
       }
     }
   }
@@ -330,46 +379,75 @@ struct StepCounts {
 
 }  // namespace
 
+// One CVODE instance with its vectors and linear algebra, for a state of `size` components.
+struct CvodeWorkspace {
+  // `slope_block` > 0: the state [Y, phase, S] of a shot with the slope, Y and S of that many
+  // components, solved by blocks (shooting_block_solver.hpp).
+  CvodeWorkspace(SUNContext context, sunindextype size, const IntegratorSettings& s,
+                 int slope_block)
+      : y(size, context),
+        scratch(size, context),
+        matrix(SUNDenseMatrix(size, size, context)),
+        linear_solver(slope_block > 0 ? make_block_linear_solver(context, slope_block)
+                                      : SUNLinSol_Dense(y.get(), matrix.get(), context)),
+        nonlinear_solver(s.fixed_point ? SUNNonlinSol_FixedPoint(y.get(), 0, context) : nullptr),
+        cvode(s.use_bdf ? CV_BDF : CV_ADAMS, context) {}
+  bool ok() const {
+    return y.ok() && scratch.ok() && matrix.ok() && linear_solver.ok() && cvode.ok();
+  }
+
+  SerialVector y;
+  SerialVector scratch;
+  SundialsMatrix matrix;
+  SundialsLinearSolver linear_solver;
+  SundialsNonlinearSolver nonlinear_solver;
+  CvodeMemory cvode;
+};
+
 struct ShootingIntegrator::Impl {
   Impl(Plane plane, const ShootingCoefficients& coefficients, const IntegratorSettings& s)
-      : settings(s),
-        dimension(plane == Plane::InPlane ? 2 : 1),
-        state_size(2 * dimension * dimension + 1),
-        y(state_size, context.get()),
-        scratch(state_size, context.get()),
-        matrix(SUNDenseMatrix(state_size, state_size, context.get())),
-        linear_solver(SUNLinSol_Dense(y.get(), matrix.get(), context.get())),
-        nonlinear_solver(s.fixed_point ? SUNNonlinSol_FixedPoint(y.get(), 0, context.get())
-                                       : nullptr),
-        cvode(s.use_bdf ? CV_BDF : CV_ADAMS, context.get()) {
+      : settings(s), dimension(plane == Plane::InPlane ? 2 : 1) {
     data.coefficients = coefficients;
     data.coefficients.pieces = coefficients.all_pieces();
     data.dimension = dimension;
     if (dimension == 2) set_axial_frame(data.coefficients, data);
-    if (!context.ok() || !y.ok() || !scratch.ok() || !matrix.ok() || !linear_solver.ok() ||
-        !cvode.ok()) {
-      throw ShootingFailure("could not allocate the SUNDIALS objects");
-    }
-    N_VConst(0.0, y.get());
-    check(CVodeInit(cvode.get(), dimension == 2 ? rhs<2> : rhs<1>, 0.0, y.get()), "CVodeInit");
-    check(CVodeSetUserData(cvode.get(), &data), "CVodeSetUserData");
-    if (settings.fixed_point) {
-      // Functional iteration (no Jacobian, no linear solve): the system is not stiff.
-      if (!nonlinear_solver.get())
-        throw ShootingFailure("could not allocate SUNNonlinSol_FixedPoint");
-      check(CVodeSetNonlinearSolver(cvode.get(), nonlinear_solver.get()),
-            "CVodeSetNonlinearSolver");
-    } else {
-      check(CVodeSetLinearSolver(cvode.get(), linear_solver.get(), matrix.get()),
-            "CVodeSetLinearSolver");
-      check(CVodeSetJacFn(cvode.get(), dimension == 2 ? jacobian<2> : jacobian<1>),
-            "CVodeSetJacFn");
-    }
-    check(CVodeSetMaxNumSteps(cvode.get(), settings.max_steps), "CVodeSetMaxNumSteps");
+    if (!context.ok()) throw ShootingFailure("could not allocate the SUNDIALS objects");
+    plain = make_workspace(false);
+    ws = plain.get();
     const std::size_t run = grounded_run_length(data.coefficients, dimension);
     if (run > 0) {
       grounded = std::make_unique<GroundedRun>(data.coefficients, dimension, run, settings.max_steps);
     }
+  }
+
+  // The workspace of the plain shot (Y and the phase) or of the shot with the frequency
+  // derivative (Y, the phase and the scaled derivative of Y: header, "Frequency derivative").
+  std::unique_ptr<CvodeWorkspace> make_workspace(bool slope) {
+    const int block = 2 * dimension * dimension;
+    const bool fixed_point = settings.fixed_point;
+    const sunindextype size = slope ? 2 * block + 1 : block + 1;
+    auto w = std::make_unique<CvodeWorkspace>(context.get(), size, settings, slope ? block : 0);
+    if (!w->ok()) throw ShootingFailure("could not allocate the SUNDIALS objects");
+    void* mem = w->cvode.get();
+    N_VConst(0.0, w->y.get());
+    CVRhsFn f = dimension == 2 ? (slope ? rhs<2, true> : rhs<2, false>)
+                               : (slope ? rhs<1, true> : rhs<1, false>);
+    CVLsJacFn jac = dimension == 2 ? (slope ? jacobian<2, true> : jacobian<2, false>)
+                                   : (slope ? jacobian<1, true> : jacobian<1, false>);
+    check(CVodeInit(mem, f, 0.0, w->y.get()), "CVodeInit");
+    check(CVodeSetUserData(mem, &data), "CVodeSetUserData");
+    if (fixed_point) {
+      // Functional iteration (no Jacobian, no linear solve): the system is not stiff.
+      if (!w->nonlinear_solver.get())
+        throw ShootingFailure("could not allocate SUNNonlinSol_FixedPoint");
+      check(CVodeSetNonlinearSolver(mem, w->nonlinear_solver.get()), "CVodeSetNonlinearSolver");
+    } else {
+      check(CVodeSetLinearSolver(mem, w->linear_solver.get(), w->matrix.get()),
+            "CVodeSetLinearSolver");
+      check(CVodeSetJacFn(mem, jac), "CVodeSetJacFn");
+    }
+    check(CVodeSetMaxNumSteps(mem, settings.max_steps), "CVodeSetMaxNumSteps");
+    return w;
   }
 
   void check(int flag, const char* call, double x = 0.0) const {
@@ -383,9 +461,10 @@ struct ShootingIntegrator::Impl {
   Shot shoot(double omega,
              double tolerance_factor,
              const std::vector<double>* stations,
-             bool from_b);
+             bool from_b,
+             bool slope);
   template <int D>
-  void begin_shot(double omega, double tolerance_factor, bool from_b);
+  void begin_shot(double omega, double tolerance_factor, bool from_b, bool slope);
   template <int D>
   void integrate(Shot& shot, StationRecorder<D>& recorder, bool from_b);
   template <int D>
@@ -394,6 +473,8 @@ struct ShootingIntegrator::Impl {
   void restart(Shot& shot, double x, StepCounts& finished);
   template <int D>
   void finish_shot(Shot& shot);
+  template <int D>
+  void set_slopes(Shot& shot, const Square<D>& Phi, const Square<D>& F) const;
   template <int D>
   void cross_break(double x, StepCounts& finished);
   template <int D>
@@ -405,21 +486,18 @@ struct ShootingIntegrator::Impl {
 
   IntegratorSettings settings;
   int dimension;
-  sunindextype state_size;
-  // Declaration order = construction order; destruction runs in reverse (cvode first).
+  // Declaration order = construction order; destruction runs in reverse (workspaces first).
   SundialsContext context;
-  SerialVector y;
-  SerialVector scratch;
-  SundialsMatrix matrix;
-  SundialsLinearSolver linear_solver;
-  SundialsNonlinearSolver nonlinear_solver;
-  CvodeMemory cvode;
+  std::unique_ptr<CvodeWorkspace> plain;
+  std::unique_ptr<CvodeWorkspace> with_slope;  // made at the first shot that asks for the slope
+  CvodeWorkspace* ws = nullptr;                // the workspace of the current shot
   RhsData data;
   std::vector<Break> breaks;  // of the current shot, in the order of integration
   std::size_t next_break = 0;
   // The seabed part of a shot from A (shooting_grounded.hpp); null when the line starts off it.
   std::unique_ptr<GroundedRun> grounded;
   bool grounded_shot = false;  // this shot starts with the grounded run
+  bool slope_shot = false;     // this shot carries the frequency derivative
   long total_steps = 0;
   long total_rhs = 0;
   long total_reorthonormalisations = 0;
@@ -429,35 +507,52 @@ struct ShootingIntegrator::Impl {
 // Sets the frequency and the balancing, starts the principal solutions at Phi = 0, F = I and
 // re-initialises CVODE with the tolerances scaled by `tolerance_factor`.
 template <int D>
-void ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor, bool from_b) {
+void ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor, bool from_b,
+                                          bool slope) {
+  grounded_shot = grounded && !from_b;
+  // The slope is carried on the general shot only (not through the grounded run), and only where
+  // it is defined (w > 0) and asked for without stations.
+  slope_shot = slope && !grounded_shot && omega > 0.0;
+  if (slope_shot && !with_slope) with_slope = make_workspace(true);
+  ws = slope_shot ? with_slope.get() : plain.get();
   data.omega2 = data.coefficients.scaled_omega2(omega);
   data.kappa2 = settings.balance ? std::max(std::sqrt(data.omega2), 1.0) : 1.0;
   data.from_b = from_b;
   data.piece = from_b ? data.coefficients.pieces.size() - 1 : 0;
   breaks = breaks_of(data.coefficients, from_b);
   next_break = 0;
-  double* state = y.data();
+  double* state = ws->y.data();
   Eigen::Map<Basis<D>> Y(state);
   Y.setZero();
   Y.template bottomRows<D>().setIdentity();
   state[2 * D * D] = initial_phase(D);
-  void* mem = cvode.get();
   const double rtol = settings.relative_tolerance * tolerance_factor;
   const double atol = settings.absolute_tolerance * tolerance_factor;
-  grounded_shot = grounded && !from_b;
+  if (slope_shot) {
+    Eigen::Map<Basis<D>>(state + 2 * D * D + 1).setZero();
+    data.slope_scale = std::max(atol, 1e-3 * rtol) / (kSlopeAccuracy * data.kappa2);
+  }
+  void* mem = ws->cvode.get();
   if (grounded_shot) {
     // The grounded run's columns start as F^ = I in the physical variables: in the carried ones
     // F~ = Q / kappa (det > 0, so the sign of det Phi and the phase are those of F~ = I).
     Y.template bottomRows<D>() = to_carried<D>(Basis<D>(Y), data).template bottomRows<D>();
     grounded->begin(data.omega2, rtol, atol);
   }
-  check(CVodeReInit(mem, 0.0, y.get()), "CVodeReInit");
+  check(CVodeReInit(mem, 0.0, ws->y.get()), "CVodeReInit");
   // The phase only has to be right to well within pi (it fixes the winding; the fractional part
   // comes from arg det Z at the end), so its absolute tolerance is looser: 1e-6 rad per step.
   // Tight control of it cost ~20% more steps for nothing.
-  N_VConst(atol, scratch.get());
-  scratch.data()[2 * D * D] = std::max(atol, 1e-6);
-  check(CVodeSVtolerances(mem, rtol, scratch.get()), "CVodeSVtolerances");
+  data.rtol = rtol;
+  data.atol = atol;
+  data.atol_phase = std::max(atol, 1e-6);
+  if (slope_shot) {
+    check(CVodeWFtolerances(mem, slope_error_weights), "CVodeWFtolerances");
+  } else {
+    N_VConst(atol, ws->scratch.get());
+    ws->scratch.data()[2 * D * D] = data.atol_phase;
+    check(CVodeSVtolerances(mem, rtol, ws->scratch.get()), "CVodeSVtolerances");
+  }
   check(CVodeSetStopTime(mem, stop_time()), "CVodeSetStopTime");
 }
 
@@ -467,18 +562,18 @@ void ShootingIntegrator::Impl::record_passed_stations(StationRecorder<D>& record
   while (recorder.next_at_or_before(x) && !(before_x_only && recorder.next_station() >= x)) {
     const double xs = recorder.next_station();
     if (xs >= x) {
-      recorder.record(Eigen::Map<const Basis<D>>(y.data()));
+      recorder.record(Eigen::Map<const Basis<D>>(ws->y.data()));
     } else {
-      check(CVodeGetDky(cvode.get(), xs, 0, scratch.get()), "CVodeGetDky", xs);
-      recorder.record(Eigen::Map<const Basis<D>>(scratch.data()));
+      check(CVodeGetDky(ws->cvode.get(), xs, 0, ws->scratch.get()), "CVodeGetDky", xs);
+      recorder.record(Eigen::Map<const Basis<D>>(ws->scratch.data()));
     }
   }
 }
 
 void ShootingIntegrator::Impl::add_segment_counts(StepCounts& counts) const {
   long steps = 0, evaluations = 0;
-  CVodeGetNumSteps(cvode.get(), &steps);
-  CVodeGetNumRhsEvals(cvode.get(), &evaluations);
+  CVodeGetNumSteps(ws->cvode.get(), &steps);
+  CVodeGetNumRhsEvals(ws->cvode.get(), &evaluations);
   counts.steps += steps;
   counts.rhs += evaluations;
 }
@@ -486,13 +581,19 @@ void ShootingIntegrator::Impl::add_segment_counts(StepCounts& counts) const {
 // Re-orthonormalises the basis at x, keeps R, and restarts CVODE there.
 template <int D>
 void ShootingIntegrator::Impl::restart(Shot& shot, double x, StepCounts& finished) {
-  Eigen::Map<Basis<D>> Y(y.data());
+  Eigen::Map<Basis<D>> Y(ws->y.data());
   const Square<D> R = orthonormalise<D>(Y, x);
+  if (slope_shot) {
+    // The slope of Y R0^{-1} for the constant R0 = R: the normalised determinant and the angles
+    // are those of Y, so their slopes are too.
+    Eigen::Map<Basis<D>> S(ws->y.data() + 2 * D * D + 1);
+    S = (S * R.inverse()).eval();
+  }
   shot.log_growth += R.diagonal().array().log().sum();
   shot.segment_r.emplace_back(R);
   add_segment_counts(finished);
-  check(CVodeReInit(cvode.get(), x, y.get()), "CVodeReInit", x);
-  check(CVodeSetStopTime(cvode.get(), stop_time()), "CVodeSetStopTime");
+  check(CVodeReInit(ws->cvode.get(), x, ws->y.get()), "CVodeReInit", x);
+  check(CVodeSetStopTime(ws->cvode.get(), stop_time()), "CVodeSetStopTime");
 }
 
 // A break of a general line reached at x: the next piece's coefficients, the point's jump of the
@@ -502,13 +603,19 @@ void ShootingIntegrator::Impl::cross_break(double x, StepCounts& finished) {
   const Break& b = breaks[next_break++];
   data.piece = b.next_piece;
   if (b.point >= 0) {
-    Eigen::Map<Basis<D>> Y(y.data());
+    Eigen::Map<Basis<D>> Y(ws->y.data());
     const Square<D> K = point_jump<D>(data, data.coefficients.points[static_cast<std::size_t>(b.point)]);
-    y.data()[2 * D * D] += apply_jump<D>(Y, K);
+    if (slope_shot) {
+      // K is proportional to w^2: S_F -> S_F - K S_Phi - 2 c K Phi (Phi is continuous).
+      Eigen::Map<Basis<D>> S(ws->y.data() + 2 * D * D + 1);
+      S.template bottomRows<D>() -= K * S.template topRows<D>() +
+                                    (2.0 * data.slope_scale) * K * Y.template topRows<D>();
+    }
+    ws->y.data()[2 * D * D] += apply_jump<D>(Y, K);
   }
   add_segment_counts(finished);
-  check(CVodeReInit(cvode.get(), x, y.get()), "CVodeReInit", x);
-  check(CVodeSetStopTime(cvode.get(), stop_time()), "CVodeSetStopTime");
+  check(CVodeReInit(ws->cvode.get(), x, ws->y.get()), "CVodeReInit", x);
+  check(CVodeSetStopTime(ws->cvode.get(), stop_time()), "CVodeSetStopTime");
 }
 
 // The grounded run's frame as the carried state: the growth since the last R factor goes into
@@ -533,7 +640,7 @@ void ShootingIntegrator::Impl::set_grounded_state(const GroundedFrame& frame, Sh
     physical(j, j) = frame.phi(j);
     physical(D + j, j) = frame.force(j);
   }
-  Eigen::Map<Basis<D>> Y(y.data());
+  Eigen::Map<Basis<D>> Y(ws->y.data());
   Y = to_carried<D>(physical, data);
   const Square<D> Phi = Y.template topRows<D>(), F = Y.template bottomRows<D>();
   // The count formula fixes the phase only modulo pi (the unitary angles give 2 theta): the phase
@@ -545,7 +652,7 @@ void ShootingIntegrator::Impl::set_grounded_state(const GroundedFrame& frame, Sh
   // seabed, mode 5: estimate 7e-2 for a root right to 1e-13).
   const double from_count = kPi * (D - frame.count) - 0.5 * unitary_angles<D>(Phi, F).sum();
   const double modulo = frame_phase<D>(Phi, F);
-  y.data()[2 * D * D] = modulo + 2.0 * kPi * std::round((from_count - modulo) / (2.0 * kPi));
+  ws->y.data()[2 * D * D] = modulo + 2.0 * kPi * std::round((from_count - modulo) / (2.0 * kPi));
 }
 
 // The grounded run from x = 0 to its end, recording the stations on it; CVODE restarted there
@@ -555,7 +662,7 @@ double ShootingIntegrator::Impl::shoot_grounded(Shot& shot, StationRecorder<D>& 
                                                 StepCounts& finished) {
   const double end = grounded->end_x();
   Eigen::VectorXd pushed = Eigen::VectorXd::Zero(D);
-  const Eigen::Map<const Basis<D>> Y(y.data());
+  const Eigen::Map<const Basis<D>> Y(ws->y.data());
   while (recorder.next_at_or_before(end)) {
     set_grounded_state<D>(grounded->advance_to(recorder.next_station()), shot, pushed);
     recorder.record(Y);
@@ -566,20 +673,20 @@ double ShootingIntegrator::Impl::shoot_grounded(Shot& shot, StationRecorder<D>& 
   next_break = grounded->pieces();
   if (end >= 1.0) return 1.0;
   data.piece = next_break;
-  check(CVodeReInit(cvode.get(), end, y.get()), "CVodeReInit", end);
-  check(CVodeSetStopTime(cvode.get(), stop_time()), "CVodeSetStopTime", end);
+  check(CVodeReInit(ws->cvode.get(), end, ws->y.get()), "CVodeReInit", end);
+  check(CVodeSetStopTime(ws->cvode.get(), stop_time()), "CVodeSetStopTime", end);
   return end;
 }
 
 // CVODE one step at a time from x = 0 to 1, recording stations and guarding independence.
 template <int D>
 void ShootingIntegrator::Impl::integrate(Shot& shot, StationRecorder<D>& recorder, bool from_b) {
-  const Eigen::Map<const Basis<D>> Y(y.data());
+  const Eigen::Map<const Basis<D>> Y(ws->y.data());
   StepCounts finished;
   long steps_total = 0;
   double x = grounded_shot ? shoot_grounded<D>(shot, recorder, finished) : 0.0;
   while (x < 1.0) {
-    const int flag = CVode(cvode.get(), stop_time(), y.get(), &x, CV_ONE_STEP);
+    const int flag = CVode(ws->cvode.get(), stop_time(), ws->y.get(), &x, CV_ONE_STEP);
     check(flag, "CVode", from_b ? 1.0 - x : x);
     if (++steps_total > settings.max_steps) {
       throw ShootingFailure(fmt::format("more than {} CVODE steps (max_steps) at s/L = {:.6g}",
@@ -602,7 +709,7 @@ void ShootingIntegrator::Impl::integrate(Shot& shot, StationRecorder<D>& recorde
 // The unscaled end basis, the count and the determinant of the shot, and the running totals.
 template <int D>
 void ShootingIntegrator::Impl::finish_shot(Shot& shot) {
-  const double* state = y.data();
+  const double* state = ws->y.data();
   const Eigen::Map<const Basis<D>> Y(state);
   shot.y_end = to_physical<D>(Y, data);
   // Count and determinant use the carried (Hamiltonian-form) basis Y.
@@ -614,22 +721,57 @@ void ShootingIntegrator::Impl::finish_shot(Shot& shot) {
   shot.count = count.count;
   shot.angle_min = count.angle_min;
   shot.angle_max = count.angle_max;
+  if (slope_shot) set_slopes<D>(shot, Phi, F);
   total_steps += shot.steps;
   total_rhs += shot.rhs_evaluations;
   total_reorthonormalisations += static_cast<long>(shot.segment_r.size());
   max_log_growth = std::max(max_log_growth, shot.log_growth);
 }
 
+// The frequency derivatives of the normalised end determinant h = det Phi / sqrt(det G) and of
+// the end angle (D = 1: -2 arg(Phi + i F)) from the carried slope S = c w dY/dw and the balancing's
+// own change with w (the start F~ = I is a right factor, which changes neither h nor the angle):
+//   dh = [tr(adj(Phi) dPhi) - h sqrt(det G) tr(G^{-1} dG) / 2] / sqrt(det G),
+//   dG = dPhi^T Phi + Phi^T dPhi + dF^T F + F^T dF,   d angle = -2 (Phi dF - F dPhi) / (Phi^2 + F^2).
+template <int D>
+void ShootingIntegrator::Impl::set_slopes(Shot& shot, const Square<D>& Phi, const Square<D>& F) const {
+  const Eigen::Map<const Basis<D>> S(ws->y.data() + 2 * D * D + 1);
+  const double to_slope = 1.0 / (data.slope_scale * shot.omega_rad_s);  // S -> dY/dw
+  // The balancing kappa^2 = max(Omega, 1) moves with w as well (kappa ~ sqrt(w) above 1): the
+  // carried Phi~ = kappa Phi^ and F~ = F^ / kappa gain +-(dkappa/dw / kappa) = +-1/(2 w) of
+  // themselves, so that the slopes are those of the function the shots evaluate.
+  const double balance_rate = data.kappa2 > 1.0 ? 0.5 / shot.omega_rad_s : 0.0;
+  const Square<D> dPhi = to_slope * S.template topRows<D>() + balance_rate * Phi;
+  const Square<D> dF = to_slope * S.template bottomRows<D>() - balance_rate * F;
+  const Square<D> G = Phi.transpose() * Phi + F.transpose() * F;
+  const Square<D> dG = dPhi.transpose() * Phi + Phi.transpose() * dPhi + dF.transpose() * F +
+                       F.transpose() * dF;
+  Square<D> adjugate;
+  if constexpr (D == 1) {
+    adjugate(0, 0) = 1.0;
+  } else {
+    adjugate << Phi(1, 1), -Phi(0, 1), -Phi(1, 0), Phi(0, 0);
+  }
+  const double root_det_g = std::sqrt(G.determinant());
+  shot.has_slope = true;
+  shot.determinant_slope = (adjugate * dPhi).trace() / root_det_g -
+                           0.5 * shot.determinant * (G.inverse() * dG).trace();
+  if constexpr (D == 1) {
+    shot.angle_slope = -2.0 * (Phi(0, 0) * dF(0, 0) - F(0, 0) * dPhi(0, 0)) / G(0, 0);
+  }
+}
+
 template <int D>
 Shot ShootingIntegrator::Impl::shoot(double omega,
                                      double tolerance_factor,
                                      const std::vector<double>* stations,
-                                     bool from_b) {
+                                     bool from_b,
+                                     bool slope) {
   Shot shot;
   shot.omega_rad_s = omega;
-  begin_shot<D>(omega, tolerance_factor, from_b);
+  begin_shot<D>(omega, tolerance_factor, from_b, slope);
   StationRecorder<D> recorder(shot, stations, data);
-  const Eigen::Map<const Basis<D>> Y(y.data());
+  const Eigen::Map<const Basis<D>> Y(ws->y.data());
   while (recorder.next_at_or_before(0.0)) recorder.record(Y);
   integrate<D>(shot, recorder, from_b);
   recorder.record_rest(Y);
@@ -646,10 +788,11 @@ ShootingIntegrator::~ShootingIntegrator() = default;
 Shot ShootingIntegrator::shoot(double omega_rad_s,
                                double tolerance_factor,
                                const std::vector<double>* stations_x,
-                               bool from_b) {
+                               bool from_b,
+                               bool with_slope) {
   if (impl_->dimension == 2)
-    return impl_->shoot<2>(omega_rad_s, tolerance_factor, stations_x, from_b);
-  return impl_->shoot<1>(omega_rad_s, tolerance_factor, stations_x, from_b);
+    return impl_->shoot<2>(omega_rad_s, tolerance_factor, stations_x, from_b, with_slope);
+  return impl_->shoot<1>(omega_rad_s, tolerance_factor, stations_x, from_b, with_slope);
 }
 
 double axial_stretch(double axial_compliance, double tangent_spread) {

@@ -37,6 +37,17 @@
 /// diagonal R factors, and the general shot takes over at the touchdown point with the phase set
 /// from the grounded count.
 ///
+/// Frequency derivative. A shot may also carry S = c w dY/dw (the variational equation): w enters
+/// the carried system only through the inertia part Ci of C (proportional to w^2, the balancing
+/// kappa held at the shot's value) and the point jumps K (also ~ w^2), so S' = A S - 2 c [0; Ci Phi],
+/// S(0) = 0, S_F -> S_F - K S_Phi - 2 c K Phi at a point, S -> S R^{-1} at a re-orthonormalisation.
+/// The scale c = atol / (kSlopeAccuracy kappa^2) keeps S near atol / kSlopeAccuracy, so that CVODE
+/// controls it to about kSlopeAccuracy relative (enough for Newton's step) and it does not shorten
+/// the steps of Y. The slopes of the normalised end determinant and of the end angle follow from
+/// S at the end, with the change of kappa itself (kappa ~ sqrt(w) where Omega > 1): they are the
+/// total derivatives of the values the shots return. Not carried through the grounded run (its
+/// shots come without a slope).
+///
 /// Balancing. The shot integrates Phi~ = kappa Phi^, F~ = F^ / kappa with kappa^2 = max(Omega, 1)
 /// (a constant symplectic scaling: B -> kappa^2 B, C -> C / kappa^2). It balances B and C for the
 /// transverse wave so that the phase turns at a nearly uniform rate; unbalanced, the Pruefer-type
@@ -103,6 +114,11 @@ struct Shot {
   std::vector<int> station_segment;
   /// R factors of the re-orthonormalisations, in order (segment k starts after R_k).
   std::vector<Eigen::MatrixXd> segment_r;
+  /// A shot asked for with_slope (and not starting on the seabed): the frequency derivatives of
+  /// `determinant` and (D = 1) of the end angle [1/(rad/s), rad/(rad/s)].
+  bool has_slope = false;
+  double determinant_slope = 0.0;
+  double angle_slope = 0.0;
   long steps = 0;
   long rhs_evaluations = 0;
   /// log of the product of det R over the re-orthonormalisations (growth of the basis volume).
@@ -121,12 +137,14 @@ class ShootingIntegrator {
 
   /// Shoots at `omega_rad_s` with the tolerances scaled by `tolerance_factor`. `from_b` starts
   /// at s = L and integrates toward s = 0 (then F is returned with its physical sign). Stations
-  /// `stations_x` (x = s/L, in the order of integration) are recorded when given.
-  /// Throws ShootingFailure when CVODE fails.
+  /// `stations_x` (x = s/L, in the order of integration) are recorded when given. `with_slope`
+  /// carries the frequency derivative (header, "Frequency derivative"; Shot::has_slope says
+  /// whether it was). Throws ShootingFailure when CVODE fails.
   Shot shoot(double omega_rad_s,
              double tolerance_factor = 1.0,
              const std::vector<double>* stations_x = nullptr,
-             bool from_b = false);
+             bool from_b = false,
+             bool with_slope = false);
 
   /// Totals over all shots.
   long total_steps() const;
@@ -138,6 +156,9 @@ class ShootingIntegrator {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// Relative accuracy to which CVODE controls the carried frequency derivative (header).
+constexpr double kSlopeAccuracy = 1e-6;
 
 /// Largest axial stretch sigma (a straight inextensible cable has no axial scale).
 constexpr double kMaxAxialStretch = 1e8;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "solvers/internal/shooting_brent.hpp"
 #include "solvers/internal/shooting_conjugate_count.hpp"
@@ -13,6 +14,14 @@
 namespace catena::internal {
 
 namespace {
+
+// The widest count bracket (relative) whose Newton start is shot at the estimate's tolerances
+// (tight_newton_root): the predicted samples leave brackets of 1e-7 to 1e-4.
+constexpr double kTightStartBracket = 1e-3;
+
+// Newton steps shorter than this (relative) are taken as they are, without model_step's
+// curvature correction: the error they leave is then bounded by newton_error_bound.
+constexpr double kNewtonRegion = 1e-3;
 
 // Counts the shots taken while it lives under one purpose of the ShotTally.
 class PurposeScope {
@@ -98,7 +107,14 @@ void ShootingRootFinder::sample_prediction(int n) {
   if (scalar_) {
     // The continuous count is nearly linear: one sample at the prediction leaves Brent a bracket
     // end close to the root and the other a good secant partner (its value there is about -1).
-    if (inside(prediction->omega)) evaluate(prediction->omega);
+    if (inside(prediction->omega)) {
+      // With slopes, Newton starts from it (newton_start).
+      if (shoot_with_slope_) {
+        evaluate_with_slope(prediction->omega);
+      } else {
+        evaluate(prediction->omega);
+      }
+    }
     return;
   }
   const double below = prediction->omega - prediction->half_width;
@@ -127,28 +143,69 @@ Root ShootingRootFinder::refine_to_target(int n, double lo, double hi, std::vect
 
 // The roots found, with the count proved at the smallest sample above the top one.
 std::vector<Root> ShootingRootFinder::finish(std::vector<Root>& roots) {
+  close_top_bracket(roots);
   const auto above = roots.empty() ? samples_.end() : samples_.upper_bound(roots.back().omega);
   proved_count_ = above == samples_.end() ? -1 : above->second.count;
   return std::move(roots);
 }
 
+// A Newton root is not bracketed from above by a sample (its last steps may all come from below),
+// so the count just above the top root, which proves how many modes lie below it, may be that of
+// a sample beyond further modes: one counting shot just above the root (by twice its error
+// estimate) closes it.
+void ShootingRootFinder::close_top_bracket(const std::vector<Root>& roots) {
+  if (roots.empty() || !shoot_with_slope_) return;
+  int found = 0;
+  for (const Root& root : roots) found += root.multiplicity;
+  const Root& top = roots.back();
+  const auto above = samples_.upper_bound(top.omega);
+  if (above != samples_.end() && above->second.count == found) return;
+  const PurposeScope scope(purpose_, &tally_.bracketing);
+  const double offset = std::max(2.0 * top.relative_error, settings_.root_tolerance) * top.omega;
+  if (above == samples_.end() || top.omega + offset < above->first) evaluate(top.omega + offset);
+}
+
 const ShootingRootFinder::Sample& ShootingRootFinder::evaluate(double omega) {
   auto it = samples_.find(omega);
   if (it != samples_.end()) return it->second;
+  return samples_.emplace(omega, cached_shot(omega, shoot_)).first->second;
+}
+
+// A sample that carries the slope of the root function (re-shot when the cached one does not).
+const ShootingRootFinder::Sample& ShootingRootFinder::evaluate_with_slope(double omega) {
+  auto it = samples_.find(omega);
+  if (it != samples_.end() && !std::isnan(it->second.slope)) return it->second;
+  Sample& slot = samples_[omega];
+  slot = cached_shot(omega, shoot_with_slope_);
+  // A shot that cannot carry the slope (a line starting on the seabed: the grounded run) leaves
+  // the refinement to Brent for good.
+  if (std::isnan(slot.slope)) shoot_with_slope_ = nullptr;
+  return slot;
+}
+
+// One shot at the solver's tolerances for the sample cache.
+ShootingRootFinder::Sample ShootingRootFinder::cached_shot(double omega, const ShotFunction& shoot) {
   if (shots_ >= kMaxShots) throw ShootingFailure(fmt::format("more than {} shots", kMaxShots));
-  Shot shot = shoot_(omega, 1.0);
+  Shot shot = shoot(omega, 1.0);
   ++shots_;
   ++*purpose_;
   if (shot.phase_defect > kMaxPhaseDefect) {
     // The integrated phase fixes the winding, so it must be right to well within pi: re-shoot
     // at 100x tighter tolerances (never seen in the tests; a safety net).
-    shot = shoot_(omega, 0.01);
+    shot = shoot(omega, 0.01);
     ++shots_;
     ++tally_.phase_retries;
   }
   max_phase_defect_ = std::max(max_phase_defect_, shot.phase_defect);
-  const Sample sample{shot.count, shot.angle_min, shot.angle_max, shot.determinant};
-  return samples_.emplace(omega, sample).first->second;
+  return to_sample(shot);
+}
+
+ShootingRootFinder::Sample ShootingRootFinder::to_sample(const Shot& shot) const {
+  Sample sample{shot.count, shot.angle_min, shot.angle_max, shot.determinant};
+  if (shot.has_slope) {
+    sample.slope = scalar_ ? shot.angle_slope / (2.0 * kPi) : shot.determinant_slope;
+  }
+  return sample;
 }
 
 // An upper bound: `top` enlarged until the count reaches num_modes.
@@ -230,17 +287,251 @@ ShootingRootFinder::Sample ShootingRootFinder::shoot_sample(double omega, double
   const Shot shot = shoot_(omega, factor);
   ++shots_;
   ++*purpose_;
-  return {shot.count, shot.angle_min, shot.angle_max, shot.determinant};
+  return to_sample(shot);
 }
 
 // Brent on the root function in the count bracket [lo, hi], on the cached shots at the solver's
 // tolerances.
 Root ShootingRootFinder::refine(int n, double lo, double hi) {
   const PurposeScope scope(purpose_, &tally_.refining);
+  if (shoot_with_slope_) {
+    if (std::optional<Root> root = refine_newton(n, lo, hi)) return *root;
+  }
   auto f = [this, n](double omega) { return end_value(evaluate(omega), n); };
   const auto [a, b] = brent_zero(f, lo, hi, f(lo), f(hi), settings_.root_tolerance);
   const Sample sa = evaluate(a);
   return root_in_bracket(n, a, b, sa, evaluate(b), 1.0);
+}
+
+// Where Newton starts in the sign bracket [a, b]: the Newton point of an end that carries a
+// slope, when it falls inside (the smaller step of the two), else the secant point. In plane the
+// secant point is kept 2% of the bracket inside it: the determinant vanishes at the neighbouring
+// roots too, so an end near the previous root has a small value that says little.
+double ShootingRootFinder::newton_start(int n, double a, double b) const {
+  const Sample& sa = samples_.at(a);
+  const Sample& sb = samples_.at(b);
+  const double fa = end_value(sa, n), fb = end_value(sb, n);
+  double best = std::numeric_limits<double>::quiet_NaN(), best_step = b - a;
+  for (const auto& [x, f, slope] : {std::tuple{a, fa, sa.slope}, std::tuple{b, fb, sb.slope}}) {
+    if (!(slope * fb > 0.0)) continue;  // NaN or a slope against the bracket
+    const double next = x + model_step(model_point(x, f, slope), std::nullopt);
+    if (next > a && next < b && std::abs(next - x) < best_step) {
+      best = next;
+      best_step = std::abs(next - x);
+    }
+  }
+  if (!std::isnan(best)) return best;
+  const double secant = a - fa * (b - a) / (fb - fa);
+  const double margin = scalar_ ? 0.0 : 0.02 * (b - a);
+  return std::clamp(secant, a + margin, b - margin);
+}
+
+// Safeguarded Newton on the root function of mode n in its sign bracket [lo, hi] (narrowed in
+// place as the samples come): each shot carries the slope, and the step is model_step's. It is
+// taken when it stays inside the bracket and at least halves the last one, else the next point
+// is the secant point of the bracket kept within its middle 80% (a safeguard step, after which
+// the steps start anew). It converges when newton_error_bound says the step is small enough: the
+// reported root is the point the step leads to. An exact zero (tested by Brent's probes, not
+// trusted) or kMaxNewtonShots without convergence leave the narrowed bracket to Brent.
+std::optional<Root> ShootingRootFinder::refine_newton(int n, double& lo, double& hi) {
+  constexpr int kMaxNewtonShots = 10;
+  double fb = end_value(samples_.at(hi), n);
+  double x = newton_start(n, lo, hi), last_step = std::numeric_limits<double>::infinity();
+  if (std::optional<Root> root = tight_newton_root(n, lo, hi, x)) return root;
+  std::optional<ModelPoint> previous;
+  for (int shot = 0; shot < kMaxNewtonShots; ++shot) {
+    const Sample& sample = evaluate_with_slope(x);
+    const double f = end_value(sample, n);
+    if (f == 0.0 || !shoot_with_slope_) return std::nullopt;
+    if ((f > 0.0) == (fb > 0.0)) {
+      hi = x;
+      fb = f;
+    } else {
+      lo = x;
+    }
+    const ModelPoint point = model_point(x, f, sample.slope);
+    const double step = model_step(point, previous);
+    previous = point;
+    const double next = x + step;
+    if (std::isfinite(next) && next > lo && next < hi && std::abs(step) <= 0.5 * last_step) {
+      if (const std::optional<double> bound = newton_error_bound(std::abs(step), last_step, next)) {
+        return newton_root(n, next, *bound, sample, lo, hi);
+      }
+      last_step = std::abs(step);
+      x = next;
+    } else {
+      const double fa = end_value(samples_.at(lo), n);
+      const double secant = lo - fa * (hi - lo) / (fb - fa);
+      x = std::clamp(secant, lo + 0.1 * (hi - lo), hi - 0.1 * (hi - lo));
+      last_step = std::numeric_limits<double>::infinity();
+    }
+    if (hi - lo <= 0.5 * settings_.root_tolerance * hi) return std::nullopt;  // Brent closes it
+  }
+  return std::nullopt;
+}
+
+// The first Newton shot taken at the estimate's 100x tighter tolerances, which
+// makes the error estimate's own shot unnecessary: the root is the tight shot's Newton point (kept
+// when the steps show convergence: newton_error_bound, with the distance from the start to the
+// nearer bracket end as the step before the first), and its error estimate is the distance to
+// the root the samples at the solver's tolerances give (normal_tolerance_root), i.e. the change
+// of the root at 100x tighter tolerances, plus that bound; kept when below half the target.
+// Taken when the start is within kTightStartBracket of the nearer bracket end, and that end
+// carries a slope or the bracket is that narrow (the predicted samples); when it does not converge
+// `x0` is left at the tight Newton point, for the shots at the solver's tolerances.
+std::optional<Root> ShootingRootFinder::tight_newton_root(int n, double lo, double hi, double& x0) {
+  if (!settings_.error_estimate) return std::nullopt;
+  const bool near_lo = x0 - lo <= hi - x0;
+  const double end = near_lo ? lo : hi;
+  const bool hermite = !std::isnan(samples_.at(end).slope);
+  const double last = std::abs(x0 - end);
+  if (last > kTightStartBracket * x0 || (!hermite && hi - lo > kTightStartBracket * hi)) {
+    return std::nullopt;
+  }
+  const std::optional<Sample> tight = tight_slope_sample(x0);
+  if (!tight) return std::nullopt;
+  const ModelPoint point = model_point(x0, end_value(*tight, n), tight->slope);
+  const double step = model_step(point, std::nullopt);
+  const double next = x0 + step;
+  if (!(std::isfinite(next) && next > lo && next < hi)) return std::nullopt;
+  x0 = next;  // a better start for the shots at the solver's tolerances, if they are needed
+  const std::optional<double> bound = newton_error_bound(std::abs(step), last, next);
+  if (!bound) return std::nullopt;
+  const double normal = normal_tolerance_root(n, lo, hi, end, hermite, point);
+  const double estimate = (std::abs(next - normal) + *bound) / next;
+  // Far from the samples their interpolation is not accurate enough for the estimate.
+  if (!std::isfinite(normal) || estimate > 0.5 * settings_.target) return std::nullopt;
+  Root root;
+  root.omega = next;
+  root.residual = std::abs(tight->determinant);
+  root.relative_error = std::max(estimate, settings_.estimate_floor);
+  return root;
+}
+
+// A shot with the slope at the error estimate's 100x tighter tolerances (uncached: the samples
+// stay at the solver's own); none when its phase is off or it carries no slope.
+std::optional<ShootingRootFinder::Sample> ShootingRootFinder::tight_slope_sample(double omega) {
+  if (shots_ >= kMaxShots) throw ShootingFailure(fmt::format("more than {} shots", kMaxShots));
+  const double floor = std::min(1.0, 1e-15 / settings_.relative_tolerance);
+  const Shot shot = shoot_with_slope_(omega, std::max(0.01, floor));
+  ++shots_;
+  ++*purpose_;
+  if (!shot.has_slope) shoot_with_slope_ = nullptr;  // as in evaluate_with_slope
+  if (!shot.has_slope || shot.phase_defect > kMaxPhaseDefect) return std::nullopt;
+  return to_sample(shot);
+}
+
+// The root of the samples at the solver's tolerances near the tight point, of a quadratic (in the
+// function Newton works on) with the tight point's slope (a slope differs between the two
+// tolerances by far less than a value does) and either the value and slope of the nearer end
+// `end` (hermite) or the values of both ends. Three Newton steps on it from the tight point.
+double ShootingRootFinder::normal_tolerance_root(int n, double lo, double hi, double end,
+                                                 bool hermite, const ModelPoint& tight) const {
+  const bool narrow = !hermite;
+  const double base = hermite ? end : lo;
+  const Sample& sb = samples_.at(base);
+  const ModelPoint b = model_point(base, end_value(sb, n), sb.slope);
+  const Sample& sh = samples_.at(hi);
+  const ModelPoint top = model_point(hi, end_value(sh, n), sh.slope);
+  if (b.tangent != tight.tangent || (narrow && top.tangent != tight.tangent)) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  const double t0 = tight.x - base;
+  double linear = b.dg, curvature = 0.5 * (tight.dg - b.dg) / t0, width = 0.0;
+  if (narrow) {
+    width = hi - lo;
+    linear = (top.g - b.g) / width;
+    const double lever = 2.0 * t0 - width;
+    curvature = lever != 0.0 ? (tight.dg - linear) / lever : 0.0;
+  }
+  // q(t) = b.g + linear t + curvature t (t - width), t = w - base.
+  double t = t0;
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    const double q = b.g + linear * t + curvature * t * (t - width);
+    t -= q / (linear + curvature * (2.0 * t - width));
+  }
+  return base + t;
+}
+
+// The function Newton works on, at x: the determinant in plane; for the continuous count h,
+// g = tan(pi h) (= Phi / F at the end, the Riccati variable), zero at the root like h. A mode
+// localised at a heavy point mass makes the count rise through its root in a steep step
+// (h ~ h0 + atan((w - p) / gamma) / pi, its slope there hundreds of times that between the
+// modes), where Newton on h overshoots from either side; g is then a Moebius function of w.
+// Only within half a mode of the root: tan(pi h) vanishes at the neighbouring roots too (h = -+1).
+ShootingRootFinder::ModelPoint ShootingRootFinder::model_point(double x, double f,
+                                                               double slope) const {
+  if (!scalar_ || std::abs(f) >= 0.5) return {x, f, slope, false};
+  const double c = std::cos(kPi * f);
+  return {x, std::tan(kPi * f), kPi * slope / (c * c), true};
+}
+
+// The step to the root of the Moebius function g(w) = (g1 + a t) / (1 + c t), t = w - x1, that
+// has the value and slope of the current point and the value of the previous one (Newton's step
+// -g1/g1' when there is none or the fit is degenerate, and within kNewtonRegion of the root):
+// exact for the localised mode's step above, and Newton's step with a curvature correction
+// elsewhere.
+double ShootingRootFinder::model_step(const ModelPoint& current,
+                                      const std::optional<ModelPoint>& previous) {
+  const double newton = -current.g / current.dg;
+  // Near the root plain Newton converges quadratically, and its step bounds the error left.
+  if (std::abs(newton) <= kNewtonRegion * std::abs(current.x)) return newton;
+  if (!previous || previous->tangent != current.tangent) return newton;
+  const double t0 = previous->x - current.x, dg = previous->g - current.g;
+  if (t0 == 0.0 || dg == 0.0) return newton;
+  const double c = (current.dg * t0 - dg) / (t0 * dg);
+  const double step = -current.g / (current.dg + current.g * c);
+  return std::isfinite(step) ? step : newton;
+}
+
+// The error of the point a Newton step of length `step` leads to, when it is small enough to stop
+// (none otherwise): the step itself once it is within the root tolerance, or, where the steps
+// show quadratic convergence (this one below a tenth of the last), step^2 / last_step, which is
+// 1/(step/last) times the quadratic prediction step^3 / last^2 (the error falls as K e^2 with
+// K = step / last^2), plus the part an error of the slope leaves, when that is within a quarter
+// of the root tolerance.
+std::optional<double> ShootingRootFinder::newton_error_bound(double step, double last_step,
+                                                             double omega) const {
+  // kSlopeMargin: the slope's own relative error, which leaves that fraction of the step.
+  constexpr double kSlopeMargin = 1e-4;
+  const double tolerance = settings_.root_tolerance * omega;
+  if (step <= tolerance) return step;
+  const double quadratic = step * step / last_step + kSlopeMargin * step;
+  if (std::isfinite(last_step) && step <= 0.1 * last_step && quadratic <= 0.25 * tolerance) {
+    return quadratic;
+  }
+  return std::nullopt;
+}
+
+// The root a converged Newton step leads to, `omega`, from the `last` sample `step` away. Its
+// error estimate: the step (the error of the point it came from, an upper bound of the
+// remaining error at quadratic convergence) plus the integration error, measured as the root
+// function at 100x tighter tolerances at omega over the slope (at the solver's tolerances it is
+// zero there to first order, by the Newton step). That measurement is also a Newton step at the
+// tighter tolerances: the root is moved by it (when it stays within the target and inside the
+// sign bracket [lo, hi]), which takes out
+// most of the integration error at no cost (the estimate stays that of the unmoved root).
+Root ShootingRootFinder::newton_root(int n, double omega, double step, const Sample& last,
+                                     double lo, double hi) {
+  Root root;
+  root.omega = omega;
+  root.residual = std::abs(last.determinant);
+  double integration_error = 10.0 * settings_.relative_tolerance * omega;
+  if (settings_.error_estimate) {
+    const double floor = std::min(1.0, 1e-15 / settings_.relative_tolerance);
+    const PurposeScope scope(purpose_, &tally_.estimate);
+    const Sample tight = shoot_sample(omega, std::max(0.01, floor));
+    const double correction = -end_value(tight, n) / last.slope;
+    integration_error = std::abs(correction);
+    // Within the sign bracket, whose samples prove the count on either side of the root.
+    const double moved = omega + correction;
+    if (integration_error <= settings_.target * omega && moved > lo && moved < hi) {
+      root.omega = moved;
+    }
+  }
+  root.relative_error = (step + integration_error) / omega;
+  root.relative_error = std::max(root.relative_error, settings_.estimate_floor);
+  return root;
 }
 
 // The root in a final bracket [a, b] found with shots at `factor` times the tolerances. Its error

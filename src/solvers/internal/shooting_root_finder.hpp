@@ -1,19 +1,23 @@
 #pragma once
 /// \file
 /// The root finder of the `shooting` solver (docs/methods/shooting.md): brackets each natural
-/// frequency by conjugate-point counts and refines it with Brent's method.
+/// frequency by conjugate-point counts and refines it by safeguarded Newton steps with the shot's
+/// frequency derivative (set_slope_shots; docs/methods/shooting.md, "Newton refinement"), or with
+/// Brent's method.
 ///
 /// Mode n is the root of the count-aware function h_n (count_function in
 /// shooting_conjugate_count.hpp), bracketed by any two samples with counts < n and >= n: the sign
 /// of h_n certifies the count, so no mode can be skipped. New samples inside a count bracket are
 /// placed by a phase-extrapolated guess or bisection. For a one-component problem (out of plane,
-/// or a straight inextensible cable) h_n is smooth across the eigenvalue and Brent works on it
-/// directly; in plane Brent works on the normalised end determinant, which changes sign exactly
+/// or a straight inextensible cable) h_n is smooth across the eigenvalue and the refinement works
+/// on it directly; in plane it works on the normalised end determinant, which changes sign exactly
 /// once inside a bracket whose counts are n - 1 and n. Several eigenvalues inside a bracket
-/// narrower than the tolerance (an exactly double root, e.g. Irvine's cross-over) are returned
-/// as one root of that multiplicity.
+/// narrower than the tolerance (an exactly double root, e.g. Irvine's cross-over) are returned as
+/// one root of that multiplicity.
 
 #include <functional>
+#include <limits>
+#include <optional>
 #include <map>
 #include <string>
 #include <utility>
@@ -78,6 +82,13 @@ class ShootingRootFinder {
   /// early (fewer roots, the lowest ones).
   std::vector<Root> find(int num_modes, std::vector<std::string>& warnings, WorkMeter* meter = nullptr);
 
+  /// Shots that carry the frequency derivative (ShootingIntegrator::shoot with_slope): given,
+  /// each root is refined by safeguarded Newton steps inside its sign bracket (refine_newton)
+  /// instead of Brent's method.
+  void set_slope_shots(ShotFunction shoot_with_slope) {
+    shoot_with_slope_ = std::move(shoot_with_slope);
+  }
+
   long shots() const { return shots_; }
   /// The count at the smallest sample above the top root (-1 when none).
   int proved_count() const { return proved_count_; }
@@ -95,6 +106,9 @@ class ShootingRootFinder {
     double angle_min = 0.0;
     double angle_max = 0.0;
     double determinant = 0.0;
+    /// d(root function)/d omega when the shot carried the slope, NaN otherwise: the
+    /// determinant's in plane, the continuous count's (angle slope / 2 pi) for D = 1.
+    double slope = std::numeric_limits<double>::quiet_NaN();
   };
   static double count_function(const Sample& sample, int n);
 
@@ -110,10 +124,32 @@ class ShootingRootFinder {
   Sample shoot_sample(double omega, double factor);
   Root refine_to_target(int n, double lo, double hi, std::vector<std::string>& warnings);
   Root refine(int n, double lo, double hi);
+  const Sample& evaluate_with_slope(double omega);
+  Sample cached_shot(double omega, const ShotFunction& shoot);
+  double newton_start(int n, double a, double b) const;
+  struct ModelPoint {
+    double x = 0.0;
+    double g = 0.0;   ///< the function Newton works on (model_point)
+    double dg = 0.0;  ///< its slope
+    bool tangent = false;  ///< g = tan(pi h) rather than h
+  };
+  ModelPoint model_point(double x, double f, double slope) const;
+  static double model_step(const ModelPoint& current, const std::optional<ModelPoint>& previous);
+  std::optional<Root> tight_newton_root(int n, double lo, double hi, double& x0);
+  std::optional<Sample> tight_slope_sample(double omega);
+  struct ModelPoint;
+  double normal_tolerance_root(int n, double lo, double hi, double base, bool hermite,
+                               const ModelPoint& tight) const;
+  std::optional<double> newton_error_bound(double step, double last_step, double omega) const;
+  void close_top_bracket(const std::vector<Root>& roots);
+  Sample to_sample(const Shot& shot) const;
+  std::optional<Root> refine_newton(int n, double& lo, double& hi);
+  Root newton_root(int n, double omega, double step, const Sample& last, double lo, double hi);
   Root root_in_bracket(int n, double a, double b, const Sample& sa, const Sample& sb, double factor);
   Root refine_tighter(int n, Root root, double lo, double hi);
 
   ShotFunction shoot_;
+  ShotFunction shoot_with_slope_;
   RootFinderSettings settings_;
   double first_guess_;
   bool scalar_;
