@@ -53,10 +53,11 @@ TEST(MutationScore, EveryMutationIsCountedOnceAndEveryUncaughtOneIsNamed) {
 
 // Issue 12's target, not met yet, so disabled (the run above prints the score): a frequency
 // mutation of 10x a solver's accuracy target is caught only where a witness resolves it. shooting's
-// 1.1e-8 hides inside the 1e-6 of fe-vs-shooting where frobenius does not apply, and frobenius's
-// 1e-10 inside the 1e-9 of frobenius-vs-shooting. Measured on the suite: 5078 of 7900 caught, on
-// this subset 101 of 152; every uncaught one is in a group of docs/mutation.md ("Measured (after
-// the tolerance work ...)").
+// 1.1e-8 is caught through fe's estimate check where fe's estimate is tight (its N/2 mesh and third
+// penalty), not where fe's rounding floors or high modes keep it above 1e-8; fe's forced 1e-4 not
+// near a resonance, where fe's estimate carries the frequency uncertainty. Measured on the suite:
+// 5,078 of 7,900 caught before the estimate work, 7,407 of 8,196 after; on this subset 101 and 142
+// of 152 (docs/mutation.md, the last "Measured" section, lists the groups left).
 TEST(MutationScore, DISABLED_ExactSolversCatchEveryMutationWhereTwoRan) {
   const MutationRun run = subset_run();
   const MutationTally exact = run.exact_with_witness();
