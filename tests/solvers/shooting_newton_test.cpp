@@ -30,30 +30,11 @@ template <int D>
 Shot string_shot(const Phase& p, const double (&rates)[D], double omega, bool with_slope,
                  long& shots) {
   ++shots;
-  auto frame = [&](double w, Shot& shot) {
-    FrameBlock<D> Phi = FrameBlock<D>::Zero(), F = FrameBlock<D>::Zero();
-    double theta = initial_phase(D);
-    for (int j = 0; j < D; ++j) {
-      const double x = kPi * rates[j] * p(w);
-      Phi(j, j) = std::sin(x);
-      F(j, j) = std::cos(x);
-      theta -= x;
-    }
-    const ConjugateCount c = count_conjugate_points<D>(Phi, F, theta);
-    shot.omega_rad_s = w;
-    shot.count = c.count;
-    shot.angle_min = c.angle_min;
-    shot.angle_max = c.angle_max;
-    shot.determinant = c.determinant;
-    shot.phase_defect = c.phase_defect;
-  };
-  Shot shot;
-  frame(omega, shot);
+  Shot shot = testing::exact_string_frame<D>(p, omega, rates);
   if (with_slope && omega > 0.0) {
     const double h = 1e-6 * omega;
-    Shot up, down;
-    frame(omega + h, up);
-    frame(omega - h, down);
+    const Shot up = testing::exact_string_frame<D>(p, omega + h, rates);
+    const Shot down = testing::exact_string_frame<D>(p, omega - h, rates);
     shot.has_slope = true;
     shot.determinant_slope = (up.determinant - down.determinant) / (2.0 * h);
     // D = 1: the angle is 2 pi r p - pi, continuous (mod 2 pi) across a crossing.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "catena/core/types.hpp"
+#include "shooting_test_strings.hpp"
 #include "solvers/internal/shooting_conjugate_count.hpp"
 
 namespace catena::internal {
@@ -32,23 +33,7 @@ double g_inverse(double target) {
 template <int D, typename Phase>
 Shot string_shot_with(Phase phase, double omega, const double (&rates)[D], long& shots) {
   ++shots;
-  FrameBlock<D> Phi = FrameBlock<D>::Zero(), F = FrameBlock<D>::Zero();
-  double theta = initial_phase(D);
-  for (int j = 0; j < D; ++j) {
-    const double x = kPi * rates[j] * phase(omega);
-    Phi(j, j) = std::sin(x);
-    F(j, j) = std::cos(x);
-    theta -= x;
-  }
-  const ConjugateCount c = count_conjugate_points<D>(Phi, F, theta);
-  Shot shot;
-  shot.omega_rad_s = omega;
-  shot.count = c.count;
-  shot.angle_min = c.angle_min;
-  shot.angle_max = c.angle_max;
-  shot.determinant = c.determinant;
-  shot.phase_defect = c.phase_defect;
-  return shot;
+  return testing::exact_string_frame<D>(phase, omega, rates);
 }
 
 template <int D>

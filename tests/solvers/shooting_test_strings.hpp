@@ -5,7 +5,10 @@
 
 #include <cmath>
 
+#include "catena/core/types.hpp"
 #include "solvers/internal/shooting_coefficients.hpp"
+#include "solvers/internal/shooting_conjugate_count.hpp"
+#include "solvers/internal/shooting_integrator.hpp"
 
 namespace catena::testing {
 
@@ -29,6 +32,31 @@ inline internal::ShootingCoefficients horizontal_string(double tension_n, double
 inline double transverse_wavenumber(const internal::ShootingCoefficients& k, double omega) {
   const double e = k.H * k.compliance;
   return omega * std::sqrt(k.M * (1.0 + e) / k.H);
+}
+
+/// The exact end frame of D uncoupled strings on a unit length whose phases are
+/// pi rates[j] phase(omega): Phi = diag(sin), F = diag(cos), the integrated phase and the count,
+/// angles and determinant of count_conjugate_points, as a shot of the integrator would give them.
+/// String j's eigenfrequencies are where rates[j] phase(omega) is an integer.
+template <int D, typename Phase>
+internal::Shot exact_string_frame(const Phase& phase, double omega, const double (&rates)[D]) {
+  internal::FrameBlock<D> Phi = internal::FrameBlock<D>::Zero(), F = internal::FrameBlock<D>::Zero();
+  double theta = internal::initial_phase(D);
+  for (int j = 0; j < D; ++j) {
+    const double x = kPi * rates[j] * phase(omega);
+    Phi(j, j) = std::sin(x);
+    F(j, j) = std::cos(x);
+    theta -= x;
+  }
+  const internal::ConjugateCount c = internal::count_conjugate_points<D>(Phi, F, theta);
+  internal::Shot shot;
+  shot.omega_rad_s = omega;
+  shot.count = c.count;
+  shot.angle_min = c.angle_min;
+  shot.angle_max = c.angle_max;
+  shot.determinant = c.determinant;
+  shot.phase_defect = c.phase_defect;
+  return shot;
 }
 
 }  // namespace catena::testing
