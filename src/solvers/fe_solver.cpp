@@ -34,9 +34,11 @@ const KnobTable<FeSolverOptions>& fe_knobs() {
   static const KnobTable<O> table(
       "fe", {integer_knob("elements", &O::elements, Range::closed(2, 5e7),
                           "number of bar elements N (the coarse mesh with Richardson); resolves up to N/2 modes per plane"),
-             flag_knob("richardson", &O::richardson, "solve N and 2N and extrapolate (order 2 -> 4)"),
+             flag_knob("richardson", &O::richardson,
+                       "solve N and 2N and extrapolate (order 2 -> 4); N/2 too, for the error estimate"),
              real_knob("kappa", &O::kappa, Range::open_closed(0.0, 1e-2),
-                       "inextensible cables: penalty H/EA (and 2 kappa, extrapolated to 0)"),
+                       "inextensible cables: penalty H/EA (and 2 kappa, extrapolated to 0; 4 kappa for the "
+                       "error estimate)"),
              flag_knob("observed_order", &O::observed_order,
                        "also solve 4N and report the observed convergence order"),
              real_knob("tolerance", &O::tolerance, Range::closed(0.0, 1.0),
