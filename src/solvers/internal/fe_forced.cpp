@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "solvers/internal/fe_banded_ldlt.hpp"
+#include "solvers/internal/fe_extrapolation.hpp"
 #include "solvers/internal/fe_forced_richardson.hpp"
 #include "solvers/internal/fe_summary.hpp"
 #include "solvers/internal/work_meter.hpp"
@@ -108,6 +109,24 @@ double forced_estimate(const ForcedErrorParts& parts, double peak, double omega,
   return (parts.mesh + parts.kappa) / peak + frequency_error_amplification(omega, naturals);
 }
 
+// The mesh term of the estimate in plane (absolute, over the stations): |R(N, 2N) - R(N/2, N)|
+// where the estimate mesh N/2 answered and the peak tensions of the three unextrapolated responses
+// converge at order 2 (within 0.25, as for the frequencies: fe_extrapolation.hpp); otherwise
+// `correction`, the Richardson correction |R - fine|, which bounds the unextrapolated error.
+double mesh_term(const Forcing& forcing, const FePlan& plan, const FeLevels& levels, double omega,
+                 const MeshResponse& coarse, const FeSampled& fine, const FeSampled& result, double correction) {
+  if (!plan.richardson || !plan.has_estimate_mesh() || forcing.plane != Plane::InPlane) return correction;
+  const MeshResponse half = respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.estimate_coarse)], omega);
+  if (!half.diagnostic.empty()) return correction;
+  auto sampled = [&](const FeResponseField& field) {
+    return sample_field(forcing.plane, field, forcing.stations, forcing.statics);
+  };
+  const double order = observed_order(max_abs(sampled(half.field).tension), max_abs(sampled(coarse.field).tension),
+                                      max_abs(fine.tension));
+  if (!(std::abs(order - 2.0) <= 0.25)) return correction;
+  return max_station_difference(result, sampled(richardson_field(half.field, coarse.field)), true);
+}
+
 // The response at one forcing frequency: the meshes combined (Richardson in h on coinciding
 // points, fe_forced_richardson.hpp) and sampled on the stations, with the relative error estimate
 // of its peak tension (forced_estimate).
@@ -130,7 +149,8 @@ void respond(ForcedResponse& response, const Forcing& forcing, const FePlan& pla
             ? sample_field(forcing.plane, richardson_field(coarse.field, fine.field), forcing.stations, forcing.statics)
             : sample_field(forcing.plane, coarse.field, forcing.stations, forcing.statics);
     if (plan.richardson) result = other;
-    parts.mesh = max_station_difference(fine_sampled, other, in_plane);
+    parts.mesh = mesh_term(forcing, plan, levels, omega, coarse, fine_sampled, result,
+                           max_station_difference(fine_sampled, other, in_plane));
   }
   if (plan.inextensible) {
     parts.kappa = fine.kappa_factor *
@@ -249,6 +269,7 @@ ForcedOutcome fe_forced_response(const ForcedRequest& request,
   const Forcing forcing{forced_plane(request), end_a, end_b, stations, context.statics};
   std::vector<std::size_t> meshes = {static_cast<std::size_t>(plan.main_fine)};
   if (plan.has_coarse()) meshes.push_back(static_cast<std::size_t>(plan.main_coarse));
+  if (plan.has_estimate_mesh()) meshes.push_back(static_cast<std::size_t>(plan.estimate_coarse));
   assemble_missing(levels, forcing.plane, meshes);
   ForcedOutcome outcome;
   WorkMeter meter(context, "fe", "forced frequencies", static_cast<long>(request.omegas_rad_s.size()));
