@@ -52,10 +52,7 @@ ExactContact exact_contact(double L_d, double w_d, double EA_d, double h_d, doub
     const Real suspended = V / w;
     const Real Lg = L - suspended;
     const Real drop = friction * w * Lg;
-    const Real tension_integral = drop <= H ? H * Lg - friction * w * Lg * Lg / 2
-                                            : H * H / (2 * friction * w);
-    const Real x = Lg + tension_integral / EA + H * suspended / EA + (H / w) * asinh(V / H);
-    return ExactContact{H, Lg, V, drop <= H ? H - drop : Real(0)} ;
+    return ExactContact{H, Lg, V, drop <= H ? H - drop : Real(0)};
   };
   auto x_of = [&](const Real& H) {
     const ExactContact c = state(H);

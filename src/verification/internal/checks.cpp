@@ -240,7 +240,7 @@ void conditioned_forced_check(CheckResult& check, double measured, const CheckBu
   builder.add_measured(check, measured, tol.tolerance, true);
 }
 
-void forced_pair(const SceneResult& result, const SolverOutput& a, const SolverOutput& b, CheckBuilder& builder) {
+void forced_pair(const SolverOutput& a, const SolverOutput& b, CheckBuilder& builder) {
   const std::size_t n = std::min(a.forced.size(), b.forced.size());
   if (n == 0 || !builder.independent(a.solver, b.solver, "forced", "forced", "forced")) return;
   for (std::size_t i = 0; i < n; ++i) {
@@ -336,7 +336,7 @@ std::vector<CheckResult> run_checks(const SceneResult& result, const ToleranceTa
   }
   for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) plane_checks(result, usable, plane, builder);
   for (std::size_t i = 0; i < usable.size(); ++i) {
-    for (std::size_t j = i + 1; j < usable.size(); ++j) forced_pair(result, *usable[i], *usable[j], builder);
+    for (std::size_t j = i + 1; j < usable.size(); ++j) forced_pair(*usable[i], *usable[j], builder);
   }
   estimate_checks(usable, builder);
   published_checks(builder);
