@@ -150,8 +150,9 @@ FeExtrapolatedFrequency extrapolate_frequency(const FePlan& plan,
   if (!plan.inextensible) return {per_penalty[0], per_penalty_error[0]};
   // Linear in kappa (Irvine's 1/lambda^2 is linear in the extensibility): 2 w(kappa) - w(2 kappa).
   const double linear = 2.0 * per_penalty[0] - per_penalty[1];
-  const double kappa_error = per_penalty.size() > 2 ? kappa_extrapolation_error(per_penalty[0], per_penalty[1], per_penalty[2])
-                                                     : std::abs(per_penalty[0] - per_penalty[1]);
+  const double kappa_error = per_penalty.size() > 2
+                                 ? kappa_extrapolation_error(per_penalty[0], per_penalty[1], per_penalty[2])
+                                 : std::abs(per_penalty[0] - per_penalty[1]);
   const double error = per_penalty_error[0] < 0.0 ? -1.0 : per_penalty_error[0] + kappa_error;
   return {linear, error};
 }

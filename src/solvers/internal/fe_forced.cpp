@@ -153,10 +153,9 @@ void respond(ForcedResponse& response, const Forcing& forcing, const FePlan& pla
                            max_station_difference(fine_sampled, other, in_plane));
   }
   if (plan.inextensible) {
-    parts.kappa = fine.kappa_factor *
-                  max_station_difference(fine_sampled,
-                                         sample_field(forcing.plane, fine.kappa_reference, forcing.stations, forcing.statics),
-                                         in_plane);
+    const FeSampled kappa_reference =
+        sample_field(forcing.plane, fine.kappa_reference, forcing.stations, forcing.statics);
+    parts.kappa = fine.kappa_factor * max_station_difference(fine_sampled, kappa_reference, in_plane);
   }
   response.u = result.u;
   response.w = result.w;

@@ -10,7 +10,6 @@
 #include <cmath>
 
 #include "catena/core/types.hpp"
-#include "solvers/internal/shooting_conjugate_count.hpp"
 #include "solvers/internal/shooting_integrator.hpp"
 #include "solvers/internal/shooting_sundials_handles.hpp"
 

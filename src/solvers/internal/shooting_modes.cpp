@@ -116,7 +116,8 @@ void ShootingModeBuilder::set_shape(Mode& mode, const Shot& shot,
     }
   }
   // A general line: each segment's densities and each point's mass at its own arc length.
-  if (!context_.problem.is_uniform()) mode.modal_mass_kg = line_modal_mass(plane_, mode, context_.problem.line, context_.statics);
+  if (!context_.problem.is_uniform())
+    mode.modal_mass_kg = line_modal_mass(plane_, mode, context_.problem.line, context_.statics);
   if (!request_.shapes) drop_shape_fields(mode);
 }
 

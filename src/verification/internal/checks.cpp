@@ -87,8 +87,9 @@ std::optional<CheckBuilder::Tolerance> tightened_by_targets(std::optional<CheckB
   if (!tol || !da || !db || !da->exact || !db->exact || !(ta > 0.0) || !(tb > 0.0)) return tol;
   if (!(ta + tb < tol->value)) return tol;
   tol->value = ta + tb;
-  tol->reason = fmt::format("the sum of the accuracy targets the scene asked ({} {:.2g} + {} {:.2g}), below the rule: {}",
-                            a.solver, ta, b.solver, tb, tol->reason);
+  tol->reason = fmt::format(
+      "the sum of the accuracy targets the scene asked ({} {:.2g} + {} {:.2g}), below the rule: {}", a.solver, ta,
+      b.solver, tb, tol->reason);
   return tol;
 }
 
