@@ -32,7 +32,7 @@ def test_registry_lists_five_solvers_with_typed_knobs():
     fe = infos[0]
     assert fe.defaults()["elements"] == 400 and fe.defaults()["richardson"] is True
     shooting = infos[1].defaults()
-    assert shooting["rtol"] == 1e-10 and shooting["method"] == "adams"
+    assert shooting["rtol"] == 1e-10 and shooting["method"] == "rk"
     for info in infos:
         assert info.description and info.knobs
         for knob in info.knobs:

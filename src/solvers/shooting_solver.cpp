@@ -27,7 +27,12 @@
 namespace catena {
 
 std::string to_string(ShootingMethod method) {
-  return method == ShootingMethod::Adams ? "adams" : "bdf";
+  switch (method) {
+    case ShootingMethod::RungeKutta: return "rk";
+    case ShootingMethod::Adams: return "adams";
+    case ShootingMethod::Bdf: return "bdf";
+  }
+  return "?";
 }
 
 double ShootingSolverOptions::effective_absolute_tolerance() const {
@@ -45,19 +50,21 @@ const KnobTable<ShootingSolverOptions>& shooting_knobs() {
   static const KnobTable<O> table(
       "shooting",
       {real_knob("rtol", &O::relative_tolerance, Range::closed(1e-14, 1e-2),
-                 "CVODE relative tolerance"),
+                 "relative tolerance of the integration"),
        real_knob("atol", &O::absolute_tolerance, Range::closed(0.0, 1e-2),
-                 "CVODE absolute tolerance on the scaled state (0: rtol/100)"),
+                 "absolute tolerance of the integration on the scaled state (0: rtol/100)"),
        real_knob("root_tolerance", &O::root_tolerance, Range::closed(0.0, 1e-2),
                  "relative width of the final frequency bracket (0: rtol)"),
        choice_knob("method", &O::method,
-                   {{"adams", ShootingMethod::Adams}, {"bdf", ShootingMethod::Bdf}},
-                   "CVODE linear multistep family"),
+                   {{"rk", ShootingMethod::RungeKutta},
+                    {"adams", ShootingMethod::Adams},
+                    {"bdf", ShootingMethod::Bdf}},
+                   "explicit Runge-Kutta 6(5), or CVODE's Adams or BDF"),
        choice_knob("nonlinear_solver", &O::fixed_point_iteration,
                    {{"newton", false}, {"fixed_point", true}},
-                   "Newton (dense LU, analytic Jacobian) or fixed-point iteration"),
+                   "CVODE's Newton (dense LU, analytic Jacobian) or fixed-point iteration"),
        integer_knob("max_steps", &O::max_steps, Range::at_least(100),
-                    "maximum CVODE steps per shot"),
+                    "maximum integration steps per shot"),
        real_knob("max_condition", &O::max_condition, Range::closed(2.0, 1e8),
                  "re-orthonormalise the principal pair when cond(Gram) exceeds this"),
        flag_knob("error_estimate", &O::error_estimate,
@@ -78,7 +85,7 @@ IntegratorSettings integrator_settings(const ShootingSolverOptions& options) {
   IntegratorSettings settings;
   settings.relative_tolerance = options.relative_tolerance;
   settings.absolute_tolerance = options.effective_absolute_tolerance();
-  settings.use_bdf = options.method == ShootingMethod::Bdf;
+  settings.method = options.method;
   settings.fixed_point = options.fixed_point_iteration;
   settings.max_steps = options.max_steps;
   settings.max_condition = options.max_condition;
@@ -102,8 +109,10 @@ RootFinderSettings root_finder_settings(const ShootingSolverOptions& options) {
 }
 
 std::string resolution(const ShootingSolverOptions& options) {
-  return fmt::format("CVODE {} rtol {:.1e} atol {:.1e}, root bracket {:.1e}",
-                     to_string(options.method), options.relative_tolerance,
+  const std::string method = options.method == ShootingMethod::RungeKutta
+                                 ? "Runge-Kutta 6(5)"
+                                 : "CVODE " + to_string(options.method);
+  return fmt::format("{} rtol {:.1e} atol {:.1e}, root bracket {:.1e}", method, options.relative_tolerance,
                      options.effective_absolute_tolerance(), options.effective_root_tolerance());
 }
 
@@ -276,7 +285,7 @@ void ShootingNumerics::finish_summary(const ShootingRootFinder& finder,
       summary.max_error_estimate);
   const ShotTally& tally = finder.tally();
   summary.notes.push_back(fmt::format(
-      "{} shots ({} bracketing by counts, {} refining, {} error estimates, {} tightening), {} CVODE steps, {} RHS evaluations; principal pair re-orthonormalised {} times "
+      "{} shots ({} bracketing by counts, {} refining, {} error estimates, {} tightening), {} integration steps, {} RHS evaluations; principal pair re-orthonormalised {} times "
       "(max log volume growth {:.3g}); max phase defect {:.2e} rad ({} re-shots for phase); {} "
       "refinements at tighter tolerances for estimates above the target {:.2g}",
       finder.shots(), tally.bracketing, tally.refining, tally.estimate, tally.tightening,
@@ -290,7 +299,7 @@ void ShootingNumerics::finish_summary(const ShootingRootFinder& finder,
 
 SolverEntry make_shooting_entry() {
   return make_solver_entry(
-      "exact linear boundary-value solution: principal solutions integrated with SUNDIALS CVODE, "
+      "exact linear boundary-value solution: principal solutions integrated by Runge-Kutta 6(5), "
       "modes counted by conjugate points (Morse index) and refined by safeguarded Newton steps "
       "with the frequency derivative of the shot (Brent's method as fallback) on a count-aware "
       "phase function; any sag, inclination, EA (inf exact), added mass",

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The `shooting` solver (docs/methods/shooting.md): the exact linear boundary-value solution of
-/// the cable equations, integrated along s with SUNDIALS CVODE. It is the project's accuracy
-/// reference.
+/// the cable equations, integrated along s by an explicit Runge-Kutta 6(5) pair (or SUNDIALS
+/// CVODE: knob `method`). It is the project's accuracy reference.
 ///
 /// Model (docs/physics.md). About the static elastic catenary, harmonic motion D = Phi(s) e^{i w t}
 /// satisfies (A Phi')' + w^2 Mmat Phi = 0 with A = EA t t^T + (T/(1+e)) n n^T and
@@ -36,11 +36,11 @@
 /// 1000 rtol share a joint null space for their shapes, mass-orthogonalised.
 ///
 /// Loss of independence. The in-plane pair can grow at different exponential rates (the "chain"
-/// solutions of curved inextensible cables at high frequency, large lambda^2). After every CVODE
-/// step the Gram matrix of the pair is checked; when its condition number exceeds `max_condition`
+/// solutions of curved inextensible cables at high frequency, large lambda^2). After every
+/// integration step the Gram matrix of the pair is checked; when its condition number exceeds `max_condition`
 /// or its scale leaves [1e-6, 1e6], the pair is replaced by the Q of its QR factorisation with
-/// positive diagonal R (det R > 0, so the sign of det Phi and the phase are unchanged) and CVODE
-/// is restarted; the R factors map the final null vector back onto every segment. A compound-matrix
+/// positive diagonal R (det R > 0, so the sign of det Phi and the phase are unchanged) and the
+/// integration continues from it; the R factors map the final null vector back onto every segment. A compound-matrix
 /// (exterior-product) formulation was not used because the shapes and the forced response need
 /// the solutions themselves. The variables are also rescaled symplectically (Phi by kappa, F by
 /// 1/kappa, kappa^2 = max(Omega, 1)) so that the phase turns at a nearly uniform rate.
@@ -51,7 +51,7 @@
 /// statically indeterminate); a forced axial displacement has no finite response (diagnostic).
 ///
 /// Mode shapes: the null vector of Phi(L) combined with the solutions recorded at the request's
-/// stations (CVODE's dense output), u = Phi . t, w = Phi . n, tau = t . F, normalised and
+/// stations (one step of the method from the step's start, or CVODE's dense output), u = Phi . t, w = Phi . n, tau = t . F, normalised and
 /// integrated with the shared mode_tools. Forced response: the principal solutions from the fixed
 /// end, combined to meet the prescribed displacement at the driven end (one 2x2 solve per
 /// frequency); a frequency where det Phi(L) is at the integration-noise level is reported as
@@ -75,20 +75,21 @@
 
 namespace catena {
 
-/// CVODE's linear multistep family.
+/// The integrator of a shot (docs/methods/shooting.md, "Integrators").
 enum class ShootingMethod {
-  Adams,  ///< Adams-Moulton, orders 1-12: the system is oscillatory, not stiff (default)
-  Bdf     ///< BDF, orders 1-5 (for comparison / stiff variants)
+  RungeKutta,  ///< explicit Runge-Kutta, Verner's 6(5) pair (default)
+  Adams,       ///< CVODE's Adams-Moulton, orders 1-12
+  Bdf          ///< CVODE's BDF, orders 1-5 (for comparison / stiff variants)
 };
-/// "adams", "bdf".
+/// "rk", "adams", "bdf".
 std::string to_string(ShootingMethod method);
 
 /// Options of the shooting solver. Scene knobs: `rtol`, `atol`, `root_tolerance`, `method`,
 /// `nonlinear_solver`, `max_steps`, `max_condition`, `error_estimate`, `root_finder`.
 struct ShootingSolverOptions {
-  /// CVODE relative tolerance [-] (knob `rtol`). In [1e-14, 1e-2].
+  /// Relative tolerance of the integration [-] (knob `rtol`). In [1e-14, 1e-2].
   double relative_tolerance = 1e-10;
-  /// CVODE absolute tolerance on the scaled state (displacements in units of L, forces in units
+  /// Absolute tolerance of the integration on the scaled state (displacements in units of L, forces in units
   /// of the largest end tension; the basis has norm ~1) [-] (knob `atol`). 0 means
   /// relative_tolerance / 100. In [0, 1e-2].
   double absolute_tolerance = 0.0;
@@ -96,15 +97,15 @@ struct ShootingSolverOptions {
   /// relative_tolerance: the end determinant carries integration noise of that order, so a
   /// narrower bracket only costs shots without improving the frequency. In [0, 1e-2].
   double root_tolerance = 0.0;
-  /// Integration method (knob `method` = "adams" | "bdf").
-  ShootingMethod method = ShootingMethod::Adams;
+  /// Integration method (knob `method` = "rk" | "adams" | "bdf").
+  ShootingMethod method = ShootingMethod::RungeKutta;
   /// CVODE's nonlinear solver (knob `nonlinear_solver` = "newton" | "fixed_point"): Newton with
   /// the analytic Jacobian and SUNDIALS' dense LU (SUNDenseMatrix + SUNLinSol_Dense; default), or
   /// functional iteration (no Jacobian; the system is not stiff). Both take the same time within
   /// ~10% here (measured: CVODE's per-step vector work dominates); Newton needs ~40% fewer RHS
   /// evaluations.
   bool fixed_point_iteration = false;
-  /// Maximum CVODE steps per shot (knob `max_steps`). >= 100.
+  /// Maximum integration steps per shot (knob `max_steps`). >= 100.
   long max_steps = 500000;
   /// Re-orthonormalise the in-plane pair when cond(Gram) exceeds this (knob `max_condition`).
   /// In [2, 1e8].

@@ -90,7 +90,7 @@ std::pair<double, double> brent_zero_at_depth(const std::function<double(double)
     const double tol1 = 2.0 * std::numeric_limits<double>::epsilon() * std::abs(b) +
                         0.25 * relative_tolerance * std::abs(b);
     const double xm = 0.5 * (c - b);
-    if (std::abs(xm) <= tol1 || fb == 0.0) break;  // fb == 0 only as given at entry
+    if (std::abs(xm) <= tol1) break;
     choose_step(a, b, c, fa, fb, fc, tol1, xm, d, e);
     a = b;
     fa = fb;
@@ -106,6 +106,9 @@ std::pair<double, double> brent_zero_at_depth(const std::function<double(double)
 
 std::pair<double, double> brent_zero(const std::function<double(double)>& f, double a, double b,
                                      double fa, double fb, double relative_tolerance) {
+  // An end given exactly at the root is the root (a shot accurate to rounding can land there).
+  if (fa == 0.0) return {a, a};
+  if (fb == 0.0) return {b, b};
   return brent_zero_at_depth(f, a, b, fa, fb, relative_tolerance, 0);
 }
 

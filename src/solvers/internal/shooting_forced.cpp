@@ -4,9 +4,11 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "solvers/internal/shooting_profile.hpp"
 
@@ -17,6 +19,12 @@ namespace {
 // The largest relative error estimate of a response shooting returns; beyond it the forcing is
 // at a natural frequency within the integration's accuracy.
 constexpr double kResonanceEstimate = 0.1;
+
+// The tolerance factor of the shot that measures a response's error estimate, and the largest
+// ratio of its error to the error at the solver's tolerances assumed (the errors scale about
+// linearly with the tolerance: 0.01 expected, 0.1 allowed).
+constexpr double kEstimateFactor = 0.01;
+constexpr double kTightErrorRatio = 0.1;
 
 // The prescribed end displacement in the integration variables: which plane is integrated, the
 // scaled drive d (a D-vector), and why there is no response, if there is none.
@@ -78,6 +86,29 @@ void set_profiles(ForcedResponse& response, const Profile& p, const Vector& stat
   response.max_abs_tension_n = response.tension_n.cwiseAbs().maxCoeff();
 }
 
+// The response of one shot: the combination of its end basis that meets the drive.
+Profile response_profile(const Shot& shot, const Drive& drive, const ShootingCoefficients& k,
+                         const Vector& stations, bool from_b) {
+  const int D = drive.plane == Plane::InPlane ? 2 : 1;
+  const Eigen::MatrixXd phi_end = shot.y_end.topRows(D);
+  const Eigen::VectorXd c = phi_end.partialPivLu().solve(drive.d / k.length_m);
+  Profile p = evaluate_profile(shot, c, k, stations, from_b, drive.plane);
+  return drive.string_only ? string_as_inplane(p) : p;
+}
+
+// The largest change between two profiles of the same response, relative to each quantity's
+// largest magnitude (displacements and tension separately).
+double relative_change(const Profile& a, const Profile& b) {
+  double change = 0.0;
+  for (const auto& [x, y] : {std::pair{&a.u, &b.u}, std::pair{&a.w, &b.w}, std::pair{&a.v, &b.v},
+                             std::pair{&a.tension, &b.tension}}) {
+    if (x->size() == 0 || x->size() != y->size()) continue;
+    const double scale = y->cwiseAbs().maxCoeff();
+    if (scale > 0.0) change = std::max(change, (*x - *y).cwiseAbs().maxCoeff() / scale);
+  }
+  return change;
+}
+
 }  // namespace
 
 ForcedResponse shooting_forced_response(ShootingIntegrator& integrator,
@@ -92,12 +123,11 @@ ForcedResponse shooting_forced_response(ShootingIntegrator& integrator,
     return response;
   }
   const bool from_b = forced.end == CableEnd::A;  // start at the fixed end
-  const int D = drive.plane == Plane::InPlane ? 2 : 1;
   const std::vector<double> x = scaled_stations(stations, k.length_m, from_b);
   const Shot shot = integrator.shoot(omega, 1.0, &x, from_b);
-  // Resonance, relative to the integration's own accuracy: the response's error estimate
-  // rtol / |normalised det| (below) would reach kResonanceEstimate, i.e. the end determinant is
-  // within 1 / kResonanceEstimate of the integration error.
+  // Resonance, relative to the integration's own accuracy: the response's error, about
+  // rtol / |normalised det| (the combination below amplifies the basis's error by the condition
+  // of Phi(L)), would reach kResonanceEstimate.
   const double resonance_level = relative_tolerance / kResonanceEstimate;
   if (std::abs(shot.determinant) <= resonance_level) {
     response.diagnostic = fmt::format(
@@ -109,16 +139,17 @@ ForcedResponse shooting_forced_response(ShootingIntegrator& integrator,
   }
   near_resonance = std::abs(shot.determinant) < 1e-3;
   response.near_resonance = near_resonance;
-  const Eigen::MatrixXd phi_end = shot.y_end.topRows(D);
-  const Eigen::VectorXd c = phi_end.partialPivLu().solve(drive.d / k.length_m);
-  Profile p = evaluate_profile(shot, c, k, stations, from_b, drive.plane);
-  if (drive.string_only) p = string_as_inplane(p);
+  const Profile p = response_profile(shot, drive, k, stations, from_b);
   set_profiles(response, p, stations, drive.plane == Plane::InPlane || drive.string_only);
-  // The principal solutions carry a relative error up to ~10 rtol (the frequencies' target allows
-  // the same; against frobenius the forced error reached 9.1 rtol / |det| on the Gale C-2 curves);
-  // the D x D solve for the combination amplifies it by the condition of Phi(L), ~1 / |normalised
-  // det| (large near resonance).
-  response.relative_error_estimate = 10.0 * relative_tolerance / std::abs(shot.determinant);
+  // The error estimate is measured: the change D of the response when the shot is repeated at
+  // kEstimateFactor times the tolerances (it includes the amplification by the condition of
+  // Phi(L), ~1 / |normalised det|, near a resonance). With the tight shot's error at most
+  // kTightErrorRatio of this one's, the error e of this one satisfies |e| <= |D| / (1 - ratio).
+  // Never below the relative tolerance asked.
+  const Shot tight = integrator.shoot(omega, kEstimateFactor, &x, from_b);
+  const Profile q = response_profile(tight, drive, k, stations, from_b);
+  const double measured = relative_change(p, q) / (1.0 - kTightErrorRatio);
+  response.relative_error_estimate = std::max(measured, relative_tolerance);
   return response;
 }
 

@@ -15,6 +15,7 @@
 #include "solvers/internal/shooting_block_solver.hpp"
 #include "solvers/internal/shooting_conjugate_count.hpp"
 #include "solvers/internal/shooting_grounded.hpp"
+#include "solvers/internal/shooting_runge_kutta.hpp"
 #include "solvers/internal/shooting_sundials_handles.hpp"
 
 namespace catena::internal {
@@ -207,10 +208,7 @@ void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C,
 // log w, as C's inertia part is proportional to w^2 and nothing else depends on w (the balancing
 // kappa is held at its value for the shot).
 template <int D, bool Slope>
-int rhs(double x, N_Vector y, N_Vector ydot, void* user_data) {
-  const auto& data = *static_cast<const RhsData*>(user_data);
-  double* state = N_VGetArrayPointer(y);
-  double* derivative = N_VGetArrayPointer(ydot);
+void rhs_values(const RhsData& data, double x, const double* state, double* derivative) {
   Eigen::Map<const Basis<D>> Y(state);
   Eigen::Map<Basis<D>> dY(derivative);
   Square<D> B, C, inertia;
@@ -230,7 +228,20 @@ int rhs(double x, N_Vector y, N_Vector ydot, void* user_data) {
     dS.template bottomRows<D>() =
         -C * S.template topRows<D>() - (2.0 * data.slope_scale) * inertia * Phi;
   }
+}
+
+// rhs_values as CVODE calls it.
+template <int D, bool Slope>
+int cvode_rhs(double x, N_Vector y, N_Vector ydot, void* user_data) {
+  rhs_values<D, Slope>(*static_cast<const RhsData*>(user_data), x, N_VGetArrayPointer(y),
+                       N_VGetArrayPointer(ydot));
   return 0;
+}
+
+// rhs_values as RungeKuttaStepper calls it.
+template <int D, bool Slope>
+void runge_kutta_rhs(const void* data, double x, const double* y, double* dy) {
+  rhs_values<D, Slope>(*static_cast<const RhsData*>(data), x, y, dy);
 }
 
 // Analytic Jacobian of the linear part; the phase row is left zero (the phase feeds back into
@@ -371,37 +382,180 @@ double apply_jump(Eigen::Map<Basis<D>>& Y, const Square<D>& K) {
   return change;
 }
 
-// CVODE's step and RHS counters of the finished segments of one shot (ReInit resets them).
-struct StepCounts {
-  long steps = 0;
-  long rhs = 0;
-};
-
 }  // namespace
 
-// One CVODE instance with its vectors and linear algebra, for a state of `size` components.
-struct CvodeWorkspace {
-  // `slope_block` > 0: the state [Y, phase, S] of a shot with the slope, Y and S of that many
-  // components, solved by blocks (shooting_block_solver.hpp).
-  CvodeWorkspace(SUNContext context, sunindextype size, const IntegratorSettings& s,
-                 int slope_block)
-      : y(size, context),
-        scratch(size, context),
-        matrix(SUNDenseMatrix(size, size, context)),
-        linear_solver(slope_block > 0 ? make_block_linear_solver(context, slope_block)
-                                      : SUNLinSol_Dense(y.get(), matrix.get(), context)),
-        nonlinear_solver(s.fixed_point ? SUNNonlinSol_FixedPoint(y.get(), 0, context) : nullptr),
-        cvode(s.use_bdf ? CV_BDF : CV_ADAMS, context) {}
-  bool ok() const {
-    return y.ok() && scratch.ok() && matrix.ok() && linear_solver.ok() && cvode.ok();
+// One integration method as a shot drives it (header, "Integrators"): a state of fixed size,
+// advanced one accepted step at a time up to a stop point (a break or the end), and restarted in
+// place where the shot changes the state (a re-orthonormalisation, a point's jump, a new piece,
+// the end of the grounded run).
+class ShotStepper {
+ public:
+  virtual ~ShotStepper() = default;
+  virtual double* state() = 0;
+  /// A new shot from x = 0 with the state set: tolerances of Y (and S) and of the phase.
+  virtual void begin(double rtol, double atol, double atol_phase, double stop) = 0;
+  virtual void restart(double x, double stop) = 0;
+  /// One accepted step toward `stop`; returns the x reached.
+  virtual double step(double stop) = 0;
+  /// The state at xs inside the last step.
+  virtual void state_at(double xs, double* out) = 0;
+  /// Steps and right-hand-side evaluations since begin.
+  virtual long steps() const = 0;
+  virtual long rhs_evaluations() const = 0;
+};
+
+// CVODE (Adams or BDF) with its vectors and linear algebra, for the plain state [Y, phase] or the
+// state with the slope [Y, phase, S] (the latter solved by blocks: shooting_block_solver.hpp).
+class CvodeStepper final : public ShotStepper {
+ public:
+  CvodeStepper(SUNContext context, int dimension, bool slope, const IntegratorSettings& s,
+               RhsData& data)
+      : block_(2 * dimension * dimension),
+        slope_(slope),
+        size_(slope ? 2 * block_ + 1 : block_ + 1),
+        y_(size_, context),
+        scratch_(size_, context),
+        matrix_(SUNDenseMatrix(size_, size_, context)),
+        linear_solver_(slope ? make_block_linear_solver(context, block_)
+                             : SUNLinSol_Dense(y_.get(), matrix_.get(), context)),
+        nonlinear_solver_(s.fixed_point ? SUNNonlinSol_FixedPoint(y_.get(), 0, context) : nullptr),
+        cvode_(s.method == ShootingMethod::Bdf ? CV_BDF : CV_ADAMS, context) {
+    if (!(y_.ok() && scratch_.ok() && matrix_.ok() && linear_solver_.ok() && cvode_.ok())) {
+      throw ShootingFailure("could not allocate the SUNDIALS objects");
+    }
+    void* mem = cvode_.get();
+    N_VConst(0.0, y_.get());
+    CVRhsFn f = dimension == 2 ? (slope ? cvode_rhs<2, true> : cvode_rhs<2, false>)
+                               : (slope ? cvode_rhs<1, true> : cvode_rhs<1, false>);
+    CVLsJacFn jac = dimension == 2 ? (slope ? jacobian<2, true> : jacobian<2, false>)
+                                   : (slope ? jacobian<1, true> : jacobian<1, false>);
+    check(CVodeInit(mem, f, 0.0, y_.get()), "CVodeInit");
+    check(CVodeSetUserData(mem, &data), "CVodeSetUserData");
+    if (s.fixed_point) {
+      // Functional iteration (no Jacobian, no linear solve): the system is not stiff.
+      if (!nonlinear_solver_.get()) {
+        throw ShootingFailure("could not allocate SUNNonlinSol_FixedPoint");
+      }
+      check(CVodeSetNonlinearSolver(mem, nonlinear_solver_.get()), "CVodeSetNonlinearSolver");
+    } else {
+      check(CVodeSetLinearSolver(mem, linear_solver_.get(), matrix_.get()),
+            "CVodeSetLinearSolver");
+      check(CVodeSetJacFn(mem, jac), "CVodeSetJacFn");
+    }
+    check(CVodeSetMaxNumSteps(mem, s.max_steps), "CVodeSetMaxNumSteps");
   }
 
-  SerialVector y;
-  SerialVector scratch;
-  SundialsMatrix matrix;
-  SundialsLinearSolver linear_solver;
-  SundialsNonlinearSolver nonlinear_solver;
-  CvodeMemory cvode;
+  double* state() override { return y_.data(); }
+
+  void begin(double rtol, double atol, double atol_phase, double stop) override {
+    finished_steps_ = finished_rhs_ = 0;
+    void* mem = cvode_.get();
+    check(CVodeReInit(mem, 0.0, y_.get()), "CVodeReInit");
+    if (slope_) {
+      check(CVodeWFtolerances(mem, slope_error_weights), "CVodeWFtolerances");
+    } else {
+      N_VConst(atol, scratch_.get());
+      scratch_.data()[block_] = atol_phase;
+      check(CVodeSVtolerances(mem, rtol, scratch_.get()), "CVodeSVtolerances");
+    }
+    check(CVodeSetStopTime(mem, stop), "CVodeSetStopTime");
+  }
+
+  // ReInit resets CVODE's counters: the finished segment's are kept.
+  void restart(double x, double stop) override {
+    finished_steps_ = steps();
+    finished_rhs_ = rhs_evaluations();
+    check(CVodeReInit(cvode_.get(), x, y_.get()), "CVodeReInit", x);
+    check(CVodeSetStopTime(cvode_.get(), stop), "CVodeSetStopTime", x);
+  }
+
+  double step(double stop) override {
+    double x = 0.0;
+    check(CVode(cvode_.get(), stop, y_.get(), &x, CV_ONE_STEP), "CVode", x);
+    return x;
+  }
+
+  void state_at(double xs, double* out) override {
+    check(CVodeGetDky(cvode_.get(), xs, 0, scratch_.get()), "CVodeGetDky", xs);
+    std::copy_n(scratch_.data(), size_, out);
+  }
+
+  long steps() const override {
+    long n = 0;
+    CVodeGetNumSteps(cvode_.get(), &n);
+    return finished_steps_ + n;
+  }
+  long rhs_evaluations() const override {
+    long n = 0;
+    CVodeGetNumRhsEvals(cvode_.get(), &n);
+    return finished_rhs_ + n;
+  }
+
+ private:
+  static void check(int flag, const char* call, double x = 0.0) {
+    if (flag < 0) {
+      throw ShootingFailure(fmt::format("{} returned {} ({}) at x = {:.6g}", call,
+                                        cvode_flag_name(flag), flag, x));
+    }
+  }
+
+  int block_;
+  bool slope_;
+  sunindextype size_;
+  // Declaration order = construction order; destruction runs in reverse.
+  SerialVector y_;
+  SerialVector scratch_;
+  SundialsMatrix matrix_;
+  SundialsLinearSolver linear_solver_;
+  SundialsNonlinearSolver nonlinear_solver_;
+  CvodeMemory cvode_;
+  long finished_steps_ = 0;
+  long finished_rhs_ = 0;
+};
+
+// The explicit Runge-Kutta method (shooting_runge_kutta.hpp). Error control covers Y and the
+// phase; S rides along with the same steps (as with CVODE's weights: slope_error_weights).
+class RungeKuttaShotStepper final : public ShotStepper {
+ public:
+  RungeKuttaShotStepper(int dimension, bool slope, const RhsData& data)
+      : block_(2 * dimension * dimension),
+        stepper_(verner_6_5(), slope ? 2 * block_ + 1 : block_ + 1,
+                 dimension == 2 ? (slope ? runge_kutta_rhs<2, true> : runge_kutta_rhs<2, false>)
+                                : (slope ? runge_kutta_rhs<1, true> : runge_kutta_rhs<1, false>),
+                 &data) {}
+
+  double* state() override { return stepper_.state(); }
+
+  void begin(double rtol, double atol, double atol_phase, double stop) override {
+    Eigen::VectorXd tolerances = Eigen::VectorXd::Constant(block_ + 1, atol);
+    tolerances(block_) = atol_phase;
+    stepper_.set_tolerances(rtol, tolerances);
+    stepper_.set_stop(stop);
+    stepper_.begin(0.0);
+  }
+
+  void restart(double x, double stop) override {
+    stepper_.restart(x);
+    stepper_.set_stop(stop);
+  }
+
+  double step(double stop) override {
+    stepper_.set_stop(stop);
+    try {
+      return stepper_.step();
+    } catch (const std::runtime_error& e) {
+      throw ShootingFailure(fmt::format("Runge-Kutta step at x = {:.6g}: {}", stepper_.x(),
+                                        e.what()));
+    }
+  }
+
+  void state_at(double xs, double* out) override { stepper_.state_at(xs, out); }
+  long steps() const override { return stepper_.steps(); }
+  long rhs_evaluations() const override { return stepper_.rhs_evaluations(); }
+
+ private:
+  int block_;
+  RungeKuttaStepper stepper_;
 };
 
 struct ShootingIntegrator::Impl {
@@ -412,49 +566,21 @@ struct ShootingIntegrator::Impl {
     data.dimension = dimension;
     if (dimension == 2) set_axial_frame(data.coefficients, data);
     if (!context.ok()) throw ShootingFailure("could not allocate the SUNDIALS objects");
-    plain = make_workspace(false);
-    ws = plain.get();
+    plain = make_stepper(false);
+    stepper = plain.get();
     const std::size_t run = grounded_run_length(data.coefficients, dimension);
     if (run > 0) {
       grounded = std::make_unique<GroundedRun>(data.coefficients, dimension, run, settings.max_steps);
     }
   }
 
-  // The workspace of the plain shot (Y and the phase) or of the shot with the frequency
+  // The stepper of the plain shot (Y and the phase) or of the shot with the frequency
   // derivative (Y, the phase and the scaled derivative of Y: header, "Frequency derivative").
-  std::unique_ptr<CvodeWorkspace> make_workspace(bool slope) {
-    const int block = 2 * dimension * dimension;
-    const bool fixed_point = settings.fixed_point;
-    const sunindextype size = slope ? 2 * block + 1 : block + 1;
-    auto w = std::make_unique<CvodeWorkspace>(context.get(), size, settings, slope ? block : 0);
-    if (!w->ok()) throw ShootingFailure("could not allocate the SUNDIALS objects");
-    void* mem = w->cvode.get();
-    N_VConst(0.0, w->y.get());
-    CVRhsFn f = dimension == 2 ? (slope ? rhs<2, true> : rhs<2, false>)
-                               : (slope ? rhs<1, true> : rhs<1, false>);
-    CVLsJacFn jac = dimension == 2 ? (slope ? jacobian<2, true> : jacobian<2, false>)
-                                   : (slope ? jacobian<1, true> : jacobian<1, false>);
-    check(CVodeInit(mem, f, 0.0, w->y.get()), "CVodeInit");
-    check(CVodeSetUserData(mem, &data), "CVodeSetUserData");
-    if (fixed_point) {
-      // Functional iteration (no Jacobian, no linear solve): the system is not stiff.
-      if (!w->nonlinear_solver.get())
-        throw ShootingFailure("could not allocate SUNNonlinSol_FixedPoint");
-      check(CVodeSetNonlinearSolver(mem, w->nonlinear_solver.get()), "CVodeSetNonlinearSolver");
-    } else {
-      check(CVodeSetLinearSolver(mem, w->linear_solver.get(), w->matrix.get()),
-            "CVodeSetLinearSolver");
-      check(CVodeSetJacFn(mem, jac), "CVodeSetJacFn");
+  std::unique_ptr<ShotStepper> make_stepper(bool slope) {
+    if (settings.method == ShootingMethod::RungeKutta) {
+      return std::make_unique<RungeKuttaShotStepper>(dimension, slope, data);
     }
-    check(CVodeSetMaxNumSteps(mem, settings.max_steps), "CVodeSetMaxNumSteps");
-    return w;
-  }
-
-  void check(int flag, const char* call, double x = 0.0) const {
-    if (flag < 0) {
-      throw ShootingFailure(
-          fmt::format("{} returned {} ({}) at s/L = {:.6g}", call, cvode_flag_name(flag), flag, x));
-    }
+    return std::make_unique<CvodeStepper>(context.get(), dimension, slope, settings, data);
   }
 
   template <int D>
@@ -470,28 +596,27 @@ struct ShootingIntegrator::Impl {
   template <int D>
   void record_passed_stations(StationRecorder<D>& recorder, double x, bool before_x_only = false);
   template <int D>
-  void restart(Shot& shot, double x, StepCounts& finished);
+  void restart(Shot& shot, double x);
   template <int D>
   void finish_shot(Shot& shot);
   template <int D>
   void set_slopes(Shot& shot, const Square<D>& Phi, const Square<D>& F) const;
   template <int D>
-  void cross_break(double x, StepCounts& finished);
+  void cross_break(double x);
   template <int D>
-  double shoot_grounded(Shot& shot, StationRecorder<D>& recorder, StepCounts& finished);
+  double shoot_grounded(Shot& shot, StationRecorder<D>& recorder);
   template <int D>
   void set_grounded_state(const GroundedFrame& frame, Shot& shot, Eigen::VectorXd& pushed);
   double stop_time() const { return next_break < breaks.size() ? breaks[next_break].x : 1.0; }
-  void add_segment_counts(StepCounts& counts) const;
 
   IntegratorSettings settings;
   int dimension;
-  // Declaration order = construction order; destruction runs in reverse (workspaces first).
+  // Declaration order = construction order; destruction runs in reverse (steppers first).
   SundialsContext context;
-  std::unique_ptr<CvodeWorkspace> plain;
-  std::unique_ptr<CvodeWorkspace> with_slope;  // made at the first shot that asks for the slope
-  CvodeWorkspace* ws = nullptr;                // the workspace of the current shot
-  RhsData data;
+  RhsData data;  // the steppers' right-hand sides point to it
+  std::unique_ptr<ShotStepper> plain;
+  std::unique_ptr<ShotStepper> with_slope;  // made at the first shot that asks for the slope
+  ShotStepper* stepper = nullptr;           // the stepper of the current shot
   std::vector<Break> breaks;  // of the current shot, in the order of integration
   std::size_t next_break = 0;
   // The seabed part of a shot from A (shooting_grounded.hpp); null when the line starts off it.
@@ -513,15 +638,15 @@ void ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor,
   // The slope is carried on the general shot only (not through the grounded run), and only where
   // it is defined (w > 0) and asked for without stations.
   slope_shot = slope && !grounded_shot && omega > 0.0;
-  if (slope_shot && !with_slope) with_slope = make_workspace(true);
-  ws = slope_shot ? with_slope.get() : plain.get();
+  if (slope_shot && !with_slope) with_slope = make_stepper(true);
+  stepper = slope_shot ? with_slope.get() : plain.get();
   data.omega2 = data.coefficients.scaled_omega2(omega);
   data.kappa2 = settings.balance ? std::max(std::sqrt(data.omega2), 1.0) : 1.0;
   data.from_b = from_b;
   data.piece = from_b ? data.coefficients.pieces.size() - 1 : 0;
   breaks = breaks_of(data.coefficients, from_b);
   next_break = 0;
-  double* state = ws->y.data();
+  double* state = stepper->state();
   Eigen::Map<Basis<D>> Y(state);
   Y.setZero();
   Y.template bottomRows<D>().setIdentity();
@@ -532,90 +657,82 @@ void ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor,
     Eigen::Map<Basis<D>>(state + 2 * D * D + 1).setZero();
     data.slope_scale = std::max(atol, 1e-3 * rtol) / (kSlopeAccuracy * data.kappa2);
   }
-  void* mem = ws->cvode.get();
   if (grounded_shot) {
     // The grounded run's columns start as F^ = I in the physical variables: in the carried ones
     // F~ = Q / kappa (det > 0, so the sign of det Phi and the phase are those of F~ = I).
     Y.template bottomRows<D>() = to_carried<D>(Basis<D>(Y), data).template bottomRows<D>();
     grounded->begin(data.omega2, rtol, atol);
   }
-  check(CVodeReInit(mem, 0.0, ws->y.get()), "CVodeReInit");
   // The phase only has to be right to well within pi (it fixes the winding; the fractional part
   // comes from arg det Z at the end), so its absolute tolerance is looser: 1e-6 rad per step.
   // Tight control of it cost ~20% more steps for nothing.
   data.rtol = rtol;
   data.atol = atol;
   data.atol_phase = std::max(atol, 1e-6);
-  if (slope_shot) {
-    check(CVodeWFtolerances(mem, slope_error_weights), "CVodeWFtolerances");
-  } else {
-    N_VConst(atol, ws->scratch.get());
-    ws->scratch.data()[2 * D * D] = data.atol_phase;
-    check(CVodeSVtolerances(mem, rtol, ws->scratch.get()), "CVodeSVtolerances");
-  }
-  check(CVodeSetStopTime(mem, stop_time()), "CVodeSetStopTime");
+  stepper->begin(rtol, atol, data.atol_phase, stop_time());
 }
 
-// Stations passed by the last step (ending at x), from CVODE's interpolant.
+// Stations passed by the last step (ending at x), from the stepper's interpolant.
 template <int D>
-void ShootingIntegrator::Impl::record_passed_stations(StationRecorder<D>& recorder, double x, bool before_x_only) {
+void ShootingIntegrator::Impl::record_passed_stations(StationRecorder<D>& recorder, double x,
+                                                      bool before_x_only) {
   while (recorder.next_at_or_before(x) && !(before_x_only && recorder.next_station() >= x)) {
     const double xs = recorder.next_station();
     if (xs >= x) {
-      recorder.record(Eigen::Map<const Basis<D>>(ws->y.data()));
+      recorder.record(Eigen::Map<const Basis<D>>(stepper->state()));
     } else {
-      check(CVodeGetDky(ws->cvode.get(), xs, 0, ws->scratch.get()), "CVodeGetDky", xs);
-      recorder.record(Eigen::Map<const Basis<D>>(ws->scratch.data()));
+      Basis<D> interpolated;
+      if (slope_shot) {
+        // The slope shot's state is longer; only its Y is recorded.
+        Eigen::VectorXd full(4 * D * D + 1);
+        stepper->state_at(xs, full.data());
+        interpolated = Eigen::Map<const Basis<D>>(full.data());
+      } else {
+        Eigen::Matrix<double, 2 * D * D + 1, 1> full;
+        stepper->state_at(xs, full.data());
+        interpolated = Eigen::Map<const Basis<D>>(full.data());
+      }
+      recorder.record(interpolated);
     }
   }
 }
 
-void ShootingIntegrator::Impl::add_segment_counts(StepCounts& counts) const {
-  long steps = 0, evaluations = 0;
-  CVodeGetNumSteps(ws->cvode.get(), &steps);
-  CVodeGetNumRhsEvals(ws->cvode.get(), &evaluations);
-  counts.steps += steps;
-  counts.rhs += evaluations;
-}
-
-// Re-orthonormalises the basis at x, keeps R, and restarts CVODE there.
+// Re-orthonormalises the basis at x, keeps R, and restarts the stepper there.
 template <int D>
-void ShootingIntegrator::Impl::restart(Shot& shot, double x, StepCounts& finished) {
-  Eigen::Map<Basis<D>> Y(ws->y.data());
+void ShootingIntegrator::Impl::restart(Shot& shot, double x) {
+  Eigen::Map<Basis<D>> Y(stepper->state());
   const Square<D> R = orthonormalise<D>(Y, x);
   if (slope_shot) {
     // The slope of Y R0^{-1} for the constant R0 = R: the normalised determinant and the angles
     // are those of Y, so their slopes are too.
-    Eigen::Map<Basis<D>> S(ws->y.data() + 2 * D * D + 1);
+    Eigen::Map<Basis<D>> S(stepper->state() + 2 * D * D + 1);
     S = (S * R.inverse()).eval();
   }
   shot.log_growth += R.diagonal().array().log().sum();
   shot.segment_r.emplace_back(R);
-  add_segment_counts(finished);
-  check(CVodeReInit(ws->cvode.get(), x, ws->y.get()), "CVodeReInit", x);
-  check(CVodeSetStopTime(ws->cvode.get(), stop_time()), "CVodeSetStopTime");
+  stepper->restart(x, stop_time());
 }
 
 // A break of a general line reached at x: the next piece's coefficients, the point's jump of the
-// internal force (D continuous) with the phase carried across exactly, and CVODE restarted.
+// internal force (D continuous) with the phase carried across exactly, and the stepper restarted.
 template <int D>
-void ShootingIntegrator::Impl::cross_break(double x, StepCounts& finished) {
+void ShootingIntegrator::Impl::cross_break(double x) {
   const Break& b = breaks[next_break++];
   data.piece = b.next_piece;
+  double* state = stepper->state();
   if (b.point >= 0) {
-    Eigen::Map<Basis<D>> Y(ws->y.data());
-    const Square<D> K = point_jump<D>(data, data.coefficients.points[static_cast<std::size_t>(b.point)]);
+    Eigen::Map<Basis<D>> Y(state);
+    const Square<D> K =
+        point_jump<D>(data, data.coefficients.points[static_cast<std::size_t>(b.point)]);
     if (slope_shot) {
       // K is proportional to w^2: S_F -> S_F - K S_Phi - 2 c K Phi (Phi is continuous).
-      Eigen::Map<Basis<D>> S(ws->y.data() + 2 * D * D + 1);
+      Eigen::Map<Basis<D>> S(state + 2 * D * D + 1);
       S.template bottomRows<D>() -= K * S.template topRows<D>() +
                                     (2.0 * data.slope_scale) * K * Y.template topRows<D>();
     }
-    ws->y.data()[2 * D * D] += apply_jump<D>(Y, K);
+    state[2 * D * D] += apply_jump<D>(Y, K);
   }
-  add_segment_counts(finished);
-  check(CVodeReInit(ws->cvode.get(), x, ws->y.get()), "CVodeReInit", x);
-  check(CVodeSetStopTime(ws->cvode.get(), stop_time()), "CVodeSetStopTime");
+  stepper->restart(x, stop_time());
 }
 
 // The grounded run's frame as the carried state: the growth since the last R factor goes into
@@ -640,7 +757,7 @@ void ShootingIntegrator::Impl::set_grounded_state(const GroundedFrame& frame, Sh
     physical(j, j) = frame.phi(j);
     physical(D + j, j) = frame.force(j);
   }
-  Eigen::Map<Basis<D>> Y(ws->y.data());
+  Eigen::Map<Basis<D>> Y(stepper->state());
   Y = to_carried<D>(physical, data);
   const Square<D> Phi = Y.template topRows<D>(), F = Y.template bottomRows<D>();
   // The count formula fixes the phase only modulo pi (the unitary angles give 2 theta): the phase
@@ -652,44 +769,38 @@ void ShootingIntegrator::Impl::set_grounded_state(const GroundedFrame& frame, Sh
   // seabed, mode 5: estimate 7e-2 for a root right to 1e-13).
   const double from_count = kPi * (D - frame.count) - 0.5 * unitary_angles<D>(Phi, F).sum();
   const double modulo = frame_phase<D>(Phi, F);
-  ws->y.data()[2 * D * D] = modulo + 2.0 * kPi * std::round((from_count - modulo) / (2.0 * kPi));
+  stepper->state()[2 * D * D] = modulo + 2.0 * kPi * std::round((from_count - modulo) / (2.0 * kPi));
 }
 
-// The grounded run from x = 0 to its end, recording the stations on it; CVODE restarted there
-// on the next piece. Returns the x where the run ended.
+// The grounded run from x = 0 to its end, recording the stations on it; the stepper restarted
+// there on the next piece. Returns the x where the run ended.
 template <int D>
-double ShootingIntegrator::Impl::shoot_grounded(Shot& shot, StationRecorder<D>& recorder,
-                                                StepCounts& finished) {
+double ShootingIntegrator::Impl::shoot_grounded(Shot& shot, StationRecorder<D>& recorder) {
   const double end = grounded->end_x();
   Eigen::VectorXd pushed = Eigen::VectorXd::Zero(D);
-  const Eigen::Map<const Basis<D>> Y(ws->y.data());
+  const Eigen::Map<const Basis<D>> Y(stepper->state());
   while (recorder.next_at_or_before(end)) {
     set_grounded_state<D>(grounded->advance_to(recorder.next_station()), shot, pushed);
     recorder.record(Y);
   }
   set_grounded_state<D>(grounded->advance_to(end), shot, pushed);
-  finished.steps += grounded->steps();
-  finished.rhs += grounded->rhs_evaluations();
   next_break = grounded->pieces();
   if (end >= 1.0) return 1.0;
   data.piece = next_break;
-  check(CVodeReInit(ws->cvode.get(), end, ws->y.get()), "CVodeReInit", end);
-  check(CVodeSetStopTime(ws->cvode.get(), stop_time()), "CVodeSetStopTime", end);
+  stepper->restart(end, stop_time());
   return end;
 }
 
-// CVODE one step at a time from x = 0 to 1, recording stations and guarding independence.
+// The stepper one step at a time from x = 0 to 1, recording stations and guarding independence.
 template <int D>
 void ShootingIntegrator::Impl::integrate(Shot& shot, StationRecorder<D>& recorder, bool from_b) {
-  const Eigen::Map<const Basis<D>> Y(ws->y.data());
-  StepCounts finished;
+  const Eigen::Map<const Basis<D>> Y(stepper->state());
   long steps_total = 0;
-  double x = grounded_shot ? shoot_grounded<D>(shot, recorder, finished) : 0.0;
+  double x = grounded_shot ? shoot_grounded<D>(shot, recorder) : 0.0;
   while (x < 1.0) {
-    const int flag = CVode(ws->cvode.get(), stop_time(), ws->y.get(), &x, CV_ONE_STEP);
-    check(flag, "CVode", from_b ? 1.0 - x : x);
+    x = stepper->step(stop_time());
     if (++steps_total > settings.max_steps) {
-      throw ShootingFailure(fmt::format("more than {} CVODE steps (max_steps) at s/L = {:.6g}",
+      throw ShootingFailure(fmt::format("more than {} integration steps (max_steps) at s/L = {:.6g}",
                                         settings.max_steps, from_b ? 1.0 - x : x));
     }
     // A station on a break gets the state on its b side, where the coefficients' tangent and
@@ -698,18 +809,21 @@ void ShootingIntegrator::Impl::integrate(Shot& shot, StationRecorder<D>& recorde
     const bool at_break = next_break < breaks.size() && x >= breaks[next_break].x;
     record_passed_stations(recorder, x, at_break && !from_b);
     if (x >= 1.0) break;
-    if (at_break) cross_break<D>(x, finished);
-    if (needs_restart<D>(Y, settings.max_condition)) restart<D>(shot, x, finished);
+    if (at_break) cross_break<D>(x);
+    if (needs_restart<D>(Y, settings.max_condition)) restart<D>(shot, x);
   }
-  add_segment_counts(finished);
-  shot.steps = finished.steps;
-  shot.rhs_evaluations = finished.rhs;
+  shot.steps = stepper->steps();
+  shot.rhs_evaluations = stepper->rhs_evaluations();
+  if (grounded_shot) {
+    shot.steps += grounded->steps();
+    shot.rhs_evaluations += grounded->rhs_evaluations();
+  }
 }
 
 // The unscaled end basis, the count and the determinant of the shot, and the running totals.
 template <int D>
 void ShootingIntegrator::Impl::finish_shot(Shot& shot) {
-  const double* state = ws->y.data();
+  const double* state = stepper->state();
   const Eigen::Map<const Basis<D>> Y(state);
   shot.y_end = to_physical<D>(Y, data);
   // Count and determinant use the carried (Hamiltonian-form) basis Y.
@@ -735,7 +849,7 @@ void ShootingIntegrator::Impl::finish_shot(Shot& shot) {
 //   dG = dPhi^T Phi + Phi^T dPhi + dF^T F + F^T dF,   d angle = -2 (Phi dF - F dPhi) / (Phi^2 + F^2).
 template <int D>
 void ShootingIntegrator::Impl::set_slopes(Shot& shot, const Square<D>& Phi, const Square<D>& F) const {
-  const Eigen::Map<const Basis<D>> S(ws->y.data() + 2 * D * D + 1);
+  const Eigen::Map<const Basis<D>> S(stepper->state() + 2 * D * D + 1);
   const double to_slope = 1.0 / (data.slope_scale * shot.omega_rad_s);  // S -> dY/dw
   // The balancing kappa^2 = max(Omega, 1) moves with w as well (kappa ~ sqrt(w) above 1): the
   // carried Phi~ = kappa Phi^ and F~ = F^ / kappa gain +-(dkappa/dw / kappa) = +-1/(2 w) of
@@ -771,7 +885,7 @@ Shot ShootingIntegrator::Impl::shoot(double omega,
   shot.omega_rad_s = omega;
   begin_shot<D>(omega, tolerance_factor, from_b, slope);
   StationRecorder<D> recorder(shot, stations, data);
-  const Eigen::Map<const Basis<D>> Y(ws->y.data());
+  const Eigen::Map<const Basis<D>> Y(stepper->state());
   while (recorder.next_at_or_before(0.0)) recorder.record(Y);
   integrate<D>(shot, recorder, from_b);
   recorder.record_rest(Y);

@@ -72,6 +72,7 @@
 #include <vector>
 
 #include "catena/core/types.hpp"
+#include "catena/solvers/shooting_solver.hpp"
 #include "solvers/internal/shooting_coefficients.hpp"
 
 namespace catena::internal {
@@ -80,8 +81,8 @@ namespace catena::internal {
 struct IntegratorSettings {
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 1e-12;
-  bool use_bdf = false;        ///< CV_BDF instead of CV_ADAMS
-  bool fixed_point = false;    ///< fixed-point nonlinear iteration instead of Newton + dense LU
+  ShootingMethod method = ShootingMethod::RungeKutta;  ///< the stepper (header, "Integrators")
+  bool fixed_point = false;    ///< CVODE: fixed-point iteration instead of Newton + dense LU
   long max_steps = 200000;     ///< per shot
   double max_condition = 1e2;  ///< re-orthonormalise when cond(G) exceeds this
   bool balance = true;         ///< rescale Phi, F by kappa^2 = max(Omega, 1) (off only for studies)

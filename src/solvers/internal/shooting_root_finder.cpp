@@ -216,15 +216,20 @@ void ShootingRootFinder::raise_to_count(double& top, int num_modes) {
   }
 }
 
-// Largest sampled omega with count < n, and the smallest sample above it with count >= n.
+// Largest sampled omega below the n-th eigenvalue, and the smallest sample above it that is not.
+// Below means count < n; out of plane it means h_n < 0, which is the same except in the 1e-12 rad
+// window at the root (shooting_conjugate_count.cpp, to_angle_range), where a shot accurate to
+// rounding can give the count n with h_n = -1e-15: the bracket must carry the signs the
+// refinement narrows by.
 std::pair<double, double> ShootingRootFinder::bracket(int n) const {
+  auto below = [this, n](const Sample& s) { return scalar_ ? count_function(s, n) < 0.0 : s.count < n; };
   double lo = 0.0;
   for (const auto& [omega, sample] : samples_) {
-    if (sample.count < n) lo = std::max(lo, omega);
+    if (below(sample)) lo = std::max(lo, omega);
   }
   double hi = samples_.rbegin()->first;
   for (auto it = samples_.upper_bound(lo); it != samples_.end(); ++it) {
-    if (it->second.count >= n) {
+    if (!below(it->second)) {
       hi = it->first;
       break;
     }
@@ -336,6 +341,9 @@ double ShootingRootFinder::newton_start(int n, double a, double b) const {
 std::optional<Root> ShootingRootFinder::refine_newton(int n, double& lo, double& hi) {
   constexpr int kMaxNewtonShots = 10;
   double fb = end_value(samples_.at(hi), n);
+  // The upper end exactly at the root (an accurate shot can land there: the count function is 0
+  // to the last bit) gives no sign to narrow by: Brent takes the exact zero.
+  if (fb == 0.0) return std::nullopt;
   double x = newton_start(n, lo, hi), last_step = std::numeric_limits<double>::infinity();
   if (std::optional<Root> root = tight_newton_root(n, lo, hi, x)) return root;
   std::optional<ModelPoint> previous;
