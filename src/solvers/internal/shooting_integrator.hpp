@@ -1,7 +1,9 @@
 #pragma once
 /// \file
 /// The integration core of the `shooting` solver (docs/methods/shooting.md): one "shot" integrates the
-/// principal solutions of the linearised cable equations along s with CVODE, for one frequency.
+/// principal solutions of the linearised cable equations along s, for one frequency, with an
+/// explicit Runge-Kutta 6(5) pair (shooting_runge_kutta.hpp) or CVODE's Adams or BDF ("Integrators"
+/// in docs/methods/shooting.md).
 ///
 /// Scaled first-order system. With x = s / L, Phi^ = Phi / L and F^ = F / T_ref (T_ref = the
 /// larger end tension), the harmonic equations (A Phi')' + w^2 Mmat Phi = 0 become
@@ -25,10 +27,10 @@
 /// count_conjugate_points (shooting_conjugate_count.hpp). Out of plane this is Pruefer's angle.
 ///
 /// Loss of independence. The two in-plane columns can grow at different exponential rates (the
-/// "chain" solutions of a curved inextensible cable, or large lambda^2). After every CVODE step the
+/// "chain" solutions of a curved inextensible cable, or large lambda^2). After every step the
 /// Gram matrix G is checked; when its condition number exceeds `max_condition` (or the basis scale
 /// leaves [1e-6, 1e6]) the basis is replaced by the Q of its QR factorisation with positive
-/// diagonal R (so det R > 0: the sign of det Phi and theta are unchanged) and CVODE is restarted.
+/// diagonal R (so det R > 0: the sign of det Phi and theta are unchanged) and the stepper restarted.
 /// The R factors are kept so that a combination of the final basis maps back to every segment.
 ///
 /// Seabed. A shot from a starts with the grounded pieces of a line resting on the seabed
@@ -88,7 +90,8 @@ struct IntegratorSettings {
   bool balance = true;         ///< rescale Phi, F by kappa^2 = max(Omega, 1) (off only for studies)
 };
 
-/// A CVODE failure (flag name, position) inside a shot; the solver turns it into a summary.
+/// An integration failure (CVODE's flag name, or the stepper's reason, and the position) inside a
+/// shot; the solver turns it into a summary.
 class ShootingFailure : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -126,7 +129,7 @@ struct Shot {
   double log_growth = 0.0;
 };
 
-/// Integrates principal solutions for one plane; holds CVODE's memory between shots.
+/// Integrates principal solutions for one plane; holds the steppers between shots.
 class ShootingIntegrator {
  public:
   ShootingIntegrator(Plane plane,
@@ -140,7 +143,7 @@ class ShootingIntegrator {
   /// at s = L and integrates toward s = 0 (then F is returned with its physical sign). Stations
   /// `stations_x` (x = s/L, in the order of integration) are recorded when given. `with_slope`
   /// carries the frequency derivative (header, "Frequency derivative"; Shot::has_slope says
-  /// whether it was). Throws ShootingFailure when CVODE fails.
+  /// whether it was). Throws ShootingFailure when the integration fails.
   Shot shoot(double omega_rad_s,
              double tolerance_factor = 1.0,
              const std::vector<double>* stations_x = nullptr,
@@ -158,7 +161,7 @@ class ShootingIntegrator {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Relative accuracy to which CVODE controls the carried frequency derivative (header).
+/// Relative accuracy to which the carried frequency derivative is integrated (header).
 constexpr double kSlopeAccuracy = 1e-6;
 
 /// Largest axial stretch sigma (a straight inextensible cable has no axial scale).
