@@ -8,6 +8,8 @@
 //   - 10 modes in plane and out of plane at N = 1000 without Richardson (N/2 for the estimate);
 //   - the default settings (N = 400 with Richardson: 400 and 800) against SciPy at N = 1000;
 //   - 1, 6 and 20 modes per plane (N = 1000, no Richardson);
+//   - `shooting` at its defaults (rtol 1e-10), 6 and 10 modes per plane, against the same SciPy
+//     call: the exact answer against the approximate one;
 //   - scaling: N = 1e3 ... 1e6 in plane, 10 modes, no Richardson: wall time, time per element and
 //     the child's peak resident set.
 //
@@ -31,6 +33,7 @@
 #include <vector>
 
 #include "catena/solvers/fe_solver.hpp"
+#include "catena/solvers/shooting_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 #include "solvers/internal/fe_operators.hpp"
@@ -62,12 +65,13 @@ struct Scene {
   }
 };
 
-// One fe run as a user asks for it.
+// One fe run as a user asks for it (or, with `shooting`, one shooting run at its defaults).
 struct FeCase {
   int elements = 1000;
   bool richardson = false;
   Plane plane = Plane::InPlane;
   int modes = 10;
+  bool shooting = false;
 };
 
 // What one Catena run reports: wall_time_s, frequencies, the child's peak resident set.
@@ -84,7 +88,9 @@ CatenaRun run_in_process(const Scene& scene, const FeCase& fe) {
   FeSolverOptions options;
   options.elements = fe.elements;
   options.richardson = fe.richardson;
-  const SolverOutput output = solve_fe(scene.problem, scene.statics, scene.groups, request, options);
+  const SolverOutput output =
+      fe.shooting ? solve_shooting(scene.problem, scene.statics, scene.groups, request)
+                  : solve_fe(scene.problem, scene.statics, scene.groups, request, options);
   CatenaRun run;
   run.wall_s = output.summary.wall_time_s;
   const auto& result = fe.plane == Plane::InPlane ? output.inplane : output.outofplane;
@@ -232,7 +238,7 @@ std::string machine_line() {
 std::string comparison_table(const Options& options, const Scene& scene) {
   const int N = options.tiny ? 40 : 1000, N_default = options.tiny ? 20 : 400;
   std::string out = fmt::format(
-      "mooring line (L = 1000 m, EA = 5e8 N); Catena: solve_fe's wall_time_s, in a fresh process; SciPy: eigsh\n"
+      "mooring line (L = 1000 m, EA = 5e8 N); Catena: solve_fe's (solve_shooting's) wall_time_s, in a fresh process; SciPy: eigsh\n"
       "shift-invert (sigma = 0, tol 1e-10) on the matrices of fe's mesh of N = {} elements; medians of {}\n"
       "alternating runs. diff: largest relative difference of the frequencies (Catena's are extrapolated in\n"
       "the Richardson row, so there it is Catena's accuracy gain over the N = {} mesh)\n",
@@ -251,6 +257,11 @@ std::string comparison_table(const Options& options, const Scene& scene) {
       out += comparison_row(options, scene,
                             fmt::format("{}, N = {}, no Richardson", plane == Plane::InPlane ? "in-plane" : "out-of-plane", N),
                             {N, false, plane, modes}, N);
+  for (Plane plane : {Plane::InPlane, Plane::OutOfPlane})
+    for (int modes : {6, 10})
+      out += comparison_row(options, scene,
+                            fmt::format("{}, shooting (rtol 1e-10)", plane == Plane::InPlane ? "in-plane" : "out-of-plane"),
+                            {N, false, plane, modes, true}, N);
   return out;
 }
 

@@ -1,75 +1,20 @@
 #include "solvers/internal/shooting_integrator.hpp"
 
-#include <cvode/cvode.h>
-#include <cvode/cvode_ls.h>
 #include <fmt/format.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
-#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <complex>
 
-#include "solvers/internal/shooting_block_solver.hpp"
 #include "solvers/internal/shooting_conjugate_count.hpp"
 #include "solvers/internal/shooting_grounded.hpp"
-#include "solvers/internal/shooting_runge_kutta.hpp"
+#include "solvers/internal/shooting_steppers.hpp"
 #include "solvers/internal/shooting_sundials_handles.hpp"
 
 namespace catena::internal {
 
 namespace {
-
-template <int D>
-using Basis = Eigen::Matrix<double, 2 * D, D>;
-template <int D>
-using Square = Eigen::Matrix<double, D, D>;
-
-// Everything the right-hand sides need (CVODE's user data, the Runge-Kutta stepper's data).
-struct RhsData {
-  ShootingCoefficients coefficients;
-  int dimension = 2;
-  double omega2 = 0.0;  // scaled Omega^2
-  // Symplectic rescaling Phi~ = kappa Phi^, F~ = F^ / kappa with kappa^2 = max(Omega, 1): it
-  // balances B and C for the transverse wave, so that the phase turns at a nearly uniform rate
-  // (a Pruefer angle of unbalanced variables turns in bursts and costs CVODE many steps).
-  double kappa2 = 1.0;
-  bool from_b = false;
-  // In plane, the constant symplectic change of variables Phi~ = P Phi^, F~ = P^{-T} F^ into the
-  // axial frame (axial_frame in the header): P = diag(sigma, 1) R^T, Q = P^{-T}.
-  Eigen::Matrix2d to_axial = Eigen::Matrix2d::Identity();
-  Eigen::Matrix2d to_axial_force = Eigen::Matrix2d::Identity();
-  // The piece being integrated (a general line restarts the stepper at every break).
-  std::size_t piece = 0;
-  // A shot with the frequency derivative carries S = slope_scale w dY/dw after Y and the phase
-  // (header, "Frequency derivative").
-  double slope_scale = 0.0;
-  // The tolerances of the current shot (slope_error_weights).
-  double rtol = 1e-10;
-  double atol = 1e-12;
-  double atol_phase = 1e-6;
-};
-
-// CVODE's error weights for a shot with the slope: those of the plain shot for Y and the phase,
-// none for S, and the weights scaled by sqrt(N / N_plain) so that the root-mean-square norm over
-// all N components equals the plain shot's over its own. The steps are then chosen for Y and the
-// phase exactly as without the slope: S, integrated with the same steps (the variational equation
-// is linear, so the corrector solves it exactly), is as accurate as Y, and Y as accurate as in a
-// plain shot. (Weighted in the norm, S added components of small error that let Y's error grow:
-// on gale-b-5-sag0.90 the first out-of-plane root moved by 3.3e-10 against 2.5e-11 plain.)
-int slope_error_weights(N_Vector y, N_Vector weights, void* user_data) {
-  const auto& data = *static_cast<const RhsData*>(user_data);
-  const double* state = N_VGetArrayPointer(y);
-  double* w = N_VGetArrayPointer(weights);
-  const int block = 2 * data.dimension * data.dimension;
-  const double dilution = std::sqrt((2.0 * block + 1.0) / (block + 1.0));
-  for (int i = 0; i < block; ++i) w[i] = dilution / (data.rtol * std::abs(state[i]) + data.atol);
-  w[block] = dilution / (data.rtol * std::abs(state[block]) + data.atol_phase);
-  for (int i = block + 1; i <= 2 * block; ++i) w[i] = 0.0;
-  return 0;
-}
 
 // A break of a general line in the order of integration: a joint or a point attachment, where
 // the stepper is restarted on the next piece (and the internal force jumps at a point).
@@ -152,125 +97,6 @@ Basis<D> to_carried(const Basis<D>& physical, const RhsData& data) {
   out.template topRows<D>() *= kappa;
   out.template bottomRows<D>() /= kappa;
   return out;
-}
-
-// The Winkler foundation under a grounded piece (docs/methods/shooting.md, "Seabed contact"):
-// springs k per unstretched metre (like m, M and W0: docs/physics.md, "Seabed contact: linear
-// dynamics") enter the force balance as F' = -(w^2 Mmat - Kf) D, Kf = k_t t t^T + k_s n n^T (out of
-// plane k_t), t = +x: in the scaled, carried variables C -> C - L^2 Q Kf Q^T / (T_ref kappa^2).
-template <int D>
-void subtract_foundation(const RhsData& data, const ShootingPiece& p, Square<D>& C) {
-  const ShootingCoefficients& k = data.coefficients;
-  const double scale = k.length_m * k.length_m / (k.t_ref * data.kappa2);
-  if constexpr (D == 1) {
-    C(0, 0) -= scale * p.foundation_tangential;
-  } else {
-    const Vec2 tq = data.to_axial_force * Vec2(1.0, 0.0), nq = data.to_axial_force * Vec2(0.0, 1.0);
-    C -= scale * (p.foundation_tangential * tq * tq.transpose() +
-                  p.foundation_normal * nq * nq.transpose());
-  }
-}
-
-// B and C of the scaled system at x (see the header). From b the variable is x' = 1 - s/L and the
-// force is carried as -F^, which leaves the equations unchanged.
-template <int D>
-void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C,
-                     Square<D>* inertia = nullptr) {
-  const ShootingCoefficients& k = data.coefficients;
-  const ShootingPiece& p = k.pieces[data.piece];
-  const double s = k.length_m * (data.from_b ? 1.0 - x : x);
-  const double V = p.V_begin + p.W0 * (s - p.s_begin);
-  // sqrt, not hypot (a tenth of a shot's time): forces are far from overflow.
-  const double T_direction = std::sqrt(k.H * k.H + V * V);
-  // On the seabed the tension is the friction profile and the tangent +x (V = 0).
-  const double T = p.grounded ? p.tension(k.H, s) : T_direction;
-  const double e = T * p.compliance;
-  const double b_normal = k.t_ref * (1.0 + e) / T;
-  if constexpr (D == 1) {
-    B(0, 0) = data.kappa2 * b_normal;
-    C(0, 0) = (data.omega2 / data.kappa2) * (p.M / k.M);
-  } else {
-    const double b_tangent = k.t_ref * p.compliance;
-    const Vec2 t(k.H / T_direction, V / T_direction);
-    const Vec2 n(-t.y(), t.x());
-    const double mass_ratio = p.m / k.M;
-    const Vec2 tp = data.to_axial * t, np = data.to_axial * n;
-    const Vec2 tq = data.to_axial_force * t, nq = data.to_axial_force * n;
-    B = data.kappa2 * (b_tangent * tp * tp.transpose() + b_normal * np * np.transpose());
-    C = (data.omega2 / data.kappa2) *
-        (mass_ratio * tq * tq.transpose() + (p.M / k.M) * nq * nq.transpose());
-  }
-  if (inertia) *inertia = C;
-  if (p.grounded) subtract_foundation<D>(data, p, C);
-}
-
-// Y' = A Y with A = [0 B; -C 0], the phase, and for a shot with the slope S' = A S - 2 c [0; Ci Phi]
-// (Ci the inertia part of C, c the slope scale): the derivative of Y' = A Y with respect to
-// log w, as C's inertia part is proportional to w^2 and nothing else depends on w (the balancing
-// kappa is held at its value for the shot).
-template <int D, bool Slope>
-void rhs_values(const RhsData& data, double x, const double* state, double* derivative) {
-  Eigen::Map<const Basis<D>> Y(state);
-  Eigen::Map<Basis<D>> dY(derivative);
-  Square<D> B, C, inertia;
-  coefficients_at<D>(data, x, B, C, Slope ? &inertia : nullptr);
-  const auto Phi = Y.template topRows<D>();
-  const auto F = Y.template bottomRows<D>();
-  dY.template topRows<D>() = B * F;
-  dY.template bottomRows<D>() = -C * Phi;
-  // Phase theta = arg det(Phi + i F); its derivative is -tr(G^{-1} N) (header).
-  const Square<D> G = Phi.transpose() * Phi + F.transpose() * F;
-  const Square<D> N = Phi.transpose() * C * Phi + F.transpose() * B * F;
-  derivative[2 * D * D] = -(G.inverse() * N).trace();
-  if constexpr (Slope) {
-    Eigen::Map<const Basis<D>> S(state + 2 * D * D + 1);
-    Eigen::Map<Basis<D>> dS(derivative + 2 * D * D + 1);
-    dS.template topRows<D>() = B * S.template bottomRows<D>();
-    dS.template bottomRows<D>() =
-        -C * S.template topRows<D>() - (2.0 * data.slope_scale) * inertia * Phi;
-  }
-}
-
-// rhs_values as CVODE calls it.
-template <int D, bool Slope>
-int cvode_rhs(double x, N_Vector y, N_Vector ydot, void* user_data) {
-  rhs_values<D, Slope>(*static_cast<const RhsData*>(user_data), x, N_VGetArrayPointer(y),
-                       N_VGetArrayPointer(ydot));
-  return 0;
-}
-
-// rhs_values as RungeKuttaStepper calls it.
-template <int D, bool Slope>
-void runge_kutta_rhs(const void* data, double x, const double* y, double* dy) {
-  rhs_values<D, Slope>(*static_cast<const RhsData*>(data), x, y, dy);
-}
-
-// Analytic Jacobian of the linear part; the phase row is left zero (the phase feeds back into
-// nothing, so the modified Newton iteration still converges for it).
-template <int D, bool Slope>
-int jacobian(
-    double x, N_Vector, N_Vector, SUNMatrix J, void* user_data, N_Vector, N_Vector, N_Vector) {
-  const auto& data = *static_cast<const RhsData*>(user_data);
-  Square<D> B, C, inertia;
-  coefficients_at<D>(data, x, B, C, &inertia);
-  SUNMatZero(J);
-  const int slope_base = 2 * D * D + 1;
-  for (int column = 0; column < D; ++column) {
-    const int base = 2 * D * column;
-    for (int r = 0; r < D; ++r) {
-      for (int k = 0; k < D; ++k) {
-        SM_ELEMENT_D(J, base + r, base + D + k) = B(r, k);
-        SM_ELEMENT_D(J, base + D + r, base + k) = -C(r, k);
-        if constexpr (Slope) {
-          const int sb = slope_base + base;
-          SM_ELEMENT_D(J, sb + r, sb + D + k) = B(r, k);
-          SM_ELEMENT_D(J, sb + D + r, sb + k) = -C(r, k);
-          SM_ELEMENT_D(J, sb + D + r, base + k) = -2.0 * data.slope_scale * inertia(r, k);
-        }
-      }
-    }
-  }
-  return 0;
 }
 
 // The basis at the requested stations of one shot, unscaled, with the segment each belongs to.
@@ -388,180 +214,6 @@ double apply_jump(Eigen::Map<Basis<D>>& Y, const Square<D>& K) {
 
 }  // namespace
 
-// One integration method as a shot drives it (header, "Integrators"): a state of fixed size,
-// advanced one accepted step at a time up to a stop point (a break or the end), and restarted in
-// place where the shot changes the state (a re-orthonormalisation, a point's jump, a new piece,
-// the end of the grounded run).
-class ShotStepper {
- public:
-  virtual ~ShotStepper() = default;
-  virtual double* state() = 0;
-  /// A new shot from x = 0 with the state set: tolerances of Y (and S) and of the phase.
-  virtual void begin(double rtol, double atol, double atol_phase, double stop) = 0;
-  virtual void restart(double x, double stop) = 0;
-  /// One accepted step toward `stop`; returns the x reached.
-  virtual double step(double stop) = 0;
-  /// The state at xs inside the last step.
-  virtual void state_at(double xs, double* out) = 0;
-  /// Steps and right-hand-side evaluations since begin.
-  virtual long steps() const = 0;
-  virtual long rhs_evaluations() const = 0;
-};
-
-// CVODE (Adams or BDF) with its vectors and linear algebra, for the plain state [Y, phase] or the
-// state with the slope [Y, phase, S] (the latter solved by blocks: shooting_block_solver.hpp).
-class CvodeStepper final : public ShotStepper {
- public:
-  CvodeStepper(SUNContext context, int dimension, bool slope, const IntegratorSettings& s,
-               RhsData& data)
-      : block_(2 * dimension * dimension),
-        slope_(slope),
-        size_(slope ? 2 * block_ + 1 : block_ + 1),
-        y_(size_, context),
-        scratch_(size_, context),
-        matrix_(SUNDenseMatrix(size_, size_, context)),
-        linear_solver_(slope ? make_block_linear_solver(context, block_)
-                             : SUNLinSol_Dense(y_.get(), matrix_.get(), context)),
-        nonlinear_solver_(s.fixed_point ? SUNNonlinSol_FixedPoint(y_.get(), 0, context) : nullptr),
-        cvode_(s.method == ShootingMethod::Bdf ? CV_BDF : CV_ADAMS, context) {
-    if (!(y_.ok() && scratch_.ok() && matrix_.ok() && linear_solver_.ok() && cvode_.ok())) {
-      throw ShootingFailure("could not allocate the SUNDIALS objects");
-    }
-    void* mem = cvode_.get();
-    N_VConst(0.0, y_.get());
-    CVRhsFn f = dimension == 2 ? (slope ? cvode_rhs<2, true> : cvode_rhs<2, false>)
-                               : (slope ? cvode_rhs<1, true> : cvode_rhs<1, false>);
-    CVLsJacFn jac = dimension == 2 ? (slope ? jacobian<2, true> : jacobian<2, false>)
-                                   : (slope ? jacobian<1, true> : jacobian<1, false>);
-    check(CVodeInit(mem, f, 0.0, y_.get()), "CVodeInit");
-    check(CVodeSetUserData(mem, &data), "CVodeSetUserData");
-    if (s.fixed_point) {
-      // Functional iteration (no Jacobian, no linear solve): the system is not stiff.
-      if (!nonlinear_solver_.get()) {
-        throw ShootingFailure("could not allocate SUNNonlinSol_FixedPoint");
-      }
-      check(CVodeSetNonlinearSolver(mem, nonlinear_solver_.get()), "CVodeSetNonlinearSolver");
-    } else {
-      check(CVodeSetLinearSolver(mem, linear_solver_.get(), matrix_.get()),
-            "CVodeSetLinearSolver");
-      check(CVodeSetJacFn(mem, jac), "CVodeSetJacFn");
-    }
-    check(CVodeSetMaxNumSteps(mem, s.max_steps), "CVodeSetMaxNumSteps");
-  }
-
-  double* state() override { return y_.data(); }
-
-  void begin(double rtol, double atol, double atol_phase, double stop) override {
-    finished_steps_ = finished_rhs_ = 0;
-    void* mem = cvode_.get();
-    check(CVodeReInit(mem, 0.0, y_.get()), "CVodeReInit");
-    if (slope_) {
-      check(CVodeWFtolerances(mem, slope_error_weights), "CVodeWFtolerances");
-    } else {
-      N_VConst(atol, scratch_.get());
-      scratch_.data()[block_] = atol_phase;
-      check(CVodeSVtolerances(mem, rtol, scratch_.get()), "CVodeSVtolerances");
-    }
-    check(CVodeSetStopTime(mem, stop), "CVodeSetStopTime");
-  }
-
-  // ReInit resets CVODE's counters: the finished segment's are kept.
-  void restart(double x, double stop) override {
-    finished_steps_ = steps();
-    finished_rhs_ = rhs_evaluations();
-    check(CVodeReInit(cvode_.get(), x, y_.get()), "CVodeReInit", x);
-    check(CVodeSetStopTime(cvode_.get(), stop), "CVodeSetStopTime", x);
-  }
-
-  double step(double stop) override {
-    double x = 0.0;
-    check(CVode(cvode_.get(), stop, y_.get(), &x, CV_ONE_STEP), "CVode", x);
-    return x;
-  }
-
-  void state_at(double xs, double* out) override {
-    check(CVodeGetDky(cvode_.get(), xs, 0, scratch_.get()), "CVodeGetDky", xs);
-    std::copy_n(scratch_.data(), size_, out);
-  }
-
-  long steps() const override {
-    long n = 0;
-    CVodeGetNumSteps(cvode_.get(), &n);
-    return finished_steps_ + n;
-  }
-  long rhs_evaluations() const override {
-    long n = 0;
-    CVodeGetNumRhsEvals(cvode_.get(), &n);
-    return finished_rhs_ + n;
-  }
-
- private:
-  static void check(int flag, const char* call, double x = 0.0) {
-    if (flag < 0) {
-      throw ShootingFailure(fmt::format("{} returned {} ({}) at x = {:.6g}", call,
-                                        cvode_flag_name(flag), flag, x));
-    }
-  }
-
-  int block_;
-  bool slope_;
-  sunindextype size_;
-  // Declaration order = construction order; destruction runs in reverse.
-  SerialVector y_;
-  SerialVector scratch_;
-  SundialsMatrix matrix_;
-  SundialsLinearSolver linear_solver_;
-  SundialsNonlinearSolver nonlinear_solver_;
-  CvodeMemory cvode_;
-  long finished_steps_ = 0;
-  long finished_rhs_ = 0;
-};
-
-// The explicit Runge-Kutta method (shooting_runge_kutta.hpp). Error control covers Y and the
-// phase; S rides along with the same steps (as with CVODE's weights: slope_error_weights).
-class RungeKuttaShotStepper final : public ShotStepper {
- public:
-  RungeKuttaShotStepper(int dimension, bool slope, const RhsData& data)
-      : block_(2 * dimension * dimension),
-        stepper_(verner_6_5(), slope ? 2 * block_ + 1 : block_ + 1,
-                 dimension == 2 ? (slope ? runge_kutta_rhs<2, true> : runge_kutta_rhs<2, false>)
-                                : (slope ? runge_kutta_rhs<1, true> : runge_kutta_rhs<1, false>),
-                 &data) {}
-
-  double* state() override { return stepper_.state(); }
-
-  void begin(double rtol, double atol, double atol_phase, double stop) override {
-    Eigen::VectorXd tolerances = Eigen::VectorXd::Constant(block_ + 1, atol);
-    tolerances(block_) = atol_phase;
-    stepper_.set_tolerances(rtol, tolerances);
-    stepper_.set_stop(stop);
-    stepper_.begin(0.0);
-  }
-
-  void restart(double x, double stop) override {
-    stepper_.restart(x);
-    stepper_.set_stop(stop);
-  }
-
-  double step(double stop) override {
-    stepper_.set_stop(stop);
-    try {
-      return stepper_.step();
-    } catch (const std::runtime_error& e) {
-      throw ShootingFailure(fmt::format("Runge-Kutta step at x = {:.6g}: {}", stepper_.x(),
-                                        e.what()));
-    }
-  }
-
-  void state_at(double xs, double* out) override { stepper_.state_at(xs, out); }
-  long steps() const override { return stepper_.steps(); }
-  long rhs_evaluations() const override { return stepper_.rhs_evaluations(); }
-
- private:
-  int block_;
-  RungeKuttaStepper stepper_;
-};
-
 struct ShootingIntegrator::Impl {
   Impl(Plane plane, const ShootingCoefficients& coefficients, const IntegratorSettings& s)
       : settings(s), dimension(plane == Plane::InPlane ? 2 : 1) {
@@ -581,10 +233,7 @@ struct ShootingIntegrator::Impl {
   // The stepper of the plain shot (Y and the phase) or of the shot with the frequency
   // derivative (Y, the phase and the scaled derivative of Y: header, "Frequency derivative").
   std::unique_ptr<ShotStepper> make_stepper(bool slope) {
-    if (settings.method == ShootingMethod::RungeKutta) {
-      return std::make_unique<RungeKuttaShotStepper>(dimension, slope, data);
-    }
-    return std::make_unique<CvodeStepper>(context.get(), dimension, slope, settings, data);
+    return make_shot_stepper(settings, context.get(), dimension, slope, data);
   }
 
   template <int D>
