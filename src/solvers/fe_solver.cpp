@@ -206,9 +206,9 @@ void FeNumerics::attach_shape(Plane plane, int i, const FeModeMatches& matches, 
                            : outofplane_modal_mass(mode, cable.normal_mass_kg_per_m());
 }
 
-// Mode i: the extrapolated frequency, its relative error estimate (plus the rounding floor in
-// plane, and the statics' rounding floor where the estimate mesh makes the estimate tight), and
-// its shape.
+// Mode i: the extrapolated frequency, its relative error estimate (plus the rounding of the
+// levels' Rayleigh quotients, and the statics' rounding floor where the estimate mesh makes the
+// estimate tight), and its shape.
 Mode FeNumerics::extrapolated_mode(Plane plane, int i, const FeModeMatches& matches,
                                    const FeExtrapolatedFrequency& frequency, const Vector& stations) const {
   const double omega = frequency.omega_rad_s, error = frequency.error_rad_s;
@@ -216,8 +216,8 @@ Mode FeNumerics::extrapolated_mode(Plane plane, int i, const FeModeMatches& matc
   mode.index = i + 1;
   set_mode_frequency(mode, omega, context_.groups);
   mode.relative_error_estimate = (error >= 0.0 && omega > 0.0) ? error / omega : -1.0;
-  if (plane == Plane::InPlane && mode.relative_error_estimate >= 0.0)
-    mode.relative_error_estimate += plan_.rounding_floor(context_.groups.t0_n, mode.index);
+  if (mode.relative_error_estimate >= 0.0)
+    mode.relative_error_estimate += rounding_estimate(plan_, levels_, matches, plane, i);
   // Prescribed end forces are kept exactly (no Newton on the closure): no statics rounding floor.
   if (plan_.has_estimate_mesh() && mode.relative_error_estimate >= 0.0 && !context_.problem.prescribed_forces)
     mode.relative_error_estimate += plan_.statics_floor(context_.groups.t0_n);
@@ -279,8 +279,11 @@ ModalResult FeNumerics::modes(Plane plane, int count) {
   const int available = modes_on_every_level(levels_, plane, count);
   std::vector<double> orders;
   extrapolate_modes(plane, available, result, orders);
-  for (const Mode& mode : result.modes)
-    naturals_[plane].push_back({mode.index, mode.omega_rad_s, mode.relative_error_estimate});
+  for (const Mode& mode : result.modes) {
+    const double solve_rounding =
+        plane == Plane::InPlane ? plan_.rounding_floor(context_.groups.t0_n, mode.index) : 0.0;
+    naturals_[plane].push_back({mode.index, mode.omega_rad_s, mode.relative_error_estimate, solve_rounding});
+  }
   if (available < count && summary.termination == Termination::Converged)
     summary.termination = Termination::NoConvergence;
   const FeLevel& finest = levels_[static_cast<std::size_t>(plan_.main_fine)][0];

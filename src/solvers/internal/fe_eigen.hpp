@@ -26,6 +26,9 @@ struct FeEigenSolution {
   /// Ascending eigenvalues lambda [rad^2/s^2] and M-orthonormal eigenvectors (columns).
   Vector eigenvalues;
   Eigen::MatrixXd eigenvectors;
+  /// Per eigenvalue, the bound on its relative rounding error once the caller has replaced it by
+  /// the element-wise Rayleigh quotient (fe_rayleigh_quotient.hpp); empty until then.
+  Vector rounding;
   /// Negative pivots of LDLT(K - sigma_top M) with sigma_top just above the top eigenvalue.
   int inertia_count = -1;
   double inertia_shift = 0.0;

@@ -107,6 +107,21 @@ std::vector<std::vector<double>> level_omegas(const FeLevels& levels,
   return omega;
 }
 
+double rounding_estimate(const FePlan& plan, const FeLevels& levels, const FeModeMatches& matches,
+                         Plane plane, int i) {
+  double largest = 0.0;
+  for (std::size_t m = 0; m < levels.size(); ++m) {
+    for (std::size_t k = 0; k < levels[m].size(); ++k) {
+      const Vector& rounding = levels[m][k].eigen.at(plane).rounding;
+      const int j = matches[m][k][static_cast<std::size_t>(i)];
+      if (j < rounding.size()) largest = std::max(largest, rounding[j]);
+    }
+  }
+  const double mesh_gain = plan.richardson && plan.has_coarse() ? 5.0 / 3.0 : 1.0;
+  const double kappa_gain = plan.inextensible ? 3.0 : 1.0;
+  return 0.5 * largest * mesh_gain * kappa_gain;
+}
+
 namespace {
 
 // Richardson value of a frequency on meshes N and 2N (order 2, mesh ratio 2).

@@ -37,6 +37,13 @@ std::vector<std::vector<double>> level_omegas(const FeLevels& levels,
                                               Plane plane,
                                               int i);
 
+/// The rounding part of mode i's error estimate, relative to its frequency: the largest bound of
+/// its levels' element-wise Rayleigh quotients (FeEigenSolution::rounding, relative on lambda =
+/// omega^2, so halved) times what the extrapolations amplify a level's error by (Richardson in
+/// the mesh 4/3 + 1/3, linear in kappa 2 + 1). 0 when a level carries no bound.
+double rounding_estimate(const FePlan& plan, const FeLevels& levels, const FeModeMatches& matches,
+                         Plane plane, int i);
+
 /// A frequency extrapolated in the mesh (Richardson, when planned) and in kappa (inextensible).
 struct FeExtrapolatedFrequency {
   double omega_rad_s = 0.0;

@@ -194,13 +194,13 @@ Plane forced_plane(const ForcedRequest& request) {
 std::string resonance_diagnostic(double omega, Plane plane, const std::vector<FeNaturalFrequency>& naturals) {
   for (const FeNaturalFrequency& mode : naturals) {
     const double window =
-        std::max(1e-9, 3.0 * std::max(0.0, mode.relative_error_estimate)) * mode.omega_rad_s;
+        std::max(1e-9, 3.0 * std::max(0.0, mode.forced_uncertainty())) * mode.omega_rad_s;
     if (std::abs(omega - mode.omega_rad_s) <= window) {
       return fmt::format(
           "forcing at omega = {:.9g} rad/s is within {:.2e} rad/s of {} natural frequency {} "
           "({:.9g} rad/s, relative error estimate {:.1e}): resonance, no finite response",
           omega, std::abs(omega - mode.omega_rad_s), to_string(plane), mode.index, mode.omega_rad_s,
-          mode.relative_error_estimate);
+          mode.forced_uncertainty());
     }
   }
   return {};
@@ -209,10 +209,10 @@ std::string resonance_diagnostic(double omega, Plane plane, const std::vector<Fe
 double frequency_error_amplification(double omega, const std::vector<FeNaturalFrequency>& naturals) {
   double worst = 0.0;
   for (const FeNaturalFrequency& mode : naturals) {
-    if (!(mode.relative_error_estimate >= 0.0)) continue;
+    if (!(mode.forced_uncertainty() >= 0.0)) continue;
     const double wn2 = mode.omega_rad_s * mode.omega_rad_s;
     const double distance = std::abs(wn2 - omega * omega);
-    worst = std::max(worst, distance > 0.0 ? 2.0 * mode.relative_error_estimate * wn2 / distance
+    worst = std::max(worst, distance > 0.0 ? 2.0 * mode.forced_uncertainty() * wn2 / distance
                                            : std::numeric_limits<double>::infinity());
   }
   return worst;

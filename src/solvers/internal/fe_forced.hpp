@@ -19,11 +19,21 @@
 
 namespace catena::internal {
 
-/// A computed natural frequency of the forced plane, for the resonance check.
+/// A computed natural frequency of the forced plane, for the resonance check and the propagated
+/// frequency error of the forced estimate.
 struct FeNaturalFrequency {
   int index = 0;
   double omega_rad_s = 0.0;
   double relative_error_estimate = -1.0;
+  /// The normwise rounding floor of a solve with K - w^2 M along this mode (FePlan::rounding_floor,
+  /// in plane): the forced response is such a solve, and its rounding, eps ||K|| against this
+  /// mode's lambda, is amplified near the mode as a frequency error is. (The frequency itself is an
+  /// element-wise Rayleigh quotient, free of it: fe_rayleigh_quotient.hpp.)
+  double solve_rounding = 0.0;
+  /// What the forced response inherits from this mode, relative (negative: unknown).
+  double forced_uncertainty() const {
+    return relative_error_estimate < 0.0 ? -1.0 : relative_error_estimate + solve_rounding;
+  }
 };
 
 /// The plane a forcing moves: out of plane only for a displacement normal to the supports' plane.

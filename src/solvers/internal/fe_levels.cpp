@@ -10,6 +10,7 @@
 
 #include "catena/core/types.hpp"
 #include "catena/solvers/fe_solver.hpp"
+#include "solvers/internal/fe_rayleigh_quotient.hpp"
 
 namespace catena::internal {
 namespace {
@@ -176,6 +177,22 @@ FeLevels solve_level_statics(const Problem& problem,
   return levels;
 }
 
+namespace {
+
+// Each eigenvalue of a converged level replaced by its mode's element-wise Rayleigh quotient,
+// whose rounding error is bounded without the normwise floor (fe_rayleigh_quotient.hpp).
+void use_element_rayleigh_quotients(const FeChain& chain, Plane plane, const FeMatrices& matrices,
+                                    FeEigenSolution& eigen) {
+  eigen.rounding.resize(eigen.eigenvalues.size());
+  for (Eigen::Index i = 0; i < eigen.eigenvalues.size(); ++i) {
+    const RayleighQuotient q = element_rayleigh_quotient(chain, plane, eigen.eigenvectors.col(i), matrices.mass);
+    eigen.eigenvalues[i] = q.value;
+    eigen.rounding[i] = q.relative_rounding;
+  }
+}
+
+}  // namespace
+
 FePlaneEigenReport solve_level_modes(FeLevels& levels,
                                      Plane plane,
                                      int modes,
@@ -215,6 +232,7 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
         report.max_orthogonality_error = std::max(report.max_orthogonality_error, eigen.max_orthogonality_error);
         report.max_backward_error = std::max(report.max_backward_error, eigen.max_backward_error);
       }
+      if (eigen.termination == Termination::Converged) use_element_rayleigh_quotients(level.chain, plane, matrices, eigen);
       level.eigen[plane] = std::move(eigen);
       if (level.eigen[plane].termination == Termination::Converged) previous = &level.eigen[plane];
       if (meter && meter->stop_after(++solved)) return report;
