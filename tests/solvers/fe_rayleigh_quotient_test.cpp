@@ -2,7 +2,9 @@
 // - it is the assembled quotient phi^T K phi / phi^T M phi (taut chain, a grounded line with its
 //   foundation, both planes);
 // - on a stiff chain (EA/T = 1e6, N = 2000: normwise floor 5e-5) its error against the same
-//   quotient evaluated in long double stays within its bound, and the bound is 1e-4 of the floor.
+//   quotient evaluated in long double stays within its bound, and the bound is 1e-4 of the floor;
+// - the eigen solve's second vectors (one more inverse-iteration step) are the same modes: their
+//   quotients differ by far less than the floor, and the difference is not zero on a stiff chain.
 #include "solvers/internal/fe_rayleigh_quotient.hpp"
 
 #include <gtest/gtest.h>
@@ -88,6 +90,24 @@ TEST(FeRayleighQuotient, BoundsItsRoundingOnAStiffChainFarBelowTheNormwiseFloor)
     // The quotient of the converged vector is the solver's eigenvalue to well within the floor.
     EXPECT_NEAR(q.value, eigen.eigenvalues[n - 1], normwise * eigen.eigenvalues[n - 1]) << n;
   }
+}
+
+TEST(FeRayleighQuotient, SecondVectorsAreTheSameModesInAnotherRounding) {
+  const Problem problem = make_taut_inclined_problem(1e-4, 30.0, 10.0, 0.8);  // stress-eps, eps = 1e-4
+  const internal::FeChain chain = chain_of(problem, 800);
+  const internal::FeMatrices matrices = internal::assemble(Plane::InPlane, chain);
+  const internal::FeEigenSolution eigen = internal::solve_lowest_modes(matrices, 4, 1e-13, 1000, nullptr, nullptr, true);
+  ASSERT_EQ(eigen.termination, Termination::Converged) << eigen.message;
+  ASSERT_EQ(eigen.second_vectors.rows(), eigen.eigenvectors.rows());
+  ASSERT_EQ(eigen.second_vectors.cols(), eigen.eigenvectors.cols());
+  double largest = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const double a = internal::element_rayleigh_quotient(chain, Plane::InPlane, eigen.eigenvectors.col(i), matrices.mass).value;
+    const double b = internal::element_rayleigh_quotient(chain, Plane::InPlane, eigen.second_vectors.col(i), matrices.mass).value;
+    EXPECT_LT(std::abs(a - b), 1e-5 * a) << i;  // the normwise floor is 7e-3 here
+    largest = std::max(largest, std::abs(a - b) / a);
+  }
+  EXPECT_GT(largest, 1e-12);  // a stiff chain's vectors carry rounding the quotient sees
 }
 
 }  // namespace
