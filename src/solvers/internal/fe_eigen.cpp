@@ -276,18 +276,9 @@ Vector standard_form_guess(const Vector* guess, const MassFactor& factor, Eigen:
   return y;
 }
 
-// One more refine step on a copy of the polished pairs: FeEigenSolution::second_vectors.
-void add_second_vectors(const FeMatrices& matrices, const ShiftInvertOperator& op, FeEigenSolution& out) {
-  FeEigenSolution copy;
-  copy.eigenvalues = out.eigenvalues;
-  copy.eigenvectors = out.eigenvectors;
-  refine(matrices, op, copy);
-  out.second_vectors = std::move(copy.eigenvectors);
-}
-
 void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, double tolerance,
                        int max_restarts, FeEigenWorkspace& workspace, const Vector* guess,
-                       bool second_vectors, FeEigenSolution& out) {
+                       FeEigenSolution& out) {
   ShiftInvertOperator op(matrices.stiffness, matrices.mass, workspace.factor);
   const MassFactor factor(matrices.mass, matrices.dofs_per_node);
   StandardFormOperator standard(op, factor);
@@ -308,7 +299,6 @@ void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, doub
         take_ritz_pairs(std::move(lanczos), sigma, factor, out);
         const auto start_polish = Clock::now();
         polish(matrices, op, out);
-        if (second_vectors) add_second_vectors(matrices, op, out);
         out.iteration_time_s += seconds_since(start_polish);
       } else {
         out.termination = Termination::NoConvergence;
@@ -392,8 +382,7 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
                                    double tolerance,
                                    int max_restarts,
                                    FeEigenWorkspace* workspace,
-                                   const Vector* guess,
-                                   bool second_vectors) {
+                                   const Vector* guess) {
   FeEigenSolution out;
   const auto n = static_cast<int>(matrices.stiffness.rows());
   if (modes <= 0) {
@@ -408,7 +397,7 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
   if (dense) {
     solve_dense(matrices, modes, out);
   } else {
-    solve_iteratively(matrices, modes, subspace, tolerance, max_restarts, work, guess, second_vectors, out);
+    solve_iteratively(matrices, modes, subspace, tolerance, max_restarts, work, guess, out);
   }
   if (out.termination != Termination::Converged) return out;
   if (dense) normalise_and_check(matrices, out);

@@ -29,10 +29,6 @@ struct FeEigenSolution {
   /// Per eigenvalue, the bound on its relative rounding error once the caller has replaced it by
   /// the element-wise Rayleigh quotient (fe_rayleigh_quotient.hpp); empty until then.
   Vector rounding;
-  /// When asked for: the eigenvectors after one more inverse-iteration step with Rayleigh-Ritz, a
-  /// second rounding realisation of the same vectors (their quotients' difference measures what
-  /// the vectors' rounding leaves in the eigenvalues: docs/methods/fe.md, "Rounding").
-  Eigen::MatrixXd second_vectors;
   /// Negative pivots of LDLT(K - sigma_top M) with sigma_top just above the top eigenvalue.
   int inertia_count = -1;
   double inertia_shift = 0.0;
@@ -64,15 +60,13 @@ struct FeEigenWorkspace {
 /// `workspace` (optional) holds the buffers between calls: pass the same one to the solves of one
 /// fe run (mesh and penalty levels) so that they allocate the basis and the factor once.
 /// `guess` (optional, one value per unknown) starts the Lanczos iteration near the wanted
-/// eigenvectors (mode_sum_guess); convergence is tested as without it. `second_vectors` asks for
-/// FeEigenSolution::second_vectors (iterative solves only).
+/// eigenvectors (mode_sum_guess); convergence is tested as without it.
 FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
                                    int modes,
                                    double tolerance,
                                    int max_restarts,
                                    FeEigenWorkspace* workspace = nullptr,
-                                   const Vector* guess = nullptr,
-                                   bool second_vectors = false);
+                                   const Vector* guess = nullptr);
 
 /// Makes `workspace` ready for the largest of several solves of `modes` modes (the largest has
 /// `unknowns` unknowns), so that the smaller ones use the same memory.

@@ -180,37 +180,33 @@ FeLevels solve_level_statics(const Problem& problem,
 namespace {
 
 // Above this normwise floor of mode 1 (FePlan::rounding_floor, from the level's own chain) the
-// rounding the eigenvectors carry is measured (FeEigenSolution::second_vectors). Below it, what
-// it leaves in a quotient, of order (8 floor)^2 / unknowns (docs/methods/fe.md, "Rounding"), is
-// below 1e-13.
-constexpr double kMeasuredVectorFloor = 1e-7;
+// vectors get a last Rayleigh-Ritz step with the element-wise projected stiffness: the normwise
+// one leaves them mixed with the neighbouring modes by about floor x lambda / gap, which shows in
+// the quotients at second order (docs/methods/fe.md, "Rounding"; stress-eps at eps = 1e-4: 6e-8).
+constexpr double kStructuredRitzFloor = 1e-7;
 
-bool measures_vector_rounding(const FeChain& chain, Plane plane) {
-  if (plane != Plane::InPlane) return false;              // no axial springs out of plane
-  if (!(chain.horizontal_force_n > 0.0)) return true;      // no tension scale: measure
+bool needs_structured_ritz(const FeChain& chain, Plane plane) {
+  if (plane != Plane::InPlane) return false;          // no axial springs out of plane
+  if (!(chain.horizontal_force_n > 0.0)) return true;  // no tension scale
   const double stiffest = chain.axial_stiffness_n.maxCoeff();
   const double N = chain.elements;
-  const double floor = 0.5 * std::numeric_limits<double>::epsilon() * stiffest / chain.horizontal_force_n * N * N / (kPi * kPi);
-  return floor > kMeasuredVectorFloor;
+  const double floor =
+      0.5 * std::numeric_limits<double>::epsilon() * stiffest / chain.horizontal_force_n * N * N / (kPi * kPi);
+  return floor > kStructuredRitzFloor;
 }
 
 // Each eigenvalue of a converged level replaced by its mode's element-wise Rayleigh quotient,
-// whose evaluation's rounding is bounded without the normwise floor (fe_rayleigh_quotient.hpp);
-// where the vectors were refined once more, twice the change of the quotient is added for the
-// rounding the vector itself carries (a second realisation of it, independent of the first).
+// whose rounding is bounded without the normwise floor (fe_rayleigh_quotient.hpp), after the
+// structured Rayleigh-Ritz step where the chain is stiff.
 void use_element_rayleigh_quotients(const FeChain& chain, Plane plane, const FeMatrices& matrices,
                                     FeEigenSolution& eigen) {
+  if (needs_structured_ritz(chain, plane)) element_rayleigh_ritz(chain, plane, eigen.eigenvectors, matrices.mass);
   eigen.rounding.resize(eigen.eigenvalues.size());
   for (Eigen::Index i = 0; i < eigen.eigenvalues.size(); ++i) {
     const RayleighQuotient q = element_rayleigh_quotient(chain, plane, eigen.eigenvectors.col(i), matrices.mass);
     eigen.eigenvalues[i] = q.value;
     eigen.rounding[i] = q.relative_rounding;
-    if (i < eigen.second_vectors.cols()) {
-      const RayleighQuotient again = element_rayleigh_quotient(chain, plane, eigen.second_vectors.col(i), matrices.mass);
-      eigen.rounding[i] += 2.0 * std::abs(again.value - q.value) / q.value;
-    }
   }
-  eigen.second_vectors.resize(0, 0);
 }
 
 }  // namespace
@@ -238,8 +234,7 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
       const Vector guess = previous ? mode_sum_guess(previous->eigenvectors, matrices.dofs_per_node, matrices.mass.rows())
                                     : Vector();
       FeEigenSolution eigen = solve_lowest_modes(matrices, modes, options.eigen_tolerance, options.max_restarts,
-                                                 &workspace, guess.size() > 0 ? &guess : nullptr,
-                                                 measures_vector_rounding(level.chain, plane));
+                                                 &workspace, guess.size() > 0 ? &guess : nullptr);
       timings.factorization_s += eigen.factorization_time_s;
       timings.eigen_iterations_s += eigen.iteration_time_s;
       report.restarts += eigen.restarts;

@@ -24,6 +24,8 @@
 /// vector lies along the stiff axial modes, whose share of the quotient is second order in
 /// eps (EA/T) as well (docs/methods/fe.md, "Rounding", with the suite's check of the estimate).
 
+#include <Eigen/Core>
+
 #include "catena/core/types.hpp"
 #include "solvers/internal/fe_chain_statics.hpp"
 #include "solvers/internal/fe_operators.hpp"
@@ -41,5 +43,14 @@ struct RayleighQuotient {
 /// them) with the stiffness evaluated element by element and the mass matrix `mass`.
 RayleighQuotient element_rayleigh_quotient(const FeChain& chain, Plane plane, const Vector& phi,
                                            const SparseMatrix& mass);
+
+/// Rayleigh-Ritz on the span of `vectors` (columns) with the projected stiffness evaluated element
+/// by element, V^T K V = sum_e k_e (t_e . d_e)(t_e . d_e)^T + ..., so that it carries the
+/// quotient's structured rounding, not eps ||K||: a computed Ritz vector's components along the
+/// other modes, which a projection formed from K V leaves at about eps ||K|| / gap, come out right
+/// (docs/methods/fe.md, "Rounding"). Rotates `vectors` in place to the Ritz vectors, ascending;
+/// false (vectors unchanged) when the small eigenproblem fails.
+bool element_rayleigh_ritz(const FeChain& chain, Plane plane, Eigen::MatrixXd& vectors,
+                           const SparseMatrix& mass);
 
 }  // namespace catena::internal
