@@ -138,7 +138,7 @@ class Knob:
     default: object
     #: the default as a scene writes it
     default_text: str
-    #: the valid values in words, e.g. "[2, 5e+07]", "(0, 0.01]", '"adams" or "bdf"'
+    #: the valid values in words, e.g. "[2, 5e+07]", "(0, 0.01]", '"rk" or "adams" or "bdf"'
     valid: str
 
 
