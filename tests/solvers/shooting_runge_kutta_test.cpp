@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -80,12 +81,19 @@ TEST(ShootingRungeKutta, ObservedOrderIsSixAndTheErrorFollowsTheTolerance) {
   }
 }
 
+// Begins a stepper at x = 0 from `start` (its first components; the rest stay 0) at rtol 1e-10
+// on `controlled` components, with the stop point `stop`.
+void begin_at_zero(RungeKuttaStepper& stepper, std::initializer_list<double> start, int controlled, double stop) {
+  int i = 0;
+  for (double value : start) stepper.state()[i++] = value;
+  stepper.set_tolerances(1e-10, Eigen::VectorXd::Constant(controlled, 1e-12));
+  stepper.set_stop(stop);
+  stepper.begin(0.0);
+}
+
 TEST(ShootingRungeKutta, StepsEndExactlyAtTheStopPointAndContinueFromThere) {
   RungeKuttaStepper stepper(verner_6_5(), 3, oscillator, nullptr);
-  stepper.state()[1] = 1.0;
-  stepper.set_tolerances(1e-10, Eigen::VectorXd::Constant(2, 1e-12));
-  stepper.set_stop(0.3);
-  stepper.begin(0.0);
+  begin_at_zero(stepper, {0.0, 1.0}, 2, 0.3);
   double x = 0.0;
   while (x < 0.3) x = stepper.step();
   EXPECT_EQ(x, 0.3);
@@ -100,10 +108,7 @@ TEST(ShootingRungeKutta, StepsEndExactlyAtTheStopPointAndContinueFromThere) {
 // as the steps themselves.
 TEST(ShootingRungeKutta, StateInsideTheLastStepIsAccurate) {
   RungeKuttaStepper stepper(verner_6_5(), 3, oscillator, nullptr);
-  stepper.state()[1] = 1.0;
-  stepper.set_tolerances(1e-10, Eigen::VectorXd::Constant(2, 1e-12));
-  stepper.set_stop(5.0);
-  stepper.begin(0.0);
+  begin_at_zero(stepper, {0.0, 1.0}, 2, 5.0);
   double before = 0.0;
   double x = stepper.step();
   while (x < 2.0) {
@@ -122,10 +127,7 @@ TEST(ShootingRungeKutta, StateInsideTheLastStepIsAccurate) {
 
 TEST(ShootingRungeKutta, ControlsTheErrorOfAPureQuadrature) {
   RungeKuttaStepper stepper(verner_6_5(), 1, quadrature, nullptr);
-  stepper.state()[0] = 0.0;
-  stepper.set_tolerances(1e-10, Eigen::VectorXd::Constant(1, 1e-12));
-  stepper.set_stop(1.0);
-  stepper.begin(0.0);
+  begin_at_zero(stepper, {0.0}, 1, 1.0);
   while (stepper.x() < 1.0) stepper.step();
   EXPECT_NEAR(stepper.state()[0], std::sin(20.0) / 20.0, 1e-9);
   EXPECT_GT(stepper.steps(), 5);
@@ -133,10 +135,7 @@ TEST(ShootingRungeKutta, ControlsTheErrorOfAPureQuadrature) {
 
 TEST(ShootingRungeKutta, ReportsAStepSizeThatUnderflows) {
   RungeKuttaStepper stepper(verner_6_5(), 1, blow_up, nullptr);
-  stepper.state()[0] = 1.0;
-  stepper.set_tolerances(1e-10, Eigen::VectorXd::Constant(1, 1e-12));
-  stepper.set_stop(2.0);
-  stepper.begin(0.0);
+  begin_at_zero(stepper, {1.0}, 1, 2.0);
   try {
     for (int i = 0; i < 100000 && stepper.x() < 2.0; ++i) stepper.step();
     FAIL() << "passed the singularity at x = 1: x = " << stepper.x();
