@@ -138,10 +138,13 @@ double FePlan::statics_floor(double t0_n) const {
 
 double FePlan::rounding_floor(double t0_n, int mode_number) const {
   const double stiffness_ratio = std::max(axial_stiffness_n[0], stiffest_extensible_n) / std::max(t0_n, 1e-300);
+  return normwise_rounding_floor(stiffness_ratio, finest_elements(), mode_number);
+}
+
+double normwise_rounding_floor(double stiffness_ratio, int elements, int mode_number) {
   const double n = static_cast<double>(mode_number);
-  const auto finest = static_cast<double>(finest_elements());
-  return 0.5 * std::numeric_limits<double>::epsilon() * stiffness_ratio * finest * finest /
-         (kPi * kPi * n * n);
+  const auto N = static_cast<double>(elements);
+  return 0.5 * std::numeric_limits<double>::epsilon() * stiffness_ratio * N * N / (kPi * kPi * n * n);
 }
 
 FePlan make_fe_plan(const Problem& problem,
@@ -188,11 +191,8 @@ constexpr double kStructuredRitzFloor = 1e-7;
 bool needs_structured_ritz(const FeChain& chain, Plane plane) {
   if (plane != Plane::InPlane) return false;          // no axial springs out of plane
   if (!(chain.horizontal_force_n > 0.0)) return true;  // no tension scale
-  const double stiffest = chain.axial_stiffness_n.maxCoeff();
-  const double N = chain.elements;
-  const double floor =
-      0.5 * std::numeric_limits<double>::epsilon() * stiffest / chain.horizontal_force_n * N * N / (kPi * kPi);
-  return floor > kStructuredRitzFloor;
+  const double stiffness_ratio = chain.axial_stiffness_n.maxCoeff() / chain.horizontal_force_n;
+  return normwise_rounding_floor(stiffness_ratio, chain.elements, 1) > kStructuredRitzFloor;
 }
 
 // Each eigenvalue of a converged level replaced by its mode's element-wise Rayleigh quotient,

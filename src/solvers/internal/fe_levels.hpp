@@ -86,7 +86,9 @@ struct FePlan {
   /// Rounding floor of the in-plane chain, relative, for mode `mode_number`: K holds axial springs
   /// EA/l0 beside geometric ones T/l0, so an eigenvalue's backward error eps_mach ||K|| is,
   /// relative to omega_n^2, about eps_mach (EA/T0) N^2 / (pi n)^2 (half of that in omega), with EA
-  /// the first penalty's stiffness. A conservative bound: observed errors are 10-200x smaller.
+  /// the first penalty's stiffness. The frequencies are free of it (element-wise Rayleigh
+  /// quotients: fe_rayleigh_quotient.hpp); it bounds the forced solve's rounding and decides when
+  /// the in-plane plane is declined.
   double rounding_floor(double t0_n, int mode_number) const;
   /// Rounding of the discrete statics, relative, in every mode of both planes: the chain's closure
   /// sums N element chords, so its length is known to about eps L N at worst, which moves the
@@ -96,6 +98,11 @@ struct FePlan {
   /// the end forces are prescribed (kept exactly: the chain's tension has no closure error).
   double statics_floor(double t0_n) const;
 };
+
+/// The normwise rounding floor of mode `mode_number` on a chain of `elements` elements whose
+/// stiffest axial spring is `stiffness_ratio` times the tension scale: 1/2 eps (EA/T) N^2 / (pi n)^2
+/// (docs/methods/fe.md, "Rounding").
+double normwise_rounding_floor(double stiffness_ratio, int elements, int mode_number);
 
 /// Why the penalised chain cannot stand for this inextensible cable (its penalty strain is not
 /// small against the slack); nullopt when it can, or when the cable is extensible.
