@@ -214,9 +214,11 @@ TEST(Checks, AResonanceClaimAgainstUnflaggedFiniteResponsesFails) {
   EXPECT_EQ(verdicts[0], Verdict::Pass);
   EXPECT_EQ(verdicts[1], Verdict::Fail);
   EXPECT_EQ(verdicts[2], Verdict::Fail);
-  for (const auto& c : checks)
-    if (c.check == "forced" && c.verdict == Verdict::Fail)
+  for (const auto& c : checks) {
+    if (c.check == "forced" && c.verdict == Verdict::Fail) {
       EXPECT_NE(c.detail.find("frobenius says resonance"), std::string::npos) << c.detail;
+    }
+  }
 }
 
 TEST(Checks, AResonanceClaimAgainstAFlaggedNearResonanceResponseIsSkippedWithTheReason) {
