@@ -298,7 +298,7 @@ TEST(ShootingSolver, ThirtyModesAreCountedWithoutGaps) {
 }
 
 TEST(ShootingSolver, IntegratorFailureIsReportedNotThrown) {
-  // 100 CVODE steps cannot cover ten wavelengths at rtol 1e-12: a numerical outcome, reported in
+  // 100 integration steps cannot cover ten wavelengths at rtol 1e-12: a numerical outcome, reported in
   // the summary with the reason, never an exception or a NaN.
   SolveRequest request;
   request.inplane_modes = 10;
