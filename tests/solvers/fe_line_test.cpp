@@ -17,6 +17,7 @@
 #include "catena/core/types.hpp"
 #include "catena/solvers/fe_solver.hpp"
 #include "solvers/internal/fe_levels.hpp"
+#include "solvers/internal/fe_line_mesh.hpp"
 #include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
 
@@ -216,20 +217,28 @@ TEST(FeLine, MeshHasNodesAtJointsAndPointsAndDoublesEveryPieceBetweenLevels) {
   p.supports.a_m = Vec2(0.0, -300.0);
   p.supports.b_m = Vec2(800.0, 0.0);
   const StaticSolution statics = solve_statics(p);
+  // The distribution: 95 elements, 10 per 100 m, cut at 250, 400, 800, 850.
+  const internal::FeLineMesh mesh = internal::make_line_mesh(p, statics, 95);
+  ASSERT_EQ(mesh.pieces.size(), 5u);
+  const std::vector<int> expected = {25, 15, 40, 5, 10};
+  for (std::size_t k = 0; k < mesh.pieces.size(); ++k) EXPECT_EQ(mesh.pieces[k].elements, expected[k]) << "piece " << k;
+  EXPECT_EQ(mesh.pieces[2].point_at_start, 0);
+  EXPECT_EQ(mesh.pieces[4].point_at_start, -1);  // the joint at 850 m carries no point
+  EXPECT_EQ(mesh.pieces[3].point_at_start, 1);
+  // With Richardson the plan evens every piece (25 -> 26, 15 -> 16, 5 -> 6), doubles it for the
+  // fine mesh and halves it for the estimate mesh, piece by piece.
   const internal::FePlan plan = internal::make_fe_plan(p, statics, {.elements = 95}, 4, 4);
-  ASSERT_EQ(plan.mesh_layouts.size(), 2u);
-  const auto& coarse = plan.mesh_layouts[0].pieces;
-  ASSERT_EQ(coarse.size(), 5u);  // cut at 250, 400, 800, 850
-  const std::vector<int> expected = {25, 15, 40, 5, 10};  // 95 elements, 10 per 100 m
-  for (std::size_t k = 0; k < coarse.size(); ++k) {
-    EXPECT_EQ(coarse[k].elements, expected[k]) << "piece " << k;
-    EXPECT_EQ(plan.mesh_layouts[1].pieces[k].elements, 2 * expected[k]) << "piece " << k;
+  ASSERT_EQ(plan.mesh_layouts.size(), 3u);
+  ASSERT_EQ(plan.estimate_coarse, 0);
+  const std::vector<int> evened = {26, 16, 40, 6, 10};
+  for (std::size_t k = 0; k < evened.size(); ++k) {
+    EXPECT_EQ(plan.mesh_layouts[0].pieces[k].elements, evened[k] / 2) << "piece " << k;
+    EXPECT_EQ(plan.mesh_layouts[1].pieces[k].elements, evened[k]) << "piece " << k;
+    EXPECT_EQ(plan.mesh_layouts[2].pieces[k].elements, 2 * evened[k]) << "piece " << k;
   }
-  EXPECT_EQ(coarse[2].point_at_start, 0);
-  EXPECT_EQ(coarse[4].point_at_start, -1);  // the joint at 850 m carries no point
-  EXPECT_EQ(coarse[3].point_at_start, 1);
-  EXPECT_EQ(plan.meshes[0], 95);
-  EXPECT_EQ(plan.meshes[1], 190);
+  EXPECT_EQ(plan.meshes[0], 49);
+  EXPECT_EQ(plan.meshes[1], 98);
+  EXPECT_EQ(plan.meshes[2], 196);
 }
 
 }  // namespace

@@ -61,13 +61,17 @@ void plan_penalty_strain(FePlan& plan, const Problem& problem, const StaticSolut
 }
 
 // Each mesh's layout; on a line the counts of the finer meshes are doubled from the coarsest, and
-// `meshes` becomes their totals (a piece too short for its share gets one element anyway).
+// `meshes` becomes their totals (a piece too short for its share gets one element anyway). With
+// Richardson every piece of the coarsest mesh gets an even count, so that the estimate mesh can
+// halve it (plan_estimate_mesh: an odd piece, e.g. a seabed layer's, left the estimate at the
+// Richardson correction, 1e-7 to 1e-6 for errors near 1e-10).
 void plan_layouts(FePlan& plan, const Problem& problem, const StaticSolution& statics) {
   if (meshed_as_one_piece(problem, statics)) {
     for (int elements : plan.meshes) plan.mesh_layouts.push_back(uniform_cable_mesh(problem.cable, elements));
     return;
   }
-  const FeLineMesh coarsest = make_line_mesh(problem, statics, plan.meshes.front());
+  FeLineMesh coarsest = make_line_mesh(problem, statics, plan.meshes.front());
+  if (plan.richardson) coarsest = coarsest.evened();
   for (std::size_t m = 0; m < plan.meshes.size(); ++m) {
     plan.mesh_layouts.push_back(coarsest.refined(1 << m));
     plan.meshes[m] = plan.mesh_layouts.back().elements();

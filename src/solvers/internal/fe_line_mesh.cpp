@@ -94,6 +94,12 @@ std::optional<FeLineMesh> FeLineMesh::halved() const {
   return out;
 }
 
+FeLineMesh FeLineMesh::evened() const {
+  FeLineMesh out = *this;
+  for (FeMeshPiece& piece : out.pieces) piece.elements += piece.elements % 2;
+  return out;
+}
+
 FeLineMesh uniform_cable_mesh(const CableProperties& cable, int elements) {
   FeLineMesh mesh;
   FeMeshPiece piece;

@@ -42,6 +42,8 @@ struct FeLineMesh {
   /// The same pieces with every element count halved; nullopt when a count is odd (the halved
   /// mesh's nodes would not all be nodes of this one).
   std::optional<FeLineMesh> halved() const;
+  /// The same pieces with every odd element count raised by one, so that the mesh can be halved.
+  FeLineMesh evened() const;
   /// True for one piece (a uniform cable, or a line of one segment and no points).
   bool is_one_piece() const { return pieces.size() == 1; }
 };
