@@ -56,9 +56,9 @@ TEST(MutationScore, EveryMutationIsCountedOnceAndEveryUncaughtOneIsNamed) {
 // 1.1e-8 is caught through fe's estimate check where fe's estimate is tight (its N/2 mesh and third
 // penalty), not where fe's rounding floors or high modes keep it above 1e-8; fe's forced 1e-4 not
 // near a resonance, where fe's estimate carries the frequency uncertainty. Measured on the suite:
-// 5,078 of 7,900 caught before the estimate work, 7,407 of 8,196 after, 7,777 with fe's element-wise
-// Rayleigh quotients; on this subset 101, 142 and 143 of 152 (docs/mutation.md, "Measured
-// (2026-11-26, fifth session ...)", lists the groups left).
+// 5,078 of 7,900 caught before the estimate work, 7,407 of 8,196 after, 7,883 with fe's element-wise
+// Rayleigh quotients and evened line meshes; on this subset 101, 142 and 143 of 152
+// (docs/mutation.md, "Measured (2026-11-26, fifth session ...)", lists the groups left).
 TEST(MutationScore, DISABLED_ExactSolversCatchEveryMutationWhereTwoRan) {
   const MutationRun run = subset_run();
   const MutationTally exact = run.exact_with_witness();
