@@ -334,18 +334,10 @@ void ShootingIntegrator::Impl::record_passed_stations(StationRecorder<D>& record
     if (xs >= x) {
       recorder.record(Eigen::Map<const Basis<D>>(stepper->state()));
     } else {
-      Basis<D> interpolated;
-      if (slope_shot) {
-        // The slope shot's state is longer; only its Y is recorded.
-        Eigen::VectorXd full(4 * D * D + 1);
-        stepper->state_at(xs, full.data());
-        interpolated = Eigen::Map<const Basis<D>>(full.data());
-      } else {
-        Eigen::Matrix<double, 2 * D * D + 1, 1> full;
-        stepper->state_at(xs, full.data());
-        interpolated = Eigen::Map<const Basis<D>>(full.data());
-      }
-      recorder.record(interpolated);
+      // Room for the longer state of a slope shot; only Y (its head) is recorded.
+      Eigen::Matrix<double, 4 * D * D + 1, 1> state;
+      stepper->state_at(xs, state.data());
+      recorder.record(Eigen::Map<const Basis<D>>(state.data()));
     }
   }
 }

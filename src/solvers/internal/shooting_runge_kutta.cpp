@@ -169,7 +169,8 @@ void RungeKuttaStepper::state_at(double xs, double* out) {
   } else if (xs >= x_) {
     result = y_;
   } else {
-    evaluate(x_start_, y_start_, 0);
+    // k_.col(0) still holds f(x_start_, y_start_): step() evaluates it first, and attempt()
+    // writes only the later stages.
     attempt(x_start_, y_start_, xs - x_start_, y_next_, false);
     result = y_next_;
   }
