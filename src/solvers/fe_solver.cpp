@@ -15,6 +15,7 @@
 #include "solvers/internal/fe_extrapolation.hpp"
 #include "solvers/internal/fe_forced.hpp"
 #include "solvers/internal/fe_levels.hpp"
+#include "solvers/internal/fe_refinement.hpp"
 #include "solvers/internal/fe_seabed_contact.hpp"
 #include "solvers/internal/fe_shapes.hpp"
 #include "solvers/internal/line_modal_mass.hpp"
@@ -42,8 +43,11 @@ const KnobTable<FeSolverOptions>& fe_knobs() {
              flag_knob("observed_order", &O::observed_order,
                        "also solve 4N and report the observed convergence order"),
              real_knob("tolerance", &O::tolerance, Range::closed(0.0, 1.0),
-                       "accuracy target of each frequency [-]: a mode whose error estimate exceeds "
-                       "it is named and the plane not converged (0: none)")});
+                       "accuracy target of each frequency [-]: while a mode's error estimate exceeds it, "
+                       "fe solves again on a finer mesh (up to max_elements); a mode that still exceeds "
+                       "it is named and the plane not converged (0: none)"),
+             integer_knob("max_elements", &O::max_elements, Range::closed(2, 5e7),
+                          "the largest N a tolerance may refine to (at or below elements: no refinement)")});
   return table;
 }
 
@@ -104,6 +108,21 @@ class FeNumerics final : public SolverNumerics {
 
  private:
   void require_modes_fit() const;
+  ModalResult modes_on_plan(Plane plane, int count);
+  std::string refine_plan(Plane plane, int elements);
+  // What a refinement replaces, kept to go back to when the finer mesh does worse.
+  struct FeRun {
+    FeSolverOptions options;
+    FePlan plan;
+    FeLevels levels;
+    std::vector<FeNaturalFrequency> naturals;
+  };
+  void restore(Plane plane, FeRun run) {
+    options_ = run.options;
+    plan_ = std::move(run.plan);
+    levels_ = std::move(run.levels);
+    naturals_[plane] = std::move(run.naturals);
+  }
   std::string compute_naturals_for(Plane plane, const ForcedRequest& request);
   void extrapolate_modes(Plane plane, int available, ModalResult& result, std::vector<double>& orders);
   Mode extrapolated_mode(Plane plane, int i, const FeModeMatches& matches,
@@ -249,7 +268,83 @@ void FeNumerics::extrapolate_modes(Plane plane, int available, ModalResult& resu
   timings_.postprocessing_s += std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// Replaces the plan and its levels by those of a mesh of `elements`. Returns why not (and
+// changes nothing) when that chain would be declined (in-plane rounding floor), could not meet
+// the target (statics floor) or its statics fail; empty on success.
+std::string FeNumerics::refine_plan(Plane plane, int elements) {
+  FeSolverOptions finer = options_;
+  finer.elements = elements;
+  const SolveRequest& request = context_.request;
+  FePlan plan = make_fe_plan(context_.problem, context_.statics, finer, request.inplane_modes, request.outofplane_modes);
+  const double t0_n = context_.groups.t0_n;
+  if (plane == Plane::InPlane && plan.rounding_floor(t0_n, 1) > kMaxRoundingFloor)
+    return fmt::format("at N = {} the chain's normwise rounding floor would be {:.1e}, where fe declines the plane",
+                       elements, plan.rounding_floor(t0_n, 1));
+  // The statics' rounding floor grows with N (FePlan::statics_floor): a mesh whose floor alone
+  // exceeds the target cannot meet it.
+  if (plan.has_estimate_mesh() && !context_.problem.prescribed_forces && plan.statics_floor(t0_n) >= options_.tolerance)
+    return fmt::format("at N = {} the statics' rounding floor alone would be {:.1e}", elements, plan.statics_floor(t0_n));
+  std::string failure;
+  FeLevels levels = solve_level_statics(context_.problem, context_.statics, plan, timings_, failure);
+  if (!failure.empty()) return fmt::format("the discrete statics at N = {} failed: {}", elements, failure);
+  options_ = finer;
+  plan_ = std::move(plan);
+  levels_ = std::move(levels);
+  return {};
+}
+
+std::vector<double> error_estimates(const ModalResult& result) {
+  std::vector<double> estimates;
+  for (const Mode& mode : result.modes) estimates.push_back(mode.relative_error_estimate);
+  return estimates;
+}
+
+// The modes of one plane, on finer meshes while the accuracy target asks for one and a refinement
+// pays (fe_refinement.hpp). A refinement replaces the plan for the rest of the run: the other
+// plane and the forced response use the finer mesh too. A finer solve that does not complete
+// (time limit, failure) leaves the last complete result.
 ModalResult FeNumerics::modes(Plane plane, int count) {
+  ModalResult result = modes_on_plan(plane, count);
+  const int first_elements = options_.elements;
+  double first_worst = 0.0, previous_worst = 0.0;
+  std::string stop_reason;
+  while (result.summary.termination == Termination::Converged) {
+    const std::vector<double> estimates = error_estimates(result);
+    const FeRefinementStep step = fe_refined_elements(
+        {options_.elements, options_.max_elements, options_.tolerance, options_.richardson, estimates, previous_worst});
+    stop_reason = step.stop_reason;
+    if (step.elements == 0) break;
+    FeRun kept{options_, plan_, std::move(levels_), naturals_[plane]};
+    stop_reason = refine_plan(plane, step.elements);
+    if (!stop_reason.empty()) {
+      levels_ = std::move(kept.levels);
+      break;
+    }
+    previous_worst = fe_worst_miss(estimates, options_.tolerance);
+    if (first_worst == 0.0) first_worst = previous_worst;
+    ModalResult finer = modes_on_plan(plane, count);
+    const double finer_worst = fe_worst_miss(error_estimates(finer), options_.tolerance);
+    if (finer.modes.size() < result.modes.size() || finer_worst > previous_worst) {
+      stop_reason = finer.modes.size() < result.modes.size()
+                        ? fmt::format("the solve at N = {} did not complete", options_.elements)
+                        : fmt::format("at N = {} the largest estimate grew to {:.1e}; N = {} kept", options_.elements,
+                                      finer_worst, kept.options.elements);
+      restore(plane, std::move(kept));
+      break;
+    }
+    result = std::move(finer);
+  }
+  std::string note;
+  if (options_.elements != first_elements)
+    note = fmt::format("mesh refined for the accuracy target {:.1e}: from N = {} (largest estimate {:.1e}) to N = {} "
+                       "elements", options_.tolerance, first_elements, first_worst, options_.elements);
+  if (!stop_reason.empty()) note += (note.empty() ? "mesh not refined: " : "; not refined further: ") + stop_reason;
+  if (!note.empty()) result.summary.notes.push_back(note);
+  return result;
+}
+
+ModalResult FeNumerics::modes_on_plan(Plane plane, int count) {
+  naturals_[plane].clear();
   ModalResult result;
   SolverSummary& summary = result.summary;
   summary.resolution = fe_resolution(plan_);

@@ -27,16 +27,7 @@ using catena::testing::solve_problem;
 
 constexpr double kDefaultAccuracy = 1e-9;  // what shooting's defaults must hold to (issue 12)
 
-Problem mooring_line_700_650() {
-  Problem problem;
-  problem.cable.length_m = 1000.0;
-  problem.cable.weight_n_per_m = 1000.0;
-  problem.cable.axial_stiffness_n = 5e8;
-  problem.cable.mass_kg_per_m = 120.0;
-  problem.cable.added_mass_kg_per_m = 80.0;
-  problem.supports.b_m = Vec2(700.0, 650.0);
-  return problem;
-}
+Problem mooring_line_700_650() { return catena::testing::mooring_line(Vec2(700.0, 650.0)); }
 
 double relative_difference(double a, double b) { return std::abs(a - b) / std::abs(b); }
 

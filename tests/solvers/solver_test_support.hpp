@@ -36,6 +36,20 @@ SolvedProblem solve_problem(Solve solve, const Problem& problem, const SolveRequ
 }
 
 /// A request for the lowest modes only (no shapes, tension or forcing).
+/// The mooring line (L = 1000 m, W0 = 1000 N/m, EA = 5e8 N, m = 120 kg/m, added mass
+/// 80 kg/m) anchored at the origin, its fairlead at `b` [m]; (900, 300) is
+/// verification/scenes/physical/mooring-line-900m.toml.
+inline Problem mooring_line(Vec2 b) {
+  Problem problem;
+  problem.cable.length_m = 1000.0;
+  problem.cable.weight_n_per_m = 1000.0;
+  problem.cable.axial_stiffness_n = 5e8;
+  problem.cable.mass_kg_per_m = 120.0;
+  problem.cable.added_mass_kg_per_m = 80.0;
+  problem.supports.b_m = b;
+  return problem;
+}
+
 inline SolveRequest modes_request(int inplane, int outofplane) {
   SolveRequest request;
   request.inplane_modes = inplane;

@@ -86,8 +86,8 @@
 
 namespace catena {
 
-/// Options of the `fe` solver. Scene knobs: `elements`, `richardson`, `kappa`, `observed_order`;
-/// `eigen_tolerance` and `max_restarts` are set through this struct only.
+/// Options of the `fe` solver. Scene knobs: `elements`, `richardson`, `kappa`, `observed_order`,
+/// `tolerance`, `max_elements`; `eigen_tolerance` and `max_restarts` are set through this struct only.
 struct FeSolverOptions {
   /// Number of bar elements N (the coarse mesh when Richardson is on). In [2, 5e7]; the coarsest
   /// mesh used resolves at most N / 2 modes per plane (docs/methods/fe.md), more is InvalidInput.
@@ -105,10 +105,13 @@ struct FeSolverOptions {
   /// Gale's catenaries (N = 800) the extrapolated frequencies at kappa = 1e-6 agree with those at
   /// 1e-5 to ~1e-7 relative, and at 1e-7 rounding reaches ~1e-6. Hence the default 1e-6.
   double kappa = 1e-6;
-  /// Accuracy target of each frequency [-], in [0, 1]; 0: none. A mode whose error estimate
-  /// exceeds it is listed in the plane's SolverSummary::missed_modes and the plane is
-  /// NoConvergence (fe does not refine: a finer mesh is the user's choice).
+  /// Accuracy target of each frequency [-], in [0, 1]; 0: none. When a mode's error estimate
+  /// exceeds it, fe solves again on a finer mesh (N predicted from the estimates' order, at most
+  /// max_elements; docs/methods/fe.md, "Meeting a tolerance"); a mode that still exceeds it is
+  /// listed in the plane's SolverSummary::missed_modes and the plane is NoConvergence.
   double tolerance = 0.0;
+  /// The largest N a tolerance may refine to, in [2, 5e7]. At or below `elements`: no refinement.
+  int max_elements = 51200;
   /// Spectra convergence tolerance on the Ritz values of the shift-inverted operator (relative).
   /// In (0, 1e-4].
   double eigen_tolerance = 1e-13;

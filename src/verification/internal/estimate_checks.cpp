@@ -8,10 +8,12 @@
 namespace catena::internal {
 namespace {
 
-// A value a solver returned with its own relative error estimate.
+// A value a solver returned with its own relative error estimate, and the accuracy target the
+// solver reported for it (0: none reported).
 struct Claim {
   double value = 0.0;
   double estimate = 0.0;
+  double target = 0.0;
 };
 
 // Where a claim sits: the quantity (for the independence rule), the plane and the mode.
@@ -23,9 +25,11 @@ struct Place {
 
 using ClaimOf = std::function<std::optional<Claim>(const SolverOutput&, bool as_reference)>;
 
-// The accuracy the scene asked of the solver: its accuracy knob when the scene sets it, else the
-// table's default.
-double requested_accuracy(const SceneResult& result, const SolverAccuracy& accuracy) {
+// The accuracy the scene asked of the solver: the target the solver reported for the value (what
+// it promises: shooting's 10 rtol + root_tolerance, fe's tolerance), else its accuracy knob when
+// the scene sets it, else the table's default.
+double requested_accuracy(const SceneResult& result, const SolverAccuracy& accuracy, const Claim& claim) {
+  if (claim.target > 0.0) return claim.target;
   const auto solver = result.scene.solvers.find(accuracy.name);
   if (!accuracy.accuracy_knob.empty() && solver != result.scene.solvers.end()) {
     const auto knob = solver->second.find(accuracy.accuracy_knob);
@@ -36,9 +40,9 @@ double requested_accuracy(const SceneResult& result, const SolverAccuracy& accur
   return accuracy.accuracy;
 }
 
-std::optional<Claim> usable_claim(double value, double estimate) {
+std::optional<Claim> usable_claim(double value, double estimate, double target = 0.0) {
   if (!(estimate >= 0.0) || !std::isfinite(estimate)) return std::nullopt;
-  return Claim{value, estimate};
+  return Claim{value, estimate, target};
 }
 
 // The reference for `claimant`'s value at `place`: among the other solvers declared exact in the
@@ -98,7 +102,7 @@ void check_claim(const SolverOutput& claimant, const std::vector<const SolverOut
                              "actual relative error {:.2e}",
                              claimant.solver, claim->value, claim->estimate, ref->solver, reference.value,
                              reference.estimate, relative_difference(claim->value, reference.value));
-  judge(check, *claim, reference, requested_accuracy(builder.result(), *accuracy));
+  judge(check, *claim, reference, requested_accuracy(builder.result(), *accuracy, *claim));
   builder.add(std::move(check));
 }
 
@@ -108,7 +112,8 @@ ClaimOf frequency_claim(Plane plane, int index) {
     const auto& modal = plane == Plane::InPlane ? output.inplane : output.outofplane;
     if (!modal || (as_reference && modal->summary.termination != Termination::Converged)) return std::nullopt;
     for (const Mode& mode : modal->modes) {
-      if (mode.index == index) return usable_claim(mode.omega_rad_s, mode.relative_error_estimate);
+      if (mode.index == index)
+        return usable_claim(mode.omega_rad_s, mode.relative_error_estimate, modal->summary.accuracy_target);
     }
     return std::nullopt;
   };

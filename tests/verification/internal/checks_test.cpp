@@ -373,6 +373,19 @@ TEST(Checks, AnEstimateTenThousandTimesTheActualErrorWarns) {
   EXPECT_EQ(find_compare(run_checks(r), "estimate", "fe vs shooting", 1)->verdict, Verdict::Pass);
 }
 
+TEST(Checks, AnEstimateAtTheAccuracyTargetTheSolverReportsIsNotUninformative) {
+  // shooting floors its estimate at its target 10 rtol + root_tolerance (1.1e-9): against a more
+  // accurate reference that is 1e4 x its actual error, but it is what the solver promised.
+  SceneResult r = gale_result();
+  r.outputs = {output_with("shooting", {1.0 * (1 + 1e-13)}, 1.1e-9), output_with("fe", {1.0}, 1e-13)};
+  EXPECT_EQ(find_compare(run_checks(r), "estimate", "shooting vs fe", 1)->verdict, Verdict::Warn);  // rtol 1e-10
+  r.outputs[0].inplane->summary.accuracy_target = 1.1e-9;
+  EXPECT_EQ(find_compare(run_checks(r), "estimate", "shooting vs fe", 1)->verdict, Verdict::Pass);
+  // Above the reported target it still warns.
+  r.outputs[0].inplane->modes[0].relative_error_estimate = 1e-8;
+  EXPECT_EQ(find_compare(run_checks(r), "estimate", "shooting vs fe", 1)->verdict, Verdict::Warn);
+}
+
 TEST(Checks, TheReferenceIsTheOtherExactSolverWithTheSmallestEstimate) {
   SceneResult r = gale_result();
   r.outputs = {output_with("fe", {1.0 + 1e-8}, 1e-7), output_with("shooting", {1.0 + 1e-10}, 1e-10),
