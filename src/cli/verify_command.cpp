@@ -181,6 +181,9 @@ void print_mutation(const MutationRun& run) {
   const MutationTally exact = run.exact_with_witness();
   fmt::print("  exact solvers where another exact solver ran: {} of {} caught, {} uncaught; {:.1f} s on {} threads\n",
              exact.caught, exact.made, exact.made - exact.caught, run.wall_time_s, run.threads);
+  const MutationTally beyond = run.exact_beyond_estimate();
+  fmt::print("  of those, changes larger than the mutated value's own error estimate: {} of {} caught, {} uncaught\n",
+             beyond.caught, beyond.made, beyond.made - beyond.caught);
 }
 
 // The mutation run over the solved results (nothing is re-solved), with its progress.

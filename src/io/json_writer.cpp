@@ -377,12 +377,14 @@ json mutation_json(const MutationRun& run) {
       uncaught.push_back({{key::scene, outcome.scene}, {key::family, outcome.family}, {key::solver, outcome.solver},
                           {key::quantity, to_string(outcome.quantity)}, {key::plane, outcome.plane},
                           {key::exact_witness, outcome.exact_witness}, {key::modes, json::array()},
-                          {key::sizes, json::array()}});
+                          {key::sizes, json::array()}, {key::estimates, json::array()}});
     }
     uncaught.back()[key::modes].push_back(outcome.mode);
     uncaught.back()[key::sizes].push_back(number(outcome.size));
+    uncaught.back()[key::estimates].push_back(number(outcome.estimate));
   }
   const MutationTally exact = run.exact_with_witness();
+  const MutationTally beyond = run.exact_beyond_estimate();
   return {{key::wall_time_s, run.wall_time_s},
           {key::threads, run.threads},
           {key::frequency_factor, kFrequencyMutationFactor},
@@ -390,6 +392,7 @@ json mutation_json(const MutationRun& run) {
           {key::forced_tension_relative, kForcedTensionMutation},
           {key::fe_accuracy_target, kFeAccuracyTarget},
           {key::exact_with_witness, {{key::made, exact.made}, {key::caught, exact.caught}}},
+          {key::exact_beyond_estimate, {{key::made, beyond.made}, {key::caught, beyond.caught}}},
           {key::tallies, tallies},
           {key::uncaught, uncaught}};
 }

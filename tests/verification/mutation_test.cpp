@@ -56,6 +56,10 @@ TEST(Mutation, AFrequencyMadeWrongBeyondItsToleranceIsCaughtByAFrequencyCheck) {
     EXPECT_DOUBLE_EQ(o.size, 1e-5);
     EXPECT_TRUE(o.exact_witness);
     EXPECT_EQ(o.caught_by, "frequency fe vs shooting in-plane mode " + std::to_string(o.mode));
+    // The outcome keeps the mutated value's own estimate, from before the mutation.
+    for (const auto& output : result.outputs)
+      if (output.solver == "fe")
+        EXPECT_DOUBLE_EQ(o.estimate, output.inplane->modes[static_cast<std::size_t>(o.mode - 1)].relative_error_estimate);
   }
 }
 
@@ -77,6 +81,10 @@ TEST(Mutation, AFrequencyMadeWrongWithinItsToleranceIsReportedUncaught) {
   EXPECT_EQ(tally.made, 3);
   EXPECT_EQ(tally.caught, 0);
   EXPECT_LT(run.exact_with_witness().caught, run.exact_with_witness().made);
+  // shooting claims 1.1e-9 (its estimate's floor): a 1.1e-8 change is beyond it, so it counts
+  // against the score of changes beyond the solvers' own estimates too.
+  for (const auto& o : shooting) EXPECT_GT(o.size, o.estimate) << "mode " << o.mode;
+  EXPECT_LT(run.exact_beyond_estimate().caught, run.exact_beyond_estimate().made);
 }
 
 TEST(Mutation, AModeMixIsCaughtByTheShapeChecks) {

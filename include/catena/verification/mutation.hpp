@@ -48,6 +48,9 @@ struct MutationOutcome {
   /// The size of the mutation: relative change of omega, 1 - MAC against the unmutated shape, or
   /// relative change of the tension.
   double size = 0.0;
+  /// The mutated value's own relative error estimate, before the mutation (-1: none, e.g. a
+  /// shape). A mutation no larger than it is within what the solver itself says of its error.
+  double estimate = -1.0;
   /// Another exact solver (fe, shooting, frobenius) returned the same quantity in this scene.
   bool exact_witness = false;
   bool caught = false;
@@ -73,6 +76,9 @@ struct MutationRun {
   /// Tally of the exact solvers' mutations where another exact solver ran (the target:
   /// all caught).
   MutationTally exact_with_witness() const;
+  /// The same, for the mutations larger than the mutated value's own error estimate: changes
+  /// beyond what the solver claims, which a check must see wherever a witness ran.
+  MutationTally exact_beyond_estimate() const;
 };
 
 /// True for fe, shooting and frobenius (solvers of the exact linear problem; asymptotic and airy

@@ -29,13 +29,24 @@ std::string joined_numbers(const json& list, const char* format) {
   return text;
 }
 
+// The mutated values' own estimates: "-" for a value without one (negative, or null).
+std::string joined_estimates(const json& list) {
+  std::string text;
+  for (const auto& x : list) {
+    const bool none = !x.is_number() || x.get<double>() < 0.0;
+    text += (text.empty() ? "" : ", ") + (none ? std::string("-") : number_text(x, "{:.2g}"));
+  }
+  return text;
+}
+
 void add_uncaught(Document& out, const json& uncaught) {
   out.push_back(Heading{3, "Uncaught mutations", "mutation-uncaught"});
-  Table t{{"scene", "solver", "quantity", "plane", "modes", "sizes", "exact witness"}, {}, "uncaught"};
+  Table t{{"scene", "solver", "quantity", "plane", "modes", "sizes", "own estimates", "exact witness"}, {}, "uncaught"};
   for (const auto& u : uncaught) {
     t.rows.push_back({u.value(key::scene, ""), u.value(key::solver, ""), u.value(key::quantity, ""),
                       u.value(key::plane, ""), joined_numbers(list_or_empty(u, key::modes), "{:g}"),
                       joined_numbers(list_or_empty(u, key::sizes), "{:.2g}"),
+                      joined_estimates(list_or_empty(u, key::estimates)),
                       u.value(key::exact_witness, false) ? "yes" : "no"});
   }
   add_table_or_none(out, std::move(t));
@@ -49,16 +60,19 @@ void add_mutation(Document& out, const json& document) {
   out.push_back(Heading{2, "Mutation score", "mutation"});
   const json& exact = m[key::exact_with_witness];
   const Tally target{exact.value(key::made, 0), exact.value(key::caught, 0)};
+  const json beyond_json = m.value(key::exact_beyond_estimate, json::object());
+  const Tally beyond{beyond_json.value(key::made, 0), beyond_json.value(key::caught, 0)};
   out.push_back(Paragraph{fmt::format(
       "One result at a time made wrong, then the scene's checks re-run on the mutated results (nothing re-solved): "
       "a frequency by {:g} x its solver's accuracy target (shooting rtol, frobenius tolerance, fe {:g}, asymptotic "
       "and airy their model-error estimate), a mode shape by a mix with its neighbour so that 1 - MAC is {:g} x the "
       "widest MAC tolerance, a forced max |tension| by {:g} relative. Caught: some check of the scene went to FAIL "
       "(docs/mutation.md). Exact solvers (fe, shooting, frobenius) where another exact solver ran: {} of {} caught "
-      "({}). {:.1f} s on {} threads.",
+      "({}); of those, the changes larger than the mutated value's own error estimate (beyond what its solver "
+      "claims): {} of {} caught ({}). {:.1f} s on {} threads.",
       m.value(key::frequency_factor, 0.0), m.value(key::fe_accuracy_target, 0.0), m.value(key::shape_factor, 0.0),
-      m.value(key::forced_tension_relative, 0.0), target.caught, target.made, percent(target),
-      m.value(key::wall_time_s, 0.0), m.value(key::threads, 0))});
+      m.value(key::forced_tension_relative, 0.0), target.caught, target.made, percent(target), beyond.caught,
+      beyond.made, percent(beyond), m.value(key::wall_time_s, 0.0), m.value(key::threads, 0))});
   std::map<std::pair<std::string, std::string>, Tally> by_family, by_quantity;
   for (const auto& t : list_or_empty(m, key::tallies)) {
     for (auto* table : {&by_family, &by_quantity}) {

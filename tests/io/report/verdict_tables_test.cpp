@@ -63,11 +63,12 @@ TEST(HeadlineTables, CountEachVerdictByKindAndBySolverPair) {
 json mutation_block() {
   return json::parse(R"({"wall_time_s": 1.5, "threads": 2, "frequency_factor": 10.0, "shape_factor": 10.0,
     "forced_tension_relative": 1e-4, "fe_accuracy_target": 1e-7,
-    "exact_with_witness": {"made": 3, "caught": 2},
-    "tallies": [{"solver": "fe", "family": "gale", "quantity": "frequency", "made": 2, "caught": 1},
+    "exact_with_witness": {"made": 4, "caught": 2}, "exact_beyond_estimate": {"made": 2, "caught": 2},
+    "tallies": [{"solver": "fe", "family": "gale", "quantity": "frequency", "made": 3, "caught": 1},
                 {"solver": "fe", "family": "gale", "quantity": "forced-tension", "made": 1, "caught": 1}],
     "uncaught": [{"scene": "gale-a", "family": "gale", "solver": "fe", "quantity": "frequency",
-                  "plane": "in-plane", "exact_witness": true, "modes": [2], "sizes": [1e-6]}]})");
+                  "plane": "in-plane", "exact_witness": true, "modes": [2, 3], "sizes": [1e-6, 1e-6],
+                  "estimates": [2e-6, -1.0]}]})");
 }
 
 TEST(MutationSection, ScoresBySolverAndFamilyAndListsEveryUncaughtMutation) {
@@ -77,9 +78,9 @@ TEST(MutationSection, ScoresBySolverAndFamilyAndListsEveryUncaughtMutation) {
   add_mutation(out, document);
   const auto t = tables(out);
   ASSERT_EQ(t.size(), 3u);
-  EXPECT_EQ(t[0].rows, (Rows{{"fe", "gale", "3", "2", "1", "66.7%"}}));
-  EXPECT_EQ(t[1].rows, (Rows{{"fe", "forced-tension", "1", "1", "0", "100.0%"}, {"fe", "frequency", "2", "1", "1", "50.0%"}}));
-  EXPECT_EQ(t[2].rows, (Rows{{"gale-a", "fe", "frequency", "in-plane", "2", "1e-06", "yes"}}));
+  EXPECT_EQ(t[0].rows, (Rows{{"fe", "gale", "4", "2", "2", "50.0%"}}));
+  EXPECT_EQ(t[1].rows, (Rows{{"fe", "forced-tension", "1", "1", "0", "100.0%"}, {"fe", "frequency", "3", "1", "2", "33.3%"}}));
+  EXPECT_EQ(t[2].rows, (Rows{{"gale-a", "fe", "frequency", "in-plane", "2, 3", "1e-06, 1e-06", "2e-06, -", "yes"}}));
 }
 
 TEST(MutationSection, AbsentWithoutAMutationRun) {
