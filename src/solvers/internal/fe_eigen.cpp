@@ -80,15 +80,33 @@ class MassFactor {
     }
   }
   /// y = L^T x.
-  void lower_transpose(const double* x, double* y) const {
+  void lower_transpose(const double* x, double* y) const { lower_transpose_nodes(x, y, 0, nodes_); }
+  /// The rows of nodes [first, first + count) of L^T x, into y[0 .. count * dofs).
+  void lower_transpose_nodes(const double* x, double* y, Eigen::Index first, Eigen::Index count) const {
+    const Eigen::Index offset = first * dofs_;
     if (dofs_ == 1) {
-      for (Eigen::Index i = 0; i < nodes_; ++i) y[i] = l11_[i] * x[i];
+      for (Eigen::Index node = first; node < first + count; ++node) y[node - offset] = l11_[node] * x[node];
       return;
     }
-    for (Eigen::Index node = 0, i = 0; node < nodes_; ++node, i += 2) {
-      y[i] = l11_[node] * x[i] + l21_[node] * x[i + 1];
-      y[i + 1] = l22_[node] * x[i + 1];
+    for (Eigen::Index node = first, i = offset; node < first + count; ++node, i += 2) {
+      y[i - offset] = l11_[node] * x[i] + l21_[node] * x[i + 1];
+      y[i + 1 - offset] = l22_[node] * x[i + 1];
     }
+  }
+  /// X^T M X = (L^T X)^T (L^T X), a block of node rows at a time: L is block-diagonal per node, so
+  /// each block of L^T X needs only the same rows of X, and the whole product is one pass over X
+  /// (k products M x_i and X^T (M x_i) read X k times).
+  Eigen::MatrixXd gram(const Eigen::MatrixXd& X) const {
+    constexpr Eigen::Index kBlockNodes = 1024;
+    Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(X.cols(), X.cols());
+    Eigen::MatrixXd block(std::min(kBlockNodes, nodes_) * dofs_, X.cols());
+    for (Eigen::Index first = 0; first < nodes_; first += kBlockNodes) {
+      const Eigen::Index count = std::min(kBlockNodes, nodes_ - first), rows = count * dofs_;
+      for (Eigen::Index c = 0; c < X.cols(); ++c)
+        lower_transpose_nodes(X.col(c).data(), block.col(c).data(), first, count);
+      gram.noalias() += block.topRows(rows).transpose() * block.topRows(rows);
+    }
+    return gram;
   }
   /// X = L^{-T} X in place, column by column; L^{-1} = [1/l11, 0; -l21/(l11 l22), 1/l22] per
   /// node.
@@ -145,26 +163,32 @@ double norm1(const SparseMatrix& A) {
   return best;
 }
 
-// Residual, backward error and M-orthogonality of M-normalised eigenvectors. M phi and K phi are
-// formed a column at a time into two vectors, not as n x k blocks (fresh pages at every level;
-// each column's products are the same sums either way).
-void check_eigenpairs(const FeMatrices& matrices, FeEigenSolution& out) {
-  const Eigen::MatrixXd& phi = out.eigenvectors;
+// M-normalises each eigenvector (the Ritz vectors are M-orthonormal already; this removes rounding
+// drift) and measures residual and backward error. M phi and K phi are formed a column at a time
+// into two vectors, not as n x k blocks (fresh pages at every level).
+void normalise_and_measure_residuals(const FeMatrices& matrices, FeEigenSolution& out) {
+  Eigen::MatrixXd& phi = out.eigenvectors;
   Vector K_phi(phi.rows()), M_phi(phi.rows());
   out.max_residual = 0.0;
   out.max_backward_error = 0.0;
   const double k_norm = norm1(matrices.stiffness), m_norm = norm1(matrices.mass);
-  Eigen::MatrixXd gram(phi.cols(), phi.cols());
   for (Eigen::Index i = 0; i < phi.cols(); ++i) {
     M_phi.noalias() = matrices.mass * phi.col(i);
+    const double norm = std::sqrt(phi.col(i).dot(M_phi));
+    phi.col(i) /= norm;
+    M_phi /= norm;
     K_phi.noalias() = matrices.stiffness * phi.col(i);
     const double denominator = K_phi.norm();
     const double r = (K_phi - out.eigenvalues[i] * M_phi).norm();
     out.max_residual = std::max(out.max_residual, denominator > 0.0 ? r / denominator : r);
     out.max_backward_error = std::max(
         out.max_backward_error, r / ((k_norm + std::abs(out.eigenvalues[i]) * m_norm) * phi.col(i).norm()));
-    gram.col(i).noalias() = phi.transpose() * M_phi;
   }
+}
+
+// max_{i != j} |phi_i^T M phi_j| and the diagonal's distance from 1, once, for the final vectors.
+void measure_orthogonality(const MassFactor& factor, FeEigenSolution& out) {
+  const Eigen::MatrixXd gram = factor.gram(out.eigenvectors);
   out.max_orthogonality_error =
       (gram - Eigen::MatrixXd::Identity(gram.rows(), gram.cols())).cwiseAbs().maxCoeff();
 }
@@ -182,15 +206,10 @@ bool solved_densely(Eigen::Index unknowns, int modes) {
 // Normwise backward error at which the eigenpairs are as good as double precision allows.
 constexpr double kBackwardErrorGoal = 1e-14;
 
-// M-normalises the vectors (the Ritz vectors are M-orthonormal already; this removes rounding
-// drift) and measures residual, backward error and M-orthogonality.
+// M-normalises the vectors and measures residual, backward error and M-orthogonality.
 void normalise_and_check(const FeMatrices& matrices, FeEigenSolution& out) {
-  Vector M_phi(out.eigenvectors.rows());
-  for (Eigen::Index i = 0; i < out.eigenvectors.cols(); ++i) {
-    M_phi.noalias() = matrices.mass * out.eigenvectors.col(i);
-    out.eigenvectors.col(i) /= std::sqrt(out.eigenvectors.col(i).dot(M_phi));
-  }
-  check_eigenpairs(matrices, out);
+  normalise_and_measure_residuals(matrices, out);
+  measure_orthogonality(MassFactor(matrices.mass, matrices.dofs_per_node), out);
 }
 
 // Subspace (inverse) iteration with Rayleigh-Ritz on the converged Ritz vectors, with the
@@ -253,13 +272,15 @@ void take_ritz_pairs(LanczosResult&& lanczos, double sigma, const MassFactor& fa
 }
 
 // Polishes converged Ritz pairs: one or two inverse-iteration steps, only until the normwise
-// backward error is at rounding level.
-void polish(const FeMatrices& matrices, const ShiftInvertOperator& op, FeEigenSolution& out) {
+// backward error is at rounding level; the M-orthogonality of the final vectors is measured once.
+void polish(const FeMatrices& matrices, const ShiftInvertOperator& op, const MassFactor& factor,
+            FeEigenSolution& out) {
   for (int step = 0; step < 3; ++step) {
-    normalise_and_check(matrices, out);
+    normalise_and_measure_residuals(matrices, out);
     if (out.max_backward_error <= kBackwardErrorGoal || step == 2) break;
     refine(matrices, op, out);
   }
+  measure_orthogonality(factor, out);
 }
 
 // Our shift-invert Lanczos (fe_lanczos.hpp) on the standard form, polished. The operator's Ritz
@@ -298,7 +319,7 @@ void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, doub
       if (lanczos.converged) {
         take_ritz_pairs(std::move(lanczos), sigma, factor, out);
         const auto start_polish = Clock::now();
-        polish(matrices, op, out);
+        polish(matrices, op, factor, out);
         out.iteration_time_s += seconds_since(start_polish);
       } else {
         out.termination = Termination::NoConvergence;
