@@ -21,6 +21,7 @@
 #include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
 #include "solvers/internal/mode_tools.hpp"
+#include "solvers/solver_test_support.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -174,13 +175,7 @@ TEST(ShootingForced, StraightCableResponseIsExact) {
 TEST(ShootingForced, StaticLimitMatchesFiniteDifferenceOfStatics) {
   // Central difference with step 1e-5 m: truncation ~1e-10 relative, rounding ~1e-16/1e-5.
   constexpr double kRelTol = 1e-6;
-  Problem mooring;
-  mooring.cable.length_m = 1000.0;
-  mooring.cable.weight_n_per_m = 1000.0;
-  mooring.cable.axial_stiffness_n = 5e8;
-  mooring.cable.mass_kg_per_m = 120.0;
-  mooring.cable.added_mass_kg_per_m = 80.0;
-  mooring.supports.b_m = Vec2(900.0, 300.0);
+  const Problem mooring = catena::testing::mooring_line(Vec2(900.0, 300.0));
   Problem gale = make_gale_xi_problem(-1.383, 1.383);
   gale.prescribed_forces.reset();  // re-solved from the moved support below
   for (const Problem& problem : {gale, mooring}) {

@@ -225,13 +225,7 @@ TEST(ShootingSolver, ObservedConvergenceVsRtolIsMonotone) {
   // (within a factor 2 of run-to-run jitter) and to be covered by the solver's own estimate.
   Problem gale = make_gale_sag_problem(0.5, 0.8);
   gale.cable.added_mass_kg_per_m = 0.5;
-  Problem elastic;
-  elastic.cable.length_m = 1000.0;
-  elastic.cable.weight_n_per_m = 1000.0;
-  elastic.cable.axial_stiffness_n = 5e8;
-  elastic.cable.mass_kg_per_m = 120.0;
-  elastic.cable.added_mass_kg_per_m = 80.0;
-  elastic.supports.b_m = Vec2(900.0, 300.0);
+  const Problem elastic = catena::testing::mooring_line(Vec2(900.0, 300.0));
   SolveRequest request;
   request.inplane_modes = 3;
   request.outofplane_modes = 3;
