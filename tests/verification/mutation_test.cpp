@@ -57,9 +57,11 @@ TEST(Mutation, AFrequencyMadeWrongBeyondItsToleranceIsCaughtByAFrequencyCheck) {
     EXPECT_TRUE(o.exact_witness);
     EXPECT_EQ(o.caught_by, "frequency fe vs shooting in-plane mode " + std::to_string(o.mode));
     // The outcome keeps the mutated value's own estimate, from before the mutation.
-    for (const auto& output : result.outputs)
-      if (output.solver == "fe")
+    for (const auto& output : result.outputs) {
+      if (output.solver == "fe") {
         EXPECT_DOUBLE_EQ(o.estimate, output.inplane->modes[static_cast<std::size_t>(o.mode - 1)].relative_error_estimate);
+      }
+    }
   }
 }
 
