@@ -64,8 +64,8 @@ void add_mutation(Document& out, const json& document) {
   const Tally beyond{beyond_json.value(key::made, 0), beyond_json.value(key::caught, 0)};
   out.push_back(Paragraph{fmt::format(
       "One result at a time made wrong, then the scene's checks re-run on the mutated results (nothing re-solved): "
-      "a frequency by {:g} x its solver's accuracy target (shooting rtol, frobenius tolerance, fe {:g}, asymptotic "
-      "and airy their model-error estimate), a mode shape by a mix with its neighbour so that 1 - MAC is {:g} x the "
+      "a frequency by {:g} x its solver's accuracy target (shooting 10 rtol + root_tolerance, frobenius 10 tolerance, "
+      "fe its scene's tolerance or else {:g}, asymptotic and airy their model-error estimate), a mode shape by a mix with its neighbour so that 1 - MAC is {:g} x the "
       "widest MAC tolerance, a forced max |tension| by {:g} relative. Caught: some check of the scene went to FAIL "
       "(docs/mutation.md). Exact solvers (fe, shooting, frobenius) where another exact solver ran: {} of {} caught "
       "({}); of those, the changes larger than the mutated value's own error estimate (beyond what its solver "
