@@ -91,8 +91,8 @@ class SceneMutator {
   // Runs the checks on the present (mutated) state and records whether a check went to FAIL.
   void record(const std::string& solver, MutatedQuantity quantity, const std::string& plane, int mode, double size,
               double estimate, bool exact_witness) {
-    MutationOutcome outcome{work_.scene.name, family_, solver,         quantity, plane,
-                            mode,            size,    estimate, exact_witness, false, ""};
+    MutationOutcome outcome{work_.scene.name, family_, solver, quantity, plane, mode,
+                            size, estimate, exact_witness, false, ""};
     for (const auto& check : run_checks()) {
       if (check.verdict != Verdict::Fail || baseline_failures_.count(check_key(check))) continue;
       outcome.caught = true;
