@@ -374,11 +374,8 @@ ModalResult FeNumerics::modes_on_plan(Plane plane, int count) {
   const int available = modes_on_every_level(levels_, plane, count);
   std::vector<double> orders;
   extrapolate_modes(plane, available, result, orders);
-  for (const Mode& mode : result.modes) {
-    const double solve_rounding =
-        plane == Plane::InPlane ? plan_.rounding_floor(context_.groups.t0_n, mode.index) : 0.0;
-    naturals_[plane].push_back({mode.index, mode.omega_rad_s, mode.relative_error_estimate, solve_rounding});
-  }
+  for (const Mode& mode : result.modes)
+    naturals_[plane].push_back({mode.index, mode.omega_rad_s, mode.relative_error_estimate});
   if (available < count && summary.termination == Termination::Converged)
     summary.termination = Termination::NoConvergence;
   const FeLevel& finest = levels_[static_cast<std::size_t>(plan_.main_fine)][0];

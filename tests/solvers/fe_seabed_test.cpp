@@ -11,6 +11,8 @@
 // - a slack grounded stretch (friction) without foundation stiffness across it is declined.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -22,6 +24,9 @@
 #include "solvers/internal/fe_chain_statics.hpp"
 #include "solvers/internal/fe_line_mesh.hpp"
 #include "solvers/solver_test_support.hpp"
+#include "solvers/internal/fe_levels.hpp"
+#include "solvers/internal/fe_structured_residual.hpp"
+#include "solvers/internal/fe_operators.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -53,6 +58,37 @@ std::vector<double> sorted_first(std::vector<double> values, int count) {
   std::sort(values.begin(), values.end());
   values.resize(static_cast<std::size_t>(count));
   return values;
+}
+
+TEST(FeSeabed, TheStructuredForcedResidualCarriesTheFoundation) {
+  // fe_structured_residual.hpp on a grounded chain: the foundation's springs are part of
+  // f - (K - w^2 M) x, as in the assembled stiffness.
+  const Problem problem = line_on_seabed();
+  const StaticSolution statics(problem.as_line(), problem.supports.a_m, *problem.seabed, kTension, kLength);
+  FeSolverOptions options;
+  options.elements = 20;
+  options.richardson = false;
+  const internal::FePlan plan = internal::make_fe_plan(problem, statics, options, 1, 0);
+  internal::FeTimings timings;
+  std::string failure;
+  const internal::FeLevels levels = internal::solve_level_statics(problem, statics, plan, timings, failure);
+  ASSERT_TRUE(failure.empty()) << failure;
+  const internal::FeChain& chain = levels[static_cast<std::size_t>(plan.main_fine)][0].chain;
+  ASSERT_TRUE(chain.has_contact());
+  const internal::FeMatrices matrices = internal::assemble(Plane::InPlane, chain);
+  Vector x(matrices.stiffness.rows());
+  for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = 1e-3 * std::cos(0.9 * static_cast<double>(i));
+  const Vec2 end_b(1e-3, 0.0);
+  Vector ends(4);
+  ends << Vec2::Zero(), end_b;
+  const double omega = 2.0;
+  const Vector assembled =
+      -(matrices.boundary_coupling * ends) - (matrices.stiffness * x - omega * omega * (matrices.mass * x));
+  const Vector structured = internal::inplane_structured_residual(chain, matrices, omega, x, Vec2::Zero(), end_b);
+  const double l0 = kLength / chain.elements;
+  const double rounding = 1e3 * std::numeric_limits<double>::epsilon() * kAxial / l0 * 2e-3;
+  EXPECT_LE((structured - assembled).cwiseAbs().maxCoeff(), rounding);
+  EXPECT_GT(kTangential * l0 * 1e-3, 1e3 * rounding);  // the foundation's force is resolved
 }
 
 TEST(FeSeabed, LineOnTheSeabedIsAStringAndABarOnAWinklerFoundation) {

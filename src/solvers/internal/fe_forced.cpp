@@ -11,6 +11,7 @@
 #include "solvers/internal/fe_banded_ldlt.hpp"
 #include "solvers/internal/fe_extrapolation.hpp"
 #include "solvers/internal/fe_forced_richardson.hpp"
+#include "solvers/internal/fe_structured_residual.hpp"
 #include "solvers/internal/fe_summary.hpp"
 #include "solvers/internal/work_meter.hpp"
 
@@ -72,6 +73,9 @@ struct MeshResponse {
   FeResponseField field;
   FeResponseField kappa_reference;
   double kappa_factor = 1.0;
+  /// The tensions' rounding (FeLevelResponse::tension_rounding), the largest of the levels, times
+  /// what the extrapolation in kappa can amplify it by (|2| + |-1| = 3) [N].
+  double tension_rounding = 0.0;
 };
 
 MeshResponse respond_on_mesh(const Forcing& forcing, const std::vector<FeLevel>& mesh, double omega) {
@@ -84,7 +88,9 @@ MeshResponse respond_on_mesh(const Forcing& forcing, const std::vector<FeLevel>&
       return out;
     }
     fields.push_back(std::move(response.field));
+    out.tension_rounding = std::max(out.tension_rounding, response.tension_rounding);
   }
+  if (fields.size() >= 2) out.tension_rounding *= 3.0;
   out.field = fields.size() >= 2 ? extrapolate_field_in_kappa(fields[0], fields[1]) : fields[0];
   out.kappa_reference = fields.size() == 3 ? quadratic_field_in_kappa(fields[0], fields[1], fields[2]) : fields[0];
   out.kappa_factor = fields.size() == 3 ? 2.0 : 1.0;
@@ -93,8 +99,9 @@ MeshResponse respond_on_mesh(const Forcing& forcing, const std::vector<FeLevel>&
 
 // The error estimate's pieces, absolute over the stations (in the peak tension's unit).
 struct ForcedErrorParts {
-  double mesh = 0.0;   // the Richardson correction |R - fine| (without Richardson: |fine - coarse|)
-  double kappa = 0.0;  // the kappa term on the fine mesh (inextensible, MeshResponse)
+  double mesh = 0.0;      // the Richardson correction |R - fine| (without Richardson: |fine - coarse|)
+  double kappa = 0.0;     // the kappa term on the fine mesh (inextensible, MeshResponse)
+  double rounding = 0.0;  // the tensions' rounding, through the extrapolations (MeshResponse)
 };
 
 // The relative error estimate of the peak tension: the mesh term plus the kappa term plus the
@@ -106,7 +113,7 @@ struct ForcedErrorParts {
 // added, so the estimate never falls below the frequency error's amplification.
 double forced_estimate(const ForcedErrorParts& parts, double peak, double omega,
                        const std::vector<FeNaturalFrequency>& naturals) {
-  return (parts.mesh + parts.kappa) / peak + frequency_error_amplification(omega, naturals);
+  return (parts.mesh + parts.kappa + parts.rounding) / peak + frequency_error_amplification(omega, naturals);
 }
 
 // The mesh term of the estimate in plane (absolute, over the stations): |R(N, 2N) - R(N/2, N)|
@@ -152,6 +159,10 @@ void respond(ForcedResponse& response, const Forcing& forcing, const FePlan& pla
     parts.mesh = mesh_term(forcing, plan, levels, omega, coarse, fine_sampled, result,
                            max_station_difference(fine_sampled, other, in_plane));
   }
+  // Richardson's 4/3 fine - 1/3 coarse amplifies independent rounding by up to 5/3.
+  parts.rounding = plan.richardson && plan.has_coarse()
+                       ? 4.0 / 3.0 * fine.tension_rounding + 1.0 / 3.0 * coarse.tension_rounding
+                       : fine.tension_rounding;
   if (plan.inextensible) {
     const FeSampled kappa_reference =
         sample_field(forcing.plane, fine.kappa_reference, forcing.stations, forcing.statics);
@@ -194,13 +205,13 @@ Plane forced_plane(const ForcedRequest& request) {
 std::string resonance_diagnostic(double omega, Plane plane, const std::vector<FeNaturalFrequency>& naturals) {
   for (const FeNaturalFrequency& mode : naturals) {
     const double window =
-        std::max(1e-9, 3.0 * std::max(0.0, mode.forced_uncertainty())) * mode.omega_rad_s;
+        std::max(1e-9, 3.0 * std::max(0.0, mode.relative_error_estimate)) * mode.omega_rad_s;
     if (std::abs(omega - mode.omega_rad_s) <= window) {
       return fmt::format(
           "forcing at omega = {:.9g} rad/s is within {:.2e} rad/s of {} natural frequency {} "
           "({:.9g} rad/s, relative error estimate {:.1e}): resonance, no finite response",
           omega, std::abs(omega - mode.omega_rad_s), to_string(plane), mode.index, mode.omega_rad_s,
-          mode.forced_uncertainty());
+          mode.relative_error_estimate);
     }
   }
   return {};
@@ -209,13 +220,23 @@ std::string resonance_diagnostic(double omega, Plane plane, const std::vector<Fe
 double frequency_error_amplification(double omega, const std::vector<FeNaturalFrequency>& naturals) {
   double worst = 0.0;
   for (const FeNaturalFrequency& mode : naturals) {
-    if (!(mode.forced_uncertainty() >= 0.0)) continue;
+    if (!(mode.relative_error_estimate >= 0.0)) continue;
     const double wn2 = mode.omega_rad_s * mode.omega_rad_s;
     const double distance = std::abs(wn2 - omega * omega);
-    worst = std::max(worst, distance > 0.0 ? 2.0 * mode.forced_uncertainty() * wn2 / distance
+    worst = std::max(worst, distance > 0.0 ? 2.0 * mode.relative_error_estimate * wn2 / distance
                                            : std::numeric_limits<double>::infinity());
   }
   return worst;
+}
+
+// FeLevelResponse::tension_rounding.
+double tension_rounding(const FeChain& chain, const std::vector<Vec2>& D) {
+  double worst = 0.0;
+  for (int j = 0; j < chain.elements; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    worst = std::max(worst, chain.axial_stiffness_n[j] / chain.element_length_m[j] * (D[k].norm() + D[k + 1].norm()));
+  }
+  return std::numeric_limits<double>::epsilon() * worst;
 }
 
 FeLevelResponse respond_on_level(Plane plane,
@@ -240,6 +261,12 @@ FeLevelResponse respond_on_level(Plane plane,
   Vector x = rhs;
   if (!singular) {
     ldlt.solve_in_place(x.data());
+    if (plane == Plane::InPlane) {
+      // One refinement step against the unrounded chain (fe_structured_residual.hpp).
+      Vector correction = inplane_structured_residual(chain, matrices, omega, x, end_a, end_b);
+      ldlt.solve_in_place(correction.data());
+      x += correction;
+    }
     singular = !x.allFinite();
   }
   if (singular) {
@@ -251,7 +278,10 @@ FeLevelResponse respond_on_level(Plane plane,
   }
   out.field.pieces = field_pieces(chain);
   out.field.nodes = node_displacements(plane, chain.elements, x, end_a, end_b);
-  if (plane == Plane::InPlane) out.field.tension = element_tension(chain, out.field.nodes);
+  if (plane == Plane::InPlane) {
+    out.field.tension = element_tension(chain, out.field.nodes);
+    out.tension_rounding = tension_rounding(chain, out.field.nodes);
+  }
   out.ok = true;
   return out;
 }

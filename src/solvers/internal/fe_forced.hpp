@@ -24,16 +24,10 @@ namespace catena::internal {
 struct FeNaturalFrequency {
   int index = 0;
   double omega_rad_s = 0.0;
+  /// What the forced response inherits from this mode, relative (negative: unknown). The rounding
+  /// of a solve with K - w^2 M, which a stiff chain's normwise floor would bound, is not part of
+  /// it: each in-plane solve is refined against the unrounded chain (fe_structured_residual.hpp).
   double relative_error_estimate = -1.0;
-  /// The normwise rounding floor of a solve with K - w^2 M along this mode (FePlan::rounding_floor,
-  /// in plane): the forced response is such a solve, and its rounding, eps ||K|| against this
-  /// mode's lambda, is amplified near the mode as a frequency error is. (The frequency itself is an
-  /// element-wise Rayleigh quotient, free of it: fe_rayleigh_quotient.hpp.)
-  double solve_rounding = 0.0;
-  /// What the forced response inherits from this mode, relative (negative: unknown).
-  double forced_uncertainty() const {
-    return relative_error_estimate < 0.0 ? -1.0 : relative_error_estimate + solve_rounding;
-  }
 };
 
 /// The plane a forcing moves: out of plane only for a displacement normal to the supports' plane.
@@ -50,6 +44,10 @@ struct FeLevelResponse {
   bool ok = false;
   std::string diagnostic;
   FeResponseField field;
+  /// Bound on the rounding of the element tensions EA/l0 t . (D_{j+1} - D_j) [N]: the nodal
+  /// displacements D are rounded to eps |D|, and on a stiff (penalised) chain the axial part of
+  /// their difference is far smaller than |D|, so eps max_j EA_j/l0_j (|D_j| + |D_{j+1}|).
+  double tension_rounding = 0.0;
 };
 FeLevelResponse respond_on_level(Plane plane,
                                  const FeChain& chain,

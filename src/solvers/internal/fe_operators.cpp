@@ -85,19 +85,6 @@ Eigen::Matrix2d half_element_mass(const FeChain& chain, int j) {
   return 0.5 * chain.element_length_m[j] * (chain.mass_kg_per_m[j] * ttT + M * (Eigen::Matrix2d::Identity() - ttT));
 }
 
-// The seabed foundation on the free nodes (docs/methods/fe.md, "Seabed contact"), lumped like the
-// mass: node i carries k times half of each grounded neighbour's l0, k_t on x (along the seabed)
-// and k_s on z in plane, k_t out of plane. Empty without contact.
-std::vector<Eigen::Matrix2d> inplane_foundation(const FeChain& chain) {
-  if (!chain.has_contact()) return {};
-  std::vector<Eigen::Matrix2d> node(static_cast<std::size_t>(chain.elements) + 1, Eigen::Matrix2d::Zero());
-  for (int i = 1; i < chain.elements; ++i) {
-    const double share = chain.grounded_share_m(i);
-    node[static_cast<std::size_t>(i)].diagonal() << chain.foundation_tangential_n_per_m2 * share,
-        chain.foundation_vertical_n_per_m2 * share;
-  }
-  return node;
-}
 
 std::vector<Eigen::Matrix<double, 1, 1>> outofplane_foundation(const FeChain& chain) {
   if (!chain.has_contact()) return {};
@@ -108,6 +95,17 @@ std::vector<Eigen::Matrix<double, 1, 1>> outofplane_foundation(const FeChain& ch
 }
 
 }  // namespace
+
+std::vector<Eigen::Matrix2d> inplane_foundation(const FeChain& chain) {
+  if (!chain.has_contact()) return {};
+  std::vector<Eigen::Matrix2d> node(static_cast<std::size_t>(chain.elements) + 1, Eigen::Matrix2d::Zero());
+  for (int i = 1; i < chain.elements; ++i) {
+    const double share = chain.grounded_share_m(i);
+    node[static_cast<std::size_t>(i)].diagonal() << chain.foundation_tangential_n_per_m2 * share,
+        chain.foundation_vertical_n_per_m2 * share;
+  }
+  return node;
+}
 
 FeMatrices assemble_inplane(const FeChain& chain) {
   const int N = chain.elements;

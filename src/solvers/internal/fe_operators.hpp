@@ -10,6 +10,7 @@
 
 #include <Eigen/Sparse>
 #include <utility>
+#include <vector>
 
 #include "catena/core/types.hpp"
 #include "solvers/internal/fe_chain_statics.hpp"
@@ -50,6 +51,11 @@ FeMatrices assemble_inplane(const FeChain& chain);
 FeMatrices assemble_outofplane(const FeChain& chain);
 /// assemble_inplane or assemble_outofplane.
 FeMatrices assemble(Plane plane, const FeChain& chain);
+
+/// The seabed foundation in plane on each node 0..N (docs/methods/fe.md, "Seabed contact"), lumped
+/// like the mass: node i carries k times half of each grounded neighbour's l0, k_t on x (along the
+/// seabed) and k_s on z; the end nodes carry none. Empty without contact.
+std::vector<Eigen::Matrix2d> inplane_foundation(const FeChain& chain);
 
 /// Number of free unknowns of a chain of `elements` elements in `plane`: 2 (N - 1) or N - 1.
 int fe_unknowns(Plane plane, int elements);
