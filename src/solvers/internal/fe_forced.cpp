@@ -229,6 +229,8 @@ double frequency_error_amplification(double omega, const std::vector<FeNaturalFr
   return worst;
 }
 
+namespace {
+
 // FeLevelResponse::tension_rounding.
 double tension_rounding(const FeChain& chain, const std::vector<Vec2>& D) {
   double worst = 0.0;
@@ -238,6 +240,8 @@ double tension_rounding(const FeChain& chain, const std::vector<Vec2>& D) {
   }
   return std::numeric_limits<double>::epsilon() * worst;
 }
+
+}  // namespace
 
 FeLevelResponse respond_on_level(Plane plane,
                                  const FeChain& chain,
