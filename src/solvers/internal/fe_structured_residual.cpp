@@ -3,17 +3,14 @@
 
 #include <vector>
 
+#include "solvers/internal/fe_shapes.hpp"
+
 namespace catena::internal {
 
 Vector inplane_structured_residual(const FeChain& chain, const FeMatrices& matrices, double omega, const Vector& x,
                                    const Vec2& end_a, const Vec2& end_b) {
   const int N = chain.elements;
-  // Node i's displacement: the ends given, free node i at unknowns 2 (i - 1), 2 (i - 1) + 1.
-  auto node = [&](int i) -> Vec2 {
-    if (i == 0) return end_a;
-    if (i == N) return end_b;
-    return Vec2(x[2 * (i - 1)], x[2 * (i - 1) + 1]);
-  };
+  const std::vector<Vec2> D = node_displacements(Plane::InPlane, N, x, end_a, end_b);
   // -(K x) on the free nodes, element by element: element e pulls node e by +F and node e + 1 by -F.
   std::vector<long double> force(static_cast<std::size_t>(x.size()), 0.0L);
   for (int e = 0; e < N; ++e) {
@@ -21,7 +18,8 @@ Vector inplane_structured_residual(const FeChain& chain, const FeMatrices& matri
     const long double tx = t.x(), tz = t.y(), nx = -tz, nz = tx;
     const long double a = static_cast<long double>(chain.axial_stiffness_n[e]) / chain.element_length_m[e];
     const long double b = static_cast<long double>(chain.tension_n[e]) / chain.stretched_length_m[e];
-    const Vec2 from = node(e), to = node(e + 1);
+    const Vec2& from = D[static_cast<std::size_t>(e)];
+    const Vec2& to = D[static_cast<std::size_t>(e) + 1];
     const long double dx = static_cast<long double>(to.x()) - from.x(), dz = static_cast<long double>(to.y()) - from.y();
     const long double axial = a * (tx * dx + tz * dz), transverse = b * (nx * dx + nz * dz);
     const long double fx = axial * tx + transverse * nx, fz = axial * tz + transverse * nz;
