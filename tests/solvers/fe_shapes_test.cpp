@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "catena/statics/problem_builders.hpp"
 #include "solvers/internal/fe_operators.hpp"
 #include "solvers/internal/mode_tools.hpp"
@@ -74,8 +76,10 @@ TEST(FeShapes, ModeOnStationsIsNormalised) {
 }
 
 // mode_on_stations reads the nodes next to each station from the eigenvector in place; the result
-// must be the same, bit for bit, as sampling the full copy of the nodes (node_displacements) with
-// every element's tension (element_tension).
+// must be the same as sampling the full copy of the nodes (node_displacements) with every
+// element's tension (element_tension): the displacements bit for bit, the tension to a few units
+// in the last place of its largest value (the compiler may fuse a multiply and an add in one
+// path and not in the other when it targets FMA, cmake/instruction_set.cmake).
 TEST(FeShapes, ModeOnStationsEqualsSamplingTheCopiedNodes) {
   const Problem problem = make_taut_inclined_problem(0.1, 30.0, 50.0, 0.6);
   const StaticSolution statics = solve_statics(problem);
@@ -104,7 +108,8 @@ TEST(FeShapes, ModeOnStationsEqualsSamplingTheCopiedNodes) {
     EXPECT_EQ(mode.w, expected.w);
     EXPECT_EQ(mode.v, expected.v);
     if (inplane) {
-      EXPECT_EQ(mode.tension_n, expected.tension_n);
+      const double last_place = std::numeric_limits<double>::epsilon() * expected.tension_n.cwiseAbs().maxCoeff();
+      EXPECT_LE((mode.tension_n - expected.tension_n).cwiseAbs().maxCoeff(), 4.0 * last_place);
     }
   }
 }
