@@ -55,7 +55,9 @@ class ShiftInvertOperator {
 // a 2x2 block in plane (l21 = l22 = 0 and l11 alone out of plane), and the products with L, L^T
 // and L^{-T} as plain loops over the nodes. Each product does the operations of the
 // compressed-column sparse product it replaces, in the same order, so the results are the same
-// to the last bit; it only saves the index indirection and the sparse matrices' memory.
+// to the last bit (up to the multiply-adds the compiler fuses when it targets FMA,
+// cmake/instruction_set.cmake); it only saves the index indirection and the sparse matrices'
+// memory.
 class MassFactor {
  public:
   MassFactor(const SparseMatrix& mass, int dofs_per_node)

@@ -94,7 +94,9 @@ void accumulate_columns(const double* V, Eigen::Index rows, Eigen::Index r0, Eig
 // of the speed of the V^T w pass over the same memory. Here a block of rows sums four columns at
 // a time (four streams). Each row gets the same sums as from Eigen's product: per column block
 // (Eigen's split: all columns below 128, else 16 or 4), acc = 0, acc += v_k c_k in order, then
-// w + (-1) acc; and the norm is taken over the whole vector. So the result is the same to the
+// w + (-1) acc; and the norm is taken over the whole vector. So the result was the same to the
+// last bit in the SSE2 build that introduced it; compiled for FMA (cmake/instruction_set.cmake)
+// the compiler and Eigen each decide which multiply-adds to fuse, and the two may differ in the
 // last bit.
 double subtract_combination(const BasisMap& basis, Eigen::Index columns, const Eigen::Ref<const Eigen::VectorXd>& c,
                             Eigen::Ref<Eigen::VectorXd> w) {
