@@ -1,7 +1,7 @@
 # The instruction set everything is compiled for (README.md, "Build"; docs/methods/fe.md, "Cost").
 # Without a -march flag GCC emits SSE2 only: Eigen's dense products and our Gram-Schmidt loops then
 # work on two doubles at a time without fused multiply-add. With AVX2 and FMA (x86-64-v3: every
-# x86-64 processor since about 2015) fe's eigen solve at N = 1000 runs about 1.6 times faster.
+# x86-64 processor since about 2015) fe's solve at N = 1000 runs about 1.5 times faster.
 #
 # CATENA_ARCH: AUTO uses x86-64-v3 when the compiler accepts it and the build machine runs it (the
 # binaries then need such a processor); OFF keeps the compiler's default; any other value is

@@ -119,12 +119,14 @@ TEST(FeRayleighQuotient, StructuredRitzUnmixesTheModesOfAStiffChain) {
   Eigen::MatrixXd again = ritz;
   ASSERT_TRUE(internal::element_rayleigh_ritz(chain, Plane::InPlane, again, matrices.mass));
   double moved = 0.0, trace_before = 0.0, trace_after = 0.0;
+  auto quotient = [&](const Eigen::MatrixXd& vectors, int i) {
+    return internal::element_rayleigh_quotient(chain, Plane::InPlane, vectors.col(i), matrices.mass);
+  };
   for (int i = 0; i < 4; ++i) {
-    const auto reference = internal::element_rayleigh_quotient(chain, Plane::InPlane, unmixed.col(i), matrices.mass);
-    const auto before = internal::element_rayleigh_quotient(chain, Plane::InPlane, mixed.col(i), matrices.mass);
-    const auto after = internal::element_rayleigh_quotient(chain, Plane::InPlane, ritz.col(i), matrices.mass);
-    const auto second = internal::element_rayleigh_quotient(chain, Plane::InPlane, again.col(i), matrices.mass);
-    EXPECT_NEAR(after.value, reference.value, 2.0 * reference.relative_rounding * reference.value) << i;
+    const auto reference = quotient(unmixed, i), before = quotient(mixed, i);
+    const auto after = quotient(ritz, i), second = quotient(again, i);
+    EXPECT_NEAR(after.value, reference.value, 2.0 * reference.relative_rounding * reference.value)
+        << i;
     EXPECT_NEAR(second.value, after.value, 2.0 * after.relative_rounding * after.value) << i;
     moved = std::max(moved, std::abs(before.value - after.value) / after.value);
     trace_before += before.value;

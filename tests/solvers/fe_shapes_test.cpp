@@ -108,7 +108,8 @@ TEST(FeShapes, ModeOnStationsEqualsSamplingTheCopiedNodes) {
     EXPECT_EQ(mode.w, expected.w);
     EXPECT_EQ(mode.v, expected.v);
     if (inplane) {
-      const double last_place = std::numeric_limits<double>::epsilon() * expected.tension_n.cwiseAbs().maxCoeff();
+      const double largest = expected.tension_n.cwiseAbs().maxCoeff();
+      const double last_place = std::numeric_limits<double>::epsilon() * largest;
       EXPECT_LE((mode.tension_n - expected.tension_n).cwiseAbs().maxCoeff(), 4.0 * last_place);
     }
   }
