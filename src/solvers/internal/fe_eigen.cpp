@@ -97,9 +97,11 @@ class MassFactor {
   }
   /// X^T M X = (L^T X)^T (L^T X), a block of node rows at a time: L is block-diagonal per node, so
   /// each block of L^T X needs only the same rows of X, and the whole product is one pass over X
-  /// (k products M x_i and X^T (M x_i) read X k times).
+  /// (k products M x_i and X^T (M x_i) read X k times). A block of 128 nodes (20 KB for 10 modes
+  /// in plane) fits in memory the solve's heap already has; 1024 nodes took 36 fresh pages of a
+  /// fresh process's first solve at N = 1000, about 0.08 ms of its 2.85.
   Eigen::MatrixXd gram(const Eigen::MatrixXd& X) const {
-    constexpr Eigen::Index kBlockNodes = 1024;
+    constexpr Eigen::Index kBlockNodes = 128;
     Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(X.cols(), X.cols());
     Eigen::MatrixXd block(std::min(kBlockNodes, nodes_) * dofs_, X.cols());
     for (Eigen::Index first = 0; first < nodes_; first += kBlockNodes) {
