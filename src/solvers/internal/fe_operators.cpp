@@ -85,7 +85,8 @@ Eigen::Matrix2d half_element_mass(const FeChain& chain, int j) {
   return 0.5 * chain.element_length_m[j] * (chain.mass_kg_per_m[j] * ttT + M * (Eigen::Matrix2d::Identity() - ttT));
 }
 
-
+// The seabed foundation out of plane, lumped as inplane_foundation (fe_operators.hpp): node i
+// carries k_t times half of each grounded neighbour's l0. Empty without contact.
 std::vector<Eigen::Matrix<double, 1, 1>> outofplane_foundation(const FeChain& chain) {
   if (!chain.has_contact()) return {};
   std::vector<Eigen::Matrix<double, 1, 1>> node(static_cast<std::size_t>(chain.elements) + 1);
