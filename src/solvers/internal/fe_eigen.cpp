@@ -168,25 +168,39 @@ double norm1(const SparseMatrix& A) {
 }
 
 // M-normalises each eigenvector (the Ritz vectors are M-orthonormal already; this removes rounding
-// drift) and measures residual and backward error. M phi and K phi are formed a column at a time
-// into two vectors, not as n x k blocks (fresh pages at every level).
+// drift) and measures residual and backward error. K and M are symmetric, so a block of their
+// columns, transposed, is the same block of rows: K phi and M phi are formed a block of rows at a
+// time for all vectors at once (K and M read once, not once per vector; a block x k temporary,
+// not n x k), and their norms accumulated, scaled by the M-norm at the end.
 void normalise_and_measure_residuals(const FeMatrices& matrices, FeEigenSolution& out) {
+  constexpr Eigen::Index kRows = 512;
   Eigen::MatrixXd& phi = out.eigenvectors;
-  Vector K_phi(phi.rows()), M_phi(phi.rows());
+  const Eigen::Index k = phi.cols();
+  // Per vector: phi^T M phi, |K phi|^2, |K phi - lambda M phi|^2 and |phi|^2.
+  Eigen::ArrayXd m_norm2 = Eigen::ArrayXd::Zero(k), k_phi2 = m_norm2, residual2 = m_norm2, phi2 = m_norm2;
+  Eigen::MatrixXd K_phi, M_phi;
+  for (Eigen::Index r = 0; r < phi.rows(); r += kRows) {
+    const Eigen::Index rows = std::min(kRows, phi.rows() - r);
+    K_phi.noalias() = matrices.stiffness.middleCols(r, rows).transpose() * phi;
+    M_phi.noalias() = matrices.mass.middleCols(r, rows).transpose() * phi;
+    for (Eigen::Index i = 0; i < k; ++i) {
+      const auto x = phi.col(i).segment(r, rows);
+      m_norm2[i] += x.dot(M_phi.col(i));
+      k_phi2[i] += K_phi.col(i).squaredNorm();
+      residual2[i] += (K_phi.col(i) - out.eigenvalues[i] * M_phi.col(i)).squaredNorm();
+      phi2[i] += x.squaredNorm();
+    }
+  }
   out.max_residual = 0.0;
   out.max_backward_error = 0.0;
   const double k_norm = norm1(matrices.stiffness), m_norm = norm1(matrices.mass);
-  for (Eigen::Index i = 0; i < phi.cols(); ++i) {
-    M_phi.noalias() = matrices.mass * phi.col(i);
-    const double norm = std::sqrt(phi.col(i).dot(M_phi));
+  for (Eigen::Index i = 0; i < k; ++i) {
+    const double norm = std::sqrt(m_norm2[i]);
     phi.col(i) /= norm;
-    M_phi /= norm;
-    K_phi.noalias() = matrices.stiffness * phi.col(i);
-    const double denominator = K_phi.norm();
-    const double r = (K_phi - out.eigenvalues[i] * M_phi).norm();
+    const double denominator = std::sqrt(k_phi2[i]) / norm, r = std::sqrt(residual2[i]) / norm;
     out.max_residual = std::max(out.max_residual, denominator > 0.0 ? r / denominator : r);
     out.max_backward_error = std::max(
-        out.max_backward_error, r / ((k_norm + std::abs(out.eigenvalues[i]) * m_norm) * phi.col(i).norm()));
+        out.max_backward_error, r / ((k_norm + std::abs(out.eigenvalues[i]) * m_norm) * (std::sqrt(phi2[i]) / norm)));
   }
 }
 

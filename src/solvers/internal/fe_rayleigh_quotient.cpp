@@ -75,15 +75,27 @@ Eigen::MatrixXd element_projected_stiffness(const FeChain& chain, Plane plane, c
   return total;
 }
 
+// V^T M V a block of rows at a time: M is symmetric, so the transpose of a block of its columns
+// is the same block of its rows, and (M V) on those rows is a block x k temporary, not n x k.
+// (A rank-one update per entry of M read V a row at a time, across k columns n apart: a TLB miss
+// per entry at large n.)
+Eigen::MatrixXd projected_mass(const SparseMatrix& mass, const Eigen::MatrixXd& vectors) {
+  constexpr Eigen::Index kRows = 512;
+  Eigen::MatrixXd total = Eigen::MatrixXd::Zero(vectors.cols(), vectors.cols()), MV;
+  for (Eigen::Index r = 0; r < vectors.rows(); r += kRows) {
+    const Eigen::Index rows = std::min(kRows, vectors.rows() - r);
+    MV.noalias() = mass.middleCols(r, rows).transpose() * vectors;
+    total.noalias() += vectors.middleRows(r, rows).transpose() * MV;
+  }
+  return total;
+}
+
 }  // namespace
 
 bool element_rayleigh_ritz(const FeChain& chain, Plane plane, Eigen::MatrixXd& vectors,
                            const SparseMatrix& mass) {
   Eigen::MatrixXd Kr = element_projected_stiffness(chain, plane, vectors);
-  Eigen::MatrixXd Mr = Eigen::MatrixXd::Zero(vectors.cols(), vectors.cols());
-  for (int k = 0; k < mass.outerSize(); ++k)  // V^T M V from M's entries: no n x k temporary
-    for (SparseMatrix::InnerIterator it(mass, k); it; ++it)
-      Mr.noalias() += it.value() * vectors.row(it.row()).transpose() * vectors.row(it.col());
+  Eigen::MatrixXd Mr = projected_mass(mass, vectors);
   Kr = 0.5 * (Kr + Kr.transpose()).eval();
   Mr = 0.5 * (Mr + Mr.transpose()).eval();
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ritz(Kr, Mr);
