@@ -11,6 +11,14 @@ if(CATENA_BUILD_TESTS)
            COMMAND catena_fe_vs_scipy --tiny --work ${PROJECT_BINARY_DIR}/fe-vs-scipy-tiny
                    --results ${PROJECT_BINARY_DIR}/fe-vs-scipy-tiny/table.txt)
   set_tests_properties(fe_vs_scipy_tiny PROPERTIES TIMEOUT 300)
+  # A mistyped option exits 2 with the reason before anything runs (it once ran the whole
+  # benchmark and replaced the committed table); --help lists the options and exits 0.
+  add_test(NAME fe_vs_scipy_rejects_unknown_option
+           COMMAND sh -c "\"$0\" --repeat 3 >/dev/null 2>err.txt; s=$?; grep -q \"unknown option '--repeat'\" err.txt && test $s -eq 2"
+                   $<TARGET_FILE:catena_fe_vs_scipy>
+           WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
+  add_test(NAME fe_vs_scipy_help
+           COMMAND sh -c "\"$0\" --help | grep -q -- '--max-elements N'" $<TARGET_FILE:catena_fe_vs_scipy>)
 endif()
 # The cost of 1, 6 and 20 modes per plane for each solver (issue 17; benchmarks/modes_cost.py),
 # kept working at one mode on one scene (no timing asserted).

@@ -14,8 +14,9 @@
 //     the child's peak resident set.
 //
 //   build/catena_fe_vs_scipy [--python /usr/bin/python3] [--work DIR] [--results FILE]
-//                            [--repeats R] [--max-elements N] [--tiny]
-// --tiny: small meshes and one repeat, only to keep the driver working (the ctest).
+//                            [--repeats R] [--max-elements N] [--tiny] [--help]
+// --tiny: small meshes and one repeat, only to keep the driver working (the ctest). --help: the
+// options (kUsage below); an unknown option or a bad value exits 2 before anything runs.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -205,17 +206,60 @@ std::string comparison_row(const Options& options, const Scene& scene, const std
 
 namespace {
 
+constexpr const char* kUsage = R"(catena_fe_vs_scipy: fe (and shooting) on the SI mooring line against SciPy's eigsh
+(shift-invert) on the same matrices; Catena in a fresh process per run, medians (issue 17).
+Takes about a minute on 2 cores, most of it the N = 1e6 scaling row.
+
+  --python PATH        Python 3 with numpy and scipy (default /usr/bin/python3)
+  --work DIR           scratch directory for the matrices handed to SciPy (default: the
+                       system's temporary directory / catena_fe_vs_scipy)
+  --results FILE       the table is written here, replacing the file (default
+                       benchmarks/results/fe-vs-scipy.txt in the source tree)
+  --repeats R          runs per row, R >= 1; the table holds medians (default 5)
+  --max-elements N     largest mesh of the scaling table, N >= 1000 (default 1000000)
+  --tiny               small meshes and one repeat: only keeps the driver working (the ctest)
+  --help               this text
+)";
+
+// Exit 2 with the reason and the usage (bad command line); never a half-run benchmark.
+[[noreturn]] void usage_error(const std::string& reason) {
+  std::fprintf(stderr, "catena_fe_vs_scipy: %s\n\n%s", reason.c_str(), kUsage);
+  std::exit(2);
+}
+
+int positive_integer(const std::string& option, const char* text, int smallest) {
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || value < smallest || value > 100000000)
+    usage_error(fmt::format("{} wants an integer >= {}, got '{}'", option, smallest, text));
+  return static_cast<int>(value);
+}
+
 Options parse(int argc, char** argv) {
   Options options;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (arg == "--tiny") options.tiny = true;
-    else if (arg == "--python" && has_value) options.python = argv[++i];
-    else if (arg == "--work" && has_value) options.work = argv[++i];
-    else if (arg == "--results" && has_value) options.results = argv[++i];
-    else if (arg == "--repeats" && has_value) options.repeats = std::max(1, std::atoi(argv[++i]));
-    else if (arg == "--max-elements" && has_value) options.max_elements = std::atoi(argv[++i]);
+    const bool valued = arg == "--python" || arg == "--work" || arg == "--results" || arg == "--repeats" ||
+                        arg == "--max-elements";
+    if (valued && i + 1 >= argc) usage_error(arg + " needs a value");
+    if (arg == "--help" || arg == "-h") {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    } else if (arg == "--tiny") {
+      options.tiny = true;
+    } else if (arg == "--python") {
+      options.python = argv[++i];
+    } else if (arg == "--work") {
+      options.work = argv[++i];
+    } else if (arg == "--results") {
+      options.results = argv[++i];
+    } else if (arg == "--repeats") {
+      options.repeats = positive_integer(arg, argv[++i], 1);
+    } else if (arg == "--max-elements") {
+      options.max_elements = positive_integer(arg, argv[++i], 1000);
+    } else {
+      usage_error("unknown option '" + arg + "'");
+    }
   }
   if (options.tiny) {
     options.repeats = 1;
