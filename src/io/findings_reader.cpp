@@ -1,7 +1,8 @@
 #include "catena/io/findings_reader.hpp"
 
 #include "catena/io/file_access.hpp"
-#include "io/internal/builtin_findings.hpp"
+#include "io/internal/builtin_tables.hpp"
+#include "io/internal/toml_json.hpp"
 #include "io/internal/toml_table_reader.hpp"
 
 namespace catena {
@@ -20,10 +21,8 @@ Finding read_finding(internal::TableReader& item) {
   return finding;
 }
 
-}  // namespace
-
-FindingsTable parse_findings_table(const std::string& text, const std::string& origin) {
-  const toml::value document = internal::parse_toml(text, origin);
+// The table from its TOML document (parsed from text, or rebuilt from the built-in JSON).
+FindingsTable read_findings_document(const toml::value& document, const std::string& origin) {
   internal::TableReader root(document, origin, "");
   std::vector<Finding> findings;
   for (internal::TableReader& item : root.table_array("finding")) findings.push_back(read_finding(item));
@@ -31,12 +30,19 @@ FindingsTable parse_findings_table(const std::string& text, const std::string& o
   return FindingsTable(std::move(findings));
 }
 
+}  // namespace
+
+FindingsTable parse_findings_table(const std::string& text, const std::string& origin) {
+  return read_findings_document(internal::parse_toml(text, origin), origin);
+}
+
 FindingsTable read_findings_file(const std::filesystem::path& path) {
   return parse_findings_table(read_input_file(path, "findings file"), path_text(path));
 }
 
 FindingsTable builtin_findings_table() {
-  return parse_findings_table(internal::kBuiltinFindings, "verification/findings.toml (built in)");
+  return read_findings_document(internal::toml_from_json(nlohmann::json::parse(internal::kBuiltinFindingsJson)),
+                                "verification/findings.toml (built in)");
 }
 
 }  // namespace catena

@@ -5,7 +5,8 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/file_access.hpp"
-#include "io/internal/builtin_tolerances.hpp"
+#include "io/internal/builtin_tables.hpp"
+#include "io/internal/toml_json.hpp"
 #include "io/internal/toml_table_reader.hpp"
 
 namespace catena {
@@ -96,10 +97,8 @@ SolverAccuracy read_solver(internal::TableReader& item) {
   return solver;
 }
 
-}  // namespace
-
-ToleranceTable parse_tolerance_table(const std::string& text, const std::string& origin) {
-  const toml::value document = internal::parse_toml(text, origin);
+// The table from its TOML document (parsed from text, or rebuilt from the built-in JSON).
+ToleranceTable read_tolerance_document(const toml::value& document, const std::string& origin) {
   internal::TableReader root(document, origin, "");
   std::vector<ToleranceRule> rules;
   for (internal::TableReader& item : root.table_array("tolerance")) rules.push_back(read_rule(item));
@@ -109,12 +108,19 @@ ToleranceTable parse_tolerance_table(const std::string& text, const std::string&
   return ToleranceTable(std::move(rules), std::move(solvers));
 }
 
+}  // namespace
+
+ToleranceTable parse_tolerance_table(const std::string& text, const std::string& origin) {
+  return read_tolerance_document(internal::parse_toml(text, origin), origin);
+}
+
 ToleranceTable read_tolerance_file(const std::filesystem::path& path) {
   return parse_tolerance_table(read_input_file(path, "tolerance file"), path_text(path));
 }
 
 ToleranceTable builtin_tolerance_table() {
-  return parse_tolerance_table(internal::kBuiltinTolerances, "verification/tolerances.toml (built in)");
+  return read_tolerance_document(internal::toml_from_json(nlohmann::json::parse(internal::kBuiltinTolerancesJson)),
+                                 "verification/tolerances.toml (built in)");
 }
 
 }  // namespace catena
