@@ -1,6 +1,6 @@
 #pragma once
 // TOML documents as JSON and back, for the tables compiled into the library
-// (verification/tolerances.toml and findings.toml). toml11 takes 2-4 ms to parse those 15 KB,
+// (verification/tolerances.toml and findings.toml). toml11 takes 3.5-5 ms to parse those 15 KB,
 // more than fe's whole solve in `catena solve`; so the build converts them to JSON once
 // (src/tools/embed_tables.cpp) and the library rebuilds the same TOML document from the JSON,
 // which nlohmann_json parses in well under a millisecond. The test
