@@ -1,8 +1,8 @@
 # The README's two commands on a fresh machine:
 #   make verify   install what is missing, build (Release), run the verification suite
 #   make test     install what is missing, build, run every test (ctest)
-#   make test-sanitize   the same tests and part of the suite under ASan + UBSan (docs/testing.md)
-#   make fuzz-campaign   5000 mutated scenes through the CLI, fixed seed (docs/testing.md)
+#   make test-sanitize   the same tests and part of the suite under ASan + UBSan (docs/contributing/testing.md)
+#   make fuzz-campaign   5000 mutated scenes through the CLI, fixed seed (docs/contributing/testing.md)
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=

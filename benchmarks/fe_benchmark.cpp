@@ -18,7 +18,7 @@
 
 #include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
-#include "solvers/internal/fe_eigen.hpp"
+#include "solvers/fe/fe_eigen.hpp"
 
 namespace {
 

@@ -37,7 +37,7 @@
 #include "catena/solvers/shooting_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
-#include "solvers/internal/fe_operators.hpp"
+#include "solvers/fe/fe_operators.hpp"
 
 namespace {
 

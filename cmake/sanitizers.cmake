@@ -1,5 +1,5 @@
 # CATENA_SANITIZE=ON: AddressSanitizer + UndefinedBehaviorSanitizer on everything this project
-# compiles (library, CLI, tests, fuzz driver). Used by `make test-sanitize` (docs/testing.md).
+# compiles (library, CLI, tests, fuzz driver). Used by `make test-sanitize` (docs/contributing/testing.md).
 #
 # -fno-sanitize-recover=all makes the first report abort the process, so that a ctest or a fuzz
 # iteration fails instead of printing a warning nobody reads. GCC's -fsanitize=undefined does not

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fails when a function in src/ is longer than the project's limit (120 lines; docs/architecture.md).
+"""Fails when a function in src/ is longer than the project's limit (120 lines; docs/contributing/architecture.md).
 
 Uses Universal Ctags (its `end` field) to find every C++ function definition and its extent.
 Usage: check_function_length.py [SRC_DIR] [--limit N] [--top K]

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks that the repository explains itself: every repository path cited in a source comment
 exists, and no comment cites a document that is not in the repository (the original design notes
-or the seed papers by their file numbers; cite docs/ and docs/references.md instead).
+or the seed papers by their file numbers; cite docs/ and docs/reference/references.md instead).
 
 Usage: check_references.py [REPO_ROOT]. Prints each dangling reference; exit 1 when any."""
 import pathlib

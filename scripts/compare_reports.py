@@ -4,7 +4,7 @@
 Prints the count compared, the largest relative difference and the worst entries; exit 1 when a
 frequency differs by more than TOL (default 1e-12) or a value of OLD is missing from NEW.
 Used to show that a refactor changes no result. Each value is compared when present in OLD: curves
-along the cable (kept in report.json only for scenes that ask for shapes, docs/json-layout.md) hold
+along the cable (kept in report.json only for scenes that ask for shapes, docs/reference/json-layout.md) hold
 none of these keys, and the `mutation` and `tolerance_reasons` parts of the document are skipped.
 Usage: compare_reports.py OLD.json NEW.json [TOL]"""
 import json, sys

@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
-"""Which folder includes which: a Markdown table for docs/architecture.md ("Layers").
+"""Which folder includes which: a Markdown table for docs/contributing/architecture.md ("Layers").
 
 Scans the #include "..." lines of src/ and include/catena/, maps every file and every included
 header to its layer folder (core, models, statics, solvers, verification, io, cli; a folder's
 internal/ belongs to it), and prints a table of include counts, including folder by row, included
 folder by column. Data must flow one way, core -> models -> statics -> solvers -> verification ->
 io -> cli: an include of a later layer from an earlier one is flagged in the table and listed
-below it, as is a public header (include/) that includes a private one (src/).
+below it, as is a public header (include/) that includes a private one (src/). Solvers stay
+independent: a file in src/solvers/<solver>/ may include its own folder and src/solvers/common/,
+never another solver's folder (docs/contributing/architecture.md, "Folders"); such an include is flagged too.
 
 Usage: python3 scripts/layering.py [REPOSITORY_ROOT]   (exit status 1 when something is flagged)
 """
@@ -32,7 +34,7 @@ def layer_of_file(path, root):
 
 
 def layer_of_include(name):
-    """The layer of an included header ("catena/solvers/x.hpp", "solvers/internal/y.hpp"), or
+    """The layer of an included header ("catena/solvers/x.hpp", "solvers/fe/y.hpp"), or
     None for anything else (a header next to the includer, a third-party header)."""
     if name in GENERATED:
         return GENERATED[name]
@@ -63,6 +65,23 @@ def scan(root):
                 yield path.relative_to(root), number, includer, included, header, private
 
 
+def solver_folder(parts):
+    """The solver folder of a path's parts ("src", "solvers", "fe", ...) or of an include's
+    ("solvers", "fe", ...): the folder name, or None outside src/solvers/<solver>/."""
+    if parts and parts[0] == "src":
+        parts = parts[1:]
+    if len(parts) > 2 and parts[0] == "solvers" and parts[1] != "common":
+        return parts[1]
+    return None
+
+
+def crosses_solvers(path, header):
+    """True when a solver's file includes another solver's private file."""
+    own = solver_folder(path.parts)
+    other = solver_folder(tuple(header.split("/")))
+    return own is not None and other is not None and own != other
+
+
 def main():
     root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).parent.parent)
     counts = {}
@@ -71,8 +90,10 @@ def main():
         counts[(includer, included)] = counts.get((includer, included), 0) + 1
         upward = LAYERS.index(included) > LAYERS.index(includer)
         public_to_private = path.parts[0] == "include" and private
-        if upward or public_to_private:
-            why = "against the layer order" if upward else "public header includes a private one"
+        crossing = crosses_solvers(path, header)
+        if upward or public_to_private or crossing:
+            why = ("against the layer order" if upward else "public header includes a private one"
+                   if public_to_private else "a solver includes another solver's file")
             flagged.append(f"- `{path}:{number}` includes `{header}` ({includer} -> {included}: {why})")
     upward_pairs = {(a, b) for (a, b) in counts if LAYERS.index(b) > LAYERS.index(a)}
 
@@ -93,7 +114,8 @@ def main():
         print()
         print("\n".join(flagged))
     else:
-        print("No include goes against the layer order, and no public header includes a private one.")
+        print("No include goes against the layer order, no public header includes a private one, "
+              "and no solver includes another solver's files.")
     return 1 if flagged else 0
 
 

@@ -10,7 +10,7 @@ packages=(
   libtoml11-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-scipy
-  python3-dev pybind11-dev python3-numpy python3-pytest   # the Python module and its tests (docs/python.md)
+  python3-dev pybind11-dev python3-numpy python3-pytest   # the Python module and its tests (docs/reference/python.md)
   universal-ctags     # the function-length check (scripts/check_function_length.py)
   chromium            # the HTML report is checked in headless Chromium (test skipped without it)
 )

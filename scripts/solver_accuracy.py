@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Measured accuracy of the exact solvers over the verification suite (docs/methods/shooting.md,
-"Accuracy over the suite"; docs/methods/fe.md, "Error estimate").
+"""Measured accuracy of the exact solvers over the verification suite (docs/explanation/methods/shooting.md,
+"Accuracy over the suite"; docs/explanation/methods/fe.md, "Error estimate").
 
 Runs the suite twice through `catena verify`, on copies of the scenes rewritten to run only the
 exact solvers with chosen knobs (published values, checks and forced responses dropped):

@@ -17,7 +17,7 @@
 namespace catena::testing {
 
 /// `uniform`'s cable written as a line of `pieces` identical segments (same ends): the anchor that a
-/// split line reproduces the one-segment result (docs/physics.md, "General lines").
+/// split line reproduces the one-segment result (docs/explanation/physics.md, "General lines").
 inline Problem split_into_segments(const Problem& uniform, int pieces) {
   Problem p = uniform;
   const CableProperties& c = uniform.cable;

@@ -2,7 +2,7 @@
 
 The library itself (not a wrapper around the command line): scenes from TOML files or dicts,
 statics, each solver on its own with its knobs, results as numpy arrays. Units are SI and carried
-in every name. Documentation: docs/python.md.
+in every name. Documentation: docs/reference/python.md.
 
     >>> import catena
     >>> r = catena.solve("verification/scenes/physical/mooring-line-900m.toml")
@@ -40,7 +40,7 @@ __all__ = [
 
 def load_scenes(scene):
     """The scenes of a TOML file (path) or of a dict with the file's structure: one, or one per
-    value of a [sweep]. A dict goes through the same reader as a file (docs/python.md)."""
+    value of a [sweep]. A dict goes through the same reader as a file (docs/reference/python.md)."""
     if isinstance(scene, Scene):
         return [scene]
     if isinstance(scene, Mapping):
@@ -73,7 +73,7 @@ def solve(scene, *, solvers=None, time_limit_s=None, checks=True):
     """Solves one scene as `catena solve` does: the statics once, then every applicable solver the
     scene names (all by default), then the cross-checks. Returns a Result.
 
-    scene: path of a TOML scene file, a dict with the same structure (docs/scene-format.md), or a
+    scene: path of a TOML scene file, a dict with the same structure (docs/reference/scene-format.md), or a
         Scene. A [sweep] raises InvalidInput (use solve_sweep).
     solvers: run only these solver names (default: the scene's [solvers], else all).
     time_limit_s: cooperative wall-clock budget of the scene [s]; solvers stop with what they have.
@@ -96,7 +96,7 @@ def _existing_path(path, what):
 
 def check(results, scene, rtol=1e-3, shapes=None):
     """Compares another code's natural frequencies with Catena's certified reference for `scene`, as
-    `catena check` does (docs/check.md, docs/python.md). Returns an ExternalCheck: `.references`
+    `catena check` does (docs/how-to/check.md, docs/reference/python.md). Returns an ExternalCheck: `.references`
     (the solver used per plane and why), `.modes` (per mode of the other code: its value, Catena's
     value and estimate, the relative error, MAC, observed order, extrapolated limit, bias and the
     verdict), `.failed`, `.error` (no reference could be computed), `.to_json()`.
@@ -166,7 +166,7 @@ def _default_value(kind, text):
 
 def solvers():
     """Every solver, in registry order (fe, shooting, frobenius, asymptotic, airy), with its knobs:
-    a list of SolverInfo. The same tables as `catena solvers` and docs/solver-knobs.md."""
+    a list of SolverInfo. The same tables as `catena solvers` and docs/reference/solver-knobs.md."""
     return [
         SolverInfo(name, description,
                    tuple(Knob(k, d, kind, _default_value(kind, text), text, valid)

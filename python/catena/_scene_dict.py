@@ -17,7 +17,7 @@ import numpy
 
 from ._catena import ParseError
 
-#: The reader accepts at most this nesting of arrays and inline tables (docs/scene-format.md).
+#: The reader accepts at most this nesting of arrays and inline tables (docs/reference/scene-format.md).
 MAX_NESTING = 64
 _INT64 = (-(2**63), 2**63 - 1)
 
@@ -69,7 +69,7 @@ def _value(value, path, depth):
 
 
 def scene_toml_text(scene):
-    """The TOML text of a scene dict (same structure as the file: docs/scene-format.md)."""
+    """The TOML text of a scene dict (same structure as the file: docs/reference/scene-format.md)."""
     if not isinstance(scene, Mapping):
         raise TypeError(f"scene: expected a dict, got {type(scene).__name__}")
     lines = [f"{_key(k, ())} = {_value(v, (k,), 1)}" for k, v in scene.items()]

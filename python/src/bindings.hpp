@@ -1,5 +1,5 @@
 #pragma once
-// The pieces of the extension module catena._catena (docs/python.md), one file per concept, and
+// The pieces of the extension module catena._catena (docs/reference/python.md), one file per concept, and
 // the conversions they share. Nothing here is called while the GIL is released: every function
 // that solves copies its Python arguments into C++ values first, releases the GIL for the C++ work
 // only, and converts the C++ result back after re-acquiring it.

@@ -1,4 +1,4 @@
-// `catena check` from Python (docs/python.md, "Comparing another code's frequencies"): the other
+// `catena check` from Python (docs/reference/python.md, "Comparing another code's frequencies"): the other
 // code's results are read by the library's reader (a file, or JSON text that
 // python/catena/_check_results.py builds from rows or columns), and compared by the library's
 // check_scene, the call `catena check` makes; nothing of the comparison is done here. The GIL is
@@ -101,7 +101,7 @@ void bind_reference(py::module_& module) {
 void bind_study(py::module_& module) {
   using S = ConvergenceStudy;
   py::class_<S>(module, "ConvergenceStudy",
-                "The convergence study of one mode (three or more resolutions; docs/check.md).")
+                "The convergence study of one mode (three or more resolutions; docs/how-to/check.md).")
       .def_readonly("trustworthy", &S::trustworthy, "monotone, order in [0.5, 10], stable; or at rounding level")
       .def_readonly("note", &S::note, "why it is not trustworthy, or what it rests on")
       .def_readonly("observed_order", &S::observed_order, "from the finest three resolutions, or None")
@@ -177,7 +177,7 @@ void bind_mode_comparison(py::module_& module) {
 void bind_outcome(py::module_& module) {
   using O = CheckOutcome;
   py::class_<O>(module, "ExternalCheck",
-                "The `catena check` comparison (docs/check.md): the references used, and per mode of the other "
+                "The `catena check` comparison (docs/how-to/check.md): the references used, and per mode of the other "
                 "code its comparison and verdict. `error` is set (and there is nothing else) when no reference "
                 "could be computed, the CLI's exit 3.")
       .def_property_readonly("error", [](const O& o) {
@@ -191,7 +191,7 @@ void bind_outcome(py::module_& module) {
                              "True when a mode fails (the CLI's exit 1) or there is no comparison")
       .def_property_readonly("scene_name", [](const O& o) { return o.sources.scene_name; })
       .def("to_json", [](const O& o) { return check_to_json(o.check(), o.sources); },
-           "The document `catena check --json` writes (docs/check.md).")
+           "The document `catena check --json` writes (docs/how-to/check.md).")
       .def("__repr__", [](const O& o) {
         if (!o.checked.check) return "ExternalCheck(error: " + o.checked.error + ")";
         return fmt::format("ExternalCheck('{}', {} modes, {})", o.sources.scene_name, o.checked.check->modes.size(),

@@ -1,4 +1,4 @@
-// Catena's exceptions as Python exceptions (docs/python.md, "Errors"): bad input is a ValueError
+// Catena's exceptions as Python exceptions (docs/reference/python.md, "Errors"): bad input is a ValueError
 // subclass whose message names the field, as in the CLI.
 #include <filesystem>
 

@@ -1,4 +1,4 @@
-// The general line (catena::Line, docs/physics.md "General lines"): segments from end A to end B
+// The general line (catena::Line, docs/explanation/physics.md "General lines"): segments from end A to end B
 // and point attachments (clump weights, buoys). Every name carries its unit, as in C++.
 #include <pybind11/stl.h>
 
@@ -75,7 +75,7 @@ Line make_line(std::vector<LineSegment> segments, std::vector<PointAttachment> p
 void bind_line_class(py::module_& module) {
   py::class_<Line>(module, "Line",
                    "A general line: segments in order from end A to end B and point attachments in order "
-                   "of s (docs/physics.md, \"General lines\"). Validated on construction.")
+                   "of s (docs/explanation/physics.md, \"General lines\"). Validated on construction.")
       .def(py::init(&make_line), py::arg("segments"), py::kw_only(),
            py::arg("points") = std::vector<PointAttachment>{})
       .def_readonly("segments", &Line::segments, "the segments from A to B (a copy)")

@@ -83,7 +83,7 @@ Seabed make_seabed(double z_m, double friction, double stiffness, double tangent
 
 void bind_seabed(py::module_& module) {
   py::class_<Seabed>(module, "Seabed",
-                     "A flat seabed at height z_m under end A (docs/physics.md, \"Seabed contact\"). Validated "
+                     "A flat seabed at height z_m under end A (docs/explanation/physics.md, \"Seabed contact\"). Validated "
                      "on construction (catena.InvalidInput names the field).")
       .def(py::init(&make_seabed), py::arg("z_m"), py::kw_only(), py::arg("friction") = 0.0,
            py::arg("stiffness_n_per_m2") = 0.0, py::arg("tangential_stiffness_n_per_m2") = 0.0)
@@ -107,7 +107,7 @@ void bind_problem(py::module_& module) {
            py::arg("a_m") = Point{0.0, 0.0}, py::arg("seabed") = py::none())
       .def_static("from_line", &make_line_problem, py::arg("line"), py::kw_only(), py::arg("b_m"),
                   py::arg("a_m") = Point{0.0, 0.0}, py::arg("seabed") = py::none(),
-                  "A general line (catena.Line) between supports a and b [m] (docs/physics.md, \"General lines\").")
+                  "A general line (catena.Line) between supports a and b [m] (docs/explanation/physics.md, \"General lines\").")
       .def_readwrite("cable", &Problem::cable, "the uniform cable (unused when the problem is a general line)")
       .def_property_readonly(
           "line", [](const Problem& p) -> std::optional<Line> {
@@ -135,11 +135,11 @@ void bind_problem(py::module_& module) {
           "(H, V_A) [N] when the static state is given by its end forces (builders of taut cables), else None")
       .def_static("taut_inclined", &make_taut_inclined_problem, py::arg("eps"), py::arg("phi_deg"),
                   py::arg("lambda2"), py::arg("mass_ratio") = 1.0,
-                  "Grinfogel's taut inclined cable from its dimensionless groups (docs/physics.md).")
+                  "Grinfogel's taut inclined cable from its dimensionless groups (docs/explanation/physics.md).")
       .def_static("gale_xi", &make_gale_xi_problem, py::arg("xi1"), py::arg("xi2"),
-                  "Gale's inextensible catenary between apex coordinates xi1 < xi2 (docs/physics.md).")
+                  "Gale's inextensible catenary between apex coordinates xi1 < xi2 (docs/explanation/physics.md).")
       .def_static("gale_sag", &make_gale_sag_problem, py::arg("h_over_b"), py::arg("sag_param"),
-                  "Gale's inextensible catenary from height/span and sag parameter (docs/physics.md).")
+                  "Gale's inextensible catenary from height/span and sag parameter (docs/explanation/physics.md).")
       .def("validate", &Problem::validate, "Raises catena.InvalidInput naming the bad field.")
       .def("__repr__", [](const Problem& p) {
         return fmt::format("Problem(form='{}'{}, L={} m, a=({}, {}) m, b=({}, {}) m)", to_string(p.form),
@@ -204,7 +204,7 @@ SolveRequest make_request(int inplane_modes, int outofplane_modes, bool shapes, 
 }
 
 void bind_request(py::module_& module) {
-  py::class_<SolveRequest>(module, "Request", "What to compute (docs/scene-format.md, [request]).")
+  py::class_<SolveRequest>(module, "Request", "What to compute (docs/reference/scene-format.md, [request]).")
       .def(py::init(&make_request), py::kw_only(), py::arg("inplane_modes") = 6,
            py::arg("outofplane_modes") = 0, py::arg("shapes") = false, py::arg("points") = 101,
            py::arg("tension") = false, py::arg("forced") = py::none())

@@ -1,4 +1,4 @@
-// What the solvers return (docs/json-layout.md): summaries, modes with their shapes as stations x
+// What the solvers return (docs/reference/json-layout.md): summaries, modes with their shapes as stations x
 // modes arrays, forced responses and checks. Every array is a new read-only numpy array owning a
 // copy of its values, so none outlives or aliases the C++ object it came from.
 #include <pybind11/stl.h>
@@ -65,7 +65,7 @@ py::object shapes_of(const ModalResult& result) {
 
 void bind_summary(py::module_& module) {
   using S = SolverSummary;
-  py::class_<S>(module, "Summary", "How a result was obtained (docs/architecture.md, \"Errors\").")
+  py::class_<S>(module, "Summary", "How a result was obtained (docs/contributing/architecture.md, \"Errors\").")
       .def_property_readonly("status", [](const S& s) { return to_string(s.termination); },
                              "'converged', 'no-convergence', 'numerical-failure' or 'not-applicable'")
       .def_property_readonly("usable", &S::is_usable, "converged, or no-convergence with partial results")
@@ -86,7 +86,7 @@ void bind_summary(py::module_& module) {
 }
 
 void bind_mode(py::module_& module) {
-  py::class_<Mode>(module, "Mode", "One natural mode; shapes normalised as docs/json-layout.md says.")
+  py::class_<Mode>(module, "Mode", "One natural mode; shapes normalised as docs/reference/json-layout.md says.")
       .def_readonly("index", &Mode::index, "1-based, lowest first, within its plane")
       .def_readonly("omega_rad_s", &Mode::omega_rad_s)
       .def_readonly("frequency_hz", &Mode::frequency_hz)
@@ -176,7 +176,7 @@ void bind_solver_output(py::module_& module) {
 
 void bind_check(py::module_& module) {
   using C = CheckResult;
-  py::class_<C>(module, "Check", "One cross-check and its verdict (docs/verdicts.md).")
+  py::class_<C>(module, "Check", "One cross-check and its verdict (docs/reference/verdicts.md).")
       .def_readonly("check", &C::check)
       .def_readonly("compare", &C::compare)
       .def_readonly("plane", &C::plane)

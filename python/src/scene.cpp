@@ -88,7 +88,7 @@ std::vector<double> time_native_solve(const std::filesystem::path& path, int rep
 }
 
 void bind_scene_class(py::module_& module) {
-  py::class_<Scene>(module, "Scene", "One scene as read from TOML or a dict (docs/scene-format.md).")
+  py::class_<Scene>(module, "Scene", "One scene as read from TOML or a dict (docs/reference/scene-format.md).")
       .def_readonly("name", &Scene::name)
       .def_readonly("description", &Scene::description)
       .def_readonly("file", &Scene::file, "the file it was read from, or '<dict>'")
@@ -121,7 +121,7 @@ void bind_result(py::module_& module) {
   using R = SceneResult;
   py::class_<R>(module, "Result",
                 "The results of one scene: statics, groups, each solver's SolverResult (result[\"fe\"]) and the "
-                "checks. Layout as docs/json-layout.md.")
+                "checks. Layout as docs/reference/json-layout.md.")
       .def_readonly("scene", &R::scene)
       .def_property_readonly("name", [](const R& r) { return r.scene.name; })
       .def_readonly("statics", &R::statics, "Statics, None when the statics failed (see error)")
@@ -140,7 +140,7 @@ void bind_result(py::module_& module) {
              for (const auto& output : r.outputs) if (output.solver == name) return true;
              return false; })
       .def("to_json", [](const R& r, int indent) { return results_to_json({r}, indent); }, py::arg("indent") = 2,
-           "The document `catena solve --json` writes for this scene (docs/json-layout.md).")
+           "The document `catena solve --json` writes for this scene (docs/reference/json-layout.md).")
       .def("__repr__", [](const R& r) { return fmt::format("Result('{}', {} solvers)", r.scene.name, r.outputs.size()); });
 }
 

@@ -98,7 +98,7 @@ void bind_static_solution(py::module_& module) {
 
 void bind_groups(py::module_& module) {
   using G = DimensionlessGroups;
-  py::class_<G>(module, "Groups", "The dimensionless groups of docs/physics.md.")
+  py::class_<G>(module, "Groups", "The dimensionless groups of docs/explanation/physics.md.")
       .def_readonly("chord_angle_rad", &G::chord_angle_rad)
       .def_readonly("s_at_chord_angle_m", &G::s_at_chord_angle_m)
       .def_readonly("t0_n", &G::t0_n, "tension where the tangent is parallel to the chord [N]")

@@ -1,5 +1,5 @@
 """A general line (catena.Line) built in Python gives what the same [line] scene gives, and bad
-segments or points are a ValueError naming the field (docs/python.md, "General lines")."""
+segments or points are a ValueError naming the field (docs/reference/python.md, "General lines")."""
 
 import math
 
@@ -21,7 +21,7 @@ def clump_line():
 
 
 def clump_scene():
-    """The same line as a dict scene (docs/scene-format.md, [line])."""
+    """The same line as a dict scene (docs/reference/scene-format.md, [line])."""
     def segment(s):
         return {"length": s["length_m"], "weight": s["weight_n_per_m"], "EA": s["axial_stiffness_n"],
                 "mass": s["mass_kg_per_m"], "added_mass": s["added_mass_kg_per_m"]}

@@ -1,5 +1,5 @@
 """A seabed built in Python (catena.Seabed) gives the statics of the same [seabed] scene, and bad
-seabed values are a ValueError naming the field (docs/python.md, "Seabed")."""
+seabed values are a ValueError naming the field (docs/reference/python.md, "Seabed")."""
 
 import pytest
 

@@ -1,5 +1,5 @@
 // `catena check RESULTS --scene SCENE`: another program's modal results against Catena's certified
-// reference for the same scene (docs/check.md).
+// reference for the same scene (docs/how-to/check.md).
 #include <algorithm>
 #include <fmt/format.h>
 #include <memory>
@@ -91,7 +91,7 @@ void add_check_command(CLI::App& app, std::function<int()>& run) {
       "check",
       "Check another program's natural frequencies (and mode shapes) against Catena's certified\n"
       "reference for the same scene: shooting or Richardson-extrapolated fe, whichever converged\n"
-      "with the smaller error estimate (docs/check.md).\n"
+      "with the smaller error estimate (docs/how-to/check.md).\n"
       "Per mode: the other value, Catena's value and estimate, the relative error and a verdict\n"
       "against --rtol; MAC when shapes are given; with three or more resolutions the observed order,\n"
       "the extrapolated limit and its bias (\"converged\", \"converges, not yet within tolerance\",\n"
@@ -103,9 +103,9 @@ void add_check_command(CLI::App& app, std::function<int()>& run) {
                       "inplane, out-of-plane, outofplane; any case), mode (1-based within its plane),\n"
                       "frequency_hz [Hz] or omega_rad_s [rad/s], optional resolution (mesh count, e.g.\n"
                       "number of segments: larger = finer); or a .json file with the same fields and\n"
-                      "optional shapes (docs/check.md)")
+                      "optional shapes (docs/how-to/check.md)")
       ->required();
-  command->add_option("--scene", arguments->scene, "The scene the other program solved (TOML, docs/scene-format.md)")
+  command->add_option("--scene", arguments->scene, "The scene the other program solved (TOML, docs/reference/scene-format.md)")
       ->required();
   command->add_option("--shapes", arguments->shapes,
                       "Mode shapes of CSV results, long format, one row per station: plane, mode,\n"

@@ -1,4 +1,4 @@
-// `catena import moordyn DECK --out DIR`: MoorDyn lines as Catena scenes (docs/moordyn-import.md).
+// `catena import moordyn DECK --out DIR`: MoorDyn lines as Catena scenes (docs/how-to/moordyn-import.md).
 #include <filesystem>
 #include <fmt/format.h>
 #include <memory>
@@ -58,7 +58,7 @@ void add_import_command(CLI::App& app, std::function<int()>& run) {
   CLI::App* moordyn = command->add_subcommand(
       "moordyn",
       "Convert a MoorDyn input file (v1 or v2) into one scene per line, or per chain of lines joined\n"
-      "at free points (docs/moordyn-import.md). Each scene is the vertical plane through the line's\n"
+      "at free points (docs/how-to/moordyn-import.md). Each scene is the vertical plane through the line's\n"
       "two held ends (Fixed/Anchor and Vessel/Coupled points), end A the lower. Conversions:\n"
       "weight = (MassDen - rho_w pi/4 Diam^2) g [N/m], added_mass = Ca rho_w pi/4 Diam^2 [kg/m],\n"
       "point weight = (M - rho_w V) g [N], seabed z = -WtrDpth, stiffness = kBot Diam [N/m/m];\n"

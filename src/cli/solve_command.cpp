@@ -132,11 +132,11 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
   CLI::App* command = app.add_subcommand(
       "solve",
       "Solve one scene file: statics, dimensionless groups and every applicable solver.\n"
-      "Prints a summary; --json writes the full results (layout in docs/json-layout.md).\n"
+      "Prints a summary; --json writes the full results (layout in docs/reference/json-layout.md).\n"
       "On a terminal, long solves show their progress on stderr (\"shooting: in-plane modes 37/600\").");
   command->add_option("scene", arguments->scene,
                       "Scene file (TOML, a regular file of at most 1 MiB; format and limits in\n"
-                      "docs/scene-format.md)")
+                      "docs/reference/scene-format.md)")
       ->required();
   command->add_option("--json", arguments->json, "Write the results as JSON to this file ('-' for stdout); checked to be\n"
                       "writable before solving, written whole or not at all");

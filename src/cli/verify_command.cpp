@@ -173,7 +173,7 @@ void print_mutation(const MutationRun& run) {
     total.made += tally.made;
     total.caught += tally.caught;
   }
-  fmt::print("mutation score (docs/mutation.md):\n");
+  fmt::print("mutation score (docs/explanation/mutation.md):\n");
   for (const auto& [solver, tally] : by_solver) {
     fmt::print("  {:<11} {:>6} made, {:>6} caught, {:>6} uncaught ({:.1f}%)\n", solver, tally.made, tally.caught,
                tally.made - tally.caught, tally.made ? 100.0 * tally.caught / tally.made : 100.0);
@@ -273,7 +273,7 @@ void add_verify_command(CLI::App& app, std::function<int()>& run) {
                     "Also measure the mutation score: make one result at a time wrong (a frequency by\n"
                     "10x the solver's accuracy target, a shape by a mode mix, a forced tension by 1e-4),\n"
                     "re-run that scene's checks and count the mutations a check catches; printed and\n"
-                    "written to report.json (docs/mutation.md). Does not change the exit code");
+                    "written to report.json (docs/explanation/mutation.md). Does not change the exit code");
   command->add_option("--perturb", arguments->perturb,
                       "Testing the harness: multiply one frequency of one solver by (1 + RELATIVE),\n"
                       "as SOLVER:inplane|outofplane:MODE:RELATIVE; the run must then fail. Exit 2\n"

@@ -1,4 +1,4 @@
-// The JSON of `catena check` (docs/check.md, "JSON"): every number of the comparison.
+// The JSON of `catena check` (docs/how-to/check.md, "JSON"): every number of the comparison.
 #include <nlohmann/json.hpp>
 
 #include "catena/core/version.hpp"

@@ -192,7 +192,7 @@ json node_json(const StaticSolution& statics, const std::string& kind, std::size
           {key::tension_before_n, tension_before}, {key::tension_after_n, std::hypot(H, after)}};
 }
 
-// The seabed block (docs/json-layout.md, "Seabed"): contact, grounded length, touchdown point, the
+// The seabed block (docs/reference/json-layout.md, "Seabed"): contact, grounded length, touchdown point, the
 // forces on the anchor (A) and the fairlead (B).
 json seabed_json(const StaticSolution& statics) {
   const Seabed& seabed = statics.seabed();

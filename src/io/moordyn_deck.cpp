@@ -1,4 +1,4 @@
-// MoorDyn decks (v1 and v2 layouts) read into plain data (docs/moordyn-import.md). Written from
+// MoorDyn decks (v1 and v2 layouts) read into plain data (docs/how-to/moordyn-import.md). Written from
 // MoorDyn's documented input format, not from its code.
 #include "catena/io/moordyn_deck.hpp"
 

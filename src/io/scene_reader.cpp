@@ -192,7 +192,7 @@ Problem read_cable_form(TableReader& root, const std::string& origin) {
   return read_gale(root, origin);
 }
 
-// [seabed] (docs/scene-format.md): the flat seabed under a [cable] or [line]; end A must lie on it.
+// [seabed] (docs/reference/scene-format.md): the flat seabed under a [cable] or [line]; end A must lie on it.
 void read_seabed(TableReader& root, Problem& problem, const std::string& origin) {
   TableReader table = root.subtable("seabed");
   Seabed seabed;
@@ -273,7 +273,7 @@ ForcedRequest read_forced(TableReader& forced, Scene& scene) {
     throw InvalidInput(fmt::format("{}: at least one forcing frequency needed", forced.where("frequencies")));
   }
   if (f.omegas_rad_s.size() > SolveRequest::kMaxForcingFrequencies) {
-    throw InvalidInput(fmt::format("{}: {} forcing frequencies, at most {} per request (docs/scene-format.md, "
+    throw InvalidInput(fmt::format("{}: {} forcing frequencies, at most {} per request (docs/reference/scene-format.md, "
                                    "\"Limits on work\")",
                                    forced.where("frequencies"), f.omegas_rad_s.size(),
                                    SolveRequest::kMaxForcingFrequencies));
@@ -291,7 +291,7 @@ ForcedRequest read_forced(TableReader& forced, Scene& scene) {
 void read_request(TableReader& root, Scene& scene) {
   if (!root.has("request")) return;
   TableReader request = root.subtable("request");
-  // Upper bounds: docs/scene-format.md, "Limits" (SolveRequest::validate enforces the same).
+  // Upper bounds: docs/reference/scene-format.md, "Limits" (SolveRequest::validate enforces the same).
   auto count = [&](const std::string& key, int fallback, long low, long high) {
     return static_cast<int>(request.read_integer(key, low, high, fallback));
   };

@@ -15,7 +15,7 @@ namespace {
 bool finite_non_negative(double x) { return std::isfinite(x) && x >= 0.0; }
 
 // A tolerance that grows with the solvers' own error estimates lets a solver widen every check it
-// takes part in; the key is refused by name rather than as merely unknown (docs/verdicts.md).
+// takes part in; the key is refused by name rather than as merely unknown (docs/reference/verdicts.md).
 void refuse_estimate_factor(const internal::TableReader& item) {
   if (item.has("estimate_factor")) {
     throw InvalidInput(fmt::format(

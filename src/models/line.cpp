@@ -10,7 +10,7 @@ namespace catena {
 namespace {
 
 // Throws InvalidInput naming `line.<field>` unless `value` is finite and within the magnitude
-// bounds of a cable value (docs/scene-format.md, "Limits"); `sign` > 0: must be > 0, 0: >= 0,
+// bounds of a cable value (docs/reference/scene-format.md, "Limits"); `sign` > 0: must be > 0, 0: >= 0,
 // any other: any sign.
 void require_value(double value, const std::string& field, const char* unit, int sign,
                    double largest = kMaxCableMagnitude) {

@@ -91,7 +91,7 @@ void check_reachable(const Problem& problem) {
         "total length {:.10g} m of an inextensible line",
         d, line.length_m() < d ? "longer than" : "equal to", line.length_m()));
   }
-  // Without weight the line is a straight bar, in tension only when stretched (docs/physics.md,
+  // Without weight the line is a straight bar, in tension only when stretched (docs/explanation/physics.md,
   // "General lines": the equilibrium in tension and when it does not exist).
   if (weight_scale(line) == 0.0 && line.length_m() >= d) {
     throw InvalidInput(fmt::format(
@@ -103,7 +103,7 @@ void check_reachable(const Problem& problem) {
 }
 
 // Why a run did not close: H collapsing towards 0 means part of the line would be slack (the
-// equilibrium in tension does not exist, docs/physics.md); otherwise Newton failed to find it.
+// equilibrium in tension does not exist, docs/explanation/physics.md); otherwise Newton failed to find it.
 std::string closure_failure(const Line& line, const NewtonRun& best, double tolerance, int iterations) {
   const std::string where = fmt::format("closure error {:.3e} m > {:.3e} m after {} Newton iterations from 7 starts "
                                         "(H = {:.6g} N, V_A = {:.6g} N)",

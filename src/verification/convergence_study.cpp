@@ -1,4 +1,4 @@
-// The convergence study of one mode of another program (docs/check.md, "Convergence study"):
+// The convergence study of one mode of another program (docs/how-to/check.md, "Convergence study"):
 // values f_i at resolutions N_i are fitted, three at a time, by f = f_inf + C h^p with h = 1/N
 // (Richardson extrapolation with unequal refinement ratios, the order found, not assumed).
 #include <cmath>
@@ -13,7 +13,7 @@ namespace {
 // Successive differences below this fraction of the value are rounding, not discretisation: a code
 // that gives the same frequency at every resolution has converged (or is exact).
 constexpr double kRoundingLevel = 1e-12;
-// Orders searched for the fit; outside [0.5, 10] the fit is not trusted (docs/check.md).
+// Orders searched for the fit; outside [0.5, 10] the fit is not trusted (docs/how-to/check.md).
 constexpr double kLowestOrder = 0.01;
 constexpr double kHighestOrder = 20.0;
 constexpr double kLowestTrustedOrder = 0.5;

@@ -1,4 +1,4 @@
-// Another program's modes against Catena's certified reference (docs/check.md): grouping of the
+// Another program's modes against Catena's certified reference (docs/how-to/check.md): grouping of the
 // results by plane and mode, pairing with Catena's modes, per-resolution errors, the convergence
 // study and the verdict.
 #include "catena/verification/external_check.hpp"

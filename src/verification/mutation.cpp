@@ -44,7 +44,7 @@ double real_knob(const std::string& solver, const SolverKnobs& knobs, const std:
 }  // namespace
 
 double frequency_accuracy_target(const std::string& solver, const SolverKnobs& knobs, const Mode& mode) {
-  // The exact solvers' own accuracy targets (SolverSummary::accuracy_target, docs/verdicts.md,
+  // The exact solvers' own accuracy targets (SolverSummary::accuracy_target, docs/reference/verdicts.md,
   // "Declared misses"): what each promises on every mode it does not list as missed.
   if (solver == "shooting") {
     const double rtol = real_knob(solver, knobs, "rtol");

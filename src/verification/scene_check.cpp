@@ -1,5 +1,5 @@
 // `catena check` as one library call: reference scene, run, certified references, comparison
-// (docs/check.md).
+// (docs/how-to/check.md).
 #include "catena/verification/scene_check.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// `catena solve` on a line over a seabed (docs/scene-format.md, "Seabed"): the statics writes the
+// `catena solve` on a line over a seabed (docs/reference/scene-format.md, "Seabed"): the statics writes the
 // seabed block; fe and shooting solve a line with contact, the other solvers decline it with their
 // reason; a seabed the line does not touch changes no frequency; bad seabed input exits 2 naming the
 // field.
@@ -52,7 +52,7 @@ TEST(SeabedCli, StaticsOnlySceneWritesTheSeabedBlock) {
   EXPECT_EQ(scene_json["problem"]["seabed"]["stiffness_n_per_m2"].get<double>(), 3.0e6);
 }
 
-// fe and shooting solve it (docs/methods/fe.md and docs/methods/shooting.md, "Seabed contact"); the
+// fe and shooting solve it (docs/explanation/methods/fe.md and docs/explanation/methods/shooting.md, "Seabed contact"); the
 // others decline with a reason.
 TEST(SeabedCli, FeAndShootingSolveALineWithContactAndTheOthersDecline) {
   const fs::path scene = write_temp_file(kFolder, "modes.toml", chain(955.85, 0.0) + kSeabed + kModes);

@@ -1,6 +1,6 @@
 #pragma once
 // The fuzz target: one scene text through the reader, the statics and a cheap solver request
-// (docs/testing.md, "Fuzzing"). Bad input must end as catena::Error; anything else that escapes
+// (docs/contributing/testing.md, "Fuzzing"). Bad input must end as catena::Error; anything else that escapes
 // (another exception, a signal, a sanitizer report) is a defect, and so is a result that claims
 // to have converged while holding a non-finite or non-positive frequency or a non-finite forced
 // response.

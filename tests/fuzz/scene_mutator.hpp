@@ -1,5 +1,5 @@
 #pragma once
-// Deterministic mutations of scene text for the scene-reader fuzzer (docs/testing.md, "Fuzzing").
+// Deterministic mutations of scene text for the scene-reader fuzzer (docs/contributing/testing.md, "Fuzzing").
 // The same corpus, seed and iteration always give the same mutant, on every platform: the random
 // numbers come from our own SplitMix64, not from <random>'s implementation-defined distributions.
 

@@ -1,4 +1,4 @@
-// Statics of the elastic catenary (docs/physics.md).
+// Statics of the elastic catenary (docs/explanation/physics.md).
 // Compared: the Newton solution against its own closure equations, against the inextensible
 // catenary (EA -> inf, observed rate), and against itself after rescaling units. Expected values
 // are properties of the exact solution, not numbers copied from a run. Turchetto's touchdown form

@@ -1,4 +1,4 @@
-// Statics of a general line (docs/physics.md, "General lines").
+// Statics of a general line (docs/explanation/physics.md, "General lines").
 // Compared: a uniform cable split into identical segments against the one-segment solution; a
 // weightless segment against the straight bar it must be; every solution against an independent
 // solve of the closure equations (long double, Gauss-Legendre quadrature of r' = (1 + T/EA) t

@@ -1,4 +1,4 @@
-// Problem builders and dimensionless groups (docs/physics.md, "Dimensionless groups").
+// Problem builders and dimensionless groups (docs/explanation/physics.md, "Dimensionless groups").
 // Compared: (1) Gale's Table A-1 (a/b from the sag parameter, eq. 3.5) and the xi1, xi2 columns of
 // Tables B-3/B-4 (from h/b and the sag parameter), each to its printed precision; (2) a problem
 // built from (eps, phi, lambda2, h) reproduces those groups to 1e-12 after the statics; (3) the
@@ -132,7 +132,7 @@ TEST(TautInclinedProblem, ReproducesItsGroupsToTwelveDigits) {
 }
 
 TEST(TautInclinedProblem, PointOfChordAngleSitsNearMidLength) {
-  // docs/physics.md ("Dimensionless groups"): s_a / L is near 1/2 - eps sin(phi) / 12 (to O(eps^2)).
+  // docs/explanation/physics.md ("Dimensionless groups"): s_a / L is near 1/2 - eps sin(phi) / 12 (to O(eps^2)).
   for (double eps : {0.01, 0.05, 0.1}) {
     const Problem p = make_taut_inclined_problem(eps, 30.0, 10.0, 1.0);
     const DimensionlessGroups g = compute_dimensionless_groups(p, solve_statics(p));
@@ -186,7 +186,7 @@ std::string message_of(const std::function<void()>& build) {
   return "";
 }
 
-// Found by the mutant campaign (docs/testing.md): lambda2 = 5e-324 let a root-finder exception
+// Found by the mutant campaign (docs/contributing/testing.md): lambda2 = 5e-324 let a root-finder exception
 // escape (exit 3); sag_param = 5e-324 named the derived "xi1 = -nan" instead of the input.
 TEST(ProblemBuilders, ExtremeGroupsAreBadInputNamingTheGivenValues) {
   const std::string lambda = message_of([] { make_taut_inclined_problem(0.1, 10.0, 5e-324, 1.0); });

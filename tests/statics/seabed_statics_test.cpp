@@ -1,4 +1,4 @@
-// Statics of a line on a flat seabed (docs/physics.md, "Seabed contact").
+// Statics of a line on a flat seabed (docs/explanation/physics.md, "Seabed contact").
 // Anchors: an independent 50-digit solve of the contact equations (a different formulation: the
 // suspended tension at the fairlead height in closed form from a quadratic, the grounded stretch
 // integrated by hand, bisection on H); Turchetto's touchdown form (catena/statics/touchdown_catenary.hpp);

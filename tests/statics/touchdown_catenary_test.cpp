@@ -1,4 +1,4 @@
-// Turchetto's touchdown form of the elastic catenary (Turchetto 2016; docs/references.md, eqs.
+// Turchetto's touchdown form of the elastic catenary (Turchetto 2016; docs/reference/references.md, eqs.
 // 1.6-1.10): exact values of the inextensible line, the equilibrium of the suspended part, the
 // closed forms against the general solver (StaticSolution from the lowest point, and solve_statics
 // given the same ends), the inverse from the reach, and bad input.
@@ -63,7 +63,7 @@ TEST(TouchdownCatenary, SuspendedWeightIsCarriedByTheFairlead) {
 
 TEST(TouchdownCatenary, ClosedFormsAreTheElasticCatenaryFromItsLowestPoint) {
   // StaticSolution with V_A = 0 at the touchdown point is the same line written with the general
-  // closed forms (docs/physics.md): its fairlead is at (reach, depth), with the same angle, tension
+  // closed forms (docs/explanation/physics.md): its fairlead is at (reach, depth), with the same angle, tension
   // and stretched length. No Newton iteration is involved.
   for (double ea : {5e8, 1e7, 3e6, kInfinity}) {
     CableProperties cable{1.0, 1000.0, ea, 120.0, 80.0};

@@ -54,7 +54,7 @@ TEST(MutationScore, EveryMutationIsCountedOnceAndEveryUncaughtOneIsNamed) {
 // Issue 12's target on these six scenes: every exact-solver mutation is caught where another exact
 // solver ran (152 of 152 since fe's forced solve is refined against the unrounded chain; 101, 142,
 // 143 and 148 in earlier sessions). On the whole suite the uncaught ones are listed in
-// docs/mutation.md.
+// docs/explanation/mutation.md.
 TEST(MutationScore, ExactSolversCatchEveryMutationWhereTwoRan) {
   const MutationRun run = subset_run();
   const MutationTally exact = run.exact_with_witness();
@@ -64,7 +64,7 @@ TEST(MutationScore, ExactSolversCatchEveryMutationWhereTwoRan) {
 
 // The part of it a check can always be asked for: every change larger than the mutated value's
 // own error estimate (beyond what its solver claims). A change within it is within what no check
-// that honours the estimates can see (docs/mutation.md, "Two counts").
+// that honours the estimates can see (docs/explanation/mutation.md, "Two counts").
 TEST(MutationScore, ExactSolversCatchEveryChangeBeyondTheirOwnEstimateWhereTwoRan) {
   const MutationRun run = subset_run();
   const MutationTally beyond = run.exact_beyond_estimate();

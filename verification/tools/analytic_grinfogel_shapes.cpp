@@ -25,8 +25,8 @@
 #include "catena/solvers/airy_solver.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
 #include "common/repository_paths.hpp"
-#include "solvers/internal/asymptotic_formulas.hpp"
-#include "solvers/internal/mode_tools.hpp"
+#include "solvers/asymptotic/asymptotic_formulas.hpp"
+#include "solvers/common/mode_tools.hpp"
 
 namespace {
 

@@ -3,7 +3,7 @@
 # (evidence for the Table B-3 entries that disagree with the fe solver; see
 # verification/comparisons/fe-gale-B3-B4-comparison.csv). Pure Python, no dependencies, no catena code.
 #
-# Cartesian linearisation of docs/physics.md ("Linear dynamics") with EA = inf (a = H/W0 = 1 m, W0 = 1 N/m,
+# Cartesian linearisation of docs/explanation/physics.md ("Linear dynamics") with EA = inf (a = H/W0 = 1 m, W0 = 1 N/m,
 # m = M = 1 kg/m, so w is Gale's ratio): with s = sigma = V/H in [sigma(xi1), sigma(xi2)],
 # T = sqrt(1 + s^2), t = (1, s)/T, n = (-s, 1)/T:
 #     Phi' = n (n . F) / T,     F' = -w^2 Phi          (F = A Phi', the dynamic force)

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "catena/statics/problem_builders.hpp"
-#include "solvers/internal/frobenius_catenary.hpp"
+#include "solvers/frobenius/frobenius_catenary.hpp"
 
 using namespace catena;
 using namespace catena::internal;

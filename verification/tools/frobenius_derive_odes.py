@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Derives the inextensible-catenary ODEs used by the frobenius solver (sympy), checks them against
 Gale (1976) eqs. 2.35, 2.37, 2.42, 2.44, and prints the polynomial coefficients of the equations in
-eta = |xi| that src/solvers/internal/frobenius_odes.cpp encodes.
+eta = |xi| that src/solvers/frobenius/frobenius_odes.cpp encodes.
 
-Model (docs/physics.md, "Linear dynamics", EA = inf), lengths in units of a = H/W0, tension in units of H, sigma = s/a
+Model (docs/explanation/physics.md, "Linear dynamics", EA = inf), lengths in units of a = H/W0, tension in units of H, sigma = s/a
 measured from the apex, C = sqrt(1+sigma^2) (static tension / H), curvature 1/(a C^2).
 Unknowns: u (tangential), w (normal), phi = rotation of the tangent, tau = dynamic tension.
   inextensibility          u' = w / C^2

@@ -19,12 +19,12 @@ SCENES = ROOT / "verification" / "scenes"
 
 # The [solvers] table of a scene on an extensible cable, where fe is shooting's only exact witness
 # (frobenius models an inextensible cable and declines). fe is asked for 3e-9 and refines its mesh
-# to meet it (docs/methods/fe.md, "Meeting a tolerance"); the two are then held to the sum of their
-# targets, 4.1e-9, and each sees a change of the other at 10x its target (docs/mutation.md): fe's
+# to meet it (docs/explanation/methods/fe.md, "Meeting a tolerance"); the two are then held to the sum of their
+# targets, 4.1e-9, and each sees a change of the other at 10x its target (docs/explanation/mutation.md): fe's
 # target must lie between 1.5e-10 and 4.9e-9 for that. Every solver runs, as without the table.
 EXTENSIBLE_SOLVERS = """# fe is asked for 3e-9, so that it witnesses shooting's 1.1e-9 (verification/tools/make_scenes.py,
-# EXTENSIBLE_SOLVERS; docs/mutation.md): it refines its mesh to meet it, or names the modes it cannot
-# certify on stiff and nearly straight cables (docs/verdicts.md, "Declared misses").
+# EXTENSIBLE_SOLVERS; docs/explanation/mutation.md): it refines its mesh to meet it, or names the modes it cannot
+# certify on stiff and nearly straight cables (docs/reference/verdicts.md, "Declared misses").
 [solvers]
 fe = { tolerance = 3e-9 }
 shooting = {}
@@ -92,10 +92,10 @@ inplane_modes = {n if plane == "inplane" else 0}
 outofplane_modes = {n if plane == "outofplane" else 0}
 
 # fe is asked for the 1e-6 its checks hold it to (verification/tolerances.toml), so that it names the
-# modes it cannot certify (docs/verdicts.md, "Declared misses"): near-taut inextensible cables sit at
+# modes it cannot certify (docs/reference/verdicts.md, "Declared misses"): near-taut inextensible cables sit at
 # its penalty floor. shooting is asked for 1.1e-11 (rtol 1e-12), close to frobenius's 1e-11, so
-# that the two hold each other to the sum of their targets (docs/verdicts.md, "Tolerances"): each
-# sees a change of the other at 10x its target (docs/mutation.md). shooting's defaults are checked
+# that the two hold each other to the sum of their targets (docs/reference/verdicts.md, "Tolerances"): each
+# sees a change of the other at 10x its target (docs/explanation/mutation.md). shooting's defaults are checked
 # on the other scenes.
 [solvers]
 fe = {{ tolerance = 1e-6 }}
@@ -387,11 +387,11 @@ inplane_modes = 100
 outofplane_modes = 100
 
 [solvers]
-# fe: 20 elements per requested mode (docs/methods/fe.md: modes beyond about N/10 lose accuracy).
+# fe: 20 elements per requested mode (docs/explanation/methods/fe.md: modes beyond about N/10 lose accuracy).
 # At N = 1000 in-plane mode 66, one of a close pair, came out 1.2e-4 off with an estimate of
-# 4.7e-5: the estimate check caught it (docs/verdicts.md); fe names the modes it cannot certify.
+# 4.7e-5: the estimate check caught it (docs/reference/verdicts.md); fe names the modes it cannot certify.
 # It is not refined (max_elements = elements): at N = 8000 it takes 3.6 s and still misses 1e-6 on
-# that pair; modes above about 30 stay beyond 1e-8 (docs/mutation.md).
+# that pair; modes above about 30 stay beyond 1e-8 (docs/explanation/mutation.md).
 fe = { elements = 2000, tolerance = 1e-6, max_elements = 2000 }
 shooting = {}
 ''')
@@ -410,7 +410,7 @@ inplane_modes = 6
 outofplane_modes = 6
 
 # shooting is asked for 1.1e-11 (rtol 1e-12), close to frobenius's 1e-11, so that the two hold each
-# other to the sum of their targets (docs/verdicts.md, "Tolerances"). Every solver that applies
+# other to the sum of their targets (docs/reference/verdicts.md, "Tolerances"). Every solver that applies
 # runs, as without this table (asymptotic and airy decline a deep sag, with their reason).
 [solvers]
 fe = {}
@@ -586,7 +586,7 @@ inplane_modes = 6
 outofplane_modes = 6
 
 # shooting is asked for 1.1e-11 (rtol 1e-12), close to frobenius's 1e-11, so that the two hold each
-# other to the sum of their targets (docs/verdicts.md, "Tolerances"). Every solver that applies
+# other to the sum of their targets (docs/reference/verdicts.md, "Tolerances"). Every solver that applies
 # runs, as without this table (asymptotic and airy decline a deep sag, with their reason).
 [solvers]
 fe = {{}}

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The exceptions Catena throws (docs/architecture.md, "Errors"). Only bad input throws, before
+/// The exceptions Catena throws (docs/contributing/architecture.md, "Errors"). Only bad input throws, before
 /// any work is done: InvalidInput for a value that violates a documented constraint (including an
 /// output path that cannot be written), ParseError for a file that cannot be read or parsed.
 /// Numerical outcomes are never exceptions: they are statuses (SolverSummary::termination,

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The output of `catena check` (docs/check.md): the comparison as JSON (every number: per mode
+/// The output of `catena check` (docs/how-to/check.md): the comparison as JSON (every number: per mode
 /// the other program's values, Catena's value and estimate, relative errors, MAC, the observed
 /// order, the extrapolated limit and its bias), and a report in Markdown and self-contained HTML
 /// with one convergence plot per mode (SVG: the other program's |relative error| against its
@@ -22,7 +22,7 @@ struct CheckSources {
   std::string shapes_file;  ///< empty when none
 };
 
-/// The comparison as a JSON document (layout in docs/check.md, "JSON"); no NaN (null instead).
+/// The comparison as a JSON document (layout in docs/how-to/check.md, "JSON"); no NaN (null instead).
 std::string check_to_json(const ExternalCheck& check, const CheckSources& sources);
 
 /// Writes check_to_json to `path` atomically; InvalidInput naming the path when it cannot.

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Reading another program's modal results for `catena check` (formats in docs/check.md):
+/// Reading another program's modal results for `catena check` (formats in docs/how-to/check.md):
 ///
 /// - a CSV file with a header row: `plane`, `mode`, one of `frequency_hz` or `omega_rad_s`, and
 ///   optionally `resolution` (the other program's mesh count, larger = finer). `plane` is

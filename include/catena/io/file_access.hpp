@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// How catena touches the file system, in one place (docs/scene-format.md, "Limits"): input files
+/// How catena touches the file system, in one place (docs/reference/scene-format.md, "Limits"): input files
 /// are read only when they are regular files of bounded size; output files are written to a
 /// temporary file in the same directory and renamed over the target, so a reader never sees a
 /// 0-byte or half-written file; output locations can be checked before any work is done. Every

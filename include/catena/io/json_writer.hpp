@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The JSON documents of `catena solve --json` and `catena verify` (report.json): a public,
-/// scriptable interface documented in docs/json-layout.md. Layout:
+/// scriptable interface documented in docs/reference/json-layout.md. Layout:
 ///
 ///     { "catena": {version, git, compiler, build_type, generated_utc},
 ///       "scenes": [ { name, file, description, tags, sweep, problem, request, statics, groups,

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Reading a MoorDyn input file (v1 and v2 layouts; docs/moordyn-import.md) into plain data, for
+/// Reading a MoorDyn input file (v1 and v2 layouts; docs/how-to/moordyn-import.md) into plain data, for
 /// `catena import moordyn`. The file is a sequence of sections introduced by header lines that
 /// start with "---" and name the section (case-insensitive, any text around it): LINE TYPES or
 /// LINE DICTIONARY, POINTS (or POINT LIST, POINT PROPERTIES, CONNECTION PROPERTIES, NODE

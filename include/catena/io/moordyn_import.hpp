@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Converting a MoorDyn deck (io/moordyn_deck.hpp) into Catena scenes, one per line or per chain
-/// of lines in series joined at free points (docs/moordyn-import.md). Each line becomes a vertical
+/// of lines in series joined at free points (docs/how-to/moordyn-import.md). Each line becomes a vertical
 /// plane through its two held ends (end A the lower); MoorDyn's quantities become Catena's:
 ///   weight     = (MassDen - rho_w pi/4 Diam^2) g         [N/m]
 ///   added_mass = Ca rho_w pi/4 Diam^2                     [kg/m]

@@ -5,7 +5,7 @@
 /// the table and the key, e.g.
 ///     "scenes/x.toml: [cable].mass = -1: must be > 0 [kg/m]"
 ///
-/// Format (docs/scene-format.md; documented with examples in verification/README.md):
+/// Format (docs/reference/scene-format.md; documented with examples in verification/README.md):
 ///
 ///     name = "mooring-line"            # optional (default: file stem)
 ///     description = "..."              # optional
@@ -31,7 +31,7 @@
 namespace catena {
 
 /// Reads one scene file. Returns one Scene, or one per value for a sweep. The file must be a
-/// regular file of at most kMaxInputFileBytes, nested at most 64 levels (docs/scene-format.md,
+/// regular file of at most kMaxInputFileBytes, nested at most 64 levels (docs/reference/scene-format.md,
 /// "Limits"); otherwise a ParseError naming the path.
 std::vector<Scene> read_scene_file(const std::filesystem::path& path);
 

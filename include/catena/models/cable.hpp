@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The cable and its supports in SI units (docs/physics.md), and the Problem every solver answers.
+/// The cable and its supports in SI units (docs/explanation/physics.md), and the Problem every solver answers.
 
 #include <optional>
 #include <string>
@@ -12,7 +12,7 @@
 namespace catena {
 
 /// Bounds on the magnitude of every cable and support value in SI units (L, W0, EA, m, ma, the
-/// support coordinates; docs/scene-format.md, "Limits"). Outside them the statics overflow or
+/// support coordinates; docs/reference/scene-format.md, "Limits"). Outside them the statics overflow or
 /// underflow: the tension scales as W0 L and Newton's Jacobian as its square and fourth power.
 /// EA may also be +inf (inextensible); ma and coordinates may also be 0.
 inline constexpr double kMinCableMagnitude = 1e-15;
@@ -87,7 +87,7 @@ struct Problem {
   /// determined by the chord only to about (rounding / static strain), e.g. 1e-2 relative for
   /// eps = 1e-6, so a tension-specified problem must not be re-solved from its geometry.
   std::optional<EndForces> prescribed_forces;
-  /// A flat seabed under the line (docs/physics.md, "Seabed contact"): end A lies on it, end B
+  /// A flat seabed under the line (docs/explanation/physics.md, "Seabed contact"): end A lies on it, end B
   /// above it. The statics then lays a grounded length from A on it where the line would go
   /// below it (catena/statics/seabed_statics.hpp).
   std::optional<Seabed> seabed;

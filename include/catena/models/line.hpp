@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// A general line (docs/physics.md, "General lines"): an ordered list of segments from end A to
+/// A general line (docs/explanation/physics.md, "General lines"): an ordered list of segments from end A to
 /// end B, each with its own section, plus point attachments (clump weights, buoys, anchor heads)
 /// at given unstretched arc lengths from A.
 

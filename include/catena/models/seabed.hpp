@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// A flat horizontal seabed under a line (docs/physics.md, "Seabed contact"): its height, the
+/// A flat horizontal seabed under a line (docs/explanation/physics.md, "Seabed contact"): its height, the
 /// Coulomb friction of the statics and the foundation stiffnesses of the linear dynamics.
 
 namespace catena {

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The `fe` solver (docs/methods/fe.md): the cable as a chain of N two-node axial bar elements with
+/// The `fe` solver (docs/explanation/methods/fe.md): the cable as a chain of N two-node axial bar elements with
 /// lumped nodal masses, linearised about the chain's own exact static equilibrium, and solved as
 /// the sparse generalized eigenproblem K phi = omega^2 Mmat phi.
 ///
@@ -20,7 +20,7 @@
 /// discretisation error that Richardson extrapolation removes.
 ///
 /// Dynamics. Element tangent stiffness k_j = (EA/l0) t_j t_j^T + (T_j/l_j)(I - t_j t_j^T)
-/// (docs/physics.md, A = EA t t^T + T/(1+e) n n^T, integrated over one element); lumped node masses
+/// (docs/explanation/physics.md, A = EA t t^T + T/(1+e) n n^T, integrated over one element); lumped node masses
 /// l0 (m t_i t_i^T + M n_i n_i^T), with the node tangent t_i the bisector of the two adjacent
 /// element tangents; the fixed end nodes are removed. In plane: 2 (N-1) unknowns, block
 /// tridiagonal. Out of plane: k_j = T_j / l_j, node mass M l0: N-1 unknowns, tridiagonal.
@@ -73,7 +73,7 @@
 /// no-convergence before any eigen solve, and a discrete statics that does not close (or a slack
 /// element) is a numerical failure.
 ///
-/// Code: the stages are in src/solvers/internal/fe_*: discrete statics (fe_chain_statics),
+/// Code: the stages are in src/solvers/fe/fe_*: discrete statics (fe_chain_statics),
 /// operators (fe_operators), the eigenpairs of one (mesh, penalty) level (fe_eigen), the plan and
 /// its levels (fe_levels), stations (fe_shapes), extrapolation (fe_extrapolation), forced response
 /// (fe_forced) and summary text (fe_summary); fe_solver.cpp runs them through the solver skeleton.
@@ -90,7 +90,7 @@ namespace catena {
 /// `tolerance`, `max_elements`; `eigen_tolerance` and `max_restarts` are set through this struct only.
 struct FeSolverOptions {
   /// Number of bar elements N (the coarse mesh when Richardson is on). In [2, 5e7]; the coarsest
-  /// mesh used resolves at most N / 2 modes per plane (docs/methods/fe.md), more is InvalidInput.
+  /// mesh used resolves at most N / 2 modes per plane (docs/explanation/methods/fe.md), more is InvalidInput.
   /// The discretisation error of mode n is about (n pi / 2N)^2 / 6 relative without Richardson.
   int elements = 400;
   /// Solve with N and 2N elements and extrapolate (order 2 -> 4). Without it, the error estimate
@@ -107,7 +107,7 @@ struct FeSolverOptions {
   double kappa = 1e-6;
   /// Accuracy target of each frequency [-], in [0, 1]; 0: none. When a mode's error estimate
   /// exceeds it, fe solves again on a finer mesh (N predicted from the estimates' order, at most
-  /// max_elements; docs/methods/fe.md, "Meeting a tolerance"); a mode that still exceeds it is
+  /// max_elements; docs/explanation/methods/fe.md, "Meeting a tolerance"); a mode that still exceeds it is
   /// listed in the plane's SolverSummary::missed_modes and the plane is NoConvergence.
   double tolerance = 0.0;
   /// The largest N a tolerance may refine to, in [2, 5e7]. At or below `elements`: no refinement.

@@ -1,14 +1,14 @@
 #pragma once
 /// \file
-/// The `frobenius` solver (docs/methods/frobenius.md): Gale's power-series solution of the
-/// inextensible catenary (Gale 1976, sec. II.4; docs/references.md), extended.
+/// The `frobenius` solver (docs/explanation/methods/frobenius.md): Gale's power-series solution of the
+/// inextensible catenary (Gale 1976, sec. II.4; docs/reference/references.md), extended.
 ///
 /// Model: EA = inf (inextensible), so the tangential strain of the motion vanishes. In Gale's
 /// variables (a = H/W0, sigma = (s - s_apex)/a, xi = sign(sigma)(sqrt(1+sigma^2) - 1),
 /// Omega = w / sqrt(g/a), g = W0/m, mu = M/m) the tangential displacement U obeys the fourth-order
 /// eq. 2.42 in |xi| (exponents 0, 1/2, 1, 3/2 at the apex xi = 0), the normal displacement is
 /// V = (1+sigma^2) dU/dsigma (2.36) and the dynamic tension T (2.37); out of plane the displacement
-/// obeys eq. 2.44 (exponents 0, 1/2). The equations were re-derived from the model of docs/physics.md (see
+/// obeys eq. 2.44 (exponents 0, 1/2). The equations were re-derived from the model of docs/explanation/physics.md (see
 /// verification/tools/frobenius_derive_odes.py), not copied from the OCR.
 ///
 /// Method: a general Frobenius engine builds the series from the coefficient polynomials; the

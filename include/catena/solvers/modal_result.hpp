@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Results every solver returns, in the same structures (docs/json-layout.md).
+/// Results every solver returns, in the same structures (docs/reference/json-layout.md).
 ///
 /// Shape normalisation (the common convention every solver follows, so that shapes compare
 /// directly): in-plane shapes are scaled so that max_j |w(s_j)| = 1 and w is positive where |w| is
@@ -71,7 +71,7 @@ struct ModalResult {
 /// Response to one forcing frequency.
 ///
 /// Resonance is decided by each solver relative to its own accuracy at that frequency, never by a
-/// fixed threshold on a determinant (docs/methods/<solver>.md, "Forced response"): a forcing
+/// fixed threshold on a determinant (docs/explanation/methods/<solver>.md, "Forced response"): a forcing
 /// frequency is at resonance (`at_resonance`, a diagnostic and no fields) only when it lies within
 /// the error estimate of a natural frequency the solver computed, |omega - omega_n| <= c omega_n
 /// estimate_n, or when the solver's boundary determinant (or pivot), scaled by its condition, is

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// A cooperative budget for one run of the solvers: a wall-clock deadline and a progress report
-/// (docs/architecture.md, "Limits on work").
+/// (docs/contributing/architecture.md, "Limits on work").
 ///
 /// The solvers check the budget after each unit of work at their natural granularity (a mode of
 /// shooting or frobenius, an eigen solve of an fe level, a forcing frequency, a chunk of an airy

@@ -1,10 +1,10 @@
 #pragma once
 /// \file
-/// The `shooting` solver (docs/methods/shooting.md): the exact linear boundary-value solution of
+/// The `shooting` solver (docs/explanation/methods/shooting.md): the exact linear boundary-value solution of
 /// the cable equations, integrated along s by an explicit Runge-Kutta 6(5) pair (or SUNDIALS
 /// CVODE: knob `method`). It is the project's accuracy reference.
 ///
-/// Model (docs/physics.md). About the static elastic catenary, harmonic motion D = Phi(s) e^{i w t}
+/// Model (docs/explanation/physics.md). About the static elastic catenary, harmonic motion D = Phi(s) e^{i w t}
 /// satisfies (A Phi')' + w^2 Mmat Phi = 0 with A = EA t t^T + (T/(1+e)) n n^T and
 /// Mmat = m t t^T + M n n^T; out of plane ((T/(1+e)) v')' + w^2 M v = 0. The solver integrates the
 /// first-order form Phi' = A^{-1} F, F' = -w^2 Mmat Phi, with
@@ -63,7 +63,7 @@
 /// from rtol = 1e-4 to 1e-12, and the estimate covers it (see the convergence test).
 ///
 /// References: Atkinson, Discrete and Continuous Boundary Problems (1964), ch. 10 (oscillation
-/// of Hamiltonian systems); Irvine, Cable Structures (1981); Gale (1976) (docs/references.md).
+/// of Hamiltonian systems); Irvine, Cable Structures (1981); Gale (1976) (docs/reference/references.md).
 
 #include <string>
 
@@ -75,7 +75,7 @@
 
 namespace catena {
 
-/// The integrator of a shot (docs/methods/shooting.md, "Integrators").
+/// The integrator of a shot (docs/explanation/methods/shooting.md, "Integrators").
 enum class ShootingMethod {
   RungeKutta,  ///< explicit Runge-Kutta, Verner's 6(5) pair (default)
   Adams,       ///< CVODE's Adams-Moulton, orders 1-12
@@ -117,7 +117,7 @@ struct ShootingSolverOptions {
   /// the frequency derivative carried by the shot (the variational equation; Brent's method takes
   /// over where a step leaves the sign bracket or does not shrink), or Brent's method alone. A
   /// general line (several segments or point attachments) and a line starting on the seabed are
-  /// refined by Brent either way (measured cheaper there: docs/methods/shooting.md).
+  /// refined by Brent either way (measured cheaper there: docs/explanation/methods/shooting.md).
   bool newton = true;
 
   /// absolute_tolerance with the default applied.

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// What a scene asks the solvers to compute (docs/scene-format.md, `[request]`). Only what is asked is computed.
+/// What a scene asks the solvers to compute (docs/reference/scene-format.md, `[request]`). Only what is asked is computed.
 
 #include <cstddef>
 #include <optional>
@@ -42,11 +42,11 @@ struct ForcedRequest {
   Vec2 unit_vector() const;
 };
 
-/// Most modes a request may ask for in each plane (docs/scene-format.md, "Limits on work"): at
+/// Most modes a request may ask for in each plane (docs/reference/scene-format.md, "Limits on work"): at
 /// the measured cost the largest request takes minutes, not days. Use a time limit
 /// (catena/solvers/run_limits.hpp) for less.
 inline constexpr int kMaxRequestModes = 1000;
-/// Most stations a request may ask for (docs/scene-format.md, "Limits").
+/// Most stations a request may ask for (docs/reference/scene-format.md, "Limits").
 inline constexpr int kMaxRequestPoints = 100000;
 /// Most values of one shape table: points x (inplane_modes + outofplane_modes) when shapes are
 /// asked. Bounds the memory and the size of the results JSON (a few hundred MB at the limit).
@@ -54,7 +54,7 @@ inline constexpr long kMaxShapeValues = 1000000;
 
 /// What to compute.
 struct SolveRequest {
-  /// Most forcing frequencies in one request (docs/scene-format.md, "Limits on work").
+  /// Most forcing frequencies in one request (docs/reference/scene-format.md, "Limits on work").
   static constexpr std::size_t kMaxForcingFrequencies = 100000;
 
   /// Number of lowest in-plane modes (0: none).

@@ -3,10 +3,10 @@
 /// The solvers behind `catena solve` and `catena verify`, by name, with their knobs.
 ///
 /// Each solver also has its own typed entry point and options struct (e.g. solve_fe with
-/// FeSolverOptions). Both paths run through one driver (src/solvers/internal/solver_driver.hpp):
+/// FeSolverOptions). Both paths run through one driver (src/solvers/common/solver_driver.hpp):
 /// validation, applicability, the per-plane loop, timing, exception-to-status mapping and the rule
 /// that combines the plane summaries are written once; a solver supplies only its numerics
-/// (docs/architecture.md, "Solver skeleton").
+/// (docs/contributing/architecture.md, "Solver skeleton").
 
 #include <functional>
 #include <map>
@@ -71,7 +71,7 @@ struct SolverEntry {
   /// The code path that computes each quantity the harness compares, by quantity
   /// ("frequency-in-plane", "frequency-out-of-plane", "shape-in-plane", "shape-out-of-plane",
   /// "tension", "forced"): two solvers that declare the same id for a quantity are one witness,
-  /// and the harness does not compare them on it (docs/verdicts.md, "Independence"). A quantity
+  /// and the harness does not compare them on it (docs/reference/verdicts.md, "Independence"). A quantity
   /// the solver does not produce is absent.
   std::map<std::string, std::string> computations;
 };

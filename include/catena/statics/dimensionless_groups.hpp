@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The dimensionless groups of docs/physics.md ("Dimensionless groups"), computed for any problem, and the frequency
+/// The dimensionless groups of docs/explanation/physics.md ("Dimensionless groups"), computed for any problem, and the frequency
 /// conversions between rad/s, kL/pi (Grinfogel) and w / sqrt(g/a) (Gale).
 
 #include <optional>
@@ -11,10 +11,10 @@
 
 namespace catena {
 
-/// Groups of the taut inclined cable (Grinfogel 1984; docs/references.md) and of the suspended catenary
-/// (Gale 1976; docs/references.md).
+/// Groups of the taut inclined cable (Grinfogel 1984; docs/reference/references.md) and of the suspended catenary
+/// (Gale 1976; docs/reference/references.md).
 struct DimensionlessGroups {
-  /// True for a uniform cable. For a general line (docs/physics.md, "General lines") the groups of
+  /// True for a uniform cable. For a general line (docs/explanation/physics.md, "General lines") the groups of
   /// Grinfogel and Gale mean nothing: only chord_angle_rad, t0_n (the larger end tension),
   /// mass_ratio and taut_frequency_scale_rad_s (with the length-averaged normal mass, so that kL/pi
   /// stays a frequency unit) are set; eps, lambda2 and s_a are 0 and not reported, and Gale's

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Statics of a uniform elastic (or inextensible) cable hanging between two supports
-/// (docs/physics.md): the elastic catenary.
+/// (docs/explanation/physics.md): the elastic catenary.
 ///
 /// The internal force at unstretched arc length s is F(s) = (H, V(s)), V(s) = V_A + W0 s, with
 /// H >= 0 constant; tension T = |F|, unit tangent t = F/T, in-plane normal n = (-V, H)/T, static
@@ -49,7 +49,7 @@ struct StaticPiece {
   /// Offset of the start from support a [m] and stretched length of [0, s_begin] [m].
   Vec2 offset_begin_m = Vec2::Zero();
   double stretched_begin_m = 0.0;
-  /// True for a piece resting on the seabed (docs/physics.md, "Seabed contact"): straight and
+  /// True for a piece resting on the seabed (docs/explanation/physics.md, "Seabed contact"): straight and
   /// horizontal, V = 0, tension set by friction (grounded_tension_begin_n).
   bool grounded = false;
   /// Grounded pieces: H - C_B (weight resting on the seabed between the start and the touchdown
@@ -61,7 +61,7 @@ struct StaticPiece {
 /// The static state of the cable: the two end-force unknowns plus closed forms at any s.
 /// Every function of s takes the unstretched arc length s in [0, L] [m].
 ///
-/// A general line (docs/physics.md, "General lines") is the same state piecewise: V jumps by the
+/// A general line (docs/explanation/physics.md, "General lines") is the same state piecewise: V jumps by the
 /// weight of each point attachment, so at a point every function of s gives the value just beyond
 /// it (toward b; the `_before_` variants give the value on the side of a).
 class StaticSolution {
@@ -71,7 +71,7 @@ class StaticSolution {
   StaticSolution(const CableProperties& cable, const Vec2& a_m, double H, double V_A);
   /// The equilibrium of a general line (validated) with forces (H, V_A) at support `a`.
   StaticSolution(const Line& line, const Vec2& a_m, double H, double V_A);
-  /// The equilibrium of a line (validated) on `seabed` (docs/physics.md, "Seabed contact"): the
+  /// The equilibrium of a line (validated) on `seabed` (docs/explanation/physics.md, "Seabed contact"): the
   /// grounded length L_g = `grounded_length_m` from A rests on the seabed; the rest is suspended
   /// with horizontal force `H` [N], leaving the seabed tangentially (V = 0 at s = L_g). The grounded
   /// pieces come first, cut at joints, points and where the friction tension reaches 0.
@@ -174,7 +174,7 @@ Vec2 catenary_end_offset(const CableProperties& cable, double H, double V_A);
 /// When the problem has prescribed_forces, they are the solution (no Newton; the closure error
 /// against support b is checked and reported).
 ///
-/// Errors, in two kinds (docs/architecture.md, "Errors"):
+/// Errors, in two kinds (docs/contributing/architecture.md, "Errors"):
 /// - bad input throws InvalidInput before any iteration: an invalid problem or options, no
 ///   equilibrium (an inextensible cable shorter than the chord, a vertical chord that leaves the
 ///   cable slack), prescribed forces that miss support b;

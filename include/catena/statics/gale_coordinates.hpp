@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Gale's end coordinate xi and the catenary slope parameter sigma = V/H (Gale 1976; see
-/// docs/physics.md, "Dimensionless groups", and docs/references.md). Plain functions of one number,
+/// docs/explanation/physics.md, "Dimensionless groups", and docs/reference/references.md). Plain functions of one number,
 /// used both to describe a solved catenary (dimensionless_groups) and to build one from Gale's
 /// inputs (problem_builders).
 

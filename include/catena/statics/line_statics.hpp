@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Statics of a general line (docs/physics.md, "General lines"): segments of different sections,
+/// Statics of a general line (docs/explanation/physics.md, "General lines"): segments of different sections,
 /// point weights and buoys. H is constant; V jumps by each segment's and each point's weight; each
 /// piece between joints and points is an elastic catenary (sagging, straight or hogging).
 

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Builders of a physical Problem from the dimensionless forms of the published papers (docs/physics.md, "Dimensionless groups").
+/// Builders of a physical Problem from the dimensionless forms of the published papers (docs/explanation/physics.md, "Dimensionless groups").
 /// Each builder's output, passed through solve_statics and compute_dimensionless_groups,
 /// reproduces its inputs (tested to 1e-12).
 
@@ -9,7 +9,7 @@
 
 namespace catena {
 
-/// Taut inclined cable from Grinfogel's groups (Grinfogel 1984; docs/references.md): L = 1 m, T0 = 1 N, M = 1 kg/m,
+/// Taut inclined cable from Grinfogel's groups (Grinfogel 1984; docs/reference/references.md): L = 1 m, T0 = 1 N, M = 1 kg/m,
 /// m = mass_ratio, W0 = eps, EA = lambda2 / (eps^2 cos^2 phi), H = cos phi; the point where the
 /// static angle equals phi sits at s_a, found by a 1-D root so that the chord has angle phi.
 /// \param eps W0 L / T0, in (0, 10].
@@ -18,7 +18,7 @@ namespace catena {
 /// \param mass_ratio h = m / M, in (0, 1].
 Problem make_taut_inclined_problem(double eps, double phi_deg, double lambda2, double mass_ratio);
 
-/// Inextensible catenary from Gale's end coordinates xi1 < xi2 (Gale 1976; docs/references.md): a = H/W0 = 1 m,
+/// Inextensible catenary from Gale's end coordinates xi1 < xi2 (Gale 1976; docs/reference/references.md): a = H/W0 = 1 m,
 /// W0 = 1 N/m, m = 1 kg/m (so sqrt(g/a) = 1 rad/s and omega is Gale's ratio), no added mass.
 Problem make_gale_xi_problem(double xi1, double xi2);
 

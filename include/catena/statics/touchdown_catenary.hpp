@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The touchdown form of the elastic catenary (Turchetto 2016, docs/references.md, eqs. 1.6-1.10): a mooring
+/// The touchdown form of the elastic catenary (Turchetto 2016, docs/reference/references.md, eqs. 1.6-1.10): a mooring
 /// line hanging from its lowest point (theta = 0, where it leaves a flat seabed) up to a fairlead at
 /// height `depth` above the seabed. The part beyond the lowest point rests on the seabed.
 ///

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Catena's certified reference for `catena check` (docs/check.md, "The reference"): of the two
+/// Catena's certified reference for `catena check` (docs/how-to/check.md, "The reference"): of the two
 /// exact, reference-grade solvers, shooting and fe (Richardson-extrapolated), the one that
 /// converged with the smaller error estimate; when both converged, their largest disagreement is
 /// reported as an independent confirmation.

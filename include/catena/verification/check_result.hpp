@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// One cross-check and its verdict (docs/verdicts.md).
+/// One cross-check and its verdict (docs/reference/verdicts.md).
 
 #include <string>
 
@@ -44,7 +44,7 @@ struct CheckResult {
   std::string detail;
   /// Why this tolerance: the reason of the tolerance rule that set it (or the scene's override);
   /// empty when the check has no rule. Kept apart from `detail` because thousands of checks share
-  /// a handful of reasons (report.json lists each once, docs/json-layout.md).
+  /// a handful of reasons (report.json lists each once, docs/reference/json-layout.md).
   std::string tolerance_reason;
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Checking another program's natural frequencies, and optionally its mode shapes and dynamic
-/// tensions, against Catena's certified reference (docs/check.md). Pure data in, comparison out:
+/// tensions, against Catena's certified reference (docs/how-to/check.md). Pure data in, comparison out:
 /// reading the other program's files is include/catena/io/external_results_reader.hpp, choosing
 /// the reference is include/catena/verification/certified_reference.hpp, the report is
 /// include/catena/io/check_report.hpp.
@@ -76,7 +76,7 @@ struct CertifiedReference {
   std::vector<ReferenceMode> modes;
 };
 
-/// Settings of the comparison (docs/check.md, "Verdicts").
+/// Settings of the comparison (docs/how-to/check.md, "Verdicts").
 struct ExternalCheckOptions {
   /// Relative tolerance on frequencies. > 0.
   double rtol = 1e-3;
@@ -89,7 +89,7 @@ struct ExternalCheckOptions {
 
 /// The convergence study of one mode (three or more resolutions).
 struct ConvergenceStudy {
-  /// True when the extrapolation is trustworthy (docs/check.md): monotone convergence, an
+  /// True when the extrapolation is trustworthy (docs/how-to/check.md): monotone convergence, an
   /// observed order in [0.5, 10], stable across triples when four or more resolutions are given;
   /// or differences already at rounding level.
   bool trustworthy = false;
@@ -110,7 +110,7 @@ struct ConvergenceStudy {
   std::optional<double> bias_relative;
 };
 
-/// The verdict on one mode (docs/check.md, "Verdicts").
+/// The verdict on one mode (docs/how-to/check.md, "Verdicts").
 enum class ModeVerdict {
   WithinTolerance,          ///< one resolution (or an inconclusive study): |error| <= rtol
   BeyondTolerance,          ///< one resolution (or an inconclusive study): |error| > rtol

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Two solvers that compute a quantity by the same code are one witness, not two
-/// (docs/verdicts.md, "Independence"). Each solver declares its code paths
+/// (docs/reference/verdicts.md, "Independence"). Each solver declares its code paths
 /// (SolverEntry::computations); the harness does not compare two solvers on a quantity they share,
 /// and flags, from the values themselves, any pair of solvers whose values of a quantity are
 /// bit-identical over a whole list (an identity check: it cannot fail).

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Mutation testing of the verification harness (`catena verify --mutation`, docs/mutation.md):
+/// Mutation testing of the verification harness (`catena verify --mutation`, docs/explanation/mutation.md):
 /// after a scene is solved, one result at a time is made wrong by a stated amount and the scene's
 /// checks are run again on the mutated results (nothing is re-solved). A mutation is caught when
 /// some check of that scene goes from a non-FAIL verdict to FAIL. The share caught measures how
@@ -26,7 +26,7 @@ inline constexpr double kShapeMutationFactor = 10.0;
 /// A forced response's max |tension| (and its tension curve) is multiplied by (1 + this).
 inline constexpr double kForcedTensionMutation = 1e-4;
 /// fe's target when a scene does not set its `tolerance` knob: the accuracy the tolerance table
-/// declares for it and holds its frequency checks to (verification/tolerances.toml, docs/mutation.md).
+/// declares for it and holds its frequency checks to (verification/tolerances.toml, docs/explanation/mutation.md).
 inline constexpr double kFeAccuracyTarget = 1e-6;
 
 /// What a mutation changed.

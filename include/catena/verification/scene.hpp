@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// A scene: one cable, one request, optionally which solvers (with knobs), check tolerances and
-/// published values to compare with (docs/scene-format.md). Scenes are read from TOML by
+/// published values to compare with (docs/reference/scene-format.md). Scenes are read from TOML by
 /// io/scene_reader.hpp; a sweep scene expands into one Scene per value.
 
 #include <filesystem>

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// `catena check` as one library call (docs/check.md): another program's results against Catena's
+/// `catena check` as one library call (docs/how-to/check.md): another program's results against Catena's
 /// certified reference for a scene. The scene's request is adapted to what the check needs (enough
 /// modes in each plane the results use, shapes and tensions when the results carry them, shooting
 /// and fe only, their knobs from the scene kept), the scene is run, the reference of each plane is

@@ -3,7 +3,7 @@
 /// Expected agreement, held as reviewed data (verification/tolerances.toml, after Boost.Math's
 /// expected_results()): each rule says which check and which pair of solvers (or a solver and the
 /// published value) it governs, the tolerance, and why. A tolerance never depends on what a solver
-/// says of its own accuracy (docs/verdicts.md, "Tolerances"): it is a fixed number, plus, for an
+/// says of its own accuracy (docs/reference/verdicts.md, "Tolerances"): it is a fixed number, plus, for an
 /// asymptotic model, the model's published error term evaluated on the scene.
 ///
 ///     [[tolerance]]
@@ -75,7 +75,7 @@ struct ToleranceRule {
   double tolerance(const ModelParameters& parameters) const;
 };
 
-/// What the estimate check needs to know of a solver (docs/verdicts.md, "The estimate as a claim").
+/// What the estimate check needs to know of a solver (docs/reference/verdicts.md, "The estimate as a claim").
 struct SolverAccuracy {
   std::string name;
   /// True for "exact": a method whose error can be driven to rounding (it may be the reference

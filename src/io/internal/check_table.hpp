@@ -1,6 +1,6 @@
 #pragma once
 // A scene's checks in report.json as one table: the field names once, then one row per check
-// (docs/json-layout.md). The suite has about 25,000 checks; their eleven key names, repeated in
+// (docs/reference/json-layout.md). The suite has about 25,000 checks; their eleven key names, repeated in
 // every record, were a fifth of the file.
 
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // The JSON form of another program's results for `catena check` (layout in
-// include/catena/io/external_results_reader.hpp and docs/check.md).
+// include/catena/io/external_results_reader.hpp and docs/how-to/check.md).
 
 #include <filesystem>
 #include <string>

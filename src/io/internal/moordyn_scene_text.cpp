@@ -47,7 +47,7 @@ std::string header(const ChainDescription& d, const std::string& name, const std
   };
   std::string lines;
   for (const auto& s : d.segments) lines += fmt::format("{}{} (type {})", lines.empty() ? "" : ", ", s.line, s.type);
-  std::string out = fmt::format("# Imported by `catena import moordyn` from {} (docs/moordyn-import.md).\n", d.deck_file);
+  std::string out = fmt::format("# Imported by `catena import moordyn` from {} (docs/how-to/moordyn-import.md).\n", d.deck_file);
   out += fmt::format("# MoorDyn line(s) {}, end A = {}, end B = {}.\n", lines, point_text(d.geometry.end_a), point_text(d.geometry.end_b));
   out += "# The vertical plane through the two ends: x = horizontal distance from end A, z = MoorDyn's z.\n";
   out += fmt::format("# weight = (MassDen - rho_w pi/4 Diam^2) g, added_mass = Ca rho_w pi/4 Diam^2; g = {} m/s^2, "

@@ -1,5 +1,5 @@
 #pragma once
-// A chain of MoorDyn lines described in Catena's terms (docs/moordyn-import.md), and written as
+// A chain of MoorDyn lines described in Catena's terms (docs/how-to/moordyn-import.md), and written as
 // a scene: `[cable]` for one uniform line, `[line]` with segments and points otherwise, `[seabed]`
 // when the line touches it.
 

@@ -14,7 +14,7 @@
 
 namespace catena::internal {
 
-/// Deepest nesting of arrays and inline tables accepted in a TOML file (docs/scene-format.md,
+/// Deepest nesting of arrays and inline tables accepted in a TOML file (docs/reference/scene-format.md,
 /// "Limits"): our deepest is 2; the parser recurses once per level.
 inline constexpr int kMaxTomlNesting = 64;
 

@@ -1,4 +1,4 @@
-// The Markdown and HTML report of `catena check` (docs/check.md, "Report"), built with the
+// The Markdown and HTML report of `catena check` (docs/how-to/check.md, "Report"), built with the
 // report's document model (io/report/document.hpp) and the library's own SVG plots.
 #include <cmath>
 #include <fmt/format.h>
@@ -55,7 +55,7 @@ void add_mode_table(Document& out, const ExternalCheck& check) {
   out.push_back(internal::Heading{2, "Modes", "modes"});
   out.push_back(internal::Paragraph{
       "Other: the other program's finest result. Error: (other - Catena) / Catena. Order, limit and bias: the "
-      "convergence study (three or more resolutions; docs/check.md). Verdicts are defined in docs/check.md."});
+      "convergence study (three or more resolutions; docs/how-to/check.md). Verdicts are defined in docs/how-to/check.md."});
   internal::Table table{{"plane", "mode", "Catena mode", "pairing", "other f [Hz]", "Catena f [Hz]", "Catena estimate",
                          "error", "MAC", "order", "limit f [Hz]", "bias", "verdict"},
                         {},

@@ -16,7 +16,7 @@ namespace {
 const char* const kReferenceOrder[] = {"frobenius", "shooting", "fe"};
 const char* const kModels[] = {"asymptotic", "airy"};
 // The fit uses scenes with eps at most this: the models' own validity-warning threshold
-// (their eps_warning_threshold knob, docs/solver-knobs.md)...
+// (their eps_warning_threshold knob, docs/reference/solver-knobs.md)...
 constexpr double kAsymptoticRangeEps = 0.3;
 // ...and errors this many times above the reference's own error estimate for that mode (below,
 // the "error" measures the reference as much as the model, and the curve flattens).

@@ -1,4 +1,4 @@
-// The mutation score of `catena verify --mutation` (docs/mutation.md): by solver and scene
+// The mutation score of `catena verify --mutation` (docs/explanation/mutation.md): by solver and scene
 // family, by solver and quantity, and every uncaught mutation.
 #include <fmt/format.h>
 #include <map>
@@ -67,7 +67,7 @@ void add_mutation(Document& out, const json& document) {
       "a frequency by {:g} x its solver's accuracy target (shooting 10 rtol + root_tolerance, frobenius 10 tolerance, "
       "fe its scene's tolerance or else {:g}, asymptotic and airy their model-error estimate), a mode shape by a mix with its neighbour so that 1 - MAC is {:g} x the "
       "widest MAC tolerance, a forced max |tension| by {:g} relative. Caught: some check of the scene went to FAIL "
-      "(docs/mutation.md). Exact solvers (fe, shooting, frobenius) where another exact solver ran: {} of {} caught "
+      "(docs/explanation/mutation.md). Exact solvers (fe, shooting, frobenius) where another exact solver ran: {} of {} caught "
       "({}); of those, the changes larger than the mutated value's own error estimate (beyond what its solver "
       "claims): {} of {} caught ({}). {:.1f} s on {} threads.",
       m.value(key::frequency_factor, 0.0), m.value(key::fe_accuracy_target, 0.0), m.value(key::shape_factor, 0.0),

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The pieces of a general line's statics (docs/physics.md, "General lines"): the line cut at
+/// The pieces of a general line's statics (docs/explanation/physics.md, "General lines"): the line cut at
 /// every joint and point attachment, each piece a closed-form catenary, chained by continuity of
 /// position and H and by the jump of V at each point's weight.
 

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The pieces of a line resting partly on a flat seabed (docs/physics.md, "Seabed contact"): the
+/// The pieces of a line resting partly on a flat seabed (docs/explanation/physics.md, "Seabed contact"): the
 /// grounded pieces (straight, horizontal, tension set by Coulomb friction) from A to the touchdown
 /// point, then the suspended pieces of a general line leaving the seabed with V = 0.
 

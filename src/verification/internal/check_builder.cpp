@@ -9,7 +9,7 @@
 namespace catena::internal {
 namespace {
 
-// Whatever a tolerance says, a relative difference above this is a gross disagreement (docs/verdicts.md).
+// Whatever a tolerance says, a relative difference above this is a gross disagreement (docs/reference/verdicts.md).
 constexpr double kGrossRelative = kGrossRelativeDifference;
 
 }  // namespace

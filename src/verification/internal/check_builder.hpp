@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Collects the checks of one scene: their common fields, tolerances from the reviewed table (never
-/// from a solver's own estimate), the verdict rules, and the independence rule (docs/verdicts.md).
+/// from a solver's own estimate), the verdict rules, and the independence rule (docs/reference/verdicts.md).
 
 #include <optional>
 #include <string>

@@ -64,7 +64,7 @@ void mode_count(const SolverOutput& output, Plane plane, CheckBuilder& builder) 
 
 // A mode its solver declared beyond its own accuracy target (Mode::meets_target, listed in the
 // summary's missed_modes) is still compared, but a disagreement is the WARN the solver announced,
-// not a FAIL (docs/verdicts.md, "Declared misses"); the estimate check still holds the declared
+// not a FAIL (docs/reference/verdicts.md, "Declared misses"); the estimate check still holds the declared
 // estimate to the actual error.
 CheckBuilder::Tolerance declared_miss(CheckBuilder::Tolerance tol, const Mode& x, const Mode& y, CheckResult& check) {
   if (x.meets_target && y.meets_target) return tol;
@@ -76,7 +76,7 @@ CheckBuilder::Tolerance declared_miss(CheckBuilder::Tolerance tol, const Mode& x
 // Two exact solvers that were both asked for an accuracy (their planes' accuracy_target, set by
 // the scene's knobs, never by an estimate) are held to the sum of those targets where it is below
 // the table's rule: a scene that asks shooting for 1e-12 sees a 1e-10 change of frobenius. The
-// rule stays the ceiling, so no tolerance ever widens (docs/verdicts.md, "Tolerances").
+// rule stays the ceiling, so no tolerance ever widens (docs/reference/verdicts.md, "Tolerances").
 std::optional<CheckBuilder::Tolerance> tightened_by_targets(std::optional<CheckBuilder::Tolerance> tol,
                                                             const CheckBuilder& builder, const SolverOutput& a,
                                                             const SolverOutput& b, const ModalResult& ma,

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The checks of a solved scene (docs/verdicts.md).
+/// The checks of a solved scene (docs/reference/verdicts.md).
 
 #include <vector>
 

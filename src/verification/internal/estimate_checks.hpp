@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The error estimate as a checked claim (docs/verdicts.md, "The estimate as a claim"): each
+/// The error estimate as a checked claim (docs/reference/verdicts.md, "The estimate as a claim"): each
 /// frequency and forced response a solver returns with an error estimate is compared with the
 /// reference, the most accurate other exact solver that converged on the same scene and plane.
 

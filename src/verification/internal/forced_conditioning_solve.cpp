@@ -1,5 +1,5 @@
 // The natural frequencies behind the forced check's condition number: see
-// forced_conditioning_solve.hpp and docs/verdicts.md.
+// forced_conditioning_solve.hpp and docs/reference/verdicts.md.
 #include "verification/internal/forced_conditioning_solve.hpp"
 
 #include <fmt/format.h>

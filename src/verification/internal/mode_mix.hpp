@@ -1,5 +1,5 @@
 #pragma once
-// The shape mutation of docs/mutation.md: a mode shape mixed with a neighbouring mode,
+// The shape mutation of docs/explanation/mutation.md: a mode shape mixed with a neighbouring mode,
 // phi_n + delta phi_m, renormalised by the convention of catena/solvers/modal_result.hpp.
 
 #include <optional>

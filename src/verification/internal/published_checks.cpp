@@ -32,7 +32,7 @@ std::optional<double> solver_value(const SceneResult& result, const SolverOutput
 }
 
 // True when `solver` returned published frequency `mode` marked beyond its own accuracy target
-// (Mode::meets_target; docs/verdicts.md, "Declared misses").
+// (Mode::meets_target; docs/reference/verdicts.md, "Declared misses").
 bool declared_miss(const SceneResult& result, const std::string& solver, const PublishedValues& published,
                    int mode) {
   if (published.quantity == PublishedQuantity::ForcedMaxTension) return false;
@@ -132,7 +132,7 @@ void judge_disagreement(const CheckBuilder& builder, const PublishedValues& publ
     check.detail += fmt::format("; stale finding (reviewed value {:.8g})", finding->ours);
   } else if (published.quantity == PublishedQuantity::ForcedMaxTension &&
              at_resonance_for_all(builder, solver, values, forcing_omega)) {
-    // No second solver can confirm or refute a response at resonance (docs/verdicts.md,
+    // No second solver can confirm or refute a response at resonance (docs/reference/verdicts.md,
     // "Forced response: conditioning"): the same WARN as the forced pair checks there.
     check.verdict = Verdict::Warn;
     check.detail += "; at resonance, not checkable: no second solver can confirm it";

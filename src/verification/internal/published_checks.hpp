@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Checks against values printed in a source table, and the source-discrepancy rule
-/// (docs/verdicts.md, "Published values and the source-discrepancy rule").
+/// (docs/reference/verdicts.md, "Published values and the source-discrepancy rule").
 
 #include "verification/internal/check_builder.hpp"
 

@@ -10,7 +10,7 @@ namespace catena::internal {
 namespace {
 
 // Linear interpolation of `values` (on ascending `stations`) at s. Catena's stations are dense
-// (docs/check.md: 2001 points), so the interpolation error is far below any MAC of interest.
+// (docs/how-to/check.md: 2001 points), so the interpolation error is far below any MAC of interest.
 double interpolate(const Vector& stations, const Vector& values, double s) {
   const Index n = stations.size();
   const double* begin = stations.data();

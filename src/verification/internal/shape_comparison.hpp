@@ -1,6 +1,6 @@
 #pragma once
 // Comparing another program's mode shape (at its stations) with Catena's (at Catena's stations):
-// MAC, and the dynamic tension after scaling the other mode to Catena's (docs/check.md, "Shapes").
+// MAC, and the dynamic tension after scaling the other mode to Catena's (docs/how-to/check.md, "Shapes").
 
 #include <optional>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // Gale's inextensible catenary integrated directly in sigma = (s - s_apex) / a: no series, no
 // change of variable, Boost.Odeint Runge-Kutta-Fehlberg 7(8). An independent check of the
-// frobenius solver (docs/methods/frobenius.md) shared by the frobenius tools.
+// frobenius solver (docs/explanation/methods/frobenius.md) shared by the frobenius tools.
 //
 // Units a = H / W0 = 1 and H = 1; C = sqrt(1 + sigma^2), W2 = Omega^2 with Omega = w / sqrt(g/a),
 // mu = M / m:

@@ -1,0 +1,195 @@
+// The fe chain's stiffness and mass matrices: see fe_operators.hpp and docs/explanation/methods/fe.md.
+#include "solvers/fe/fe_operators.hpp"
+
+#include <cassert>
+#include <vector>
+
+namespace catena::internal {
+namespace {
+
+// Builds the compressed-column block-tridiagonal matrix of the free nodes 1..N-1 directly (no
+// triplets: at N = 1e6 the triplet list and its sort cost more than everything but the Lanczos
+// iterations, mostly in first-touch page faults). `element[j]` is the P x P block of element j
+// (nodes j, j+1); the block of free nodes (a, b) is sum of element blocks on the diagonal and
+// minus the shared element's block off it. With `diagonal_only`, only the diagonal blocks
+// `node[i]` are stored (the lumped mass).
+// Filled in place: Eigen 3.4's SparseMatrix has no move assignment, and a copy of a large matrix
+// costs mostly first-touch page faults.
+template <int P>
+void fill_block_tridiagonal(SparseMatrix& matrix,
+                            const std::vector<Eigen::Matrix<double, P, P>>& element,
+                            const std::vector<Eigen::Matrix<double, P, P>>& node,
+                            int elements,
+                            bool diagonal_only,
+                            const std::vector<Eigen::Matrix<double, P, P>>* node_stiffness = nullptr) {
+  const int free_nodes = elements - 1;
+  const Eigen::Index n = static_cast<Eigen::Index>(P) * free_nodes;
+  const Eigen::Index nonzeros = diagonal_only ? P * n : 3 * P * n - 2 * P * P;
+  matrix.resize(n, n);
+  matrix.resizeNonZeros(nonzeros);
+  auto* outer = matrix.outerIndexPtr();
+  auto* inner = matrix.innerIndexPtr();
+  double* values = matrix.valuePtr();
+  Eigen::Index at = 0;
+  for (int i = 1; i <= free_nodes; ++i) {  // free node i, unknowns P (i - 1) ..
+    for (int c = 0; c < P; ++c) {
+      outer[P * (i - 1) + c] = static_cast<int>(at);
+      auto put = [&](int node_j, const Eigen::Matrix<double, P, P>& block, double sign) {
+        for (int r = 0; r < P; ++r) {
+          inner[at] = P * (node_j - 1) + r;
+          values[at] = sign * block(r, c);
+          ++at;
+        }
+      };
+      if (diagonal_only) {
+        put(i, node[static_cast<std::size_t>(i)], 1.0);
+        continue;
+      }
+      const auto& left = element[static_cast<std::size_t>(i) - 1];  // nodes i-1, i
+      const auto& right = element[static_cast<std::size_t>(i)];     // nodes i, i+1
+      if (i > 1) put(i - 1, left, -1.0);
+      Eigen::Matrix<double, P, P> diagonal = left + right;
+      if (node_stiffness) diagonal += (*node_stiffness)[static_cast<std::size_t>(i)];
+      put(i, diagonal, 1.0);
+      if (i < free_nodes) put(i + 1, right, -1.0);
+    }
+  }
+  outer[n] = static_cast<int>(at);
+  assert(at == nonzeros);
+}
+
+// True when the elements on both sides of node i have the same length and section: the node then
+// carries l0 times the line density, as on a uniform cable.
+bool same_section(const FeChain& chain, int i) {
+  return chain.element_length_m[i - 1] == chain.element_length_m[i] &&
+         chain.mass_kg_per_m[i - 1] == chain.mass_kg_per_m[i] &&
+         chain.normal_mass_kg_per_m[i - 1] == chain.normal_mass_kg_per_m[i];
+}
+
+// Node i's lumped share of a density: half of each neighbouring element's [kg].
+double half_sum(const FeChain& chain, const Vector& density, int i) {
+  return 0.5 * (chain.element_length_m[i - 1] * density[i - 1] + chain.element_length_m[i] * density[i]);
+}
+
+bool has_point(const FeChain& chain, int i) {
+  const FeNodeInertia& point = chain.node_inertia[static_cast<std::size_t>(i)];
+  return point.tangential_kg > 0.0 || point.normal_kg > 0.0 || point.outofplane_kg > 0.0;
+}
+
+// In-plane lumped mass of half of element j on one of its nodes, in the element's own frame
+// (m along t_j, M across it) [kg].
+Eigen::Matrix2d half_element_mass(const FeChain& chain, int j) {
+  const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
+  const Eigen::Matrix2d ttT = t * t.transpose();
+  const double M = chain.normal_mass_kg_per_m[j];
+  return 0.5 * chain.element_length_m[j] * (chain.mass_kg_per_m[j] * ttT + M * (Eigen::Matrix2d::Identity() - ttT));
+}
+
+// The seabed foundation out of plane, lumped as inplane_foundation (fe_operators.hpp): node i
+// carries k_t times half of each grounded neighbour's l0. Empty without contact.
+std::vector<Eigen::Matrix<double, 1, 1>> outofplane_foundation(const FeChain& chain) {
+  if (!chain.has_contact()) return {};
+  std::vector<Eigen::Matrix<double, 1, 1>> node(static_cast<std::size_t>(chain.elements) + 1);
+  for (int i = 0; i <= chain.elements; ++i)
+    node[static_cast<std::size_t>(i)](0, 0) = chain.foundation_tangential_n_per_m2 * chain.grounded_share_m(i);
+  return node;
+}
+
+}  // namespace
+
+std::vector<Eigen::Matrix2d> inplane_foundation(const FeChain& chain) {
+  if (!chain.has_contact()) return {};
+  std::vector<Eigen::Matrix2d> node(static_cast<std::size_t>(chain.elements) + 1, Eigen::Matrix2d::Zero());
+  for (int i = 1; i < chain.elements; ++i) {
+    const double share = chain.grounded_share_m(i);
+    node[static_cast<std::size_t>(i)].diagonal() << chain.foundation_tangential_n_per_m2 * share,
+        chain.foundation_vertical_n_per_m2 * share;
+  }
+  return node;
+}
+
+FeMatrices assemble_inplane(const FeChain& chain) {
+  const int N = chain.elements;
+  FeMatrices out;
+  out.dofs_per_node = 2;
+  std::vector<Eigen::Matrix2d> element(static_cast<std::size_t>(N)), node(static_cast<std::size_t>(N) + 1);
+  for (int j = 0; j < N; ++j) {
+    const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
+    const Eigen::Matrix2d ttT = t * t.transpose();
+    element[static_cast<std::size_t>(j)] =
+        (chain.axial_stiffness_n[j] / chain.element_length_m[j]) * ttT +
+        (chain.tension_n[j] / chain.stretched_length_m[j]) * (Eigen::Matrix2d::Identity() - ttT);
+  }
+  for (int i = 1; i < N; ++i) {
+    // The node tangent bisects the two element directions; the mass is m along it and M across.
+    const Vec2 t = (chain.direction[static_cast<std::size_t>(i) - 1] +
+                    chain.direction[static_cast<std::size_t>(i)])
+                       .normalized();
+    const Vec2 nrm(-t.y(), t.x());
+    const Eigen::Matrix2d ttT = t * t.transpose(), nnT = nrm * nrm.transpose();
+    if (same_section(chain, i) && !has_point(chain, i)) {
+      // The uniform cable's expression, kept term for term so its results stay bit-identical.
+      node[static_cast<std::size_t>(i)] =
+          chain.element_length_m[i] * (chain.mass_kg_per_m[i] * t * t.transpose() +
+                                       chain.normal_mass_kg_per_m[i] * nrm * nrm.transpose());
+    } else {
+      // A joint or a point: each half element keeps its own frame. At a point weight the static
+      // line has a kink (an O(1) angle between the elements); lumped in the bisector frame, the
+      // half elements' masses would be off by O(1) on one node, an O(h) error in every frequency
+      // that Richardson's h^2 model cannot remove (docs/explanation/methods/fe.md, "Lines").
+      node[static_cast<std::size_t>(i)] = half_element_mass(chain, i - 1) + half_element_mass(chain, i);
+    }
+    const FeNodeInertia& point = chain.node_inertia[static_cast<std::size_t>(i)];
+    if (point.tangential_kg > 0.0 || point.normal_kg > 0.0)
+      node[static_cast<std::size_t>(i)] += point.tangential_kg * ttT + point.normal_kg * nnT;
+  }
+  const std::vector<Eigen::Matrix2d> foundation = inplane_foundation(chain);
+  fill_block_tridiagonal<2>(out.stiffness, element, node, N, false, foundation.empty() ? nullptr : &foundation);
+  fill_block_tridiagonal<2>(out.mass, element, node, N, true);
+  // Columns 0-1: node a's (x, z); columns 2-3: node b's.
+  const Eigen::Index n = out.stiffness.rows();
+  std::vector<Eigen::Triplet<double>> b_entries;
+  for (int r = 0; r < 2; ++r) {
+    for (int c = 0; c < 2; ++c) {
+      b_entries.emplace_back(r, c, -element.front()(r, c));
+      b_entries.emplace_back(n - 2 + r, 2 + c, -element.back()(r, c));
+    }
+  }
+  out.boundary_coupling.resize(n, 4);
+  out.boundary_coupling.setFromTriplets(b_entries.begin(), b_entries.end());
+  return out;
+}
+
+FeMatrices assemble_outofplane(const FeChain& chain) {
+  const int N = chain.elements;
+  FeMatrices out;
+  out.dofs_per_node = 1;
+  using Block = Eigen::Matrix<double, 1, 1>;
+  std::vector<Block> element(static_cast<std::size_t>(N)), node(static_cast<std::size_t>(N) + 1);
+  // Only the string part T/l resists motion normal to the plane.
+  for (int j = 0; j < N; ++j)
+    element[static_cast<std::size_t>(j)](0, 0) = chain.tension_n[j] / chain.stretched_length_m[j];
+  for (int i = 1; i < N; ++i) {
+    node[static_cast<std::size_t>(i)](0, 0) =
+        (same_section(chain, i) ? chain.element_length_m[i] * chain.normal_mass_kg_per_m[i]
+                                : half_sum(chain, chain.normal_mass_kg_per_m, i)) +
+        chain.node_inertia[static_cast<std::size_t>(i)].outofplane_kg;
+  }
+  const std::vector<Block> foundation = outofplane_foundation(chain);
+  fill_block_tridiagonal<1>(out.stiffness, element, node, N, false, foundation.empty() ? nullptr : &foundation);
+  fill_block_tridiagonal<1>(out.mass, element, node, N, true);
+  const Eigen::Index n = out.stiffness.rows();
+  const std::vector<Eigen::Triplet<double>> b_entries = {{0, 0, -element.front()(0, 0)},
+                                                   {static_cast<int>(n) - 1, 1, -element.back()(0, 0)}};
+  out.boundary_coupling.resize(n, 2);
+  out.boundary_coupling.setFromTriplets(b_entries.begin(), b_entries.end());
+  return out;
+}
+
+FeMatrices assemble(Plane plane, const FeChain& chain) {
+  return plane == Plane::InPlane ? assemble_inplane(chain) : assemble_outofplane(chain);
+}
+
+int fe_unknowns(Plane plane, int elements) { return (plane == Plane::InPlane ? 2 : 1) * (elements - 1); }
+
+}  // namespace catena::internal

@@ -1,0 +1,23 @@
+#pragma once
+/// \file
+/// Where `fe`'s linear dynamics on the seabed is singular (docs/explanation/methods/fe.md, "Seabed contact"):
+/// a grounded stretch left without static tension by the seabed friction resists transverse motion
+/// only through the foundation, so a plane whose foundation stiffness is zero there has a
+/// continuum of zero frequencies. Such a plane is declined with what to change.
+
+#include <optional>
+#include <string>
+
+#include "catena/core/types.hpp"
+#include "catena/statics/elastic_catenary.hpp"
+
+namespace catena::internal {
+
+/// Unstretched length of the grounded stretch with zero static tension [m] (0 without contact).
+double slack_grounded_length_m(const StaticSolution& statics);
+
+/// Why `plane` has no well-posed dynamics on this seabed contact (a slack grounded stretch and no
+/// foundation stiffness across it: k_t out of plane, k_s in plane); nullopt when it has.
+std::optional<std::string> seabed_plane_singular(Plane plane, const StaticSolution& statics);
+
+}  // namespace catena::internal

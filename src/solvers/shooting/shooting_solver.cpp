@@ -1,0 +1,321 @@
+// The `shooting` solver: frequencies by conjugate-point counting and root refinement on the
+// principal solutions, shapes from the null vector, forced response by superposition
+// (see include/catena/solvers/shooting_solver.hpp for the method). This file holds the options,
+// the knob table and ShootingNumerics, which runs one plane as: integrator
+// (internal/shooting_integrator), root finder (internal/shooting_root_finder), modes
+// (internal/shooting_modes); the forced response is internal/shooting_forced.
+#include "catena/solvers/shooting_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+
+#include "catena/core/error.hpp"
+#include "solvers/common/knob_table.hpp"
+#include "solvers/common/line_applicability.hpp"
+#include "solvers/shooting/shooting_coefficients.hpp"
+#include "solvers/shooting/shooting_forced.hpp"
+#include "solvers/shooting/shooting_integrator.hpp"
+#include "solvers/shooting/shooting_modes.hpp"
+#include "solvers/shooting/shooting_root_finder.hpp"
+#include "solvers/common/solver_driver.hpp"
+#include "solvers/common/solver_entries.hpp"
+#include "solvers/common/work_meter.hpp"
+
+namespace catena {
+
+std::string to_string(ShootingMethod method) {
+  switch (method) {
+    case ShootingMethod::RungeKutta: return "rk";
+    case ShootingMethod::Adams: return "adams";
+    case ShootingMethod::Bdf: return "bdf";
+  }
+  return "?";
+}
+
+double ShootingSolverOptions::effective_absolute_tolerance() const {
+  return absolute_tolerance > 0.0 ? absolute_tolerance : relative_tolerance / 100.0;
+}
+
+double ShootingSolverOptions::effective_root_tolerance() const {
+  return root_tolerance > 0.0 ? root_tolerance : relative_tolerance;
+}
+
+namespace internal {
+
+const KnobTable<ShootingSolverOptions>& shooting_knobs() {
+  using O = ShootingSolverOptions;
+  static const KnobTable<O> table(
+      "shooting",
+      {real_knob("rtol", &O::relative_tolerance, Range::closed(1e-14, 1e-2),
+                 "relative tolerance of the integration"),
+       real_knob("atol", &O::absolute_tolerance, Range::closed(0.0, 1e-2),
+                 "absolute tolerance of the integration on the scaled state (0: rtol/100)"),
+       real_knob("root_tolerance", &O::root_tolerance, Range::closed(0.0, 1e-2),
+                 "relative width of the final frequency bracket (0: rtol)"),
+       choice_knob("method", &O::method,
+                   {{"rk", ShootingMethod::RungeKutta},
+                    {"adams", ShootingMethod::Adams},
+                    {"bdf", ShootingMethod::Bdf}},
+                   "explicit Runge-Kutta 6(5), or CVODE's Adams or BDF"),
+       choice_knob("nonlinear_solver", &O::fixed_point_iteration,
+                   {{"newton", false}, {"fixed_point", true}},
+                   "CVODE's Newton (dense LU, analytic Jacobian) or fixed-point iteration"),
+       integer_knob("max_steps", &O::max_steps, Range::at_least(100),
+                    "maximum integration steps per shot"),
+       real_knob("max_condition", &O::max_condition, Range::closed(2.0, 1e8),
+                 "re-orthonormalise the principal pair when cond(Gram) exceeds this"),
+       flag_knob("error_estimate", &O::error_estimate,
+                 "one extra shot per mode at 100x tighter tolerances"),
+       choice_knob("root_finder", &O::newton, {{"newton", true}, {"brent", false}},
+                   "refine each root by Newton with the shot's frequency derivative, or by Brent")});
+  return table;
+}
+
+}  // namespace internal
+
+void ShootingSolverOptions::validate() const { internal::shooting_knobs().validate(*this); }
+
+namespace internal {
+namespace {
+
+IntegratorSettings integrator_settings(const ShootingSolverOptions& options) {
+  IntegratorSettings settings;
+  settings.relative_tolerance = options.relative_tolerance;
+  settings.absolute_tolerance = options.effective_absolute_tolerance();
+  settings.method = options.method;
+  settings.fixed_point = options.fixed_point_iteration;
+  settings.max_steps = options.max_steps;
+  settings.max_condition = options.max_condition;
+  return settings;
+}
+
+// The accuracy each frequency is asked for: the integration's 10 rtol (what a shot at rtol
+// typically moves a root by; the error estimate measures it) plus the final bracket's width.
+double accuracy_target(const ShootingSolverOptions& options) {
+  return 10.0 * options.relative_tolerance + options.effective_root_tolerance();
+}
+
+RootFinderSettings root_finder_settings(const ShootingSolverOptions& options) {
+  RootFinderSettings settings;
+  settings.relative_tolerance = options.relative_tolerance;
+  settings.root_tolerance = options.effective_root_tolerance();
+  settings.error_estimate = options.error_estimate;
+  settings.target = accuracy_target(options);
+  settings.estimate_floor = settings.target;
+  return settings;
+}
+
+std::string resolution(const ShootingSolverOptions& options) {
+  const std::string method = options.method == ShootingMethod::RungeKutta
+                                 ? "Runge-Kutta 6(5)"
+                                 : "CVODE " + to_string(options.method);
+  return fmt::format("{} rtol {:.1e} atol {:.1e}, root bracket {:.1e}", method, options.relative_tolerance,
+                     options.effective_absolute_tolerance(), options.effective_root_tolerance());
+}
+
+// A plane whose frequencies could not be found: the integrator failed (the reason says where).
+void mark_failed(Plane plane, const ShootingFailure& failure, SolverSummary& summary) {
+  summary.termination = Termination::NumericalFailure;
+  summary.message = fmt::format("Numerical failure ({}): {}", to_string(plane), failure.what());
+}
+
+// Friction that brings the static tension on the seabed to zero leaves that stretch with no
+// transverse stiffness but the foundation's: the equations divide by T there, in both planes.
+std::optional<std::string> slack_on_seabed(const StaticSolution& statics) {
+  if (!statics.has_contact() || statics.anchor_horizontal_force_n() > 0.0) return std::nullopt;
+  return fmt::format(
+      "the seabed friction (seabed.friction = {:.6g}) brings the static tension on the grounded "
+      "part to zero before the anchor (H = {:.6g} N < C_B w L_g): that stretch has no transverse "
+      "stiffness but the foundation's and the transverse equations of both planes are singular "
+      "there; lower seabed.friction below H / (w L_g) or shorten the grounded length",
+      statics.seabed().friction, statics.horizontal_force_n());
+}
+
+// The numerics of the shooting solver for one problem.
+class ShootingNumerics final : public SolverNumerics {
+ public:
+  ShootingNumerics(const SolveContext& context, const ShootingSolverOptions& options)
+      : context_(context), options_(options) {}
+
+  std::optional<std::string> not_applicable() const override;
+  std::optional<Outcome> prepare() override {
+    k_ = ShootingCoefficients::from_statics(context_.statics);
+    return std::nullopt;
+  }
+  void describe(SolverSummary& summary) const override;
+  ModalResult modes(Plane plane, int count) override;
+  ForcedOutcome forced(const ForcedRequest& request) override {
+    WorkMeter meter(context_, "shooting", "forced frequencies", static_cast<long>(request.omegas_rad_s.size()));
+    ForcedOutcome outcome = shooting_forced_responses(k_, request, context_.request.stations_m(k_.length_m),
+                                                      integrator_settings(options_), &meter);
+    mark_time_limit(meter, outcome.summary);
+    return outcome;
+  }
+
+ private:
+  void add_modes(ShootingIntegrator& integrator, const std::vector<Root>& roots, Plane plane,
+                 int count, ModalResult& result) const;
+  void finish_summary(const ShootingRootFinder& finder, const ShootingIntegrator& integrator,
+                      Plane plane, int count, ModalResult& result) const;
+
+  const SolveContext& context_;
+  ShootingSolverOptions options_;
+  ShootingCoefficients k_;
+};
+
+// The equations divide by the static tension: where it vanishes inside the cable (a slack
+// vertical cable), the principal solutions are not defined.
+std::optional<std::string> ShootingNumerics::not_applicable() const {
+  const StaticSolution& statics = context_.statics;
+  if (auto reason = slack_on_seabed(statics)) return reason;
+  const double L = statics.cable().length_m;
+  const double V_A = statics.vertical_force_a_n();
+  const double V_B = statics.vertical_force_n(L);
+  if (statics.horizontal_force_n() <= 0.0 && V_A * V_B <= 0.0) {
+    return std::string("the static tension vanishes inside the cable (H = 0 and V changes sign)");
+  }
+  return std::nullopt;
+}
+
+void ShootingNumerics::describe(SolverSummary& summary) const {
+  summary.resolution = resolution(options_);
+  summary.notes.push_back(
+      "exact linearisation about the closed-form static catenary; A^{-1} used, so EA = inf is "
+      "exact (no penalty); counting by the conjugate points of the principal solution (phase of "
+      "det(Phi + iF), Morse index / Sturm)");
+  const char* how = "integrated piece by piece, matched to the suspended part at the touchdown point";
+  if (auto note = seabed_model_note(context_.statics, how)) summary.notes.push_back(*note);
+}
+
+// Frequencies (and shapes, tension) of one plane. A straight (vertical, H = 0) inextensible
+// cable: the axial direction is rigid, det Phi(L) vanishes identically, and the in-plane problem
+// is the transverse string alone, which is the out-of-plane equation for the normal displacement.
+ModalResult ShootingNumerics::modes(Plane plane, int count) {
+  ModalResult result;
+  SolverSummary& summary = result.summary;
+  summary.resolution = resolution(options_);
+  summary.accuracy_target = accuracy_target(options_);
+  const bool string_only = plane == Plane::InPlane && is_straight_inextensible(k_);
+  if (string_only) {
+    summary.notes.push_back(
+        "straight inextensible cable: in-plane modes are the transverse string modes (normal "
+        "displacement w, u = 0); the axial direction is rigid and its constant dynamic tension is "
+        "statically indeterminate (reported as 0)");
+  }
+  const Plane integration_plane = string_only ? Plane::OutOfPlane : plane;
+  std::optional<ShootingIntegrator> integrator;
+  try {
+    integrator.emplace(integration_plane, k_, integrator_settings(options_));
+  } catch (const ShootingFailure& failure) {
+    mark_failed(plane, failure, summary);
+    return result;
+  }
+  // String estimate of the (n+1)-th frequency, nudged off the exact string values.
+  const double guess = (count + 1.37) * kPi / transverse_travel_time(k_);
+  ShootingRootFinder finder(
+      [&integrator](double omega, double factor) { return integrator->shoot(omega, factor); },
+      root_finder_settings(options_), guess, integration_plane == Plane::OutOfPlane);
+  // A line with point attachments keeps Brent: near a mode localised at a heavy point the count
+  // steps steeply, Newton's safeguard shoots slopes it does not use, and its fewer shots cost
+  // more time (docs/explanation/methods/shooting.md, "Newton refinement"). Segments alone do not: three
+  // identical segments cost 1.9x the one-segment cable out of plane with Brent.
+  if (options_.newton && k_.points.empty()) {
+    finder.set_slope_shots([&integrator](double omega, double factor) {
+      return integrator->shoot(omega, factor, nullptr, false, true);
+    });
+  }
+  WorkMeter meter(context_, "shooting", std::string(to_string(plane)) + " modes", count);
+  try {
+    const std::vector<Root> roots = finder.find(count, summary.warnings, &meter);
+    add_modes(*integrator, roots, plane, count, result);
+  } catch (const ShootingFailure& failure) {
+    mark_failed(plane, failure, summary);
+    summary.iterations = finder.shots();
+    summary.operations = integrator->total_rhs_evaluations();
+    return result;
+  }
+  finish_summary(finder, *integrator, plane, count, result);
+  mark_time_limit(meter, summary);
+  return result;
+}
+
+// Modes of the roots, clustered: roots closer than the integration can resolve form one
+// (numerically) multiple root whose null space is spanned by the smallest singular vectors of
+// Phi(L) together. A failing shape shot keeps the modes built so far, with a warning.
+void ShootingNumerics::add_modes(ShootingIntegrator& integrator, const std::vector<Root>& roots,
+                                 Plane plane, int count, ModalResult& result) const {
+  SolverSummary& summary = result.summary;
+  const double merge =
+      1000.0 * std::max(options_.relative_tolerance, options_.effective_root_tolerance());
+  const std::vector<std::vector<Root>> clusters = cluster_roots(roots, merge);
+  if (clusters.size() < roots.size()) {
+    summary.notes.push_back(fmt::format(
+        "{} groups of frequencies closer than {:.1e} (relative): shapes from the joint null space, "
+        "mass-orthogonalised",
+        roots.size() - clusters.size(), merge));
+  }
+  const bool string_only = plane == Plane::InPlane && is_straight_inextensible(k_);
+  ShootingModeBuilder builder(integrator, k_, context_, plane, string_only);
+  try {
+    for (const std::vector<Root>& cluster : clusters) builder.add_cluster(cluster, count, result.modes);
+  } catch (const ShootingFailure& failure) {
+    summary.warnings.push_back(fmt::format("shapes: {}", failure.what()));
+  }
+  summary.max_error_estimate = builder.max_error();
+  summary.max_residual = builder.max_residual();
+}
+
+void ShootingNumerics::finish_summary(const ShootingRootFinder& finder,
+                                      const ShootingIntegrator& integrator, Plane plane, int count,
+                                      ModalResult& result) const {
+  SolverSummary& summary = result.summary;
+  result.proved_count_below_top = finder.proved_count();
+  summary.iterations = finder.shots();
+  summary.operations = integrator.total_rhs_evaluations();
+  const int found = static_cast<int>(result.modes.size());
+  summary.termination = found == count ? Termination::Converged : Termination::NoConvergence;
+  summary.message = fmt::format(
+      "{}: {} of {} {} modes; conjugate-point count proves {} eigenvalues <= {:.10g} rad/s; max "
+      "relative error estimate {:.2e}",
+      found == count ? "Converged" : "No convergence", found, count, to_string(plane),
+      result.proved_count_below_top, result.modes.empty() ? 0.0 : result.modes.back().omega_rad_s,
+      summary.max_error_estimate);
+  const ShotTally& tally = finder.tally();
+  summary.notes.push_back(fmt::format(
+      "{} shots ({} bracketing by counts, {} refining, {} error estimates, {} tightening), {} integration steps, {} RHS evaluations; principal pair re-orthonormalised {} times "
+      "(max log volume growth {:.3g}); max phase defect {:.2e} rad ({} re-shots for phase); {} "
+      "refinements at tighter tolerances for estimates above the target {:.2g}",
+      finder.shots(), tally.bracketing, tally.refining, tally.estimate, tally.tightening,
+      integrator.total_steps(), integrator.total_rhs_evaluations(),
+      integrator.total_reorthonormalisations(), integrator.max_log_growth(),
+      finder.max_phase_defect(), finder.phase_retries(), finder.tightened(),
+      summary.accuracy_target));
+}
+
+}  // namespace
+
+SolverEntry make_shooting_entry() {
+  return make_solver_entry(
+      "exact linear boundary-value solution: principal solutions integrated by Runge-Kutta 6(5), "
+      "modes counted by conjugate points (Morse index) and refined by safeguarded Newton steps "
+      "with the frequency derivative of the shot (Brent's method as fallback) on a count-aware "
+      "phase function; any sag, inclination, EA (inf exact), added mass",
+      shooting_knobs(), [](const SolveContext& context, const ShootingSolverOptions& options) {
+        return std::make_unique<ShootingNumerics>(context, options);
+      });
+}
+
+}  // namespace internal
+
+SolverOutput solve_shooting(const Problem& problem,
+                            const StaticSolution& statics,
+                            const DimensionlessGroups& groups,
+                            const SolveRequest& request,
+                            const ShootingSolverOptions& options) {
+  return internal::solve_with<internal::ShootingNumerics>("shooting", {problem, statics, groups, request}, options);
+}
+
+}  // namespace catena
