@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The README's two commands on a fresh machine:
 #   make verify   install what is missing, build (Release), run the verification suite
 #   make test     install what is missing, build, run every test (ctest)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Benchmarks of the `airy` solver (Triantafyllou's Airy determinant): time for the first 6
 // in-plane frequencies against the scan step (target <= 1 ms, issue 6), one determinant, and a
 // stress scene with huge Airy arguments (phi = 0.01 deg, lambda^2 = 1e4). Counters: determinant

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Benchmarks of the `asymptotic` solver (Grinfogel 1984): time for the first 6 in-plane
 // frequencies (target <= 20 us, issue 6), with shapes and tension, and the bare eq. (21) roots.
 // Scene: eps = 0.18, phi = 23.46 deg, lambda^2 = 38 (the paper's hybrid-region case).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Benchmarks of the `fe` solver: time, work and accuracy of the lowest 10 modes.
 //
 // BM_FeStages/<plane>/<N>: one mesh, no Richardson: discrete statics + assembly + factorisation +

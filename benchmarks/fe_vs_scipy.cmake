@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # fe against SciPy's eigsh on the same matrices (issues 8 and 17): a plain executable, built with
 # the tests or the benchmarks. Its ctest runs it at tiny sizes only, to keep it working (no timing
 # is asserted; without SciPy the SciPy columns read -1).

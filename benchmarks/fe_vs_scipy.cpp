@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a user sees (issue 17): `fe` on the SI mooring line through the public solve_fe, timed by
 // the wall_time_s it reports (everything the solver does: discrete statics of every mesh,
 // assembly, eigen solves with the error-estimate mesh, inertia proof, mode matching), against what

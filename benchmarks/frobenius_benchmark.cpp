@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Benchmarks of the frobenius solver (Google Benchmark). Target: six in-plane frequencies of a
 // Table B-3 row in at most 5 ms. Built with -DCATENA_BUILD_BENCHMARKS=ON (target
 // catena_frobenius_benchmark).

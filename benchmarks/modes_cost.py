@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """What a scene costs per solver as it asks for more modes (issue 17): 1, 6 and 20 modes in one
 plane at a time, each solver at its defaults, timed by the wall_time_s of the plane's summary that
 `catena solve --json` writes (the solver's own time, statics excluded), each run in a fresh

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """What a Python user would write: SciPy's eigsh in shift-invert mode on Catena's exported fe
 matrices. Usage: scipy_eigsh.py K.mtx M.mtx MODES REPEATS [WARMUP]; runs WARMUP untimed calls
 (default 0: the first call of a process includes SciPy's own set-up), then prints the median wall

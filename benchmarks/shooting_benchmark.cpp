@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Time of the `shooting` solver for the six lowest in-plane or out-of-plane frequencies at the
 // default tolerance (rtol 1e-10), on three scenes: Gale's symmetric catenary (h/b = 0, sag
 // parameter 0.8, inextensible), the physical mooring line of issue 4 (L = 1000 m, W0 = 1000 N/m,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Statics: the (H, V_A) Newton solve of the elastic catenary, and the closed-form evaluation of
 // the static state along the cable. Counters: Newton iterations and the closure error reached.
 #include <benchmark/benchmark.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Time against error for every solver (issue 8): for each scene and solver, sweep the solver's
 // resolution knob, time the solve (median of repeats), and measure the largest relative error of
 // the first six in-plane frequencies against `shooting` at its tightest tolerance. Writes a CSV

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The instruction set everything is compiled for (README.md, "Build"; docs/explanation/methods/fe.md, "Cost").
 # Without a -march flag GCC emits SSE2 only: Eigen's dense products and our Gram-Schmidt loops then
 # work on two doubles at a time without fused multiply-add. With AVX2 and FMA (x86-64-v3: every

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # CATENA_SANITIZE=ON: AddressSanitizer + UndefinedBehaviorSanitizer on everything this project
 # compiles (library, CLI, tests, fuzz driver). Used by `make test-sanitize` (docs/contributing/testing.md).
 #

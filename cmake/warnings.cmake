@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Warnings as the issues ask: -Wall -Wextra -Wpedantic -Wshadow, on our targets only.
 # -Wno-restrict: GCC 12 reports a false -Wrestrict inside std::string assignment at -O2/-O3
 # (GCC bug 105651); it points at libstdc++, not at our code.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Fails when a function in src/ is longer than the project's limit (120 lines; docs/contributing/architecture.md).
 
 Uses Universal Ctags (its `end` field) to find every C++ function definition and its extent.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Checks that the repository explains itself: every repository path cited in a source comment
 exists, and no comment cites a document that is not in the repository (the original design notes
 or the seed papers by their file numbers; cite docs/ and docs/reference/references.md instead).

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Compares two catena report.json files (from `catena verify`): every natural frequency
 (omega_rad_s), forced max |tension| and statics H, keyed by scene, solver, plane and mode.
 Prints the count compared, the largest relative difference and the worst entries; exit 1 when a

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Mutant campaign: thousands of mutated suite scenes through the real CLI (docs/contributing/testing.md, "Fuzzing").
 
 One command, fixed seed, the same mutants on every machine:

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Which folder includes which: a Markdown table for docs/contributing/architecture.md ("Layers").
 
 Scans the #include "..." lines of src/ and include/catena/, maps every file and every included

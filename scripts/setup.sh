@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Installs the Debian packages Catena needs to build, test, benchmark and draw its report.
 # Idempotent: packages already present are not touched; `apt-get update` runs once, only when
 # something is missing. Needs root (or sudo) on a Debian 12 machine.

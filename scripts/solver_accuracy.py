@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Measured accuracy of the exact solvers over the verification suite (docs/explanation/methods/shooting.md,
 "Accuracy over the suite"; docs/explanation/methods/fe.md, "Error estimate").
 

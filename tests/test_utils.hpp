@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Shared test helpers: relative errors measured the same way everywhere, the location of the
 // reference tables, and the check that bad input names its field.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Speed-up of solving 100 scenes on 2 threads against 1 (the GIL is released during solves).
 
     PYTHONPATH=build/python /usr/bin/python3 python/bench/parallel_speedup.py [--repeats 3]

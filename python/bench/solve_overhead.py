@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Overhead of a Python catena.solve(path) call against the same C++ work (read the scene file,
 run_scene with the same options), measured in one process, alternating blocks, medians.
 

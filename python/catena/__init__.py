@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Catena: linear dynamics of cables by five independent solvers, from Python.
 
 The library itself (not a wrapper around the command line): scenes from TOML files or dicts,

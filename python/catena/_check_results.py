@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Another code's results given in memory to catena.check, written as the JSON text of
 `catena check`'s .json format (docs/how-to/check.md) and read by the library's one reader, so that rows
 and columns are checked exactly like a file, with the same messages ("<results>" where a file name

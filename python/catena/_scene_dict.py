@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """A scene given as a Python dict, written as TOML text for the one scene reader.
 
 Dict scenes and file scenes go through the same strict reader (src/io/scene_reader.cpp): this

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The pieces of the extension module catena._catena (docs/reference/python.md), one file per concept, and
 // the conversions they share. Nothing here is called while the GIL is released: every function

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena check` from Python (docs/reference/python.md, "Comparing another code's frequencies"): the other
 // code's results are read by the library's reader (a file, or JSON text that
 // python/catena/_check_results.py builds from rows or columns), and compared by the library's

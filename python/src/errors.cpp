@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Catena's exceptions as Python exceptions (docs/reference/python.md, "Errors"): bad input is a ValueError
 // subclass whose message names the field, as in the CLI.
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The general line (catena::Line, docs/explanation/physics.md "General lines"): segments from end A to end B
 // and point attachments (clump weights, buoys). Every name carries its unit, as in C++.
 #include <pybind11/stl.h>

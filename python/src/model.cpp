@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The building blocks of a problem: Cable (catena::CableProperties), Problem (cable + supports)
 // and the request (SolveRequest, ForcedRequest). Every name carries its unit, as in C++.
 #include <pybind11/stl.h>

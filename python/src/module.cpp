@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The extension module catena._catena; the package python/catena/__init__.py re-exports it with
 // the conveniences written in Python (docs/reference/python.md).
 #include "bindings.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the solvers return (docs/reference/json-layout.md): summaries, modes with their shapes as stations x
 // modes arrays, forced responses and checks. Every array is a new read-only numpy array owning a
 // copy of its values, so none outlives or aliases the C++ object it came from.

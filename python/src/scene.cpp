@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scenes from Python: read from a file or from scene text (a Python dict is written as TOML text
 // by python/catena/_scene_dict.py, so that both go through the one strict reader,
 // src/io/scene_reader.cpp), run by catena::run_scene as `catena solve` runs them, and the Result.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The solver registry from Python: each solver's description and knobs (KnobSpec), and any solver
 // run on its own with its knobs through catena::run_solver, the same driver the CLI uses.
 #include <pybind11/stl.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The shared statics (catena::StaticSolution, solve_statics) and the dimensionless groups.
 #include <pybind11/stl.h>
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Shared fixtures of the Python tests (run by ctest as python_tests: python/CMakeLists.txt sets
 PYTHONPATH to <build>/python, CATENA_CLI to the build's `catena` binary and CATENA_SOURCE_DIR)."""
 

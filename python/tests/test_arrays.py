@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """numpy arrays of results own their memory: they stay valid after the result is freed."""
 
 import gc

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """catena.check: the `catena check` comparison from Python. The same library calls as the CLI, so
 the same JSON and the same messages; a synthetic biased code is recovered; rows, columns and files
 agree; bad rows raise naming the field."""

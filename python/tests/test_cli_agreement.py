@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The module is the library the CLI runs: the mooring scene gives, to the last digit, what
 `catena solve --json` writes."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """A dict scene goes through the same reader as a file: same results, same field names in errors."""
 
 import numpy

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Bad input raises catena.InvalidInput (a ValueError) naming the field, or TypeError for a Python
 value of the wrong type; nothing crashes the interpreter."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """A general line (catena.Line) built in Python gives what the same [line] scene gives, and bad
 segments or points are a ValueError naming the field (docs/reference/python.md, "General lines")."""
 

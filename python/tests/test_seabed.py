@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """A seabed built in Python (catena.Seabed) gives the statics of the same [seabed] scene, and bad
 seabed values are a ValueError naming the field (docs/reference/python.md, "Seabed")."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Every solver and every knob is reachable from Python, through the registry and the typed
 conveniences, and the building blocks give what a scene gives."""
 

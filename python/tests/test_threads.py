@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Solves release the GIL: 8 threads solving scenes concurrently give exactly what serial runs give."""
 
 import sys

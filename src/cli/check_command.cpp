@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena check RESULTS --scene SCENE`: another program's modal results against Catena's certified
 // reference for the same scene (docs/how-to/check.md).
 #include <algorithm>

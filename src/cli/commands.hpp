@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The `catena` subcommands. Each returns the process exit code:
 // 0 ok, 1 a verification check failed, 2 bad input or usage, 3 internal error or a numerical

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena import moordyn DECK --out DIR`: MoorDyn lines as Catena scenes (docs/how-to/moordyn-import.md).
 #include <filesystem>
 #include <fmt/format.h>

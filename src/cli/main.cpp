@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The `catena` command-line tool: solve a scene, run the verification suite, list solvers.
 #include <CLI/CLI.hpp>
 #include <exception>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena report`: the comparison report (Markdown, self-contained HTML, CSV, figures) from the
 // results JSON that `catena verify` wrote.
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What `catena solve` and `catena verify` share: the tables a run checks against, and one rule for
 // the exit code.
 #include "cli/commands.hpp"

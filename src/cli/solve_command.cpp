@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena solve SCENE [--json FILE]`: one scene (or one sweep), every applicable solver.
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena solvers`: the solvers, what they assume, and their knobs (from each solver's knob
 // table, the same declaration that parses and validates them).
 #include <fmt/format.h>

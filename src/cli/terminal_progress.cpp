@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The progress line of `catena solve`: see terminal_progress.hpp.
 #include "cli/terminal_progress.hpp"
 

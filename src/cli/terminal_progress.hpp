@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A one-line progress display on stderr for long solves ("shooting: in-plane modes 37/600"),
 // shown only when stderr is a terminal, so that pipes, tests and CI logs stay clean.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena verify`: every scene under a directory, on all cores, with a summary and report.json.
 #include <charconv>
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/core/version.hpp"
 
 #include <chrono>

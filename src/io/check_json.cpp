@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The JSON of `catena check` (docs/how-to/check.md, "JSON"): every number of the comparison.
 #include <nlohmann/json.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/io/csv_table.hpp"
 
 #include <charconv>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Another program's results for `catena check`: CSV (with an optional long-format shapes CSV) or
 // JSON, validated cell by cell so that every message names the file, the row and the column.
 #include "catena/io/external_results_reader.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/io/file_access.hpp"
 
 #include <cerrno>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/io/findings_reader.hpp"
 
 #include "catena/io/file_access.hpp"

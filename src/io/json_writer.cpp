@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/io/json_writer.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // MoorDyn decks (v1 and v2 layouts) read into plain data (docs/how-to/moordyn-import.md). Written from
 // MoorDyn's documented input format, not from its code.
 #include "catena/io/moordyn_deck.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // MoorDyn lines and chains as Catena scenes (docs/how-to/moordyn-import.md): topology (which lines form a
 // chain through free points, which cannot be represented), geometry (the vertical plane through
 // the held ends), and the conversion of MoorDyn's quantities.

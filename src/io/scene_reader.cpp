@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/io/scene_reader.hpp"
 
 #include <algorithm>

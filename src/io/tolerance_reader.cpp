@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/io/tolerance_reader.hpp"
 
 #include <cmath>

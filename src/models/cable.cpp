@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/models/cable.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/models/seabed.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/statics/dimensionless_groups.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/statics/elastic_catenary.hpp"
 
 #include <Eigen/Dense>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/statics/gale_coordinates.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/statics/line_statics.hpp"
 
 #include <algorithm>

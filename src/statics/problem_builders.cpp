@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/statics/problem_builders.hpp"
 
 #include <boost/math/tools/roots.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/statics/seabed_statics.hpp"
 
 #include <algorithm>

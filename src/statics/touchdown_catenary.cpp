@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/statics/touchdown_catenary.hpp"
 
 #include <boost/math/tools/roots.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Build tool: converts the reviewed TOML tables compiled into the library into JSON, once, at
 // build time, and writes them as C++ string constants (src/io/internal/toml_json.hpp says why).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The convergence study of one mode of another program (docs/how-to/check.md, "Convergence study"):
 // values f_i at resolutions N_i are fitted, three at a time, by f = f_inf + C h^p with h = 1/N
 // (Richardson extrapolation with unequal refinement ratios, the order found, not assumed).

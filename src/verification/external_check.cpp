@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Another program's modes against Catena's certified reference (docs/how-to/check.md): grouping of the
 // results by plane and mode, pairing with Catena's modes, per-resolution errors, the convergence
 // study and the verdict.

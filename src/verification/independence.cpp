@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/verification/independence.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/verification/mutation.hpp"
 
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/verification/scene.hpp"
 
 #include "catena/core/error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena check` as one library call: reference scene, run, certified references, comparison
 // (docs/how-to/check.md).
 #include "catena/verification/scene_check.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena check` end to end on the repository's mooring line (verification/scenes/physical/
 // mooring-line-900m.toml): Catena's own reference frequencies are read back from a first run's
 // JSON, a synthetic "other program" is built from them (f_ref (1 - c / N^2) + bias at four

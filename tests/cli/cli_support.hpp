@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Running the built `catena` binary from tests: its exit code and its combined output.
 

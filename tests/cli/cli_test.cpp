@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The `catena` executable: exit codes (0 ok, 1 failed check, 2 bad input/usage, 3 numerical
 // failure of a scene), error messages on stderr naming file/table/key, and JSON without NaN. Runs
 // the built binary on scenes written to a temporary directory.

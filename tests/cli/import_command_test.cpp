@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena import moordyn` end to end on decks written for these tests (MoorDyn v1 and v2
 // layouts, not copies of published decks): what each line becomes, the conversion of MoorDyn's
 // quantities, a converted [cable] scene that `catena solve` solves, and bad decks (exit 2 naming

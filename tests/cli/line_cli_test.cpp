@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena solve` on general lines (docs/reference/scene-format.md, "General lines", "Statics-only scenes"):
 // a statics-only scene prints the line's table, writes the per-node statics to JSON and runs no
 // solver; bad line input exits 2 naming the entry and field; an analytic solver declines a line.

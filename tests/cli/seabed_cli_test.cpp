@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `catena solve` on a line over a seabed (docs/reference/scene-format.md, "Seabed"): the statics writes the
 // seabed block; fe and shooting solve a line with contact, the other solvers decline it with their
 // reason; a seabed the line does not touch changes no frequency; bad seabed input exits 2 naming the

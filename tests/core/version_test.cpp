@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Provenance strings compiled into the binary.
 #include "catena/core/version.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // catena_scene_fuzz: a standalone mutational fuzzer for the scene reader (docs/contributing/testing.md,
 // "Fuzzing"). GCC has no libFuzzer, so this driver makes its own mutants: deterministic from
 // --seed, from the seed corpus of the suite's scenes, each fed to the reader, the statics and a

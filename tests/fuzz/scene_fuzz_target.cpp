@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The fuzz target (see scene_fuzz_target.hpp).
 #include "scene_fuzz_target.hpp"
 

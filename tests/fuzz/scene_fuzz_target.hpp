@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The fuzz target: one scene text through the reader, the statics and a cheap solver request
 // (docs/contributing/testing.md, "Fuzzing"). Bad input must end as catena::Error; anything else that escapes

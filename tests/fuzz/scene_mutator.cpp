@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Deterministic scene mutations (see scene_mutator.hpp). Each operator changes one thing and says
 // what it did, so that a failing mutant can be understood without diffing it.
 #include "scene_mutator.hpp"

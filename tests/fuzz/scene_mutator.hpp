@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Deterministic mutations of scene text for the scene-reader fuzzer (docs/contributing/testing.md, "Fuzzing").
 // The same corpus, seed and iteration always give the same mutant, on every platform: the random

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The fuzzer's mutator must be reproducible: the integrator re-runs a campaign by its seed and
 // must get the same mutants, and a failure report names an iteration that must rebuild the same
 // input.

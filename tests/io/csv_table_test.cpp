@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // CSV tables: comments, header, typed cells, quoted cells with commas, and a write/read round trip.
 #include "catena/io/csv_table.hpp"
 

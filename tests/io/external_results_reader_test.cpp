@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Reading another program's results for `catena check` (include/catena/io/external_results_reader.hpp):
 // CSV with a long-format shapes CSV, JSON, plane spellings, and bad input naming file, row/path and
 // column. Files are written by the test to a temporary directory.

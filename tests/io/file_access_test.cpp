@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // How catena touches the file system (catena/io/file_access.hpp): input files only when they are
 // regular and small, output written whole or not at all, output locations checked before work,
 // every failure naming the path (escaped when it is not UTF-8).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Reading the reviewed findings: the built-in file parses, and an entry must have exactly its
 // seven keys.
 #include "catena/io/findings_reader.hpp"

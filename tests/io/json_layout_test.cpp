@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // report.json keeps the fields along the cable (mode shapes, forced response curves, the static
 // profile) only when the scene asks for shapes; one record per line; tolerance reasons listed once;
 // the checks as one table per scene.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The results JSON: the documented layout (verification/README.md), null for non-finite values,
 // and the scene error recorded.
 #include "catena/io/json_writer.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Reading `[line]` scenes and statics-only scenes (docs/reference/scene-format.md, "General lines",
 // "Statics-only scenes"). Compared: what the reader builds with what the text says; a one-segment
 // line with the [cable] of the same values; every bad line input names its entry and field.

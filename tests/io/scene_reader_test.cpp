@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Strict scene reading (docs/reference/scene-format.md; errors: docs/contributing/architecture.md, "Errors"). Compared: what the reader builds from scene text with
 // what the text says; and, for every kind of bad input, that the error is the right exception
 // and names the table, the key and the reason.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Reading the tolerance table: the built-in table (verification/tolerances.toml) parses and every
 // rule carries a reason; malformed rules are rejected naming the file and the rule.
 #include "catena/io/tolerance_reader.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // API-level bad input (docs/contributing/architecture.md, "Errors"): every validate() constraint of the cable, supports, request
 // and statics options throws InvalidInput naming the field; statics reports unreachable chords.
 #include <gtest/gtest.h>

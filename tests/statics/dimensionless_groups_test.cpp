@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Frequency units and their conversions through the dimensionless groups.
 #include "catena/statics/dimensionless_groups.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Statics of the elastic catenary (docs/explanation/physics.md).
 // Compared: the Newton solution against its own closure equations, against the inextensible
 // catenary (EA -> inf, observed rate), and against itself after rescaling units. Expected values

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Statics of a general line (docs/explanation/physics.md, "General lines").
 // Compared: a uniform cable split into identical segments against the one-segment solution; a
 // weightless segment against the straight bar it must be; every solution against an independent

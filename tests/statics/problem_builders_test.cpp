@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Problem builders and dimensionless groups (docs/explanation/physics.md, "Dimensionless groups").
 // Compared: (1) Gale's Table A-1 (a/b from the sag parameter, eq. 3.5) and the xi1, xi2 columns of
 // Tables B-3/B-4 (from h/b and the sag parameter), each to its printed precision; (2) a problem

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Statics of a line on a flat seabed (docs/explanation/physics.md, "Seabed contact").
 // Anchors: an independent 50-digit solve of the contact equations (a different formulation: the
 // suspended tension at the fairlead height in closed form from a quadratic, the grounded stretch

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Turchetto's touchdown form of the elastic catenary (Turchetto 2016; docs/reference/references.md, eqs.
 // 1.6-1.10): exact values of the inextensible line, the equilibrium of the suspended part, the
 // closed forms against the general solver (StaticSolution from the lowest point, and solve_statics

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // catena check's comparison logic (include/catena/verification/external_check.hpp) on synthetic
 // "other programs" built from a known reference: a biased code f(N) = f_ref (1 - c h^2) + bias
 // with h = 1/N, an unbiased one, shapes that swap two close modes. Expected values are the

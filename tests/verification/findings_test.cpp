@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // FindingsTable::find matches scene, quantity, mode and solver exactly.
 #include "catena/verification/findings.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Independence: the shared-computation lookup on declared code paths, the registry's declarations,
 // and the identity detector on hand-made check lists.
 #include "catena/verification/independence.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The mutation score of the real harness (builtin tolerance and findings tables) on six scenes
 // from six families: every exact solver's mutation must be caught where another exact solver ran
 // (issue 12's target), and every uncaught one is named in the failure message.

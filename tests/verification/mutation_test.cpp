@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Mutation testing of the harness (docs/explanation/mutation.md): a frequency made wrong beyond its check's
 // tolerance is caught by a frequency check, one within it is reported uncaught, a shape mix is
 // caught by the shape checks, and the accuracy targets follow each solver's knobs.

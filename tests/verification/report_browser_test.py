@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The HTML report in a real browser: renders report.html with headless Chromium and checks that
 the summary, the source-discrepancy section, the per-scene tables and the figures are there and
 that every embedded figure decoded (naturalWidth > 0).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // run_scene: statics, groups and request shared by the solvers, then the checks; the two kinds of
 // scene error (bad input, numerical failure) and the options' validation.
 #include "catena/verification/scene_runner.hpp"

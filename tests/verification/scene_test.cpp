@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scene: the published-quantity names, the solver selection and the conversion of the request
 // to SI units.
 #include "catena/verification/scene.hpp"

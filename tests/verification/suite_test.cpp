@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // run_scenes: results in the order of the scenes whatever the thread count, progress reported
 // once per scene, invalid options rejected before any thread starts.
 #include "catena/verification/suite.hpp"

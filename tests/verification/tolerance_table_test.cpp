@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ToleranceTable::find: the first rule that matches check, solver pair (either order, "*"), scene
 // glob and tag wins.
 #include "catena/verification/tolerance_table.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Regenerates verification/comparisons/grinfogel-eq21-vs-airy-sweep.csv: Grinfogel's eq. (21)
 // (asymptotic solver) against Triantafyllou's Airy determinant (airy solver) over eps, phi and
 // lambda^2, first 8 in-plane modes. Both are asymptotic models of the same cable, so their

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Regenerates two comparison tables of Grinfogel's closed-form modes against the Airy model
 // (Triantafyllou's solution, the paper's own 'exact' reference, solved by catena's airy solver):
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Regenerates verification/comparisons/grinfogel-table-2-2-comparison.csv: every row of Grinfogel
 // (1984)'s tables after Fig. 2.2 (verification/reference/published/grinfogel-1984-table-2-2-
 // frequencies.csv) beside our `asymptotic` value (eq. 21; vs the 'approx' column) and our `airy`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Regenerates verification/comparisons/fe-gale-B3-B4-comparison.csv: every printed entry of Gale
 // (1976) Tables B-3 (in-plane) and B-4 (out-of-plane) frequency ratios w / sqrt(g/a) of the
 // inextensible catenary, against the `fe` solver (N = 800 and 1600 with Richardson, penalty

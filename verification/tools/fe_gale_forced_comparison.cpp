@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Regenerates verification/comparisons/fe-gale-C2-comparison.csv: every row of Gale (1976)
 // Table C-2 (in-plane forced motion of the inextensible catenary: end xi1 fixed, end xi2 driven
 // tangentially with amplitude 0.01 a; printed: the maximum |dynamic tension| / S0, S0 = H) against

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 # Naive, independent check of the in-plane frequency ratios of Gale's inextensible catenary
 # (evidence for the Table B-3 entries that disagree with the fe solver; see
 # verification/comparisons/fe-gale-B3-B4-comparison.csv). Pure Python, no dependencies, no catena code.

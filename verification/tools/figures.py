@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Figures of the Catena report, drawn with matplotlib from the results JSON of `catena verify`.
 
     /usr/bin/python3 verification/tools/figures.py --results build/report/report.json \

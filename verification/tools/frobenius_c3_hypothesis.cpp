@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests a hypothesis for the jump of Gale's Table C-3 tension between xi = -0.880 and -0.629
 // (h/b = 0, sag 0.70, end xi2 driven tangentially by 0.01 a, wf = 1.32 and 1.36): that on the
 // negative side, in the second (ordinary-point) expansion, the sigma-derivatives of U were formed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Deep sag beyond Gale's thesis and convergence in the number of series terms.
 // Writes verification/comparisons/frobenius-deep-sag.csv (h/b = 0, xi2 = -xi1 in {4, 6, 8}: six in-plane
 // and six out-of-plane frequencies at tolerance 1e-12 and 1e-15, their difference, and an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Independent check of the frobenius solver's frequencies: direct numerical integration of the
 // first-order system in sigma (no series, no change of variable), Boost.Odeint Runge-Kutta-Fehlberg
 // 7(8) at tight tolerances, and a scan of the shooting determinant counting its sign changes from

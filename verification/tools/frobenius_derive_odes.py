@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Derives the inextensible-catenary ODEs used by the frobenius solver (sympy), checks them against
 Gale (1976) eqs. 2.35, 2.37, 2.42, 2.44, and prints the polynomial coefficients of the equations in
 eta = |xi| that src/solvers/frobenius/frobenius_odes.cpp encodes.

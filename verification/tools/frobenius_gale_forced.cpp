@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Regenerates verification/comparisons/frobenius-gale-forced-comparison.csv (Gale 1976 Table C-2: max
 // dynamic tension / H for end xi2 driven tangentially with amplitude 0.01 a, xi1 fixed) and
 // verification/comparisons/frobenius-gale-forced-distribution.csv (Table C-3: U, V, T along the cable,

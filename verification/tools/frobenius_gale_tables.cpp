@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Regenerates verification/comparisons/frobenius-gale-comparison.csv: every entry of Gale (1976)
 // Tables B-3 (in-plane), B-4 (out-of-plane) and B-5 (first out-of-plane, 'exact' column) against the
 // frobenius solver. Each row is solved twice: from the printed (h/b, sag parameter) through

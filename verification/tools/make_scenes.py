@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Generates the table-driven scenes of verification/scenes/ from the published tables.
 
 Every row of Gale (1976) Tables B-3, B-4, B-5, C-2, C-3 and of Grinfogel (1984) Table 2.2 becomes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Generates verification/comparisons/shooting-gale-B3-B4-comparison.csv: every printed entry of
 // Gale (1976) Tables B-3 (in-plane) and B-4 (out-of-plane), w / sqrt(g/a) for the inextensible
 // catenary, against the `shooting` solver run with EA = inf exactly.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Generates verification/comparisons/shooting-gale-C2-comparison.csv: Gale (1976) Table C-2, the
 // maximum dynamic tension |tau|max / S0 (S0 = H) of an inextensible catenary whose end xi2 is
 // driven tangentially with amplitude 0.01 a, against the `shooting` solver's forced response

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Generates verification/comparisons/shooting-issue4-cases.csv: the six lowest in-plane and
 // out-of-plane natural frequencies, by the `shooting` solver at rtol 1e-12, of the cases issue 4
 // names for the cross-check against `fe` (Richardson, N = 2000, expected agreement 1e-7):

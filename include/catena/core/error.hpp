@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The exceptions Catena throws (docs/contributing/architecture.md, "Errors"). Only bad input throws, before

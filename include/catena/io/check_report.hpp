@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The output of `catena check` (docs/how-to/check.md): the comparison as JSON (every number: per mode

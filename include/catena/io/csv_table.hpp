@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Reading and writing the small CSV tables of verification/reference/published/ and verification/comparisons/: '#' lines are provenance

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Reading another program's modal results for `catena check` (formats in docs/how-to/check.md):

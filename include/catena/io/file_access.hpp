@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// How catena touches the file system, in one place (docs/reference/scene-format.md, "Limits"): input files

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The JSON documents of `catena solve --json` and `catena verify` (report.json): a public,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Reading a MoorDyn input file (v1 and v2 layouts; docs/how-to/moordyn-import.md) into plain data, for

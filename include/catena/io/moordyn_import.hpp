@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Converting a MoorDyn deck (io/moordyn_deck.hpp) into Catena scenes, one per line or per chain

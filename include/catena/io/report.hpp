@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The comparison report (`catena report`): from the results JSON of `catena verify`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Strict reading of scene files (TOML). Every key is checked: an unknown key, a wrong type, a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The cable and its supports in SI units (docs/explanation/physics.md), and the Problem every solver answers.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// A general line (docs/explanation/physics.md, "General lines"): an ordered list of segments from end A to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// A flat horizontal seabed under a line (docs/explanation/physics.md, "Seabed contact"): its height, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The `airy` solver: Triantafyllou's Airy-function solution of the linear dynamics of a taut

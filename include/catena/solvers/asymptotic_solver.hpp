@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The `asymptotic` solver: Grinfogel's perturbation solution for a taut, inclined, elastic cable

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The `fe` solver (docs/explanation/methods/fe.md): the cable as a chain of N two-node axial bar elements with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The `frobenius` solver (docs/explanation/methods/frobenius.md): Gale's power-series solution of the

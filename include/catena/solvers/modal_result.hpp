@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Results every solver returns, in the same structures (docs/reference/json-layout.md).

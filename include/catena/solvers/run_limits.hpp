@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// A cooperative budget for one run of the solvers: a wall-clock deadline and a progress report

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The `shooting` solver (docs/explanation/methods/shooting.md): the exact linear boundary-value solution of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// What a scene asks the solvers to compute (docs/reference/scene-format.md, `[request]`). Only what is asked is computed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The solvers behind `catena solve` and `catena verify`, by name, with their knobs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// How a result was obtained (after Ceres' Solver::Summary). Defaults mean "never ran".

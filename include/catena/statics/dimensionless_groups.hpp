@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The dimensionless groups of docs/explanation/physics.md ("Dimensionless groups"), computed for any problem, and the frequency

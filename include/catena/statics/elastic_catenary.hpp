@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Statics of a uniform elastic (or inextensible) cable hanging between two supports

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Gale's end coordinate xi and the catenary slope parameter sigma = V/H (Gale 1976; see

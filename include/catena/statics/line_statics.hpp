@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Statics of a general line (docs/explanation/physics.md, "General lines"): segments of different sections,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Builders of a physical Problem from the dimensionless forms of the published papers (docs/explanation/physics.md, "Dimensionless groups").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Statics of a line over a flat seabed (docs/explanation/physics.md, "Seabed contact"): end A (the anchor)

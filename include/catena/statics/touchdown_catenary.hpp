@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The touchdown form of the elastic catenary (Turchetto 2016, docs/reference/references.md, eqs. 1.6-1.10): a mooring

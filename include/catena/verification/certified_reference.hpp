@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Catena's certified reference for `catena check` (docs/how-to/check.md, "The reference"): of the two

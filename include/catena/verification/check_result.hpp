@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// One cross-check and its verdict (docs/reference/verdicts.md).

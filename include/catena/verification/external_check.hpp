@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Checking another program's natural frequencies, and optionally its mode shapes and dynamic

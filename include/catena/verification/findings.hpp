@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Reviewed findings about published tables (verification/findings.toml): entries where a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The condition number of a forced response (docs/reference/verdicts.md, "Forced response: conditioning"):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Two solvers that compute a quantity by the same code are one witness, not two

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Mutation testing of the verification harness (`catena verify --mutation`, docs/explanation/mutation.md):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// A scene: one cable, one request, optionally which solvers (with knobs), check tolerances and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// `catena check` as one library call (docs/how-to/check.md): another program's results against Catena's

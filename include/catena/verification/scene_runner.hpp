@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Runs one scene: statics once (shared by every solver), then each applicable solver on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Running many scenes on all cores (the engine of `catena verify` and `catena report`).

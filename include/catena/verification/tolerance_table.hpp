@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Expected agreement, held as reviewed data (verification/tolerances.toml, after Boost.Math's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/internal/check_table.hpp"
 
 #include "io/internal/results_keys.hpp"

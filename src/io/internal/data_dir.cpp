@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/internal/data_dir.hpp"
 
 #include <system_error>

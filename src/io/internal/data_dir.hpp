@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the data files the binary needs at run time live (the figure script, the module of JSON
 // key names it imports, the transcribed published tables, the benchmark baselines):

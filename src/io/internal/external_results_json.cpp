@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/internal/external_results_json.hpp"
 
 #include <fmt/format.h>

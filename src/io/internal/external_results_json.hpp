@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The JSON form of another program's results for `catena check` (layout in
 // include/catena/io/external_results_reader.hpp and docs/how-to/check.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/internal/json_records.hpp"
 
 namespace catena::internal {

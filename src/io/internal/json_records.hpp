@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The results JSON's text layout: objects one key per line, but each element of an array of
 // records (a check, a mode, a forced response; not a scene, which holds records itself), each flat

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/internal/moordyn_scene_text.hpp"
 
 #include <algorithm>

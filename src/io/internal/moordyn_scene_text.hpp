@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A chain of MoorDyn lines described in Catena's terms (docs/how-to/moordyn-import.md), and written as
 // a scene: `[cable]` for one uniform line, `[line]` with segments and points otherwise, `[seabed]`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/internal/process.hpp"
 
 #include <cerrno>

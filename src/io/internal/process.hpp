@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Running an external program (the report's figure script) without a shell: the arguments go to
 // the program as they are, so paths with spaces or quotes need no quoting.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // TOML documents as JSON and back: see toml_json.hpp.
 #include "io/internal/toml_json.hpp"
 

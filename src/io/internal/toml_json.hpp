@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // TOML documents as JSON and back, for the tables compiled into the library
 // (verification/tolerances.toml and findings.toml). toml11 takes 3.5-5 ms to parse those 15 KB,

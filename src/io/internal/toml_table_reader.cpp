@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/internal/toml_table_reader.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Strict reading of TOML tables, shared by every TOML format of io/ (scenes, the tolerance table,
 // the findings): every key a reader asks for is recorded and finish() rejects the rest, so an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Markdown and HTML report of `catena check` (docs/how-to/check.md, "Report"), built with the
 // report's document model (io/report/document.hpp) and the library's own SVG plots.
 #include <cmath>

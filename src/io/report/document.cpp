@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/report/document.hpp"
 
 #include <cstdint>

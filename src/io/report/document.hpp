@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A tiny document model of the report, rendered twice: Markdown for people reading diffs, HTML
 // (self-contained, figures embedded) for browsers.

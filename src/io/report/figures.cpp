@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/report/figures.hpp"
 
 #include <fmt/format.h>

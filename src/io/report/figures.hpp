@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The report's figures: figures.py (matplotlib) run on the results JSON through run_process (no
 // shell), its index.json read back.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The analytic models' actual error (asymptotic, airy) against the most accurate exact solver
 // that ran, over the suite: by eps with lambda^2 and phi ranges, and the fitted order in eps.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The mutation score of `catena verify --mutation` (docs/explanation/mutation.md): by solver and scene
 // family, by solver and quantity, and every uncaught mutation.
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/report/report_data.hpp"
 
 #include <algorithm>

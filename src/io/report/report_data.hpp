@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The report's inputs and CSV outputs: the results JSON read back (by the key names of
 // io/results_keys.txt), the data/*.csv tables written beside the report, and the benchmark

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/io/report.hpp"
 
 #include <fmt/format.h>

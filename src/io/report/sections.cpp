@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/report/sections.hpp"
 
 #include <algorithm>

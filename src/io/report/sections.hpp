@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The sections of the report, each built from the results JSON into the document model.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/report/svg_plot.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small log-log line plots drawn as SVG by the library itself (no Python needed), embedded in the
 // HTML report like the matplotlib figures (document.hpp's Image, by file extension).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The headline tables (checks by kind and by solver pair) and the source discrepancies, one row
 // per published entry.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // J0 and Y0 in modulus-phase form (see airy_bessel_phase.hpp): Boost.Math for small arguments,
 // the Hankel expansion for large ones.
 #include "solvers/airy/airy_bessel_phase.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Bessel functions of order zero in modulus-phase form (DLMF 10.18), for the `airy` solver's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The 4x4 boundary system of the Airy model: station rows, column exponents, equilibration.
 #include "solvers/airy/airy_boundary_system.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The 4x4 boundary system of the Airy model, u(0) = w(0) = u(L) = w(L) = 0 (Grinfogel 1984,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scaled Airy functions. Reference path (scaled_airy_boost): Boost.Math below
 // kAirySeriesThreshold, the large-argument asymptotic series above it (DLMF 9.7.5-9.7.8,
 // coefficients u_k, v_k of DLMF 9.7.2; Bi's recessive part, relative e^{-2 zeta} < 1e-72 at the

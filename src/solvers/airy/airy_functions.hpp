@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Airy functions with their exponential factors split off, for the `airy` solver: for x > 0,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Mode shapes of the Airy model from the null vector of its boundary system.
 #include "solvers/airy/airy_mode_shape.hpp"
 

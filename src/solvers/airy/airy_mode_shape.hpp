@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The mode shape of the Airy model at a root (docs/explanation/methods/airy.md): the null vector of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The omega-independent part of the Airy model: end statics, travel time, linear fit of Q(s).
 #include "solvers/airy/airy_model.hpp"
 

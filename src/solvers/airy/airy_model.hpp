@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The omega-independent part of Triantafyllou's Airy model (docs/explanation/methods/airy.md; notation in

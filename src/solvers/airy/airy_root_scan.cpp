@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Roots of the Airy boundary determinant: scan in kL, sign changes and |det| minima, TOMS 748.
 #include "solvers/airy/airy_root_scan.hpp"
 

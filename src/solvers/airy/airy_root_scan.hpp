@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The roots kL of the Airy boundary determinant (docs/explanation/methods/airy.md): a scan in kL from a

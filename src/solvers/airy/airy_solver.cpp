@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Triantafyllou's Airy-function solution (Grinfogel 1984, eqs. 7-16; docs/explanation/methods/airy.md): the
 // solver's knobs, applicability and numerics. The model, its boundary determinant, the root scan
 // and the mode shapes are in src/solvers/airy/airy_*; the out-of-plane string of linear

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The out-of-plane string of linear tension, solved by Bessel functions of order zero (see
 // airy_tension_string.hpp and docs/explanation/methods/airy.md).
 #include "solvers/airy/airy_tension_string.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The `airy` solver's out-of-plane model (docs/explanation/methods/airy.md): the string

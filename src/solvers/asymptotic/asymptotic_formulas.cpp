@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Grinfogel's shape formulas (34), (28), (37). Transcribed from the
 // paper's printed equations after checking them against their own derivation (eqs. 24, 27, 29,
 // 32): w(0) = 0 exactly, and the second-order near-cross-over bracket of (34) is multiplied by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Closed-form in-plane mode shapes of Grinfogel (1984) used by the asymptotic solver (notation

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Grinfogel's (1984) asymptotic solution for the taut inclined cable: eq. (21) frequencies, WKB
 // out-of-plane frequencies, eqs. (34)/(28)/(37) shapes and eq. (38) tension. The notation and
 // the bracketing argument that makes the root count exact are in asymptotic_solver.hpp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The asymptotic solver's WKB out-of-plane string modes (see asymptotic_wkb_string.hpp).
 #include "solvers/asymptotic/asymptotic_wkb_string.hpp"
 

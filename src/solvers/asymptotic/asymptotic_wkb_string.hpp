@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The asymptotic solver's out-of-plane modes (docs/explanation/methods/asymptotic.md): the WKB string,

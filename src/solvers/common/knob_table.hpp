@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// A solver's knobs, declared once: name, the options field it sets, type, valid range, help.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Which solvers take a general line (docs/explanation/physics.md, "General lines"): the analytic models

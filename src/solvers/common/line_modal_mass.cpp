@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The modal mass of a general line's mode: see line_modal_mass.hpp.
 #include "solvers/common/line_modal_mass.hpp"
 

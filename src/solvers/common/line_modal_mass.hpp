@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The modal mass of a mode of a general line (catena/models/line.hpp) on its stations, shared by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "solvers/common/mode_tools.hpp"
 
 #include <cmath>

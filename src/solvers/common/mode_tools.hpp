@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Helpers every solver uses to fill the common result structs the same way: frequency units,

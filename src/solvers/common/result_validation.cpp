@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The checks every solver's results pass in the solver skeleton: see result_validation.hpp.
 #include "solvers/common/result_validation.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/solvers/run_limits.hpp"
 
 #include <cmath>

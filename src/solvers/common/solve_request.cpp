@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/solvers/solve_request.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The one solver skeleton: see solver_driver.hpp for the steps and the combination rule.
 #include "solvers/common/solver_driver.hpp"
 

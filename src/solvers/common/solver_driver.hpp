@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The one solver skeleton (docs/contributing/architecture.md, "Solver skeleton"). A solver implements

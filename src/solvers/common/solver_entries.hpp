@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Each solver's registry entry, defined next to the solver (src/solvers/<name>_solver.cpp).

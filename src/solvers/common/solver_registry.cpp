@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/solvers/solver_registry.hpp"
 
 #include "solvers/common/solver_driver.hpp"

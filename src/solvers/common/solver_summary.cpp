@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "catena/solvers/solver_summary.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The small-strain limit and the knobs shared by the asymptotic and airy solvers (see
 // taut_cable_theory.hpp).
 #include "solvers/common/taut_cable_theory.hpp"

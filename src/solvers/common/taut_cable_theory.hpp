@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// What the two analytic solvers (asymptotic and airy) share about a taut, slightly stretched

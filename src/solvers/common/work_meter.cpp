@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Progress and deadline of one part of a run: see work_meter.hpp.
 #include "solvers/common/work_meter.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// One part of a run (a plane's modes, the forced frequencies, ...) measured against the run's

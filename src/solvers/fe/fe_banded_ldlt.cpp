@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "solvers/fe/fe_banded_ldlt.hpp"
 
 #include <algorithm>

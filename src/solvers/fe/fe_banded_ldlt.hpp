@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Symmetric banded LDL^T factorisation without pivoting, for the fe solver's block-tridiagonal

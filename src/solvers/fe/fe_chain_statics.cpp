@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Discrete statics of the fe chain: see fe_chain_statics.hpp and docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_chain_statics.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Discrete statics of the `fe` chain (docs/explanation/methods/fe.md): N two-node bar elements with the weight

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The lowest eigenpairs of one fe operator pair: see fe_eigen.hpp and docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_eigen.hpp"
 

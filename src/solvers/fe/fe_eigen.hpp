@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The lowest eigenpairs of one `fe` operator pair, K phi = omega^2 M phi (docs/explanation/methods/fe.md):

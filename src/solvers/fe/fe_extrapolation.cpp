@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Mode matching and extrapolation of the fe solver: see fe_extrapolation.hpp and docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_extrapolation.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The `fe` solver's extrapolation (docs/explanation/methods/fe.md): modes paired across levels by their shapes

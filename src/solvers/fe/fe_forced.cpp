@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The fe solver's forced response: see fe_forced.hpp and docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_forced.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The `fe` solver's forced response (docs/explanation/methods/fe.md): a harmonic end displacement d imposed by

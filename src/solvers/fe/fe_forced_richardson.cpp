@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Richardson in h of the fe forced response: see fe_forced_richardson.hpp and docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_forced_richardson.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Richardson extrapolation in h of the `fe` forced response (docs/explanation/methods/fe.md, "Forced

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Thick-restart Lanczos with DGKS re-orthogonalisation: see fe_lanczos.hpp and docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_lanczos.hpp"
 

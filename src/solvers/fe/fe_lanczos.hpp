@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Thick-restart Lanczos for the largest-magnitude eigenpairs of a symmetric operator, written for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The fe solver's plan and levels: see fe_levels.hpp and docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_levels.hpp"
 

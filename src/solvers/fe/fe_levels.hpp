@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The `fe` solver's levels (docs/explanation/methods/fe.md): the plan of meshes (N and 2N for Richardson, N/2

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // How fe meshes a line: see fe_line_mesh.hpp and docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_line_mesh.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// How the `fe` chain meshes a line (docs/explanation/methods/fe.md, "Lines"): the line is cut into pieces at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The fe chain's stiffness and mass matrices: see fe_operators.hpp and docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_operators.hpp"
 

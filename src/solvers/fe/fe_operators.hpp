@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The `fe` chain's operators (docs/explanation/methods/fe.md): sparse stiffness K and lumped mass M of one

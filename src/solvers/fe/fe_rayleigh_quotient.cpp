@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The element-wise Rayleigh quotient of an fe mode: see fe_rayleigh_quotient.hpp.
 #include "solvers/fe/fe_rayleigh_quotient.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The eigenvalue of a computed `fe` mode as its Rayleigh quotient, evaluated element by element

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Mesh refinement toward fe's accuracy target: fe_refinement.hpp.
 #include "solvers/fe/fe_refinement.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// How `fe` meets an accuracy target it was asked for (FeSolverOptions::tolerance): when a mode's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Singular planes of the dynamics on the seabed: see fe_seabed_contact.hpp.
 #include "solvers/fe/fe_seabed_contact.hpp"
 

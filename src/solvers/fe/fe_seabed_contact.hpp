@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Where `fe`'s linear dynamics on the seabed is singular (docs/explanation/methods/fe.md, "Seabed contact"):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // From fe nodal displacements to stations: see fe_shapes.hpp and docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_shapes.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// From the `fe` chain's nodal displacements to what a user sees on the request's stations

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The `fe` solver: its knobs, and its numerics on the solver skeleton. The method is documented in
 // fe_solver.hpp and docs/explanation/methods/fe.md; its stages are in internal/fe_*: discrete statics
 // (fe_chain_statics), operators (fe_operators), eigenpairs of one level (fe_eigen), the plan and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The in-plane forced residual from the chain's element data: fe_structured_residual.hpp.
 #include "solvers/fe/fe_structured_residual.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The residual of fe's in-plane forced problem from the chain's own element data, for one step of

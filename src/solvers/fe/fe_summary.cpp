@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The fe solver's summary text: see fe_summary.hpp.
 #include "solvers/fe/fe_summary.hpp"
 

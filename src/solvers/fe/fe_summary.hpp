@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The `fe` solver's summary text: resolution, the notes and message of each plane (mode count

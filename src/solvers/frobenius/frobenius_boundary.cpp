@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scaled boundary matrix of the frobenius solver: see frobenius_boundary.hpp.
 #include "solvers/frobenius/frobenius_boundary.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The boundary problem of one plane of the frobenius solver (docs/explanation/methods/frobenius.md): the

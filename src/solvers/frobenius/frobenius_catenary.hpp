@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Series solutions of the inextensible catenary's linear equations (Gale 1976, sec. II.4;

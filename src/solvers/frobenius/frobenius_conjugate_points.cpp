@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Conjugate-point count of the frobenius solver: see frobenius_conjugate_points.hpp.
 #include "solvers/frobenius/frobenius_conjugate_points.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Fields of the frobenius solver: see frobenius_fields.hpp.
 #include "solvers/frobenius/frobenius_fields.hpp"
 

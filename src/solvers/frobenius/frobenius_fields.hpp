@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The fields of the frobenius solver (docs/explanation/methods/frobenius.md): the combination of the series

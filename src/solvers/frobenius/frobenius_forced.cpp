@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Forced response of the frobenius solver: see frobenius_forced.hpp.
 #include "solvers/frobenius/frobenius_forced.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The forced response of the frobenius solver (docs/explanation/methods/frobenius.md; Gale 1976, eqs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The precision ladder of the frobenius solver: double, then long double, then 113-bit quad,

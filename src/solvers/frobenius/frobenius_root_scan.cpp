@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Root finding of the frobenius solver: see frobenius_root_scan.hpp for the steps.
 #include "solvers/frobenius/frobenius_root_scan.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Root finding of the frobenius solver (docs/explanation/methods/frobenius.md): the natural frequencies of

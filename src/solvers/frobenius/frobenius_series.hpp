@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// A general Frobenius / Taylor power-series engine for linear ODEs with polynomial coefficients,

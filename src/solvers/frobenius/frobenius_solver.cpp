@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The `frobenius` solver: Gale's power series for the inextensible catenary
 // (docs/explanation/methods/frobenius.md). This file holds the options, the applicability rule and the
 // numerics class that ties the parts together; the parts live in src/solvers/frobenius/:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Block lower-triangular linear solves for the shot with the slope: see shooting_block_solver.hpp.
 #include "solvers/shooting/shooting_block_solver.hpp"
 

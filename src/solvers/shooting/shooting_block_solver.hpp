@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// CVODE's linear solver for a shot that carries the frequency derivative

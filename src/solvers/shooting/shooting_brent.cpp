@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Brent's zero finder: see shooting_brent.hpp.
 #include "solvers/shooting/shooting_brent.hpp"
 

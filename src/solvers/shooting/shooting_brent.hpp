@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Brent's zero finder (Brent 1973, "zeroin") as the `shooting` solver uses it: a bracket that

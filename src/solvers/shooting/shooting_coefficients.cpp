@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Static coefficients of the shooting solver: see shooting_coefficients.hpp.
 #include "solvers/shooting/shooting_coefficients.hpp"
 

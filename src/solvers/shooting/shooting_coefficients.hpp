@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The static coefficients the `shooting` solver integrates along s (docs/explanation/methods/shooting.md):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Conjugate-point counting from the end frame: see shooting_conjugate_count.hpp.
 #include "solvers/shooting/shooting_conjugate_count.hpp"
 

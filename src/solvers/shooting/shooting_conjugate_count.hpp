@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Conjugate-point counting for the `shooting` solver (docs/explanation/methods/shooting.md): from the end

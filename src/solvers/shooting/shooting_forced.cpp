@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Forced response by superposition of principal solutions: see shooting_forced.hpp.
 #include "solvers/shooting/shooting_forced.hpp"
 

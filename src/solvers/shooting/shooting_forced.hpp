@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Forced response of the `shooting` solver (docs/explanation/methods/shooting.md): one end of the cable is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The grounded run of a shot: see shooting_grounded.hpp.
 #include "solvers/shooting/shooting_grounded.hpp"
 

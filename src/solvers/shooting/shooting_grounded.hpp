@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The grounded part of a shot (docs/explanation/methods/shooting.md, "Seabed contact: the grounded run"): the

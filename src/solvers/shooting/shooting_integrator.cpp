@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "solvers/shooting/shooting_integrator.hpp"
 
 #include <fmt/format.h>

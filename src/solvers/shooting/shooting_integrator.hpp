@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The integration core of the `shooting` solver (docs/explanation/methods/shooting.md): one "shot" integrates the

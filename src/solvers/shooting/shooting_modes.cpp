@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Modes, shapes and tension from the shooting solver's roots: see shooting_modes.hpp.
 #include "solvers/shooting/shooting_modes.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Mode construction of the `shooting` solver (docs/explanation/methods/shooting.md): the frequencies found

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Profiles along the cable from a shot: see shooting_profile.hpp.
 #include "solvers/shooting/shooting_profile.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Displacement and tension along the cable from one shot of the `shooting` solver: a

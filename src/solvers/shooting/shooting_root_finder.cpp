@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Counting brackets and Brent refinement of the shooting solver's frequencies: see
 // shooting_root_finder.hpp.
 #include "solvers/shooting/shooting_root_finder.hpp"

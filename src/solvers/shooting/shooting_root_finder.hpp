@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The root finder of the `shooting` solver (docs/explanation/methods/shooting.md): brackets each natural

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The next root of a plane from the roots found so far: see shooting_root_prediction.hpp.
 #include "solvers/shooting/shooting_root_prediction.hpp"
 

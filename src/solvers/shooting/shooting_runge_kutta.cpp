@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "solvers/shooting/shooting_runge_kutta.hpp"
 
 #include <arkode/arkode_butcher_erk.h>

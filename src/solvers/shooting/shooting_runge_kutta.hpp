@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// An explicit embedded Runge-Kutta stepper for the shooting solver's small state (3 to 17

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The `shooting` solver: frequencies by conjugate-point counting and root refinement on the
 // principal solutions, shapes from the null vector, forced response by superposition
 // (see include/catena/solvers/shooting_solver.hpp for the method). This file holds the options,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The integrators of a shot: see shooting_steppers.hpp.
 #include "solvers/shooting/shooting_steppers.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The integrators a `shooting` shot can be stepped by ("Integrators" in

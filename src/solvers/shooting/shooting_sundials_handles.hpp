@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// RAII owners of the SUNDIALS objects the shooting solver uses (SUNContext, N_Vector,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The carried linear system of a `shooting` shot (shooting_integrator.hpp, header): the

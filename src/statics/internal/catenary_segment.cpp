@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One piece of elastic catenary in closed form: see catenary_segment.hpp.
 #include "statics/internal/catenary_segment.hpp"
 

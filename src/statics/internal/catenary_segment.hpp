@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Closed forms of one piece of elastic catenary with end forces (H, V_A) at its start

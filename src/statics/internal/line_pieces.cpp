@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Pieces of a general line's statics: see line_pieces.hpp.
 #include "statics/internal/line_pieces.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The pieces of a general line's statics (docs/explanation/physics.md, "General lines"): the line cut at

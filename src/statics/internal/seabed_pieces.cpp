@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Pieces of a line resting partly on the seabed: see seabed_pieces.hpp.
 #include "statics/internal/seabed_pieces.hpp"
 

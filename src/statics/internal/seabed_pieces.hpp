@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The pieces of a line resting partly on a flat seabed (docs/explanation/physics.md, "Seabed contact"): the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "verification/internal/check_builder.hpp"
 
 #include <algorithm>

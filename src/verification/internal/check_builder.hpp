@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Collects the checks of one scene: their common fields, tolerances from the reviewed table (never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "verification/internal/checks.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The checks of a solved scene (docs/reference/verdicts.md).

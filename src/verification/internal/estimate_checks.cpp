@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "verification/internal/estimate_checks.hpp"
 
 #include <cmath>

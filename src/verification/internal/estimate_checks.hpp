@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// The error estimate as a checked claim (docs/reference/verdicts.md, "The estimate as a claim"): each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The natural frequencies behind the forced check's condition number: see
 // forced_conditioning_solve.hpp and docs/reference/verdicts.md.
 #include "verification/internal/forced_conditioning_solve.hpp"

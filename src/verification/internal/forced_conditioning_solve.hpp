@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Finds the natural frequencies behind a scene's forced-response condition number

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "verification/internal/mode_mix.hpp"
 
 #include <cmath>

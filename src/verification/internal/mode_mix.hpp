@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The shape mutation of docs/explanation/mutation.md: a mode shape mixed with a neighbouring mode,
 // phi_n + delta phi_m, renormalised by the convention of catena/solvers/modal_result.hpp.

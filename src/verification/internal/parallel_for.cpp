@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "verification/internal/parallel_for.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Independent work items on a pool of threads (the suite's scenes, the mutations of each scene).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "verification/internal/published_checks.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// \file
 /// Checks against values printed in a source table, and the source-discrepancy rule

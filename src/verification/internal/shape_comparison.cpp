@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "verification/internal/shape_comparison.hpp"
 
 #include <algorithm>

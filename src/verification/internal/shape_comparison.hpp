@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Comparing another program's mode shape (at its stations) with Catena's (at Catena's stations):
 // MAC, and the dynamic tension after scaling the other mode to Catena's (docs/how-to/check.md, "Shapes").

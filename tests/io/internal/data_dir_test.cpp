@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // find_data_dir: <exe dir>/../share/catena when installed, else the build tree's data dir.
 #include "io/internal/data_dir.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // run_process: arguments reach the program unchanged (no shell), the exit status comes back,
 // output can go to a file, and a program that cannot start reports 127.
 #include "io/internal/process.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The built-in tables' JSON form (io/internal/toml_json.hpp): the TOML document rebuilt from it is
 // the one toml11 parses from the file, value for value and type for type.
 #include "io/internal/toml_json.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The strict TOML table reader shared by the scene, tolerance and findings readers.
 #include "io/internal/toml_table_reader.hpp"
 

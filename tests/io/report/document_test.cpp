@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The report's document model rendered as Markdown and HTML.
 #include "io/report/document.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // draw_figures without Python: a stand-in interpreter (a shell script) records the command line it
 // is given and writes the index.json the real figures.py would, so that the arguments, the images
 // read back and every "figures not drawn" note can be checked.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The report's data layer: cells of the results JSON as text, and the CSV tables written beside the
 // report (frequencies, checks, published) read back with csv_table; the benchmark baseline of time
 // against error reduced to the fastest time per accuracy target.

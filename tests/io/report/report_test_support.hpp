@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A small results document in the layout of report.json (docs/reference/json-layout.md), written by hand so
 // that the report's tables can be checked cell by cell: two scenes, four solvers, every verdict.

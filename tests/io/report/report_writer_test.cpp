@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // write_report on a small results JSON: the Markdown and HTML reports, the data tables read back
 // with csv_table, the figure note when figures are off, and a clear error for a bad input file.
 #include "catena/io/report.hpp"

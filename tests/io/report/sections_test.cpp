@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The report's sections built from a hand-written results document (report_test_support.hpp):
 // every table checked cell by cell, including the counts, the units, the published columns, the
 // forced maxima over H and the stress outcomes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The readers' tables: source discrepancies grouped by published entry (one row however many
 // solvers judged it), the headline counts by check kind and by solver pair, the mutation score with
 // every uncaught mutation listed, and the analytic models' fitted order of error in eps.

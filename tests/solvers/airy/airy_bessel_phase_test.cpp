@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of J0, Y0 in modulus-phase form (src/solvers/airy/airy_bessel_phase.cpp): the two
 // branches (Boost below the threshold, Hankel's expansion above) reproduce J0 and Y0, agree with
 // each other, keep the phase continuous and increasing, and stay finite for any argument.

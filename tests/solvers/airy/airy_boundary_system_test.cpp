@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the Airy boundary system (src/solvers/airy/airy_boundary_system.cpp): the station
 // rows against the model's formulas, the column exponents, the equilibration (positive factors:
 // the determinant keeps its sign) and a zero of the determinant at a root computed independently

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the scaled Airy functions (src/solvers/airy/airy_functions.cpp) against Boost.Math's
 // unscaled Ai, Bi, Ai', Bi' and the Wronskian Ai Bi' - Ai' Bi = 1/pi, up to arguments 1e6.
 #include "solvers/airy/airy_functions.hpp"

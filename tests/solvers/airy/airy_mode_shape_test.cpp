@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the Airy mode shapes (src/solvers/airy/airy_mode_shape.cpp): the travel times
 // against the model's whole-span quadrature, and at a root of the determinant a null vector that
 // satisfies the four boundary conditions, which it does not away from a root.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the omega-independent Airy model (src/solvers/airy/airy_model.cpp): the static
 // curvature, the three linear fits of alpha^2(s), the travel time and the Airy argument, each
 // against the exact statics they approximate.

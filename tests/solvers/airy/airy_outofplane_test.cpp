@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the `airy` solver's own out-of-plane model: the string of linear tension solved by
 // Bessel functions (src/solvers/airy/airy_tension_string.hpp, docs/explanation/methods/airy.md).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the Airy root scan (src/solvers/airy/airy_root_scan.cpp): the spurious-root
 // cutoff against the tensions it bounds, roots that are sign changes of the determinant, a close
 // near-cross-over pair that hides between two samples, and the scan limit.

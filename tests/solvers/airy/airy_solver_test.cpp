@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the `airy` solver (Triantafyllou's Airy-function solution, Grinfogel 1984 eqs. 7-16).
 //
 // Compared with:

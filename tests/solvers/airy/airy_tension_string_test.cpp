@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the out-of-plane string of linear tension (src/solvers/airy/airy_tension_string.cpp):
 // the uniform-string limit, the roots against the plain Bessel determinant and against an
 // independent Runge-Kutta integration of (P v')' + M omega^2 v = 0, the count, the shapes' zeros,

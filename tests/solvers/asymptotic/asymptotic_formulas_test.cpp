@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Grinfogel's closed-form in-plane shapes (Grinfogel 1984; docs/reference/references.md), eqs. (34), (28)
 // and (37): the fixed end s = 0, the far end at a root of eq. (21), Irvine's shapes of the
 // horizontal cable (phi = 0, where both formulas reduce to them), the scaling of u with eps, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the `asymptotic` solver (Grinfogel 1984, eqs. 21, 28, 34, 37, 38; WKB out of plane).
 //
 // Compared with:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the asymptotic solver's WKB out-of-plane string (src/solvers/asymptotic/asymptotic_wkb_string.cpp):
 // harmonics of one travel time, shapes vanishing at the ends, no shapes when none are asked.
 #include "solvers/asymptotic/asymptotic_wkb_string.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Knobs declared once: reading scene values, ranges, types, defaults and help from one table.
 #include "solvers/common/knob_table.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Independent anchors of fe and shooting on general lines, in plane as well as out of plane
 // (docs/explanation/physics.md, "General lines"). Each is a weightless taut line, straight along x, whose
 // in-plane motion splits into an axial bar (stiffness EA, mass m + point mass + its tangential

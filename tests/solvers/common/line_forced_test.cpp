@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The forced response on a general line (docs/explanation/methods/fe.md, "Lines"; docs/explanation/methods/shooting.md,
 // "General lines"), by fe and by shooting:
 // - a weightless taut line of two segments with different mass densities, driven out of plane at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The modal mass of a general line's mode (src/solvers/common/line_modal_mass.hpp): each
 // segment's density on its own stretch, each point attachment's mass at its own arc length.
 #include "solvers/common/line_modal_mass.hpp"

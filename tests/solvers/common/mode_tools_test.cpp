@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The helpers every solver fills its modes with: frequency units, the shape normalisation of
 // include/catena/solvers/modal_result.hpp (scale, sign, ties, the u-normalised axial case), the
 // trapezoid rule on the stations and the modal masses built on it.

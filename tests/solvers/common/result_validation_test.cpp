@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The checks every solver's results pass in the solver skeleton: each mode rule, the valid prefix
 // kept, the status and message; forced responses scaled by the amplitude, overflow and silent
 // non-finite values turned into diagnostics.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Limits on work: a run whose deadline has passed stops after the unit of work in progress and
 // keeps valid partial results (never a hang, never a wrong "converged"); progress is reported
 // per unit; oversized requests are refused naming the field. No test depends on timing: an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What adding a solver costs: a complete sixth solver, the taut string (omega_n = n pi sqrt(T0/M)/L,
 // both planes), written against the skeleton (src/solvers/common/solver_driver.hpp,
 // knob_table.hpp). Between the two markers: its numerics, its knob table and its registry entry,

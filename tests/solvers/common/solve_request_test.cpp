@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a scene asks the solvers to compute: validation of every field and limit, the stations,
 // the forcing direction and the names used in messages and JSON.
 #include "catena/solvers/solve_request.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The one solver skeleton: the driver's steps and the rule that combines the parts of a run.
 #include "solvers/common/solver_driver.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The solver registry: the five solvers in their fixed order, lookup by name, the knob specs the
 // docs and `catena solvers` are generated from, and run_solver (knobs validated before any work,
 // a solver outside its model declining with the reason, each solver naming itself in its output).

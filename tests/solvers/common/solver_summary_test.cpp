@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SolverSummary: the termination names written to report.json, which terminations carry results,
 // and the one-line and several-line reports (fields shown only when they were counted or measured).
 #include "catena/solvers/solver_summary.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What every solver test does before asserting: the shared statics and groups of a problem, the
 // solver's output, and a modes-only request. One place, so the solver tests stay about the solver.

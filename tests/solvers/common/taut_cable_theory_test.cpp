@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of what the analytic solvers share (src/solvers/common/taut_cable_theory.cpp): the
 // static strain and the eps thresholds.
 #include "solvers/common/taut_cable_theory.hpp"

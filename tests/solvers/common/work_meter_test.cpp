@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One part of a run measured against the run's budget: when it stops, what it reports, and the
 // message a stopped part carries.
 #include "solvers/common/work_meter.hpp"

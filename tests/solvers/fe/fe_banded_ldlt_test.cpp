@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The fe solver's banded LDL^T without pivoting: solves against a dense solve, the Sylvester
 // inertia count against the eigenvalues from Eigen's SelfAdjointEigenSolver, storage of one or
 // both triangles, and the pivot ratio that tells a shift sitting on an eigenvalue.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe discrete statics (src/solvers/fe/fe_chain_statics.cpp): the chain closes on support b
 // and approaches the continuous catenary at O(h^2); prescribed end forces are kept; a slack chain
 // is reported as a failure, never thrown.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe eigenpairs of one level (src/solvers/fe/fe_eigen.cpp): the exact spectrum of a uniform
 // string chain on the dense and the Lanczos paths, the Sylvester count, and the quality of the
 // eigenpairs of stiff chains (M-orthogonality, residual, normwise backward error).

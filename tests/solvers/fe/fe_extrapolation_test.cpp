@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe extrapolation (src/solvers/fe/fe_extrapolation.cpp): pairing modes across meshes by
 // shape, Richardson in the mesh, linear extrapolation in the penalty, the observed order.
 #include "solvers/fe/fe_extrapolation.hpp"

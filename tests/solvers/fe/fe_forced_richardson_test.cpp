@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Richardson in h of the fe forced response (src/solvers/fe/fe_forced_richardson.cpp): cubic
 // interpolation is exact for cubics (inside and past the ends), and a field with an O(h^2) error
 // on the nodes and midpoints is extrapolated to O(h^4) on coinciding points.

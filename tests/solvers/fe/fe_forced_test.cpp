@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe forced response (src/solvers/fe/fe_forced.cpp): the standing waves of a straight bar,
 // the quasi-static tension of an inextensible catenary (through the kappa extrapolation), and
 // resonance diagnostics instead of infinities.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The thick-restart Lanczos of fe (src/solvers/fe/fe_lanczos.cpp) on matrices with known
 // spectra: the fixed-fixed string (1-D Laplacian) through its inverse, as fe uses it; the
 // clustered top of the same Laplacian; repeated and negative eigenvalues found through Krylov

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe plan and levels (src/solvers/fe/fe_levels.cpp): which meshes and penalties are solved,
 // the rounding floor's scaling, and the statics and eigen solves on every level.
 #include "solvers/fe/fe_levels.hpp"

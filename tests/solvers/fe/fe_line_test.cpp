@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe on a general line (docs/explanation/methods/fe.md, "Lines"), against anchors that need no other solver:
 // - a uniform cable written as a line of 2 and 7 identical segments: the same frequencies as the
 //   one-segment cable to 1e-12 (the meshes coincide: N = 140 splits evenly);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe operators (src/solvers/fe/fe_operators.cpp): sizes, symmetry, the lumped mass, and that
 // a rigid translation of the whole chain (free nodes and ends alike) produces no elastic force.
 #include "solvers/fe/fe_operators.hpp"

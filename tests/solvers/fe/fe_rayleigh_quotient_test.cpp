@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The element-wise Rayleigh quotient of fe modes (src/solvers/fe/fe_rayleigh_quotient.hpp):
 // - it is the assembled quotient phi^T K phi / phi^T M phi (taut chain, a grounded line with its
 //   foundation, both planes);

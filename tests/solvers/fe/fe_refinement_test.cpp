@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe's mesh refinement toward an accuracy target (src/solvers/fe/fe_refinement.hpp): the
 // predicted mesh, its bounds, and when it stops.
 #include "solvers/fe/fe_refinement.hpp"

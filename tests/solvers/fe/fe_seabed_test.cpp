@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe on the seabed (docs/explanation/methods/fe.md, "Seabed contact"), against anchors that need no other
 // solver:
 // - a line lying entirely on the seabed, taut (tension H, C_B = 0): the exact frequencies of a

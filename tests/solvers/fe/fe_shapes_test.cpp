@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe stations (src/solvers/fe/fe_shapes.cpp): nodal displacements with their imposed ends,
 // element tension of a uniform stretch, and linear sampling (exact for a linear field).
 #include "solvers/fe/fe_shapes.hpp"

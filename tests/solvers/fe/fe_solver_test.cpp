@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe solver: natural frequencies against closed-form results.
 //
 // - Taut string (eps = 1e-6, lambda^2 = 1e-6): kL/pi = n for n = 1..10, to 1e-6 at N = 1000 with

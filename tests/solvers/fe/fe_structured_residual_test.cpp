@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The in-plane forced residual from the chain's element data (src/solvers/fe/
 // fe_structured_residual.hpp): it is the assembled residual f - (K - w^2 M) x up to the rounding of
 // the assembled entries, on a cable and on a line resting on the seabed (tests/solvers/

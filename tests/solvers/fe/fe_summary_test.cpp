@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // fe summary text (src/solvers/fe/fe_summary.cpp): the resolution names every mesh and
 // penalty, the inextensible warning states the penalties, and the forced message counts.
 #include "solvers/fe/fe_summary.hpp"

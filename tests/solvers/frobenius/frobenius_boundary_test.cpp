@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the frobenius solver's scaled boundary matrix: its shape per plane, the column
 // scaling, the agreement of the three precisions, and its determinant's zeros at the frequencies
 // of a nearly straight string.

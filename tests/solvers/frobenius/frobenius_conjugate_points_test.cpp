@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the frobenius solver's conjugate-point count: the number of natural frequencies below
 // omega, whatever the root scan found.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the frobenius solver's fields: the null vector meets the boundary conditions, the
 // fields of a mode vanish at both ends, V = C^2 DU, and the out-of-plane mode n has n - 1
 // interior nodes (the Sturm check of the count).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the frobenius solver's forced response: the driven end's displacement in Gale's units
 // and the response's end conditions in each direction.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the frobenius solver's root finding: the Illinois refinement, the WKB mode spacing
 // that sets the scan grid, and the roots of a plane (each a sign change of the determinant, close
 // to the string frequencies for a nearly straight cable, ascending, with small error estimates).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the general Frobenius engine on ODEs with known series: Airy (ordinary point) and
 // Bessel (regular singular point, roots differing by an integer, and the logarithmic case).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the frobenius solver: Gale's published frequencies (Tables B-3, B-4), an independent
 // direct integration of the equations in sigma (Boost.Odeint, no series), deep sag beyond the
 // thesis, mode properties (orthogonality, inextensibility, dynamic tension), forced response

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Boundary problems for the tests of the frobenius solver's internal parts, in Gale's units.
 #include <algorithm>

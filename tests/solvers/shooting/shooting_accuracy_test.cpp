@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Regression tests of the `shooting` solver's accuracy at its defaults (docs/explanation/methods/shooting.md,
 // "Accuracy over the suite"), on the two cases that once missed it:
 //  - the mooring line of issue 12 (L = 1000 m, b = (700, 650) m): out-of-plane mode 1 came out

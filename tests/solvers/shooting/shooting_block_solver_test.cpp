@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The block linear solver of the slope shots (src/solvers/shooting/shooting_block_solver.hpp):
 // on a matrix of the block lower-triangular layout [M_YY 0 0; 0 1 0; M_SY 0 M_SS] it gives the
 // solution of the full dense system, for the in-plane (8) and out-of-plane (2) blocks.

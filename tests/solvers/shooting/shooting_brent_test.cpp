@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of Brent's zero finder (src/solvers/shooting/shooting_brent): brackets that close to the
 // requested relative width around known roots, with few evaluations on smooth functions.
 #include "solvers/shooting/shooting_brent.hpp"

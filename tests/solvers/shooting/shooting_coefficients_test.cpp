@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the shooting solver's static coefficients (src/solvers/shooting/shooting_coefficients):
 // tension, tangent and normal of the catenary in closed form, and the transverse travel time.
 #include "solvers/shooting/shooting_coefficients.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of conjugate-point counting (src/solvers/shooting/shooting_conjugate_count) on frames of
 // uncoupled strings, whose conjugate points and phase are known in closed form: for
 // Phi' = k F, F' = -k Phi from Phi = 0, F = 1 the solution is Phi = sin(k x), F = cos(k x),

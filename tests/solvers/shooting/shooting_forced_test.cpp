@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the forced response (src/solvers/shooting/shooting_forced) on a uniform string driven
 // at one end, whose response d sin(q s) / sin(q L) is exact, and of its summary: resonances as
 // warnings, integration failures as a status with the responses computed so far.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the grounded run of a shot (src/solvers/shooting/shooting_grounded, docs/explanation/methods/
 // shooting.md "Seabed contact: the grounded run"):
 //  - at constant tension each direction is a constant-coefficient pair with a closed form from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the CVODE shot (src/solvers/shooting/shooting_integrator) on a straight horizontal
 // string, where the principal solutions are exact: Phi' = b F, F' = -c Phi from Phi = 0, F = 1
 // gives F = cos(q x), Phi = (b / q) sin(q x), q = sqrt(b c), separately for the axial and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the `shooting` solver on general lines (docs/explanation/physics.md, "General lines";
 // docs/explanation/methods/shooting.md, "General lines"):
 //  - a uniform cable given as a line of 2 and 7 identical segments reproduces the one-segment

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of mode construction (src/solvers/shooting/shooting_modes): clustering of close roots,
 // and modes with shapes from the null vector of Phi(L) on a uniform string, whose shapes are
 // exact sines.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the shooting root finder's Newton refinement (shooting_root_finder.hpp,
 // set_slope_shots) on synthetic shots whose end frames and slopes are exact: strings of phase
 // pi r p(omega), one (out of plane) or two (in plane) at once. Checked: every mode to the

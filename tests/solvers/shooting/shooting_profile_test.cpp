@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of profiles from a shot (src/solvers/shooting/shooting_profile): the physical
 // displacements and tension of a combination of the final basis at recorded stations.
 #include "solvers/shooting/shooting_profile.hpp"

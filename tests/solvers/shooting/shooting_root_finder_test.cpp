@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the shooting root finder (src/solvers/shooting/shooting_root_finder) on synthetic
 // shots whose counts and end functions are exact: strings with known eigenfrequencies, including
 // an exactly double root, so that any skipped, duplicated or misplaced mode shows.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the next-root prediction of the shooting solver (src/solvers/shooting/
 // shooting_root_prediction): exact on the spectra its extrapolations describe, silent where it
 // has no basis, and honest about its uncertainty.

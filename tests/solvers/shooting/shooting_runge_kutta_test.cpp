@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The explicit Runge-Kutta stepper of the shooting solver
 // (src/solvers/shooting/shooting_runge_kutta.hpp) on problems with closed-form solutions: its
 // observed order, the stop point, the state inside a step, the components it does not control,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the `shooting` solver on a line resting on the seabed (docs/explanation/methods/shooting.md,
 // "Seabed contact"):
 //  - a taut line lying entirely on the seabed: out of plane a string on an elastic foundation,

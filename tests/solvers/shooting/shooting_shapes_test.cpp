@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Mode shapes, dynamic tension, modal mass and forced response of the `shooting` solver, against
 // exact results:
 //  - straight, nearly weightless cable (weight 1e-9 N/m): transverse modes w = sin(n pi s/L) with

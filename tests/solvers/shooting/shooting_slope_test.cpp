@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the frequency derivative a shot can carry (shooting_integrator.hpp, "Frequency
 // derivative"): the slopes of the normalised end determinant and of the end angle against central
 // finite differences of two shots, on a taut string (both planes, with frequent

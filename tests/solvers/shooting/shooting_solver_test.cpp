@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests of the `shooting` solver against exact results:
 //  - straight, nearly weightless pre-tensioned cable: transverse string modes
 //    omega_n = n pi sqrt(T / (M (1+e))) / L and axial bar modes omega_n = n pi sqrt(EA / m) / L,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Exact test problems for the shooting solver's internal parts: a straight horizontal string
 // under tension T with no weight, whose principal solutions are sines and cosines. One place, so

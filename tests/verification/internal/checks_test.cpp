@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The verification checks on hand-made results: each verdict (PASS, FAIL, SOURCE, SKIP) is reached
 // by the case that should reach it, and a check's record names scene, solvers, values and
 // tolerance. Expected outcomes follow from the rules in verification/tolerances.toml.

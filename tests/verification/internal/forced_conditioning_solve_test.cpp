@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The mode counts of the forced conditioning's solve (src/verification/internal/forced_conditioning_solve.hpp):
 // skipping counts must not change the list the doubling keeps.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "common/repository_paths.hpp"
 
 #include "catena/core/version.hpp"

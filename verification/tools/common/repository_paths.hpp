@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the verification tools read the transcribed published tables and write our comparisons,
 // and the provenance line every generated CSV carries.

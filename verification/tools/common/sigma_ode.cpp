@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "common/sigma_ode.hpp"
 
 namespace catena_tools {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Gale's inextensible catenary integrated directly in sigma = (s - s_apex) / a: no series, no
 // change of variable, Boost.Odeint Runge-Kutta-Fehlberg 7(8). An independent check of the
