@@ -14,8 +14,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 
 namespace {
 

@@ -9,8 +9,8 @@
 // clang-format on
 #include <benchmark/benchmark.h>
 
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 
 namespace {
 

@@ -9,7 +9,8 @@
 // BM_FeSolveDefault/<plane>/<N>: the public solve_fe with its defaults (Richardson: N and 2N).
 //
 // Scene: taut inclined cable eps = 0.1, phi = 20 deg, lambda^2 = 10, h = 1 (Grinfogel's groups).
-// Run: ./build/benchmarks/catena_fe_benchmark --benchmark_out=benchmarks/results/<machine>-<date>.json
+// Run: ./build/benchmarks/catena_fe_benchmark
+// --benchmark_out=benchmarks/results/<machine>-<date>.json
 //      --benchmark_out_format=json
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
@@ -17,8 +18,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/fe/fe_eigen.hpp"
 
 namespace {
@@ -54,8 +55,9 @@ void BM_FeStages(benchmark::State& state) {
         internal::solve_chain_statics(problem, statics, elements, problem.cable.axial_stiffness_n);
     statics_ms += ms_since(start);
     start = Clock::now();
-    const internal::FeMatrices matrices =
-        plane == Plane::InPlane ? internal::assemble_inplane(chain) : internal::assemble_outofplane(chain);
+    const internal::FeMatrices matrices = plane == Plane::InPlane
+                                              ? internal::assemble_inplane(chain)
+                                              : internal::assemble_outofplane(chain);
     assembly_ms += ms_since(start);
     const internal::FeEigenSolution eigen = internal::solve_lowest_modes(matrices, 10, 1e-13, 1000);
     factorization_ms += 1e3 * eigen.factorization_time_s;

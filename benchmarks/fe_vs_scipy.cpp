@@ -18,6 +18,7 @@
 //                            [--repeats R] [--max-elements N] [--tiny] [--help]
 // --tiny: small meshes and one repeat, only to keep the driver working (the ctest). --help: the
 // options (kUsage below); an unknown option or a bad value exits 2 before anything runs.
+#include <fmt/format.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -28,7 +29,6 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -119,7 +119,8 @@ CatenaRun run_in_child(const Scene& scene, const FeCase& fe) {
   close(fds[1]);
   std::string text;
   char buffer[4096];
-  for (ssize_t got; (got = read(fds[0], buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<std::size_t>(got));
+  for (ssize_t got; (got = read(fds[0], buffer, sizeof buffer)) > 0;)
+    text.append(buffer, static_cast<std::size_t>(got));
   close(fds[0]);
   int status = 0;
   waitpid(pid, &status, 0);
@@ -141,13 +142,17 @@ void write_market(const fs::path& path, const internal::SparseMatrix& matrix) {
 }
 
 // fe's matrices of the mesh of `elements` elements, exported for SciPy; returns (K, M) paths.
-std::pair<fs::path, fs::path> export_matrices(const Options& options, const Scene& scene, int elements, Plane plane) {
+std::pair<fs::path, fs::path> export_matrices(const Options& options,
+                                              const Scene& scene,
+                                              int elements,
+                                              Plane plane) {
   const Problem& problem = scene.problem;
-  const internal::FeChain chain =
-      internal::solve_chain_statics(problem, scene.statics, elements, problem.cable.axial_stiffness_n);
+  const internal::FeChain chain = internal::solve_chain_statics(problem, scene.statics, elements,
+                                                                problem.cable.axial_stiffness_n);
   const internal::FeMatrices matrices = internal::assemble(plane, chain);
   const std::string tag = fmt::format("{}_{}", plane == Plane::InPlane ? "in" : "out", elements);
-  const fs::path k_path = options.work / ("K_" + tag + ".mtx"), m_path = options.work / ("M_" + tag + ".mtx");
+  const fs::path k_path = options.work / ("K_" + tag + ".mtx"),
+                 m_path = options.work / ("M_" + tag + ".mtx");
   write_market(k_path, matrices.stiffness);
   write_market(m_path, matrices.mass);
   return {k_path, m_path};
@@ -155,12 +160,14 @@ std::pair<fs::path, fs::path> export_matrices(const Options& options, const Scen
 
 // One timed eigsh call (after one warm-up) on the exported matrices: seconds and omegas
 // (-1 and none when Python or SciPy is missing).
-std::pair<double, std::vector<double>> run_scipy(const Options& options, const std::pair<fs::path, fs::path>& km,
+std::pair<double, std::vector<double>> run_scipy(const Options& options,
+                                                 const std::pair<fs::path, fs::path>& km,
                                                  int modes) {
   const fs::path script = fs::path(CATENA_BENCHMARK_DIR) / "scipy_eigsh.py";
   const fs::path output = options.work / "scipy.txt";
-  const std::string command = fmt::format("{} {} {} {} {} 1 1 > {} 2>&1", options.python, script.string(),
-                                          km.first.string(), km.second.string(), modes, output.string());
+  const std::string command =
+      fmt::format("{} {} {} {} {} 1 1 > {} 2>&1", options.python, script.string(),
+                  km.first.string(), km.second.string(), modes, output.string());
   if (std::system(command.c_str()) != 0) return {-1.0, {}};
   std::ifstream in(output);
   double seconds = -1.0;
@@ -179,13 +186,17 @@ double median(std::vector<double> values) {
 double max_relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
   if (a.empty() || a.size() != b.size()) return -1.0;
   double worst = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]) / std::abs(b[i]));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    worst = std::max(worst, std::abs(a[i] - b[i]) / std::abs(b[i]));
   return worst;
 }
 
 // One row of the comparison: `repeats` alternations of Catena (case `fe`) and SciPy on the
 // matrices of the mesh `scipy_elements`.
-std::string comparison_row(const Options& options, const Scene& scene, const std::string& label, const FeCase& fe,
+std::string comparison_row(const Options& options,
+                           const Scene& scene,
+                           const std::string& label,
+                           const FeCase& fe,
                            int scipy_elements) {
   const auto km = export_matrices(options, scene, scipy_elements, fe.plane);
   std::vector<double> catena_s, scipy_s;
@@ -199,15 +210,17 @@ std::string comparison_row(const Options& options, const Scene& scene, const std
     scipy_omegas = omegas;
   }
   const double c = median(catena_s), s = median(scipy_s);
-  return fmt::format("{:<40} {:>8} {:>10.3f} {:>10.3f} {:>9.2f} {:>12.1e}\n", label, fe.modes, 1e3 * c, 1e3 * s,
-                     s > 0.0 ? s / c : -1.0, max_relative_difference(last.omegas, scipy_omegas));
+  return fmt::format("{:<40} {:>8} {:>10.3f} {:>10.3f} {:>9.2f} {:>12.1e}\n", label, fe.modes,
+                     1e3 * c, 1e3 * s, s > 0.0 ? s / c : -1.0,
+                     max_relative_difference(last.omegas, scipy_omegas));
 }
 
 }  // namespace
 
 namespace {
 
-constexpr const char* kUsage = R"(catena_fe_vs_scipy: fe (and shooting) on the SI mooring line against SciPy's eigsh
+constexpr const char* kUsage =
+    R"(catena_fe_vs_scipy: fe (and shooting) on the SI mooring line against SciPy's eigsh
 (shift-invert) on the same matrices; Catena in a fresh process per run, medians (issue 17).
 Takes about a minute on 2 cores, most of it the N = 1e6 scaling row.
 
@@ -240,8 +253,8 @@ Options parse(int argc, char** argv) {
   Options options;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    const bool valued = arg == "--python" || arg == "--work" || arg == "--results" || arg == "--repeats" ||
-                        arg == "--max-elements";
+    const bool valued = arg == "--python" || arg == "--work" || arg == "--results" ||
+                        arg == "--repeats" || arg == "--max-elements";
     if (valued && i + 1 >= argc) usage_error(arg + " needs a value");
     if (arg == "--help" || arg == "-h") {
       std::fputs(kUsage, stdout);
@@ -276,45 +289,53 @@ std::string machine_line() {
   const std::time_t now = std::time(nullptr);
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M", std::localtime(&now));
-  return fmt::format("# {}, {} hardware threads, load average {} (1 min) {} (5 min) at the start\n", date,
-                     sysconf(_SC_NPROCESSORS_ONLN), one, five);
+  return fmt::format("# {}, {} hardware threads, load average {} (1 min) {} (5 min) at the start\n",
+                     date, sysconf(_SC_NPROCESSORS_ONLN), one, five);
 }
 
 std::string comparison_table(const Options& options, const Scene& scene) {
   const int N = options.tiny ? 40 : 1000, N_default = options.tiny ? 20 : 400;
   std::string out = fmt::format(
-      "mooring line (L = 1000 m, EA = 5e8 N); Catena: solve_fe's (solve_shooting's) wall_time_s, in a fresh process; SciPy: eigsh\n"
-      "shift-invert (sigma = 0, tol 1e-10) on the matrices of fe's mesh of N = {} elements; medians of {}\n"
-      "alternating runs. diff: largest relative difference of the frequencies (Catena's are extrapolated in\n"
+      "mooring line (L = 1000 m, EA = 5e8 N); Catena: solve_fe's (solve_shooting's) wall_time_s, "
+      "in a fresh process; SciPy: eigsh\n"
+      "shift-invert (sigma = 0, tol 1e-10) on the matrices of fe's mesh of N = {} elements; "
+      "medians of {}\n"
+      "alternating runs. diff: largest relative difference of the frequencies (Catena's are "
+      "extrapolated in\n"
       "the Richardson row, so there it is Catena's accuracy gain over the N = {} mesh)\n",
       N, options.repeats, N);
-  out += fmt::format("{:<40} {:>8} {:>10} {:>10} {:>9} {:>12}\n", "case", "modes", "catena ms", "scipy ms",
-                     "scipy/cat", "diff");
+  out += fmt::format("{:<40} {:>8} {:>10} {:>10} {:>9} {:>12}\n", "case", "modes", "catena ms",
+                     "scipy ms", "scipy/cat", "diff");
   for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
     const std::string name = plane == Plane::InPlane ? "in-plane" : "out-of-plane";
     out += comparison_row(options, scene, fmt::format("{}, N = {}, no Richardson", name, N),
                           {N, false, plane, 10}, N);
   }
-  out += comparison_row(options, scene, fmt::format("in-plane, default (N = {} + Richardson)", N_default),
+  out += comparison_row(options, scene,
+                        fmt::format("in-plane, default (N = {} + Richardson)", N_default),
                         {N_default, true, Plane::InPlane, 10}, N);
   for (Plane plane : {Plane::InPlane, Plane::OutOfPlane})
     for (int modes : {1, 6, 20})
       out += comparison_row(options, scene,
-                            fmt::format("{}, N = {}, no Richardson", plane == Plane::InPlane ? "in-plane" : "out-of-plane", N),
+                            fmt::format("{}, N = {}, no Richardson",
+                                        plane == Plane::InPlane ? "in-plane" : "out-of-plane", N),
                             {N, false, plane, modes}, N);
   for (Plane plane : {Plane::InPlane, Plane::OutOfPlane})
     for (int modes : {6, 10})
       out += comparison_row(options, scene,
-                            fmt::format("{}, shooting (rtol 1e-10)", plane == Plane::InPlane ? "in-plane" : "out-of-plane"),
+                            fmt::format("{}, shooting (rtol 1e-10)",
+                                        plane == Plane::InPlane ? "in-plane" : "out-of-plane"),
                             {N, false, plane, modes, true}, N);
   return out;
 }
 
 std::string scaling_table(const Options& options, const Scene& scene) {
   std::string out =
-      "\nscaling: in-plane, 10 modes, no Richardson (meshes N/2 and N), one fresh process per run;\n"
+      "\nscaling: in-plane, 10 modes, no Richardson (meshes N/2 and N), one fresh process per "
+      "run;\n"
       "median of the repeats up to N = 1e4, one run above\n";
-  out += fmt::format("{:>10} {:>12} {:>14} {:>14}\n", "N", "wall [s]", "us / element", "peak RSS [MB]");
+  out += fmt::format("{:>10} {:>12} {:>14} {:>14}\n", "N", "wall [s]", "us / element",
+                     "peak RSS [MB]");
   for (int N = options.tiny ? 40 : 1000; N <= options.max_elements; N *= options.tiny ? 2 : 10) {
     std::vector<double> seconds;
     double rss = 0.0;

@@ -2,21 +2,25 @@
 // Benchmarks of the frobenius solver (Google Benchmark). Target: six in-plane frequencies of a
 // Table B-3 row in at most 5 ms. Built with -DCATENA_BUILD_BENCHMARKS=ON (target
 // catena_frobenius_benchmark).
-// Measured 2026-11-23 on the shared 2-core machine, load ~0.9 (other helpers idle), tolerance 1e-12:
-// B-3 row h/b=0.25, sag 0.90: 5.0 ms (140 determinant evaluations); tolerance 1e-8: 4.0 ms;
+// Measured 2026-11-23 on the shared 2-core machine, load ~0.9 (other helpers idle), tolerance
+// 1e-12: B-3 row h/b=0.25, sag 0.90: 5.0 ms (140 determinant evaluations); tolerance 1e-8: 4.0 ms;
 // h/b=0, sag 0.50: 6.4 ms; xi=+-8: 8.4 ms; six out-of-plane (B-4 row): 1.8 ms.
 #include <benchmark/benchmark.h>
 
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/frobenius_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "catena/statics/problem_builders.hpp"
 
 namespace {
 
 using namespace catena;
 
-void run(benchmark::State& state, const Problem& problem, int inplane, int outofplane, FrobeniusSolverOptions options) {
+void run(benchmark::State& state,
+         const Problem& problem,
+         int inplane,
+         int outofplane,
+         FrobeniusSolverOptions options) {
   const StaticSolution statics = solve_statics(problem);
   const DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
   SolveRequest request;

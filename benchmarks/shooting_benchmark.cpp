@@ -9,8 +9,8 @@
 // Counters: shots (integrations), CVODE RHS evaluations, the largest error estimate.
 #include <benchmark/benchmark.h>
 
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 
 namespace catena {
 namespace {

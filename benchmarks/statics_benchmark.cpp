@@ -3,8 +3,8 @@
 // the static state along the cable. Counters: Newton iterations and the closure error reached.
 #include <benchmark/benchmark.h>
 
-#include "catena/statics/problem_builders.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "catena/statics/problem_builders.hpp"
 
 namespace {
 
@@ -41,8 +41,12 @@ void BM_SolveStatics(benchmark::State& state) {
   state.counters["closure_error_m"] = solution.closure_error_m;
 }
 BENCHMARK(BM_SolveStatics<mooring>)->Name("BM_SolveStatics/mooring")->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_SolveStatics<deep_sag>)->Name("BM_SolveStatics/deep_sag_xi6")->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_SolveStatics<taut_inclined>)->Name("BM_SolveStatics/taut_inclined")->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SolveStatics<deep_sag>)
+    ->Name("BM_SolveStatics/deep_sag_xi6")
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SolveStatics<taut_inclined>)
+    ->Name("BM_SolveStatics/taut_inclined")
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_EvaluateStaticState(benchmark::State& state) {
   const StaticSolution solution = solve_statics(mooring());

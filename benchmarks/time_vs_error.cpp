@@ -7,20 +7,21 @@
 //   build/benchmarks/catena_time_vs_error [--out benchmarks/results/time-vs-error.csv] [--quick]
 //
 // Not a Google Benchmark: each point is a different configuration, and the error is the point.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <string>
 #include <vector>
 
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "catena/statics/problem_builders.hpp"
 
 namespace {
 
@@ -35,10 +36,12 @@ std::vector<BenchScene> scenes() {
   Problem mooring;
   mooring.cable = {1000.0, 1000.0, 5e8, 120.0, 80.0};
   mooring.supports.b_m = Vec2(900.0, 300.0);
-  return {{"shallow (eps 0.05, phi 0, lambda2 10)", make_taut_inclined_problem(0.05, 0.0, 10.0, 1.0)},
-          {"inclined (eps 0.18, phi 23.46, lambda2 38)", make_taut_inclined_problem(0.18, 23.46, 38.0, 1.0)},
-          {"deep sag (Gale xi = +-3, inextensible)", make_gale_xi_problem(-3.0, 3.0)},
-          {"mooring (SI, L 1000 m)", mooring}};
+  return {
+      {"shallow (eps 0.05, phi 0, lambda2 10)", make_taut_inclined_problem(0.05, 0.0, 10.0, 1.0)},
+      {"inclined (eps 0.18, phi 23.46, lambda2 38)",
+       make_taut_inclined_problem(0.18, 23.46, 38.0, 1.0)},
+      {"deep sag (Gale xi = +-3, inextensible)", make_gale_xi_problem(-3.0, 3.0)},
+      {"mooring (SI, L 1000 m)", mooring}};
 }
 
 struct Setting {
@@ -55,7 +58,8 @@ std::vector<Setting> settings(const std::string& solver, bool quick) {
       out.push_back({fmt::format("N={}+R", n), {{"elements", n}, {"richardson", true}}});
     }
   } else if (solver == "shooting") {
-    for (double rtol : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12}) out.push_back({fmt::format("rtol={:g}", rtol), {{"rtol", rtol}}});
+    for (double rtol : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12})
+      out.push_back({fmt::format("rtol={:g}", rtol), {{"rtol", rtol}}});
   } else if (solver == "frobenius") {
     for (double tol : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14}) {
       out.push_back({fmt::format("tol={:g}", tol), {{"tolerance", tol}}});
@@ -77,8 +81,10 @@ int main(int argc, char** argv) {
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--out" && i + 1 < argc) out_path = argv[++i];
-    else if (arg == "--quick") quick = true;
+    if (arg == "--out" && i + 1 < argc)
+      out_path = argv[++i];
+    else if (arg == "--quick")
+      quick = true;
     else {
       std::fprintf(stderr, "usage: %s [--out FILE] [--quick]\n", argv[0]);
       return 2;
@@ -101,15 +107,18 @@ int main(int argc, char** argv) {
     const SolverEntry* shooting = find_solver("shooting");
     const SolverOutput reference = run_solver(*shooting, context, {{"rtol", 1e-13}});
     if (!reference.inplane || reference.inplane->modes.size() < 6) {
-      std::printf("%s: no reference (%s)\n", scene.name.c_str(), reference.summary.brief_report().c_str());
+      std::printf("%s: no reference (%s)\n", scene.name.c_str(),
+                  reference.summary.brief_report().c_str());
       continue;
     }
-    std::printf("\n%s\n  reference: %s\n", scene.name.c_str(), reference.summary.brief_report().c_str());
+    std::printf("\n%s\n  reference: %s\n", scene.name.c_str(),
+                reference.summary.brief_report().c_str());
     std::map<std::string, std::map<double, double>> fastest;  // solver -> target -> time
     for (const auto& entry : solver_registry()) {
       const SolverOutput probe = run_solver(entry, context, {});
       if (probe.summary.termination == Termination::NotApplicable) {
-        std::printf("  %-10s not applicable: %s\n", entry.name.c_str(), probe.summary.message.c_str());
+        std::printf("  %-10s not applicable: %s\n", entry.name.c_str(),
+                    probe.summary.message.c_str());
         continue;
       }
       for (const auto& setting : settings(entry.name, quick)) {
@@ -133,9 +142,10 @@ int main(int argc, char** argv) {
             error = std::max(error, std::abs(a - b) / std::abs(b));
           }
         }
-        csv << fmt::format("\"{}\",{},{},{:.6e},{:.6e},{}\n", scene.name, entry.name, setting.label, median, error,
-                           to_string(output.summary.termination));
-        std::printf("  %-10s %-12s %10.3f ms  error %.2e\n", entry.name.c_str(), setting.label.c_str(), median * 1e3, error);
+        csv << fmt::format("\"{}\",{},{},{:.6e},{:.6e},{}\n", scene.name, entry.name, setting.label,
+                           median, error, to_string(output.summary.termination));
+        std::printf("  %-10s %-12s %10.3f ms  error %.2e\n", entry.name.c_str(),
+                    setting.label.c_str(), median * 1e3, error);
         for (double target : {1e-3, 1e-6, 1e-9}) {
           if (error <= target) {
             auto& best = fastest[entry.name];
@@ -148,8 +158,10 @@ int main(int argc, char** argv) {
     for (const auto& [solver, best] : fastest) {
       std::printf("  %-12s", solver.c_str());
       for (double target : {1e-3, 1e-6, 1e-9}) {
-        if (best.count(target)) std::printf("  %8.3f ms", best.at(target) * 1e3);
-        else std::printf("  %11s", "cannot");
+        if (best.count(target))
+          std::printf("  %8.3f ms", best.at(target) * 1e3);
+        else
+          std::printf("  %11s", "cannot");
       }
       std::printf("\n");
     }

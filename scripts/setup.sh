@@ -13,6 +13,7 @@ packages=(
   python3 python3-matplotlib python3-scipy
   python3-dev pybind11-dev python3-numpy python3-pytest   # the Python module and its tests (docs/reference/python.md)
   universal-ctags     # the function-length check (scripts/check_function_length.py)
+  clang-format        # the formatting check (scripts/check_format.py)
   chromium            # the HTML report is checked in headless Chromium (test skipped without it)
 )
 

@@ -3,11 +3,12 @@
 // Shared test helpers: relative errors measured the same way everywhere, the location of the
 // reference tables, and the check that bad input names its field.
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <boost/math/special_functions/relative_difference.hpp>
 #include <cmath>
 #include <functional>
-#include <gtest/gtest.h>
 #include <limits>
 #include <string>
 #include <vector>
@@ -17,14 +18,14 @@
 
 namespace catena::testing {
 
-/// `uniform`'s cable written as a line of `pieces` identical segments (same ends): the anchor that a
-/// split line reproduces the one-segment result (docs/explanation/physics.md, "General lines").
+/// `uniform`'s cable written as a line of `pieces` identical segments (same ends): the anchor that
+/// a split line reproduces the one-segment result (docs/explanation/physics.md, "General lines").
 inline Problem split_into_segments(const Problem& uniform, int pieces) {
   Problem p = uniform;
   const CableProperties& c = uniform.cable;
   for (int i = 0; i < pieces; ++i) {
-    p.line.segments.push_back({c.length_m / pieces, c.weight_n_per_m, c.axial_stiffness_n, c.mass_kg_per_m,
-                               c.added_mass_kg_per_m});
+    p.line.segments.push_back({c.length_m / pieces, c.weight_n_per_m, c.axial_stiffness_n,
+                               c.mass_kg_per_m, c.added_mass_kg_per_m});
   }
   return p;
 }
@@ -67,7 +68,9 @@ inline void expect_invalid(const std::function<void()>& action, const std::strin
 /// The first `count` roots of a continuous `f` on (0, top]: sign changes on a grid of `steps`
 /// intervals, each bisected to rounding. The caller checks the count it got, so a root pair that
 /// the grid cannot separate shows as a missing root, not as a wrong one.
-inline std::vector<double> roots_by_bisection(const std::function<double(double)>& f, double top, int count,
+inline std::vector<double> roots_by_bisection(const std::function<double(double)>& f,
+                                              double top,
+                                              int count,
                                               int steps = 200000) {
   std::vector<double> out;
   double a = top / steps, fa = f(a);

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The pieces of the extension module catena._catena (docs/reference/python.md), one file per concept, and
-// the conversions they share. Nothing here is called while the GIL is released: every function
-// that solves copies its Python arguments into C++ values first, releases the GIL for the C++ work
-// only, and converts the C++ result back after re-acquiring it.
+// The pieces of the extension module catena._catena (docs/reference/python.md), one file per
+// concept, and the conversions they share. Nothing here is called while the GIL is released: every
+// function that solves copies its Python arguments into C++ values first, releases the GIL for the
+// C++ work only, and converts the C++ result back after re-acquiring it.
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The building blocks of a problem: Cable (catena::CableProperties), Problem (cable + supports)
 // and the request (SolveRequest, ForcedRequest). Every name carries its unit, as in C++.
-#include <pybind11/stl.h>
-
 #include <fmt/format.h>
+#include <pybind11/stl.h>
 
 #include "bindings.hpp"
 #include "catena/core/error.hpp"
@@ -22,9 +21,10 @@ Vec2 to_vec2(const Point& point) { return Vec2(point.first, point.second); }
 Point to_point(const Vec2& vector) { return {vector.x(), vector.y()}; }
 
 void bind_cable(py::module_& module) {
-  py::class_<CableProperties>(module, "Cable",
-                              "A uniform cable, per unit unstretched length, in SI units. Validated on "
-                              "construction (catena.InvalidInput names the field).")
+  py::class_<CableProperties>(
+      module, "Cable",
+      "A uniform cable, per unit unstretched length, in SI units. Validated on "
+      "construction (catena.InvalidInput names the field).")
       .def(py::init([](double length_m, double weight_n_per_m, double mass_kg_per_m,
                        double axial_stiffness_n, double added_mass_kg_per_m) {
              CableProperties cable{length_m, weight_n_per_m, axial_stiffness_n, mass_kg_per_m,
@@ -39,23 +39,29 @@ void bind_cable(py::module_& module) {
                      "submerged weight per unit unstretched length W0 [N/m], > 0")
       .def_readwrite("axial_stiffness_n", &CableProperties::axial_stiffness_n,
                      "axial stiffness EA [N], > 0; math.inf: inextensible")
-      .def_readwrite("mass_kg_per_m", &CableProperties::mass_kg_per_m, "structural mass m [kg/m], > 0")
+      .def_readwrite("mass_kg_per_m", &CableProperties::mass_kg_per_m,
+                     "structural mass m [kg/m], > 0")
       .def_readwrite("added_mass_kg_per_m", &CableProperties::added_mass_kg_per_m,
                      "added (hydrodynamic) mass ma [kg/m], >= 0, normal directions only")
       .def_property_readonly("normal_mass_kg_per_m", &CableProperties::normal_mass_kg_per_m,
                              "M = m + ma [kg/m]")
       .def_property_readonly("inextensible", &CableProperties::is_inextensible, "EA = inf")
-      .def("validate", &CableProperties::validate, "Raises catena.InvalidInput naming the bad field.")
+      .def("validate", &CableProperties::validate,
+           "Raises catena.InvalidInput naming the bad field.")
       .def("__repr__", [](const CableProperties& c) {
-        return fmt::format("Cable(length_m={}, weight_n_per_m={}, mass_kg_per_m={}, axial_stiffness_n={}, "
-                           "added_mass_kg_per_m={})",
-                           c.length_m, c.weight_n_per_m, c.mass_kg_per_m, c.axial_stiffness_n,
-                           c.added_mass_kg_per_m);
+        return fmt::format(
+            "Cable(length_m={}, weight_n_per_m={}, mass_kg_per_m={}, axial_stiffness_n={}, "
+            "added_mass_kg_per_m={})",
+            c.length_m, c.weight_n_per_m, c.mass_kg_per_m, c.axial_stiffness_n,
+            c.added_mass_kg_per_m);
       });
 }
 
 // The supports and seabed of a problem, then the whole problem validated.
-Problem with_supports(Problem problem, const Point& b_m, const Point& a_m, const std::optional<Seabed>& seabed) {
+Problem with_supports(Problem problem,
+                      const Point& b_m,
+                      const Point& a_m,
+                      const std::optional<Seabed>& seabed) {
   problem.supports.a_m = to_vec2(a_m);
   problem.supports.b_m = to_vec2(b_m);
   problem.seabed = seabed;
@@ -63,14 +69,19 @@ Problem with_supports(Problem problem, const Point& b_m, const Point& a_m, const
   return problem;
 }
 
-Problem make_problem(const CableProperties& cable, const Point& b_m, const Point& a_m,
+Problem make_problem(const CableProperties& cable,
+                     const Point& b_m,
+                     const Point& a_m,
                      const std::optional<Seabed>& seabed) {
   Problem problem;
   problem.cable = cable;
   return with_supports(problem, b_m, a_m, seabed);
 }
 
-Problem make_line_problem(const Line& line, const Point& b_m, const Point& a_m, const std::optional<Seabed>& seabed) {
+Problem make_line_problem(const Line& line,
+                          const Point& b_m,
+                          const Point& a_m,
+                          const std::optional<Seabed>& seabed) {
   Problem problem;
   problem.line = line;
   return with_supports(problem, b_m, a_m, seabed);
@@ -84,7 +95,8 @@ Seabed make_seabed(double z_m, double friction, double stiffness, double tangent
 
 void bind_seabed(py::module_& module) {
   py::class_<Seabed>(module, "Seabed",
-                     "A flat seabed at height z_m under end A (docs/explanation/physics.md, \"Seabed contact\"). Validated "
+                     "A flat seabed at height z_m under end A (docs/explanation/physics.md, "
+                     "\"Seabed contact\"). Validated "
                      "on construction (catena.InvalidInput names the field).")
       .def(py::init(&make_seabed), py::arg("z_m"), py::kw_only(), py::arg("friction") = 0.0,
            py::arg("stiffness_n_per_m2") = 0.0, py::arg("tangential_stiffness_n_per_m2") = 0.0)
@@ -95,29 +107,35 @@ void bind_seabed(py::module_& module) {
       .def_readonly("tangential_stiffness_n_per_m2", &Seabed::tangential_stiffness_n_per_m2,
                     "foundation stiffness along and across the seabed [N/m per m]")
       .def("__repr__", [](const Seabed& b) {
-        return fmt::format("Seabed(z_m={}, friction={}, stiffness_n_per_m2={}, tangential_stiffness_n_per_m2={})",
-                           b.z_m, b.friction, b.stiffness_n_per_m2, b.tangential_stiffness_n_per_m2);
+        return fmt::format(
+            "Seabed(z_m={}, friction={}, stiffness_n_per_m2={}, tangential_stiffness_n_per_m2={})",
+            b.z_m, b.friction, b.stiffness_n_per_m2, b.tangential_stiffness_n_per_m2);
       });
 }
 
 void bind_problem(py::module_& module) {
-  py::class_<Problem>(module, "Problem",
-                      "A cable between two fixed supports a and b in one vertical plane (x horizontal, "
-                      "z up) [m]: the input of solve_statics and of every solver.")
+  py::class_<Problem>(
+      module, "Problem",
+      "A cable between two fixed supports a and b in one vertical plane (x horizontal, "
+      "z up) [m]: the input of solve_statics and of every solver.")
       .def(py::init(&make_problem), py::arg("cable"), py::kw_only(), py::arg("b_m"),
            py::arg("a_m") = Point{0.0, 0.0}, py::arg("seabed") = py::none())
       .def_static("from_line", &make_line_problem, py::arg("line"), py::kw_only(), py::arg("b_m"),
                   py::arg("a_m") = Point{0.0, 0.0}, py::arg("seabed") = py::none(),
-                  "A general line (catena.Line) between supports a and b [m] (docs/explanation/physics.md, \"General lines\").")
-      .def_readwrite("cable", &Problem::cable, "the uniform cable (unused when the problem is a general line)")
+                  "A general line (catena.Line) between supports a and b [m] "
+                  "(docs/explanation/physics.md, \"General lines\").")
+      .def_readwrite("cable", &Problem::cable,
+                     "the uniform cable (unused when the problem is a general line)")
       .def_property_readonly(
-          "line", [](const Problem& p) -> std::optional<Line> {
+          "line",
+          [](const Problem& p) -> std::optional<Line> {
             if (p.is_uniform()) return std::nullopt;
             return p.line;
           },
           "the general line (a copy), or None for a uniform cable")
       .def_readonly("seabed", &Problem::seabed, "the seabed (catena.Seabed), or None")
-      .def_property_readonly("is_uniform", &Problem::is_uniform, "True for a uniform cable, False for a general line")
+      .def_property_readonly("is_uniform", &Problem::is_uniform,
+                             "True for a uniform cable, False for a general line")
       .def_property_readonly("length_m", &Problem::length_m, "total unstretched length [m]")
       .def_property(
           "a_m", [](const Problem& p) { return to_point(p.supports.a_m); },
@@ -125,28 +143,34 @@ void bind_problem(py::module_& module) {
       .def_property(
           "b_m", [](const Problem& p) { return to_point(p.supports.b_m); },
           [](Problem& p, const Point& b) { p.supports.b_m = to_vec2(b); }, "support b (x, z) [m]")
-      .def_property_readonly("form", [](const Problem& p) { return to_string(p.form); },
-                             "how it was specified: 'cable', 'taut_inclined', 'gale_xi', 'gale_sag'")
+      .def_property_readonly(
+          "form", [](const Problem& p) { return to_string(p.form); },
+          "how it was specified: 'cable', 'taut_inclined', 'gale_xi', 'gale_sag'")
       .def_property_readonly(
           "prescribed_forces_n",
           [](const Problem& p) -> std::optional<Point> {
             if (!p.prescribed_forces) return std::nullopt;
             return Point{p.prescribed_forces->horizontal_n, p.prescribed_forces->vertical_a_n};
           },
-          "(H, V_A) [N] when the static state is given by its end forces (builders of taut cables), else None")
+          "(H, V_A) [N] when the static state is given by its end forces (builders of taut "
+          "cables), else None")
       .def_static("taut_inclined", &make_taut_inclined_problem, py::arg("eps"), py::arg("phi_deg"),
                   py::arg("lambda2"), py::arg("mass_ratio") = 1.0,
-                  "Grinfogel's taut inclined cable from its dimensionless groups (docs/explanation/physics.md).")
+                  "Grinfogel's taut inclined cable from its dimensionless groups "
+                  "(docs/explanation/physics.md).")
       .def_static("gale_xi", &make_gale_xi_problem, py::arg("xi1"), py::arg("xi2"),
-                  "Gale's inextensible catenary between apex coordinates xi1 < xi2 (docs/explanation/physics.md).")
+                  "Gale's inextensible catenary between apex coordinates xi1 < xi2 "
+                  "(docs/explanation/physics.md).")
       .def_static("gale_sag", &make_gale_sag_problem, py::arg("h_over_b"), py::arg("sag_param"),
-                  "Gale's inextensible catenary from height/span and sag parameter (docs/explanation/physics.md).")
+                  "Gale's inextensible catenary from height/span and sag parameter "
+                  "(docs/explanation/physics.md).")
       .def("validate", &Problem::validate, "Raises catena.InvalidInput naming the bad field.")
       .def("__repr__", [](const Problem& p) {
-        return fmt::format("Problem(form='{}'{}, L={} m, a=({}, {}) m, b=({}, {}) m)", to_string(p.form),
-                           p.is_uniform() ? "" : fmt::format(", line of {} segments", p.line.segments.size()),
-                           p.length_m(), p.supports.a_m.x(), p.supports.a_m.y(), p.supports.b_m.x(),
-                           p.supports.b_m.y());
+        return fmt::format(
+            "Problem(form='{}'{}, L={} m, a=({}, {}) m, b=({}, {}) m)", to_string(p.form),
+            p.is_uniform() ? "" : fmt::format(", line of {} segments", p.line.segments.size()),
+            p.length_m(), p.supports.a_m.x(), p.supports.a_m.y(), p.supports.b_m.x(),
+            p.supports.b_m.y());
       });
 }
 
@@ -154,12 +178,16 @@ ForcingDirection parse_direction(const std::string& text) {
   if (text == "tangential") return ForcingDirection::Tangential;
   if (text == "normal") return ForcingDirection::Normal;
   if (text == "out_of_plane") return ForcingDirection::OutOfPlane;
-  throw InvalidInput(fmt::format("ForcedRequest.direction = \"{}\": must be \"tangential\", \"normal\", "
-                                 "\"out_of_plane\" or (x, z)", text));
+  throw InvalidInput(
+      fmt::format("ForcedRequest.direction = \"{}\": must be \"tangential\", \"normal\", "
+                  "\"out_of_plane\" or (x, z)",
+                  text));
 }
 
-ForcedRequest make_forced(const std::vector<double>& omegas_rad_s, const std::string& end,
-                          const py::object& direction, double amplitude_m) {
+ForcedRequest make_forced(const std::vector<double>& omegas_rad_s,
+                          const std::string& end,
+                          const py::object& direction,
+                          double amplitude_m) {
   ForcedRequest forced;
   forced.omegas_rad_s = omegas_rad_s;
   if (end != "a" && end != "b") {
@@ -177,21 +205,31 @@ ForcedRequest make_forced(const std::vector<double>& omegas_rad_s, const std::st
 }
 
 void bind_forced_request(py::module_& module) {
-  py::class_<ForcedRequest>(module, "ForcedRequest",
-                            "Harmonic forced response: one end displaced by amplitude_m * direction * "
-                            "cos(omega t), the other fixed; one solve per forcing frequency [rad/s].")
+  py::class_<ForcedRequest>(
+      module, "ForcedRequest",
+      "Harmonic forced response: one end displaced by amplitude_m * direction * "
+      "cos(omega t), the other fixed; one solve per forcing frequency [rad/s].")
       .def(py::init(&make_forced), py::arg("omegas_rad_s"), py::kw_only(), py::arg("end") = "b",
            py::arg("direction") = "tangential", py::arg("amplitude_m") = 0.01)
-      .def_property_readonly("omegas_rad_s", [](const ForcedRequest& f) { return owned_array(f.omegas_rad_s); },
-                             "forcing frequencies [rad/s]")
-      .def_property_readonly("end", [](const ForcedRequest& f) { return to_string(f.end); }, "'a' or 'b'")
-      .def_property_readonly("direction", [](const ForcedRequest& f) { return to_string(f.direction); })
-      .def_property_readonly("vector", [](const ForcedRequest& f) { return to_point(f.vector); },
-                             "the in-plane direction (x, z) when direction is a given vector")
-      .def_readonly("amplitude_m", &ForcedRequest::amplitude_m, "displacement amplitude at the driven end [m]");
+      .def_property_readonly(
+          "omegas_rad_s", [](const ForcedRequest& f) { return owned_array(f.omegas_rad_s); },
+          "forcing frequencies [rad/s]")
+      .def_property_readonly(
+          "end", [](const ForcedRequest& f) { return to_string(f.end); }, "'a' or 'b'")
+      .def_property_readonly("direction",
+                             [](const ForcedRequest& f) { return to_string(f.direction); })
+      .def_property_readonly(
+          "vector", [](const ForcedRequest& f) { return to_point(f.vector); },
+          "the in-plane direction (x, z) when direction is a given vector")
+      .def_readonly("amplitude_m", &ForcedRequest::amplitude_m,
+                    "displacement amplitude at the driven end [m]");
 }
 
-SolveRequest make_request(int inplane_modes, int outofplane_modes, bool shapes, int points, bool tension,
+SolveRequest make_request(int inplane_modes,
+                          int outofplane_modes,
+                          bool shapes,
+                          int points,
+                          bool tension,
                           std::optional<ForcedRequest> forced) {
   SolveRequest request;
   request.inplane_modes = inplane_modes;
@@ -205,24 +243,34 @@ SolveRequest make_request(int inplane_modes, int outofplane_modes, bool shapes, 
 }
 
 void bind_request(py::module_& module) {
-  py::class_<SolveRequest>(module, "Request", "What to compute (docs/reference/scene-format.md, [request]).")
+  py::class_<SolveRequest>(module, "Request",
+                           "What to compute (docs/reference/scene-format.md, [request]).")
       .def(py::init(&make_request), py::kw_only(), py::arg("inplane_modes") = 6,
            py::arg("outofplane_modes") = 0, py::arg("shapes") = false, py::arg("points") = 101,
            py::arg("tension") = false, py::arg("forced") = py::none())
-      .def_readwrite("inplane_modes", &SolveRequest::inplane_modes, "lowest in-plane modes to compute")
-      .def_readwrite("outofplane_modes", &SolveRequest::outofplane_modes, "lowest out-of-plane modes")
-      .def_readwrite("shapes", &SolveRequest::shapes, "mode shapes on `points` equally spaced stations")
-      .def_readwrite("points", &SolveRequest::points, "stations for shapes, tension and forced response")
+      .def_readwrite("inplane_modes", &SolveRequest::inplane_modes,
+                     "lowest in-plane modes to compute")
+      .def_readwrite("outofplane_modes", &SolveRequest::outofplane_modes,
+                     "lowest out-of-plane modes")
+      .def_readwrite("shapes", &SolveRequest::shapes,
+                     "mode shapes on `points` equally spaced stations")
+      .def_readwrite("points", &SolveRequest::points,
+                     "stations for shapes, tension and forced response")
       .def_readwrite("tension", &SolveRequest::tension, "dynamic tension of each mode")
       .def_readwrite("forced", &SolveRequest::forced, "a ForcedRequest or None")
-      .def("stations_m", [](const SolveRequest& r, double length_m) { return owned_array(r.stations_m(length_m)); },
-           py::arg("length_m"), "the stations s_j [m] for a cable of unstretched length length_m")
+      .def(
+          "stations_m",
+          [](const SolveRequest& r, double length_m) {
+            return owned_array(r.stations_m(length_m));
+          },
+          py::arg("length_m"), "the stations s_j [m] for a cable of unstretched length length_m")
       .def("validate", &SolveRequest::validate, "Raises catena.InvalidInput naming the bad field.")
       .def("__repr__", [](const SolveRequest& r) {
-        return fmt::format("Request(inplane_modes={}, outofplane_modes={}, shapes={}, points={}, tension={}, "
-                           "forced={})",
-                           r.inplane_modes, r.outofplane_modes, r.shapes ? "True" : "False", r.points,
-                           r.tension ? "True" : "False", r.forced ? "ForcedRequest(...)" : "None");
+        return fmt::format(
+            "Request(inplane_modes={}, outofplane_modes={}, shapes={}, points={}, tension={}, "
+            "forced={})",
+            r.inplane_modes, r.outofplane_modes, r.shapes ? "True" : "False", r.points,
+            r.tension ? "True" : "False", r.forced ? "ForcedRequest(...)" : "None");
       });
 }
 

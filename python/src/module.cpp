@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The extension module catena._catena; the package python/catena/__init__.py re-exports it with
 // the conveniences written in Python (docs/reference/python.md).
-#include "bindings.hpp"
-
 #include <algorithm>
 
+#include "bindings.hpp"
 #include "catena/core/version.hpp"
 
 namespace catena::python {
@@ -32,7 +31,9 @@ py::array_t<double> owned_array(const std::vector<double>& values) {
 
 PYBIND11_MODULE(_catena, module) {
   using namespace catena::python;
-  module.doc() = "Catena's library: linear cable dynamics by five independent solvers (docs/reference/python.md).";
+  module.doc() =
+      "Catena's library: linear cable dynamics by five independent solvers "
+      "(docs/reference/python.md).";
   module.attr("__version__") = catena::version();
   bind_errors(module);
   bind_line(module);

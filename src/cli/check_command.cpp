@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // `catena check RESULTS --scene SCENE`: another program's modal results against Catena's certified
 // reference for the same scene (docs/how-to/check.md).
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <memory>
 
 #include "catena/core/error.hpp"
@@ -29,7 +30,8 @@ struct CheckArguments {
 Scene read_one_scene(const std::string& path) {
   std::vector<Scene> scenes = read_scene_file(path);
   if (scenes.size() != 1) {
-    throw InvalidInput(fmt::format("{}: a sweep of {} scenes; catena check takes one scene", path, scenes.size()));
+    throw InvalidInput(
+        fmt::format("{}: a sweep of {} scenes; catena check takes one scene", path, scenes.size()));
   }
   return scenes.front();
 }
@@ -38,20 +40,24 @@ void print_check(const ExternalCheck& check) {
   for (const auto& reference : check.references) {
     fmt::print("reference {}: {}\n", to_string(reference.plane), reference.reason);
     if (reference.cross_check_relative >= 0.0) {
-      fmt::print("  shooting and fe agree to {:.2e} (largest relative difference)\n", reference.cross_check_relative);
+      fmt::print("  shooting and fe agree to {:.2e} (largest relative difference)\n",
+                 reference.cross_check_relative);
     }
   }
-  fmt::print("{:>12} {:>4} {:>6} {:>16} {:>16} {:>10} {:>10} {:>8} {:>8} {:>10}  {}\n", "plane", "mode", "catena",
-             "other f [Hz]", "catena f [Hz]", "estimate", "error", "MAC", "order", "bias", "verdict");
+  fmt::print("{:>12} {:>4} {:>6} {:>16} {:>16} {:>10} {:>10} {:>8} {:>8} {:>10}  {}\n", "plane",
+             "mode", "catena", "other f [Hz]", "catena f [Hz]", "estimate", "error", "MAC", "order",
+             "bias", "verdict");
   for (const auto& mode : check.modes) {
     const bool any = !mode.resolutions.empty();
     const auto& study = mode.study;
-    fmt::print("{:>12} {:>4} {:>6} {:>16} {:>16.10g} {:>10.2e} {:>10} {:>8} {:>8} {:>10}  {}\n", to_string(mode.plane),
-               mode.mode, mode.reference_index,
+    fmt::print("{:>12} {:>4} {:>6} {:>16} {:>16.10g} {:>10.2e} {:>10} {:>8} {:>8} {:>10}  {}\n",
+               to_string(mode.plane), mode.mode, mode.reference_index,
                any ? fmt::format("{:.10g}", mode.resolutions.back().omega_rad_s / (2 * kPi)) : "-",
                mode.reference_omega_rad_s / (2 * kPi), mode.reference_relative_estimate,
                any ? fmt::format("{:.3e}", mode.resolutions.back().relative_error) : "-",
-               any && mode.resolutions.back().mac ? fmt::format("{:.6f}", *mode.resolutions.back().mac) : "-",
+               any && mode.resolutions.back().mac
+                   ? fmt::format("{:.6f}", *mode.resolutions.back().mac)
+                   : "-",
                study && study->observed_order ? fmt::format("{:.3f}", *study->observed_order) : "-",
                study && study->bias_relative ? fmt::format("{:.3e}", *study->bias_relative) : "-",
                to_string(mode.verdict));
@@ -62,10 +68,12 @@ void print_check(const ExternalCheck& check) {
 int run_check(const CheckArguments& arguments) {
   ExternalCheckOptions options;
   options.rtol = arguments.rtol;
-  if (!(options.rtol > 0.0 && options.rtol < 1.0)) throw InvalidInput(fmt::format("--rtol {}: must be in (0, 1)", options.rtol));
+  if (!(options.rtol > 0.0 && options.rtol < 1.0))
+    throw InvalidInput(fmt::format("--rtol {}: must be in (0, 1)", options.rtol));
   if (!arguments.json.empty()) check_output_file(arguments.json);
   if (!arguments.out.empty()) check_output_directory(arguments.out);
-  const std::vector<ExternalMode> results = read_external_results(arguments.results, arguments.shapes);
+  const std::vector<ExternalMode> results =
+      read_external_results(arguments.results, arguments.shapes);
   const Scene scene = read_one_scene(arguments.scene);
   const SceneCheck checked = check_scene(results, scene, options);
   if (!checked.check) {
@@ -79,7 +87,9 @@ int run_check(const CheckArguments& arguments) {
   if (!arguments.json.empty()) write_check_json(arguments.json, check, sources);
   if (!arguments.out.empty()) {
     const CheckReportFiles files = write_check_report(check, sources, arguments.out);
-    if (!arguments.quiet) fmt::print("wrote {} and {} ({} figures)\n", files.markdown.string(), files.html.string(), files.figures);
+    if (!arguments.quiet)
+      fmt::print("wrote {} and {} ({} figures)\n", files.markdown.string(), files.html.string(),
+                 files.figures);
   }
   return check.any_failure() ? 1 : 0;
 }
@@ -94,29 +104,39 @@ void add_check_command(CLI::App& app, std::function<int()>& run) {
       "reference for the same scene: shooting or Richardson-extrapolated fe, whichever converged\n"
       "with the smaller error estimate (docs/how-to/check.md).\n"
       "Per mode: the other value, Catena's value and estimate, the relative error and a verdict\n"
-      "against --rtol; MAC when shapes are given; with three or more resolutions the observed order,\n"
-      "the extrapolated limit and its bias (\"converged\", \"converges, not yet within tolerance\",\n"
+      "against --rtol; MAC when shapes are given; with three or more resolutions the observed "
+      "order,\n"
+      "the extrapolated limit and its bias (\"converged\", \"converges, not yet within "
+      "tolerance\",\n"
       "\"converges to a wrong limit\").\n"
       "Exit 0 every mode within tolerance, 1 a mode beyond it (or converging to a wrong limit),\n"
       "2 bad input (the message names file, row and column), 3 no reference could be computed.");
-  command->add_option("results", arguments->results,
-                      "The other program's results: CSV with a header row, columns plane (in-plane,\n"
-                      "inplane, out-of-plane, outofplane; any case), mode (1-based within its plane),\n"
-                      "frequency_hz [Hz] or omega_rad_s [rad/s], optional resolution (mesh count, e.g.\n"
-                      "number of segments: larger = finer); or a .json file with the same fields and\n"
-                      "optional shapes (docs/how-to/check.md)")
+  command
+      ->add_option(
+          "results", arguments->results,
+          "The other program's results: CSV with a header row, columns plane (in-plane,\n"
+          "inplane, out-of-plane, outofplane; any case), mode (1-based within its plane),\n"
+          "frequency_hz [Hz] or omega_rad_s [rad/s], optional resolution (mesh count, e.g.\n"
+          "number of segments: larger = finer); or a .json file with the same fields and\n"
+          "optional shapes (docs/how-to/check.md)")
       ->required();
-  command->add_option("--scene", arguments->scene, "The scene the other program solved (TOML, docs/reference/scene-format.md)")
+  command
+      ->add_option("--scene", arguments->scene,
+                   "The scene the other program solved (TOML, docs/reference/scene-format.md)")
       ->required();
-  command->add_option("--shapes", arguments->shapes,
-                      "Mode shapes of CSV results, long format, one row per station: plane, mode,\n"
-                      "[resolution], station_s_m (unstretched arc length from end A [m]), and any of u, w\n"
-                      "(in-plane tangential and normal), v (out-of-plane) [any scale], tension_n [N]");
-  command->add_option("--rtol", arguments->rtol, "Relative tolerance on frequencies")->capture_default_str();
-  command->add_option("--json", arguments->json, "Write every number of the comparison as JSON to this file");
-  command->add_option("--out", arguments->out,
-                      "Write check.md, check.html (self-contained) and figures/*.svg (one convergence\n"
-                      "plot per mode with two or more resolutions) to this directory");
+  command->add_option(
+      "--shapes", arguments->shapes,
+      "Mode shapes of CSV results, long format, one row per station: plane, mode,\n"
+      "[resolution], station_s_m (unstretched arc length from end A [m]), and any of u, w\n"
+      "(in-plane tangential and normal), v (out-of-plane) [any scale], tension_n [N]");
+  command->add_option("--rtol", arguments->rtol, "Relative tolerance on frequencies")
+      ->capture_default_str();
+  command->add_option("--json", arguments->json,
+                      "Write every number of the comparison as JSON to this file");
+  command->add_option(
+      "--out", arguments->out,
+      "Write check.md, check.html (self-contained) and figures/*.svg (one convergence\n"
+      "plot per mode with two or more resolutions) to this directory");
   command->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
   command->callback([arguments, &run] { run = [arguments] { return run_check(*arguments); }; });
 }

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
-// `catena import moordyn DECK --out DIR`: MoorDyn lines as Catena scenes (docs/how-to/moordyn-import.md).
-#include <filesystem>
+// `catena import moordyn DECK --out DIR`: MoorDyn lines as Catena scenes
+// (docs/how-to/moordyn-import.md).
 #include <fmt/format.h>
+
+#include <filesystem>
 #include <memory>
 
 #include "catena/io/file_access.hpp"
@@ -30,7 +32,8 @@ void print_summary(const std::vector<ImportedScene>& scenes, const std::filesyst
     if (scene.reason.empty()) {
       std::string needs;
       for (const auto& need : scene.needs) needs += (needs.empty() ? " (needs " : "; ") + need;
-      fmt::print("{:<10} {}{}\n", line_list(scene.lines), path_text(out / scene.file_name), needs.empty() ? "" : needs + ")");
+      fmt::print("{:<10} {}{}\n", line_list(scene.lines), path_text(out / scene.file_name),
+                 needs.empty() ? "" : needs + ")");
     } else {
       fmt::print("{:<10} not converted: {}\n", line_list(scene.lines), scene.reason);
     }
@@ -43,9 +46,11 @@ int run_import(const ImportArguments& arguments) {
   const std::vector<ImportedScene> scenes =
       convert_moordyn_deck(deck, std::filesystem::path(arguments.deck).stem().string());
   for (const auto& scene : scenes) {
-    if (scene.reason.empty()) write_file_atomically(std::filesystem::path(arguments.out) / scene.file_name, scene.toml);
+    if (scene.reason.empty())
+      write_file_atomically(std::filesystem::path(arguments.out) / scene.file_name, scene.toml);
   }
-  if (!arguments.quiet && deck.lines.empty()) fmt::print("{}: the deck has no lines\n", arguments.deck);
+  if (!arguments.quiet && deck.lines.empty())
+    fmt::print("{}: the deck has no lines\n", arguments.deck);
   if (!arguments.quiet) print_summary(scenes, arguments.out);
   return 0;
 }
@@ -53,25 +58,30 @@ int run_import(const ImportArguments& arguments) {
 }  // namespace
 
 void add_import_command(CLI::App& app, std::function<int()>& run) {
-  CLI::App* command = app.add_subcommand("import", "Convert another program's input into Catena scenes");
+  CLI::App* command =
+      app.add_subcommand("import", "Convert another program's input into Catena scenes");
   command->require_subcommand(1);
   auto arguments = std::make_shared<ImportArguments>();
   CLI::App* moordyn = command->add_subcommand(
       "moordyn",
-      "Convert a MoorDyn input file (v1 or v2) into one scene per line, or per chain of lines joined\n"
-      "at free points (docs/how-to/moordyn-import.md). Each scene is the vertical plane through the line's\n"
+      "Convert a MoorDyn input file (v1 or v2) into one scene per line, or per chain of lines "
+      "joined\n"
+      "at free points (docs/how-to/moordyn-import.md). Each scene is the vertical plane through "
+      "the line's\n"
       "two held ends (Fixed/Anchor and Vessel/Coupled points), end A the lower. Conversions:\n"
       "weight = (MassDen - rho_w pi/4 Diam^2) g [N/m], added_mass = Ca rho_w pi/4 Diam^2 [kg/m],\n"
       "point weight = (M - rho_w V) g [N], seabed z = -WtrDpth, stiffness = kBot Diam [N/m/m];\n"
       "g = 9.80665 m/s^2 and rho_w = 1025 kg/m^3 unless the OPTIONS give g and rho/WtrDnsty.\n"
       "A single uniform line off the seabed becomes a [cable] scene (solvable today); chains,\n"
       "buoyant lines and lines on the seabed use [line]/[seabed] and say so in their header.\n"
-      "Lines attached to bodies or rods, meeting three at a point, with a free end or that may fail\n"
+      "Lines attached to bodies or rods, meeting three at a point, with a free end or that may "
+      "fail\n"
       "are listed with the reason; the rest still convert. Prints a summary table.\n"
       "Exit 0 when the deck was read (whatever could be converted), 2 for a deck that cannot be\n"
       "read (unknown section, missing column, non-numeric value: the line is named).");
   moordyn->add_option("deck", arguments->deck, "MoorDyn input file")->required();
-  moordyn->add_option("--out", arguments->out, "Directory for the scene files (created)")->required();
+  moordyn->add_option("--out", arguments->out, "Directory for the scene files (created)")
+      ->required();
   moordyn->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
   moordyn->callback([arguments, &run] { run = [arguments] { return run_import(*arguments); }; });
 }

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The `catena` command-line tool: solve a scene, run the verification suite, list solvers.
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <filesystem>
-#include <fmt/format.h>
 #include <functional>
 
 #include "catena/core/error.hpp"
@@ -20,9 +21,9 @@ int main(int argc, char** argv) {
       "be read or written (the path is named), 3 internal error\n"
       "or a numerical failure that left a scene unsolved (e.g. statics that do not converge).",
       "catena"};
-  app.set_version_flag("--version", fmt::format("catena {} (git {}, {}, {})", catena::version(),
-                                                catena::git_hash(), catena::compiler(),
-                                                catena::build_type()));
+  app.set_version_flag(
+      "--version", fmt::format("catena {} (git {}, {}, {})", catena::version(), catena::git_hash(),
+                               catena::compiler(), catena::build_type()));
   app.require_subcommand(1);
   std::function<int()> run;
   catena::cli::add_solve_command(app, run);
@@ -45,7 +46,8 @@ int main(int argc, char** argv) {
   } catch (const std::filesystem::filesystem_error& error) {
     // The environment, not catena: a file or directory that cannot be read or created.
     fmt::print(stderr, "error: {}{}: {}\n", catena::path_text(error.path1()),
-               error.path2().empty() ? "" : " -> " + catena::path_text(error.path2()), error.code().message());
+               error.path2().empty() ? "" : " -> " + catena::path_text(error.path2()),
+               error.code().message());
     return 2;
   } catch (const std::exception& error) {
     fmt::print(stderr, "internal error: {}\n", error.what());

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // `catena report`: the comparison report (Markdown, self-contained HTML, CSV, figures) from the
 // results JSON that `catena verify` wrote.
-#include <filesystem>
 #include <fmt/format.h>
+
+#include <filesystem>
 
 #include "catena/core/error.hpp"
 #include "catena/io/report.hpp"
@@ -31,13 +32,17 @@ void add_report_command(CLI::App& app, std::function<int()>& run) {
       "Write the comparison report from a results JSON of `catena verify`: report.md,\n"
       "report.html (self-contained, figures embedded), data/*.csv and figures/*.png.\n"
       "Figures need python3 with matplotlib; without them the report says so.");
-  command->add_option("--from", arguments->from, "Results JSON written by `catena verify`")->capture_default_str();
+  command->add_option("--from", arguments->from, "Results JSON written by `catena verify`")
+      ->capture_default_str();
   command->add_option("--out", arguments->out, "Output directory")->capture_default_str();
-  command->add_option("--data", arguments->data,
-                      "Data dir: figures.py, reference/published, benchmarks (default: share/catena next to\n"
-                      "the executable, else the build tree's)");
-  command->add_option("--tools", arguments->tools, "Directory of figures.py (default: the data dir)");
-  command->add_option("--python", arguments->python, "Python interpreter for the figures")->capture_default_str();
+  command->add_option(
+      "--data", arguments->data,
+      "Data dir: figures.py, reference/published, benchmarks (default: share/catena next to\n"
+      "the executable, else the build tree's)");
+  command->add_option("--tools", arguments->tools,
+                      "Directory of figures.py (default: the data dir)");
+  command->add_option("--python", arguments->python, "Python interpreter for the figures")
+      ->capture_default_str();
   command->add_flag("--no-figures", arguments->no_figures, "Skip the figures");
   command->callback([arguments, &run] {
     run = [arguments] {
@@ -48,8 +53,9 @@ void add_report_command(CLI::App& app, std::function<int()>& run) {
       options.python = arguments->python;
       options.figures = !arguments->no_figures;
       const ReportFiles files = write_report(arguments->from, options);
-      fmt::print("wrote {} and {} ({} figures{}; {} source-discrepancy rows); data in {}\n", files.markdown.string(),
-                 files.html.string(), files.figures, files.figures_note.empty() ? "" : "; " + files.figures_note,
+      fmt::print("wrote {} and {} ({} figures{}; {} source-discrepancy rows); data in {}\n",
+                 files.markdown.string(), files.html.string(), files.figures,
+                 files.figures_note.empty() ? "" : "; " + files.figures_note,
                  files.discrepancy_rows, files.data_dir.string());
       return 0;
     };

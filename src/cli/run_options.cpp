@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 // What `catena solve` and `catena verify` share: the tables a run checks against, and one rule for
 // the exit code.
-#include "cli/commands.hpp"
-
 #include "catena/io/findings_reader.hpp"
 #include "catena/io/tolerance_reader.hpp"
+#include "cli/commands.hpp"
 
 namespace catena::cli {
 
@@ -16,12 +15,13 @@ void add_table_options(CLI::App& command, TableArguments& tables) {
 }
 
 CLI::Option* add_time_limit_option(CLI::App& command, double& seconds, const std::string& what) {
-  return command.add_option("--time-limit", seconds,
-                     "Wall-clock limit in seconds " + what +
-                         " (default: none). When it runs out, each solver stops after the mode, "
-                         "forcing frequency or mesh level it is working on and reports what it has "
-                         "as 'no-convergence: time limit of X s reached after k of n ...'; the "
-                         "parts not started are reported with nothing done.");
+  return command.add_option(
+      "--time-limit", seconds,
+      "Wall-clock limit in seconds " + what +
+          " (default: none). When it runs out, each solver stops after the mode, "
+          "forcing frequency or mesh level it is working on and reports what it has "
+          "as 'no-convergence: time limit of X s reached after k of n ...'; the "
+          "parts not started are reported with nothing done.");
 }
 
 void apply_time_limit(const CLI::Option& option, double seconds, SceneRunOptions& options) {
@@ -32,9 +32,10 @@ void apply_time_limit(const CLI::Option& option, double seconds, SceneRunOptions
 
 SceneRunOptions run_options_with_tables(const TableArguments& tables) {
   SceneRunOptions options;
-  options.tolerances =
-      tables.tolerances.empty() ? builtin_tolerance_table() : read_tolerance_file(tables.tolerances);
-  options.findings = tables.findings.empty() ? builtin_findings_table() : read_findings_file(tables.findings);
+  options.tolerances = tables.tolerances.empty() ? builtin_tolerance_table()
+                                                 : read_tolerance_file(tables.tolerances);
+  options.findings =
+      tables.findings.empty() ? builtin_findings_table() : read_findings_file(tables.findings);
   return options;
 }
 

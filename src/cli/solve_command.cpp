@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 // `catena solve SCENE [--json FILE]`: one scene (or one sweep), every applicable solver.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <utility>
-#include <fmt/format.h>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "catena/core/error.hpp"
@@ -46,22 +47,30 @@ void print_modes(const ModalResult& result, const char* title) {
 
 void print_cable(const Problem& problem) {
   const CableProperties& c = problem.cable;
-  fmt::print("  cable: L = {} m, W0 = {} N/m, EA = {} N, m = {} kg/m, ma = {} kg/m; a = ({}, {}) m, "
-             "b = ({:.10g}, {:.10g}) m\n",
-             c.length_m, c.weight_n_per_m, c.is_inextensible() ? "inf" : fmt::format("{:g}", c.axial_stiffness_n),
-             c.mass_kg_per_m, c.added_mass_kg_per_m, problem.supports.a_m.x(), problem.supports.a_m.y(),
-             problem.supports.b_m.x(), problem.supports.b_m.y());
+  fmt::print(
+      "  cable: L = {} m, W0 = {} N/m, EA = {} N, m = {} kg/m, ma = {} kg/m; a = ({}, {}) m, "
+      "b = ({:.10g}, {:.10g}) m\n",
+      c.length_m, c.weight_n_per_m,
+      c.is_inextensible() ? "inf" : fmt::format("{:g}", c.axial_stiffness_n), c.mass_kg_per_m,
+      c.added_mass_kg_per_m, problem.supports.a_m.x(), problem.supports.a_m.y(),
+      problem.supports.b_m.x(), problem.supports.b_m.y());
 }
 
 void print_groups(const DimensionlessGroups& g) {
-  fmt::print("  groups: phi_a = {:.6g} deg, T0 = {:.10g} N, eps = {:.6g}, lambda^2 = {}, h = m/M = {:.6g}\n",
-             g.chord_angle_rad * 180.0 / kPi, g.t0_n, g.eps,
-             std::isfinite(g.lambda2) ? fmt::format("{:.6g}", g.lambda2) : std::string("inf"), g.mass_ratio);
+  fmt::print(
+      "  groups: phi_a = {:.6g} deg, T0 = {:.10g} N, eps = {:.6g}, lambda^2 = {}, h = m/M = "
+      "{:.6g}\n",
+      g.chord_angle_rad * 180.0 / kPi, g.t0_n, g.eps,
+      std::isfinite(g.lambda2) ? fmt::format("{:.6g}", g.lambda2) : std::string("inf"),
+      g.mass_ratio);
   if (g.has_apex_parameterization) {
-    fmt::print("  Gale: a = H/W0 = {:.10g} m, xi1 = {:.6g}, xi2 = {:.6g}, sigma1 = {:.6g}, sigma2 = {:.6g}{}{}\n",
-               g.catenary_parameter_m, g.xi1, g.xi2, g.sigma1, g.sigma2,
-               g.height_over_span ? fmt::format(", h/b = {:.6g}", *g.height_over_span) : std::string(),
-               g.sag_parameter ? fmt::format(", sag parameter = {:.6g}", *g.sag_parameter) : std::string());
+    fmt::print(
+        "  Gale: a = H/W0 = {:.10g} m, xi1 = {:.6g}, xi2 = {:.6g}, sigma1 = {:.6g}, sigma2 = "
+        "{:.6g}{}{}\n",
+        g.catenary_parameter_m, g.xi1, g.xi2, g.sigma1, g.sigma2,
+        g.height_over_span ? fmt::format(", h/b = {:.6g}", *g.height_over_span) : std::string(),
+        g.sag_parameter ? fmt::format(", sag parameter = {:.6g}", *g.sag_parameter)
+                        : std::string());
   }
 }
 
@@ -70,9 +79,11 @@ void print_line_row(const StaticSolution& statics, const std::string& what, doub
   const Vec2 r = statics.position_m(s);
   const double before = statics.vertical_force_before_n(s);
   const double after = statics.vertical_force_n(s);
-  fmt::print("    {:<12} {:>12.6g} {:>12.6g} {:>12.6g} {:>13.7g} {:>13.7g} {:>13.7g} {:>12.6g}\n", what, s, r.x(), r.y(),
-             statics.horizontal_force_n(), after, statics.tension_n(s), statics.stretched_length_m(s));
-  if (before != after) fmt::print("    {:<12} (V jumps by the point's weight: {:.7g} N before it)\n", "", before);
+  fmt::print("    {:<12} {:>12.6g} {:>12.6g} {:>12.6g} {:>13.7g} {:>13.7g} {:>13.7g} {:>12.6g}\n",
+             what, s, r.x(), r.y(), statics.horizontal_force_n(), after, statics.tension_n(s),
+             statics.stretched_length_m(s));
+  if (before != after)
+    fmt::print("    {:<12} (V jumps by the point's weight: {:.7g} N before it)\n", "", before);
 }
 
 // The statics table of a general line: both ends, every joint and every point in order of s.
@@ -82,16 +93,19 @@ void print_line_statics(const Problem& problem, const StaticSolution& statics) {
              line.segments.size(), line.points.size(), line.length_m(), problem.supports.a_m.x(),
              problem.supports.a_m.y(), problem.supports.b_m.x(), problem.supports.b_m.y());
   fmt::print("  statics: {}\n", statics.brief_report());
-  fmt::print("    {:<12} {:>12} {:>12} {:>12} {:>13} {:>13} {:>13} {:>12}\n", "where", "s [m]", "x [m]", "z [m]",
-             "H [N]", "V [N]", "T [N]", "stretched [m]");
+  fmt::print("    {:<12} {:>12} {:>12} {:>12} {:>13} {:>13} {:>13} {:>12}\n", "where", "s [m]",
+             "x [m]", "z [m]", "H [N]", "V [N]", "T [N]", "stretched [m]");
   std::vector<std::pair<double, std::string>> rows{{0.0, "end a"}, {line.length_m(), "end b"}};
-  for (std::size_t k = 1; k < line.segments.size(); ++k) rows.emplace_back(line.segment_start_m(k), fmt::format("joint {}", k));
-  for (std::size_t i = 0; i < line.points.size(); ++i) rows.emplace_back(line.points[i].s_m, fmt::format("point {}", i));
-  std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t k = 1; k < line.segments.size(); ++k)
+    rows.emplace_back(line.segment_start_m(k), fmt::format("joint {}", k));
+  for (std::size_t i = 0; i < line.points.size(); ++i)
+    rows.emplace_back(line.points[i].s_m, fmt::format("point {}", i));
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   for (const auto& [s, what] : rows) print_line_row(statics, what, s);
   const double low = statics.lowest_point_s_m();
-  fmt::print("  lowest point: s = {:.6g} m, x = {:.6g} m, z = {:.6g} m\n", low, statics.position_m(low).x(),
-             statics.position_m(low).y());
+  fmt::print("  lowest point: s = {:.6g} m, x = {:.6g} m, z = {:.6g} m\n", low,
+             statics.position_m(low).x(), statics.position_m(low).y());
 }
 
 void print_result(const SceneResult& result) {
@@ -121,7 +135,8 @@ void print_result(const SceneResult& result) {
   }
   for (const auto& check : result.checks) {
     if (check.verdict == Verdict::Fail || check.verdict == Verdict::SourceDiscrepancy) {
-      fmt::print("  check {} [{}] {}: {}\n", check.check, to_string(check.verdict), check.compare, check.detail);
+      fmt::print("  check {} [{}] {}: {}\n", check.check, to_string(check.verdict), check.compare,
+                 check.detail);
     }
   }
 }
@@ -133,16 +148,21 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
   CLI::App* command = app.add_subcommand(
       "solve",
       "Solve one scene file: statics, dimensionless groups and every applicable solver.\n"
-      "Prints a summary; --json writes the full results (layout in docs/reference/json-layout.md).\n"
-      "On a terminal, long solves show their progress on stderr (\"shooting: in-plane modes 37/600\").");
-  command->add_option("scene", arguments->scene,
-                      "Scene file (TOML, a regular file of at most 1 MiB; format and limits in\n"
-                      "docs/reference/scene-format.md)")
+      "Prints a summary; --json writes the full results (layout in "
+      "docs/reference/json-layout.md).\n"
+      "On a terminal, long solves show their progress on stderr (\"shooting: in-plane modes "
+      "37/600\").");
+  command
+      ->add_option("scene", arguments->scene,
+                   "Scene file (TOML, a regular file of at most 1 MiB; format and limits in\n"
+                   "docs/reference/scene-format.md)")
       ->required();
-  command->add_option("--json", arguments->json, "Write the results as JSON to this file ('-' for stdout); checked to be\n"
+  command->add_option("--json", arguments->json,
+                      "Write the results as JSON to this file ('-' for stdout); checked to be\n"
                       "writable before solving, written whole or not at all");
-  command->add_option("--solver", arguments->solvers,
-                      "Run only this solver (repeatable): fe, shooting, frobenius, asymptotic, airy");
+  command->add_option(
+      "--solver", arguments->solvers,
+      "Run only this solver (repeatable): fe, shooting, frobenius, asymptotic, airy");
   command->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
   arguments->time_limit = add_time_limit_option(
       *command, arguments->time_limit_s,
@@ -151,7 +171,8 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
   command->callback([arguments, &run] {
     run = [arguments] {
       for (const auto& name : arguments->solvers) {
-        if (!find_solver(name)) throw InvalidInput(fmt::format("--solver {}: unknown solver", name));
+        if (!find_solver(name))
+          throw InvalidInput(fmt::format("--solver {}: unknown solver", name));
       }
       // A bad --json fails before the solving, not after it.
       if (!arguments->json.empty() && arguments->json != "-") check_output_file(arguments->json);

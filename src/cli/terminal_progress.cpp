@@ -10,7 +10,10 @@ namespace catena::cli {
 TerminalProgress::TerminalProgress(bool enabled, std::FILE* stream)
     : stream_(stream), active_(enabled && isatty(fileno(stream))) {}
 
-void TerminalProgress::update(const std::string& solver, const std::string& part, long done, long total) {
+void TerminalProgress::update(const std::string& solver,
+                              const std::string& part,
+                              long done,
+                              long total) {
   if (!active_) return;
   const auto now = std::chrono::steady_clock::now();
   // Redrawing costs a write per call, and a forced sweep may call this a million times.

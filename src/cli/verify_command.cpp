@@ -1,25 +1,26 @@
 // SPDX-License-Identifier: MIT
 // `catena verify`: every scene under a directory, on all cores, with a summary and report.json.
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <charconv>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <optional>
-#include <fmt/format.h>
 #include <string>
 #include <thread>
-#include <unistd.h>
 #include <vector>
 
 #include "catena/core/error.hpp"
 #include "catena/io/file_access.hpp"
 #include "catena/io/json_writer.hpp"
 #include "catena/io/scene_reader.hpp"
+#include "catena/verification/independence.hpp"
 #include "catena/verification/mutation.hpp"
 #include "catena/verification/scene_runner.hpp"
-#include "catena/verification/independence.hpp"
 #include "catena/verification/suite.hpp"
 #include "cli/commands.hpp"
 
@@ -45,22 +46,28 @@ struct VerifyArguments {
 std::optional<Perturbation> parse_perturbation(const std::string& text) {
   if (text.empty()) return std::nullopt;
   auto fail = [&](const std::string& why) {
-    throw InvalidInput(fmt::format("--perturb {}: {} (expected SOLVER:inplane|outofplane:MODE:RELATIVE, MODE in "
-                                   "[1, {}], RELATIVE finite, non-zero and > -1)", text, why, kMaxRequestModes));
+    throw InvalidInput(
+        fmt::format("--perturb {}: {} (expected SOLVER:inplane|outofplane:MODE:RELATIVE, MODE in "
+                    "[1, {}], RELATIVE finite, non-zero and > -1)",
+                    text, why, kMaxRequestModes));
   };
   std::vector<std::string> parts(1);
   for (char c : text) {
-    if (c == ':') parts.emplace_back();
-    else parts.back().push_back(c);
+    if (c == ':')
+      parts.emplace_back();
+    else
+      parts.back().push_back(c);
   }
   if (parts.size() != 4) fail("expected 4 parts separated by ':'");
   Perturbation p;
   if (!find_solver(parts[0])) fail("unknown solver '" + parts[0] + "'");
   p.solver = parts[0];
-  if (parts[1] != "inplane" && parts[1] != "outofplane") fail("plane must be inplane or outofplane");
+  if (parts[1] != "inplane" && parts[1] != "outofplane")
+    fail("plane must be inplane or outofplane");
   p.plane = parts[1] == "inplane" ? Plane::InPlane : Plane::OutOfPlane;
   long mode = 0;
-  const auto [mode_end, mode_error] = std::from_chars(parts[2].data(), parts[2].data() + parts[2].size(), mode);
+  const auto [mode_end, mode_error] =
+      std::from_chars(parts[2].data(), parts[2].data() + parts[2].size(), mode);
   if (mode_error != std::errc() || mode_end != parts[2].data() + parts[2].size() || mode < 1 ||
       mode > kMaxRequestModes) {
     fail("mode '" + parts[2] + "' out of range");
@@ -68,20 +75,25 @@ std::optional<Perturbation> parse_perturbation(const std::string& text) {
   p.mode = static_cast<int>(mode);
   char* relative_end = nullptr;
   p.relative = std::strtod(parts[3].c_str(), &relative_end);
-  if (parts[3].empty() || *relative_end != '\0' || !std::isfinite(p.relative) || p.relative == 0.0 ||
-      p.relative <= -1.0) {
+  if (parts[3].empty() || *relative_end != '\0' || !std::isfinite(p.relative) ||
+      p.relative == 0.0 || p.relative <= -1.0) {
     fail("relative change '" + parts[3] + "' invalid");
   }
   return p;
 }
 
 // Before the solving: some scene must ask for that many modes in that plane.
-void check_perturbation_requested(const Perturbation& p, const std::vector<Scene>& scenes, const std::string& text) {
+void check_perturbation_requested(const Perturbation& p,
+                                  const std::vector<Scene>& scenes,
+                                  const std::string& text) {
   for (const auto& scene : scenes) {
-    if ((p.plane == Plane::InPlane ? scene.request.inplane_modes : scene.request.outofplane_modes) >= p.mode) return;
+    if ((p.plane == Plane::InPlane ? scene.request.inplane_modes
+                                   : scene.request.outofplane_modes) >= p.mode)
+      return;
   }
-  throw InvalidInput(fmt::format("--perturb {}: no scene asks for {} {} modes, so nothing would be perturbed", text,
-                                 p.mode, p.plane == Plane::InPlane ? "in-plane" : "out-of-plane"));
+  throw InvalidInput(
+      fmt::format("--perturb {}: no scene asks for {} {} modes, so nothing would be perturbed",
+                  text, p.mode, p.plane == Plane::InPlane ? "in-plane" : "out-of-plane"));
 }
 
 // True when some scene gave the perturbed solver the perturbed mode (so it was changed).
@@ -134,10 +146,18 @@ std::string solver_column(const SceneResult& result) {
   for (const auto& output : result.outputs) {
     const char* mark = "?";
     switch (output.summary.termination) {
-      case Termination::Converged: mark = "ok"; break;
-      case Termination::NoConvergence: mark = "partial"; break;
-      case Termination::NumericalFailure: mark = "FAILED"; break;
-      case Termination::NotApplicable: mark = "n/a"; break;
+      case Termination::Converged:
+        mark = "ok";
+        break;
+      case Termination::NoConvergence:
+        mark = "partial";
+        break;
+      case Termination::NumericalFailure:
+        mark = "FAILED";
+        break;
+      case Termination::NotApplicable:
+        mark = "n/a";
+        break;
     }
     if (output.summary.termination == Termination::NotApplicable) continue;
     text += fmt::format("{}{}:{}", text.empty() ? "" : " ", output.solver, mark);
@@ -148,7 +168,8 @@ std::string solver_column(const SceneResult& result) {
 // One line per scene (unless quiet), then one line per failed check.
 void print_table(const std::vector<SceneResult>& results, bool quiet) {
   if (!quiet) {
-    fmt::print("{:<48} {:>8} {:>7} {:>9}  {}\n", "scene", "checks", "failed", "time [ms]", "solvers");
+    fmt::print("{:<48} {:>8} {:>7} {:>9}  {}\n", "scene", "checks", "failed", "time [ms]",
+               "solvers");
     for (const auto& result : results) {
       fmt::print("{:<48} {:>8} {:>7} {:>9.1f}  {}\n", result.scene.name, result.checks.size(),
                  result.failed_checks(), result.wall_time_s * 1e3,
@@ -158,9 +179,10 @@ void print_table(const std::vector<SceneResult>& results, bool quiet) {
   for (const auto& result : results) {
     for (const auto& check : result.checks) {
       if (check.verdict != Verdict::Fail) continue;
-      fmt::print("FAIL {} / {} / {}{}: measured {:.3e} > tolerance {:.3e}: {}{}\n", result.scene.name,
-                 check.check, check.compare, check.mode ? fmt::format(" mode {}", check.mode) : "",
-                 check.measured, check.tolerance, check.detail,
+      fmt::print("FAIL {} / {} / {}{}: measured {:.3e} > tolerance {:.3e}: {}{}\n",
+                 result.scene.name, check.check, check.compare,
+                 check.mode ? fmt::format(" mode {}", check.mode) : "", check.measured,
+                 check.tolerance, check.detail,
                  check.tolerance_reason.empty() ? "" : "; tolerance: " + check.tolerance_reason);
     }
   }
@@ -176,24 +198,33 @@ void print_mutation(const MutationRun& run) {
   }
   fmt::print("mutation score (docs/explanation/mutation.md):\n");
   for (const auto& [solver, tally] : by_solver) {
-    fmt::print("  {:<11} {:>6} made, {:>6} caught, {:>6} uncaught ({:.1f}%)\n", solver, tally.made, tally.caught,
-               tally.made - tally.caught, tally.made ? 100.0 * tally.caught / tally.made : 100.0);
+    fmt::print("  {:<11} {:>6} made, {:>6} caught, {:>6} uncaught ({:.1f}%)\n", solver, tally.made,
+               tally.caught, tally.made - tally.caught,
+               tally.made ? 100.0 * tally.caught / tally.made : 100.0);
   }
   const MutationTally exact = run.exact_with_witness();
-  fmt::print("  exact solvers where another exact solver ran: {} of {} caught, {} uncaught; {:.1f} s on {} threads\n",
-             exact.caught, exact.made, exact.made - exact.caught, run.wall_time_s, run.threads);
+  fmt::print(
+      "  exact solvers where another exact solver ran: {} of {} caught, {} uncaught; {:.1f} s on "
+      "{} threads\n",
+      exact.caught, exact.made, exact.made - exact.caught, run.wall_time_s, run.threads);
   const MutationTally beyond = run.exact_beyond_estimate();
-  fmt::print("  of those, changes larger than the mutated value's own error estimate: {} of {} caught, {} uncaught\n",
-             beyond.caught, beyond.made, beyond.made - beyond.caught);
+  fmt::print(
+      "  of those, changes larger than the mutated value's own error estimate: {} of {} caught, {} "
+      "uncaught\n",
+      beyond.caught, beyond.made, beyond.made - beyond.caught);
 }
 
 // The mutation run over the solved results (nothing is re-solved), with its progress.
-std::optional<MutationRun> mutation_run(const VerifyArguments& arguments, const std::vector<SceneResult>& results,
-                                        const SceneRunOptions& options, int jobs, bool progress) {
+std::optional<MutationRun> mutation_run(const VerifyArguments& arguments,
+                                        const std::vector<SceneResult>& results,
+                                        const SceneRunOptions& options,
+                                        int jobs,
+                                        bool progress) {
   if (!arguments.mutation) return std::nullopt;
-  MutationRun run = run_mutations(results, jobs, options, [&](std::size_t done, std::size_t total, const std::string& name) {
-    if (progress) fmt::print(stderr, "\r\033[K[mutation {}/{}] {}", done, total, name);
-  });
+  MutationRun run = run_mutations(
+      results, jobs, options, [&](std::size_t done, std::size_t total, const std::string& name) {
+        if (progress) fmt::print(stderr, "\r\033[K[mutation {}/{}] {}", done, total, name);
+      });
   if (progress) fmt::print(stderr, "\r\033[K");
   return run;
 }
@@ -205,26 +236,32 @@ int run_verify(const VerifyArguments& arguments) {
   SceneFiles files = read_all(list_scene_files(arguments.scenes), arguments.filter);
   const std::vector<Scene>& scenes = files.scenes;
   if (scenes.empty() && files.unreadable.empty()) {
-    throw InvalidInput(fmt::format("no scenes under {} match '{}'", arguments.scenes, arguments.filter));
+    throw InvalidInput(
+        fmt::format("no scenes under {} match '{}'", arguments.scenes, arguments.filter));
   }
 
-  const int jobs = arguments.jobs > 0 ? arguments.jobs
-                                      : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int jobs = arguments.jobs > 0
+                       ? arguments.jobs
+                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const bool progress = !arguments.quiet && isatty(STDERR_FILENO);
   SceneRunOptions run_options = run_options_with_tables(arguments.tables);
   run_options.perturbation = parse_perturbation(arguments.perturb);
   apply_time_limit(*arguments.time_limit, arguments.time_limit_s, run_options);
-  if (run_options.perturbation) check_perturbation_requested(*run_options.perturbation, scenes, arguments.perturb);
-  std::vector<SceneResult> results =
-      run_scenes(scenes, jobs, run_options, [&](std::size_t done, std::size_t total, const std::string& name) {
+  if (run_options.perturbation)
+    check_perturbation_requested(*run_options.perturbation, scenes, arguments.perturb);
+  std::vector<SceneResult> results = run_scenes(
+      scenes, jobs, run_options, [&](std::size_t done, std::size_t total, const std::string& name) {
         if (progress) fmt::print(stderr, "\r\033[K[{}/{}] {}", done, total, name);
       });
   if (progress) fmt::print(stderr, "\r\033[K");
   if (run_options.perturbation && !perturbation_applied(*run_options.perturbation, results)) {
-    throw InvalidInput(fmt::format("--perturb {}: no scene gave solver {} that mode, so nothing was perturbed "
-                                   "and the run could not fail", arguments.perturb, run_options.perturbation->solver));
+    throw InvalidInput(
+        fmt::format("--perturb {}: no scene gave solver {} that mode, so nothing was perturbed "
+                    "and the run could not fail",
+                    arguments.perturb, run_options.perturbation->solver));
   }
-  const std::optional<MutationRun> mutation = mutation_run(arguments, results, run_options, jobs, progress);
+  const std::optional<MutationRun> mutation =
+      mutation_run(arguments, results, run_options, jobs, progress);
   for (auto& result : files.unreadable) results.push_back(std::move(result));
 
   int failed_checks = 0, total_checks = 0, errors = 0, discrepancies = 0;
@@ -232,21 +269,27 @@ int run_verify(const VerifyArguments& arguments) {
     failed_checks += result.failed_checks();
     total_checks += static_cast<int>(result.checks.size());
     errors += !result.error.empty();
-    for (const auto& check : result.checks) discrepancies += check.verdict == Verdict::SourceDiscrepancy;
+    for (const auto& check : result.checks)
+      discrepancies += check.verdict == Verdict::SourceDiscrepancy;
   }
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   print_table(results, arguments.quiet);
   write_results_json(report, results, mutation ? &*mutation : nullptr);
   if (mutation) print_mutation(*mutation);
-  fmt::print("{} scenes, {} checks, {} failed, {} source discrepancies, {} scene errors; {:.1f} s on {} "
-             "threads; wrote {}\n",
-             results.size(), total_checks, failed_checks, discrepancies, errors, elapsed, jobs,
-             report.string());
+  fmt::print(
+      "{} scenes, {} checks, {} failed, {} source discrepancies, {} scene errors; {:.1f} s on {} "
+      "threads; wrote {}\n",
+      results.size(), total_checks, failed_checks, discrepancies, errors, elapsed, jobs,
+      report.string());
   const IndependenceTally independence = tally_independence(results);
-  fmt::print("identity checks (two values from shared code): {}; pairs not compared (shared computation): {}\n",
-             independence.identity_checks, independence.shared_not_compared);
-  if (!files.unreadable.empty()) fmt::print(stderr, "{} scene file(s) could not be read:\n", files.unreadable.size());
+  fmt::print(
+      "identity checks (two values from shared code): {}; pairs not compared (shared computation): "
+      "{}\n",
+      independence.identity_checks, independence.shared_not_compared);
+  if (!files.unreadable.empty())
+    fmt::print(stderr, "{} scene file(s) could not be read:\n", files.unreadable.size());
   for (const auto& result : results) {
     if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
   }
@@ -263,24 +306,31 @@ void add_verify_command(CLI::App& app, std::function<int()>& run) {
       "cross-checked; prints a summary and writes <out>/report.json. Exit 1 if a check fails.\n"
       "A *.toml entry that cannot be read (dangling symlink, FIFO, too large, bad TOML) is a\n"
       "scene error: the other scenes still run, the report is written, and the exit code is 2.");
-  command->add_option("--scenes", arguments->scenes, "Directory of scene files (searched recursively)")
+  command
+      ->add_option("--scenes", arguments->scenes, "Directory of scene files (searched recursively)")
       ->capture_default_str();
-  command->add_option("--out", arguments->out, "Directory for report.json (checked to be writable before\n"
-                      "the solving; the file is written whole or not at all)")->capture_default_str();
-  command->add_option("--filter", arguments->filter, "Only scenes whose name or file contains this text");
+  command
+      ->add_option("--out", arguments->out,
+                   "Directory for report.json (checked to be writable before\n"
+                   "the solving; the file is written whole or not at all)")
+      ->capture_default_str();
+  command->add_option("--filter", arguments->filter,
+                      "Only scenes whose name or file contains this text");
   command->add_option("--jobs,-j", arguments->jobs, "Worker threads (default: all cores)");
   command->add_flag("--quiet,-q", arguments->quiet, "Print only failures and the closing line");
-  command->add_flag("--mutation", arguments->mutation,
-                    "Also measure the mutation score: make one result at a time wrong (a frequency by\n"
-                    "10x the solver's accuracy target, a shape by a mode mix, a forced tension by 1e-4),\n"
-                    "re-run that scene's checks and count the mutations a check catches; printed and\n"
-                    "written to report.json (docs/explanation/mutation.md). Does not change the exit code");
-  command->add_option("--perturb", arguments->perturb,
-                      "Testing the harness: multiply one frequency of one solver by (1 + RELATIVE),\n"
-                      "as SOLVER:inplane|outofplane:MODE:RELATIVE; the run must then fail. Exit 2\n"
-                      "when no scene gives that solver that mode (nothing would be perturbed)");
-  arguments->time_limit = add_time_limit_option(
-      *command, arguments->time_limit_s, "for each scene, from the start of its statics");
+  command->add_flag(
+      "--mutation", arguments->mutation,
+      "Also measure the mutation score: make one result at a time wrong (a frequency by\n"
+      "10x the solver's accuracy target, a shape by a mode mix, a forced tension by 1e-4),\n"
+      "re-run that scene's checks and count the mutations a check catches; printed and\n"
+      "written to report.json (docs/explanation/mutation.md). Does not change the exit code");
+  command->add_option(
+      "--perturb", arguments->perturb,
+      "Testing the harness: multiply one frequency of one solver by (1 + RELATIVE),\n"
+      "as SOLVER:inplane|outofplane:MODE:RELATIVE; the run must then fail. Exit 2\n"
+      "when no scene gives that solver that mode (nothing would be perturbed)");
+  arguments->time_limit = add_time_limit_option(*command, arguments->time_limit_s,
+                                                "for each scene, from the start of its statics");
   add_table_options(*command, arguments->tables);
   command->callback([arguments, &run] { run = [arguments] { return run_verify(*arguments); }; });
 }

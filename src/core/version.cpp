@@ -14,7 +14,8 @@ std::string compiler() { return build_info::kCompiler; }
 std::string build_type() { return build_info::kBuildType; }
 
 std::string provenance() {
-  return "catena " + version() + " (git " + git_hash() + ", " + compiler() + ", " + build_type() + ")";
+  return "catena " + version() + " (git " + git_hash() + ", " + compiler() + ", " + build_type() +
+         ")";
 }
 
 std::string utc_timestamp() {

@@ -26,11 +26,13 @@ json reference_json(const CertifiedReference& reference) {
                      {"frequency_hz", mode.omega_rad_s * kRadPerSecondToHz},
                      {"relative_error_estimate", mode.relative_error_estimate}});
   }
-  return {{"plane", to_string(reference.plane)},
-          {"solver", reference.solver},
-          {"reason", reference.reason},
-          {"shooting_vs_fe_relative", reference.cross_check_relative < 0 ? json(nullptr) : json(reference.cross_check_relative)},
-          {"modes", modes}};
+  return {
+      {"plane", to_string(reference.plane)},
+      {"solver", reference.solver},
+      {"reason", reference.reason},
+      {"shooting_vs_fe_relative",
+       reference.cross_check_relative < 0 ? json(nullptr) : json(reference.cross_check_relative)},
+      {"modes", modes}};
 }
 
 json study_json(const ConvergenceStudy& study) {
@@ -81,20 +83,23 @@ std::string check_to_json(const ExternalCheck& check, const CheckSources& source
     modes.push_back(mode_json(mode));
     failed += is_failure(mode.verdict) ? 1 : 0;
   }
-  const json document = {{"catena", provenance()},
-                         {"created_utc", utc_timestamp()},
-                         {"scene", {{"name", sources.scene_name}, {"file", sources.scene_file}}},
-                         {"results_file", sources.results_file},
-                         {"shapes_file", sources.shapes_file.empty() ? json(nullptr) : json(sources.shapes_file)},
-                         {"rtol", check.options.rtol},
-                         {"order_stability", check.options.order_stability},
-                         {"references", references},
-                         {"modes", modes},
-                         {"failed_modes", failed}};
+  const json document = {
+      {"catena", provenance()},
+      {"created_utc", utc_timestamp()},
+      {"scene", {{"name", sources.scene_name}, {"file", sources.scene_file}}},
+      {"results_file", sources.results_file},
+      {"shapes_file", sources.shapes_file.empty() ? json(nullptr) : json(sources.shapes_file)},
+      {"rtol", check.options.rtol},
+      {"order_stability", check.options.order_stability},
+      {"references", references},
+      {"modes", modes},
+      {"failed_modes", failed}};
   return document.dump(2);
 }
 
-void write_check_json(const std::filesystem::path& path, const ExternalCheck& check, const CheckSources& sources) {
+void write_check_json(const std::filesystem::path& path,
+                      const ExternalCheck& check,
+                      const CheckSources& sources) {
   write_file_atomically(path, check_to_json(check, sources) + "\n");
 }
 

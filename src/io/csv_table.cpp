@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "catena/io/csv_table.hpp"
 
-#include <charconv>
 #include <fmt/format.h>
+
+#include <charconv>
 #include <sstream>
 
 #include "catena/core/error.hpp"
@@ -62,8 +63,8 @@ std::optional<double> CsvTable::number(std::size_t row, const std::string& colum
   double value = 0.0;
   const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
   if (error != std::errc() || end != cell.data() + cell.size()) {
-    throw ParseError(fmt::format("CSV cell '{}' in column '{}', row {} is not a number", cell,
-                                 column, row + 1));
+    throw ParseError(
+        fmt::format("CSV cell '{}' in column '{}', row {} is not a number", cell, column, row + 1));
   }
   return value;
 }

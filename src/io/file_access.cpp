@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "catena/io/file_access.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <fcntl.h>
 #include <fmt/format.h>
-#include <fstream>
 #include <sys/stat.h>
-#include <system_error>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <system_error>
 
 #include "catena/core/error.hpp"
 
@@ -38,12 +39,18 @@ std::size_t utf8_sequence_length(const std::string& text, std::size_t i) {
 
 std::string describe(fs::file_type type) {
   switch (type) {
-    case fs::file_type::directory: return "a directory";
-    case fs::file_type::fifo: return "a FIFO";
-    case fs::file_type::block: return "a block device";
-    case fs::file_type::character: return "a character device";
-    case fs::file_type::socket: return "a socket";
-    default: return "not a regular file";
+    case fs::file_type::directory:
+      return "a directory";
+    case fs::file_type::fifo:
+      return "a FIFO";
+    case fs::file_type::block:
+      return "a block device";
+    case fs::file_type::character:
+      return "a character device";
+    case fs::file_type::socket:
+      return "a socket";
+    default:
+      return "not a regular file";
   }
 }
 
@@ -59,15 +66,23 @@ fs::path directory_of(const fs::path& path) {
 void make_directory(const fs::path& directory, const fs::path& target) {
   std::error_code error;
   fs::create_directories(directory, error);
-  if (error) cannot_write(target, fmt::format("cannot create directory {}: {}", path_text(directory), error.message()));
-  if (!fs::is_directory(directory, error)) cannot_write(target, fmt::format("{} is not a directory", path_text(directory)));
+  if (error)
+    cannot_write(target, fmt::format("cannot create directory {}: {}", path_text(directory),
+                                     error.message()));
+  if (!fs::is_directory(directory, error))
+    cannot_write(target, fmt::format("{} is not a directory", path_text(directory)));
 }
 
 // A new empty file "<directory>/.<stem>.tmp-XXXXXX" opened for writing; its name in `name`.
-int make_temporary(const fs::path& directory, const std::string& stem, std::string& name, const fs::path& target) {
+int make_temporary(const fs::path& directory,
+                   const std::string& stem,
+                   std::string& name,
+                   const fs::path& target) {
   name = (directory / ("." + stem + ".tmp-XXXXXX")).string();
   const int fd = mkstemp(name.data());
-  if (fd < 0) cannot_write(target, fmt::format("cannot create a file in {}: {}", path_text(directory), std::strerror(errno)));
+  if (fd < 0)
+    cannot_write(target, fmt::format("cannot create a file in {}: {}", path_text(directory),
+                                     std::strerror(errno)));
   return fd;
 }
 
@@ -119,7 +134,9 @@ std::string path_text(const fs::path& path) {
   return text;
 }
 
-std::string read_input_file(const fs::path& path, const std::string& what, std::uintmax_t max_bytes) {
+std::string read_input_file(const fs::path& path,
+                            const std::string& what,
+                            std::uintmax_t max_bytes) {
   auto fail = [&](const std::string& reason) {
     throw ParseError(fmt::format("{}: cannot read {}: {}", path_text(path), what, reason));
   };
@@ -131,10 +148,12 @@ std::string read_input_file(const fs::path& path, const std::string& what, std::
     const bool dangling = missing && fs::is_symlink(fs::symlink_status(path, link_error));
     fail(dangling ? "dangling symbolic link" : error ? error.message() : "no such file");
   }
-  if (status.type() != fs::file_type::regular) fail(describe(status.type()) + ", not a regular file");
+  if (status.type() != fs::file_type::regular)
+    fail(describe(status.type()) + ", not a regular file");
   const std::uintmax_t size = fs::file_size(path, error);
   if (error) fail(error.message());
-  if (size > max_bytes) fail(fmt::format("{} bytes, more than the limit of {} bytes", size, max_bytes));
+  if (size > max_bytes)
+    fail(fmt::format("{} bytes, more than the limit of {} bytes", size, max_bytes));
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(std::strerror(errno));
   std::string text(static_cast<std::size_t>(size), '\0');

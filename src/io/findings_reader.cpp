@@ -26,7 +26,8 @@ Finding read_finding(internal::TableReader& item) {
 FindingsTable read_findings_document(const toml::value& document, const std::string& origin) {
   internal::TableReader root(document, origin, "");
   std::vector<Finding> findings;
-  for (internal::TableReader& item : root.table_array("finding")) findings.push_back(read_finding(item));
+  for (internal::TableReader& item : root.table_array("finding"))
+    findings.push_back(read_finding(item));
   root.finish();
   return FindingsTable(std::move(findings));
 }
@@ -42,8 +43,9 @@ FindingsTable read_findings_file(const std::filesystem::path& path) {
 }
 
 FindingsTable builtin_findings_table() {
-  return read_findings_document(internal::toml_from_json(nlohmann::json::parse(internal::kBuiltinFindingsJson)),
-                                "verification/findings.toml (built in)");
+  return read_findings_document(
+      internal::toml_from_json(nlohmann::json::parse(internal::kBuiltinFindingsJson)),
+      "verification/findings.toml (built in)");
 }
 
 }  // namespace catena

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "catena/io/json_writer.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <utility>
-#include <vector>
-#include <fmt/format.h>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <utility>
+#include <vector>
 
 #include "catena/core/error.hpp"
 #include "catena/core/version.hpp"
@@ -115,11 +116,12 @@ json line_json(const Line& line) {
                         {key::added_mass_kg_per_m, g.added_mass_kg_per_m}});
   }
   for (const PointAttachment& p : line.points) {
-    points.push_back({{key::s_m, p.s_m},
-                      {key::mass_kg, p.mass_kg},
-                      {key::weight_n, p.weight_n},
-                      {key::added_mass_kg,
-                       {p.tangential_added_mass_kg(), p.normal_added_mass_kg(), p.outofplane_added_mass_kg()}}});
+    points.push_back(
+        {{key::s_m, p.s_m},
+         {key::mass_kg, p.mass_kg},
+         {key::weight_n, p.weight_n},
+         {key::added_mass_kg,
+          {p.tangential_added_mass_kg(), p.normal_added_mass_kg(), p.outofplane_added_mass_kg()}}});
   }
   return {{key::segments, segments}, {key::points, points}};
 }
@@ -168,10 +170,10 @@ json request_json(const SolveRequest& request) {
   if (request.forced) {
     const ForcedRequest& f = *request.forced;
     out[key::forced] = {{key::end, to_string(f.end)},
-                     {key::direction, to_string(f.direction)},
-                     {key::vector, {f.vector.x(), f.vector.y()}},
-                     {key::amplitude_m, f.amplitude_m},
-                     {key::omegas_rad_s, f.omegas_rad_s}};
+                        {key::direction, to_string(f.direction)},
+                        {key::vector, {f.vector.x(), f.vector.y()}},
+                        {key::amplitude_m, f.amplitude_m},
+                        {key::omegas_rad_s, f.omegas_rad_s}};
   }
   return out;
 }
@@ -179,31 +181,42 @@ json request_json(const SolveRequest& request) {
 // The state at arc length s: position, stretched length from a, and the forces on both sides (they
 // differ at a point attachment by its weight).
 // On the seabed (s < L_g) the force is horizontal and set by friction: it jumps at a clump weight.
-json node_json(const StaticSolution& statics, const std::string& kind, std::size_t index, double s) {
+json node_json(const StaticSolution& statics,
+               const std::string& kind,
+               std::size_t index,
+               double s) {
   const Vec2 r = statics.position_m(s);
   const double before = statics.vertical_force_before_n(s);
   const double after = statics.vertical_force_n(s);
   const bool grounded = statics.has_contact() && s < statics.grounded_length_m();
   const double H = grounded ? statics.tension_n(s) : statics.horizontal_force_n();
-  const double tension_before = grounded ? statics.tension_n(std::nextafter(s, 0.0)) : std::hypot(H, before);
-  return {{key::kind, kind}, {key::index, index}, {key::s_m, s}, {key::x_m, r.x()}, {key::z_m, r.y()},
+  const double tension_before =
+      grounded ? statics.tension_n(std::nextafter(s, 0.0)) : std::hypot(H, before);
+  return {{key::kind, kind},
+          {key::index, index},
+          {key::s_m, s},
+          {key::x_m, r.x()},
+          {key::z_m, r.y()},
           {key::stretched_length_m, statics.stretched_length_m(s)},
           {key::horizontal_force_n, H},
-          {key::vertical_force_before_n, before}, {key::vertical_force_after_n, after},
-          {key::tension_before_n, tension_before}, {key::tension_after_n, std::hypot(H, after)}};
+          {key::vertical_force_before_n, before},
+          {key::vertical_force_after_n, after},
+          {key::tension_before_n, tension_before},
+          {key::tension_after_n, std::hypot(H, after)}};
 }
 
-// The seabed block (docs/reference/json-layout.md, "Seabed"): contact, grounded length, touchdown point, the
-// forces on the anchor (A) and the fairlead (B).
+// The seabed block (docs/reference/json-layout.md, "Seabed"): contact, grounded length, touchdown
+// point, the forces on the anchor (A) and the fairlead (B).
 json seabed_json(const StaticSolution& statics) {
   const Seabed& seabed = statics.seabed();
   const double L = statics.cable().length_m;
   const double Lg = statics.grounded_length_m();
   const Vec2 touchdown = statics.position_m(Lg);
-  const char* model = statics.has_contact()
-                          ? "flat seabed: grounded length straight on it from the anchor, tangential touchdown, "
-                            "Coulomb friction C_B w per unit length (MAP++/MoorPy convention)"
-                          : "flat seabed: no contact (the line stays on or above the seabed)";
+  const char* model =
+      statics.has_contact()
+          ? "flat seabed: grounded length straight on it from the anchor, tangential touchdown, "
+            "Coulomb friction C_B w per unit length (MAP++/MoorPy convention)"
+          : "flat seabed: no contact (the line stays on or above the seabed)";
   return {{key::z_m, seabed.z_m},
           {key::friction, seabed.friction},
           {key::stiffness_n_per_m2, seabed.stiffness_n_per_m2},
@@ -226,13 +239,15 @@ void add_line_statics(json& out, const StaticSolution& statics) {
   json stretched = json::array();
   for (std::size_t k = 0; k < line.segments.size(); ++k) {
     const double begin = line.segment_start_m(k);
-    stretched.push_back(statics.stretched_length_m(line.segment_start_m(k + 1)) - statics.stretched_length_m(begin));
+    stretched.push_back(statics.stretched_length_m(line.segment_start_m(k + 1)) -
+                        statics.stretched_length_m(begin));
     if (k > 0) nodes.emplace_back(begin, node_json(statics, "joint", k - 1, begin));
   }
   for (std::size_t i = 0; i < line.points.size(); ++i) {
     nodes.emplace_back(line.points[i].s_m, node_json(statics, "point", i, line.points[i].s_m));
   }
-  std::stable_sort(nodes.begin(), nodes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(nodes.begin(), nodes.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   json list = json::array();
   for (auto& node : nodes) list.push_back(std::move(node.second));
   out[key::nodes] = list;
@@ -257,15 +272,15 @@ json statics_profile_json(const StaticSolution& statics, int points) {
 json statics_json(const StaticSolution& statics, const SolveRequest& request) {
   const double L = statics.cable().length_m;
   json out = {{key::horizontal_force_n, statics.horizontal_force_n()},
-          {key::vertical_force_a_n, statics.vertical_force_a_n()},
-          {key::vertical_force_b_n, statics.vertical_force_n(L)},
-          {key::tension_a_n, statics.tension_n(0.0)},
-          {key::tension_b_n, statics.tension_n(L)},
-          {key::angle_a_deg, statics.angle_rad(0.0) * 180.0 / kPi},
-          {key::angle_b_deg, statics.angle_rad(L) * 180.0 / kPi},
-          {key::stretched_length_m, statics.stretched_length_m(L)},
-          {key::newton_iterations, statics.iterations},
-          {key::closure_error_m, statics.closure_error_m}};
+              {key::vertical_force_a_n, statics.vertical_force_a_n()},
+              {key::vertical_force_b_n, statics.vertical_force_n(L)},
+              {key::tension_a_n, statics.tension_n(0.0)},
+              {key::tension_b_n, statics.tension_n(L)},
+              {key::angle_a_deg, statics.angle_rad(0.0) * 180.0 / kPi},
+              {key::angle_b_deg, statics.angle_rad(L) * 180.0 / kPi},
+              {key::stretched_length_m, statics.stretched_length_m(L)},
+              {key::newton_iterations, statics.iterations},
+              {key::closure_error_m, statics.closure_error_m}};
   if (request.shapes) out[key::shape] = statics_profile_json(statics, request.points);
   const double s_low = statics.lowest_point_s_m();
   const Vec2 low = statics.position_m(s_low);
@@ -284,14 +299,15 @@ json groups_json(const DimensionlessGroups& g) {
               {key::mass_ratio, g.mass_ratio},
               {key::taut_frequency_scale_rad_s, g.taut_frequency_scale_rad_s}};
   if (g.has_apex_parameterization) {
-    out[key::gale] = {{key::a_m, g.catenary_parameter_m},
-                   {key::sigma1, g.sigma1},
-                   {key::sigma2, g.sigma2},
-                   {key::xi1, g.xi1},
-                   {key::xi2, g.xi2},
-                   {key::h_over_b, g.height_over_span ? json(*g.height_over_span) : json(nullptr)},
-                   {key::sag_param, g.sag_parameter ? json(*g.sag_parameter) : json(nullptr)},
-                   {key::frequency_scale_rad_s, g.gale_frequency_scale_rad_s}};
+    out[key::gale] = {
+        {key::a_m, g.catenary_parameter_m},
+        {key::sigma1, g.sigma1},
+        {key::sigma2, g.sigma2},
+        {key::xi1, g.xi1},
+        {key::xi2, g.xi2},
+        {key::h_over_b, g.height_over_span ? json(*g.height_over_span) : json(nullptr)},
+        {key::sag_param, g.sag_parameter ? json(*g.sag_parameter) : json(nullptr)},
+        {key::frequency_scale_rad_s, g.gale_frequency_scale_rad_s}};
   }
   return out;
 }
@@ -319,11 +335,17 @@ std::string written_detail(const CheckResult& check) {
 }
 
 json check_json(const CheckResult& check, ReasonList& reasons) {
-  return {{key::check, check.check},   {key::compare, check.compare},   {key::plane, check.plane},
-          {key::mode, check.mode},     {key::value_a, number(check.value_a)},
-          {key::value_b, number(check.value_b)}, {key::measured, number(check.measured)},
-          {key::tolerance, number(check.tolerance)}, {key::verdict, to_string(check.verdict)},
-          {key::detail, written_detail(check)}, {key::tolerance_reason, reasons.index_of(check.tolerance_reason)}};
+  return {{key::check, check.check},
+          {key::compare, check.compare},
+          {key::plane, check.plane},
+          {key::mode, check.mode},
+          {key::value_a, number(check.value_a)},
+          {key::value_b, number(check.value_b)},
+          {key::measured, number(check.measured)},
+          {key::tolerance, number(check.tolerance)},
+          {key::verdict, to_string(check.verdict)},
+          {key::detail, written_detail(check)},
+          {key::tolerance_reason, reasons.index_of(check.tolerance_reason)}};
 }
 
 json scene_json(const SceneResult& result, ReasonList& reasons) {
@@ -336,11 +358,14 @@ json scene_json(const SceneResult& result, ReasonList& reasons) {
               {key::request, request_json(result.request)},
               {key::wall_time_s, result.wall_time_s},
               {key::error, result.error.empty() ? json(nullptr) : json(result.error)}};
-  if (scene.sweep_point) out[key::sweep] = {{key::parameter, scene.sweep_point->first}, {key::value, scene.sweep_point->second}};
+  if (scene.sweep_point)
+    out[key::sweep] = {{key::parameter, scene.sweep_point->first},
+                       {key::value, scene.sweep_point->second}};
   if (result.statics) out[key::statics] = statics_json(*result.statics, result.request);
   if (result.groups) out[key::groups] = groups_json(*result.groups);
   json solvers = json::object();
-  for (const auto& output : result.outputs) solvers[output.solver] = output_json(output, result.request.shapes);
+  for (const auto& output : result.outputs)
+    solvers[output.solver] = output_json(output, result.request.shapes);
   out[key::solvers] = solvers;
   json published = json::array();
   for (const auto& p : scene.published) {
@@ -363,8 +388,11 @@ json mutation_json(const MutationRun& run) {
   json tallies = json::array();
   for (const auto& [what, tally] : run.tallies()) {
     const auto& [solver, family, quantity] = what;
-    tallies.push_back({{key::solver, solver}, {key::family, family}, {key::quantity, quantity},
-                       {key::made, tally.made}, {key::caught, tally.caught}});
+    tallies.push_back({{key::solver, solver},
+                       {key::family, family},
+                       {key::quantity, quantity},
+                       {key::made, tally.made},
+                       {key::caught, tally.caught}});
   }
   // One record per scene, solver, quantity and plane, listing its uncaught modes and their sizes.
   json uncaught = json::array();
@@ -375,10 +403,15 @@ json mutation_json(const MutationRun& run) {
         group->quantity != outcome.quantity || group->plane != outcome.plane ||
         group->exact_witness != outcome.exact_witness) {
       group = &outcome;
-      uncaught.push_back({{key::scene, outcome.scene}, {key::family, outcome.family}, {key::solver, outcome.solver},
-                          {key::quantity, to_string(outcome.quantity)}, {key::plane, outcome.plane},
-                          {key::exact_witness, outcome.exact_witness}, {key::modes, json::array()},
-                          {key::sizes, json::array()}, {key::estimates, json::array()}});
+      uncaught.push_back({{key::scene, outcome.scene},
+                          {key::family, outcome.family},
+                          {key::solver, outcome.solver},
+                          {key::quantity, to_string(outcome.quantity)},
+                          {key::plane, outcome.plane},
+                          {key::exact_witness, outcome.exact_witness},
+                          {key::modes, json::array()},
+                          {key::sizes, json::array()},
+                          {key::estimates, json::array()}});
     }
     uncaught.back()[key::modes].push_back(outcome.mode);
     uncaught.back()[key::sizes].push_back(number(outcome.size));
@@ -400,7 +433,9 @@ json mutation_json(const MutationRun& run) {
 
 }  // namespace
 
-std::string results_to_json(const std::vector<SceneResult>& results, int indent, const MutationRun* mutation) {
+std::string results_to_json(const std::vector<SceneResult>& results,
+                            int indent,
+                            const MutationRun* mutation) {
   json scenes = json::array();
   ReasonList reasons;
   for (const auto& result : results) scenes.push_back(scene_json(result, reasons));
@@ -416,7 +451,8 @@ std::string results_to_json(const std::vector<SceneResult>& results, int indent,
   return indent < 0 ? document.dump() : internal::dump_records(document, indent);
 }
 
-void write_results_json(const std::filesystem::path& path, const std::vector<SceneResult>& results,
+void write_results_json(const std::filesystem::path& path,
+                        const std::vector<SceneResult>& results,
                         const MutationRun* mutation) {
   write_file_atomically(path, results_to_json(results, 1, mutation) + '\n');
 }

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
-// MoorDyn decks (v1 and v2 layouts) read into plain data (docs/how-to/moordyn-import.md). Written from
-// MoorDyn's documented input format, not from its code.
+// MoorDyn decks (v1 and v2 layouts) read into plain data (docs/how-to/moordyn-import.md). Written
+// from MoorDyn's documented input format, not from its code.
 #include "catena/io/moordyn_deck.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
-#include <fmt/format.h>
 #include <sstream>
 
 #include "catena/core/error.hpp"
@@ -15,23 +16,47 @@
 namespace catena {
 namespace {
 
-enum class Section { Preamble, LineTypes, RodTypes, Bodies, Rods, Points, Lines, Failure, SyropeIc, Options, Outputs, End };
+enum class Section {
+  Preamble,
+  LineTypes,
+  RodTypes,
+  Bodies,
+  Rods,
+  Points,
+  Lines,
+  Failure,
+  SyropeIc,
+  Options,
+  Outputs,
+  End
+};
 
 // Checked in this order against the upper-cased header text (MoorDyn, too, looks for the name
 // anywhere in the header line).
-const std::pair<const char*, Section> kSectionNames[] = {
-    {"LINE DICTIONARY", Section::LineTypes}, {"LINE TYPES", Section::LineTypes},
-    {"ROD DICTIONARY", Section::RodTypes},   {"ROD TYPES", Section::RodTypes},
-    {"BODIES", Section::Bodies},             {"BODY LIST", Section::Bodies},
-    {"BODY PROPERTIES", Section::Bodies},    {"RODS", Section::Rods},
-    {"ROD LIST", Section::Rods},             {"ROD PROPERTIES", Section::Rods},
-    {"POINTS", Section::Points},             {"POINT LIST", Section::Points},
-    {"POINT PROPERTIES", Section::Points},   {"CONNECTION PROPERTIES", Section::Points},
-    {"NODE PROPERTIES", Section::Points},    {"LINES", Section::Lines},
-    {"LINE LIST", Section::Lines},           {"LINE PROPERTIES", Section::Lines},
-    {"FAILURE", Section::Failure},           {"SYROPE IC", Section::SyropeIc},
-    {"OPTIONS", Section::Options},           {"OUTPUT", Section::Outputs},
-    {"NEED THIS LINE", Section::End},        {"MOORDYN", Section::Preamble}};
+const std::pair<const char*, Section> kSectionNames[] = {{"LINE DICTIONARY", Section::LineTypes},
+                                                         {"LINE TYPES", Section::LineTypes},
+                                                         {"ROD DICTIONARY", Section::RodTypes},
+                                                         {"ROD TYPES", Section::RodTypes},
+                                                         {"BODIES", Section::Bodies},
+                                                         {"BODY LIST", Section::Bodies},
+                                                         {"BODY PROPERTIES", Section::Bodies},
+                                                         {"RODS", Section::Rods},
+                                                         {"ROD LIST", Section::Rods},
+                                                         {"ROD PROPERTIES", Section::Rods},
+                                                         {"POINTS", Section::Points},
+                                                         {"POINT LIST", Section::Points},
+                                                         {"POINT PROPERTIES", Section::Points},
+                                                         {"CONNECTION PROPERTIES", Section::Points},
+                                                         {"NODE PROPERTIES", Section::Points},
+                                                         {"LINES", Section::Lines},
+                                                         {"LINE LIST", Section::Lines},
+                                                         {"LINE PROPERTIES", Section::Lines},
+                                                         {"FAILURE", Section::Failure},
+                                                         {"SYROPE IC", Section::SyropeIc},
+                                                         {"OPTIONS", Section::Options},
+                                                         {"OUTPUT", Section::Outputs},
+                                                         {"NEED THIS LINE", Section::End},
+                                                         {"MOORDYN", Section::Preamble}};
 
 // The options Catena uses, by their MoorDyn names (lower case).
 const std::vector<std::string> kGravityNames = {"g", "gravity"};
@@ -58,7 +83,8 @@ std::vector<std::string> tokens(const std::string& line) {
 std::optional<double> number(const std::string& text) {
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+    return std::nullopt;
   return value;
 }
 
@@ -79,7 +105,10 @@ struct Reader {
     throw InvalidInput(fmt::format("{}:{}: {}", file, line, why));
   }
   // The column's index: the first of `names` present, else `fallback` (-1: required, fail).
-  std::size_t column(const Table& table, std::initializer_list<const char*> names, int fallback, const char* what) const {
+  std::size_t column(const Table& table,
+                     std::initializer_list<const char*> names,
+                     int fallback,
+                     const char* what) const {
     for (const char* name : names) {
       const auto it = std::find(table.columns.begin(), table.columns.end(), name);
       if (it != table.columns.end()) return static_cast<std::size_t>(it - table.columns.begin());
@@ -87,11 +116,15 @@ struct Reader {
     if (fallback < 0) fail(table.header_line, fmt::format("no '{}' column in the header", what));
     return static_cast<std::size_t>(fallback);
   }
-  const std::string& cell(const std::pair<int, std::vector<std::string>>& row, std::size_t index, const char* what) const {
+  const std::string& cell(const std::pair<int, std::vector<std::string>>& row,
+                          std::size_t index,
+                          const char* what) const {
     if (index >= row.second.size()) fail(row.first, fmt::format("missing value for '{}'", what));
     return row.second[index];
   }
-  double value(const std::pair<int, std::vector<std::string>>& row, std::size_t index, const char* what) const {
+  double value(const std::pair<int, std::vector<std::string>>& row,
+               std::size_t index,
+               const char* what) const {
     const std::string& text = cell(row, index, what);
     const auto parsed = number(text);
     if (!parsed) fail(row.first, fmt::format("'{}': '{}' is not a number", what, text));
@@ -111,7 +144,9 @@ Section section_of(const std::string& header, int line, const std::string& file)
 // line of old decks ("3  NTypes  - number of line types") is skipped.
 void add_table_line(Table& table, const std::vector<std::string>& words, int line) {
   if (table.columns.empty()) {
-    if (words.size() >= 2 && number(words[0]) && std::toupper(static_cast<unsigned char>(words[1][0])) == 'N') return;
+    if (words.size() >= 2 && number(words[0]) &&
+        std::toupper(static_cast<unsigned char>(words[1][0])) == 'N')
+      return;
     for (const auto& word : words) table.columns.push_back(lower(word));
     table.header_line = line;
   } else if (!table.units_seen && table.rows.empty() && words[0].front() == '(') {
@@ -150,8 +185,10 @@ void read_lines_of_file(Reader& reader, const std::string& text) {
       if (section == Section::Bodies) reader.deck.has_bodies = true;
       continue;
     }
-    if (section == Section::Options) add_option(reader, words, line_number);
-    else if (section != Section::Preamble && section != Section::Outputs) add_table_line(reader.tables[section], words, line_number);
+    if (section == Section::Options)
+      add_option(reader, words, line_number);
+    else if (section != Section::Preamble && section != Section::Outputs)
+      add_table_line(reader.tables[section], words, line_number);
   }
 }
 
@@ -164,8 +201,9 @@ void convert_types(Reader& r) {
   const auto ea = r.column(t, {"ea"}, 3, "EA");
   const auto ca = r.column(t, {"can", "ca"}, v1 ? 5 : 7, "Ca");
   for (const auto& row : t.rows) {
-    MoorDynLineType type{row.second[0], r.value(row, diam, "Diam"), r.value(row, mass, "MassDen"), std::nullopt,
-                         r.cell(row, ea, "EA"), r.value(row, ca, "Ca"), row.first};
+    MoorDynLineType type{row.second[0], r.value(row, diam, "Diam"), r.value(row, mass, "MassDen"),
+                         std::nullopt,  r.cell(row, ea, "EA"),      r.value(row, ca, "Ca"),
+                         row.first};
     type.axial_stiffness_n = number(type.axial_stiffness_text);
     r.deck.types.push_back(type);
   }
@@ -219,8 +257,9 @@ void convert_lines(Reader& r) {
   const auto length = r.column(t, {"unstrlen", "length"}, 4, "UnstrLen");
   const auto segments = r.column(t, {"numsegs", "nsegs"}, 5, "NumSegs");
   for (const auto& row : t.rows) {
-    r.deck.lines.push_back({static_cast<int>(r.value(row, 0, "ID")), r.cell(row, type, "LineType"), r.cell(row, a, "AttachA"),
-                            r.cell(row, b, "AttachB"), r.value(row, length, "UnstrLen"),
+    r.deck.lines.push_back({static_cast<int>(r.value(row, 0, "ID")), r.cell(row, type, "LineType"),
+                            r.cell(row, a, "AttachA"), r.cell(row, b, "AttachB"),
+                            r.value(row, length, "UnstrLen"),
                             static_cast<int>(r.value(row, segments, "NumSegs")), row.first});
   }
 }
@@ -238,7 +277,8 @@ void convert_failures(Reader& r) {
 
 double option_or(const MoorDynDeck& deck, const std::vector<std::string>& names, double fallback) {
   for (const auto& name : names) {
-    if (const auto it = deck.options.find(name); it != deck.options.end()) return *number(it->second);
+    if (const auto it = deck.options.find(name); it != deck.options.end())
+      return *number(it->second);
   }
   return fallback;
 }
@@ -247,7 +287,9 @@ double option_or(const MoorDynDeck& deck, const std::vector<std::string>& names,
 
 double MoorDynDeck::gravity() const { return option_or(*this, kGravityNames, 9.80665); }
 double MoorDynDeck::water_density() const { return option_or(*this, kDensityNames, 1025.0); }
-double MoorDynDeck::bottom_stiffness() const { return option_or(*this, kBottomStiffnessNames, 3.0e6); }
+double MoorDynDeck::bottom_stiffness() const {
+  return option_or(*this, kBottomStiffnessNames, 3.0e6);
+}
 std::optional<double> MoorDynDeck::water_depth() const {
   const double depth = option_or(*this, kDepthNames, -1.0);
   return depth > 0.0 ? std::optional(depth) : std::nullopt;

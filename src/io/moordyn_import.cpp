@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
-// MoorDyn lines and chains as Catena scenes (docs/how-to/moordyn-import.md): topology (which lines form a
-// chain through free points, which cannot be represented), geometry (the vertical plane through
-// the held ends), and the conversion of MoorDyn's quantities.
+// MoorDyn lines and chains as Catena scenes (docs/how-to/moordyn-import.md): topology (which lines
+// form a chain through free points, which cannot be represented), geometry (the vertical plane
+// through the held ends), and the conversion of MoorDyn's quantities.
 #include "catena/io/moordyn_import.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <map>
 #include <set>
 
@@ -27,7 +28,8 @@ struct Topology {
   std::map<int, std::string> reasons;              // line id -> why it cannot be converted
 
   const MoorDynLine& line(int id) const {
-    return *std::find_if(deck.lines.begin(), deck.lines.end(), [&](const MoorDynLine& l) { return l.id == id; });
+    return *std::find_if(deck.lines.begin(), deck.lines.end(),
+                         [&](const MoorDynLine& l) { return l.id == id; });
   }
 };
 
@@ -42,8 +44,11 @@ std::optional<int> end_point(const std::string& end, std::string& why) {
     why = fmt::format("attached to a rod ({}); Catena has no rods", end);
     return std::nullopt;
   }
-  if (!(letters.empty() || letters == "P" || letters == "POINT" || letters == "C" || letters == "CON") || rest.empty() ||
-      !std::all_of(rest.begin(), rest.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+  if (!(letters.empty() || letters == "P" || letters == "POINT" || letters == "C" ||
+        letters == "CON") ||
+      rest.empty() || !std::all_of(rest.begin(), rest.end(), [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c));
+      })) {
     why = fmt::format("end '{}' is not a point", end);
     return std::nullopt;
   }
@@ -56,23 +61,34 @@ void find_reasons(Topology& t) {
     std::string why;
     for (const std::string* end : {&line.end_a, &line.end_b}) {
       const auto id = end_point(*end, why);
-      if (id && !t.points.count(*id)) why = fmt::format("end point {} is not in the POINTS table", *id);
+      if (id && !t.points.count(*id))
+        why = fmt::format("end point {} is not in the POINTS table", *id);
       if (!why.empty()) break;
       t.lines_at_point[*id].push_back(line.id);
     }
-    const auto type = std::find_if(t.deck.types.begin(), t.deck.types.end(), [&](const auto& ty) { return ty.name == line.type; });
-    if (why.empty() && type == t.deck.types.end()) why = fmt::format("line type '{}' is not in LINE TYPES", line.type);
-    if (why.empty() && !type->axial_stiffness_n) why = fmt::format("EA '{}' is not a constant (nonlinear or Syrope)", type->axial_stiffness_text);
-    if (std::count(t.deck.failing_lines.begin(), t.deck.failing_lines.end(), line.id)) why = "may fail (FAILURE section)";
+    const auto type = std::find_if(t.deck.types.begin(), t.deck.types.end(),
+                                   [&](const auto& ty) { return ty.name == line.type; });
+    if (why.empty() && type == t.deck.types.end())
+      why = fmt::format("line type '{}' is not in LINE TYPES", line.type);
+    if (why.empty() && !type->axial_stiffness_n)
+      why = fmt::format("EA '{}' is not a constant (nonlinear or Syrope)",
+                        type->axial_stiffness_text);
+    if (std::count(t.deck.failing_lines.begin(), t.deck.failing_lines.end(), line.id))
+      why = "may fail (FAILURE section)";
     if (!why.empty()) t.reasons[line.id] = why;
   }
   for (const auto& [id, lines] : t.lines_at_point) {
     const MoorDynPoint& p = *t.points.at(id);
     std::string why;
-    if (p.kind == MoorDynPointKind::Body) why = fmt::format("attached to a body at point {} ({})", id, p.attachment);
-    if (p.kind == MoorDynPointKind::Other) why = fmt::format("point {} is held by '{}', which Catena cannot represent", id, p.attachment);
-    if (p.kind == MoorDynPointKind::Free && lines.size() >= 3) why = fmt::format("{} lines meet at free point {}", lines.size(), id);
-    if (p.kind == MoorDynPointKind::Free && lines.size() == 1) why = fmt::format("free end at point {} (both ends must be held)", id);
+    if (p.kind == MoorDynPointKind::Body)
+      why = fmt::format("attached to a body at point {} ({})", id, p.attachment);
+    if (p.kind == MoorDynPointKind::Other)
+      why =
+          fmt::format("point {} is held by '{}', which Catena cannot represent", id, p.attachment);
+    if (p.kind == MoorDynPointKind::Free && lines.size() >= 3)
+      why = fmt::format("{} lines meet at free point {}", lines.size(), id);
+    if (p.kind == MoorDynPointKind::Free && lines.size() == 1)
+      why = fmt::format("free end at point {} (both ends must be held)", id);
     for (int line : lines) {
       if (!why.empty() && !t.reasons.count(line)) t.reasons[line] = why;
     }
@@ -87,7 +103,10 @@ int point_id(const std::string& end) {
 // Extends `chain` from its last element (forward) or its first (backward) through free points
 // joining exactly two lines. False (with `why`) when it meets a line that cannot be converted or
 // closes into a loop.
-bool extend_chain(const Topology& t, std::vector<ChainSegment>& chain, bool forward, std::string& why) {
+bool extend_chain(const Topology& t,
+                  std::vector<ChainSegment>& chain,
+                  bool forward,
+                  std::string& why) {
   const int start = chain.front().line;
   while (true) {
     const ChainSegment& end = forward ? chain.back() : chain.front();
@@ -103,14 +122,17 @@ bool extend_chain(const Topology& t, std::vector<ChainSegment>& chain, bool forw
       return false;
     }
     if (t.reasons.count(next)) {
-      why = fmt::format("joined at free point {} to line {}, which cannot be converted ({})", joint, next, t.reasons.at(next));
+      why = fmt::format("joined at free point {} to line {}, which cannot be converted ({})", joint,
+                        next, t.reasons.at(next));
       return false;
     }
     // Forward, the next line is walked away from the joint; backward, towards it.
     const bool joint_is_a = point_id(t.line(next).end_a) == joint;
     const ChainSegment segment{next, forward ? !joint_is_a : joint_is_a};
-    if (forward) chain.push_back(segment);
-    else chain.insert(chain.begin(), segment);
+    if (forward)
+      chain.push_back(segment);
+    else
+      chain.insert(chain.begin(), segment);
   }
 }
 
@@ -122,7 +144,9 @@ std::vector<ChainSegment> build_chain(const Topology& t, int start, std::string&
 
 // Whether a uniform line with the given geometry, solved without a seabed, goes below it.
 bool uniform_line_touches(const internal::SegmentProperties& segment,
-                          const SceneGeometry& geometry, double seabed_z, std::string& why) {
+                          const SceneGeometry& geometry,
+                          double seabed_z,
+                          std::string& why) {
   Problem problem;
   problem.cable.length_m = segment.length_m;
   problem.cable.weight_n_per_m = segment.weight_n_per_m;
@@ -147,7 +171,9 @@ bool uniform_line_touches(const internal::SegmentProperties& segment,
   return false;
 }
 
-ImportedScene convert_chain(const Topology& t, const std::vector<ChainSegment>& chain, const std::string& stem) {
+ImportedScene convert_chain(const Topology& t,
+                            const std::vector<ChainSegment>& chain,
+                            const std::string& stem) {
   ImportedScene scene;
   internal::ChainDescription d = internal::describe_chain(t.deck, chain, t.points);
   for (const auto& segment : d.chain) scene.lines.push_back(segment.line);
@@ -167,7 +193,8 @@ ImportedScene convert_chain(const Topology& t, const std::vector<ChainSegment>& 
   }
   if (d.segments.size() > 1) scene.needs.push_back("[line] with segments (general lines)");
   if (!d.points.empty()) scene.needs.push_back("[[line.points]] point attachments (general lines)");
-  if (d.segments.size() == 1 && d.segments[0].weight_n_per_m <= 0.0) scene.needs.push_back("[line] with zero or negative weight (general lines)");
+  if (d.segments.size() == 1 && d.segments[0].weight_n_per_m <= 0.0)
+    scene.needs.push_back("[line] with zero or negative weight (general lines)");
   if (touches) scene.needs.push_back("[seabed] (seabed contact)");
   std::string ids;
   for (int id : scene.lines) ids += (ids.empty() ? "" : "-") + std::to_string(id);

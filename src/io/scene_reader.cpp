@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "catena/io/scene_reader.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -36,7 +37,8 @@ double read_axial_stiffness(TableReader& cable) {
     ea = cable.to_number(value, "EA");
   }
   if (std::isnan(ea) || ea <= 0.0) {
-    throw InvalidInput(fmt::format("{} = {}: must be > 0 or inf (inextensible) [N]", cable.where("EA"), ea));
+    throw InvalidInput(
+        fmt::format("{} = {}: must be > 0 or inf (inextensible) [N]", cable.where("EA"), ea));
   }
   return ea;
 }
@@ -48,7 +50,8 @@ Problem read_physical(TableReader& root, const std::string& origin) {
   problem.cable.weight_n_per_m = cable.checked("weight", positive, "finite and > 0", "N/m");
   problem.cable.axial_stiffness_n = read_axial_stiffness(cable);
   problem.cable.mass_kg_per_m = cable.checked("mass", positive, "finite and > 0", "kg/m");
-  problem.cable.added_mass_kg_per_m = cable.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
+  problem.cable.added_mass_kg_per_m =
+      cable.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
   problem.supports.a_m = cable.point("a");
   problem.supports.b_m = cable.point("b");
   cable.finish();
@@ -60,14 +63,18 @@ Problem read_physical(TableReader& root, const std::string& origin) {
   return problem;
 }
 
-// The entries of the array of tables `[[<path>.<key>]]`, each read as `<path>.<key>[i]` (0-based, as
-// Line::validate names them).
-std::vector<TableReader> indexed_tables(TableReader& table, const std::string& key, const std::string& path,
+// The entries of the array of tables `[[<path>.<key>]]`, each read as `<path>.<key>[i]` (0-based,
+// as Line::validate names them).
+std::vector<TableReader> indexed_tables(TableReader& table,
+                                        const std::string& key,
+                                        const std::string& path,
                                         const std::string& origin) {
   std::vector<TableReader> tables;
   const toml::value* list = table.find(key);
   if (!list) return tables;
-  if (!list->is_array()) throw ParseError(fmt::format("{}: expected an array of tables [[{}.{}]]", table.where(key), path, key));
+  if (!list->is_array())
+    throw ParseError(
+        fmt::format("{}: expected an array of tables [[{}.{}]]", table.where(key), path, key));
   for (const auto& item : list->as_array()) {
     const std::string name = fmt::format("{}.{}[{}]", path, key, tables.size());
     if (!item.is_table()) throw ParseError(fmt::format("{}: [{}]: expected a table", origin, name));
@@ -79,10 +86,12 @@ std::vector<TableReader> indexed_tables(TableReader& table, const std::string& k
 LineSegment read_segment(TableReader& table) {
   LineSegment segment;
   segment.length_m = table.checked("length", positive, "finite and > 0", "m");
-  segment.weight_n_per_m = table.checked("weight", any_value, "finite (> 0 hangs, 0 straight, < 0 buoyant)", "N/m");
+  segment.weight_n_per_m =
+      table.checked("weight", any_value, "finite (> 0 hangs, 0 straight, < 0 buoyant)", "N/m");
   segment.axial_stiffness_n = read_axial_stiffness(table);
   segment.mass_kg_per_m = table.checked("mass", positive, "finite and > 0", "kg/m");
-  segment.added_mass_kg_per_m = table.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
+  segment.added_mass_kg_per_m =
+      table.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
   table.finish();
   return segment;
 }
@@ -91,7 +100,8 @@ PointAttachment read_point(TableReader& table) {
   PointAttachment point;
   point.s_m = table.checked("s", non_negative, "finite and >= 0", "m");
   point.mass_kg = table.checked("mass", non_negative, "finite and >= 0", "kg", 0.0);
-  point.weight_n = table.checked("weight", any_value, "finite (> 0 a clump weight, < 0 a buoy)", "N", 0.0);
+  point.weight_n =
+      table.checked("weight", any_value, "finite (> 0 a clump weight, < 0 a buoy)", "N", 0.0);
   point.added_mass_kg = table.checked("added_mass", non_negative, "finite and >= 0", "kg", 0.0);
   auto directional = [&](const char* key) -> std::optional<double> {
     if (!table.has(key)) return std::nullopt;
@@ -120,13 +130,14 @@ Problem read_line(TableReader& root, const std::string& origin) {
   table.finish();
   const Line& line = problem.line;
   if (line.segments.empty()) {
-    throw InvalidInput(fmt::format("{}: [line]: Invalid line.segments: a line needs at least one [[line.segments]] entry",
-                                   origin));
+    throw InvalidInput(fmt::format(
+        "{}: [line]: Invalid line.segments: a line needs at least one [[line.segments]] entry",
+        origin));
   }
   if (line.segments.size() == 1 && line.points.empty() && line.segments[0].weight_n_per_m > 0.0) {
     const LineSegment& segment = line.segments[0];
-    problem.cable = {segment.length_m, segment.weight_n_per_m, segment.axial_stiffness_n, segment.mass_kg_per_m,
-                     segment.added_mass_kg_per_m};
+    problem.cable = {segment.length_m, segment.weight_n_per_m, segment.axial_stiffness_n,
+                     segment.mass_kg_per_m, segment.added_mass_kg_per_m};
     problem.line = Line{};
   }
   try {
@@ -156,8 +167,9 @@ Problem read_gale(TableReader& root, const std::string& origin) {
   const bool by_xi = form.has("xi1") || form.has("xi2");
   const bool by_sag = form.has("h_over_b") || form.has("sag_param");
   if (by_xi == by_sag) {
-    throw ParseError(fmt::format("{}: [gale] needs either (xi1, xi2) or (h_over_b, sag_param), not {}", origin,
-                                 by_xi ? "both" : "neither"));
+    throw ParseError(
+        fmt::format("{}: [gale] needs either (xi1, xi2) or (h_over_b, sag_param), not {}", origin,
+                    by_xi ? "both" : "neither"));
   }
   try {
     if (by_xi) {
@@ -183,9 +195,10 @@ Problem read_cable_form(TableReader& root, const std::string& origin) {
   const bool gale = root.has("gale");
   const int forms = int(physical) + int(line) + int(taut) + int(gale);
   if (forms != 1) {
-    throw ParseError(fmt::format(
-        "{}: a scene needs exactly one of the tables [cable], [line], [taut_inclined], [gale]; found {}",
-        origin, forms));
+    throw ParseError(
+        fmt::format("{}: a scene needs exactly one of the tables [cable], [line], [taut_inclined], "
+                    "[gale]; found {}",
+                    origin, forms));
   }
   if (physical) return read_physical(root, origin);
   if (line) return read_line(root, origin);
@@ -193,13 +206,15 @@ Problem read_cable_form(TableReader& root, const std::string& origin) {
   return read_gale(root, origin);
 }
 
-// [seabed] (docs/reference/scene-format.md): the flat seabed under a [cable] or [line]; end A must lie on it.
+// [seabed] (docs/reference/scene-format.md): the flat seabed under a [cable] or [line]; end A must
+// lie on it.
 void read_seabed(TableReader& root, Problem& problem, const std::string& origin) {
   TableReader table = root.subtable("seabed");
   Seabed seabed;
   seabed.z_m = table.checked("z", any_value, "finite", "m");
   seabed.friction = table.checked("friction", non_negative, "finite and >= 0", "-", 0.0);
-  seabed.stiffness_n_per_m2 = table.checked("stiffness", non_negative, "finite and >= 0", "N/m per m", 0.0);
+  seabed.stiffness_n_per_m2 =
+      table.checked("stiffness", non_negative, "finite and >= 0", "N/m per m", 0.0);
   seabed.tangential_stiffness_n_per_m2 =
       table.checked("tangential_stiffness", non_negative, "finite and >= 0", "N/m per m", 0.0);
   table.finish();
@@ -216,31 +231,35 @@ Problem read_problem(TableReader& root, const std::string& origin) {
   Problem problem = read_cable_form(root, origin);
   if (root.has("seabed")) {
     if (problem.form != ProblemForm::Physical) {
-      throw InvalidInput(fmt::format("{}: [seabed] goes with [cable] or [line], not with [{}]", origin,
-                                     to_string(problem.form)));
+      throw InvalidInput(fmt::format("{}: [seabed] goes with [cable] or [line], not with [{}]",
+                                     origin, to_string(problem.form)));
     }
     read_seabed(root, problem, origin);
   }
   return problem;
 }
 
-FrequencyUnit read_frequency_unit(TableReader& table, const std::string& key, const std::string& fallback) {
+FrequencyUnit read_frequency_unit(TableReader& table,
+                                  const std::string& key,
+                                  const std::string& fallback) {
   const std::string text = table.string(key, fallback);
   const auto unit = parse_frequency_unit(text);
   if (!unit) {
-    throw InvalidInput(fmt::format("{} = \"{}\": must be one of \"rad/s\", \"Hz\", \"kL/pi\", \"gale\"",
-                                   table.where(key), text));
+    throw InvalidInput(
+        fmt::format("{} = \"{}\": must be one of \"rad/s\", \"Hz\", \"kL/pi\", \"gale\"",
+                    table.where(key), text));
   }
   return *unit;
 }
 
-// [request.forced]: the driven end, direction, amplitude and forcing frequencies (in the scene's units;
-// resolve_request converts them).
+// [request.forced]: the driven end, direction, amplitude and forcing frequencies (in the scene's
+// units; resolve_request converts them).
 ForcedRequest read_forced(TableReader& forced, Scene& scene) {
   ForcedRequest f;
   const std::string end = forced.string("end", "b");
   if (end != "a" && end != "b") {
-    throw InvalidInput(fmt::format("{} = \"{}\": must be \"a\" or \"b\"", forced.where("end"), end));
+    throw InvalidInput(
+        fmt::format("{} = \"{}\": must be \"a\" or \"b\"", forced.where("end"), end));
   }
   f.end = end == "a" ? CableEnd::A : CableEnd::B;
   if (const toml::value* direction = forced.find("direction")) {
@@ -248,13 +267,17 @@ ForcedRequest read_forced(TableReader& forced, Scene& scene) {
       f.direction = ForcingDirection::GivenVector;
       f.vector = forced.point("direction");
       if (f.vector.norm() == 0.0) {
-        throw InvalidInput(fmt::format("{}: the direction vector must be non-zero", forced.where("direction")));
+        throw InvalidInput(
+            fmt::format("{}: the direction vector must be non-zero", forced.where("direction")));
       }
     } else {
       const std::string text = forced.string("direction", "tangential");
-      if (text == "tangential") f.direction = ForcingDirection::Tangential;
-      else if (text == "normal") f.direction = ForcingDirection::Normal;
-      else if (text == "out_of_plane") f.direction = ForcingDirection::OutOfPlane;
+      if (text == "tangential")
+        f.direction = ForcingDirection::Tangential;
+      else if (text == "normal")
+        f.direction = ForcingDirection::Normal;
+      else if (text == "out_of_plane")
+        f.direction = ForcingDirection::OutOfPlane;
       else {
         throw InvalidInput(fmt::format(
             "{} = \"{}\": must be \"tangential\", \"normal\", \"out_of_plane\" or [x, z]",
@@ -271,17 +294,19 @@ ForcedRequest read_forced(TableReader& forced, Scene& scene) {
   scene.forcing_amplitude_in_a = amplitude_unit == "a";
   f.omegas_rad_s = forced.numbers("frequencies");
   if (f.omegas_rad_s.empty()) {
-    throw InvalidInput(fmt::format("{}: at least one forcing frequency needed", forced.where("frequencies")));
+    throw InvalidInput(
+        fmt::format("{}: at least one forcing frequency needed", forced.where("frequencies")));
   }
   if (f.omegas_rad_s.size() > SolveRequest::kMaxForcingFrequencies) {
-    throw InvalidInput(fmt::format("{}: {} forcing frequencies, at most {} per request (docs/reference/scene-format.md, "
-                                   "\"Limits on work\")",
-                                   forced.where("frequencies"), f.omegas_rad_s.size(),
-                                   SolveRequest::kMaxForcingFrequencies));
+    throw InvalidInput(fmt::format(
+        "{}: {} forcing frequencies, at most {} per request (docs/reference/scene-format.md, "
+        "\"Limits on work\")",
+        forced.where("frequencies"), f.omegas_rad_s.size(), SolveRequest::kMaxForcingFrequencies));
   }
   for (double omega : f.omegas_rad_s) {
     if (omega < 0.0) {
-      throw InvalidInput(fmt::format("{}: forcing frequency {} must be >= 0", forced.where("frequencies"), omega));
+      throw InvalidInput(
+          fmt::format("{}: forcing frequency {} must be >= 0", forced.where("frequencies"), omega));
     }
   }
   scene.forcing_frequency_unit = read_frequency_unit(forced, "frequency_unit", "rad/s");
@@ -292,12 +317,15 @@ ForcedRequest read_forced(TableReader& forced, Scene& scene) {
 void read_request(TableReader& root, Scene& scene) {
   if (!root.has("request")) return;
   TableReader request = root.subtable("request");
-  // Upper bounds: docs/reference/scene-format.md, "Limits" (SolveRequest::validate enforces the same).
+  // Upper bounds: docs/reference/scene-format.md, "Limits" (SolveRequest::validate enforces the
+  // same).
   auto count = [&](const std::string& key, int fallback, long low, long high) {
     return static_cast<int>(request.read_integer(key, low, high, fallback));
   };
-  scene.request.inplane_modes = count("inplane_modes", scene.request.inplane_modes, 0, kMaxRequestModes);
-  scene.request.outofplane_modes = count("outofplane_modes", scene.request.outofplane_modes, 0, kMaxRequestModes);
+  scene.request.inplane_modes =
+      count("inplane_modes", scene.request.inplane_modes, 0, kMaxRequestModes);
+  scene.request.outofplane_modes =
+      count("outofplane_modes", scene.request.outofplane_modes, 0, kMaxRequestModes);
   scene.request.shapes = request.boolean("shapes", scene.request.shapes);
   scene.request.points = count("points", scene.request.points, 2, kMaxRequestPoints);
   scene.request.tension = request.boolean("tension", scene.request.tension);
@@ -369,18 +397,21 @@ void read_published(TableReader& root, Scene& scene) {
     PublishedValues published;
     published.source = table.string("source", "");
     if (published.source.empty()) {
-      throw ParseError(fmt::format("{}: missing required key (say where the values come from)", table.where("source")));
+      throw ParseError(fmt::format("{}: missing required key (say where the values come from)",
+                                   table.where("source")));
     }
     const std::string quantity = table.string("quantity", "");
     const auto parsed = parse_published_quantity(quantity);
     if (!parsed) {
-      throw InvalidInput(fmt::format("{} = \"{}\": must be \"inplane_frequency\", "
-                                     "\"outofplane_frequency\" or \"forced_max_tension\"",
-                                     table.where("quantity"), quantity));
+      throw InvalidInput(
+          fmt::format("{} = \"{}\": must be \"inplane_frequency\", "
+                      "\"outofplane_frequency\" or \"forced_max_tension\"",
+                      table.where("quantity"), quantity));
     }
     published.quantity = *parsed;
     published.unit = read_frequency_unit(table, "unit", "rad/s");
-    for (long mode : table.integers("modes", 0, kMaxRequestModes)) published.modes.push_back(static_cast<int>(mode));
+    for (long mode : table.integers("modes", 0, kMaxRequestModes))
+      published.modes.push_back(static_cast<int>(mode));
     published.values = table.numbers("values");
     if (published.values.size() != published.modes.size()) {
       throw InvalidInput(fmt::format("{}: {} values for {} modes", table.where("values"),
@@ -389,7 +420,9 @@ void read_published(TableReader& root, Scene& scene) {
     // More than 17 decimals would be below the resolution of a double.
     published.decimals = static_cast<int>(table.read_integer("decimals", 0, 17, -1));
     if (const toml::value* solvers = table.find("solvers")) {
-      if (!solvers->is_array()) throw ParseError(fmt::format("{}: expected an array of solver names", table.where("solvers")));
+      if (!solvers->is_array())
+        throw ParseError(
+            fmt::format("{}: expected an array of solver names", table.where("solvers")));
       for (const auto& name : solvers->as_array()) {
         if (!name.is_string() || !find_solver(name.as_string().str)) {
           throw ParseError(fmt::format("{}: unknown solver", table.where("solvers")));
@@ -404,23 +437,28 @@ void read_published(TableReader& root, Scene& scene) {
 
 // Applies one sweep value to the parsed TOML document (so the value is validated exactly like a
 // value written in the file).
-toml::value with_sweep_value(const toml::value& document, const std::string& parameter, double value,
+toml::value with_sweep_value(const toml::value& document,
+                             const std::string& parameter,
+                             double value,
                              const std::string& origin) {
   const auto dot = parameter.find('.');
   if (dot == std::string::npos) {
-    throw InvalidInput(fmt::format("{}: [sweep].parameter = \"{}\": expected \"table.key\"", origin, parameter));
+    throw InvalidInput(
+        fmt::format("{}: [sweep].parameter = \"{}\": expected \"table.key\"", origin, parameter));
   }
   const std::string table = parameter.substr(0, dot);
   const std::string key = parameter.substr(dot + 1);
   toml::value copy = document;
   if (!copy.as_table().count(table) || !copy.as_table().at(table).is_table()) {
-    throw InvalidInput(fmt::format("{}: [sweep].parameter = \"{}\": the scene has no table [{}]", origin, parameter, table));
+    throw InvalidInput(fmt::format("{}: [sweep].parameter = \"{}\": the scene has no table [{}]",
+                                   origin, parameter, table));
   }
   copy.as_table().at(table).as_table()[key] = value;
   return copy;
 }
 
-std::vector<Scene> read_document(const toml::value& document, const std::string& origin,
+std::vector<Scene> read_document(const toml::value& document,
+                                 const std::string& origin,
                                  const std::filesystem::path& file) {
   if (!document.is_table()) throw ParseError(fmt::format("{}: not a TOML table", origin));
   // A sweep: read the document once per value.
@@ -428,7 +466,8 @@ std::vector<Scene> read_document(const toml::value& document, const std::string&
     TableReader root(document, origin, "");
     TableReader sweep = root.subtable("sweep");
     const std::string parameter = sweep.string("parameter", "");
-    if (parameter.empty()) throw ParseError(fmt::format("{}: missing required key", sweep.where("parameter")));
+    if (parameter.empty())
+      throw ParseError(fmt::format("{}: missing required key", sweep.where("parameter")));
     const std::vector<double> values = sweep.numbers("values");
     sweep.finish();
     if (values.empty()) throw InvalidInput(fmt::format("{}: no values", sweep.where("values")));
@@ -436,7 +475,8 @@ std::vector<Scene> read_document(const toml::value& document, const std::string&
     toml::value base = document;
     base.as_table().erase("sweep");
     for (double value : values) {
-      std::vector<Scene> one = read_document(with_sweep_value(base, parameter, value, origin), origin, file);
+      std::vector<Scene> one =
+          read_document(with_sweep_value(base, parameter, value, origin), origin, file);
       one.front().name += fmt::format("[{}={}]", parameter.substr(parameter.find('.') + 1), value);
       one.front().sweep_point = std::make_pair(parameter, value);
       scenes.push_back(std::move(one.front()));
@@ -467,7 +507,8 @@ std::vector<Scene> parse_scene_text(const std::string& text, const std::string& 
 
 std::vector<Scene> read_scene_file(const std::filesystem::path& path) {
   const std::string text = read_input_file(path, "scene file");
-  std::vector<Scene> scenes = read_document(internal::parse_toml(text, path_text(path)), path_text(path), path);
+  std::vector<Scene> scenes =
+      read_document(internal::parse_toml(text, path_text(path)), path_text(path), path);
   for (auto& scene : scenes) scene.file = path;
   return scenes;
 }

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "catena/io/tolerance_reader.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "catena/core/error.hpp"
 #include "catena/io/file_access.hpp"
@@ -16,13 +17,16 @@ namespace {
 bool finite_non_negative(double x) { return std::isfinite(x) && x >= 0.0; }
 
 // A tolerance that grows with the solvers' own error estimates lets a solver widen every check it
-// takes part in; the key is refused by name rather than as merely unknown (docs/reference/verdicts.md).
+// takes part in; the key is refused by name rather than as merely unknown
+// (docs/reference/verdicts.md).
 void refuse_estimate_factor(const internal::TableReader& item) {
   if (item.has("estimate_factor")) {
-    throw InvalidInput(fmt::format(
-        "{}: no longer accepted: a tolerance may not grow with a solver's self-reported error estimate; "
-        "write a fixed `max` (and, for an asymptotic model, model_parameter, model_order and constant)",
-        item.where("estimate_factor")));
+    throw InvalidInput(
+        fmt::format("{}: no longer accepted: a tolerance may not grow with a solver's "
+                    "self-reported error estimate; "
+                    "write a fixed `max` (and, for an asymptotic model, model_parameter, "
+                    "model_order and constant)",
+                    item.where("estimate_factor")));
   }
 }
 
@@ -34,8 +38,10 @@ void read_model_term(internal::TableReader& item, ToleranceRule& rule) {
     rule.strain_constant = item.number("strain_constant", 0.0);
   } else {
     if (!is_model_parameter(rule.model_parameter)) {
-      throw InvalidInput(fmt::format("{} = \"{}\": must be \"eps\" (model_parameter, model_order and constant "
-                                     "come together)", item.where("model_parameter"), rule.model_parameter));
+      throw InvalidInput(
+          fmt::format("{} = \"{}\": must be \"eps\" (model_parameter, model_order and constant "
+                      "come together)",
+                      item.where("model_parameter"), rule.model_parameter));
     }
     rule.model_order = static_cast<int>(item.read_integer("model_order", 1, 10));
     rule.constant = item.number("constant");
@@ -55,7 +61,8 @@ ToleranceRule read_rule(internal::TableReader& item) {
   rule.check = item.string("check");
   rule.compare = item.strings("compare");
   if (rule.compare.size() != 2) {
-    throw ParseError(fmt::format("{}: expected two names, got {}", item.where("compare"), rule.compare.size()));
+    throw ParseError(
+        fmt::format("{}: expected two names, got {}", item.where("compare"), rule.compare.size()));
   }
   rule.scene_pattern = item.string("scene", "*");
   rule.tag = item.string("tag", "");
@@ -63,7 +70,8 @@ ToleranceRule read_rule(internal::TableReader& item) {
   read_model_term(item, rule);
   const std::string beyond = item.string("beyond", "fail");
   if (beyond != "fail" && beyond != "warn") {
-    throw InvalidInput(fmt::format("{} = \"{}\": must be \"fail\" or \"warn\"", item.where("beyond"), beyond));
+    throw InvalidInput(
+        fmt::format("{} = \"{}\": must be \"fail\" or \"warn\"", item.where("beyond"), beyond));
   }
   rule.warn_only = beyond == "warn";
   rule.reason = item.string("reason");
@@ -82,7 +90,8 @@ SolverAccuracy read_solver(internal::TableReader& item) {
   solver.name = item.string("name");
   const std::string family = item.string("family");
   if (family != "exact" && family != "model") {
-    throw InvalidInput(fmt::format("{} = \"{}\": must be \"exact\" or \"model\"", item.where("family"), family));
+    throw InvalidInput(
+        fmt::format("{} = \"{}\": must be \"exact\" or \"model\"", item.where("family"), family));
   }
   solver.exact = family == "exact";
   solver.accuracy = item.number("accuracy");
@@ -102,9 +111,11 @@ SolverAccuracy read_solver(internal::TableReader& item) {
 ToleranceTable read_tolerance_document(const toml::value& document, const std::string& origin) {
   internal::TableReader root(document, origin, "");
   std::vector<ToleranceRule> rules;
-  for (internal::TableReader& item : root.table_array("tolerance")) rules.push_back(read_rule(item));
+  for (internal::TableReader& item : root.table_array("tolerance"))
+    rules.push_back(read_rule(item));
   std::vector<SolverAccuracy> solvers;
-  for (internal::TableReader& item : root.table_array("solver")) solvers.push_back(read_solver(item));
+  for (internal::TableReader& item : root.table_array("solver"))
+    solvers.push_back(read_solver(item));
   root.finish();
   return ToleranceTable(std::move(rules), std::move(solvers));
 }
@@ -120,8 +131,9 @@ ToleranceTable read_tolerance_file(const std::filesystem::path& path) {
 }
 
 ToleranceTable builtin_tolerance_table() {
-  return read_tolerance_document(internal::toml_from_json(nlohmann::json::parse(internal::kBuiltinTolerancesJson)),
-                                 "verification/tolerances.toml (built in)");
+  return read_tolerance_document(
+      internal::toml_from_json(nlohmann::json::parse(internal::kBuiltinTolerancesJson)),
+      "verification/tolerances.toml (built in)");
 }
 
 }  // namespace catena

@@ -1,25 +1,29 @@
 // SPDX-License-Identifier: MIT
 #include "catena/models/cable.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 
 namespace catena {
 namespace {
 
-void require_finite_positive(double value, const char* field, const char* unit,
+void require_finite_positive(double value,
+                             const char* field,
+                             const char* unit,
                              double largest = kMaxCableMagnitude) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw InvalidInput(fmt::format("Invalid CableProperties::{} = {}: must be finite and > 0 [{}]",
                                    field, value, unit));
   }
   if (value < kMinCableMagnitude || value > largest) {
-    throw InvalidInput(fmt::format("Invalid CableProperties::{} = {}: must be in [{:g}, {:g}] [{}] (beyond, the "
-                                   "statics overflow or underflow)",
-                                   field, value, kMinCableMagnitude, largest, unit));
+    throw InvalidInput(
+        fmt::format("Invalid CableProperties::{} = {}: must be in [{:g}, {:g}] [{}] (beyond, the "
+                    "statics overflow or underflow)",
+                    field, value, kMinCableMagnitude, largest, unit));
   }
 }
 
@@ -37,29 +41,33 @@ void CableProperties::validate() const {
         "Invalid CableProperties::axial_stiffness_n = {}: must be > 0 or +inf (inextensible) [N]",
         axial_stiffness_n));
   }
-  if (!is_inextensible()) require_finite_positive(axial_stiffness_n, "axial_stiffness_n", "N", kMaxAxialStiffness);
+  if (!is_inextensible())
+    require_finite_positive(axial_stiffness_n, "axial_stiffness_n", "N", kMaxAxialStiffness);
   if (!std::isfinite(added_mass_kg_per_m) || added_mass_kg_per_m < 0.0) {
     throw InvalidInput(fmt::format(
         "Invalid CableProperties::added_mass_kg_per_m = {}: must be finite and >= 0 [kg/m]",
         added_mass_kg_per_m));
   }
-  if (added_mass_kg_per_m > 0.0) require_finite_positive(added_mass_kg_per_m, "added_mass_kg_per_m", "kg/m");
+  if (added_mass_kg_per_m > 0.0)
+    require_finite_positive(added_mass_kg_per_m, "added_mass_kg_per_m", "kg/m");
 }
 
 void Supports::validate() const {
   for (int i = 0; i < 2; ++i) {
     if (!(std::abs(a_m[i]) <= kMaxCableMagnitude) || !(std::abs(b_m[i]) <= kMaxCableMagnitude)) {
-      throw InvalidInput(fmt::format("Invalid Supports: a = ({}, {}), b = ({}, {}): coordinates must "
-                                     "be finite and within +-{:g} [m]",
-                                     a_m.x(), a_m.y(), b_m.x(), b_m.y(), kMaxCableMagnitude));
+      throw InvalidInput(
+          fmt::format("Invalid Supports: a = ({}, {}), b = ({}, {}): coordinates must "
+                      "be finite and within +-{:g} [m]",
+                      a_m.x(), a_m.y(), b_m.x(), b_m.y(), kMaxCableMagnitude));
     }
   }
   // hypot: the squares of large coordinates must not overflow into "coincident" ends.
   const double scale = std::max({1.0, std::hypot(a_m.x(), a_m.y()), std::hypot(b_m.x(), b_m.y())});
   if (std::hypot(chord_m().x(), chord_m().y()) <= 1e-12 * scale) {
-    throw InvalidInput(fmt::format("Invalid Supports: a = ({}, {}) and b = ({}, {}) coincide; the "
-                                   "ends must be apart",
-                                   a_m.x(), a_m.y(), b_m.x(), b_m.y()));
+    throw InvalidInput(
+        fmt::format("Invalid Supports: a = ({}, {}) and b = ({}, {}) coincide; the "
+                    "ends must be apart",
+                    a_m.x(), a_m.y(), b_m.x(), b_m.y()));
   }
   if (b_m.x() < a_m.x()) {
     throw InvalidInput(fmt::format(
@@ -71,10 +79,14 @@ void Supports::validate() const {
 
 std::string to_string(ProblemForm form) {
   switch (form) {
-    case ProblemForm::Physical: return "cable";
-    case ProblemForm::TautInclined: return "taut_inclined";
-    case ProblemForm::GaleXi: return "gale_xi";
-    case ProblemForm::GaleSag: return "gale_sag";
+    case ProblemForm::Physical:
+      return "cable";
+    case ProblemForm::TautInclined:
+      return "taut_inclined";
+    case ProblemForm::GaleXi:
+      return "gale_xi";
+    case ProblemForm::GaleSag:
+      return "gale_sag";
   }
   return "unknown";
 }
@@ -87,7 +99,8 @@ void Problem::validate() const {
   } else {
     line.validate();
     if (prescribed_forces) {
-      throw InvalidInput("Invalid Problem::prescribed_forces: a general line is solved from its geometry only");
+      throw InvalidInput(
+          "Invalid Problem::prescribed_forces: a general line is solved from its geometry only");
     }
   }
   supports.validate();
@@ -99,16 +112,19 @@ void Problem::validate_seabed() const {
   const double z = seabed->z_m;
   const double tolerance = 1e-9 * std::max(1.0, std::abs(z));
   if (!(std::abs(supports.a_m.y() - z) <= tolerance)) {
-    throw InvalidInput(fmt::format("Invalid seabed.z = {}: end A (the anchor) must lie on the seabed; a.z = {} [m]",
-                                   z, supports.a_m.y()));
+    throw InvalidInput(fmt::format(
+        "Invalid seabed.z = {}: end A (the anchor) must lie on the seabed; a.z = {} [m]", z,
+        supports.a_m.y()));
   }
   if (supports.b_m.y() < z - tolerance) {
-    throw InvalidInput(fmt::format("Invalid seabed.z = {}: end B (the fairlead) must not be below the seabed; "
-                                   "b.z = {} [m]",
-                                   z, supports.b_m.y()));
+    throw InvalidInput(
+        fmt::format("Invalid seabed.z = {}: end B (the fairlead) must not be below the seabed; "
+                    "b.z = {} [m]",
+                    z, supports.b_m.y()));
   }
   if (prescribed_forces) {
-    throw InvalidInput("Invalid Problem::prescribed_forces: a line on a seabed is solved from its geometry only");
+    throw InvalidInput(
+        "Invalid Problem::prescribed_forces: a line on a seabed is solved from its geometry only");
   }
 }
 

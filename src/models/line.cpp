@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "catena/models/line.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "catena/core/error.hpp"
 #include "catena/models/cable.hpp"
@@ -11,20 +12,25 @@ namespace catena {
 namespace {
 
 // Throws InvalidInput naming `line.<field>` unless `value` is finite and within the magnitude
-// bounds of a cable value (docs/reference/scene-format.md, "Limits"); `sign` > 0: must be > 0, 0: >= 0,
-// any other: any sign.
-void require_value(double value, const std::string& field, const char* unit, int sign,
+// bounds of a cable value (docs/reference/scene-format.md, "Limits"); `sign` > 0: must be > 0, 0:
+// >= 0, any other: any sign.
+void require_value(double value,
+                   const std::string& field,
+                   const char* unit,
+                   int sign,
                    double largest = kMaxCableMagnitude) {
   const char* rule = sign > 0 ? "finite and > 0" : sign == 0 ? "finite and >= 0" : "finite";
   const bool sign_ok = sign > 0 ? value > 0.0 : sign == 0 ? value >= 0.0 : true;
   if (!std::isfinite(value) || !sign_ok) {
-    throw InvalidInput(fmt::format("Invalid line.{} = {}: must be {} [{}]", field, value, rule, unit));
+    throw InvalidInput(
+        fmt::format("Invalid line.{} = {}: must be {} [{}]", field, value, rule, unit));
   }
   const double magnitude = std::abs(value);
   if (magnitude != 0.0 && (magnitude < kMinCableMagnitude || magnitude > largest)) {
-    throw InvalidInput(fmt::format("Invalid line.{} = {}: its magnitude must be in [{:g}, {:g}] [{}] "
-                                   "(beyond, the statics overflow or underflow)",
-                                   field, value, kMinCableMagnitude, largest, unit));
+    throw InvalidInput(
+        fmt::format("Invalid line.{} = {}: its magnitude must be in [{:g}, {:g}] [{}] "
+                    "(beyond, the statics overflow or underflow)",
+                    field, value, kMinCableMagnitude, largest, unit));
   }
 }
 
@@ -36,28 +42,35 @@ void validate_segment(const LineSegment& segment, std::size_t index) {
   require_value(segment.added_mass_kg_per_m, name + "added_mass", "kg/m", 0);
   const double ea = segment.axial_stiffness_n;
   if (std::isnan(ea) || ea <= 0.0) {
-    throw InvalidInput(fmt::format("Invalid line.{}EA = {}: must be > 0 or \"inf\" (inextensible) [N]", name, ea));
+    throw InvalidInput(
+        fmt::format("Invalid line.{}EA = {}: must be > 0 or \"inf\" (inextensible) [N]", name, ea));
   }
   if (!segment.is_inextensible()) require_value(ea, name + "EA", "N", 1, kMaxAxialStiffness);
 }
 
-void validate_point(const PointAttachment& point, std::size_t index, double length, double previous_s) {
+void validate_point(const PointAttachment& point,
+                    std::size_t index,
+                    double length,
+                    double previous_s) {
   const std::string name = fmt::format("points[{}].", index);
   require_value(point.s_m, name + "s", "m", 0);
   if (!(point.s_m > 1e-9 * length && point.s_m < length * (1.0 - 1e-9))) {
-    throw InvalidInput(fmt::format("Invalid line.{}s = {}: must be strictly inside the line, 0 < s < L = {} [m] "
-                                   "(a load at an end is carried by the support)",
-                                   name, point.s_m, length));
+    throw InvalidInput(
+        fmt::format("Invalid line.{}s = {}: must be strictly inside the line, 0 < s < L = {} [m] "
+                    "(a load at an end is carried by the support)",
+                    name, point.s_m, length));
   }
   if (!(point.s_m > previous_s + 1e-9 * length)) {
-    throw InvalidInput(fmt::format("Invalid line.{}s = {}: points must be in increasing order of s and apart "
-                                   "(the previous point is at s = {} m); merge points at the same place",
-                                   name, point.s_m, previous_s));
+    throw InvalidInput(
+        fmt::format("Invalid line.{}s = {}: points must be in increasing order of s and apart "
+                    "(the previous point is at s = {} m); merge points at the same place",
+                    name, point.s_m, previous_s));
   }
   require_value(point.mass_kg, name + "mass", "kg", 0);
   require_value(point.weight_n, name + "weight", "N", -1);
   require_value(point.added_mass_kg, name + "added_mass", "kg", 0);
-  const std::optional<double>* directional[] = {&point.added_mass_tangential_kg, &point.added_mass_normal_kg,
+  const std::optional<double>* directional[] = {&point.added_mass_tangential_kg,
+                                                &point.added_mass_normal_kg,
                                                 &point.added_mass_outofplane_kg};
   const char* keys[] = {"added_mass_tangential", "added_mass_normal", "added_mass_outofplane"};
   for (int i = 0; i < 3; ++i) {
@@ -85,7 +98,8 @@ bool Line::is_inextensible() const {
 }
 
 void Line::validate() const {
-  if (segments.empty()) throw InvalidInput("Invalid line.segments: a line needs at least one segment");
+  if (segments.empty())
+    throw InvalidInput("Invalid line.segments: a line needs at least one segment");
   for (std::size_t i = 0; i < segments.size(); ++i) validate_segment(segments[i], i);
   const double length = length_m();
   double previous_s = 0.0;
@@ -97,8 +111,8 @@ void Line::validate() const {
 
 Line line_of_cable(const CableProperties& cable) {
   Line line;
-  line.segments.push_back({cable.length_m, cable.weight_n_per_m, cable.axial_stiffness_n, cable.mass_kg_per_m,
-                           cable.added_mass_kg_per_m});
+  line.segments.push_back({cable.length_m, cable.weight_n_per_m, cable.axial_stiffness_n,
+                           cable.mass_kg_per_m, cable.added_mass_kg_per_m});
   return line;
 }
 

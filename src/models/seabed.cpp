@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "catena/models/seabed.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "catena/core/error.hpp"
 
@@ -11,14 +12,16 @@ namespace {
 
 void require_finite_non_negative(double value, const char* field, const char* unit) {
   if (!std::isfinite(value) || value < 0.0) {
-    throw InvalidInput(fmt::format("Invalid seabed.{} = {}: must be finite and >= 0 [{}]", field, value, unit));
+    throw InvalidInput(
+        fmt::format("Invalid seabed.{} = {}: must be finite and >= 0 [{}]", field, value, unit));
   }
 }
 
 }  // namespace
 
 void Seabed::validate() const {
-  if (!std::isfinite(z_m)) throw InvalidInput(fmt::format("Invalid seabed.z = {}: must be finite [m]", z_m));
+  if (!std::isfinite(z_m))
+    throw InvalidInput(fmt::format("Invalid seabed.z = {}: must be finite [m]", z_m));
   require_finite_non_negative(friction, "friction", "-");
   require_finite_non_negative(stiffness_n_per_m2, "stiffness", "N/m per m");
   require_finite_non_negative(tangential_stiffness_n_per_m2, "tangential_stiffness", "N/m per m");

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "catena/statics/dimensionless_groups.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 #include "catena/statics/gale_coordinates.hpp"
@@ -110,10 +111,14 @@ DimensionlessGroups compute_dimensionless_groups(const Problem& problem,
 
 std::string to_string(FrequencyUnit unit) {
   switch (unit) {
-    case FrequencyUnit::RadPerSecond: return "rad/s";
-    case FrequencyUnit::Hertz: return "Hz";
-    case FrequencyUnit::KLOverPi: return "kL/pi";
-    case FrequencyUnit::GaleRatio: return "gale";
+    case FrequencyUnit::RadPerSecond:
+      return "rad/s";
+    case FrequencyUnit::Hertz:
+      return "Hz";
+    case FrequencyUnit::KLOverPi:
+      return "kL/pi";
+    case FrequencyUnit::GaleRatio:
+      return "gale";
   }
   return "?";
 }
@@ -128,19 +133,28 @@ std::optional<FrequencyUnit> parse_frequency_unit(const std::string& text) {
 
 double to_rad_per_second(double value, FrequencyUnit unit, const DimensionlessGroups& groups) {
   switch (unit) {
-    case FrequencyUnit::RadPerSecond: return value;
-    case FrequencyUnit::Hertz: return 2.0 * kPi * value;
-    case FrequencyUnit::KLOverPi: return groups.omega_from_k_l_over_pi(value);
-    case FrequencyUnit::GaleRatio: return groups.omega_from_gale_ratio(value);
+    case FrequencyUnit::RadPerSecond:
+      return value;
+    case FrequencyUnit::Hertz:
+      return 2.0 * kPi * value;
+    case FrequencyUnit::KLOverPi:
+      return groups.omega_from_k_l_over_pi(value);
+    case FrequencyUnit::GaleRatio:
+      return groups.omega_from_gale_ratio(value);
   }
   return value;
 }
 
-double from_rad_per_second(double omega_rad_s, FrequencyUnit unit, const DimensionlessGroups& groups) {
+double from_rad_per_second(double omega_rad_s,
+                           FrequencyUnit unit,
+                           const DimensionlessGroups& groups) {
   switch (unit) {
-    case FrequencyUnit::RadPerSecond: return omega_rad_s;
-    case FrequencyUnit::Hertz: return omega_rad_s / (2.0 * kPi);
-    case FrequencyUnit::KLOverPi: return groups.k_l_over_pi(omega_rad_s);
+    case FrequencyUnit::RadPerSecond:
+      return omega_rad_s;
+    case FrequencyUnit::Hertz:
+      return omega_rad_s / (2.0 * kPi);
+    case FrequencyUnit::KLOverPi:
+      return groups.k_l_over_pi(omega_rad_s);
     case FrequencyUnit::GaleRatio: {
       const auto ratio = groups.gale_ratio(omega_rad_s);
       if (!ratio) throw InvalidInput("Gale's frequency ratio is undefined for a vertical cable");

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "catena/statics/elastic_catenary.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 #include "catena/statics/line_statics.hpp"
@@ -21,7 +22,6 @@ using internal::asinh_difference;
 using internal::inverse_stiffness;
 using internal::offset;
 using internal::offset_jacobian;
-
 
 StaticSolution solve_vertical(const Problem& problem) {
   const CableProperties& cable = problem.cable;
@@ -156,12 +156,13 @@ StaticSolution solve_newton(const Problem& problem, const StaticsOptions& option
 
 void StaticsOptions::validate() const {
   if (!(relative_tolerance > 0.0 && relative_tolerance <= 1e-3)) {
-    throw InvalidInput(fmt::format(
-        "Invalid StaticsOptions::relative_tolerance = {}: must be in (0, 1e-3]", relative_tolerance));
+    throw InvalidInput(
+        fmt::format("Invalid StaticsOptions::relative_tolerance = {}: must be in (0, 1e-3]",
+                    relative_tolerance));
   }
   if (max_iterations < 1) {
-    throw InvalidInput(fmt::format("Invalid StaticsOptions::max_iterations = {}: must be >= 1",
-                                   max_iterations));
+    throw InvalidInput(
+        fmt::format("Invalid StaticsOptions::max_iterations = {}: must be >= 1", max_iterations));
   }
 }
 
@@ -175,10 +176,11 @@ StaticSolution::StaticSolution(const Line& line, const Vec2& a_m, double H, doub
   cable_.length_m = line.length_m();
 }
 
-StaticSolution::StaticSolution(const Line& line, const Vec2& a_m, const Seabed& seabed, double H,
-                               double grounded_length_m)
+StaticSolution::StaticSolution(
+    const Line& line, const Vec2& a_m, const Seabed& seabed, double H, double grounded_length_m)
     : line_(line),
-      pieces_(internal::build_seabed_pieces(line, seabed.friction, seabed.z_m - a_m.y(), H, grounded_length_m)),
+      pieces_(internal::build_seabed_pieces(
+          line, seabed.friction, seabed.z_m - a_m.y(), H, grounded_length_m)),
       a_m_(a_m),
       H_(H),
       V_A_(grounded_length_m > 0.0 ? 0.0 : pieces_.front().vertical_begin_n),
@@ -194,8 +196,9 @@ double StaticSolution::anchor_horizontal_force_n() const {
 }
 
 const StaticPiece& StaticSolution::piece_at(double s) const {
-  auto after = std::upper_bound(pieces_.begin(), pieces_.end(), s,
-                                [](double value, const StaticPiece& piece) { return value < piece.s_begin_m; });
+  auto after = std::upper_bound(
+      pieces_.begin(), pieces_.end(), s,
+      [](double value, const StaticPiece& piece) { return value < piece.s_begin_m; });
   return after == pieces_.begin() ? pieces_.front() : *(after - 1);
 }
 
@@ -213,8 +216,9 @@ double StaticSolution::vertical_force_n(double s) const {
 
 double StaticSolution::vertical_force_before_n(double s) const {
   if (!is_line()) return vertical_force_n(s);
-  auto at = std::lower_bound(pieces_.begin(), pieces_.end(), s,
-                             [](const StaticPiece& piece, double value) { return piece.s_begin_m < value; });
+  auto at = std::lower_bound(
+      pieces_.begin(), pieces_.end(), s,
+      [](const StaticPiece& piece, double value) { return piece.s_begin_m < value; });
   const StaticPiece& piece = at == pieces_.begin() ? pieces_.front() : *(at - 1);
   if (piece.grounded) return 0.0;
   return piece.vertical_begin_n + piece.section.weight_n_per_m * (s - piece.s_begin_m);
@@ -244,7 +248,8 @@ double StaticSolution::lowest_point_s_m() const {
 double StaticSolution::tension_n(double s) const {
   if (has_contact() && s < grounded_length_m_) {
     const StaticPiece& piece = piece_at(s);
-    if (piece.grounded) return internal::grounded_tension(piece, seabed_->friction, s - piece.s_begin_m);
+    if (piece.grounded)
+      return internal::grounded_tension(piece, seabed_->friction, s - piece.s_begin_m);
   }
   return std::hypot(H_, vertical_force_n(s));
 }
@@ -272,19 +277,23 @@ Vec2 StaticSolution::offset_m(double s) const {
   const StaticPiece& piece = piece_at(s);
   if (piece.grounded) {
     const double ds = s - piece.s_begin_m;
-    return piece.offset_begin_m + Vec2(internal::grounded_stretched_increment(piece, seabed_->friction, ds), 0.0);
+    return piece.offset_begin_m +
+           Vec2(internal::grounded_stretched_increment(piece, seabed_->friction, ds), 0.0);
   }
-  return piece.offset_begin_m + offset(piece.section, H_, piece.vertical_begin_n, s - piece.s_begin_m);
+  return piece.offset_begin_m +
+         offset(piece.section, H_, piece.vertical_begin_n, s - piece.s_begin_m);
 }
 
 double StaticSolution::stretched_length_m(double s) const {
   if (!is_line()) return internal::stretched_increment(cable_, H_, V_A_, s);
   const StaticPiece& piece = piece_at(s);
   if (piece.grounded) {
-    return piece.stretched_begin_m + internal::grounded_stretched_increment(piece, seabed_->friction, s - piece.s_begin_m);
+    return piece.stretched_begin_m +
+           internal::grounded_stretched_increment(piece, seabed_->friction, s - piece.s_begin_m);
   }
-  return piece.stretched_begin_m +
-         internal::stretched_increment(piece.section, H_, piece.vertical_begin_n, s - piece.s_begin_m);
+  return piece.stretched_begin_m + internal::stretched_increment(piece.section, H_,
+                                                                 piece.vertical_begin_n,
+                                                                 s - piece.s_begin_m);
 }
 
 std::string StaticSolution::brief_report() const {

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "catena/statics/line_statics.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <string>
 
 #include "catena/core/error.hpp"
@@ -25,13 +26,15 @@ Vec2 closure_residual(const Line& line, const Vec2& chord, double H, double V_A)
 
 // Newton from `start` with a backtracking line search keeping H > 0; stops at `tolerance`, at a
 // stall, or after `max_iterations`.
-NewtonRun newton_from(const Line& line, const Vec2& chord, Vec2 start, double tolerance, int max_iterations) {
+NewtonRun newton_from(
+    const Line& line, const Vec2& chord, Vec2 start, double tolerance, int max_iterations) {
   NewtonRun run{start, closure_residual(line, chord, start.x(), start.y()).norm(), 0};
   Vec2 r = closure_residual(line, chord, start.x(), start.y());
   if (!r.allFinite()) return run;
   Vec2& f = run.forces;
   for (; run.iterations < max_iterations && r.norm() > tolerance; ++run.iterations) {
-    const Eigen::Matrix2d J = internal::line_end_jacobian(internal::build_line_pieces(line, f.x(), f.y()), f.x());
+    const Eigen::Matrix2d J =
+        internal::line_end_jacobian(internal::build_line_pieces(line, f.x(), f.y()), f.x());
     const Vec2 step = J.fullPivLu().solve(-r);
     if (!step.allFinite()) break;
     bool accepted = false;
@@ -54,7 +57,8 @@ NewtonRun newton_from(const Line& line, const Vec2& chord, Vec2 start, double to
 // Sum of |weight| over the segments and points [N]: the force scale of the statics (0: weightless).
 double weight_scale(const Line& line) {
   double scale = 0.0;
-  for (const LineSegment& segment : line.segments) scale += std::abs(segment.weight_n_per_m) * segment.length_m;
+  for (const LineSegment& segment : line.segments)
+    scale += std::abs(segment.weight_n_per_m) * segment.length_m;
   for (const PointAttachment& point : line.points) scale += std::abs(point.weight_n);
   return scale;
 }
@@ -64,7 +68,8 @@ double weight_scale(const Line& line) {
 Vec2 equivalent_start(const Line& line, const Vec2& chord) {
   const double L = line.length_m();
   double total_weight = 0.0;
-  for (const LineSegment& segment : line.segments) total_weight += segment.weight_n_per_m * segment.length_m;
+  for (const LineSegment& segment : line.segments)
+    total_weight += segment.weight_n_per_m * segment.length_m;
   for (const PointAttachment& point : line.points) total_weight += point.weight_n;
   const double scale = weight_scale(line);
   const double force_scale = scale == 0.0 ? 1.0 : scale;
@@ -81,38 +86,51 @@ void check_reachable(const Problem& problem) {
   const Vec2 chord = problem.supports.chord_m();
   const double d = chord.norm();
   if (chord.x() <= 1e-14 * d) {
-    throw InvalidInput(fmt::format(
-        "No static equilibrium computed for a general line on a vertical chord (b - a = ({}, {}) m): give the "
-        "ends a horizontal offset",
-        chord.x(), chord.y()));
+    throw InvalidInput(
+        fmt::format("No static equilibrium computed for a general line on a vertical chord (b - a "
+                    "= ({}, {}) m): give the "
+                    "ends a horizontal offset",
+                    chord.x(), chord.y()));
   }
   if (line.is_inextensible() && line.length_m() <= d * (1.0 + 1e-14)) {
-    throw InvalidInput(fmt::format(
-        "Invalid line.segments: the line is too short for its ends: the chord |b - a| = {:.10g} m is {} the "
-        "total length {:.10g} m of an inextensible line",
-        d, line.length_m() < d ? "longer than" : "equal to", line.length_m()));
+    throw InvalidInput(
+        fmt::format("Invalid line.segments: the line is too short for its ends: the chord |b - a| "
+                    "= {:.10g} m is {} the "
+                    "total length {:.10g} m of an inextensible line",
+                    d, line.length_m() < d ? "longer than" : "equal to", line.length_m()));
   }
-  // Without weight the line is a straight bar, in tension only when stretched (docs/explanation/physics.md,
-  // "General lines": the equilibrium in tension and when it does not exist).
+  // Without weight the line is a straight bar, in tension only when stretched
+  // (docs/explanation/physics.md, "General lines": the equilibrium in tension and when it does not
+  // exist).
   if (weight_scale(line) == 0.0 && line.length_m() >= d) {
-    throw InvalidInput(fmt::format(
-        "Invalid line.segments[].weight: every segment and point of the line is weightless, so it is in "
-        "tension only when stretched, but the chord |b - a| = {:.10g} m does not exceed its length {:.10g} m: "
-        "the line would be slack (no equilibrium in tension); give it weight or move the ends apart",
-        d, line.length_m()));
+    throw InvalidInput(
+        fmt::format("Invalid line.segments[].weight: every segment and point of the line is "
+                    "weightless, so it is in "
+                    "tension only when stretched, but the chord |b - a| = {:.10g} m does not "
+                    "exceed its length {:.10g} m: "
+                    "the line would be slack (no equilibrium in tension); give it weight or move "
+                    "the ends apart",
+                    d, line.length_m()));
   }
 }
 
 // Why a run did not close: H collapsing towards 0 means part of the line would be slack (the
-// equilibrium in tension does not exist, docs/explanation/physics.md); otherwise Newton failed to find it.
-std::string closure_failure(const Line& line, const NewtonRun& best, double tolerance, int iterations) {
-  const std::string where = fmt::format("closure error {:.3e} m > {:.3e} m after {} Newton iterations from 7 starts "
-                                        "(H = {:.6g} N, V_A = {:.6g} N)",
-                                        best.closure, tolerance, iterations, best.forces.x(), best.forces.y());
+// equilibrium in tension does not exist, docs/explanation/physics.md); otherwise Newton failed to
+// find it.
+std::string closure_failure(const Line& line,
+                            const NewtonRun& best,
+                            double tolerance,
+                            int iterations) {
+  const std::string where = fmt::format(
+      "closure error {:.3e} m > {:.3e} m after {} Newton iterations from 7 starts "
+      "(H = {:.6g} N, V_A = {:.6g} N)",
+      best.closure, tolerance, iterations, best.forces.x(), best.forces.y());
   if (best.forces.x() <= 1e-8 * weight_scale(line)) {
     return fmt::format(
-        "No static equilibrium in tension: {}: H fell towards 0, so part of the line would be slack between "
-        "these ends (a weightless stretch whose vertical force vanishes, shorter than the room it has); move "
+        "No static equilibrium in tension: {}: H fell towards 0, so part of the line would be "
+        "slack between "
+        "these ends (a weightless stretch whose vertical force vanishes, shorter than the room it "
+        "has); move "
         "the ends apart or change the weights",
         where);
   }

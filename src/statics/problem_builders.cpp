@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "catena/statics/problem_builders.hpp"
 
+#include <fmt/format.h>
+
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 #include "catena/statics/elastic_catenary.hpp"
@@ -50,13 +51,16 @@ Problem make_taut_inclined_problem(double eps, double phi_deg, double lambda2, d
   // Groups far outside physical ranges (lambda2 = 5e-324, EA ~ 1e-308) leave no sign change, or a
   // non-finite angle: bad input naming the groups, not an escaping root-finder exception.
   const double at_a = chord_angle_excess(0.0), at_b = chord_angle_excess(1.0);
-  require(std::isfinite(at_a) && std::isfinite(at_b) && at_a * at_b <= 0.0,
-          fmt::format("Invalid taut_inclined eps = {}, phi_deg = {}, lambda2 = {}: no static state of "
-                      "such a cable has T0 = 1 N at the chord angle (the groups overflow or are out of range)",
-                      eps, phi_deg, lambda2));
+  require(
+      std::isfinite(at_a) && std::isfinite(at_b) && at_a * at_b <= 0.0,
+      fmt::format(
+          "Invalid taut_inclined eps = {}, phi_deg = {}, lambda2 = {}: no static state of "
+          "such a cable has T0 = 1 N at the chord angle (the groups overflow or are out of range)",
+          eps, phi_deg, lambda2));
   boost::uintmax_t iterations = 200;
-  const auto bracket = boost::math::tools::toms748_solve(
-      chord_angle_excess, 0.0, 1.0, at_a, at_b, boost::math::tools::eps_tolerance<double>(53), iterations);
+  const auto bracket =
+      boost::math::tools::toms748_solve(chord_angle_excess, 0.0, 1.0, at_a, at_b,
+                                        boost::math::tools::eps_tolerance<double>(53), iterations);
   const double s_a = 0.5 * (bracket.first + bracket.second);
   const double V_A = sin_phi - eps * s_a;
   problem.supports.a_m = Vec2::Zero();
@@ -72,7 +76,8 @@ Problem make_gale_xi_problem(double xi1, double xi2) {
   require(std::max(std::abs(xi1), std::abs(xi2)) <= 1e4,
           fmt::format("Invalid gale xi1 = {}, xi2 = {}: |xi| must be <= 1e4", xi1, xi2));
   // a = H/W0 = 1 m, W0 = 1 N/m, m = 1 kg/m: sqrt(g/a) = 1 rad/s. On the catenary
-  // z = a cosh(x/a), the point of parameter sigma = sinh(x/a) sits at (a asinh(sigma), a sqrt(1+sigma^2)).
+  // z = a cosh(x/a), the point of parameter sigma = sinh(x/a) sits at (a asinh(sigma), a
+  // sqrt(1+sigma^2)).
   const double a = 1.0;
   const double sigma1 = gale_sigma_from_xi(xi1);
   const double sigma2 = gale_sigma_from_xi(xi2);
@@ -129,10 +134,12 @@ Problem make_gale_sag_problem(double height_over_span, double sag_parameter) {
   // not the derived xi.
   const double reach = std::max(std::abs(xi1), std::abs(xi2));
   const bool finite = std::isfinite(xi1) && std::isfinite(xi2);
-  require(finite && reach <= 1e4,
-          fmt::format("Invalid gale sag_param = {} with h_over_b = {}: the supports would lie at |xi| = {} "
-                      "on the catenary, beyond the supported |xi| <= 1e4 (too deep a sag)",
-                      sag_parameter, height_over_span, finite ? fmt::format("{:.3g}", reach) : "beyond 1e308"));
+  require(
+      finite && reach <= 1e4,
+      fmt::format(
+          "Invalid gale sag_param = {} with h_over_b = {}: the supports would lie at |xi| = {} "
+          "on the catenary, beyond the supported |xi| <= 1e4 (too deep a sag)",
+          sag_parameter, height_over_span, finite ? fmt::format("{:.3g}", reach) : "beyond 1e308"));
   Problem problem = make_gale_xi_problem(xi1, xi2);
   problem.form = ProblemForm::GaleSag;
   return problem;

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "catena/statics/seabed_statics.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <limits>
 
 #include "catena/core/error.hpp"
@@ -60,7 +61,8 @@ struct ContactSystem {
 // Sum of |weights| of the line [N]: the scale of H from which the bracket starts.
 double weight_scale(const Line& line) {
   double scale = 0.0;
-  for (const LineSegment& segment : line.segments) scale += std::abs(segment.weight_n_per_m) * segment.length_m;
+  for (const LineSegment& segment : line.segments)
+    scale += std::abs(segment.weight_n_per_m) * segment.length_m;
   for (const PointAttachment& point : line.points) scale += std::abs(point.weight_n);
   return scale > 0.0 ? scale : 1.0;
 }
@@ -74,8 +76,10 @@ double contact_horizontal_force(const ContactSystem& system) {
   for (int i = 0; i < 120 && system.reach_residual(lo) >= 0.0; ++i) lo *= 0.5;
   if (system.reach_residual(lo) >= 0.0) {
     throw InvalidInput(fmt::format(
-        "No static equilibrium with the seabed: the line (L = {:.10g} m) is longer than the horizontal distance "
-        "{:.10g} m plus the height {:.10g} m of the fairlead above the seabed, so its grounded part would pass "
+        "No static equilibrium with the seabed: the line (L = {:.10g} m) is longer than the "
+        "horizontal distance "
+        "{:.10g} m plus the height {:.10g} m of the fairlead above the seabed, so its grounded "
+        "part would pass "
         "the fairlead (it would fold on the seabed); shorten the line or move the ends apart",
         system.line.length_m(), system.chord_m.x(), system.chord_m.y() - system.seabed_offset_z_m));
   }
@@ -87,26 +91,29 @@ void check_supported(const StaticSolution& solution, const Line& line, double to
   const double Lg = solution.grounded_length_m();
   for (std::size_t k = 0; k < line.segments.size(); ++k) {
     if (line.segment_start_m(k) < Lg && !(line.segments[k].weight_n_per_m > 0.0)) {
-      throw InvalidInput(fmt::format(
-          "Invalid line.segments[{}]: seabed contact with a buoyant or weightless segment on the grounded part "
-          "(weight {} N/m, grounded length {:.6g} m) is not supported",
-          k, line.segments[k].weight_n_per_m, Lg));
+      throw InvalidInput(
+          fmt::format("Invalid line.segments[{}]: seabed contact with a buoyant or weightless "
+                      "segment on the grounded part "
+                      "(weight {} N/m, grounded length {:.6g} m) is not supported",
+                      k, line.segments[k].weight_n_per_m, Lg));
     }
   }
   for (std::size_t i = 0; i < line.points.size(); ++i) {
     if (line.points[i].s_m <= Lg && line.points[i].weight_n < 0.0) {
-      throw InvalidInput(fmt::format(
-          "Invalid line.points[{}]: a buoy on the grounded part (s = {:.6g} m <= grounded length {:.6g} m) is "
-          "not supported",
-          i, line.points[i].s_m, Lg));
+      throw InvalidInput(
+          fmt::format("Invalid line.points[{}]: a buoy on the grounded part (s = {:.6g} m <= "
+                      "grounded length {:.6g} m) is "
+                      "not supported",
+                      i, line.points[i].s_m, Lg));
     }
   }
   const double lowest = solution.position_m(solution.lowest_point_s_m()).y();
   if (lowest < solution.seabed().z_m - tolerance) {
-    throw InvalidInput(fmt::format(
-        "seabed: the suspended part goes below the seabed again (lowest point {:.6g} m below it at s = {:.6g} m): "
-        "lift-off after touchdown and a second contact interval are not supported",
-        solution.seabed().z_m - lowest, solution.lowest_point_s_m()));
+    throw InvalidInput(
+        fmt::format("seabed: the suspended part goes below the seabed again (lowest point {:.6g} m "
+                    "below it at s = {:.6g} m): "
+                    "lift-off after touchdown and a second contact interval are not supported",
+                    solution.seabed().z_m - lowest, solution.lowest_point_s_m()));
   }
 }
 
@@ -132,8 +139,10 @@ StaticSolution solve_contact(const Problem& problem, const StaticsOptions& optio
   if (!(solution.closure_error_m <= accepted) || !std::isfinite(H)) {
     solution.converged = false;
     solution.message = fmt::format(
-        "Statics on the seabed did not converge: closure error {:.3e} m > {:.3e} m (H = {:.6g} N, grounded "
-        "length {:.6g} m); the touchdown may fall on a point weight, where the line leaves the seabed at an angle "
+        "Statics on the seabed did not converge: closure error {:.3e} m > {:.3e} m (H = {:.6g} N, "
+        "grounded "
+        "length {:.6g} m); the touchdown may fall on a point weight, where the line leaves the "
+        "seabed at an angle "
         "(not supported)",
         solution.closure_error_m, accepted, H, grounded_length);
   }
@@ -151,10 +160,11 @@ StaticSolution solve_seabed_statics(const Problem& problem, const StaticsOptions
   const Seabed& seabed = *problem.seabed;
   const double tolerance = 1e-9 * std::max(1.0, std::abs(seabed.z_m));
   if (problem.supports.b_m.y() <= seabed.z_m + tolerance) {
-    throw InvalidInput(fmt::format(
-        "Invalid seabed.z = {}: end B (the fairlead) lies on the seabed (b.z = {}): a line entirely on the seabed "
-        "is not supported; the fairlead must be above the seabed",
-        seabed.z_m, problem.supports.b_m.y()));
+    throw InvalidInput(
+        fmt::format("Invalid seabed.z = {}: end B (the fairlead) lies on the seabed (b.z = {}): a "
+                    "line entirely on the seabed "
+                    "is not supported; the fairlead must be above the seabed",
+                    seabed.z_m, problem.supports.b_m.y()));
   }
   StaticSolution solution = solve_statics(free, options);
   if (stays_off_seabed(solution, seabed, tolerance)) {

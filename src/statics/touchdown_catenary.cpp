@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "catena/statics/touchdown_catenary.hpp"
 
+#include <fmt/format.h>
+
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 
@@ -12,8 +13,8 @@ namespace {
 
 void require_positive(double value, const char* name, const char* unit) {
   if (!std::isfinite(value) || value <= 0.0) {
-    throw InvalidInput(fmt::format("Invalid touchdown {} = {}: must be finite and > 0 [{}]", name,
-                                   value, unit));
+    throw InvalidInput(
+        fmt::format("Invalid touchdown {} = {}: must be finite and > 0 [{}]", name, value, unit));
   }
 }
 
@@ -26,7 +27,7 @@ TouchdownLine touchdown_from_depth_and_tension(const CableProperties& cable,
   require_positive(depth_m, "depth_m", "m");
   require_positive(horizontal_tension_n, "horizontal_tension_n", "N");
   const double T_H = horizontal_tension_n;
-  const double c = T_H / cable.weight_n_per_m;                           // (1.9)
+  const double c = T_H / cable.weight_n_per_m;  // (1.9)
   const double k = cable.is_inextensible() ? 0.0 : T_H / cable.axial_stiffness_n;
   // (1.10) as a quadratic in S = sec(theta): (c k/2) S^2 + c S - Q = 0, Q = depth + c (1 + k/2).
   // The root in the form 2Q / (c + sqrt(c^2 + 2 c k Q)) does not cancel as k -> 0.
@@ -41,7 +42,7 @@ TouchdownLine touchdown_from_depth_and_tension(const CableProperties& cable,
   line.fairlead_tension_n = T_H * sec;
   line.suspended_length_m = c * tan;
   line.suspended_stretched_length_m = c * tan + 0.5 * k * c * (tan * sec + log_term);  // (1.6)
-  line.horizontal_reach_m = c * log_term + c * tan * k;                               // (1.7)
+  line.horizontal_reach_m = c * log_term + c * tan * k;                                // (1.7)
   line.depth_m = c * sec * (1.0 + 0.5 * k * sec) - c * (1.0 + 0.5 * k);                // (1.10)
   return line;
 }
@@ -62,8 +63,8 @@ TouchdownLine touchdown_from_depth_and_reach(const CableProperties& cable,
   for (int i = 0; i < 200 && excess(low) > 0.0; ++i) low *= 0.5;
   for (int i = 0; i < 200 && excess(high) < 0.0; ++i) high *= 2.0;
   if (!(excess(low) <= 0.0 && excess(high) >= 0.0)) {
-    throw InvalidInput(fmt::format("Touchdown: no horizontal tension gives reach {} m at depth {} m",
-                                   reach_m, depth_m));
+    throw InvalidInput(fmt::format(
+        "Touchdown: no horizontal tension gives reach {} m at depth {} m", reach_m, depth_m));
   }
   boost::uintmax_t iterations = 200;
   const auto bracket = boost::math::tools::toms748_solve(

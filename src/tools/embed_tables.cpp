@@ -24,8 +24,9 @@ std::string constant(const std::string& name, const std::string& path) {
   const std::string json = catena::internal::json_from_toml(toml::parse(path)).dump();
   if (json.find(std::string(")") + kDelimiter) != std::string::npos)
     throw std::runtime_error(path + ": contains the raw-string delimiter )" + kDelimiter);
-  return "// From " + std::filesystem::path(path).filename().string() + ".\n" + "inline constexpr const char* " +
-         name + " = R\"" + kDelimiter + "(" + json + ")" + kDelimiter + "\";\n";
+  return "// From " + std::filesystem::path(path).filename().string() + ".\n" +
+         "inline constexpr const char* " + name + " = R\"" + kDelimiter + "(" + json + ")" +
+         kDelimiter + "\";\n";
 }
 
 }  // namespace
@@ -36,12 +37,14 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    std::string text = "// Generated at build time by src/tools/embed_tables.cpp: do not edit.\n#pragma once\n"
-                       "namespace catena::internal {\n";
+    std::string text =
+        "// Generated at build time by src/tools/embed_tables.cpp: do not edit.\n#pragma once\n"
+        "namespace catena::internal {\n";
     for (int i = 2; i < argc; ++i) {
       const std::string argument = argv[i];
       const auto equals = argument.find('=');
-      if (equals == std::string::npos) throw std::runtime_error("expected NAME=FILE.toml, got " + argument);
+      if (equals == std::string::npos)
+        throw std::runtime_error("expected NAME=FILE.toml, got " + argument);
       text += constant(argument.substr(0, equals), argument.substr(equals + 1));
     }
     text += "}  // namespace catena::internal\n";

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "catena/verification/certified_reference.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 namespace catena {
 namespace {
@@ -21,18 +22,21 @@ const ModalResult* plane_result(const SolverOutput& output, Plane plane) {
 double largest_estimate(const ModalResult& result) {
   double largest = 0.0;
   for (const Mode& mode : result.modes) {
-    largest = std::max(largest, mode.relative_error_estimate < 0.0 ? INFINITY : mode.relative_error_estimate);
+    largest = std::max(
+        largest, mode.relative_error_estimate < 0.0 ? INFINITY : mode.relative_error_estimate);
   }
   return largest;
 }
 
-CertifiedReference make_reference(const SolverOutput& output, const ModalResult& result, Plane plane) {
+CertifiedReference make_reference(const SolverOutput& output,
+                                  const ModalResult& result,
+                                  Plane plane) {
   CertifiedReference reference;
   reference.plane = plane;
   reference.solver = output.solver;
   for (const Mode& mode : result.modes) {
-    reference.modes.push_back({mode.index, mode.omega_rad_s, mode.relative_error_estimate, mode.s_m, mode.u, mode.w,
-                               mode.v, mode.tension_n});
+    reference.modes.push_back({mode.index, mode.omega_rad_s, mode.relative_error_estimate, mode.s_m,
+                               mode.u, mode.w, mode.v, mode.tension_n});
   }
   return reference;
 }
@@ -48,7 +52,8 @@ double largest_disagreement(const ModalResult& a, const ModalResult& b) {
 
 }  // namespace
 
-std::optional<CertifiedReference> certified_reference(const std::vector<SolverOutput>& outputs, Plane plane,
+std::optional<CertifiedReference> certified_reference(const std::vector<SolverOutput>& outputs,
+                                                      Plane plane,
                                                       std::string& why) {
   const SolverOutput* best = nullptr;
   const ModalResult* best_result = nullptr;
@@ -56,19 +61,23 @@ std::optional<CertifiedReference> certified_reference(const std::vector<SolverOu
   double best_estimate = INFINITY;
   std::vector<std::string> reports;
   for (const char* name : kReferenceSolvers) {
-    const auto output = std::find_if(outputs.begin(), outputs.end(), [&](const SolverOutput& o) { return o.solver == name; });
+    const auto output = std::find_if(outputs.begin(), outputs.end(),
+                                     [&](const SolverOutput& o) { return o.solver == name; });
     const ModalResult* result = output == outputs.end() ? nullptr : plane_result(*output, plane);
     if (!result) {
-      reports.push_back(fmt::format("{}: did not run ({})", name,
-                                    output == outputs.end() ? std::string("not requested") : output->summary.message));
+      reports.push_back(fmt::format(
+          "{}: did not run ({})", name,
+          output == outputs.end() ? std::string("not requested") : output->summary.message));
       continue;
     }
     if (result->summary.termination != Termination::Converged || result->modes.empty()) {
-      reports.push_back(fmt::format("{}: {} ({})", name, to_string(result->summary.termination), result->summary.message));
+      reports.push_back(fmt::format("{}: {} ({})", name, to_string(result->summary.termination),
+                                    result->summary.message));
       continue;
     }
     const double estimate = largest_estimate(*result);
-    reports.push_back(fmt::format("{}: converged, {} modes, largest estimate {:.2g}", name, result->modes.size(), estimate));
+    reports.push_back(fmt::format("{}: converged, {} modes, largest estimate {:.2g}", name,
+                                  result->modes.size(), estimate));
     if (estimate < best_estimate || !best) {
       if (best_result) other_result = best_result;
       best = &*output;
@@ -85,8 +94,10 @@ std::optional<CertifiedReference> certified_reference(const std::vector<SolverOu
     return std::nullopt;
   }
   CertifiedReference reference = make_reference(*best, *best_result, plane);
-  reference.reason = fmt::format("{} (the converged solver with the smaller estimate) -- {}", best->solver, joined);
-  if (other_result) reference.cross_check_relative = largest_disagreement(*best_result, *other_result);
+  reference.reason = fmt::format("{} (the converged solver with the smaller estimate) -- {}",
+                                 best->solver, joined);
+  if (other_result)
+    reference.cross_check_relative = largest_disagreement(*best_result, *other_result);
   return reference;
 }
 

@@ -2,8 +2,9 @@
 // The convergence study of one mode of another program (docs/how-to/check.md, "Convergence study"):
 // values f_i at resolutions N_i are fitted, three at a time, by f = f_inf + C h^p with h = 1/N
 // (Richardson extrapolation with unequal refinement ratios, the order found, not assumed).
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <optional>
 
 #include "catena/verification/external_check.hpp"
@@ -59,15 +60,18 @@ std::optional<TripleFit> fit_triple(const double* n, const double* f, std::strin
 bool differences_at_rounding(const std::vector<double>& values) {
   const std::size_t n = values.size();
   for (std::size_t i = n - 3; i + 1 < n; ++i) {
-    if (std::abs(values[i + 1] - values[i]) > kRoundingLevel * std::abs(values[n - 1])) return false;
+    if (std::abs(values[i + 1] - values[i]) > kRoundingLevel * std::abs(values[n - 1]))
+      return false;
   }
   return true;
 }
 
 // Four or more resolutions: the triple before the finest confirms the order and bounds the
 // uncertainty of the limit.
-void confirm_with_coarser_triple(const std::vector<double>& n, const std::vector<double>& f,
-                                 const ExternalCheckOptions& options, ConvergenceStudy& study) {
+void confirm_with_coarser_triple(const std::vector<double>& n,
+                                 const std::vector<double>& f,
+                                 const ExternalCheckOptions& options,
+                                 ConvergenceStudy& study) {
   const std::size_t k = n.size() - 4;
   std::string why;
   const auto coarse = fit_triple(&n[k], &f[k], why);
@@ -81,18 +85,22 @@ void confirm_with_coarser_triple(const std::vector<double>& n, const std::vector
   const double p = *study.observed_order;
   if (std::abs(coarse->order - p) > options.order_stability * p) {
     study.trustworthy = false;
-    study.note = fmt::format("order not stable: {:.3f} from the finest three resolutions, {:.3f} from "
-                             "the three before (allowed relative difference {})",
-                             p, coarse->order, options.order_stability);
+    study.note = fmt::format(
+        "order not stable: {:.3f} from the finest three resolutions, {:.3f} from "
+        "the three before (allowed relative difference {})",
+        p, coarse->order, options.order_stability);
     return;
   }
-  study.note = fmt::format("order {:.3f} confirmed by the coarser triple ({:.3f})", p, coarse->order);
+  study.note =
+      fmt::format("order {:.3f} confirmed by the coarser triple ({:.3f})", p, coarse->order);
 }
 
 }  // namespace
 
-ConvergenceStudy study_convergence(const std::vector<double>& resolutions, const std::vector<double>& values,
-                                   double reference, const ExternalCheckOptions& options) {
+ConvergenceStudy study_convergence(const std::vector<double>& resolutions,
+                                   const std::vector<double>& values,
+                                   double reference,
+                                   const ExternalCheckOptions& options) {
   ConvergenceStudy study;
   const std::size_t n = values.size();
   if (n < 3 || resolutions.size() != n) {
@@ -115,13 +123,15 @@ ConvergenceStudy study_convergence(const std::vector<double>& resolutions, const
     study.limit_omega_rad_s = fine->limit;
     study.trustworthy = fine->order >= kLowestTrustedOrder && fine->order <= kHighestTrustedOrder;
     if (!study.trustworthy) {
-      study.note = fmt::format("observed order {:.3f} outside [{}, {}]", fine->order, kLowestTrustedOrder,
-                               kHighestTrustedOrder);
+      study.note = fmt::format("observed order {:.3f} outside [{}, {}]", fine->order,
+                               kLowestTrustedOrder, kHighestTrustedOrder);
     } else if (n >= 4) {
       confirm_with_coarser_triple(resolutions, values, options, study);
     } else {
       study.limit_uncertainty_rad_s = std::abs(fine->limit - values.back());
-      study.note = "three resolutions: order not confirmed by a fourth; uncertainty = the extrapolation step";
+      study.note =
+          "three resolutions: order not confirmed by a fourth; uncertainty = the extrapolation "
+          "step";
     }
   }
   study.bias_relative = (*study.limit_omega_rad_s - reference) / reference;

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
-// Another program's modes against Catena's certified reference (docs/how-to/check.md): grouping of the
-// results by plane and mode, pairing with Catena's modes, per-resolution errors, the convergence
-// study and the verdict.
+// Another program's modes against Catena's certified reference (docs/how-to/check.md): grouping of
+// the results by plane and mode, pairing with Catena's modes, per-resolution errors, the
+// convergence study and the verdict.
 #include "catena/verification/external_check.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <map>
 
 #include "catena/core/error.hpp"
@@ -39,15 +40,16 @@ void sort_and_check_resolutions(ModeGroup& group) {
                                      row->origin, to_string(group.plane), group.mode));
     }
   }
-  std::stable_sort(group.rows.begin(), group.rows.end(), [](const ExternalMode* a, const ExternalMode* b) {
-    return a->resolution.value_or(0.0) < b->resolution.value_or(0.0);
-  });
+  std::stable_sort(group.rows.begin(), group.rows.end(),
+                   [](const ExternalMode* a, const ExternalMode* b) {
+                     return a->resolution.value_or(0.0) < b->resolution.value_or(0.0);
+                   });
   for (std::size_t i = 1; i < group.rows.size(); ++i) {
     if (group.rows[i]->resolution == group.rows[i - 1]->resolution) {
-      throw InvalidInput(fmt::format("{}: duplicate {} mode {}{} (also {})", group.rows[i]->origin,
-                                     to_string(group.plane), group.mode,
-                                     with ? fmt::format(" at resolution {}", *group.rows[i]->resolution) : "",
-                                     group.rows[i - 1]->origin));
+      throw InvalidInput(fmt::format(
+          "{}: duplicate {} mode {}{} (also {})", group.rows[i]->origin, to_string(group.plane),
+          group.mode, with ? fmt::format(" at resolution {}", *group.rows[i]->resolution) : "",
+          group.rows[i - 1]->origin));
     }
   }
 }
@@ -55,12 +57,15 @@ void sort_and_check_resolutions(ModeGroup& group) {
 std::vector<ModeGroup> group_results(const std::vector<ExternalMode>& results) {
   std::map<std::pair<int, int>, ModeGroup> groups;  // in-plane first, then by mode number
   for (const ExternalMode& row : results) {
-    if (row.mode < 1) throw InvalidInput(fmt::format("{}: mode = {}: must be >= 1", row.origin, row.mode));
+    if (row.mode < 1)
+      throw InvalidInput(fmt::format("{}: mode = {}: must be >= 1", row.origin, row.mode));
     if (!std::isfinite(row.omega_rad_s) || row.omega_rad_s <= 0.0) {
-      throw InvalidInput(fmt::format("{}: frequency = {} rad/s: must be finite and > 0", row.origin, row.omega_rad_s));
+      throw InvalidInput(fmt::format("{}: frequency = {} rad/s: must be finite and > 0", row.origin,
+                                     row.omega_rad_s));
     }
     if (row.resolution && !(std::isfinite(*row.resolution) && *row.resolution > 0.0)) {
-      throw InvalidInput(fmt::format("{}: resolution = {}: must be finite and > 0", row.origin, *row.resolution));
+      throw InvalidInput(
+          fmt::format("{}: resolution = {}: must be finite and > 0", row.origin, *row.resolution));
     }
     ModeGroup& group = groups[{row.plane == Plane::InPlane ? 0 : 1, row.mode}];
     group.plane = row.plane;
@@ -75,12 +80,14 @@ std::vector<ModeGroup> group_results(const std::vector<ExternalMode>& results) {
   return out;
 }
 
-const CertifiedReference& reference_for(const std::vector<CertifiedReference>& references, const ModeGroup& group) {
+const CertifiedReference& reference_for(const std::vector<CertifiedReference>& references,
+                                        const ModeGroup& group) {
   for (const auto& reference : references) {
     if (reference.plane == group.plane && !reference.modes.empty()) return reference;
   }
-  throw InvalidInput(fmt::format("{}: Catena has no {} reference modes for it (the scene asks none?)",
-                                 group_origin(group), to_string(group.plane)));
+  throw InvalidInput(
+      fmt::format("{}: Catena has no {} reference modes for it (the scene asks none?)",
+                  group_origin(group), to_string(group.plane)));
 }
 
 double relative_distance(double a, double b) { return std::abs(a / b - 1.0); }
@@ -94,8 +101,10 @@ struct Candidate {
 
 // Pairs the groups of one plane with Catena's modes, one to one, greedily by score: by MAC (of
 // the finest result) when every group has a shape, else by relative frequency distance.
-void pair_plane(const std::vector<ModeGroup>& groups, const std::vector<std::size_t>& members,
-                const CertifiedReference& reference, std::vector<ModeComparison>& out) {
+void pair_plane(const std::vector<ModeGroup>& groups,
+                const std::vector<std::size_t>& members,
+                const CertifiedReference& reference,
+                std::vector<ModeComparison>& out) {
   bool by_mac = true;
   for (std::size_t g : members) by_mac = by_mac && groups[g].finest().shape.has_value();
   std::vector<Candidate> candidates;
@@ -106,7 +115,8 @@ void pair_plane(const std::vector<ModeGroup>& groups, const std::vector<std::siz
       if (!by_mac) {
         candidates.push_back({g, r, distance, -1.0});
       } else if (distance <= kMacPairingWindow) {
-        const double mac = internal::compare_shape(*finest.shape, groups[g].plane, reference.modes[r]).mac;
+        const double mac =
+            internal::compare_shape(*finest.shape, groups[g].plane, reference.modes[r]).mac;
         candidates.push_back({g, r, -mac, mac});
       }
     }
@@ -123,7 +133,9 @@ void pair_plane(const std::vector<ModeGroup>& groups, const std::vector<std::siz
     mode.reference_omega_rad_s = ref.omega_rad_s;
     mode.reference_relative_estimate = ref.relative_error_estimate;
     mode.pairing = c.mac >= 0.0 ? fmt::format("MAC {:.6f}", c.mac) : std::string("frequency");
-    if (ref.index != mode.mode) mode.pairing += fmt::format("; the other program's mode {} is Catena's mode {}", mode.mode, ref.index);
+    if (ref.index != mode.mode)
+      mode.pairing +=
+          fmt::format("; the other program's mode {} is Catena's mode {}", mode.mode, ref.index);
   }
 }
 
@@ -132,14 +144,18 @@ ModeVerdict decide(const ModeComparison& mode, double rtol) {
   const bool within = std::abs(mode.resolutions.back().relative_error) <= rtol;
   const auto& study = mode.study;
   if (study && study->trustworthy && study->bias_relative) {
-    const double uncertainty = study->limit_uncertainty_rad_s.value_or(0.0) / mode.reference_omega_rad_s;
-    if (std::abs(*study->bias_relative) - uncertainty > rtol) return ModeVerdict::ConvergesToWrongLimit;
+    const double uncertainty =
+        study->limit_uncertainty_rad_s.value_or(0.0) / mode.reference_omega_rad_s;
+    if (std::abs(*study->bias_relative) - uncertainty > rtol)
+      return ModeVerdict::ConvergesToWrongLimit;
     return within ? ModeVerdict::Converged : ModeVerdict::NotYetWithinTolerance;
   }
   return within ? ModeVerdict::WithinTolerance : ModeVerdict::BeyondTolerance;
 }
 
-void compare_mode(const ModeGroup& group, const CertifiedReference& reference, const ExternalCheckOptions& options,
+void compare_mode(const ModeGroup& group,
+                  const CertifiedReference& reference,
+                  const ExternalCheckOptions& options,
                   ModeComparison& mode) {
   if (mode.reference_index == 0) {
     mode.pairing = "no Catena mode left to pair with";
@@ -164,7 +180,8 @@ void compare_mode(const ModeGroup& group, const CertifiedReference& reference, c
       resolutions.push_back(row->resolution.value_or(0.0));
       values.push_back(row->omega_rad_s);
     }
-    if (group.rows.size() >= 3) mode.study = study_convergence(resolutions, values, ref.omega_rad_s, options);
+    if (group.rows.size() >= 3)
+      mode.study = study_convergence(resolutions, values, ref.omega_rad_s, options);
   }
   mode.verdict = decide(mode, options.rtol);
 }
@@ -174,9 +191,11 @@ void validate_shapes(const ModeGroup& group, const CertifiedReference& reference
     if (!row->shape) continue;
     const ReferenceMode& any = reference.modes.front();
     if (any.s_m.size() < 2) {
-      throw InvalidInput(fmt::format("{}: a shape was given but the reference has no shapes", row->origin));
+      throw InvalidInput(
+          fmt::format("{}: a shape was given but the reference has no shapes", row->origin));
     }
-    internal::validate_external_shape(*row->shape, group.plane, any.s_m[any.s_m.size() - 1], row->origin);
+    internal::validate_external_shape(*row->shape, group.plane, any.s_m[any.s_m.size() - 1],
+                                      row->origin);
   }
 }
 
@@ -184,22 +203,30 @@ void validate_shapes(const ModeGroup& group, const CertifiedReference& reference
 
 void ExternalCheckOptions::validate() const {
   if (!(std::isfinite(rtol) && rtol > 0.0)) {
-    throw InvalidInput(fmt::format("Invalid ExternalCheckOptions::rtol = {}: must be finite and > 0", rtol));
+    throw InvalidInput(
+        fmt::format("Invalid ExternalCheckOptions::rtol = {}: must be finite and > 0", rtol));
   }
   if (!(std::isfinite(order_stability) && order_stability > 0.0)) {
-    throw InvalidInput(fmt::format("Invalid ExternalCheckOptions::order_stability = {}: must be finite and > 0",
-                                   order_stability));
+    throw InvalidInput(
+        fmt::format("Invalid ExternalCheckOptions::order_stability = {}: must be finite and > 0",
+                    order_stability));
   }
 }
 
 std::string to_string(ModeVerdict verdict) {
   switch (verdict) {
-    case ModeVerdict::WithinTolerance: return "within tolerance";
-    case ModeVerdict::BeyondTolerance: return "beyond tolerance";
-    case ModeVerdict::Converged: return "converged";
-    case ModeVerdict::NotYetWithinTolerance: return "converges, not yet within tolerance";
-    case ModeVerdict::ConvergesToWrongLimit: return "converges to a wrong limit";
-    case ModeVerdict::Unpaired: return "unpaired";
+    case ModeVerdict::WithinTolerance:
+      return "within tolerance";
+    case ModeVerdict::BeyondTolerance:
+      return "beyond tolerance";
+    case ModeVerdict::Converged:
+      return "converged";
+    case ModeVerdict::NotYetWithinTolerance:
+      return "converges, not yet within tolerance";
+    case ModeVerdict::ConvergesToWrongLimit:
+      return "converges to a wrong limit";
+    case ModeVerdict::Unpaired:
+      return "unpaired";
   }
   return "unknown";
 }
@@ -209,7 +236,8 @@ bool is_failure(ModeVerdict verdict) {
 }
 
 bool ExternalCheck::any_failure() const {
-  return std::any_of(modes.begin(), modes.end(), [](const ModeComparison& m) { return is_failure(m.verdict); });
+  return std::any_of(modes.begin(), modes.end(),
+                     [](const ModeComparison& m) { return is_failure(m.verdict); });
 }
 
 void validate_external_results(const std::vector<ExternalMode>& results) {

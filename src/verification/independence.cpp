@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "catena/verification/independence.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <map>
 #include <tuple>
 
@@ -22,11 +23,13 @@ struct IdentityGroup {
 
 }  // namespace
 
-std::optional<std::string> shared_computation(const SolverEntry& a, const SolverEntry& b,
+std::optional<std::string> shared_computation(const SolverEntry& a,
+                                              const SolverEntry& b,
                                               const std::string& quantity) {
   const auto x = a.computations.find(quantity);
   const auto y = b.computations.find(quantity);
-  if (x == a.computations.end() || y == b.computations.end() || x->second != y->second) return std::nullopt;
+  if (x == a.computations.end() || y == b.computations.end() || x->second != y->second)
+    return std::nullopt;
   return x->second;
 }
 
@@ -54,9 +57,10 @@ std::vector<CheckResult> identity_checks(const std::vector<CheckResult>& checks)
     flag.value_a = flag.value_b = std::nan("");
     flag.measured = group.values;
     flag.verdict = Verdict::Fail;
-    flag.detail = fmt::format("all {} {} values of {} are bit-identical: two values from shared code, a check "
-                              "that cannot fail (declare the shared computation in SolverEntry::computations)",
-                              group.values, std::get<0>(key), flag.compare);
+    flag.detail = fmt::format(
+        "all {} {} values of {} are bit-identical: two values from shared code, a check "
+        "that cannot fail (declare the shared computation in SolverEntry::computations)",
+        group.values, std::get<0>(key), flag.compare);
     flags.push_back(std::move(flag));
   }
   return flags;

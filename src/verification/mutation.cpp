@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "catena/verification/mutation.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cstdlib>
-#include <fmt/format.h>
 #include <mutex>
 #include <set>
 
@@ -15,9 +16,12 @@ namespace catena {
 
 std::string to_string(MutatedQuantity quantity) {
   switch (quantity) {
-    case MutatedQuantity::Frequency: return "frequency";
-    case MutatedQuantity::Shape: return "shape";
-    case MutatedQuantity::ForcedTension: return "forced-tension";
+    case MutatedQuantity::Frequency:
+      return "frequency";
+    case MutatedQuantity::Shape:
+      return "shape";
+    case MutatedQuantity::ForcedTension:
+      return "forced-tension";
   }
   return "?";
 }
@@ -44,9 +48,12 @@ double real_knob(const std::string& solver, const SolverKnobs& knobs, const std:
 
 }  // namespace
 
-double frequency_accuracy_target(const std::string& solver, const SolverKnobs& knobs, const Mode& mode) {
-  // The exact solvers' own accuracy targets (SolverSummary::accuracy_target, docs/reference/verdicts.md,
-  // "Declared misses"): what each promises on every mode it does not list as missed.
+double frequency_accuracy_target(const std::string& solver,
+                                 const SolverKnobs& knobs,
+                                 const Mode& mode) {
+  // The exact solvers' own accuracy targets (SolverSummary::accuracy_target,
+  // docs/reference/verdicts.md, "Declared misses"): what each promises on every mode it does not
+  // list as missed.
   if (solver == "shooting") {
     const double rtol = real_knob(solver, knobs, "rtol");
     const double root = real_knob(solver, knobs, "root_tolerance");  // 0: the same as rtol
@@ -63,7 +70,9 @@ double frequency_accuracy_target(const std::string& solver, const SolverKnobs& k
 
 namespace {
 
-const char* plane_name(Plane plane) { return plane == Plane::InPlane ? "in-plane" : "out-of-plane"; }
+const char* plane_name(Plane plane) {
+  return plane == Plane::InPlane ? "in-plane" : "out-of-plane";
+}
 
 std::optional<ModalResult>& modal_of(SolverOutput& output, Plane plane) {
   return plane == Plane::InPlane ? output.inplane : output.outofplane;
@@ -77,7 +86,8 @@ std::string check_key(const CheckResult& check) {
 // time, and the checks that failed before any mutation.
 class SceneMutator {
  public:
-  SceneMutator(const SceneResult& result, const SceneRunOptions& options) : work_(result), options_(options) {
+  SceneMutator(const SceneResult& result, const SceneRunOptions& options)
+      : work_(result), options_(options) {
     family_ = result.scene.file.parent_path().filename().string();
     for (const auto& check : run_checks()) {
       if (check.verdict == Verdict::Fail) baseline_failures_.insert(check_key(check));
@@ -90,14 +100,20 @@ class SceneMutator {
   std::vector<MutationOutcome>& outcomes() { return outcomes_; }
 
   // Runs the checks on the present (mutated) state and records whether a check went to FAIL.
-  void record(const std::string& solver, MutatedQuantity quantity, const std::string& plane, int mode, double size,
-              double estimate, bool exact_witness) {
-    MutationOutcome outcome{work_.scene.name, family_, solver, quantity, plane, mode,
-                            size, estimate, exact_witness, false, ""};
+  void record(const std::string& solver,
+              MutatedQuantity quantity,
+              const std::string& plane,
+              int mode,
+              double size,
+              double estimate,
+              bool exact_witness) {
+    MutationOutcome outcome{work_.scene.name, family_,       solver, quantity, plane, mode, size,
+                            estimate,         exact_witness, false,  ""};
     for (const auto& check : run_checks()) {
       if (check.verdict != Verdict::Fail || baseline_failures_.count(check_key(check))) continue;
       outcome.caught = true;
-      outcome.caught_by = fmt::format("{} {} {} mode {}", check.check, check.compare, check.plane, check.mode);
+      outcome.caught_by =
+          fmt::format("{} {} {} mode {}", check.check, check.compare, check.plane, check.mode);
       break;
     }
     outcomes_.push_back(std::move(outcome));
@@ -107,7 +123,8 @@ class SceneMutator {
   template <class Has>
   bool exact_witness(const std::string& solver, Has has) const {
     for (const auto& output : work_.outputs) {
-      if (output.solver != solver && is_exact_solver(output.solver) && output.summary.is_usable() && has(output)) {
+      if (output.solver != solver && is_exact_solver(output.solver) && output.summary.is_usable() &&
+          has(output)) {
         return true;
       }
     }
@@ -146,15 +163,17 @@ void mutate_frequencies(SceneMutator& mutator, SolverOutput& output, Plane plane
   auto& modal = modal_of(output, plane);
   if (!modal) return;
   const Scene& scene = mutator.work().scene;
-  const SolverKnobs knobs = scene.solvers.count(output.solver) ? scene.solvers.at(output.solver) : SolverKnobs{};
+  const SolverKnobs knobs =
+      scene.solvers.count(output.solver) ? scene.solvers.at(output.solver) : SolverKnobs{};
   for (Mode& mode : modal->modes) {
     const double target = frequency_accuracy_target(output.solver, knobs, mode);
     if (!(target > 0.0) || !std::isfinite(mode.omega_rad_s)) continue;
     const double change = kFrequencyMutationFactor * target;
     const Mode saved = mode;
     scale_frequency(mode, 1.0 + change);
-    const bool witness = mutator.exact_witness(
-        output.solver, [&](const SolverOutput& other) { return has_mode(other, plane, mode.index, false); });
+    const bool witness = mutator.exact_witness(output.solver, [&](const SolverOutput& other) {
+      return has_mode(other, plane, mode.index, false);
+    });
     mutator.record(output.solver, MutatedQuantity::Frequency, plane_name(plane), mode.index, change,
                    saved.relative_error_estimate, witness);
     mode = saved;
@@ -168,9 +187,10 @@ double widest_mac_tolerance(const SceneMutator& mutator, const std::string& solv
   if (result.scene.checks.mac_min) return 1.0 - *result.scene.checks.mac_min;
   double widest = 0.0;
   for (const auto& other : result.outputs) {
-    if (other.solver == solver || !other.summary.is_usable() || !has_mode(other, plane, 1, true)) continue;
-    const ToleranceRule* rule =
-        mutator.options().tolerances.find("mac", solver, other.solver, result.scene.name, result.scene.tags);
+    if (other.solver == solver || !other.summary.is_usable() || !has_mode(other, plane, 1, true))
+      continue;
+    const ToleranceRule* rule = mutator.options().tolerances.find(
+        "mac", solver, other.solver, result.scene.name, result.scene.tags);
     if (rule) widest = std::max(widest, rule->max);
   }
   return widest;
@@ -184,17 +204,22 @@ void mutate_shapes(SceneMutator& mutator, SolverOutput& output, Plane plane) {
   auto& modes = modal->modes;
   for (std::size_t i = 0; i < modes.size(); ++i) {
     const Mode& neighbour = modes[i + 1 < modes.size() ? i + 1 : i - 1];
-    if (!internal::has_stacked_shape(modes[i], plane) || !internal::has_stacked_shape(neighbour, plane)) continue;
+    if (!internal::has_stacked_shape(modes[i], plane) ||
+        !internal::has_stacked_shape(neighbour, plane))
+      continue;
     const Vector p = internal::stacked_shape(modes[i], plane);
-    const auto delta = internal::mix_for_mac_drop(p, internal::stacked_shape(neighbour, plane), drop);
+    const auto delta =
+        internal::mix_for_mac_drop(p, internal::stacked_shape(neighbour, plane), drop);
     if (!delta) continue;
     const Mode saved = modes[i];
     internal::mix_modes(modes[i], neighbour, *delta);
     const double size = internal::one_minus_mac(p, internal::stacked_shape(modes[i], plane));
     const int index = modes[i].index;
-    const bool witness = mutator.exact_witness(
-        output.solver, [&](const SolverOutput& other) { return has_mode(other, plane, index, true); });
-    mutator.record(output.solver, MutatedQuantity::Shape, plane_name(plane), index, size, -1.0, witness);
+    const bool witness = mutator.exact_witness(output.solver, [&](const SolverOutput& other) {
+      return has_mode(other, plane, index, true);
+    });
+    mutator.record(output.solver, MutatedQuantity::Shape, plane_name(plane), index, size, -1.0,
+                   witness);
     modes[i] = saved;
   }
 }
@@ -223,7 +248,8 @@ void mutate_forced(SceneMutator& mutator, SolverOutput& output) {
 
 }  // namespace
 
-std::vector<MutationOutcome> mutate_scene(const SceneResult& result, const SceneRunOptions& options) {
+std::vector<MutationOutcome> mutate_scene(const SceneResult& result,
+                                          const SceneRunOptions& options) {
   if (!result.statics || !result.groups || !result.error.empty()) return {};
   SceneMutator mutator(result, options);
   for (auto& output : mutator.work().outputs) {
@@ -237,7 +263,9 @@ std::vector<MutationOutcome> mutate_scene(const SceneResult& result, const Scene
   return std::move(mutator.outcomes());
 }
 
-MutationRun run_mutations(const std::vector<SceneResult>& results, int jobs, const SceneRunOptions& options,
+MutationRun run_mutations(const std::vector<SceneResult>& results,
+                          int jobs,
+                          const SceneRunOptions& options,
                           const SuiteProgress& progress) {
   options.validate();  // before the workers: an exception must not escape a thread
   const auto start = std::chrono::steady_clock::now();
@@ -259,7 +287,8 @@ MutationRun run_mutations(const std::vector<SceneResult>& results, int jobs, con
   return run;
 }
 
-std::map<std::tuple<std::string, std::string, std::string>, MutationTally> MutationRun::tallies() const {
+std::map<std::tuple<std::string, std::string, std::string>, MutationTally> MutationRun::tallies()
+    const {
   std::map<std::tuple<std::string, std::string, std::string>, MutationTally> out;
   for (const auto& outcome : outcomes) {
     MutationTally& tally = out[{outcome.solver, outcome.family, to_string(outcome.quantity)}];
@@ -282,7 +311,9 @@ MutationTally MutationRun::exact_with_witness() const {
 MutationTally MutationRun::exact_beyond_estimate() const {
   MutationTally tally;
   for (const auto& outcome : outcomes) {
-    if (!is_exact_solver(outcome.solver) || !outcome.exact_witness || !(outcome.size > outcome.estimate)) continue;
+    if (!is_exact_solver(outcome.solver) || !outcome.exact_witness ||
+        !(outcome.size > outcome.estimate))
+      continue;
     ++tally.made;
     tally.caught += outcome.caught;
   }

@@ -7,9 +7,12 @@ namespace catena {
 
 std::string to_string(PublishedQuantity quantity) {
   switch (quantity) {
-    case PublishedQuantity::InPlaneFrequency: return "inplane_frequency";
-    case PublishedQuantity::OutOfPlaneFrequency: return "outofplane_frequency";
-    case PublishedQuantity::ForcedMaxTension: return "forced_max_tension";
+    case PublishedQuantity::InPlaneFrequency:
+      return "inplane_frequency";
+    case PublishedQuantity::OutOfPlaneFrequency:
+      return "outofplane_frequency";
+    case PublishedQuantity::ForcedMaxTension:
+      return "forced_max_tension";
   }
   return "?";
 }

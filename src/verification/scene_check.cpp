@@ -21,7 +21,8 @@ constexpr int kExtraReferenceModes = 3;
 constexpr int kReferenceShapePoints = 2001;
 
 bool uses_plane(const std::vector<ExternalMode>& results, Plane plane) {
-  return std::any_of(results.begin(), results.end(), [&](const ExternalMode& r) { return r.plane == plane; });
+  return std::any_of(results.begin(), results.end(),
+                     [&](const ExternalMode& r) { return r.plane == plane; });
 }
 
 }  // namespace
@@ -42,14 +43,18 @@ Scene reference_scene(Scene scene, const std::vector<ExternalMode>& results) {
   request.tension = tension;
   request.forced.reset();
   const long modes = request.inplane_modes + request.outofplane_modes;
-  request.points = static_cast<int>(std::min<long>(kReferenceShapePoints, kMaxShapeValues / std::max(modes, 1L)));
+  request.points = static_cast<int>(
+      std::min<long>(kReferenceShapePoints, kMaxShapeValues / std::max(modes, 1L)));
   std::map<std::string, SolverKnobs> solvers;
-  for (const char* name : {"shooting", "fe"}) solvers[name] = scene.solvers.count(name) ? scene.solvers.at(name) : SolverKnobs{};
+  for (const char* name : {"shooting", "fe"})
+    solvers[name] = scene.solvers.count(name) ? scene.solvers.at(name) : SolverKnobs{};
   scene.solvers = solvers;
   return scene;
 }
 
-SceneCheck check_scene(const std::vector<ExternalMode>& results, const Scene& scene, const ExternalCheckOptions& options) {
+SceneCheck check_scene(const std::vector<ExternalMode>& results,
+                       const Scene& scene,
+                       const ExternalCheckOptions& options) {
   options.validate();
   if (results.empty()) throw InvalidInput("no results to check");
   validate_external_results(results);

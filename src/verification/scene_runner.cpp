@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "catena/verification/scene_runner.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
-#include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 #include "verification/internal/checks.hpp"
@@ -13,11 +14,16 @@ namespace catena {
 
 std::string to_string(Verdict verdict) {
   switch (verdict) {
-    case Verdict::Pass: return "PASS";
-    case Verdict::Fail: return "FAIL";
-    case Verdict::SourceDiscrepancy: return "SOURCE";
-    case Verdict::Warn: return "WARN";
-    case Verdict::Skipped: return "SKIP";
+    case Verdict::Pass:
+      return "PASS";
+    case Verdict::Fail:
+      return "FAIL";
+    case Verdict::SourceDiscrepancy:
+      return "SOURCE";
+    case Verdict::Warn:
+      return "WARN";
+    case Verdict::Skipped:
+      return "SKIP";
   }
   return "?";
 }
@@ -69,7 +75,8 @@ bool selected(const SceneRunOptions& options, const std::string& name) {
 
 void run_solvers(SceneResult& result, const SceneRunOptions& options, const RunLimits& limits) {
   const Scene& scene = result.scene;
-  const SolveContext context{scene.problem, *result.statics, *result.groups, result.request, &limits};
+  const SolveContext context{scene.problem, *result.statics, *result.groups, result.request,
+                             &limits};
   for (const std::string& name : scene.solver_names()) {
     if (!selected(options, name)) continue;
     const SolverEntry* entry = find_solver(name);
@@ -99,7 +106,8 @@ void apply_perturbation(const Perturbation& perturbation, std::vector<SolverOutp
 void SceneRunOptions::validate() const {
   if (checks && tolerances.rules().empty()) {
     throw InvalidInput(
-        "SceneRunOptions::tolerances is empty while checks are asked: pass builtin_tolerance_table() "
+        "SceneRunOptions::tolerances is empty while checks are asked: pass "
+        "builtin_tolerance_table() "
         "or a table read by read_tolerance_file()");
   }
   if (time_limit_s) RunLimits::check_time_limit(*time_limit_s, "SceneRunOptions::time_limit_s");
@@ -109,7 +117,8 @@ namespace {
 
 // The budget of one scene, from now.
 RunLimits scene_limits(const SceneRunOptions& options) {
-  RunLimits limits = options.time_limit_s ? RunLimits::time_limit(*options.time_limit_s) : RunLimits{};
+  RunLimits limits =
+      options.time_limit_s ? RunLimits::time_limit(*options.time_limit_s) : RunLimits{};
   limits.progress = options.progress;
   return limits;
 }
@@ -135,7 +144,8 @@ SceneResult run_scene(const Scene& scene, const SceneRunOptions& options) {
   run_solvers(result, options, limits);
   if (options.perturbation) apply_perturbation(*options.perturbation, result.outputs);
   if (options.checks && result.error.empty()) {
-    result.forced_conditioning = internal::find_forced_conditioning(result, options.tolerances, limits);
+    result.forced_conditioning =
+        internal::find_forced_conditioning(result, options.tolerances, limits);
     result.checks = internal::run_checks(result, options.tolerances, options.findings);
   }
   result.wall_time_s = seconds_since(start);

@@ -19,7 +19,8 @@ namespace {
 double cost_guess(const Scene& scene) {
   const double inplane = scene.request.inplane_modes, outofplane = scene.request.outofplane_modes;
   double cost = inplane * inplane + outofplane * outofplane;
-  if (scene.request.forced) cost += 10.0 * static_cast<double>(scene.request.forced->omegas_rad_s.size());
+  if (scene.request.forced)
+    cost += 10.0 * static_cast<double>(scene.request.forced->omegas_rad_s.size());
   return cost;
 }
 
@@ -29,7 +30,8 @@ std::vector<std::size_t> start_order(const std::vector<Scene>& scenes) {
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::vector<double> cost(scenes.size());
   for (std::size_t i = 0; i < scenes.size(); ++i) cost[i] = cost_guess(scenes[i]);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   return order;
 }
 

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "catena/verification/tolerance_table.hpp"
 
+#include <fnmatch.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fnmatch.h>
 
 namespace catena {
 namespace {
@@ -36,7 +37,8 @@ const ToleranceRule* ToleranceTable::find(const std::string& check,
     const bool pair = (matches(rule.compare[0], a) && matches(rule.compare[1], b)) ||
                       (matches(rule.compare[0], b) && matches(rule.compare[1], a));
     if (!pair) continue;
-    if (rule.scene_pattern != "*" && fnmatch(rule.scene_pattern.c_str(), scene.c_str(), 0) != 0) continue;
+    if (rule.scene_pattern != "*" && fnmatch(rule.scene_pattern.c_str(), scene.c_str(), 0) != 0)
+      continue;
     if (!rule.tag.empty() && std::find(tags.begin(), tags.end(), rule.tag) == tags.end()) continue;
     return &rule;
   }

@@ -4,11 +4,11 @@
 // JSON, a synthetic "other program" is built from them (f_ref (1 - c / N^2) + bias at four
 // resolutions), and the command must recover the order and the bias, give the right verdicts and
 // exit codes, and refuse bad input (exit 2, naming row and column) without writing anything.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -20,7 +20,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kScene = std::string(CATENA_SOURCE_DIR) + "/verification/scenes/physical/mooring-line-900m.toml";
+const std::string kScene =
+    std::string(CATENA_SOURCE_DIR) + "/verification/scenes/physical/mooring-line-900m.toml";
 constexpr const char* kFolder = "catena_check_test";
 
 nlohmann::json read_json(const fs::path& path) {
@@ -31,14 +32,16 @@ nlohmann::json read_json(const fs::path& path) {
 // Catena's in-plane and out-of-plane reference omegas for modes 1-3 [rad/s], from a run of the
 // command itself (so the test holds no hard-coded frequency).
 std::vector<std::vector<double>> reference_omegas() {
-  const fs::path results = write_temp_file(kFolder, "probe.csv", "plane,mode,omega_rad_s\nin-plane,3,1.0\nout-of-plane,3,1.0\n");
+  const fs::path results = write_temp_file(
+      kFolder, "probe.csv", "plane,mode,omega_rad_s\nin-plane,3,1.0\nout-of-plane,3,1.0\n");
   const fs::path json = results.parent_path() / "probe.json";
   run_cli("check " + results.string() + " --scene " + kScene + " --json " + json.string());
   std::vector<std::vector<double>> omegas(2);
   const nlohmann::json document = read_json(json);
   for (const auto& reference : document.at("references")) {
     const int plane = reference.at("plane").get<std::string>() == "in-plane" ? 0 : 1;
-    for (const auto& mode : reference.at("modes")) omegas[plane].push_back(mode.at("omega_rad_s").get<double>());
+    for (const auto& mode : reference.at("modes"))
+      omegas[plane].push_back(mode.at("omega_rad_s").get<double>());
   }
   return omegas;
 }
@@ -64,8 +67,8 @@ TEST(CheckCommand, BiasedCodeConvergesToAWrongLimitWithOrderTwo) {
   const fs::path results = write_temp_file(kFolder, "biased.csv", synthetic_code(3.0, bias));
   const fs::path json = results.parent_path() / "biased.json";
   const fs::path out = results.parent_path() / "biased-report";
-  const CliRun run = run_cli("check " + results.string() + " --scene " + kScene + " --json " + json.string() +
-                             " --out " + out.string());
+  const CliRun run = run_cli("check " + results.string() + " --scene " + kScene + " --json " +
+                             json.string() + " --out " + out.string());
   EXPECT_EQ(run.exit_code, 1) << run.output;
   const auto document = read_json(json);
   ASSERT_EQ(document.at("modes").size(), 6u);
@@ -88,7 +91,8 @@ TEST(CheckCommand, UnbiasedCodeIsConvergedOrNotYetWithinTolerance) {
   const fs::path slow = write_temp_file(kFolder, "slow.csv", synthetic_code(40.0, 0.0));
   const CliRun not_yet = run_cli("check " + slow.string() + " --scene " + kScene);
   EXPECT_EQ(not_yet.exit_code, 1) << not_yet.output;
-  EXPECT_NE(not_yet.output.find("converges, not yet within tolerance"), std::string::npos) << not_yet.output;
+  EXPECT_NE(not_yet.output.find("converges, not yet within tolerance"), std::string::npos)
+      << not_yet.output;
   EXPECT_EQ(not_yet.output.find("wrong limit"), std::string::npos) << not_yet.output;
 }
 
@@ -102,13 +106,16 @@ TEST(CheckCommand, BadInputExitsTwoNamingRowAndColumnAndWritesNothing) {
   const BadInput cases[] = {
       {"missing-column", "plane,frequency_hz\nin-plane,0.1\n", "missing column 'mode'"},
       {"no-frequency", "plane,mode\nin-plane,1\n", "frequency_hz"},
-      {"unknown-plane", "plane,mode,frequency_hz\nin-plane,1,0.1\nsideways,2,0.2\n", "row 2 (line 3), column 'plane'"},
-      {"duplicate", "plane,mode,frequency_hz\ninplane,1,0.1\nIn-Plane,1,0.11\n", "duplicate in-plane mode 1"},
+      {"unknown-plane", "plane,mode,frequency_hz\nin-plane,1,0.1\nsideways,2,0.2\n",
+       "row 2 (line 3), column 'plane'"},
+      {"duplicate", "plane,mode,frequency_hz\ninplane,1,0.1\nIn-Plane,1,0.11\n",
+       "duplicate in-plane mode 1"},
       {"non-numeric", "plane,mode,frequency_hz\nin-plane,1,abc\n", "column 'frequency_hz': 'abc'"},
       {"nan", "plane,mode,frequency_hz\nin-plane,1,nan\n", "row 1 (line 2), column 'frequency_hz'"},
       {"empty", "", "no header"},
       {"header-only", "plane,mode,frequency_hz\n", "no data rows"},
-      {"unknown-column", "plane,mode,frequency_hz,colour\nin-plane,1,0.1,red\n", "unknown column 'colour'"},
+      {"unknown-column", "plane,mode,frequency_hz,colour\nin-plane,1,0.1,red\n",
+       "unknown column 'colour'"},
       {"bad-mode", "plane,mode,frequency_hz\nin-plane,1.5,0.1\n", "column 'mode'"},
   };
   for (const auto& c : cases) {
@@ -117,8 +124,8 @@ TEST(CheckCommand, BadInputExitsTwoNamingRowAndColumnAndWritesNothing) {
     const fs::path out = results.parent_path() / (std::string(c.name) + "-report");
     fs::remove(json);
     fs::remove_all(out);
-    const CliRun run = run_cli("check " + results.string() + " --scene " + kScene + " --json " + json.string() +
-                               " --out " + out.string());
+    const CliRun run = run_cli("check " + results.string() + " --scene " + kScene + " --json " +
+                               json.string() + " --out " + out.string());
     EXPECT_EQ(run.exit_code, 2) << c.name << "\n" << run.output;
     EXPECT_NE(run.output.find(c.expected), std::string::npos) << c.name << "\n" << run.output;
     EXPECT_FALSE(fs::exists(json)) << c.name;
@@ -133,7 +140,8 @@ TEST(CheckCommand, JsonResultsWithShapesArePairedByMac) {
     {"plane": "out-of-plane", "mode": 1, "omega_rad_s": 1.0,
      "shape": {"s_m": [0, 500, 1000], "v": [0, 1, 0]}}]})");
   const fs::path json = probe.parent_path() / "probe-shapes-out.json";
-  const CliRun first = run_cli("check " + probe.string() + " --scene " + kScene + " --json " + json.string());
+  const CliRun first =
+      run_cli("check " + probe.string() + " --scene " + kScene + " --json " + json.string());
   ASSERT_NE(first.exit_code, 2) << first.output;
   const nlohmann::json probed = read_json(json);
   const auto& modes = probed.at("references").at(0).at("modes");
@@ -143,12 +151,14 @@ TEST(CheckCommand, JsonResultsWithShapesArePairedByMac) {
   std::string stations = "[0,100,200,300,400,500,600,700,800,900,1000]";
   std::string half = "[0,0.309,0.588,0.809,0.951,1,0.951,0.809,0.588,0.309,0]";
   std::string full = "[0,0.588,0.951,0.951,0.588,0,-0.588,-0.951,-0.951,-0.588,0]";
-  const fs::path swapped = write_temp_file(kFolder, "swapped.json", fmt::format(R"({{"results": [
+  const fs::path swapped = write_temp_file(kFolder, "swapped.json",
+                                           fmt::format(R"({{"results": [
     {{"plane": "out-of-plane", "mode": 1, "omega_rad_s": {:.17g}, "shape": {{"s_m": {}, "v": {}}}}},
     {{"plane": "out-of-plane", "mode": 2, "omega_rad_s": {:.17g}, "shape": {{"s_m": {}, "v": {}}}}}]}})",
-                                                                            f2, stations, full, f1, stations, half));
+                                                       f2, stations, full, f1, stations, half));
   const fs::path out = probe.parent_path() / "swapped-out.json";
-  const CliRun run = run_cli("check " + swapped.string() + " --scene " + kScene + " --json " + out.string());
+  const CliRun run =
+      run_cli("check " + swapped.string() + " --scene " + kScene + " --json " + out.string());
   EXPECT_EQ(run.exit_code, 0) << run.output;
   const auto document = read_json(out);
   EXPECT_EQ(document.at("modes").at(0).at("reference_index"), 2) << run.output;

@@ -2,12 +2,13 @@
 #pragma once
 // Running the built `catena` binary from tests: its exit code and its combined output.
 
+#include <sys/wait.h>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace catena::testing {
 
@@ -28,7 +29,9 @@ inline CliRun run_cli(const std::string& arguments) {
 }
 
 /// Writes `text` to <temp>/<folder>/<name> and returns the path.
-inline std::filesystem::path write_temp_file(const std::string& folder, const std::string& name, const std::string& text) {
+inline std::filesystem::path write_temp_file(const std::string& folder,
+                                             const std::string& name,
+                                             const std::string& text) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / folder;
   std::filesystem::create_directories(dir);
   const std::filesystem::path path = dir / name;

@@ -3,20 +3,19 @@
 // failure of a scene), error messages on stderr naming file/table/key, and JSON without NaN. Runs
 // the built binary on scenes written to a temporary directory.
 #include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
-
-#include "cli/cli_support.hpp"
+#include <sys/wait.h>
 
 #include <array>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 #include <vector>
+
+#include "cli/cli_support.hpp"
 
 namespace {
 
@@ -81,7 +80,8 @@ b = [150.0, 0.0]
 )");
   const CliRun run = run_cli("solve " + scene.string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("farther apart than the cable can reach"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("farther apart than the cable can reach"), std::string::npos)
+      << run.output;
 }
 
 // A heavy (W0 L = 1e9 N), very compliant (EA = 1e3 N) line on a nearly vertical chord: the
@@ -107,7 +107,8 @@ TEST(Cli, StaticsThatDoNotConvergeExitThreeNotTwo) {
   const fs::path dir = fs::temp_directory_path() / "catena_cli_verify_stall";
   fs::create_directories(dir / "scenes");
   std::ofstream(dir / "scenes" / "stall.toml") << kStaticsStall;
-  const CliRun verify = run_cli("verify --scenes " + (dir / "scenes").string() + " --out " + (dir / "out").string());
+  const CliRun verify =
+      run_cli("verify --scenes " + (dir / "scenes").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(verify.exit_code, 3) << verify.output;
   EXPECT_NE(verify.output.find("1 scene errors"), std::string::npos) << verify.output;
 }
@@ -126,7 +127,8 @@ TEST(Cli, VerifyRunsADirectoryAndWritesReport) {
   const fs::path dir = fs::temp_directory_path() / "catena_cli_verify";
   fs::create_directories(dir / "scenes");
   std::ofstream(dir / "scenes" / "one.toml") << kGood;
-  const CliRun run = run_cli("verify --scenes " + (dir / "scenes").string() + " --out " + (dir / "out").string());
+  const CliRun run =
+      run_cli("verify --scenes " + (dir / "scenes").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(run.exit_code, 0) << run.output;
   EXPECT_TRUE(fs::exists(dir / "out" / "report.json"));
   EXPECT_NE(run.output.find("1 scenes"), std::string::npos) << run.output;
@@ -137,16 +139,21 @@ TEST(Cli, ABrokenSolverMakesVerifyFailWithAReadableMessage) {
   // fe must fail, naming scene, check, solvers, mode, values and tolerance; exit code 1.
   const std::string scenes = std::string(CATENA_SOURCE_DIR) + "/verification/scenes/physical";
   const fs::path out = fs::temp_directory_path() / "catena_cli_perturb";
-  const CliRun run = run_cli("verify --scenes " + scenes + " --filter mooring-line-900m --out " + out.string() +
-                             " --perturb shooting:inplane:2:1e-3");
+  const CliRun run = run_cli("verify --scenes " + scenes + " --filter mooring-line-900m --out " +
+                             out.string() + " --perturb shooting:inplane:2:1e-3");
   EXPECT_EQ(run.exit_code, 1) << run.output;
-  EXPECT_NE(run.output.find("FAIL mooring-line-900m / frequency / fe vs shooting mode 2"), std::string::npos)
+  EXPECT_NE(run.output.find("FAIL mooring-line-900m / frequency / fe vs shooting mode 2"),
+            std::string::npos)
       << run.output;
-  EXPECT_NE(run.output.find("measured 9.99"), std::string::npos) << run.output;  // 1e-3 / (1 + 1e-3)
+  EXPECT_NE(run.output.find("measured 9.99"), std::string::npos)
+      << run.output;  // 1e-3 / (1 + 1e-3)
   EXPECT_NE(run.output.find("tolerance"), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("rad/s"), std::string::npos) << run.output;          // both values shown
+  EXPECT_NE(run.output.find("rad/s"), std::string::npos) << run.output;  // both values shown
   // Unperturbed, the same run passes.
-  EXPECT_EQ(run_cli("verify --scenes " + scenes + " --filter mooring-line-900m --out " + out.string()).exit_code, 0);
+  EXPECT_EQ(
+      run_cli("verify --scenes " + scenes + " --filter mooring-line-900m --out " + out.string())
+          .exit_code,
+      0);
 }
 
 TEST(Cli, VerifyReportsEveryBadSceneAndExitsTwo) {
@@ -154,7 +161,8 @@ TEST(Cli, VerifyReportsEveryBadSceneAndExitsTwo) {
   fs::create_directories(dir);
   std::ofstream(dir / "a.toml") << kGood + "x = 1\n";
   std::ofstream(dir / "b.toml") << "[cable]\nlength = -1.0\n";
-  const CliRun run = run_cli("verify --scenes " + dir.string() + " --out " + (dir / "out").string());
+  const CliRun run =
+      run_cli("verify --scenes " + dir.string() + " --out " + (dir / "out").string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("2 scene file(s)"), std::string::npos) << run.output;
 }
@@ -169,20 +177,25 @@ TEST(Cli, UnwritableOutputExitsTwoBeforeSolving) {
     const CliRun run = run_cli("solve " + scene.string() + " --json " + json);
     EXPECT_EQ(run.exit_code, 2) << run.output;
     EXPECT_NE(run.output.find(json + ": cannot write"), std::string::npos) << run.output;
-    EXPECT_EQ(run.output.find("scene good"), std::string::npos) << "solved before failing:\n" << run.output;
+    EXPECT_EQ(run.output.find("scene good"), std::string::npos) << "solved before failing:\n"
+                                                                << run.output;
   }
-  const CliRun verify = run_cli("verify --scenes " + scene.parent_path().string() + " --filter good3 --out " +
-                                afile.string());
+  const CliRun verify = run_cli("verify --scenes " + scene.parent_path().string() +
+                                " --filter good3 --out " + afile.string());
   EXPECT_EQ(verify.exit_code, 2) << verify.output;
-  EXPECT_NE(verify.output.find("afile/report.json: cannot write"), std::string::npos) << verify.output;
+  EXPECT_NE(verify.output.find("afile/report.json: cannot write"), std::string::npos)
+      << verify.output;
 }
 
 // `solve /dev/zero` ran out of memory after 41 s.
 TEST(Cli, SolveRefusesADeviceAndADeeplyNestedFile) {
   CliRun run = run_cli("solve /dev/zero");
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("/dev/zero: cannot read scene file: a character device"), std::string::npos) << run.output;
-  const fs::path deep = write_scene("deep.toml", kGood + "x = " + std::string(6000, '[') + std::string(6000, ']'));
+  EXPECT_NE(run.output.find("/dev/zero: cannot read scene file: a character device"),
+            std::string::npos)
+      << run.output;
+  const fs::path deep =
+      write_scene("deep.toml", kGood + "x = " + std::string(6000, '[') + std::string(6000, ']'));
   run = run_cli("solve " + deep.string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("nested deeper than 64 levels"), std::string::npos) << run.output;
@@ -192,7 +205,9 @@ TEST(Cli, ReportRefusesAResultsFileThatIsADevice) {
   const fs::path out = fs::temp_directory_path() / "catena_cli_report_dev";
   const CliRun run = run_cli("report --from /dev/zero --no-figures --out " + out.string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("/dev/zero: cannot read results JSON: a character device"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("/dev/zero: cannot read results JSON: a character device"),
+            std::string::npos)
+      << run.output;
 }
 
 // A scene file name that is not UTF-8 ended in an internal error when the JSON was written
@@ -201,12 +216,20 @@ TEST(Cli, AFileNameThatIsNotUtf8IsStoredEscaped) {
   const fs::path dir = fs::temp_directory_path() / "catena_cli_latin1";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  std::ofstream(dir / "c\xe2" "ble.toml") << kGood;
-  const CliRun run = run_cli("solve '" + (dir / "c\xe2" "ble.toml").string() + "' -q --json " + (dir / "out.json").string());
+  std::ofstream(dir /
+                "c\xe2"
+                "ble.toml")
+      << kGood;
+  const CliRun run = run_cli("solve '" +
+                             (dir / "c\xe2"
+                                    "ble.toml")
+                                 .string() +
+                             "' -q --json " + (dir / "out.json").string());
   EXPECT_EQ(run.exit_code, 0) << run.output;
   std::stringstream text;
   text << std::ifstream(dir / "out.json").rdbuf();
-  EXPECT_NE(text.str().find("\"name\": \"c\\\\xE2ble\""), std::string::npos) << text.str().substr(0, 400);
+  EXPECT_NE(text.str().find("\"name\": \"c\\\\xE2ble\""), std::string::npos)
+      << text.str().substr(0, 400);
 }
 
 // A deeply nested file killed `verify` (SIGSEGV, no report); dangling symlinks and FIFOs were
@@ -217,18 +240,23 @@ TEST(Cli, VerifyReportsUnreadableEntriesAsSceneErrorsAndStillRunsTheRest) {
   fs::remove_all(dir);
   fs::create_directories(dir / "scenes");
   std::ofstream(dir / "scenes" / "one.toml") << kGood;
-  std::ofstream(dir / "scenes" / "deep.toml") << kGood + "x = " + std::string(6000, '{') + std::string(6000, '}');
+  std::ofstream(dir / "scenes" / "deep.toml")
+      << kGood + "x = " + std::string(6000, '{') + std::string(6000, '}');
   fs::create_symlink("nowhere.toml", dir / "scenes" / "dangling.toml");
   fs::create_symlink("loop2.toml", dir / "scenes" / "loop1.toml");
   fs::create_symlink("loop1.toml", dir / "scenes" / "loop2.toml");
   ASSERT_EQ(std::system(("mkfifo " + (dir / "scenes" / "fifo.toml").string()).c_str()), 0);
-  const CliRun run = run_cli("verify --scenes " + (dir / "scenes").string() + " --out " + (dir / "out").string());
+  const CliRun run =
+      run_cli("verify --scenes " + (dir / "scenes").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("6 scenes"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("5 scene errors"), std::string::npos) << run.output;
-  for (const char* reason : {"deep.toml: line 10: arrays and inline tables nested deeper", "dangling.toml: cannot read "
-                             "scene file: dangling symbolic link", "fifo.toml: cannot read scene file: a FIFO",
-                             "loop1.toml: cannot read scene file: Too many levels of symbolic links"}) {
+  for (const char* reason :
+       {"deep.toml: line 10: arrays and inline tables nested deeper",
+        "dangling.toml: cannot read "
+        "scene file: dangling symbolic link",
+        "fifo.toml: cannot read scene file: a FIFO",
+        "loop1.toml: cannot read scene file: Too many levels of symbolic links"}) {
     EXPECT_NE(run.output.find(reason), std::string::npos) << reason << "\n" << run.output;
   }
   std::stringstream report;
@@ -241,16 +269,18 @@ TEST(Cli, VerifyReportsUnreadableEntriesAsSceneErrorsAndStillRunsTheRest) {
 TEST(Cli, APerturbationThatCannotApplyExitsTwo) {
   const std::string scenes = std::string(CATENA_SOURCE_DIR) + "/verification/scenes/physical";
   const fs::path out = fs::temp_directory_path() / "catena_cli_perturb_bad";
-  const std::string base = "verify --scenes " + scenes + " --filter mooring-line-900m --out " + out.string();
+  const std::string base =
+      "verify --scenes " + scenes + " --filter mooring-line-900m --out " + out.string();
   for (const std::string perturb : {"fe:inplane:99999999999:1", "fe:inplane:0:1", "fe:inplane:2:0",
-                                     "fe:inplane:2:nan", "fe:inplane:2x:1", "fe:inplane:2:1:3"}) {
+                                    "fe:inplane:2:nan", "fe:inplane:2x:1", "fe:inplane:2:1:3"}) {
     const CliRun run = run_cli(base + " --perturb " + perturb);
     EXPECT_EQ(run.exit_code, 2) << perturb << "\n" << run.output;
     EXPECT_NE(run.output.find("--perturb " + perturb), std::string::npos) << run.output;
   }
   const CliRun too_high = run_cli(base + " --perturb fe:inplane:500:1e-3");
   EXPECT_EQ(too_high.exit_code, 2) << too_high.output;
-  EXPECT_NE(too_high.output.find("nothing would be perturbed"), std::string::npos) << too_high.output;
+  EXPECT_NE(too_high.output.find("nothing would be perturbed"), std::string::npos)
+      << too_high.output;
   // Asked for, but never computed by that solver (asymptotic is not applicable to this scene).
   const CliRun not_run = run_cli(base + " --perturb asymptotic:inplane:1:1e-3");
   EXPECT_EQ(not_run.exit_code, 2) << not_run.output;
@@ -267,7 +297,8 @@ TEST(Cli, FeRefusesMoreModesThanItsMeshResolves) {
   const fs::path scene = write_scene("too-many-modes.toml", text);
   const CliRun run = run_cli("solve " + scene.string() + " --solver fe");
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("[solvers.fe].elements = 400: too few for 431 in-plane modes"), std::string::npos)
+  EXPECT_NE(run.output.find("[solvers.fe].elements = 400: too few for 431 in-plane modes"),
+            std::string::npos)
       << run.output;
 }
 
@@ -287,16 +318,20 @@ struct Response {
 };
 
 // The forced responses of fe, then shooting, from `catena solve --json`.
-std::vector<Response> forced_responses(const std::string& name, const std::string& text, int& exit_code) {
+std::vector<Response> forced_responses(const std::string& name,
+                                       const std::string& text,
+                                       int& exit_code) {
   const fs::path scene = write_scene(name + ".toml", text);
   const fs::path json = scene.parent_path() / (name + ".json");
-  const CliRun run = run_cli("solve " + scene.string() + " --solver fe --solver shooting -q --json " + json.string());
+  const CliRun run = run_cli("solve " + scene.string() +
+                             " --solver fe --solver shooting -q --json " + json.string());
   exit_code = run.exit_code;
   const nlohmann::json results = nlohmann::json::parse(std::ifstream(json));
   std::vector<Response> responses;
   for (const char* solver : {"fe", "shooting"})
     for (const auto& response : results["scenes"][0]["solvers"][solver]["forced"])
-      responses.push_back({response["max_abs_tension_n"], response["diagnostic"].get<std::string>()});
+      responses.push_back(
+          {response["max_abs_tension_n"], response["diagnostic"].get<std::string>()});
   return responses;
 }
 
@@ -304,10 +339,10 @@ std::vector<Response> forced_responses(const std::string& name, const std::strin
 // It is the direction [1, 1]: the same responses.
 TEST(Cli, AHugeForcingDirectionVectorIsNormalisedWithoutOverflow) {
   int huge_exit = -1, unit_exit = -1;
-  const std::vector<Response> huge =
-      forced_responses("direction-huge", kForcedGale + "direction = [1e308, 1e308]\namplitude = 0.01\n", huge_exit);
-  const std::vector<Response> unit =
-      forced_responses("direction-unit", kForcedGale + "direction = [1.0, 1.0]\namplitude = 0.01\n", unit_exit);
+  const std::vector<Response> huge = forced_responses(
+      "direction-huge", kForcedGale + "direction = [1e308, 1e308]\namplitude = 0.01\n", huge_exit);
+  const std::vector<Response> unit = forced_responses(
+      "direction-unit", kForcedGale + "direction = [1.0, 1.0]\namplitude = 0.01\n", unit_exit);
   EXPECT_EQ(huge_exit, 0);
   EXPECT_EQ(unit_exit, 0);
   ASSERT_EQ(huge.size(), 4u);
@@ -324,8 +359,8 @@ TEST(Cli, AHugeForcingDirectionVectorIsNormalisedWithoutOverflow) {
 // in both), at 1 rad/s it overflows and says so; never a null without a diagnostic.
 TEST(Cli, AHugeAmplitudeGivesTheScaledResponseOrAnOverflowDiagnostic) {
   int exit_code = -1;
-  const std::vector<Response> responses =
-      forced_responses("amplitude-huge", kForcedGale + "direction = \"tangential\"\namplitude = 1e308\n", exit_code);
+  const std::vector<Response> responses = forced_responses(
+      "amplitude-huge", kForcedGale + "direction = \"tangential\"\namplitude = 1e308\n", exit_code);
   EXPECT_EQ(exit_code, 0);
   ASSERT_EQ(responses.size(), 4u);
   for (std::size_t i : {0u, 2u}) {
@@ -333,7 +368,8 @@ TEST(Cli, AHugeAmplitudeGivesTheScaledResponseOrAnOverflowDiagnostic) {
     EXPECT_NEAR(responses[i].max_abs_tension_n.get<double>() / 5.9046e307, 1.0, 1e-4);
   }
   for (std::size_t i : {1u, 3u})
-    EXPECT_NE(responses[i].diagnostic.find("overflows double precision"), std::string::npos) << responses[i].diagnostic;
+    EXPECT_NE(responses[i].diagnostic.find("overflows double precision"), std::string::npos)
+        << responses[i].diagnostic;
   for (const Response& response : responses)
     EXPECT_TRUE(response.max_abs_tension_n.is_number() || !response.diagnostic.empty());
 }
@@ -347,7 +383,8 @@ TEST(Cli, TimeLimitGivesAPartialResultAndNoProgressOffTerminal) {
   const fs::path scene = write_scene("time_limit.toml", kGood + "[request]\ninplane_modes = 4\n");
   const CliRun run = run_cli("solve " + scene.string() + " --solver shooting --time-limit 1e-9");
   EXPECT_EQ(run.exit_code, 0) << run.output;
-  EXPECT_NE(run.output.find("time limit of 1e-09 s reached after 1 of 4 in-plane modes"), std::string::npos)
+  EXPECT_NE(run.output.find("time limit of 1e-09 s reached after 1 of 4 in-plane modes"),
+            std::string::npos)
       << run.output;
   EXPECT_EQ(run.output.find('\r'), std::string::npos);
   const CliRun bad = run_cli("solve " + scene.string() + " --time-limit -3");
@@ -356,8 +393,8 @@ TEST(Cli, TimeLimitGivesAPartialResultAndNoProgressOffTerminal) {
   const fs::path dir = scene.parent_path() / "time_limit_suite";
   fs::create_directories(dir / "scenes");
   fs::copy_file(scene, dir / "scenes" / "one.toml", fs::copy_options::overwrite_existing);
-  const CliRun verify = run_cli("verify --scenes " + (dir / "scenes").string() + " --out " + (dir / "out").string() +
-                                " --time-limit 0");
+  const CliRun verify = run_cli("verify --scenes " + (dir / "scenes").string() + " --out " +
+                                (dir / "out").string() + " --time-limit 0");
   EXPECT_EQ(verify.exit_code, 2);
   EXPECT_NE(verify.output.find("--time-limit = 0"), std::string::npos) << verify.output;
 }
@@ -365,10 +402,13 @@ TEST(Cli, TimeLimitGivesAPartialResultAndNoProgressOffTerminal) {
 // (The frequency limit is tested on SolveRequest: a scene of 1e5 frequencies takes a minute to
 // parse, see the TOML reader.)
 TEST(Cli, TooManyModesExitTwoNamingTheKey) {
-  const fs::path modes = write_scene("too_many_modes.toml", kGood + "[request]\ninplane_modes = 1001\n");
+  const fs::path modes =
+      write_scene("too_many_modes.toml", kGood + "[request]\ninplane_modes = 1001\n");
   const CliRun run = run_cli("solve " + modes.string());
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.output.find("inplane_modes = 1001: must be an integer in [0, 1000]"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("inplane_modes = 1001: must be an integer in [0, 1000]"),
+            std::string::npos)
+      << run.output;
 }
 
 }  // namespace

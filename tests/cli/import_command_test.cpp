@@ -3,14 +3,13 @@
 // layouts, not copies of published decks): what each line becomes, the conversion of MoorDyn's
 // quantities, a converted [cable] scene that `catena solve` solves, and bad decks (exit 2 naming
 // the line, nothing written).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <fmt/format.h>
 
 #include "catena/core/types.hpp"
 #include "cli/cli_support.hpp"
@@ -20,7 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kV2Deck = std::string(CATENA_SOURCE_DIR) + "/docs/examples/moordyn-v2-semitaut.txt";
+const std::string kV2Deck =
+    std::string(CATENA_SOURCE_DIR) + "/docs/examples/moordyn-v2-semitaut.txt";
 constexpr const char* kFolder = "catena_import_test";
 
 // v1 layout (LINE DICTIONARY, NODE PROPERTIES with forces, LINE PROPERTIES with NodeAnch/NodeFair,
@@ -92,10 +92,13 @@ TEST(ImportCommand, V2DeckConvertsEachLineOrSaysWhyNot) {
   EXPECT_NE(chain.find("[[line.segments]]"), std::string::npos) << chain;
   EXPECT_NE(chain.find("s = 300.0"), std::string::npos) << chain;
   const double clump = (20000.0 - 1025.0 * 2.0) * 9.80665;  // (M - rho V) g
-  EXPECT_NEAR(value_of(chain, "weight", chain.rfind("[[line.points]]")), clump, kRelTolConversion * clump) << chain;
+  EXPECT_NEAR(value_of(chain, "weight", chain.rfind("[[line.points]]")), clump,
+              kRelTolConversion * clump)
+      << chain;
   EXPECT_NE(chain.find("Needs: [line]"), std::string::npos) << chain;
   // Line 4 hangs from a body.
-  EXPECT_NE(run.output.find("not converted: attached to a body at point 7"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("not converted: attached to a body at point 7"), std::string::npos)
+      << run.output;
 }
 
 TEST(ImportCommand, V1DeckUsesItsOptionsAndRefusesABridle) {
@@ -119,20 +122,24 @@ TEST(ImportCommand, V1DeckUsesItsOptionsAndRefusesABridle) {
   EXPECT_EQ(solve.exit_code, 0) << solve.output;
   EXPECT_NE(solve.output.find("grounded length"), std::string::npos) << solve.output;
   for (const char* line : {"2 ", "3 ", "4 "}) {
-    EXPECT_NE(run.output.find(std::string(line) + "         not converted: 3 lines meet at free point 4"), std::string::npos)
+    EXPECT_NE(
+        run.output.find(std::string(line) + "         not converted: 3 lines meet at free point 4"),
+        std::string::npos)
         << run.output;
   }
 }
 
 TEST(ImportCommand, UnknownSectionExitsTwoNamingTheLineAndWritesNothing) {
   std::string text = kV1Deck;
-  text.insert(text.find("---------------------- SOLVER OPTIONS"), "---------------------- MYSTERY ---------\n");
+  text.insert(text.find("---------------------- SOLVER OPTIONS"),
+              "---------------------- MYSTERY ---------\n");
   const fs::path deck = write_temp_file(kFolder, "mystery.dat", text);
   const fs::path out = deck.parent_path() / "mystery";
   fs::remove_all(out);
   const CliRun run = run_cli("import moordyn " + deck.string() + " --out " + out.string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("mystery.dat:22: unknown section 'MYSTERY'"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("mystery.dat:22: unknown section 'MYSTERY'"), std::string::npos)
+      << run.output;
   EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out));
 }
 
@@ -140,9 +147,12 @@ TEST(ImportCommand, NonNumericValueExitsTwoNamingLineAndColumn) {
   std::string text = kV1Deck;
   text.replace(text.find("100.0         8.0e8"), 5, "heavy");
   const fs::path deck = write_temp_file(kFolder, "bad-value.dat", text);
-  const CliRun run = run_cli("import moordyn " + deck.string() + " --out " + (deck.parent_path() / "bad").string());
+  const CliRun run = run_cli("import moordyn " + deck.string() + " --out " +
+                             (deck.parent_path() / "bad").string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("bad-value.dat:5: 'MassDen': 'heavy' is not a number"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("bad-value.dat:5: 'MassDen': 'heavy' is not a number"),
+            std::string::npos)
+      << run.output;
 }
 
 }  // namespace

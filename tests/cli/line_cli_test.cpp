@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: MIT
-// `catena solve` on general lines (docs/reference/scene-format.md, "General lines", "Statics-only scenes"):
-// a statics-only scene prints the line's table, writes the per-node statics to JSON and runs no
-// solver; bad line input exits 2 naming the entry and field; an analytic solver declines a line.
+// `catena solve` on general lines (docs/reference/scene-format.md, "General lines", "Statics-only
+// scenes"): a statics-only scene prints the line's table, writes the per-node statics to JSON and
+// runs no solver; bad line input exits 2 naming the entry and field; an analytic solver declines a
+// line.
 #include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
-
-#include "cli/cli_support.hpp"
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
+
+#include "cli/cli_support.hpp"
 
 namespace {
 
@@ -49,7 +49,8 @@ weight = 2e4
 )";
 
 TEST(LineCli, StaticsOnlySceneWritesNodesAndRunsNoSolver) {
-  const fs::path scene = write_scene("statics.toml", kLine + "[request]\ninplane_modes = 0\noutofplane_modes = 0\n");
+  const fs::path scene =
+      write_scene("statics.toml", kLine + "[request]\ninplane_modes = 0\noutofplane_modes = 0\n");
   const fs::path json_path = scene.parent_path() / "statics.json";
   const CliRun run = run_cli("solve " + scene.string() + " --json " + json_path.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
@@ -65,7 +66,8 @@ TEST(LineCli, StaticsOnlySceneWritesNodesAndRunsNoSolver) {
   EXPECT_EQ(nodes[0]["kind"], "point");
   EXPECT_EQ(nodes[1]["kind"], "joint");
   // The point's weight is the jump of V across it.
-  EXPECT_NEAR(nodes[0]["vertical_force_after_n"].get<double>() - nodes[0]["vertical_force_before_n"].get<double>(),
+  EXPECT_NEAR(nodes[0]["vertical_force_after_n"].get<double>() -
+                  nodes[0]["vertical_force_before_n"].get<double>(),
               2e4, 1e-6);
   EXPECT_EQ(result["statics"]["segments"]["stretched_length_m"].size(), 2u);
   EXPECT_TRUE(result["groups"]["eps"].is_null());
@@ -83,14 +85,16 @@ TEST(LineCli, BadLineInputExitsTwoNamingTheField) {
   EXPECT_NE(run.output.find("line.segments[1]"), std::string::npos) << run.output;
   std::string short_line = kLine;
   short_line.replace(short_line.find("b = [200.0, 0.0]"), 16, "b = [300.0, 0.0]");
-  for (const char* ea : {"EA = 5e8", "EA = 1e8"}) short_line.replace(short_line.find(ea), std::string(ea).size(), "EA = \"inf\"");
+  for (const char* ea : {"EA = 5e8", "EA = 1e8"})
+    short_line.replace(short_line.find(ea), std::string(ea).size(), "EA = \"inf\"");
   run = run_cli("solve " + write_scene("short.toml", short_line).string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("too short"), std::string::npos) << run.output;
 }
 
 TEST(LineCli, AnalyticSolversDeclineALineWithTheirReason) {
-  const fs::path scene = write_scene("modes.toml", kLine + "[request]\ninplane_modes = 2\n[solvers]\nfrobenius = {}\n");
+  const fs::path scene = write_scene(
+      "modes.toml", kLine + "[request]\ninplane_modes = 2\n[solvers]\nfrobenius = {}\n");
   const CliRun run = run_cli("solve " + scene.string());
   EXPECT_NE(run.output.find("not-applicable"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("one uniform cable"), std::string::npos) << run.output;

@@ -1,17 +1,16 @@
 // SPDX-License-Identifier: MIT
-// `catena solve` on a line over a seabed (docs/reference/scene-format.md, "Seabed"): the statics writes the
-// seabed block; fe and shooting solve a line with contact, the other solvers decline it with their
-// reason; a seabed the line does not touch changes no frequency; bad seabed input exits 2 naming the
-// field.
+// `catena solve` on a line over a seabed (docs/reference/scene-format.md, "Seabed"): the statics
+// writes the seabed block; fe and shooting solve a line with contact, the other solvers decline it
+// with their reason; a seabed the line does not touch changes no frequency; bad seabed input exits
+// 2 naming the field.
 #include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
-
-#include "cli/cli_support.hpp"
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
+
+#include "cli/cli_support.hpp"
 
 namespace {
 
@@ -25,7 +24,8 @@ constexpr const char* kFolder = "catena_seabed_cli_test";
 
 std::string chain(double bx, double bz) {
   return "[cable]\nlength = 1000.0\nweight = 1200.0\nEA = 8.0e8\nmass = 150.0\nadded_mass = 20.0\n"
-         "a = [0.0, -200.0]\nb = [" + std::to_string(bx) + ", " + std::to_string(bz) + "]\n";
+         "a = [0.0, -200.0]\nb = [" +
+         std::to_string(bx) + ", " + std::to_string(bz) + "]\n";
 }
 
 const std::string kSeabed = "[seabed]\nz = -200.0\nfriction = 0.5\nstiffness = 3.0e6\n";
@@ -33,7 +33,8 @@ const std::string kStaticsOnly = "[request]\ninplane_modes = 0\noutofplane_modes
 const std::string kModes = "[request]\ninplane_modes = 3\noutofplane_modes = 3\n";
 
 TEST(SeabedCli, StaticsOnlySceneWritesTheSeabedBlock) {
-  const fs::path scene = write_temp_file(kFolder, "statics.toml", chain(955.85, 0.0) + kSeabed + kStaticsOnly);
+  const fs::path scene =
+      write_temp_file(kFolder, "statics.toml", chain(955.85, 0.0) + kSeabed + kStaticsOnly);
   const fs::path json_path = scene.parent_path() / "statics.json";
   const CliRun run = run_cli("solve " + scene.string() + " --json " + json_path.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
@@ -53,16 +54,19 @@ TEST(SeabedCli, StaticsOnlySceneWritesTheSeabedBlock) {
   EXPECT_EQ(scene_json["problem"]["seabed"]["stiffness_n_per_m2"].get<double>(), 3.0e6);
 }
 
-// fe and shooting solve it (docs/explanation/methods/fe.md and docs/explanation/methods/shooting.md, "Seabed contact"); the
-// others decline with a reason.
+// fe and shooting solve it (docs/explanation/methods/fe.md and
+// docs/explanation/methods/shooting.md, "Seabed contact"); the others decline with a reason.
 TEST(SeabedCli, FeAndShootingSolveALineWithContactAndTheOthersDecline) {
-  const fs::path scene = write_temp_file(kFolder, "modes.toml", chain(955.85, 0.0) + kSeabed + kModes);
+  const fs::path scene =
+      write_temp_file(kFolder, "modes.toml", chain(955.85, 0.0) + kSeabed + kModes);
   const CliRun run = run_cli("solve " + scene.string());
-  EXPECT_NE(run.output.find("solver fe: converged: Converged: 3 of 3 in-plane modes"), std::string::npos)
+  EXPECT_NE(run.output.find("solver fe: converged: Converged: 3 of 3 in-plane modes"),
+            std::string::npos)
       << run.output;
   EXPECT_NE(run.output.find("solver shooting: converged"), std::string::npos) << run.output;
   for (const char* solver : {"frobenius", "asymptotic", "airy"}) {
-    EXPECT_NE(run.output.find(std::string("solver ") + solver + ": not-applicable: "), std::string::npos)
+    EXPECT_NE(run.output.find(std::string("solver ") + solver + ": not-applicable: "),
+              std::string::npos)
         << run.output;
   }
   EXPECT_NE(run.output.find("has no model of seabed contact"), std::string::npos) << run.output;
@@ -72,8 +76,10 @@ TEST(SeabedCli, FeAndShootingSolveALineWithContactAndTheOthersDecline) {
 TEST(SeabedCli, SeabedWithoutContactChangesNoFrequency) {
   const fs::path with = write_temp_file(kFolder, "with.toml", chain(990.0, 0.0) + kSeabed + kModes);
   const fs::path without = write_temp_file(kFolder, "without.toml", chain(990.0, 0.0) + kModes);
-  const CliRun a = run_cli("solve " + with.string() + " --solver shooting --json " + with.string() + ".json");
-  const CliRun b = run_cli("solve " + without.string() + " --solver shooting --json " + without.string() + ".json");
+  const CliRun a =
+      run_cli("solve " + with.string() + " --solver shooting --json " + with.string() + ".json");
+  const CliRun b = run_cli("solve " + without.string() + " --solver shooting --json " +
+                           without.string() + ".json");
   ASSERT_EQ(a.exit_code, 0) << a.output;
   ASSERT_EQ(b.exit_code, 0) << b.output;
   const auto ja = nlohmann::json::parse(std::ifstream(with.string() + ".json"))["scenes"][0];
@@ -97,20 +103,28 @@ struct BadSeabed {
 };
 
 TEST(SeabedCli, BadSeabedInputExitsTwoNamingTheField) {
-  const std::string anchor_above = "[cable]\nlength = 1000.0\nweight = 1200.0\nEA = 8.0e8\nmass = 150.0\n"
-                                   "a = [0.0, -190.0]\nb = [955.85, 0.0]\n";
+  const std::string anchor_above =
+      "[cable]\nlength = 1000.0\nweight = 1200.0\nEA = 8.0e8\nmass = 150.0\n"
+      "a = [0.0, -190.0]\nb = [955.85, 0.0]\n";
   const BadSeabed cases[] = {
-      {"anchor-above.toml", anchor_above + kSeabed + kStaticsOnly, "end A (the anchor) must lie on the seabed"},
-      {"anchor-below.toml", chain(955.85, 0.0) + "[seabed]\nz = -150.0\n" + kStaticsOnly, "seabed.z"},
-      {"fairlead-below.toml", chain(955.85, -250.0) + "[seabed]\nz = -200.0\n" + kStaticsOnly, "end B (the fairlead)"},
-      {"friction.toml", chain(955.85, 0.0) + "[seabed]\nz = -200.0\nfriction = -0.1\n" + kStaticsOnly,
+      {"anchor-above.toml", anchor_above + kSeabed + kStaticsOnly,
+       "end A (the anchor) must lie on the seabed"},
+      {"anchor-below.toml", chain(955.85, 0.0) + "[seabed]\nz = -150.0\n" + kStaticsOnly,
+       "seabed.z"},
+      {"fairlead-below.toml", chain(955.85, -250.0) + "[seabed]\nz = -200.0\n" + kStaticsOnly,
+       "end B (the fairlead)"},
+      {"friction.toml",
+       chain(955.85, 0.0) + "[seabed]\nz = -200.0\nfriction = -0.1\n" + kStaticsOnly,
        "[seabed].friction"},
-      {"stiffness.toml", chain(955.85, 0.0) + "[seabed]\nz = -200.0\nstiffness = -1.0\n" + kStaticsOnly,
+      {"stiffness.toml",
+       chain(955.85, 0.0) + "[seabed]\nz = -200.0\nstiffness = -1.0\n" + kStaticsOnly,
        "[seabed].stiffness"},
-      {"tangential.toml", chain(955.85, 0.0) + "[seabed]\nz = -200.0\ntangential_stiffness = -1.0\n" + kStaticsOnly,
+      {"tangential.toml",
+       chain(955.85, 0.0) + "[seabed]\nz = -200.0\ntangential_stiffness = -1.0\n" + kStaticsOnly,
        "[seabed].tangential_stiffness"},
       {"no-z.toml", chain(955.85, 0.0) + "[seabed]\nfriction = 0.1\n" + kStaticsOnly, "z"},
-      {"gale.toml", "[gale]\nxi1 = -0.3\nxi2 = 0.3\n[seabed]\nz = 0.0\n" + kStaticsOnly, "[seabed] goes with"},
+      {"gale.toml", "[gale]\nxi1 = -0.3\nxi2 = 0.3\n[seabed]\nz = 0.0\n" + kStaticsOnly,
+       "[seabed] goes with"},
   };
   for (const BadSeabed& c : cases) {
     const fs::path scene = write_temp_file(kFolder, c.name, c.scene);

@@ -19,7 +19,8 @@ TEST(Version, ProvenanceNamesVersionGitAndCompiler) {
 }
 
 TEST(Version, TimestampIsIso8601Utc) {
-  EXPECT_TRUE(std::regex_match(utc_timestamp(), std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)"))) << utc_timestamp();
+  EXPECT_TRUE(std::regex_match(utc_timestamp(), std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")))
+      << utc_timestamp();
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// catena_scene_fuzz: a standalone mutational fuzzer for the scene reader (docs/contributing/testing.md,
-// "Fuzzing"). GCC has no libFuzzer, so this driver makes its own mutants: deterministic from
+// catena_scene_fuzz: a standalone mutational fuzzer for the scene reader
+// (docs/contributing/testing.md, "Fuzzing"). GCC has no libFuzzer, so this driver makes its own
+// mutants: deterministic from
 // --seed, from the seed corpus of the suite's scenes, each fed to the reader, the statics and a
 // cheap solver request in this process.
 //
@@ -44,14 +45,22 @@ bool parse_arguments(int argc, char** argv, Arguments& arguments) {
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
     const std::string value = argv[i + 1];
-    if (key == "--corpus") arguments.corpus = value;
-    else if (key == "--failures") arguments.failures = value;
-    else if (key == "--emit") arguments.emit = value;
-    else if (key == "--iterations") arguments.iterations = std::strtoull(value.c_str(), nullptr, 10);
-    else if (key == "--first") arguments.first = std::strtoull(value.c_str(), nullptr, 10);
-    else if (key == "--seed") arguments.seed = std::strtoull(value.c_str(), nullptr, 10);
-    else if (key == "--time-limit") arguments.time_limit_s = std::strtod(value.c_str(), nullptr);
-    else return false;
+    if (key == "--corpus")
+      arguments.corpus = value;
+    else if (key == "--failures")
+      arguments.failures = value;
+    else if (key == "--emit")
+      arguments.emit = value;
+    else if (key == "--iterations")
+      arguments.iterations = std::strtoull(value.c_str(), nullptr, 10);
+    else if (key == "--first")
+      arguments.first = std::strtoull(value.c_str(), nullptr, 10);
+    else if (key == "--seed")
+      arguments.seed = std::strtoull(value.c_str(), nullptr, 10);
+    else if (key == "--time-limit")
+      arguments.time_limit_s = std::strtod(value.c_str(), nullptr);
+    else
+      return false;
   }
   return argc % 2 == 1 && !arguments.corpus.empty();
 }
@@ -62,7 +71,8 @@ void write_file(const fs::path& path, const std::string& text) {
 
 std::string mutant_name(std::uint64_t iteration) {
   char name[48];
-  std::snprintf(name, sizeof name, "mutant-%06llu.toml", static_cast<unsigned long long>(iteration));
+  std::snprintf(name, sizeof name, "mutant-%06llu.toml",
+                static_cast<unsigned long long>(iteration));
   return name;
 }
 
@@ -74,9 +84,11 @@ int emit_mutants(const Arguments& arguments, const std::vector<catena::fuzz::See
   for (std::uint64_t i = 0; i < arguments.iterations; ++i) {
     const auto mutant = catena::fuzz::mutate(corpus, arguments.seed, i);
     write_file(arguments.emit / mutant_name(i), mutant.text);
-    recipes << mutant_name(i) << '\t' << corpus[mutant.seed_index].file.string() << '\t' << mutant.recipe << '\n';
+    recipes << mutant_name(i) << '\t' << corpus[mutant.seed_index].file.string() << '\t'
+            << mutant.recipe << '\n';
   }
-  std::cout << "wrote " << arguments.iterations << " mutants to " << arguments.emit.string() << '\n';
+  std::cout << "wrote " << arguments.iterations << " mutants to " << arguments.emit.string()
+            << '\n';
   return 0;
 }
 
@@ -84,18 +96,24 @@ struct Totals {
   std::uint64_t run = 0, rejected = 0, statics_failed = 0, solved = 0, failures = 0;
 };
 
-void report_failure(const Arguments& arguments, std::uint64_t iteration, const catena::fuzz::Mutant& mutant,
-                    const std::string& seed_file, const std::string& what) {
-  std::cerr << "FAIL iteration " << iteration << " (seed scene " << seed_file << "; " << mutant.recipe
-            << "): " << what << '\n';
-  if (!arguments.failures.empty()) write_file(arguments.failures / mutant_name(iteration), mutant.text);
+void report_failure(const Arguments& arguments,
+                    std::uint64_t iteration,
+                    const catena::fuzz::Mutant& mutant,
+                    const std::string& seed_file,
+                    const std::string& what) {
+  std::cerr << "FAIL iteration " << iteration << " (seed scene " << seed_file << "; "
+            << mutant.recipe << "): " << what << '\n';
+  if (!arguments.failures.empty())
+    write_file(arguments.failures / mutant_name(iteration), mutant.text);
 }
 
 int run_fuzzer(const Arguments& arguments, const std::vector<catena::fuzz::SeedScene>& corpus) {
   if (!arguments.failures.empty()) fs::create_directories(arguments.failures);
   const catena::fuzz::FuzzLimits limits;
   const auto start = std::chrono::steady_clock::now();
-  const auto elapsed_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  const auto elapsed_s = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   Totals totals;
   for (std::uint64_t i = arguments.first; i < arguments.first + arguments.iterations; ++i) {
     if (arguments.time_limit_s > 0.0 && elapsed_s() > arguments.time_limit_s) break;
@@ -103,8 +121,9 @@ int run_fuzzer(const Arguments& arguments, const std::vector<catena::fuzz::SeedS
     const std::string seed_file = corpus[mutant.seed_index].file.filename().string();
     if (!arguments.failures.empty()) {
       write_file(arguments.failures / "last-input.toml", mutant.text);
-      write_file(arguments.failures / "last-input.txt",
-                 "iteration " + std::to_string(i) + " (seed scene " + seed_file + "): " + mutant.recipe + "\n");
+      write_file(arguments.failures / "last-input.txt", "iteration " + std::to_string(i) +
+                                                            " (seed scene " + seed_file +
+                                                            "): " + mutant.recipe + "\n");
     }
     ++totals.run;
     try {
@@ -112,10 +131,12 @@ int run_fuzzer(const Arguments& arguments, const std::vector<catena::fuzz::SeedS
       totals.rejected += outcome.stage == FuzzStage::Rejected;
       totals.statics_failed += outcome.stage == FuzzStage::StaticsFailed;
       totals.solved += outcome.stage == FuzzStage::Solved;
-      for (const auto& violation : outcome.violations) report_failure(arguments, i, mutant, seed_file, violation);
+      for (const auto& violation : outcome.violations)
+        report_failure(arguments, i, mutant, seed_file, violation);
       totals.failures += !outcome.violations.empty();
     } catch (const std::exception& error) {
-      report_failure(arguments, i, mutant, seed_file, std::string("escaped exception: ") + error.what());
+      report_failure(arguments, i, mutant, seed_file,
+                     std::string("escaped exception: ") + error.what());
       ++totals.failures;
     }
   }
@@ -123,12 +144,14 @@ int run_fuzzer(const Arguments& arguments, const std::vector<catena::fuzz::SeedS
     fs::remove(arguments.failures / "last-input.toml");
     fs::remove(arguments.failures / "last-input.txt");
   }
-  std::printf("scene fuzz: %llu inputs (seed %llu, %zu seed scenes): %llu rejected as bad input, %llu not "
-              "solved, %llu solved; %llu failures; %.1f s\n",
-              static_cast<unsigned long long>(totals.run), static_cast<unsigned long long>(arguments.seed),
-              corpus.size(), static_cast<unsigned long long>(totals.rejected),
-              static_cast<unsigned long long>(totals.statics_failed), static_cast<unsigned long long>(totals.solved),
-              static_cast<unsigned long long>(totals.failures), elapsed_s());
+  std::printf(
+      "scene fuzz: %llu inputs (seed %llu, %zu seed scenes): %llu rejected as bad input, %llu not "
+      "solved, %llu solved; %llu failures; %.1f s\n",
+      static_cast<unsigned long long>(totals.run), static_cast<unsigned long long>(arguments.seed),
+      corpus.size(), static_cast<unsigned long long>(totals.rejected),
+      static_cast<unsigned long long>(totals.statics_failed),
+      static_cast<unsigned long long>(totals.solved),
+      static_cast<unsigned long long>(totals.failures), elapsed_s());
   return totals.failures == 0 ? 0 : 1;
 }
 
@@ -137,7 +160,8 @@ int run_fuzzer(const Arguments& arguments, const std::vector<catena::fuzz::SeedS
 int main(int argc, char** argv) {
   Arguments arguments;
   if (!parse_arguments(argc, argv, arguments)) {
-    std::cerr << "usage: catena_scene_fuzz --corpus DIR [--iterations N] [--first K] [--seed S] [--time-limit SECONDS]\n"
+    std::cerr << "usage: catena_scene_fuzz --corpus DIR [--iterations N] [--first K] [--seed S] "
+                 "[--time-limit SECONDS]\n"
                  "                         [--failures DIR] [--emit DIR]\n";
     return 2;
   }

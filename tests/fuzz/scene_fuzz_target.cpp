@@ -37,14 +37,17 @@ Scene cheap_scene(Scene scene, const FuzzLimits& limits) {
   return scene;
 }
 
-void check_modes(const std::optional<ModalResult>& result, const std::string& solver,
+void check_modes(const std::optional<ModalResult>& result,
+                 const std::string& solver,
                  std::vector<std::string>& violations) {
   if (!result || !result->summary.is_usable()) return;
   double previous = 0.0;
   for (const Mode& mode : result->modes) {
-    const std::string where = solver + " " + to_string(result->plane) + " mode " + std::to_string(mode.index);
+    const std::string where =
+        solver + " " + to_string(result->plane) + " mode " + std::to_string(mode.index);
     if (!std::isfinite(mode.omega_rad_s) || mode.omega_rad_s <= 0.0) {
-      violations.push_back(where + ": omega " + std::to_string(mode.omega_rad_s) + " in a usable result");
+      violations.push_back(where + ": omega " + std::to_string(mode.omega_rad_s) +
+                           " in a usable result");
     } else if (mode.omega_rad_s < previous) {
       violations.push_back(where + ": frequencies out of order in a usable result");
     }
@@ -64,7 +67,9 @@ void check_forced(const SolverOutput& output, std::vector<std::string>& violatio
 
 }  // namespace
 
-FuzzOutcome fuzz_scene_text(const std::string& text, std::uint64_t solver_choice, const FuzzLimits& limits) {
+FuzzOutcome fuzz_scene_text(const std::string& text,
+                            std::uint64_t solver_choice,
+                            const FuzzLimits& limits) {
   FuzzOutcome outcome;
   std::vector<Scene> scenes;
   try {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The fuzz target: one scene text through the reader, the statics and a cheap solver request
-// (docs/contributing/testing.md, "Fuzzing"). Bad input must end as catena::Error; anything else that escapes
-// (another exception, a signal, a sanitizer report) is a defect, and so is a result that claims
-// to have converged while holding a non-finite or non-positive frequency or a non-finite forced
-// response.
+// (docs/contributing/testing.md, "Fuzzing"). Bad input must end as catena::Error; anything else
+// that escapes (another exception, a signal, a sanitizer report) is a defect, and so is a result
+// that claims to have converged while holding a non-finite or non-positive frequency or a
+// non-finite forced response.
 
 #include <cstdint>
 #include <string>
@@ -35,6 +35,8 @@ struct FuzzLimits {
 
 /// Runs one input. `solver_choice` picks which of the scene's solvers runs (round-robin over the
 /// iterations gives every solver its turn). Throws only what is not a catena::Error.
-FuzzOutcome fuzz_scene_text(const std::string& text, std::uint64_t solver_choice, const FuzzLimits& limits);
+FuzzOutcome fuzz_scene_text(const std::string& text,
+                            std::uint64_t solver_choice,
+                            const FuzzLimits& limits);
 
 }  // namespace catena::fuzz

@@ -41,7 +41,9 @@ struct Span {
 };
 
 bool starts_number(const std::string& text, std::size_t i) {
-  const auto digit = [&](std::size_t k) { return k < text.size() && std::isdigit(static_cast<unsigned char>(text[k])); };
+  const auto digit = [&](std::size_t k) {
+    return k < text.size() && std::isdigit(static_cast<unsigned char>(text[k]));
+  };
   if (i > 0) {
     const unsigned char before = static_cast<unsigned char>(text[i - 1]);
     if (std::isalnum(before) || before == '_' || before == '.') return false;
@@ -58,9 +60,10 @@ std::vector<Span> number_spans(const std::string& text) {
     std::size_t j = i + 1;
     while (j < text.size()) {
       const char c = text[j];
-      const bool exponent_sign = (c == '+' || c == '-') && (text[j - 1] == 'e' || text[j - 1] == 'E');
-      if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' || c == 'E' || c == '_' ||
-            exponent_sign)) {
+      const bool exponent_sign =
+          (c == '+' || c == '-') && (text[j - 1] == 'e' || text[j - 1] == 'E');
+      if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' || c == 'E' ||
+            c == '_' || exponent_sign)) {
         break;
       }
       ++j;
@@ -97,15 +100,41 @@ std::vector<Span> line_spans(const std::string& text) {
 
 // Values at the edges of what the reader and the solvers accept: zero, signs, the limits of
 // double and of 32/64-bit integers, non-finite values, and large mode or frequency counts.
-constexpr std::array<const char*, 30> kEdgeValues = {
-    "0", "-1", "1", "-0.0", "0.0", "1e308", "-1e308", "1e-308", "5e-324", "1.7976931348623157e308",
-    "2147483647", "2147483648", "-2147483649", "4294967304", "9223372036854775807", "1e20", "nan",
-    "inf", "-inf", "+inf", "0.5", "1e6", "600", "3", "2", "1.0000000001", "0.999999999999", "1e-12",
-    "100000", "-1e-300"};
+constexpr std::array<const char*, 30> kEdgeValues = {"0",
+                                                     "-1",
+                                                     "1",
+                                                     "-0.0",
+                                                     "0.0",
+                                                     "1e308",
+                                                     "-1e308",
+                                                     "1e-308",
+                                                     "5e-324",
+                                                     "1.7976931348623157e308",
+                                                     "2147483647",
+                                                     "2147483648",
+                                                     "-2147483649",
+                                                     "4294967304",
+                                                     "9223372036854775807",
+                                                     "1e20",
+                                                     "nan",
+                                                     "inf",
+                                                     "-inf",
+                                                     "+inf",
+                                                     "0.5",
+                                                     "1e6",
+                                                     "600",
+                                                     "3",
+                                                     "2",
+                                                     "1.0000000001",
+                                                     "0.999999999999",
+                                                     "1e-12",
+                                                     "100000",
+                                                     "-1e-300"};
 
 // Fragments that break TOML in different ways.
-constexpr std::array<const char*, 16> kTokens = {
-    "[", "]", "{", "}", "\"", "=", ",", "\n", "#", "[[", "]]", "inf", "true", "'''", "\\u0000", "\xff\xfe"};
+constexpr std::array<const char*, 16> kTokens = {"[",    "]",   "{",       "}",       "\"", "=",
+                                                 ",",    "\n",  "#",       "[[",      "]]", "inf",
+                                                 "true", "'''", "\\u0000", "\xff\xfe"};
 
 using Operator = std::string (*)(std::string&, Random&, const std::vector<SeedScene>&);
 
@@ -127,7 +156,8 @@ std::string rescale_number(std::string& text, Random& random, const std::vector<
   if (spans.empty()) return "no number";
   const Span span = spans[random.below(spans.size())];
   const double value = std::strtod(text.substr(span.begin, span.end - span.begin).c_str(), nullptr);
-  constexpr std::array<double, 9> kFactors = {1e-6, 1e-3, 0.1, 10.0, 1e3, 1e6, 1e12, -1.0, 1.0 + 1e-12};
+  constexpr std::array<double, 9> kFactors = {1e-6, 1e-3, 0.1,  10.0,       1e3,
+                                              1e6,  1e12, -1.0, 1.0 + 1e-12};
   const double factor = kFactors[random.below(kFactors.size())];
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.17g", value * factor);
@@ -211,7 +241,8 @@ std::string deep_nesting(std::string& text, Random& random, const std::vector<Se
   nested += "1";
   for (std::size_t k = 0; k < depth; ++k) nested += tables ? "}" : "]";
   replace_span(text, spans[random.below(spans.size())], nested);
-  return std::string("nesting ") + (tables ? "tables" : "arrays") + " depth " + std::to_string(depth);
+  return std::string("nesting ") + (tables ? "tables" : "arrays") + " depth " +
+         std::to_string(depth);
 }
 
 std::string truncate(std::string& text, Random& random, const std::vector<SeedScene>&) {
@@ -222,8 +253,9 @@ std::string truncate(std::string& text, Random& random, const std::vector<SeedSc
 
 // Numbers carry most of the meaning of a scene, so their operators are listed more than once.
 constexpr std::array<Operator, 14> kOperators = {
-    edge_number, edge_number, edge_number, rescale_number, rescale_number, flip_byte, delete_line,
-    duplicate_line, swap_lines, splice_line, swap_string, insert_token, deep_nesting, truncate};
+    edge_number, edge_number,  edge_number,    rescale_number, rescale_number,
+    flip_byte,   delete_line,  duplicate_line, swap_lines,     splice_line,
+    swap_string, insert_token, deep_nesting,   truncate};
 
 }  // namespace
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Deterministic mutations of scene text for the scene-reader fuzzer (docs/contributing/testing.md, "Fuzzing").
-// The same corpus, seed and iteration always give the same mutant, on every platform: the random
-// numbers come from our own SplitMix64, not from <random>'s implementation-defined distributions.
+// Deterministic mutations of scene text for the scene-reader fuzzer (docs/contributing/testing.md,
+// "Fuzzing"). The same corpus, seed and iteration always give the same mutant, on every platform:
+// the random numbers come from our own SplitMix64, not from <random>'s implementation-defined
+// distributions.
 
 #include <cstdint>
 #include <filesystem>

@@ -12,9 +12,12 @@ namespace catena::fuzz {
 namespace {
 
 std::vector<SeedScene> small_corpus() {
-  return {{"a.toml", "[cable]\nlength = 1000.0\nweight = 1000.0\nEA = 5.0e8\nmass = 120.0\n"
-                     "a = [0.0, 0.0]\nb = [900.0, 300.0]\n[request]\ninplane_modes = 6\n"},
-          {"b.toml", "name = \"x\"\n[gale]\nxi1 = -0.5\nxi2 = 0.5\n[request.forced]\ndirection = \"normal\"\n"}};
+  return {
+      {"a.toml",
+       "[cable]\nlength = 1000.0\nweight = 1000.0\nEA = 5.0e8\nmass = 120.0\n"
+       "a = [0.0, 0.0]\nb = [900.0, 300.0]\n[request]\ninplane_modes = 6\n"},
+      {"b.toml",
+       "name = \"x\"\n[gale]\nxi1 = -0.5\nxi2 = 0.5\n[request.forced]\ndirection = \"normal\"\n"}};
 }
 
 TEST(SceneMutator, SameSeedAndIterationGiveTheSameMutant) {
@@ -46,7 +49,8 @@ TEST(SceneMutator, MutantsDifferFromTheirSeedAndFromEachOther) {
 TEST(SceneMutator, AnotherSeedGivesAnotherCampaign) {
   const auto corpus = small_corpus();
   int same = 0;
-  for (std::uint64_t i = 0; i < 100; ++i) same += mutate(corpus, 18, i).text == mutate(corpus, 19, i).text;
+  for (std::uint64_t i = 0; i < 100; ++i)
+    same += mutate(corpus, 18, i).text == mutate(corpus, 19, i).text;
   EXPECT_LT(same, 20);
 }
 

@@ -29,7 +29,8 @@ TEST(CsvTable, ReadsCommentsHeaderAndTypedCells) {
 }
 
 TEST(CsvTable, QuotedCellsHoldCommasAndQuotes) {
-  const CsvTable t = read_csv_table(write("q.csv", "scene,solver\n\"shallow (eps 0.05, phi 0)\",fe\n\"say \"\"hi\"\"\",x\n"));
+  const CsvTable t = read_csv_table(
+      write("q.csv", "scene,solver\n\"shallow (eps 0.05, phi 0)\",fe\n\"say \"\"hi\"\"\",x\n"));
   ASSERT_EQ(t.rows.size(), 2u);
   EXPECT_EQ(t.text(0, "scene"), "shallow (eps 0.05, phi 0)");
   EXPECT_EQ(t.text(0, "solver"), "fe");
@@ -37,7 +38,8 @@ TEST(CsvTable, QuotedCellsHoldCommasAndQuotes) {
 }
 
 TEST(CsvTable, WriteThenReadRoundTrips) {
-  CsvTable table{{"written by a test"}, {"name", "value"}, {{"a, b", "1.5"}, {"quote \" here", ""}}};
+  CsvTable table{
+      {"written by a test"}, {"name", "value"}, {{"a, b", "1.5"}, {"quote \" here", ""}}};
   const auto path = std::filesystem::temp_directory_path() / "catena_csv_test_round.csv";
   write_csv_table(path, table);
   const CsvTable back = read_csv_table(path);

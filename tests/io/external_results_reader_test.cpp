@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
-// Reading another program's results for `catena check` (include/catena/io/external_results_reader.hpp):
-// CSV with a long-format shapes CSV, JSON, plane spellings, and bad input naming file, row/path and
-// column. Files are written by the test to a temporary directory.
+// Reading another program's results for `catena check`
+// (include/catena/io/external_results_reader.hpp): CSV with a long-format shapes CSV, JSON, plane
+// spellings, and bad input naming file, row/path and column. Files are written by the test to a
+// temporary directory.
+#include "catena/io/external_results_reader.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "catena/core/error.hpp"
-#include "catena/io/external_results_reader.hpp"
 #include "cli/cli_support.hpp"
 #include "test_utils.hpp"
 
@@ -19,17 +21,22 @@ std::filesystem::path file(const std::string& name, const std::string& text) {
 }
 
 TEST(ExternalResultsReader, PlaneSpellingsAreCaseInsensitive) {
-  for (const char* text : {"in-plane", "INPLANE", "In-Plane"}) EXPECT_EQ(parse_plane(text), Plane::InPlane) << text;
-  for (const char* text : {"out-of-plane", "OutOfPlane"}) EXPECT_EQ(parse_plane(text), Plane::OutOfPlane) << text;
+  for (const char* text : {"in-plane", "INPLANE", "In-Plane"})
+    EXPECT_EQ(parse_plane(text), Plane::InPlane) << text;
+  for (const char* text : {"out-of-plane", "OutOfPlane"})
+    EXPECT_EQ(parse_plane(text), Plane::OutOfPlane) << text;
   EXPECT_FALSE(parse_plane("in plane").has_value());
 }
 
 TEST(ExternalResultsReader, CsvWithShapesAttachesEachShapeToItsResult) {
-  const auto results = file("r.csv", "# from code X\nplane,mode,resolution,frequency_hz\nin-plane,1,10,0.5\n"
-                                     "in-plane,1,20,0.52\nout-of-plane,1,20,0.4\n");
-  const auto shapes = file("s.csv", "plane,mode,resolution,station_s_m,u,w,v,tension_n\n"
-                                    "in-plane,1,20,0,0.1,0,,5\nin-plane,1,20,50,0.1,1,,6\nin-plane,1,20,100,0.1,0,,5\n"
-                                    "outofplane,1,20,0,,,0,\noutofplane,1,20,100,,,0,\noutofplane,1,20,50,,,1,\n");
+  const auto results = file("r.csv",
+                            "# from code X\nplane,mode,resolution,frequency_hz\nin-plane,1,10,0.5\n"
+                            "in-plane,1,20,0.52\nout-of-plane,1,20,0.4\n");
+  const auto shapes =
+      file("s.csv",
+           "plane,mode,resolution,station_s_m,u,w,v,tension_n\n"
+           "in-plane,1,20,0,0.1,0,,5\nin-plane,1,20,50,0.1,1,,6\nin-plane,1,20,100,0.1,0,,5\n"
+           "outofplane,1,20,0,,,0,\noutofplane,1,20,100,,,0,\noutofplane,1,20,50,,,1,\n");
   const auto modes = read_external_results(results, shapes);
   ASSERT_EQ(modes.size(), 3u);
   EXPECT_NEAR(modes[0].omega_rad_s, 2 * kPi * 0.5, 1e-15);
@@ -47,11 +54,13 @@ TEST(ExternalResultsReader, ShapeOfAModeWithoutResultIsRejected) {
   const auto shapes = file("s2.csv", "plane,mode,station_s_m,w\nin-plane,2,0,0\nin-plane,2,10,1\n");
   testing::expect_invalid([&] { read_external_results(results, shapes); }, "s2.csv row 1 (line 2)");
   const auto ragged = file("s3.csv", "plane,mode,station_s_m,w\nin-plane,1,0,0\nin-plane,1,10,\n");
-  testing::expect_invalid([&] { read_external_results(results, ragged); }, "row 2 (line 3), column 'w'");
+  testing::expect_invalid([&] { read_external_results(results, ragged); },
+                          "row 2 (line 3), column 'w'");
 }
 
 TEST(ExternalResultsReader, JsonWithShapes) {
-  const auto path = file("r.json", R"({"results": [{"plane": "out-of-plane", "mode": 2, "resolution": 40,
+  const auto path =
+      file("r.json", R"({"results": [{"plane": "out-of-plane", "mode": 2, "resolution": 40,
       "omega_rad_s": 1.5, "shape": {"s_m": [0, 1, 2], "v": [0, 1, 0]}}]})");
   const auto modes = read_external_results(path);
   ASSERT_EQ(modes.size(), 1u);
@@ -62,23 +71,47 @@ TEST(ExternalResultsReader, JsonWithShapes) {
 }
 
 TEST(ExternalResultsReader, JsonErrorsNameThePath) {
-  testing::expect_invalid([&] { read_external_results(file("a.json", R"({"results": [{"plane": "up", "mode": 1, "omega_rad_s": 1}]})")); },
-                          "results[0].plane");
-  testing::expect_invalid([&] { read_external_results(file("b.json", R"({"results": [{"plane": "inplane", "mode": 1, "omega_rad_s": "x"}]})")); },
-                          "results[0].omega_rad_s");
-  testing::expect_invalid([&] { read_external_results(file("c.json", R"({"results": [{"plane": "inplane", "mode": 1, "omega_rad_s": 1, "shape": {"s_m": [0, "a"]}}]})")); },
-                          "results[0].shape.s_m[1]");
-  testing::expect_invalid([&] { read_external_results(file("d.json", R"({"results": []})")); }, "non-empty");
-  testing::expect_invalid([&] { read_external_results(file("e.json", R"({"results": [{"plane": "inplane", "mode": 1, "omega_rad_s": NaN}]})")); },
-                          "not valid JSON");
-  testing::expect_invalid([&] { read_external_results(file("f.json", R"([{"plane": "inplane", "mode": 1, "omega_rad_s": 1}, {"plane": "inplane", "mode": 1, "omega_rad_s": 2}])")); },
-                          "duplicate");
+  testing::expect_invalid(
+      [&] {
+        read_external_results(
+            file("a.json", R"({"results": [{"plane": "up", "mode": 1, "omega_rad_s": 1}]})"));
+      },
+      "results[0].plane");
+  testing::expect_invalid(
+      [&] {
+        read_external_results(file(
+            "b.json", R"({"results": [{"plane": "inplane", "mode": 1, "omega_rad_s": "x"}]})"));
+      },
+      "results[0].omega_rad_s");
+  testing::expect_invalid(
+      [&] {
+        read_external_results(file(
+            "c.json",
+            R"({"results": [{"plane": "inplane", "mode": 1, "omega_rad_s": 1, "shape": {"s_m": [0, "a"]}}]})"));
+      },
+      "results[0].shape.s_m[1]");
+  testing::expect_invalid([&] { read_external_results(file("d.json", R"({"results": []})")); },
+                          "non-empty");
+  testing::expect_invalid(
+      [&] {
+        read_external_results(file(
+            "e.json", R"({"results": [{"plane": "inplane", "mode": 1, "omega_rad_s": NaN}]})"));
+      },
+      "not valid JSON");
+  testing::expect_invalid(
+      [&] {
+        read_external_results(file(
+            "f.json",
+            R"([{"plane": "inplane", "mode": 1, "omega_rad_s": 1}, {"plane": "inplane", "mode": 1, "omega_rad_s": 2}])"));
+      },
+      "duplicate");
 }
 
 // The text entry point (used by the Python module for rows given in memory) reads what the file
 // reader reads, and names its origin where the file name would be.
 TEST(ExternalResultsReader, JsonTextEqualsJsonFile) {
-  const std::string text = R"({"results": [{"plane": "in-plane", "mode": 1, "resolution": 20, "frequency_hz": 0.5},
+  const std::string text =
+      R"({"results": [{"plane": "in-plane", "mode": 1, "resolution": 20, "frequency_hz": 0.5},
       {"plane": "outofplane", "mode": 2, "omega_rad_s": 1.5, "shape": {"s_m": [0, 1], "v": [0, 1]}}]})";
   const auto from_file = read_external_results(file("g.json", text));
   const auto from_text = parse_external_results_json(text, "<results>");
@@ -90,10 +123,19 @@ TEST(ExternalResultsReader, JsonTextEqualsJsonFile) {
     EXPECT_EQ(from_text[i].shape.has_value(), from_file[i].shape.has_value());
   }
   EXPECT_EQ(from_text[1].origin, "<results>: results[1]");
-  testing::expect_invalid([&] { parse_external_results_json(R"([{"plane": "up", "mode": 1, "omega_rad_s": 1}])", "<results>"); },
-                          "<results>: results[0].plane");
-  testing::expect_invalid([&] { parse_external_results_json(R"([{"plane": "inplane", "mode": 1, "omega_rad_s": 1},
-      {"plane": "inplane", "mode": 1, "omega_rad_s": 2}])", "<results>"); }, "duplicate");
+  testing::expect_invalid(
+      [&] {
+        parse_external_results_json(R"([{"plane": "up", "mode": 1, "omega_rad_s": 1}])",
+                                    "<results>");
+      },
+      "<results>: results[0].plane");
+  testing::expect_invalid(
+      [&] {
+        parse_external_results_json(R"([{"plane": "inplane", "mode": 1, "omega_rad_s": 1},
+      {"plane": "inplane", "mode": 1, "omega_rad_s": 2}])",
+                                    "<results>");
+      },
+      "duplicate");
 }
 
 }  // namespace

@@ -2,16 +2,17 @@
 // How catena touches the file system (catena/io/file_access.hpp): input files only when they are
 // regular and small, output written whole or not at all, output locations checked before work,
 // every failure naming the path (escaped when it is not UTF-8).
+#include "catena/io/file_access.hpp"
+
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/stat.h>
 
 #include "catena/core/error.hpp"
-#include "catena/io/file_access.hpp"
 #include "catena/io/scene_reader.hpp"
 
 namespace catena {
@@ -38,15 +39,20 @@ void expect_error(const std::function<void()>& action, const std::vector<std::st
     action();
     ADD_FAILURE() << "no error; expected one with '" << words.front() << "'";
   } catch (const Exception& error) {
-    for (const auto& word : words) EXPECT_NE(std::string(error.what()).find(word), std::string::npos) << error.what();
+    for (const auto& word : words)
+      EXPECT_NE(std::string(error.what()).find(word), std::string::npos) << error.what();
   }
 }
 
 TEST(PathText, EscapesBytesThatAreNotUtf8AndKeepsTheRest) {
   EXPECT_EQ(path_text("scenes/caténaire.toml"), "scenes/caténaire.toml");
-  EXPECT_EQ(path_text(std::string("a\xff" "b.toml")), "a\\xFFb.toml");
+  EXPECT_EQ(path_text(std::string("a\xff"
+                                  "b.toml")),
+            "a\\xFFb.toml");
   // A lead byte without its continuation, an overlong '/', a UTF-16 surrogate: all invalid.
-  EXPECT_EQ(path_text(std::string("\xc3" "x")), "\\xC3x");
+  EXPECT_EQ(path_text(std::string("\xc3"
+                                  "x")),
+            "\\xC3x");
   EXPECT_EQ(path_text(std::string("\xc0\xaf")), "\\xC0\\xAF");
   EXPECT_EQ(path_text(std::string("\xed\xa0\x80")), "\\xED\\xA0\\x80");
 }
@@ -55,10 +61,12 @@ TEST(PathText, EscapesBytesThatAreNotUtf8AndKeepsTheRest) {
 // symlink loops named *.toml were skipped by `verify` or ended in an internal error.
 TEST(ReadInputFile, RefusesWhatIsNotASmallRegularFileNamingThePath) {
   const fs::path dir = fresh_dir("read");
-  expect_error<ParseError>([] { read_input_file("/dev/zero", "scene file"); }, {"/dev/zero", "character device"});
+  expect_error<ParseError>([] { read_input_file("/dev/zero", "scene file"); },
+                           {"/dev/zero", "character device"});
   expect_error<ParseError>([&] { read_input_file(dir, "scene file"); }, {"a directory"});
   ASSERT_EQ(mkfifo((dir / "fifo.toml").c_str(), 0644), 0);
-  expect_error<ParseError>([&] { read_input_file(dir / "fifo.toml", "scene file"); }, {"fifo.toml", "FIFO"});
+  expect_error<ParseError>([&] { read_input_file(dir / "fifo.toml", "scene file"); },
+                           {"fifo.toml", "FIFO"});
   fs::create_symlink("nowhere.toml", dir / "dangling.toml");
   expect_error<ParseError>([&] { read_input_file(dir / "dangling.toml", "scene file"); },
                            {"dangling.toml", "dangling symbolic link"});
@@ -82,10 +90,11 @@ TEST(ListSceneFiles, ListsUnreadableEntriesSoThatTheyAreReported) {
   std::ofstream(dir / "sub.toml" / "inner.toml") << "x = 1\n";
   std::ofstream(dir / "notes.txt") << "not a scene\n";
   const std::vector<fs::path> files = list_scene_files(dir);
-  const std::vector<fs::path> expected = {dir / "dangling.toml", dir / "fifo.toml", dir / "good.toml",
-                                          dir / "sub.toml" / "inner.toml"};
+  const std::vector<fs::path> expected = {dir / "dangling.toml", dir / "fifo.toml",
+                                          dir / "good.toml", dir / "sub.toml" / "inner.toml"};
   EXPECT_EQ(files, expected);
-  expect_error<InvalidInput>([&] { list_scene_files(dir / "good.toml"); }, {"good.toml", "not a directory"});
+  expect_error<InvalidInput>([&] { list_scene_files(dir / "good.toml"); },
+                             {"good.toml", "not a directory"});
 }
 
 TEST(WriteFileAtomically, ReplacesTheFileWholeAndLeavesNoTemporary) {
@@ -114,15 +123,19 @@ TEST(WriteFileAtomically, UnwritablePlacesAreInvalidInputNamingThePath) {
   expect_error<InvalidInput>([&] { write_file_atomically(dir / "afile" / "out.json", "{}"); },
                              {"afile/out.json", "Not a directory"});
   expect_error<InvalidInput>([&] { write_file_atomically(dir, "{}"); }, {"is a directory"});
-  expect_error<InvalidInput>([] { check_output_file("/proc/x/out.json"); }, {"/proc/x/out.json", "cannot write"});
-  expect_error<InvalidInput>([&] { check_output_file(dir / "afile" / "out.json"); }, {"afile/out.json"});
-  expect_error<InvalidInput>([&] { check_output_directory(dir / "afile"); }, {"afile: cannot write", "directory"});
+  expect_error<InvalidInput>([] { check_output_file("/proc/x/out.json"); },
+                             {"/proc/x/out.json", "cannot write"});
+  expect_error<InvalidInput>([&] { check_output_file(dir / "afile" / "out.json"); },
+                             {"afile/out.json"});
+  expect_error<InvalidInput>([&] { check_output_directory(dir / "afile"); },
+                             {"afile: cannot write", "directory"});
   expect_error<InvalidInput>([] { check_output_directory("/proc/1/catena"); }, {"/proc/1/catena"});
   EXPECT_NO_THROW(check_output_file(dir / "new" / "out.json"));
   EXPECT_NO_THROW(check_output_directory(dir / "report"));
   EXPECT_EQ(contents(dir / "afile"), "x");
   int entries = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) entries += entry.is_regular_file();
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    entries += entry.is_regular_file();
   EXPECT_EQ(entries, 1);  // the checks leave no probe file behind
 }
 

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
 #include <nlohmann/json.hpp>
 
 #include "catena/io/json_writer.hpp"
@@ -23,10 +22,13 @@ SceneResult solved(bool shapes) {
   options.tolerances = builtin_tolerance_table();
   options.only_solvers = {"fe", "shooting"};
   const Scene scene = parse_scene_text(
-      "[taut_inclined]\neps = 0.1\nphi_deg = 30.0\nlambda2 = 10.0\n[request]\ninplane_modes = 2\npoints = 21\n"
-      "shapes = " + std::string(shapes ? "true" : "false") +
-          "\n[request.forced]\nfrequencies = [0.5]\namplitude = 0.001\n",
-      "layout.toml").front();
+                          "[taut_inclined]\neps = 0.1\nphi_deg = 30.0\nlambda2 = "
+                          "10.0\n[request]\ninplane_modes = 2\npoints = 21\n"
+                          "shapes = " +
+                              std::string(shapes ? "true" : "false") +
+                              "\n[request.forced]\nfrequencies = [0.5]\namplitude = 0.001\n",
+                          "layout.toml")
+                          .front();
   return run_scene(scene, options);
 }
 
@@ -37,7 +39,8 @@ TEST(JsonLayout, ShapesAndCurvesAreOmittedWhenNotAsked) {
   for (const auto& mode : fe["inplane"]["modes"]) EXPECT_FALSE(mode.contains("shape"));
   ASSERT_EQ(fe["forced"].size(), 1u);
   EXPECT_TRUE(fe["forced"][0]["max_abs_tension_n"].is_number());
-  for (const char* curve : {"s_m", "u_m", "w_m", "v_m", "tension_n"}) EXPECT_FALSE(fe["forced"][0].contains(curve));
+  for (const char* curve : {"s_m", "u_m", "w_m", "v_m", "tension_n"})
+    EXPECT_FALSE(fe["forced"][0].contains(curve));
   EXPECT_FALSE(scene["statics"].contains("shape"));
   EXPECT_TRUE(scene["statics"]["horizontal_force_n"].is_number());
 }
@@ -63,7 +66,8 @@ TEST(JsonLayout, OneCheckPerLineAndEachToleranceReasonOnce) {
   int with_reason = 0;
   for (const auto& scene : document["scenes"]) {
     const json& fields = scene["checks"]["fields"];
-    const auto reason_at = std::find(fields.begin(), fields.end(), "tolerance_reason") - fields.begin();
+    const auto reason_at =
+        std::find(fields.begin(), fields.end(), "tolerance_reason") - fields.begin();
     ASSERT_LT(static_cast<std::size_t>(reason_at), fields.size());
     for (const auto& row : scene["checks"]["rows"]) {
       ASSERT_EQ(row.size(), fields.size());

@@ -20,9 +20,11 @@ SceneResult solved_inextensible() {
   options.tolerances = builtin_tolerance_table();
   options.only_solvers = {"fe"};
   const Scene scene = parse_scene_text(
-      "[cable]\nlength = 10.0\nweight = 1.0\nEA = \"inf\"\nmass = 1.0\na = [0.0, 0.0]\nb = [8.0, 1.0]\n"
-      "[request]\ninplane_modes = 2\n",
-      "j.toml").front();
+                          "[cable]\nlength = 10.0\nweight = 1.0\nEA = \"inf\"\nmass = 1.0\na = "
+                          "[0.0, 0.0]\nb = [8.0, 1.0]\n"
+                          "[request]\ninplane_modes = 2\n",
+                          "j.toml")
+                          .front();
   return run_scene(scene, options);
 }
 
@@ -33,8 +35,8 @@ TEST(JsonWriter, WritesTheDocumentedLayout) {
   }
   ASSERT_EQ(document["scenes"].size(), 1u);
   const json& scene = document["scenes"][0];
-  for (const char* key : {"name", "file", "description", "tags", "problem", "request", "statics", "groups",
-                          "solvers", "published", "checks", "error", "wall_time_s"}) {
+  for (const char* key : {"name", "file", "description", "tags", "problem", "request", "statics",
+                          "groups", "solvers", "published", "checks", "error", "wall_time_s"}) {
     EXPECT_TRUE(scene.contains(key)) << key;
   }
   EXPECT_TRUE(scene["error"].is_null());

@@ -91,7 +91,9 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 
 TEST(LineSceneReader, BadLineInputNamesTheEntryAndField) {
   using testing::expect_invalid;
-  auto parse = [](const std::string& text) { return [text] { parse_scene_text(text, "line.toml"); }; };
+  auto parse = [](const std::string& text) {
+    return [text] { parse_scene_text(text, "line.toml"); };
+  };
   expect_invalid(parse(replaced(kLine, "length = 600.0", "length = 0.0")), "line.segments[1]");
   expect_invalid(parse(replaced(kLine, "s = 250.0", "s = 900.0")), "line.points[0].s");
   expect_invalid(parse(replaced(kLine, "s = 250.0", "s = -1.0")), "line.points[0]");

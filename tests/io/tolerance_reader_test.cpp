@@ -62,7 +62,8 @@ TEST(ToleranceReader, ReadsEveryFieldOfARule) {
 TEST(ToleranceReader, RejectsEstimateFactorNamingTheKey) {
   // A tolerance that grows with a solver's self-reported estimate is no longer expressible.
   const std::string text =
-      "[[tolerance]]\ncheck = \"frequency\"\ncompare = [\"fe\", \"*\"]\nmax = 1e-7\nestimate_factor = 3.0\n"
+      "[[tolerance]]\ncheck = \"frequency\"\ncompare = [\"fe\", \"*\"]\nmax = "
+      "1e-7\nestimate_factor = 3.0\n"
       "reason = \"r\"\n";
   try {
     parse_tolerance_table(text, "t.toml");
@@ -75,22 +76,33 @@ TEST(ToleranceReader, RejectsEstimateFactorNamingTheKey) {
 }
 
 TEST(ToleranceReader, AModelTermNeedsParameterOrderAndConstantTogether) {
-  const std::string rule = "[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = 1e-9\nreason = \"r\"\n";
-  EXPECT_THROW(parse_tolerance_table(rule + "model_order = 2\nconstant = 1.0\n", "t.toml"), InvalidInput);
-  EXPECT_THROW(parse_tolerance_table(rule + "model_parameter = \"lambda\"\nmodel_order = 2\nconstant = 1.0\n", "t.toml"),
+  const std::string rule =
+      "[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = 1e-9\nreason = \"r\"\n";
+  EXPECT_THROW(parse_tolerance_table(rule + "model_order = 2\nconstant = 1.0\n", "t.toml"),
                InvalidInput);
-  EXPECT_THROW(parse_tolerance_table(rule + "model_parameter = \"eps\"\nconstant = 1.0\n", "t.toml"), ParseError);
-  EXPECT_THROW(parse_tolerance_table(rule + "model_parameter = \"eps\"\nmodel_order = 2\nconstant = -1.0\n", "t.toml"),
-               InvalidInput);
+  EXPECT_THROW(
+      parse_tolerance_table(
+          rule + "model_parameter = \"lambda\"\nmodel_order = 2\nconstant = 1.0\n", "t.toml"),
+      InvalidInput);
+  EXPECT_THROW(
+      parse_tolerance_table(rule + "model_parameter = \"eps\"\nconstant = 1.0\n", "t.toml"),
+      ParseError);
+  EXPECT_THROW(
+      parse_tolerance_table(rule + "model_parameter = \"eps\"\nmodel_order = 2\nconstant = -1.0\n",
+                            "t.toml"),
+      InvalidInput);
   EXPECT_THROW(parse_tolerance_table(rule + "strain_constant = -0.5\n", "t.toml"), InvalidInput);
   EXPECT_NO_THROW(parse_tolerance_table(rule + "strain_constant = 0.5\n", "t.toml"));
 }
 
 TEST(ToleranceReader, RejectsMalformedSolverDeclarations) {
   const std::string head = "[[solver]]\nname = \"fe\"\nreason = \"r\"\n";
-  EXPECT_THROW(parse_tolerance_table(head + "family = \"exact\"\n", "t.toml"), ParseError);  // no accuracy
-  EXPECT_THROW(parse_tolerance_table(head + "family = \"exactish\"\naccuracy = 1e-6\n", "t.toml"), InvalidInput);
-  EXPECT_THROW(parse_tolerance_table(head + "family = \"exact\"\naccuracy = 0.0\n", "t.toml"), InvalidInput);
+  EXPECT_THROW(parse_tolerance_table(head + "family = \"exact\"\n", "t.toml"),
+               ParseError);  // no accuracy
+  EXPECT_THROW(parse_tolerance_table(head + "family = \"exactish\"\naccuracy = 1e-6\n", "t.toml"),
+               InvalidInput);
+  EXPECT_THROW(parse_tolerance_table(head + "family = \"exact\"\naccuracy = 0.0\n", "t.toml"),
+               InvalidInput);
 }
 
 TEST(ToleranceReader, BuiltinTableDeclaresEverySolverAndNoToleranceGrowsWithAnEstimate) {
@@ -118,8 +130,8 @@ TEST(ToleranceReader, BuiltinTableHasAReasonForEveryRule) {
 }
 
 TEST(ToleranceReader, BuiltinTableEqualsTheFileInTheRepository) {
-  const ToleranceTable file =
-      read_tolerance_file(std::filesystem::path(CATENA_SOURCE_DIR) / "verification/tolerances.toml");
+  const ToleranceTable file = read_tolerance_file(std::filesystem::path(CATENA_SOURCE_DIR) /
+                                                  "verification/tolerances.toml");
   const ToleranceTable builtin = builtin_tolerance_table();
   ASSERT_EQ(file.rules().size(), builtin.rules().size());
   for (std::size_t i = 0; i < file.rules().size(); ++i) {
@@ -130,20 +142,32 @@ TEST(ToleranceReader, BuiltinTableEqualsTheFileInTheRepository) {
 }
 
 TEST(ToleranceReader, RejectsMalformedRules) {
-  EXPECT_THROW(parse_tolerance_table("[[tolerance]]\ncheck = \"frequency\"\n", "t.toml"), ParseError);
-  EXPECT_THROW(parse_tolerance_table("[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = -1.0\nreason = \"r\"\n", "t.toml"),
-               InvalidInput);
-  EXPECT_THROW(parse_tolerance_table("[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\"]\nmax = 1.0\nreason = \"r\"\n", "t.toml"),
+  EXPECT_THROW(parse_tolerance_table("[[tolerance]]\ncheck = \"frequency\"\n", "t.toml"),
                ParseError);
-  EXPECT_THROW(parse_tolerance_table("[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = 1.0\nreason = \"r\"\nbeyond = \"maybe\"\n", "t.toml"),
+  EXPECT_THROW(
+      parse_tolerance_table(
+          "[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = -1.0\nreason = \"r\"\n",
+          "t.toml"),
+      InvalidInput);
+  EXPECT_THROW(
+      parse_tolerance_table(
+          "[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\"]\nmax = 1.0\nreason = \"r\"\n", "t.toml"),
+      ParseError);
+  EXPECT_THROW(parse_tolerance_table("[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax "
+                                     "= 1.0\nreason = \"r\"\nbeyond = \"maybe\"\n",
+                                     "t.toml"),
                InvalidInput);
   EXPECT_THROW(parse_tolerance_table("tolerances = 1\n", "t.toml"), ParseError);
   EXPECT_THROW(parse_tolerance_table("[[tolerance\n", "t.toml"), ParseError);
   try {
-    parse_tolerance_table("[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = 1.0\nreason = \"r\"\nfoo = 1\n", "t.toml");
+    parse_tolerance_table(
+        "[[tolerance]]\ncheck = \"f\"\ncompare = [\"a\", \"b\"]\nmax = 1.0\nreason = \"r\"\nfoo = "
+        "1\n",
+        "t.toml");
     FAIL() << "an unknown key must be rejected";
   } catch (const ParseError& error) {
-    EXPECT_NE(std::string(error.what()).find("t.toml: [tolerance#1].foo"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("t.toml: [tolerance#1].foo"), std::string::npos)
+        << error.what();
   }
 }
 

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
-// API-level bad input (docs/contributing/architecture.md, "Errors"): every validate() constraint of the cable, supports, request
-// and statics options throws InvalidInput naming the field; statics reports unreachable chords.
+// API-level bad input (docs/contributing/architecture.md, "Errors"): every validate() constraint of
+// the cable, supports, request and statics options throws InvalidInput naming the field; statics
+// reports unreachable chords.
+#include "catena/models/cable.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +11,6 @@
 #include <string>
 
 #include "catena/core/error.hpp"
-#include "catena/models/cable.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 #include "test_utils.hpp"
 
@@ -26,14 +28,19 @@ Problem good() {
 
 TEST(CableProperties, RejectsEachInvalidField) {
   const double nan = std::nan("");
-  auto with = [](auto change) { Problem p = good(); change(p); return [p] { p.validate(); }; };
+  auto with = [](auto change) {
+    Problem p = good();
+    change(p);
+    return [p] { p.validate(); };
+  };
   expect_invalid(with([](Problem& p) { p.cable.length_m = 0.0; }), "length_m");
   expect_invalid(with([&](Problem& p) { p.cable.length_m = nan; }), "length_m");
   expect_invalid(with([](Problem& p) { p.cable.weight_n_per_m = -1.0; }), "weight_n_per_m");
   expect_invalid(with([](Problem& p) { p.cable.mass_kg_per_m = kInfinity; }), "mass_kg_per_m");
   expect_invalid(with([](Problem& p) { p.cable.axial_stiffness_n = 0.0; }), "axial_stiffness_n");
   expect_invalid(with([&](Problem& p) { p.cable.axial_stiffness_n = nan; }), "axial_stiffness_n");
-  expect_invalid(with([](Problem& p) { p.cable.added_mass_kg_per_m = -0.1; }), "added_mass_kg_per_m");
+  expect_invalid(with([](Problem& p) { p.cable.added_mass_kg_per_m = -0.1; }),
+                 "added_mass_kg_per_m");
   expect_invalid(with([&](Problem& p) { p.supports.b_m.x() = nan; }), "finite");
   expect_invalid(with([](Problem& p) { p.supports.b_m = p.supports.a_m; }), "coincide");
   expect_invalid(with([](Problem& p) { p.supports.b_m.x() = -5.0; }), "left of");
@@ -42,15 +49,22 @@ TEST(CableProperties, RejectsEachInvalidField) {
 // Huge values made the statics overflow ("closure error -nan m", no field named) and
 // b = (1e308, 0) was called coincident with a (the squared chord overflowed).
 TEST(CableProperties, RejectsMagnitudesThatOverflowTheStaticsNamingTheField) {
-  auto with = [](auto change) { Problem p = good(); change(p); return [p] { p.validate(); }; };
-  expect_invalid(with([](Problem& p) { p.cable.length_m = 1e300; }), "length_m = 1e+300: must be in [1e-15, 1e+15]");
+  auto with = [](auto change) {
+    Problem p = good();
+    change(p);
+    return [p] { p.validate(); };
+  };
+  expect_invalid(with([](Problem& p) { p.cable.length_m = 1e300; }),
+                 "length_m = 1e+300: must be in [1e-15, 1e+15]");
   expect_invalid(with([](Problem& p) { p.cable.weight_n_per_m = 1e16; }), "weight_n_per_m");
   expect_invalid(with([](Problem& p) { p.cable.weight_n_per_m = 1e-16; }), "weight_n_per_m");
-  expect_invalid(with([](Problem& p) { p.cable.axial_stiffness_n = 1e300; }), "axial_stiffness_n = 1e+300: must be in [1e-15, 1e+30]");
+  expect_invalid(with([](Problem& p) { p.cable.axial_stiffness_n = 1e300; }),
+                 "axial_stiffness_n = 1e+300: must be in [1e-15, 1e+30]");
   expect_invalid(with([](Problem& p) { p.cable.axial_stiffness_n = 1e-16; }), "axial_stiffness_n");
   EXPECT_NO_THROW(with([](Problem& p) { p.cable.axial_stiffness_n = 1e30; })());
   expect_invalid(with([](Problem& p) { p.cable.mass_kg_per_m = 1e300; }), "mass_kg_per_m");
-  expect_invalid(with([](Problem& p) { p.cable.added_mass_kg_per_m = 1e300; }), "added_mass_kg_per_m");
+  expect_invalid(with([](Problem& p) { p.cable.added_mass_kg_per_m = 1e300; }),
+                 "added_mass_kg_per_m");
   expect_invalid(with([](Problem& p) { p.supports.b_m = Vec2(1e308, 0.0); }), "within +-1e+15");
   expect_invalid(with([](Problem& p) { p.supports.a_m = Vec2(-1e16, 0.0); }), "within +-1e+15");
   // At the bounds, and EA = inf, ma = 0: accepted; far apart large supports are not "coincident".

@@ -27,7 +27,8 @@ TEST(DimensionlessGroups, ConversionsInvertEachOther) {
   EXPECT_NEAR(to_rad_per_second(1.0, FrequencyUnit::Hertz, g), 2.0 * kPi, 1e-15);
   for (auto unit : {FrequencyUnit::RadPerSecond, FrequencyUnit::Hertz, FrequencyUnit::KLOverPi,
                     FrequencyUnit::GaleRatio}) {
-    EXPECT_NEAR(from_rad_per_second(to_rad_per_second(3.5, unit, g), unit, g), 3.5, 1e-13) << to_string(unit);
+    EXPECT_NEAR(from_rad_per_second(to_rad_per_second(3.5, unit, g), unit, g), 3.5, 1e-13)
+        << to_string(unit);
   }
 }
 

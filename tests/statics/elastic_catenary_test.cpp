@@ -4,12 +4,13 @@
 // catenary (EA -> inf, observed rate), and against itself after rescaling units. Expected values
 // are properties of the exact solution, not numbers copied from a run. Turchetto's touchdown form
 // is tested in touchdown_catenary_test.cpp.
+#include "catena/statics/elastic_catenary.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "catena/statics/elastic_catenary.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -29,11 +30,14 @@ Problem mooring_problem() {
 constexpr double kClosureRel = 1e-11;
 
 TEST(ElasticCatenary, ClosesOnSupportBForVariedGeometries) {
-  struct Case { double L, W0, EA, bx, bz; };
-  const std::vector<Case> cases = {
-      {1000, 1000, 5e8, 900, 300},   {1000, 1000, kInfinity, 900, 300}, {100, 10, 1e7, 50, -40},
-      {100, 10, kInfinity, 10, 0},   {100, 10, 1e5, 100.5, 0},          {1, 1, kInfinity, 0.999, 0.01},
-      {1, 1, 10, 0.2, 0.9},          {50, 2, kInfinity, 5, 49},          {10, 1, 1e3, 12, 3}};
+  struct Case {
+    double L, W0, EA, bx, bz;
+  };
+  const std::vector<Case> cases = {{1000, 1000, 5e8, 900, 300}, {1000, 1000, kInfinity, 900, 300},
+                                   {100, 10, 1e7, 50, -40},     {100, 10, kInfinity, 10, 0},
+                                   {100, 10, 1e5, 100.5, 0},    {1, 1, kInfinity, 0.999, 0.01},
+                                   {1, 1, 10, 0.2, 0.9},        {50, 2, kInfinity, 5, 49},
+                                   {10, 1, 1e3, 12, 3}};
   for (const auto& c : cases) {
     Problem p;
     p.cable = {c.L, c.W0, c.EA, 1.0, 0.0};

@@ -4,13 +4,14 @@
 // weightless segment against the straight bar it must be; every solution against an independent
 // solve of the closure equations (long double, Gauss-Legendre quadrature of r' = (1 + T/EA) t
 // along the line and a finite-difference Newton: no closed form shared with the library).
+#include "catena/statics/line_statics.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
 #include <vector>
 
-#include "catena/statics/line_statics.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -70,8 +71,11 @@ Offset independent_offset(const Line& line, Real H, Real V_A) {
     const Real end = s + g.length_m;
     const Real compliance = std::isinf(g.axial_stiffness_n) ? 0.0L : 1.0L / g.axial_stiffness_n;
     while (s < end) {
-      while (next_point < line.points.size() && line.points[next_point].s_m <= s + 1e-9L) V += line.points[next_point++].weight_n;
-      const Real stop = next_point < line.points.size() && line.points[next_point].s_m < end ? line.points[next_point].s_m : end;
+      while (next_point < line.points.size() && line.points[next_point].s_m <= s + 1e-9L)
+        V += line.points[next_point++].weight_n;
+      const Real stop = next_point < line.points.size() && line.points[next_point].s_m < end
+                            ? line.points[next_point].s_m
+                            : end;
       constexpr int kPanels = 400;
       const Real h = (stop - s) / kPanels;
       for (int panel = 0; panel < kPanels; ++panel) {
@@ -98,8 +102,10 @@ std::array<Real, 2> independent_solve(const Problem& p, double H0, double V0) {
     const Offset r = independent_offset(p.line, H, V);
     const Real fx = r.x - dx, fz = r.z - dz;
     const Real eh = 1e-7L * H, ev = 1e-7L * (std::abs(V) + H);
-    const Offset hp = independent_offset(p.line, H + eh, V), hm = independent_offset(p.line, H - eh, V);
-    const Offset vp = independent_offset(p.line, H, V + ev), vm = independent_offset(p.line, H, V - ev);
+    const Offset hp = independent_offset(p.line, H + eh, V),
+                 hm = independent_offset(p.line, H - eh, V);
+    const Offset vp = independent_offset(p.line, H, V + ev),
+                 vm = independent_offset(p.line, H, V - ev);
     const Real a = (hp.x - hm.x) / (2 * eh), b = (vp.x - vm.x) / (2 * ev);
     const Real c = (hp.z - hm.z) / (2 * eh), d = (vp.z - vm.z) / (2 * ev);
     const Real det = a * d - b * c;
@@ -121,7 +127,8 @@ TEST(LineStatics, UniformCableSplitIntoSegmentsReproducesTheOneSegmentSolution) 
     EXPECT_LT(relative_error(many.vertical_force_a_n(), one.vertical_force_a_n()), 1e-12) << pieces;
     for (double s : {0.0, 123.4, 500.0, 999.0, 1000.0}) {
       EXPECT_LT((many.position_m(s) - one.position_m(s)).norm(), 1e-9) << pieces << " s = " << s;
-      EXPECT_LT(relative_error(many.tension_n(s), one.tension_n(s)), 1e-12) << pieces << " s = " << s;
+      EXPECT_LT(relative_error(many.tension_n(s), one.tension_n(s)), 1e-12)
+          << pieces << " s = " << s;
       EXPECT_LT(std::abs(many.stretched_length_m(s) - one.stretched_length_m(s)), 1e-9) << pieces;
     }
   }
@@ -131,12 +138,15 @@ TEST(LineStatics, MooringLineAgreesWithAnIndependentClosureSolve) {
   const Problem p = mooring_line();
   const StaticSolution statics = solve_statics(p);
   ASSERT_TRUE(statics.converged) << statics.message;
-  const auto [H, V] = independent_solve(p, statics.horizontal_force_n(), statics.vertical_force_a_n());
+  const auto [H, V] =
+      independent_solve(p, statics.horizontal_force_n(), statics.vertical_force_a_n());
   EXPECT_LT(relative_error(statics.horizontal_force_n(), double(H)), 1e-10);
   EXPECT_LT(std::abs(statics.vertical_force_a_n() - double(V)), 1e-10 * double(H));
   // V jumps by each point's weight; H is the same everywhere.
-  EXPECT_NEAR(statics.vertical_force_n(400.0) - statics.vertical_force_before_n(400.0), 1.5e5, 1e-6);
-  EXPECT_NEAR(statics.vertical_force_n(800.0) - statics.vertical_force_before_n(800.0), -4.0e4, 1e-6);
+  EXPECT_NEAR(statics.vertical_force_n(400.0) - statics.vertical_force_before_n(400.0), 1.5e5,
+              1e-6);
+  EXPECT_NEAR(statics.vertical_force_n(800.0) - statics.vertical_force_before_n(800.0), -4.0e4,
+              1e-6);
   const double total = 250.0 * 1400.0 + 600.0 * 60.0 + 100.0 * 1400.0 + 1.5e5 - 4.0e4;
   EXPECT_NEAR(statics.vertical_force_n(950.0) - statics.vertical_force_a_n(), total, 1e-6 * total);
   EXPECT_LT((statics.position_m(950.0) - p.supports.b_m).norm(), 1e-9);
@@ -146,10 +156,13 @@ TEST(LineStatics, BuoyantAndWeightlessSegmentsAgreeWithTheIndependentSolve) {
   Problem p;
   p.supports.a_m = Vec2(0.0, -200.0);
   p.supports.b_m = Vec2(300.0, 0.0);
-  p.line.segments = {{150.0, 800.0, 4e8, 90.0, 10.0}, {120.0, -300.0, kInfinity, 50.0, 60.0}, {140.0, 0.0, 1e8, 20.0, 5.0}};
+  p.line.segments = {{150.0, 800.0, 4e8, 90.0, 10.0},
+                     {120.0, -300.0, kInfinity, 50.0, 60.0},
+                     {140.0, 0.0, 1e8, 20.0, 5.0}};
   const StaticSolution statics = solve_statics(p);
   ASSERT_TRUE(statics.converged) << statics.message;
-  const auto [H, V] = independent_solve(p, statics.horizontal_force_n(), statics.vertical_force_a_n());
+  const auto [H, V] =
+      independent_solve(p, statics.horizontal_force_n(), statics.vertical_force_a_n());
   EXPECT_LT(relative_error(statics.horizontal_force_n(), double(H)), 1e-10);
   EXPECT_LT(std::abs(statics.vertical_force_a_n() - double(V)), 1e-10 * double(H));
   // The weightless segment [270, 410] is straight with constant H and V.
@@ -171,7 +184,8 @@ TEST(LineStatics, ConvergesFromSlackToStretchedChords) {
     p.supports.b_m = Vec2(reach, 0.0);
     const StaticSolution statics = solve_statics(p);
     ASSERT_TRUE(statics.converged) << reach << ": " << statics.message;
-    const auto [H, V] = independent_solve(p, statics.horizontal_force_n(), statics.vertical_force_a_n());
+    const auto [H, V] =
+        independent_solve(p, statics.horizontal_force_n(), statics.vertical_force_a_n());
     EXPECT_LT(relative_error(statics.horizontal_force_n(), double(H)), 1e-9) << reach;
     EXPECT_LT(std::abs(statics.vertical_force_a_n() - double(V)), 1e-9 * double(H)) << reach;
   }
@@ -185,7 +199,8 @@ TEST(LineStatics, BuoyantLineHogsAndAgreesWithTheIndependentSolve) {
   p.line.segments = {{60.0, -50.0, 1e7, 5.0, 1.0}, {60.0, -80.0, 1e7, 5.0, 1.0}};
   const StaticSolution statics = solve_statics(p);
   ASSERT_TRUE(statics.converged) << statics.message;
-  const auto [H, V] = independent_solve(p, statics.horizontal_force_n(), statics.vertical_force_a_n());
+  const auto [H, V] =
+      independent_solve(p, statics.horizontal_force_n(), statics.vertical_force_a_n());
   EXPECT_LT(relative_error(statics.horizontal_force_n(), double(H)), 1e-10);
   EXPECT_LT(std::abs(statics.vertical_force_a_n() - double(V)), 1e-10 * double(H));
   EXPECT_GT(statics.vertical_force_a_n(), 0.0);
@@ -195,23 +210,57 @@ TEST(LineStatics, BuoyantLineHogsAndAgreesWithTheIndependentSolve) {
 
 TEST(LineStatics, BadInputNamesTheField) {
   Problem p = mooring_line();
-  expect_invalid([&] { Problem q = p; q.line.segments[2].length_m = 0.0; solve_statics(q); }, "line.segments[2].length");
-  expect_invalid([&] { Problem q = p; q.line.segments[1].mass_kg_per_m = NAN; solve_statics(q); }, "line.segments[1].mass");
-  expect_invalid([&] { Problem q = p; q.line.points[0].s_m = 2000.0; solve_statics(q); }, "line.points[0].s");
-  expect_invalid([&] { Problem q = p; q.line.points[1].s_m = 400.0; solve_statics(q); }, "line.points[1].s");
-  expect_invalid([&] { Problem q = p; q.line.points[0].weight_n = INFINITY; solve_statics(q); }, "line.points[0].weight");
-  expect_invalid([&] {
-    Problem q = p;
-    for (auto& g : q.line.segments) g.axial_stiffness_n = kInfinity;
-    q.supports.b_m = Vec2(900.0, 300.0);
-    solve_statics(q);
-  }, "too short");
-  expect_invalid([&] {  // weightless and not stretched: slack
-    Problem q;
-    q.line.segments = {{60.0, 0.0, 1e7, 1.0, 0.0}, {50.0, 0.0, 1e7, 1.0, 0.0}};
-    q.supports.b_m = Vec2(90.0, 10.0);
-    solve_statics(q);
-  }, "line.segments[].weight");
+  expect_invalid(
+      [&] {
+        Problem q = p;
+        q.line.segments[2].length_m = 0.0;
+        solve_statics(q);
+      },
+      "line.segments[2].length");
+  expect_invalid(
+      [&] {
+        Problem q = p;
+        q.line.segments[1].mass_kg_per_m = NAN;
+        solve_statics(q);
+      },
+      "line.segments[1].mass");
+  expect_invalid(
+      [&] {
+        Problem q = p;
+        q.line.points[0].s_m = 2000.0;
+        solve_statics(q);
+      },
+      "line.points[0].s");
+  expect_invalid(
+      [&] {
+        Problem q = p;
+        q.line.points[1].s_m = 400.0;
+        solve_statics(q);
+      },
+      "line.points[1].s");
+  expect_invalid(
+      [&] {
+        Problem q = p;
+        q.line.points[0].weight_n = INFINITY;
+        solve_statics(q);
+      },
+      "line.points[0].weight");
+  expect_invalid(
+      [&] {
+        Problem q = p;
+        for (auto& g : q.line.segments) g.axial_stiffness_n = kInfinity;
+        q.supports.b_m = Vec2(900.0, 300.0);
+        solve_statics(q);
+      },
+      "too short");
+  expect_invalid(
+      [&] {  // weightless and not stretched: slack
+        Problem q;
+        q.line.segments = {{60.0, 0.0, 1e7, 1.0, 0.0}, {50.0, 0.0, 1e7, 1.0, 0.0}};
+        q.supports.b_m = Vec2(90.0, 10.0);
+        solve_statics(q);
+      },
+      "line.segments[].weight");
 }
 
 // 10 m of chain, 100 m of weightless rope and 10 m of buoyant rope (as heavy as the chain is)
@@ -220,11 +269,13 @@ TEST(LineStatics, BadInputNamesTheField) {
 // floats and the rope is slack. No equilibrium in tension exists, and the statics say so.
 TEST(LineStatics, SlackWeightlessStretchIsNoEquilibriumInTension) {
   Problem p;
-  p.line.segments = {{10.0, 10.0, 1e7, 1.0, 0.0}, {100.0, 0.0, 1e7, 1.0, 0.0}, {10.0, -10.0, 1e7, 1.0, 0.0}};
+  p.line.segments = {
+      {10.0, 10.0, 1e7, 1.0, 0.0}, {100.0, 0.0, 1e7, 1.0, 0.0}, {10.0, -10.0, 1e7, 1.0, 0.0}};
   p.supports.b_m = Vec2(50.0, 0.0);
   const StaticSolution statics = solve_statics(p);
   EXPECT_FALSE(statics.converged);
-  EXPECT_NE(statics.message.find("No static equilibrium in tension"), std::string::npos) << statics.message;
+  EXPECT_NE(statics.message.find("No static equilibrium in tension"), std::string::npos)
+      << statics.message;
   EXPECT_NE(statics.message.find("slack"), std::string::npos) << statics.message;
   // Moved 130 m apart the rope is taut and the same line closes.
   p.supports.b_m = Vec2(130.0, 0.0);

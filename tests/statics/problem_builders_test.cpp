@@ -5,17 +5,18 @@
 // built from (eps, phi, lambda2, h) reproduces those groups to 1e-12 after the statics; (3) the
 // frequency conversions invert each other. Published values are read from
 // verification/reference/published/ as transcribed; disagreements are printed, not hidden.
-#include <functional>
+#include "catena/statics/problem_builders.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <vector>
 
 #include "catena/core/error.hpp"
 #include "catena/io/csv_table.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 #include "test_utils.hpp"
@@ -36,7 +37,8 @@ TEST(GaleTableA1, CatenaryParameterFromSagParameterToPrintedPrecision) {
     const double sag = *table.number(row, "sag_param");
     const double printed = *table.number(row, "a_over_b");
     const double ours = gale_a_over_b(sag);
-    EXPECT_LE(std::abs(ours - printed), kHalfUlp5) << "sag " << sag << ": ours " << ours << ", printed " << printed;
+    EXPECT_LE(std::abs(ours - printed), kHalfUlp5)
+        << "sag " << sag << ": ours " << ours << ", printed " << printed;
     ++checked;
   }
   EXPECT_EQ(checked, 24);
@@ -52,7 +54,9 @@ constexpr double kHalfUlp3 = 0.5e-3 * (1.0 + 1e-9);
 //   B-3 h/b 0.25, sag 0.86: printed xi1 = -0.297, exact -0.29648 (off by 5.2e-4)
 // The same geometry appears nowhere else in the tables, so Gale's other columns of these rows
 // (the frequencies) were computed with whatever xi he used: the solvers' comparisons say which.
-struct XiFinding { double h_over_b, sag; };
+struct XiFinding {
+  double h_over_b, sag;
+};
 const std::vector<XiFinding> kKnownXiFindings = {{0.25, 0.88}, {0.25, 0.86}};
 // A finding is a last-digit disagreement, never a gross one.
 constexpr double kMaxXiFindingError = 1e-3;
@@ -71,15 +75,16 @@ void check_xi_columns(const std::string& file, int expected_rows) {
       findings.push_back({h_over_b, sag});
       std::printf("%s row %zu (h/b %.2f, sag %.4f): printed xi = (%.3f, %.3f), ours (%.5f, %.5f)\n",
                   file.c_str(), row + 1, h_over_b, sag, xi1, xi2, g.xi1, g.xi2);
-      EXPECT_LT(error, kMaxXiFindingError) << "gross disagreement in " << file << " row " << row + 1;
+      EXPECT_LT(error, kMaxXiFindingError)
+          << "gross disagreement in " << file << " row " << row + 1;
     }
   }
   EXPECT_EQ(static_cast<int>(table.rows.size()), expected_rows);
   // Every disagreeing row must be a known, documented finding (and vice versa for this table).
   for (const auto& f : findings) {
-    const bool known = std::any_of(kKnownXiFindings.begin(), kKnownXiFindings.end(), [&](const XiFinding& k) {
-      return k.h_over_b == f.h_over_b && k.sag == f.sag;
-    });
+    const bool known =
+        std::any_of(kKnownXiFindings.begin(), kKnownXiFindings.end(),
+                    [&](const XiFinding& k) { return k.h_over_b == f.h_over_b && k.sag == f.sag; });
     EXPECT_TRUE(known) << "new xi disagreement at h/b " << f.h_over_b << ", sag " << f.sag;
   }
 }
@@ -133,7 +138,8 @@ TEST(TautInclinedProblem, ReproducesItsGroupsToTwelveDigits) {
 }
 
 TEST(TautInclinedProblem, PointOfChordAngleSitsNearMidLength) {
-  // docs/explanation/physics.md ("Dimensionless groups"): s_a / L is near 1/2 - eps sin(phi) / 12 (to O(eps^2)).
+  // docs/explanation/physics.md ("Dimensionless groups"): s_a / L is near 1/2 - eps sin(phi) / 12
+  // (to O(eps^2)).
   for (double eps : {0.01, 0.05, 0.1}) {
     const Problem p = make_taut_inclined_problem(eps, 30.0, 10.0, 1.0);
     const DimensionlessGroups g = compute_dimensionless_groups(p, solve_statics(p));
@@ -147,12 +153,16 @@ TEST(FrequencyConversions, RoundTripEveryUnit) {
   for (FrequencyUnit unit : {FrequencyUnit::RadPerSecond, FrequencyUnit::Hertz,
                              FrequencyUnit::KLOverPi, FrequencyUnit::GaleRatio}) {
     const double omega = 3.7;
-    EXPECT_LT(relative_error(to_rad_per_second(from_rad_per_second(omega, unit, g), unit, g), omega), 1e-15);
+    EXPECT_LT(
+        relative_error(to_rad_per_second(from_rad_per_second(omega, unit, g), unit, g), omega),
+        1e-15);
     EXPECT_EQ(parse_frequency_unit(to_string(unit)), unit);
   }
   // kL/pi = omega L sqrt(M/T0) / pi.
   const double M = p.cable.normal_mass_kg_per_m();
-  EXPECT_LT(relative_error(g.k_l_over_pi(2.0), 2.0 * p.cable.length_m * std::sqrt(M / g.t0_n) / kPi), 1e-15);
+  EXPECT_LT(
+      relative_error(g.k_l_over_pi(2.0), 2.0 * p.cable.length_m * std::sqrt(M / g.t0_n) / kPi),
+      1e-15);
 }
 
 TEST(ProblemBuilders, RejectOutOfRangeGroups) {
@@ -187,15 +197,17 @@ std::string message_of(const std::function<void()>& build) {
   return "";
 }
 
-// Found by the mutant campaign (docs/contributing/testing.md): lambda2 = 5e-324 let a root-finder exception
-// escape (exit 3); sag_param = 5e-324 named the derived "xi1 = -nan" instead of the input.
+// Found by the mutant campaign (docs/contributing/testing.md): lambda2 = 5e-324 let a root-finder
+// exception escape (exit 3); sag_param = 5e-324 named the derived "xi1 = -nan" instead of the
+// input.
 TEST(ProblemBuilders, ExtremeGroupsAreBadInputNamingTheGivenValues) {
   const std::string lambda = message_of([] { make_taut_inclined_problem(0.1, 10.0, 5e-324, 1.0); });
   EXPECT_NE(lambda.find("lambda2 = 5e-324"), std::string::npos) << lambda;
   const std::string sag = message_of([] { make_gale_sag_problem(0.0, 5e-324); });
   EXPECT_NE(sag.find("sag_param = 5e-324"), std::string::npos) << sag;
   EXPECT_EQ(sag.find("nan"), std::string::npos) << sag;
-  EXPECT_NE(message_of([] { make_gale_sag_problem(0.0, 1e-6); }).find("too deep a sag"), std::string::npos);
+  EXPECT_NE(message_of([] { make_gale_sag_problem(0.0, 1e-6); }).find("too deep a sag"),
+            std::string::npos);
   EXPECT_EQ(message_of([] { make_gale_sag_problem(0.0, 0.5); }), "");
 }
 

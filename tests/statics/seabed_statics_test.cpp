@@ -2,16 +2,18 @@
 // Statics of a line on a flat seabed (docs/explanation/physics.md, "Seabed contact").
 // Anchors: an independent 50-digit solve of the contact equations (a different formulation: the
 // suspended tension at the fairlead height in closed form from a quadratic, the grounded stretch
-// integrated by hand, bisection on H); Turchetto's touchdown form (catena/statics/touchdown_catenary.hpp);
-// a touchdown exactly at A against the line without a seabed; the friction law at the anchor; a
-// chain-wire line against the general-line statics of its suspended part; bad input.
+// integrated by hand, bisection on H); Turchetto's touchdown form
+// (catena/statics/touchdown_catenary.hpp); a touchdown exactly at A against the line without a
+// seabed; the friction law at the anchor; a chain-wire line against the general-line statics of its
+// suspended part; bad input.
+#include "catena/statics/seabed_statics.hpp"
+
 #include <gtest/gtest.h>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 
 #include "catena/statics/line_statics.hpp"
-#include "catena/statics/seabed_statics.hpp"
 #include "catena/statics/touchdown_catenary.hpp"
 #include "test_utils.hpp"
 
@@ -44,7 +46,8 @@ struct ExactContact {
   Real H, grounded_length, fairlead_vertical, anchor_horizontal;
 };
 
-ExactContact exact_contact(double L_d, double w_d, double EA_d, double h_d, double reach_d, double friction_d) {
+ExactContact exact_contact(
+    double L_d, double w_d, double EA_d, double h_d, double reach_d, double friction_d) {
   const Real L = L_d, w = w_d, EA = EA_d, h = h_d, reach = reach_d, friction = friction_d;
   auto state = [&](const Real& H) {
     const Real C = H * H / (2 * EA) + H + w * h;
@@ -58,10 +61,12 @@ ExactContact exact_contact(double L_d, double w_d, double EA_d, double h_d, doub
   auto x_of = [&](const Real& H) {
     const ExactContact c = state(H);
     const Real drop = friction * w * c.grounded_length;
-    const Real integral = drop <= H ? H * c.grounded_length - friction * w * c.grounded_length * c.grounded_length / 2
-                                    : H * H / (2 * friction * w);
+    const Real integral =
+        drop <= H ? H * c.grounded_length - friction * w * c.grounded_length * c.grounded_length / 2
+                  : H * H / (2 * friction * w);
     const Real suspended = L - c.grounded_length;
-    return c.grounded_length + integral / EA + H * suspended / EA + (H / w) * asinh(c.fairlead_vertical / H);
+    return c.grounded_length + integral / EA + H * suspended / EA +
+           (H / w) * asinh(c.fairlead_vertical / H);
   };
   Real lo = 1e3, hi = 1e8;
   for (int i = 0; i < 400; ++i) {
@@ -87,8 +92,8 @@ TEST_P(FortyPercentGrounded, MatchesTheIndependentSolveToOneIn1e9) {
       relative_error(s.vertical_force_n(L), double(exact.fairlead_vertical)),
       relative_error(s.anchor_horizontal_force_n(), double(exact.anchor_horizontal))};
   for (double e : errors) EXPECT_LT(e, 1e-9);
-  std::printf("C_B = %g: H %.3e, L_g %.3e, V_B %.3e, anchor %.3e (relative errors)\n", friction, errors[0],
-              errors[1], errors[2], errors[3]);
+  std::printf("C_B = %g: H %.3e, L_g %.3e, V_B %.3e, anchor %.3e (relative errors)\n", friction,
+              errors[0], errors[1], errors[2], errors[3]);
   EXPECT_EQ(s.vertical_force_a_n(), 0.0);
   EXPECT_DOUBLE_EQ(s.touchdown_s_m(), s.grounded_length_m());
 }
@@ -108,7 +113,8 @@ TEST(SeabedStatics, GroundedPartLiesFlatOnTheSeabedAndSuspendedPartLeavesTangent
     EXPECT_EQ(s.angle_rad(sg), 0.0);
     EXPECT_DOUBLE_EQ(s.strain(sg), s.tension_n(sg) / 8e8);
     // The MAP++/MoorPy friction law: T(s) = H - C_B w (L_g - s).
-    EXPECT_NEAR(s.tension_n(sg), s.horizontal_force_n() - 1200.0 * (Lg - sg), 1e-6 * s.horizontal_force_n());
+    EXPECT_NEAR(s.tension_n(sg), s.horizontal_force_n() - 1200.0 * (Lg - sg),
+                1e-6 * s.horizontal_force_n());
   }
   EXPECT_TRUE(s.pieces().front().grounded);
   EXPECT_FALSE(s.pieces().back().grounded);
@@ -152,7 +158,8 @@ TEST(SeabedStatics, TouchdownExactlyAtTheAnchorReproducesTheFreeLine) {
   EXPECT_LT(relative_error(with.horizontal_force_n(), without.horizontal_force_n()), 1e-9);
   EXPECT_LT(relative_error(with.tension_n(L), without.tension_n(L)), 1e-9);
   EXPECT_LT(relative_error(with.anchor_horizontal_force_n(), without.horizontal_force_n()), 1e-9);
-  for (double f : {0.25, 0.5, 1.0}) EXPECT_LT((with.position_m(f * L) - without.position_m(f * L)).norm(), 1e-7);
+  for (double f : {0.25, 0.5, 1.0})
+    EXPECT_LT((with.position_m(f * L) - without.position_m(f * L)).norm(), 1e-7);
 }
 
 // Without contact the answer is the free line's, bit for bit.
@@ -181,7 +188,8 @@ TEST(SeabedStatics, AnchorLoadIsFairleadHMinusFrictionAndNeverNegative) {
     const double expected = s.horizontal_force_n() - friction * 1200.0 * s.grounded_length_m();
     EXPECT_GE(s.anchor_horizontal_force_n(), 0.0);
     if (expected > 0.0) {
-      EXPECT_NEAR(s.anchor_horizontal_force_n(), expected, 1e-9 * s.horizontal_force_n()) << friction;
+      EXPECT_NEAR(s.anchor_horizontal_force_n(), expected, 1e-9 * s.horizontal_force_n())
+          << friction;
     } else {
       EXPECT_EQ(s.anchor_horizontal_force_n(), 0.0) << friction;
       // Slack from A to where C_B w (L_g - s) = H.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Turchetto's touchdown form of the elastic catenary (Turchetto 2016; docs/reference/references.md, eqs.
-// 1.6-1.10): exact values of the inextensible line, the equilibrium of the suspended part, the
+// Turchetto's touchdown form of the elastic catenary (Turchetto 2016; docs/reference/references.md,
+// eqs. 1.6-1.10): exact values of the inextensible line, the equilibrium of the suspended part, the
 // closed forms against the general solver (StaticSolution from the lowest point, and solve_statics
 // given the same ends), the inverse from the reach, and bad input.
 #include "catena/statics/touchdown_catenary.hpp"
@@ -34,7 +34,8 @@ TEST(TouchdownCatenary, InextensibleLineAtFortyFiveDegreesHasItsExactValues) {
   // suspended length c tan(45) = c and the reach c ln(sec + tan) = c asinh(1).
   const CableProperties cable{1.0, 1000.0, kInfinity, 120.0, 0.0};
   const double c = 100.0;
-  const TouchdownLine line = touchdown_from_depth_and_tension(cable, c * (std::sqrt(2.0) - 1.0), 1e5);
+  const TouchdownLine line =
+      touchdown_from_depth_and_tension(cable, c * (std::sqrt(2.0) - 1.0), 1e5);
   EXPECT_DOUBLE_EQ(line.horizontal_tension_n, 1e5);
   EXPECT_LT(relative_error(line.fairlead_angle_rad, kPi / 4.0), 1e-14);
   EXPECT_LT(relative_error(line.fairlead_tension_n, 1e5 * std::sqrt(2.0)), 1e-14);
@@ -52,8 +53,10 @@ TEST(TouchdownCatenary, SuspendedWeightIsCarriedByTheFairlead) {
     const CableProperties cable{1.0, 800.0, ea, 100.0, 0.0};
     const TouchdownLine line = touchdown_from_depth_and_tension(cable, 150.0, 4e5);
     const double weight = 800.0 * line.suspended_length_m;
-    EXPECT_LT(relative_error(4e5 * std::tan(line.fairlead_angle_rad), weight), 1e-13) << "EA " << ea;
-    EXPECT_LT(relative_error(line.fairlead_tension_n, std::hypot(4e5, weight)), 1e-14) << "EA " << ea;
+    EXPECT_LT(relative_error(4e5 * std::tan(line.fairlead_angle_rad), weight), 1e-13)
+        << "EA " << ea;
+    EXPECT_LT(relative_error(line.fairlead_tension_n, std::hypot(4e5, weight)), 1e-14)
+        << "EA " << ea;
     if (std::isinf(ea)) {
       EXPECT_EQ(line.suspended_stretched_length_m, line.suspended_length_m);
     } else {
@@ -64,8 +67,8 @@ TEST(TouchdownCatenary, SuspendedWeightIsCarriedByTheFairlead) {
 
 TEST(TouchdownCatenary, ClosedFormsAreTheElasticCatenaryFromItsLowestPoint) {
   // StaticSolution with V_A = 0 at the touchdown point is the same line written with the general
-  // closed forms (docs/explanation/physics.md): its fairlead is at (reach, depth), with the same angle, tension
-  // and stretched length. No Newton iteration is involved.
+  // closed forms (docs/explanation/physics.md): its fairlead is at (reach, depth), with the same
+  // angle, tension and stretched length. No Newton iteration is involved.
   for (double ea : {5e8, 1e7, 3e6, kInfinity}) {
     CableProperties cable{1.0, 1000.0, ea, 120.0, 80.0};
     const TouchdownLine line = touchdown_from_depth_and_tension(cable, 300.0, 7.5e5);
@@ -76,7 +79,8 @@ TEST(TouchdownCatenary, ClosedFormsAreTheElasticCatenaryFromItsLowestPoint) {
     EXPECT_LT(relative_error(s.offset_m(L).y(), line.depth_m), 1e-12) << "EA " << ea;
     EXPECT_LT(relative_error(s.angle_rad(L), line.fairlead_angle_rad), 1e-13) << "EA " << ea;
     EXPECT_LT(relative_error(s.tension_n(L), line.fairlead_tension_n), 1e-13) << "EA " << ea;
-    EXPECT_LT(relative_error(s.stretched_length_m(L), line.suspended_stretched_length_m), 1e-12) << "EA " << ea;
+    EXPECT_LT(relative_error(s.stretched_length_m(L), line.suspended_stretched_length_m), 1e-12)
+        << "EA " << ea;
   }
 }
 
@@ -93,11 +97,14 @@ TEST(TouchdownCatenary, AgreesWithGeneralSolverFromLowestPoint) {
     p.cable.length_m = line.suspended_length_m;
     p.supports.b_m = Vec2(line.horizontal_reach_m, line.depth_m);
     const StaticSolution s = solve_statics(p);
-    EXPECT_LT(relative_error(s.horizontal_force_n(), line.horizontal_tension_n), 1e-10) << "EA " << ea;
+    EXPECT_LT(relative_error(s.horizontal_force_n(), line.horizontal_tension_n), 1e-10)
+        << "EA " << ea;
     EXPECT_LT(std::abs(s.vertical_force_a_n()) / line.horizontal_tension_n, 1e-10) << "EA " << ea;
     EXPECT_LT(relative_error(s.tension_n(p.cable.length_m), line.fairlead_tension_n), 1e-10);
     EXPECT_LT(relative_error(s.angle_rad(p.cable.length_m), line.fairlead_angle_rad), 1e-10);
-    EXPECT_LT(relative_error(s.stretched_length_m(p.cable.length_m), line.suspended_stretched_length_m), 1e-10);
+    EXPECT_LT(
+        relative_error(s.stretched_length_m(p.cable.length_m), line.suspended_stretched_length_m),
+        1e-10);
   }
 }
 
@@ -114,7 +121,8 @@ TEST(TouchdownCatenary, EquationOneTenHolds) {
 TEST(TouchdownCatenary, InverseFromReachRecoversTension) {
   CableProperties cable{1.0, 1000.0, 5e8, 120.0, 0.0};
   const TouchdownLine forward = touchdown_from_depth_and_tension(cable, 300.0, 7.5e5);
-  const TouchdownLine inverse = touchdown_from_depth_and_reach(cable, 300.0, forward.horizontal_reach_m);
+  const TouchdownLine inverse =
+      touchdown_from_depth_and_reach(cable, 300.0, forward.horizontal_reach_m);
   EXPECT_LT(relative_error(inverse.horizontal_tension_n, 7.5e5), 1e-12);
 }
 
@@ -126,7 +134,8 @@ TEST(TouchdownCatenary, RejectsNonPositiveDepthAndTension) {
 }
 
 TEST(TouchdownCatenary, ReachGrowsWithHorizontalTension) {
-  // The inverse brackets T_H on this monotonicity (a tauter line reaches farther at the same depth).
+  // The inverse brackets T_H on this monotonicity (a tauter line reaches farther at the same
+  // depth).
   for (double ea : {1e7, kInfinity}) {
     const CableProperties cable{1.0, 1000.0, ea, 120.0, 0.0};
     double previous = 0.0;
@@ -145,7 +154,8 @@ TEST(TouchdownCatenary, InverseFindsTheReachFromShortToLong) {
     const CableProperties cable{1.0, 1000.0, ea, 120.0, 0.0};
     for (double reach : {3.0, 150.0, 900.0, 15000.0}) {
       const TouchdownLine line = touchdown_from_depth_and_reach(cable, 300.0, reach);
-      EXPECT_LT(relative_error(line.horizontal_reach_m, reach), 1e-12) << "EA " << ea << ", reach " << reach;
+      EXPECT_LT(relative_error(line.horizontal_reach_m, reach), 1e-12)
+          << "EA " << ea << ", reach " << reach;
       EXPECT_LT(relative_error(line.depth_m, 300.0), 1e-12) << "EA " << ea << ", reach " << reach;
       EXPECT_GT(line.horizontal_tension_n, 0.0);
     }
@@ -154,12 +164,17 @@ TEST(TouchdownCatenary, InverseFindsTheReachFromShortToLong) {
 
 TEST(TouchdownCatenary, BadInputNamesTheField) {
   const CableProperties cable{1.0, 1000.0, 5e8, 120.0, 0.0};
-  EXPECT_NE(invalid_input_message([&] { touchdown_from_depth_and_tension(cable, -5.0, 1e5); }).find("depth_m = -5"),
+  EXPECT_NE(invalid_input_message([&] {
+              touchdown_from_depth_and_tension(cable, -5.0, 1e5);
+            }).find("depth_m = -5"),
             std::string::npos);
-  EXPECT_NE(invalid_input_message([&] { touchdown_from_depth_and_tension(cable, 100.0, 0.0); })
-                .find("horizontal_tension_n = 0"),
+  EXPECT_NE(invalid_input_message([&] {
+              touchdown_from_depth_and_tension(cable, 100.0, 0.0);
+            }).find("horizontal_tension_n = 0"),
             std::string::npos);
-  EXPECT_NE(invalid_input_message([&] { touchdown_from_depth_and_reach(cable, 100.0, 0.0); }).find("reach_m = 0"),
+  EXPECT_NE(invalid_input_message([&] {
+              touchdown_from_depth_and_reach(cable, 100.0, 0.0);
+            }).find("reach_m = 0"),
             std::string::npos);
   EXPECT_THROW(touchdown_from_depth_and_tension(cable, kInfinity, 1e5), InvalidInput);
   EXPECT_THROW(touchdown_from_depth_and_reach(cable, 100.0, -1.0), InvalidInput);

@@ -4,12 +4,13 @@
 // with h = 1/N, an unbiased one, shapes that swap two close modes. Expected values are the
 // construction's own parameters (order 2, the bias), so the test fails if the extrapolation or
 // the pairing is wrong.
+#include "catena/verification/external_check.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "catena/core/error.hpp"
-#include "catena/verification/external_check.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -36,8 +37,8 @@ CertifiedReference sine_reference(Plane plane, int count, std::vector<double> om
 }
 
 // The other program's mode `mode` at resolutions N: f_ref (1 - c / N^2) + bias.
-std::vector<ExternalMode> biased_code(int mode, double reference, double c, double bias,
-                                      const std::vector<double>& resolutions) {
+std::vector<ExternalMode> biased_code(
+    int mode, double reference, double c, double bias, const std::vector<double>& resolutions) {
   std::vector<ExternalMode> out;
   for (double n : resolutions) {
     ExternalMode row;
@@ -52,10 +53,13 @@ std::vector<ExternalMode> biased_code(int mode, double reference, double c, doub
 
 TEST(ExternalCheck, BiasedCodeRecoversOrderTwoAndItsBias) {
   const CertifiedReference reference = sine_reference(Plane::InPlane, 4);
-  for (const std::vector<double>& resolutions : {std::vector<double>{10, 20, 40, 80}, {12, 20, 35, 60}}) {
+  for (const std::vector<double>& resolutions :
+       {std::vector<double>{10, 20, 40, 80}, {12, 20, 35, 60}}) {
     const double f_ref = reference.modes[2].omega_rad_s;
-    const double bias = 0.02 * f_ref;  // 2 %: a lumped-mass code converging cleanly to a wrong limit
-    const ExternalCheck check = check_external_results(biased_code(3, f_ref, 2.0, bias, resolutions), {reference});
+    const double bias =
+        0.02 * f_ref;  // 2 %: a lumped-mass code converging cleanly to a wrong limit
+    const ExternalCheck check =
+        check_external_results(biased_code(3, f_ref, 2.0, bias, resolutions), {reference});
     ASSERT_EQ(check.modes.size(), 1u);
     const ModeComparison& mode = check.modes[0];
     ASSERT_TRUE(mode.study.has_value());
@@ -63,7 +67,8 @@ TEST(ExternalCheck, BiasedCodeRecoversOrderTwoAndItsBias) {
     EXPECT_NEAR(*mode.study->observed_order, 2.0, 1e-6);
     EXPECT_NEAR(*mode.study->coarser_order, 2.0, 1e-6);
     const double recovered_bias = *mode.study->limit_omega_rad_s - f_ref;
-    EXPECT_LE(std::abs(recovered_bias - bias), 1e-3 * bias) << "recovered " << recovered_bias << ", built " << bias;
+    EXPECT_LE(std::abs(recovered_bias - bias), 1e-3 * bias)
+        << "recovered " << recovered_bias << ", built " << bias;
     EXPECT_NEAR(*mode.study->bias_relative, 0.02, 1e-3 * 0.02);
     EXPECT_EQ(mode.verdict, ModeVerdict::ConvergesToWrongLimit) << mode.study->note;
     EXPECT_TRUE(check.any_failure());
@@ -75,13 +80,15 @@ TEST(ExternalCheck, UnbiasedCodeIsConvergedOrNotYetWithinTolerance) {
   const double f_ref = reference.modes[1].omega_rad_s;
   const std::vector<double> resolutions = {10, 20, 40, 80};
   // c = 2: the finest error is 2 / 6400 = 3.1e-4 <= rtol 1e-3.
-  const ExternalCheck converged = check_external_results(biased_code(2, f_ref, 2.0, 0.0, resolutions), {reference});
+  const ExternalCheck converged =
+      check_external_results(biased_code(2, f_ref, 2.0, 0.0, resolutions), {reference});
   EXPECT_EQ(converged.modes[0].verdict, ModeVerdict::Converged);
   EXPECT_NEAR(converged.modes[0].resolutions.back().relative_error, -2.0 / 6400.0, 1e-12);
   EXPECT_LE(std::abs(*converged.modes[0].study->bias_relative), 1e-9);
   EXPECT_FALSE(converged.any_failure());
   // c = 20: the finest error is 3.1e-3 > 1e-3, but the limit is right.
-  const ExternalCheck not_yet = check_external_results(biased_code(2, f_ref, 20.0, 0.0, resolutions), {reference});
+  const ExternalCheck not_yet =
+      check_external_results(biased_code(2, f_ref, 20.0, 0.0, resolutions), {reference});
   EXPECT_EQ(not_yet.modes[0].verdict, ModeVerdict::NotYetWithinTolerance);
   EXPECT_TRUE(not_yet.any_failure());
 }
@@ -102,7 +109,8 @@ TEST(ExternalCheck, OscillatingSequenceIsInconclusive) {
   rows[2].omega_rad_s = 0.5 * (1.0 + 5e-3);  // up, then down: no order fits
   const ExternalCheck check = check_external_results(rows, {reference});
   EXPECT_FALSE(check.modes[0].study->trustworthy);
-  EXPECT_EQ(check.modes[0].verdict, ModeVerdict::WithinTolerance);  // judged on the finest value only
+  EXPECT_EQ(check.modes[0].verdict,
+            ModeVerdict::WithinTolerance);  // judged on the finest value only
 }
 
 TEST(ExternalCheck, SingleResolutionIsJudgedAgainstRtol) {
@@ -111,9 +119,11 @@ TEST(ExternalCheck, SingleResolutionIsJudgedAgainstRtol) {
   row.mode = 2;
   row.omega_rad_s = 1.0 * (1.0 + 2e-3);
   ExternalCheckOptions options;
-  EXPECT_EQ(check_external_results({row}, {reference}, options).modes[0].verdict, ModeVerdict::BeyondTolerance);
+  EXPECT_EQ(check_external_results({row}, {reference}, options).modes[0].verdict,
+            ModeVerdict::BeyondTolerance);
   options.rtol = 3e-3;
-  EXPECT_EQ(check_external_results({row}, {reference}, options).modes[0].verdict, ModeVerdict::WithinTolerance);
+  EXPECT_EQ(check_external_results({row}, {reference}, options).modes[0].verdict,
+            ModeVerdict::WithinTolerance);
 }
 
 // Two close modes (1.000 and 1.001 rad/s): the other program numbers them by its own frequencies,
@@ -126,7 +136,8 @@ TEST(ExternalCheck, MacPairingSwapsTwoCloseModes) {
     row.omega_rad_s = omega;
     ExternalShape shape;
     shape.s_m = Vector::LinSpaced(41, 0.0, kLength);
-    shape.w = -3.0 * (shape.s_m.array() * shape_of * kPi / kLength).sin().matrix();  // any scale, any sign
+    shape.w = -3.0 *
+              (shape.s_m.array() * shape_of * kPi / kLength).sin().matrix();  // any scale, any sign
     row.shape = shape;
     return row;
   };
@@ -168,7 +179,8 @@ TEST(ExternalCheck, RejectsDuplicatesMixedResolutionsAndMissingReference) {
   rows[0].plane = Plane::OutOfPlane;
   testing::expect_invalid([&] { check_external_results(rows, {reference}); }, "out-of-plane");
   rows[0].plane = Plane::InPlane;
-  rows[0].shape = ExternalShape{Vector::LinSpaced(3, 0.0, 2 * kLength), {}, Vector::Ones(3), {}, {}};
+  rows[0].shape =
+      ExternalShape{Vector::LinSpaced(3, 0.0, 2 * kLength), {}, Vector::Ones(3), {}, {}};
   testing::expect_invalid([&] { check_external_results(rows, {reference}); }, "outside");
   ExternalCheckOptions options;
   options.rtol = 0.0;

@@ -18,12 +18,15 @@ SolverEntry entry(const std::string& name, std::map<std::string, std::string> co
 }
 
 TEST(Independence, SharedOnlyWhenBothDeclareTheSameId) {
-  const SolverEntry a = entry("a", {{"frequency-out-of-plane", "wkb"}, {"frequency-in-plane", "a-det"}});
-  const SolverEntry b = entry("b", {{"frequency-out-of-plane", "wkb"}, {"frequency-in-plane", "b-det"}});
+  const SolverEntry a =
+      entry("a", {{"frequency-out-of-plane", "wkb"}, {"frequency-in-plane", "a-det"}});
+  const SolverEntry b =
+      entry("b", {{"frequency-out-of-plane", "wkb"}, {"frequency-in-plane", "b-det"}});
   const SolverEntry c = entry("c", {});
   EXPECT_EQ(shared_computation(a, b, "frequency-out-of-plane"), "wkb");
   EXPECT_EQ(shared_computation(a, b, "frequency-in-plane"), std::nullopt);
-  EXPECT_EQ(shared_computation(a, c, "frequency-out-of-plane"), std::nullopt);  // undeclared: not shared
+  EXPECT_EQ(shared_computation(a, c, "frequency-out-of-plane"),
+            std::nullopt);  // undeclared: not shared
 }
 
 TEST(Independence, EveryRegisteredSolverDeclaresItsFrequencyPaths) {
@@ -71,11 +74,16 @@ TEST(Independence, IdentityDetectorFlagsAWholeListOfBitIdenticalValues) {
   EXPECT_EQ(flags[0].verdict, Verdict::Fail);
   EXPECT_EQ(flags[0].compare, "x vs y");
   // One differing value, a single value, or a non-value check (MAC) is not flagged.
-  EXPECT_TRUE(identity_checks({identical[0], value_check("frequency", 2, 2.5, std::nextafter(2.5, 3.0))}).empty());
+  EXPECT_TRUE(
+      identity_checks({identical[0], value_check("frequency", 2, 2.5, std::nextafter(2.5, 3.0))})
+          .empty());
   EXPECT_TRUE(identity_checks({identical[0]}).empty());
-  EXPECT_TRUE(identity_checks({value_check("mac", 1, 1.0, 1.0), value_check("mac", 2, 1.0, 1.0)}).empty());
+  EXPECT_TRUE(
+      identity_checks({value_check("mac", 1, 1.0, 1.0), value_check("mac", 2, 1.0, 1.0)}).empty());
   // Exact zeros (no dynamic tension under out-of-plane forcing) and skipped checks are no evidence.
-  EXPECT_TRUE(identity_checks({value_check("forced", 1, 0.0, 0.0), value_check("forced", 2, 0.0, 0.0)}).empty());
+  EXPECT_TRUE(
+      identity_checks({value_check("forced", 1, 0.0, 0.0), value_check("forced", 2, 0.0, 0.0)})
+          .empty());
   CheckResult skipped = identical[1];
   skipped.verdict = Verdict::Skipped;
   EXPECT_TRUE(identity_checks({identical[0], skipped}).empty());
@@ -87,7 +95,8 @@ TEST(Independence, IdentityDetectorFlagsAWholeListOfBitIdenticalValues) {
 
 TEST(Independence, TallyCountsIdentityFlagsAndSharedSkips) {
   SceneResult result;
-  result.checks = identity_checks({value_check("tension", 1, 3.0, 3.0), value_check("tension", 2, 4.0, 4.0)});
+  result.checks =
+      identity_checks({value_check("tension", 1, 3.0, 3.0), value_check("tension", 2, 4.0, 4.0)});
   CheckResult skip = value_check("frequency", 0, std::nan(""), std::nan(""));
   skip.verdict = Verdict::Skipped;
   skip.detail = std::string(kSharedComputationDetail) + "wkb-out-of-plane";

@@ -2,9 +2,8 @@
 // The mutation score of the real harness (builtin tolerance and findings tables) on six scenes
 // from six families: every exact solver's mutation must be caught where another exact solver ran
 // (issue 12's target), and every uncaught one is named in the failure message.
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include "catena/io/findings_reader.hpp"
 #include "catena/io/scene_reader.hpp"
@@ -15,9 +14,9 @@ namespace catena {
 namespace {
 
 const char* const kScenes[] = {
-    "analytic/taut-string.toml",                 "gale/gale-b-3-hb0.25-sag0.70.toml",
-    "gale/gale-c-2-hb0.00-sag0.70.toml",         "grinfogel/grinfogel-eps0.18-phi23.46-lambda2-38.toml",
-    "physical/mooring-line-900m.toml",           "studies/inclined-grid-eps0.05-phi45.0.toml"};
+    "analytic/taut-string.toml",         "gale/gale-b-3-hb0.25-sag0.70.toml",
+    "gale/gale-c-2-hb0.00-sag0.70.toml", "grinfogel/grinfogel-eps0.18-phi23.46-lambda2-38.toml",
+    "physical/mooring-line-900m.toml",   "studies/inclined-grid-eps0.05-phi45.0.toml"};
 
 MutationRun subset_run() {
   SceneRunOptions options;
@@ -25,7 +24,9 @@ MutationRun subset_run() {
   options.findings = builtin_findings_table();
   std::vector<Scene> scenes;
   for (const char* file : kScenes) {
-    scenes.push_back(read_scene_file(std::filesystem::path(CATENA_SOURCE_DIR) / "verification/scenes" / file).front());
+    scenes.push_back(
+        read_scene_file(std::filesystem::path(CATENA_SOURCE_DIR) / "verification/scenes" / file)
+            .front());
   }
   return run_mutations(run_scenes(scenes, 0, options), 0, options);
 }
@@ -33,9 +34,10 @@ MutationRun subset_run() {
 std::string uncaught_list(const MutationRun& run, bool exact_with_witness_only) {
   std::string text;
   for (const auto& o : run.outcomes) {
-    if (o.caught || (exact_with_witness_only && !(is_exact_solver(o.solver) && o.exact_witness))) continue;
-    text += fmt::format("  {} {} {} {} mode {} (size {:.1e})\n", o.scene, o.solver, to_string(o.quantity), o.plane,
-                        o.mode, o.size);
+    if (o.caught || (exact_with_witness_only && !(is_exact_solver(o.solver) && o.exact_witness)))
+      continue;
+    text += fmt::format("  {} {} {} {} mode {} (size {:.1e})\n", o.scene, o.solver,
+                        to_string(o.quantity), o.plane, o.mode, o.size);
   }
   return text;
 }
@@ -47,8 +49,9 @@ TEST(MutationScore, EveryMutationIsCountedOnceAndEveryUncaughtOneIsNamed) {
   EXPECT_EQ(made, static_cast<int>(run.outcomes.size()));
   const MutationTally exact = run.exact_with_witness();
   EXPECT_GT(exact.made, 0);
-  std::cout << fmt::format("exact solvers with an exact witness: {} of {} caught; all solvers: {} of {}\n",
-                           exact.caught, exact.made, caught, made);
+  std::cout << fmt::format(
+      "exact solvers with an exact witness: {} of {} caught; all solvers: {} of {}\n", exact.caught,
+      exact.made, caught, made);
   std::cout << "uncaught:\n" << uncaught_list(run, false);
 }
 
@@ -73,8 +76,8 @@ TEST(MutationScore, ExactSolversCatchEveryChangeBeyondTheirOwnEstimateWhereTwoRa
   std::string uncaught;
   for (const auto& o : run.outcomes) {
     if (!o.caught && is_exact_solver(o.solver) && o.exact_witness && o.size > o.estimate)
-      uncaught += fmt::format("  {} {} {} {} mode {} (size {:.1e}, own estimate {:.1e})\n", o.scene, o.solver,
-                              to_string(o.quantity), o.plane, o.mode, o.size, o.estimate);
+      uncaught += fmt::format("  {} {} {} {} mode {} (size {:.1e}, own estimate {:.1e})\n", o.scene,
+                              o.solver, to_string(o.quantity), o.plane, o.mode, o.size, o.estimate);
   }
   EXPECT_EQ(beyond.caught, beyond.made) << "uncaught:\n" << uncaught;
 }

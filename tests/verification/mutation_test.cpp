@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Mutation testing of the harness (docs/explanation/mutation.md): a frequency made wrong beyond its check's
-// tolerance is caught by a frequency check, one within it is reported uncaught, a shape mix is
-// caught by the shape checks, and the accuracy targets follow each solver's knobs.
+// Mutation testing of the harness (docs/explanation/mutation.md): a frequency made wrong beyond its
+// check's tolerance is caught by a frequency check, one within it is reported uncaught, a shape mix
+// is caught by the shape checks, and the accuracy targets follow each solver's knobs.
 #include "catena/verification/mutation.hpp"
 
 #include <gtest/gtest.h>
@@ -21,22 +21,27 @@ ToleranceRule rule(const std::string& check, double max) {
   return r;
 }
 
-// A taut inclined cable solved by fe and shooting, with shapes, under a frequency rule `frequency_max`.
+// A taut inclined cable solved by fe and shooting, with shapes, under a frequency rule
+// `frequency_max`.
 SceneRunOptions options_with(double frequency_max) {
   SceneRunOptions options;
-  options.tolerances = ToleranceTable({rule("frequency", frequency_max), rule("mac", 1e-6), rule("shape", 1e-3)});
+  options.tolerances =
+      ToleranceTable({rule("frequency", frequency_max), rule("mac", 1e-6), rule("shape", 1e-3)});
   options.only_solvers = {"fe", "shooting"};
   return options;
 }
 
 SceneResult solved(const SceneRunOptions& options) {
   const Scene scene = parse_scene_text(
-      "[taut_inclined]\neps = 0.1\nphi_deg = 30.0\nlambda2 = 10.0\n[request]\ninplane_modes = 3\nshapes = true\n",
-      "mutation.toml").front();
+                          "[taut_inclined]\neps = 0.1\nphi_deg = 30.0\nlambda2 = "
+                          "10.0\n[request]\ninplane_modes = 3\nshapes = true\n",
+                          "mutation.toml")
+                          .front();
   return run_scene(scene, options);
 }
 
-std::vector<MutationOutcome> of(const std::vector<MutationOutcome>& all, const std::string& solver,
+std::vector<MutationOutcome> of(const std::vector<MutationOutcome>& all,
+                                const std::string& solver,
                                 MutatedQuantity quantity) {
   std::vector<MutationOutcome> out;
   for (const auto& o : all) {
@@ -49,7 +54,8 @@ TEST(Mutation, AFrequencyMadeWrongBeyondItsToleranceIsCaughtByAFrequencyCheck) {
   const SceneRunOptions options = options_with(1e-8);
   const SceneResult result = solved(options);
   ASSERT_EQ(result.failed_checks(), 0);
-  // fe's target is 1e-6 (kFeAccuracyTarget): its frequencies move by 1e-5, far beyond the 1e-8 rule.
+  // fe's target is 1e-6 (kFeAccuracyTarget): its frequencies move by 1e-5, far beyond the 1e-8
+  // rule.
   const auto fe = of(mutate_scene(result, options), "fe", MutatedQuantity::Frequency);
   ASSERT_EQ(fe.size(), 3u);
   for (const auto& o : fe) {
@@ -60,7 +66,9 @@ TEST(Mutation, AFrequencyMadeWrongBeyondItsToleranceIsCaughtByAFrequencyCheck) {
     // The outcome keeps the mutated value's own estimate, from before the mutation.
     for (const auto& output : result.outputs) {
       if (output.solver == "fe") {
-        EXPECT_DOUBLE_EQ(o.estimate, output.inplane->modes[static_cast<std::size_t>(o.mode - 1)].relative_error_estimate);
+        EXPECT_DOUBLE_EQ(
+            o.estimate,
+            output.inplane->modes[static_cast<std::size_t>(o.mode - 1)].relative_error_estimate);
       }
     }
   }
@@ -69,7 +77,8 @@ TEST(Mutation, AFrequencyMadeWrongBeyondItsToleranceIsCaughtByAFrequencyCheck) {
 TEST(Mutation, AFrequencyMadeWrongWithinItsToleranceIsReportedUncaught) {
   const SceneRunOptions options = options_with(1e-7);
   const SceneResult result = solved(options);
-  // shooting's target is 10 rtol + root_tolerance, 1.1e-9: a 1.1e-8 change hides inside the 1e-7 rule.
+  // shooting's target is 10 rtol + root_tolerance, 1.1e-9: a 1.1e-8 change hides inside the 1e-7
+  // rule.
   const auto shooting = of(mutate_scene(result, options), "shooting", MutatedQuantity::Frequency);
   ASSERT_EQ(shooting.size(), 3u);
   for (const auto& o : shooting) {
@@ -129,7 +138,8 @@ TEST(ModeMix, TheMixReachesTheAskedDropOfMacAndKeepsTheNormalisation) {
   b.w = (Vector(5) << 0.0, 1.0, 0.0, -1.0, 0.0).finished();
   a.normalised_by = "w";
   const Vector p = internal::stacked_shape(a, Plane::InPlane);
-  const auto delta = internal::mix_for_mac_drop(p, internal::stacked_shape(b, Plane::InPlane), 1e-4);
+  const auto delta =
+      internal::mix_for_mac_drop(p, internal::stacked_shape(b, Plane::InPlane), 1e-4);
   ASSERT_TRUE(delta);
   internal::mix_modes(a, b, *delta);
   EXPECT_NEAR(internal::one_minus_mac(p, internal::stacked_shape(a, Plane::InPlane)), 1e-4, 1e-10);

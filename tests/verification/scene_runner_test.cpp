@@ -18,7 +18,8 @@ Scene scene_from(const std::string& cable, const std::string& rest = "") {
 }
 
 // A sagging 10 m elastic line that fe and shooting both solve.
-const std::string kLine = "length = 10.0\nweight = 1.0\nEA = 1e6\nmass = 1.0\na = [0.0, 0.0]\nb = [8.0, 1.0]\n";
+const std::string kLine =
+    "length = 10.0\nweight = 1.0\nEA = 1e6\nmass = 1.0\na = [0.0, 0.0]\nb = [8.0, 1.0]\n";
 
 SceneRunOptions options_with_tables() {
   SceneRunOptions options;
@@ -30,13 +31,15 @@ SceneRunOptions options_with_tables() {
 TEST(SceneRunner, SolvesStaticsSolversAndChecks) {
   SceneRunOptions options = options_with_tables();
   options.only_solvers = {"fe", "shooting"};
-  const SceneResult result = run_scene(scene_from(kLine, "[request]\ninplane_modes = 3\n"), options);
+  const SceneResult result =
+      run_scene(scene_from(kLine, "[request]\ninplane_modes = 3\n"), options);
   EXPECT_TRUE(result.error.empty()) << result.error;
   EXPECT_EQ(result.error_kind, SceneError::None);
   ASSERT_TRUE(result.statics);
   ASSERT_TRUE(result.groups);
   ASSERT_EQ(result.outputs.size(), 2u);
-  EXPECT_EQ(result.outputs[0].summary.termination, Termination::Converged) << result.outputs[0].summary.message;
+  EXPECT_EQ(result.outputs[0].summary.termination, Termination::Converged)
+      << result.outputs[0].summary.message;
   EXPECT_EQ(result.outputs[0].solver, "fe");
   EXPECT_EQ(result.outputs[1].solver, "shooting");
   EXPECT_FALSE(result.checks.empty());
@@ -45,7 +48,8 @@ TEST(SceneRunner, SolvesStaticsSolversAndChecks) {
 
 TEST(SceneRunner, UnreachableChordIsBadInput) {
   const SceneResult result = run_scene(
-      scene_from("length = 1.0\nweight = 1.0\nEA = \"inf\"\nmass = 1.0\na = [0.0, 0.0]\nb = [2.0, 0.0]\n"),
+      scene_from(
+          "length = 1.0\nweight = 1.0\nEA = \"inf\"\nmass = 1.0\na = [0.0, 0.0]\nb = [2.0, 0.0]\n"),
       options_with_tables());
   EXPECT_EQ(result.error_kind, SceneError::BadInput);
   EXPECT_NE(result.error.find("test.toml"), std::string::npos) << result.error;
@@ -55,9 +59,10 @@ TEST(SceneRunner, UnreachableChordIsBadInput) {
 
 TEST(SceneRunner, StaticsThatDoNotConvergeAreANumericalFailure) {
   // A heavy, very compliant line on a nearly vertical chord: Newton stalls near 1e-8 m closure.
-  const SceneResult result = run_scene(
-      scene_from("length = 1000.0\nweight = 1.0e6\nEA = 1.0e3\nmass = 1.0\na = [0.0, 0.0]\nb = [1.0, 999.0]\n"),
-      options_with_tables());
+  const SceneResult result =
+      run_scene(scene_from("length = 1000.0\nweight = 1.0e6\nEA = 1.0e3\nmass = 1.0\na = [0.0, "
+                           "0.0]\nb = [1.0, 999.0]\n"),
+                options_with_tables());
   EXPECT_EQ(result.error_kind, SceneError::NumericalFailure);
   EXPECT_NE(result.error.find("did not converge"), std::string::npos) << result.error;
   EXPECT_FALSE(result.statics);
@@ -103,7 +108,8 @@ TEST(SceneRunner, ForcedConditioningIsSolvedByFeWhenNoOutputHoldsTheModes) {
   ASSERT_TRUE(result.error.empty()) << result.error;
   const ForcedConditioning& conditioning = result.forced_conditioning;
   EXPECT_EQ(conditioning.solver, "fe");
-  EXPECT_NE(conditioning.note.find("solved for the condition number"), std::string::npos) << conditioning.note;
+  EXPECT_NE(conditioning.note.find("solved for the condition number"), std::string::npos)
+      << conditioning.note;
   ASSERT_GE(conditioning.omegas_rad_s.size(), 2u);
   EXPECT_GT(conditioning.omegas_rad_s.back(), 9.0);
 

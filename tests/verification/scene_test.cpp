@@ -30,9 +30,11 @@ TEST(Scene, SolverNamesAreTheRegistryOrTheSceneChoice) {
 
 TEST(Scene, ResolveRequestConvertsForcingToSI) {
   const Scene scene = parse_scene_text(
-      "[gale]\nxi1 = -1.0\nxi2 = 1.0\n[request]\ninplane_modes = 1\n"
-      "[request.forced]\nfrequencies = [2.0]\nfrequency_unit = \"gale\"\namplitude = 0.5\namplitude_unit = \"a\"\n",
-      "s.toml").front();
+                          "[gale]\nxi1 = -1.0\nxi2 = 1.0\n[request]\ninplane_modes = 1\n"
+                          "[request.forced]\nfrequencies = [2.0]\nfrequency_unit = "
+                          "\"gale\"\namplitude = 0.5\namplitude_unit = \"a\"\n",
+                          "s.toml")
+                          .front();
   const StaticSolution statics = solve_statics(scene.problem);
   const DimensionlessGroups groups = compute_dimensionless_groups(scene.problem, statics);
   const SolveRequest request = resolve_request(scene, groups);

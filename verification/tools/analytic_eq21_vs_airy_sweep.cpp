@@ -16,9 +16,9 @@
 
 #include "catena/core/version.hpp"
 #include "catena/io/csv_table.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "common/repository_paths.hpp"
 
 int main(int argc, char** argv) {
@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
       "verification/comparisons/grinfogel-eq21-vs-airy-sweep.csv",
       "source:    eq. (21) (asymptotic solver) vs Triantafyllou's Airy determinant (airy solver, "
       "defaults)",
-      "generator: verification/tools/analytic_eq21_vs_airy_sweep.cpp (catena_analytic_eq21_vs_airy_sweep)",
+      "generator: verification/tools/analytic_eq21_vs_airy_sweep.cpp "
+      "(catena_analytic_eq21_vs_airy_sweep)",
       catena_tools::generated_line(),
       "problem:   make_taut_inclined_problem(eps, phi_deg, lambda2, h = 1), lambda2 = 10^(-1 + 5 "
       "j/24), j = 0..24",

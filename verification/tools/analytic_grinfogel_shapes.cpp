@@ -22,9 +22,9 @@
 
 #include "catena/core/version.hpp"
 #include "catena/io/csv_table.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "common/repository_paths.hpp"
 #include "solvers/asymptotic/asymptotic_formulas.hpp"
 #include "solvers/common/mode_tools.hpp"
@@ -84,7 +84,8 @@ int main(int argc, char** argv) {
       "source:    Grinfogel (1984) eqs. (34), (28), (37), (38) (asymptotic solver) vs "
       "Triantafyllou's Airy",
       "           model (airy solver, curvature_fit tangent); phi = 30 deg, h = 1, 401 stations",
-      "generator: verification/tools/analytic_grinfogel_shapes.cpp (catena_analytic_grinfogel_shapes)",
+      "generator: verification/tools/analytic_grinfogel_shapes.cpp "
+      "(catena_analytic_grinfogel_shapes)",
       catena_tools::generated_line(),
       "columns:   max_abs_dw_* = max_s |w - w_airy| with both normalised to max|w| = 1 [-]:",
       "           34 = eq. (34) with eps^2 sin^2(phi) (as in eqs. 29, 32; our reading),",
@@ -151,7 +152,8 @@ int main(int argc, char** argv) {
       "           eq. (38) (asymptotic solver) vs Triantafyllou's Airy model (airy solver), eps = "
       "0.18,",
       "           phi = 23.46 deg, h = 1, L = 1 m, T0 = 1 N, M = 1 kg/m",
-      "generator: verification/tools/analytic_grinfogel_shapes.cpp (catena_analytic_grinfogel_shapes)",
+      "generator: verification/tools/analytic_grinfogel_shapes.cpp "
+      "(catena_analytic_grinfogel_shapes)",
       catena_tools::generated_line(),
       "columns:   tension = max_s |tau| per unit max normal amplitude [N/m] (modal_result.hpp "
       "normalisation)",

@@ -18,11 +18,11 @@
 
 #include "catena/core/version.hpp"
 #include "catena/io/csv_table.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "common/repository_paths.hpp"
 
 namespace {
@@ -79,7 +79,8 @@ int main(int argc, char** argv) {
       "(published/grinfogel-1984-table-2-2-frequencies.csv)",
       "           beside catena's asymptotic (eq. 21) and airy (Triantafyllou's Airy determinant) "
       "solvers",
-      "generator: verification/tools/analytic_grinfogel_table.cpp (catena_analytic_grinfogel_table)",
+      "generator: verification/tools/analytic_grinfogel_table.cpp "
+      "(catena_analytic_grinfogel_table)",
       catena_tools::generated_line(),
       "problem:   make_taut_inclined_problem(eps, phi_deg, lambda2, h = 1); frequencies as kL/pi",
       "columns:   asymptotic_minus_approx, airy_minus_exact = ours - published; *_verdict: 'agree' "

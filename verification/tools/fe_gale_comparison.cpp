@@ -25,9 +25,9 @@
 #include <string>
 
 #include "catena/io/csv_table.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "common/repository_paths.hpp"
 
 using namespace catena;
@@ -69,19 +69,37 @@ int main(int argc, char** argv) {
   CsvTable out;
   out.comments = {
       "verification/comparisons/fe-gale-B3-B4-comparison.csv",
-      "source:    Gale (1976) Tables B-3 (in-plane) and B-4 (out-of-plane), published/gale-1976-table-B3-inplane.csv "
+      "source:    Gale (1976) Tables B-3 (in-plane) and B-4 (out-of-plane), "
+      "published/gale-1976-table-B3-inplane.csv "
       "and -B4-outofplane.csv, as printed",
-      "ours:      catena fe solver, N = 800 and 1600 elements with Richardson, penalty kappa = 1e-6 and 2e-6 "
-      "extrapolated to 0; geometry from (h_over_b, sag_param); omega_from_printed_xi uses the printed xi1, xi2",
+      "ours:      catena fe solver, N = 800 and 1600 elements with Richardson, penalty kappa = "
+      "1e-6 and 2e-6 "
+      "extrapolated to 0; geometry from (h_over_b, sag_param); omega_from_printed_xi uses the "
+      "printed xi1, xi2",
       "generator: verification/tools/fe_gale_comparison.cpp (catena_fe_gale_comparison)",
-      "columns:   table, h_over_b, sag_param, printed xi1 xi2, our xi1 xi2 from (h/b, sag), mode, printed w_n, "
-      "ours (from h/b, sag), ours - printed, our relative error estimate, ours from the printed xi, its "
-      "difference, xi_rounding_band (change of ours for xi1, xi2 + 0.0005), beyond_rounding = yes when neither "
+      "columns:   table, h_over_b, sag_param, printed xi1 xi2, our xi1 xi2 from (h/b, sag), mode, "
+      "printed w_n, "
+      "ours (from h/b, sag), ours - printed, our relative error estimate, ours from the printed "
+      "xi, its "
+      "difference, xi_rounding_band (change of ours for xi1, xi2 + 0.0005), beyond_rounding = yes "
+      "when neither "
       "|ours - printed| <= 0.005 + err nor |ours_from_printed_xi - printed| <= 0.005 + band + err",
   };
-  out.columns = {"table", "h_over_b", "sag_param", "xi1_printed", "xi2_printed", "xi1_ours",
-                 "xi2_ours", "mode", "printed", "ours", "difference", "relative_error_estimate",
-                 "ours_from_printed_xi", "difference_from_printed_xi", "xi_rounding_band",
+  out.columns = {"table",
+                 "h_over_b",
+                 "sag_param",
+                 "xi1_printed",
+                 "xi2_printed",
+                 "xi1_ours",
+                 "xi2_ours",
+                 "mode",
+                 "printed",
+                 "ours",
+                 "difference",
+                 "relative_error_estimate",
+                 "ours_from_printed_xi",
+                 "difference_from_printed_xi",
+                 "xi_rounding_band",
                  "beyond_rounding"};
   int flagged = 0, total = 0;
   for (const auto& [table_name, file, plane] :
@@ -96,15 +114,18 @@ int main(int argc, char** argv) {
       const Solved from_design = solve_row(make_gale_sag_problem(h_over_b, sag), plane, options);
       const Solved from_xi = solve_row(make_gale_xi_problem(xi1, xi2), plane, options);
       constexpr double kXiHalfUnit = 0.0005;
-      const Solved from_xi1 = solve_row(make_gale_xi_problem(xi1 + kXiHalfUnit, xi2), plane, options);
-      const Solved from_xi2 = solve_row(make_gale_xi_problem(xi1, xi2 + kXiHalfUnit), plane, options);
+      const Solved from_xi1 =
+          solve_row(make_gale_xi_problem(xi1 + kXiHalfUnit, xi2), plane, options);
+      const Solved from_xi2 =
+          solve_row(make_gale_xi_problem(xi1, xi2 + kXiHalfUnit), plane, options);
       for (int n = 1; n <= 6; ++n) {
         const auto printed = table.number(row, fmt::format("w{}", n));
         if (!printed) continue;
         const auto index = static_cast<std::size_t>(n - 1);
         if (index >= from_design.modes.size() || index >= from_xi.modes.size() ||
             index >= from_xi1.modes.size() || index >= from_xi2.modes.size()) {
-          std::fprintf(stderr, "row %zu: fe returned too few modes: %s\n", row, from_design.summary.c_str());
+          std::fprintf(stderr, "row %zu: fe returned too few modes: %s\n", row,
+                       from_design.summary.c_str());
           return 1;
         }
         const Mode& mode = from_design.modes[index];
@@ -114,23 +135,25 @@ int main(int argc, char** argv) {
         const double ours_xi = *from_xi.modes[index].gale_ratio;
         const double band = std::abs(*from_xi1.modes[index].gale_ratio - ours_xi) +
                             std::abs(*from_xi2.modes[index].gale_ratio - ours_xi);
-        const bool beyond = std::abs(difference) > allowed &&
-                            std::abs(ours_xi - *printed) > allowed + band;
+        const bool beyond =
+            std::abs(difference) > allowed && std::abs(ours_xi - *printed) > allowed + band;
         flagged += beyond;
         ++total;
-        out.rows.push_back({table_name, table.text(row, "h_over_b"), table.text(row, "sag_param"),
-                            table.text(row, "xi1"), table.text(row, "xi2"),
-                            fmt::format("{:.5f}", from_design.xi1), fmt::format("{:.5f}", from_design.xi2),
-                            std::to_string(n), table.text(row, fmt::format("w{}", n)),
-                            fmt::format("{:.6f}", ours), fmt::format("{:+.6f}", difference),
-                            fmt::format("{:.1e}", mode.relative_error_estimate),
-                            fmt::format("{:.6f}", ours_xi), fmt::format("{:+.6f}", ours_xi - *printed),
-                            fmt::format("{:.6f}", band), beyond ? "yes" : "no"});
+        out.rows.push_back(
+            {table_name, table.text(row, "h_over_b"), table.text(row, "sag_param"),
+             table.text(row, "xi1"), table.text(row, "xi2"), fmt::format("{:.5f}", from_design.xi1),
+             fmt::format("{:.5f}", from_design.xi2), std::to_string(n),
+             table.text(row, fmt::format("w{}", n)), fmt::format("{:.6f}", ours),
+             fmt::format("{:+.6f}", difference),
+             fmt::format("{:.1e}", mode.relative_error_estimate), fmt::format("{:.6f}", ours_xi),
+             fmt::format("{:+.6f}", ours_xi - *printed), fmt::format("{:.6f}", band),
+             beyond ? "yes" : "no"});
       }
     }
   }
-  out.comments.push_back(fmt::format("summary:   {} of {} printed entries differ by more than the printed rounding",
-                                     flagged, total));
+  out.comments.push_back(
+      fmt::format("summary:   {} of {} printed entries differ by more than the printed rounding",
+                  flagged, total));
   write_csv_table(paths.comparisons + "/fe-gale-B3-B4-comparison.csv", out);
   std::printf("%d of %d printed entries beyond rounding\n", flagged, total);
   return 0;

@@ -20,9 +20,9 @@
 #include <string>
 
 #include "catena/io/csv_table.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "common/repository_paths.hpp"
 
 using namespace catena;
@@ -38,7 +38,8 @@ double max_tension(const Problem& problem, double wf, std::string& diagnostic) {
   request.inplane_modes = 6;
   request.outofplane_modes = 0;
   request.points = 401;
-  request.forced = ForcedRequest{.end = CableEnd::B, .direction = ForcingDirection::Tangential,
+  request.forced = ForcedRequest{.end = CableEnd::B,
+                                 .direction = ForcingDirection::Tangential,
                                  .amplitude_m = 0.01 * groups.catenary_parameter_m,
                                  .omegas_rad_s = {groups.omega_from_gale_ratio(wf)}};
   FeSolverOptions options;
@@ -57,7 +58,8 @@ double static_tension_check(const Problem& problem) {
   Problem base = problem;
   base.prescribed_forces.reset();
   const StaticSolution before = solve_statics(base);
-  const double L = problem.cable.length_m, a = before.horizontal_force_n() / problem.cable.weight_n_per_m;
+  const double L = problem.cable.length_m,
+               a = before.horizontal_force_n() / problem.cable.weight_n_per_m;
   const double delta = 1e-5 * a;
   Problem moved = base;
   moved.supports.b_m += delta * before.tangent(L);
@@ -74,22 +76,31 @@ double static_tension_check(const Problem& problem) {
 
 int main(int argc, char** argv) {
   const catena_tools::RepositoryPaths paths = catena_tools::repository_paths(argc, argv);
-  const CsvTable table = read_csv_table(paths.published + "/gale-1976-table-C2-forced-max-tension.csv");
+  const CsvTable table =
+      read_csv_table(paths.published + "/gale-1976-table-C2-forced-max-tension.csv");
   CsvTable out;
   out.comments = {
       "verification/comparisons/fe-gale-C2-comparison.csv",
-      "source:    Gale (1976) Table C-2, published/gale-1976-table-C2-forced-max-tension.csv, as printed",
-      "ours:      catena fe solver forced response, tangential end displacement 0.01 a at end b, N = 1600 "
-      "elements (the finer Richardson mesh; no extrapolation of the response), kappa = 1e-6 and 2e-6 "
+      "source:    Gale (1976) Table C-2, published/gale-1976-table-C2-forced-max-tension.csv, as "
+      "printed",
+      "ours:      catena fe solver forced response, tangential end displacement 0.01 a at end b, N "
+      "= 1600 "
+      "elements (the finer Richardson mesh; no extrapolation of the response), kappa = 1e-6 and "
+      "2e-6 "
       "extrapolated to 0, tension sampled on 401 stations",
-      "generator: verification/tools/fe_gale_forced_comparison.cpp (catena_fe_gale_forced_comparison)",
-      "columns:   h_over_b, sag_param, wf (forcing w / sqrt(g/a)), printed tmax, ours, ours - printed, "
-      "sensitivity = ours(wf + 0.005) - ours(wf), beyond_rounding = |ours - printed| > 0.0005 + |sensitivity|, "
-      "static_check (wf = 0 only) = the same quantity from finite differences of the exact nonlinear statics "
+      "generator: verification/tools/fe_gale_forced_comparison.cpp "
+      "(catena_fe_gale_forced_comparison)",
+      "columns:   h_over_b, sag_param, wf (forcing w / sqrt(g/a)), printed tmax, ours, ours - "
+      "printed, "
+      "sensitivity = ours(wf + 0.005) - ours(wf), beyond_rounding = |ours - printed| > 0.0005 + "
+      "|sensitivity|, "
+      "static_check (wf = 0 only) = the same quantity from finite differences of the exact "
+      "nonlinear statics "
       "(no fe code)",
   };
-  out.columns = {"h_over_b", "sag_param", "wf", "printed", "ours", "difference", "sensitivity",
-                 "beyond_rounding", "static_check", "diagnostic"};
+  out.columns = {"h_over_b",     "sag_param",  "wf",          "printed",
+                 "ours",         "difference", "sensitivity", "beyond_rounding",
+                 "static_check", "diagnostic"};
   int flagged = 0;
   for (std::size_t row = 0; row < table.rows.size(); ++row) {
     const double h_over_b = *table.number(row, "h_over_b");
@@ -103,14 +114,16 @@ int main(int argc, char** argv) {
     const double sensitivity = (ours >= 0.0 && shifted >= 0.0) ? shifted - ours : 0.0;
     const bool beyond = ours < 0.0 || std::abs(ours - printed) > 0.0005 + std::abs(sensitivity);
     flagged += beyond;
-    out.rows.push_back({table.text(row, "h_over_b"), table.text(row, "sag_param"), table.text(row, "wf"),
-                        table.text(row, "tmax"), ours >= 0.0 ? fmt::format("{:.5f}", ours) : "",
-                        ours >= 0.0 ? fmt::format("{:+.5f}", ours - printed) : "",
-                        fmt::format("{:+.5f}", sensitivity), beyond ? "yes" : "no",
-                        wf == 0.0 ? fmt::format("{:.5f}", static_tension_check(problem)) : "", diagnostic});
+    out.rows.push_back(
+        {table.text(row, "h_over_b"), table.text(row, "sag_param"), table.text(row, "wf"),
+         table.text(row, "tmax"), ours >= 0.0 ? fmt::format("{:.5f}", ours) : "",
+         ours >= 0.0 ? fmt::format("{:+.5f}", ours - printed) : "",
+         fmt::format("{:+.5f}", sensitivity), beyond ? "yes" : "no",
+         wf == 0.0 ? fmt::format("{:.5f}", static_tension_check(problem)) : "", diagnostic});
   }
-  out.comments.push_back(fmt::format("summary:   {} of {} printed entries differ by more than the printed rounding",
-                                     flagged, table.rows.size()));
+  out.comments.push_back(
+      fmt::format("summary:   {} of {} printed entries differ by more than the printed rounding",
+                  flagged, table.rows.size()));
   write_csv_table(paths.comparisons + "/fe-gale-C2-comparison.csv", out);
   std::printf("%d of %zu printed entries beyond rounding\n", flagged, table.rows.size());
   return 0;

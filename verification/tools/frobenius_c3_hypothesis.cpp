@@ -40,7 +40,10 @@ int main() {
         for (int j = 0; j < 4; ++j) m[row][j] = v.value[j][d];
     }
     const std::vector<Real> c = solve_dense(m, {0, 0, Real(0.01), 0});
-    std::printf("wf = %.2f\n  xi       U        V      T     | V_G     T_G(sigma) T_G(|sigma|) | printed V, T\n", wf);
+    std::printf(
+        "wf = %.2f\n  xi       U        V      T     | V_G     T_G(sigma) T_G(|sigma|) | printed "
+        "V, T\n",
+        wf);
     int k = 0;
     for (double xi : {-1.383, -1.132, -0.880, -0.629}) {
       const double x = xi == -1.383 ? -eta_max : xi;
@@ -51,19 +54,24 @@ int main() {
       for (int j = 0; j < 4; ++j)
         for (int n = 0; n < 4; ++n) d[n] += c[j] * v.value[j][n];
       const double A = (3 + 4 * q) * C + wf * wf * std::pow(C, 4);
-      const double T = (double)((sigma / C) * d[0] - A * d[1] - 5 * sigma * C * C * C * d[2] - std::pow(C, 5) * d[3]);
+      const double T = (double)((sigma / C) * d[0] - A * d[1] - 5 * sigma * C * C * C * d[2] -
+                                std::pow(C, 5) * d[3]);
       // eta-derivatives F' , F'', F''' of U on this side (sigma < 0): invert the chain rule.
       const double F1 = (double)d[1] * C / sigma;
       const double F2 = ((double)d[2] - F1 / (C * C * C)) * C * C / q;
-      const double F3 = ((double)d[3] / sigma - 3 * F2 / std::pow(C, 4) + 3 * F1 / std::pow(C, 5)) * C * C * C / q;
+      const double F3 = ((double)d[3] / sigma - 3 * F2 / std::pow(C, 4) + 3 * F1 / std::pow(C, 5)) *
+                        C * C * C / q;
       const double as = std::abs(sigma);
       const double DUg = as / C * F1;
       const double D2Ug = q / (C * C) * F2 - F1 / (C * C * C);
-      const double D3Ug = as * (q / (C * C * C) * F3 - 3 * F2 / std::pow(C, 4) - 3 * F1 / std::pow(C, 5));
-      const double Tg1 = (sigma / C) * (double)d[0] - A * DUg - 5 * sigma * C * C * C * D2Ug - std::pow(C, 5) * D3Ug;
-      const double Tg2 = (as / C) * (double)d[0] - A * DUg - 5 * as * C * C * C * D2Ug - std::pow(C, 5) * D3Ug;
-      std::printf("  %6.3f %8.4f %8.4f %7.4f | %7.4f %8.4f %8.4f", xi, (double)d[0], (double)(C * C * d[1]), T,
-                  C * C * DUg, Tg1, Tg2);
+      const double D3Ug =
+          as * (q / (C * C * C) * F3 - 3 * F2 / std::pow(C, 4) - 3 * F1 / std::pow(C, 5));
+      const double Tg1 = (sigma / C) * (double)d[0] - A * DUg - 5 * sigma * C * C * C * D2Ug -
+                         std::pow(C, 5) * D3Ug;
+      const double Tg2 =
+          (as / C) * (double)d[0] - A * DUg - 5 * as * C * C * C * D2Ug - std::pow(C, 5) * D3Ug;
+      std::printf("  %6.3f %8.4f %8.4f %7.4f | %7.4f %8.4f %8.4f", xi, (double)d[0],
+                  (double)(C * C * d[1]), T, C * C * DUg, Tg1, Tg2);
       if (k < 3) std::printf("   | %6.3f %6.3f", printed_v[block][k], printed_t[block][k]);
       std::printf("\n");
       ++k;

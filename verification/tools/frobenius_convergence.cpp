@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Deep sag beyond Gale's thesis and convergence in the number of series terms.
-// Writes verification/comparisons/frobenius-deep-sag.csv (h/b = 0, xi2 = -xi1 in {4, 6, 8}: six in-plane
-// and six out-of-plane frequencies at tolerance 1e-12 and 1e-15, their difference, and an
+// Writes verification/comparisons/frobenius-deep-sag.csv (h/b = 0, xi2 = -xi1 in {4, 6, 8}: six
+// in-plane and six out-of-plane frequencies at tolerance 1e-12 and 1e-15, their difference, and an
 // independent Boost.Odeint direct integration in sigma) and verification/comparisons/
 // frobenius-convergence.csv (relative error of modes 1 and 6 vs the cap on terms per expansion,
 // for a shallow case, h/b = 0, sag 0.90, and a deep one, xi = +-8).
@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "catena/io/csv_table.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/frobenius_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "common/repository_paths.hpp"
 #include "common/sigma_ode.hpp"
 
@@ -72,11 +72,14 @@ double odeint_root(bool inplane, double s1, double s2, double guess) {
 int main(int argc, char** argv) {
   const catena_tools::RepositoryPaths paths = catena_tools::repository_paths(argc, argv);
   CsvTable deep;
-  deep.comments = {"Deep sag beyond Gale (1976): h/b = 0, xi2 = -xi1 (verification/tools/frobenius_convergence.cpp).",
-                   "omega = w / sqrt(g/a). tol12 / tol15: solver tolerance 1e-12 / 1e-15 (more terms);",
-                   "rel_diff = |tol12 - tol15| / tol15; odeint: direct RKF78 integration in sigma (rtol 1e-14), independent."};
-  deep.columns = {"xi2", "plane", "mode", "omega_tol12", "omega_tol15", "rel_diff", "error_estimate", "omega_odeint",
-                  "rel_diff_odeint"};
+  deep.comments = {
+      "Deep sag beyond Gale (1976): h/b = 0, xi2 = -xi1 "
+      "(verification/tools/frobenius_convergence.cpp).",
+      "omega = w / sqrt(g/a). tol12 / tol15: solver tolerance 1e-12 / 1e-15 (more terms);",
+      "rel_diff = |tol12 - tol15| / tol15; odeint: direct RKF78 integration in sigma (rtol 1e-14), "
+      "independent."};
+  deep.columns = {"xi2",      "plane",          "mode",         "omega_tol12",    "omega_tol15",
+                  "rel_diff", "error_estimate", "omega_odeint", "rel_diff_odeint"};
   for (double xi : {4.0, 6.0, 8.0}) {
     const Problem problem = make_gale_xi_problem(-xi, xi);
     const double s2 = gale_sigma_from_xi(xi);
@@ -89,20 +92,25 @@ int main(int argc, char** argv) {
         const double y = plane == 0 ? b.in[k] : b.out[k];
         const double e = plane == 0 ? a.in_err[k] : a.out_err[k];
         const double r = odeint_root(plane == 0, -s2, s2, y);
-        std::printf("  %s mode %d: %.13f  %.13f  diff %.1e  est %.1e  odeint %.13f (%.1e)\n", plane == 0 ? "in " : "out",
-                    k + 1, x, y, std::abs(x - y) / y, e, r, std::abs(r - y) / y);
-        deep.rows.push_back({fmt(xi, "%.0f"), plane == 0 ? "in" : "out", std::to_string(k + 1), fmt(x, "%.13f"),
-                             fmt(y, "%.13f"), fmt(std::abs(x - y) / y, "%.1e"), fmt(e, "%.1e"), fmt(r, "%.13f"),
-                             fmt(std::abs(r - y) / y, "%.1e")});
+        std::printf("  %s mode %d: %.13f  %.13f  diff %.1e  est %.1e  odeint %.13f (%.1e)\n",
+                    plane == 0 ? "in " : "out", k + 1, x, y, std::abs(x - y) / y, e, r,
+                    std::abs(r - y) / y);
+        deep.rows.push_back({fmt(xi, "%.0f"), plane == 0 ? "in" : "out", std::to_string(k + 1),
+                             fmt(x, "%.13f"), fmt(y, "%.13f"), fmt(std::abs(x - y) / y, "%.1e"),
+                             fmt(e, "%.1e"), fmt(r, "%.13f"), fmt(std::abs(r - y) / y, "%.1e")});
       }
   }
   write_csv_table(paths.comparisons + "/frobenius-deep-sag.csv", deep);
 
   CsvTable conv;
-  conv.comments = {"Convergence of the frobenius solver in the number of series terms (verification/tools/frobenius_convergence.cpp).",
-                   "max_terms caps every expansion (tolerance 1e-15 so the cap binds); error relative to max_terms = 2000.",
-                   "Expansion centres at step_ratio 0.5 of the radius: terms decay like 0.5^N."};
-  conv.columns = {"case", "max_terms", "in_mode1_error", "in_mode6_error", "out_mode1_error", "out_mode6_error"};
+  conv.comments = {
+      "Convergence of the frobenius solver in the number of series terms "
+      "(verification/tools/frobenius_convergence.cpp).",
+      "max_terms caps every expansion (tolerance 1e-15 so the cap binds); error relative to "
+      "max_terms = 2000.",
+      "Expansion centres at step_ratio 0.5 of the radius: terms decay like 0.5^N."};
+  conv.columns = {"case",           "max_terms",       "in_mode1_error",
+                  "in_mode6_error", "out_mode1_error", "out_mode6_error"};
   struct Case {
     std::string name;
     Problem problem;
@@ -110,15 +118,19 @@ int main(int argc, char** argv) {
   for (const Case& c : {Case{"shallow h/b=0 sag=0.90", make_gale_sag_problem(0.0, 0.90)},
                         Case{"deep xi=+-8", make_gale_xi_problem(-8.0, 8.0)}}) {
     const Run ref = solve(c.problem, 6, 1e-15, 2000);
-    std::printf("%s: max_terms, relative error of in-plane modes 1, 6 and out-of-plane modes 1, 6\n", c.name.c_str());
+    std::printf(
+        "%s: max_terms, relative error of in-plane modes 1, 6 and out-of-plane modes 1, 6\n",
+        c.name.c_str());
     for (int terms : {8, 10, 12, 16, 20, 25, 30, 40, 50, 60, 80}) {
       const Run r = solve(c.problem, 6, 1e-15, terms);
       auto err = [](const std::vector<double>& v, const std::vector<double>& w, int k) {
         return k < static_cast<int>(v.size()) ? std::abs(v[k] - w[k]) / w[k] : NAN;
       };
-      const double e1 = err(r.in, ref.in, 0), e6 = err(r.in, ref.in, 5), o1 = err(r.out, ref.out, 0), o6 = err(r.out, ref.out, 5);
+      const double e1 = err(r.in, ref.in, 0), e6 = err(r.in, ref.in, 5),
+                   o1 = err(r.out, ref.out, 0), o6 = err(r.out, ref.out, 5);
       std::printf("  %3d  %.1e  %.1e  %.1e  %.1e\n", terms, e1, e6, o1, o6);
-      conv.rows.push_back({c.name, std::to_string(terms), fmt(e1, "%.1e"), fmt(e6, "%.1e"), fmt(o1, "%.1e"), fmt(o6, "%.1e")});
+      conv.rows.push_back({c.name, std::to_string(terms), fmt(e1, "%.1e"), fmt(e6, "%.1e"),
+                           fmt(o1, "%.1e"), fmt(o6, "%.1e")});
     }
   }
   write_csv_table(paths.comparisons + "/frobenius-convergence.csv", conv);

@@ -6,8 +6,8 @@
 // common/sigma_ode.hpp (shared with the other frobenius tools).
 // Usage (built with -DCATENA_BUILD_TOOLS=ON):
 //        catena_frobenius_crosscheck <xi1> <xi2> <inplane 0/1> <modes> [rel_tol]
-//        catena_frobenius_crosscheck <xi1> <xi2> forced <wf>   (end xi2 driven tangentially by 0.01 a, xi1 fixed:
-//        prints max |T|/H over 2000 steps and T/H at both ends)
+//        catena_frobenius_crosscheck <xi1> <xi2> forced <wf>   (end xi2 driven tangentially by 0.01
+//        a, xi1 fixed: prints max |T|/H over 2000 steps and T/H at both ends)
 // Prints the Omega of each mode. Used for the report's evidence on Table B-3/B-4 disagreements and
 // for the deep-sag values beyond the thesis.
 #include <algorithm>
@@ -50,19 +50,24 @@ int print_forced_response(double s1, double s2, double wf) {
     s = next;
     smax = std::max(smax, std::abs(y[3]));
   }
-  std::printf("max|T| %.6f  T(xi1) %.6f  T(xi2) %.6f  u(xi2) %.6f w(xi2) %.2e\n", smax, beta, y[3], y[0], y[1]);
+  std::printf("max|T| %.6f  T(xi1) %.6f  T(xi2) %.6f  u(xi2) %.6f w(xi2) %.2e\n", smax, beta, y[3],
+              y[0], y[1]);
   return 0;
 }
 
 // Scans the normalised determinant from Omega = 0 in steps of 1/50 of the WKB mode spacing and
 // bisects every sign change: the mode index is counted, not assumed.
-int print_natural_frequencies(double s1, double s2, bool inplane, int modes, const SigmaOdeSettings& settings) {
+int print_natural_frequencies(
+    double s1, double s2, bool inplane, int modes, const SigmaOdeSettings& settings) {
   double integral = 0.0;
   for (int i = 0; i <= 400; ++i)
-    integral += (i == 0 || i == 400 ? 0.5 : 1.0) / std::sqrt(std::sqrt(1.0 + std::pow(s1 + (s2 - s1) * i / 400.0, 2)));
+    integral += (i == 0 || i == 400 ? 0.5 : 1.0) /
+                std::sqrt(std::sqrt(1.0 + std::pow(s1 + (s2 - s1) * i / 400.0, 2)));
   integral *= (s2 - s1) / 400.0;
   const double step = 0.02 * M_PI / integral;
-  auto det = [&](double omega) { return catena_tools::clamped_end_determinant(inplane, s1, s2, omega, settings, true); };
+  auto det = [&](double omega) {
+    return catena_tools::clamped_end_determinant(inplane, s1, s2, omega, settings, true);
+  };
   double x0 = 0.01 * step, f0 = det(x0);
   int found = 0;
   while (found < modes) {
@@ -71,7 +76,11 @@ int print_natural_frequencies(double s1, double s2, bool inplane, int modes, con
       double lo = x0, hi = x1, flo = f0;
       for (int it = 0; it < 60; ++it) {
         const double mid = 0.5 * (lo + hi), fm = det(mid);
-        if ((fm < 0) == (flo < 0)) { lo = mid; flo = fm; } else hi = mid;
+        if ((fm < 0) == (flo < 0)) {
+          lo = mid;
+          flo = fm;
+        } else
+          hi = mid;
       }
       std::printf("%d %.12f\n", ++found, 0.5 * (lo + hi));
     }
@@ -85,7 +94,8 @@ int print_natural_frequencies(double s1, double s2, bool inplane, int modes, con
 
 int main(int argc, char** argv) {
   if (argc < 5) {
-    std::fprintf(stderr, "usage: %s xi1 xi2 inplane modes [rel_tol]\n       %s xi1 xi2 forced wf\n", argv[0], argv[0]);
+    std::fprintf(stderr, "usage: %s xi1 xi2 inplane modes [rel_tol]\n       %s xi1 xi2 forced wf\n",
+                 argv[0], argv[0]);
     return 2;
   }
   const double s1 = catena::gale_sigma_from_xi(std::atof(argv[1]));
@@ -93,5 +103,6 @@ int main(int argc, char** argv) {
   if (std::string(argv[3]) == "forced") return print_forced_response(s1, s2, std::atof(argv[4]));
   const bool inplane = std::atoi(argv[3]) != 0;
   const int modes = std::atoi(argv[4]);
-  return print_natural_frequencies(s1, s2, inplane, modes, settings_for(argc > 5 ? std::atof(argv[5]) : 1e-12));
+  return print_natural_frequencies(s1, s2, inplane, modes,
+                                   settings_for(argc > 5 ? std::atof(argv[5]) : 1e-12));
 }

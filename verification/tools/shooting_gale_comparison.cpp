@@ -19,8 +19,8 @@
 #include <string>
 
 #include "catena/io/csv_table.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "common/repository_paths.hpp"
 
 namespace {
@@ -75,7 +75,8 @@ int main(int argc, char** argv) {
       "published w/sqrt(g/a), ours from the geometry, ours from the printed xi, difference "
       "(published - ours geometry), beyond_rounding (|difference| > 0.005), our relative error "
       "estimate",
-      "generator: verification/tools/shooting_gale_comparison.cpp (catena_shooting_gale_comparison)",
+      "generator: verification/tools/shooting_gale_comparison.cpp "
+      "(catena_shooting_gale_comparison)",
   };
   out.columns = {"table",
                  "h_over_b",

@@ -19,8 +19,8 @@
 #include <string>
 
 #include "catena/io/csv_table.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "common/repository_paths.hpp"
 
 int main(int argc, char** argv) {
@@ -54,7 +54,8 @@ int main(int argc, char** argv) {
       "cross-check cases",
       "columns:   case, plane (in/out), mode, omega [rad/s], kL/pi [-], relative error estimate, "
       "count (eigenvalues proved below the top bracket of the plane)",
-      "generator: verification/tools/shooting_reference_cases.cpp (catena_shooting_reference_cases)",
+      "generator: verification/tools/shooting_reference_cases.cpp "
+      "(catena_shooting_reference_cases)",
   };
   out.columns = {"case",        "plane",       "mode",
                  "omega_rad_s", "k_l_over_pi", "relative_error_estimate",
@@ -95,7 +96,8 @@ int main(int argc, char** argv) {
       "method:    shooting solver, rtol 1e-12, make_taut_inclined_problem(eps, phi, lambda2, 1)",
       "columns:   eps, phi_deg, lambda2, mode, published exact and approx kL/pi, shooting kL/pi, "
       "exact - shooting, approx - shooting",
-      "generator: verification/tools/shooting_reference_cases.cpp (catena_shooting_reference_cases)",
+      "generator: verification/tools/shooting_reference_cases.cpp "
+      "(catena_shooting_reference_cases)",
   };
   comparison.columns = {"eps",
                         "phi_deg",

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The exceptions Catena throws (docs/contributing/architecture.md, "Errors"). Only bad input throws, before
-/// any work is done: InvalidInput for a value that violates a documented constraint (including an
-/// output path that cannot be written), ParseError for a file that cannot be read or parsed.
-/// Numerical outcomes are never exceptions: they are statuses (SolverSummary::termination,
+/// The exceptions Catena throws (docs/contributing/architecture.md, "Errors"). Only bad input
+/// throws, before any work is done: InvalidInput for a value that violates a documented constraint
+/// (including an output path that cannot be written), ParseError for a file that cannot be read or
+/// parsed. Numerical outcomes are never exceptions: they are statuses (SolverSummary::termination,
 /// StaticSolution::converged). Broken internal invariants are assert()s.
 
 #include <stdexcept>

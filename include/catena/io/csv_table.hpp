@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Reading and writing the small CSV tables of verification/reference/published/ and verification/comparisons/: '#' lines are provenance
-/// comments, the first other line is the header, empty cells are missing values. A cell in double
-/// quotes may hold commas ("" is a quote inside it); the writer quotes such cells.
+/// Reading and writing the small CSV tables of verification/reference/published/ and
+/// verification/comparisons/: '#' lines are provenance comments, the first other line is the
+/// header, empty cells are missing values. A cell in double quotes may hold commas ("" is a quote
+/// inside it); the writer quotes such cells.
 
 #include <filesystem>
 #include <optional>

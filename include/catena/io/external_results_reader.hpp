@@ -37,7 +37,9 @@ std::vector<ExternalMode> read_external_results(const std::filesystem::path& res
                                                 const std::filesystem::path& shapes = {});
 
 /// The JSON form from text already in memory (e.g. built by the Python module from a list of
-/// dicts): the same checks and messages as a .json file, with `origin` where the file name would be.
-std::vector<ExternalMode> parse_external_results_json(const std::string& text, const std::string& origin);
+/// dicts): the same checks and messages as a .json file, with `origin` where the file name would
+/// be.
+std::vector<ExternalMode> parse_external_results_json(const std::string& text,
+                                                      const std::string& origin);
 
 }  // namespace catena

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// How catena touches the file system, in one place (docs/reference/scene-format.md, "Limits"): input files
-/// are read only when they are regular files of bounded size; output files are written to a
-/// temporary file in the same directory and renamed over the target, so a reader never sees a
+/// How catena touches the file system, in one place (docs/reference/scene-format.md, "Limits"):
+/// input files are read only when they are regular files of bounded size; output files are written
+/// to a temporary file in the same directory and renamed over the target, so a reader never sees a
 /// 0-byte or half-written file; output locations can be checked before any work is done. Every
 /// failure is an Error naming the path (escaped when it is not UTF-8) and the reason.
 
@@ -24,7 +24,8 @@ std::string path_text(const std::filesystem::path& path);
 /// The whole of a regular file of at most `max_bytes`. ParseError "<path>: cannot read <what>:
 /// <reason>" when it is missing, a dangling symlink or a symlink loop, not a regular file (a
 /// FIFO, a device, a directory), too large, or unreadable.
-std::string read_input_file(const std::filesystem::path& path, const std::string& what,
+std::string read_input_file(const std::filesystem::path& path,
+                            const std::string& what,
                             std::uintmax_t max_bytes = kMaxInputFileBytes);
 
 /// Writes `text` to `path` atomically: into a temporary file next to it, then renamed over it

@@ -25,12 +25,14 @@ namespace catena {
 /// The whole document for `results` (with the mutation score when `mutation` is given), with
 /// `indent` spaces per level and one line per record (a check, a mode, a forced response); -1:
 /// compact, on one line.
-std::string results_to_json(const std::vector<SceneResult>& results, int indent = 2,
+std::string results_to_json(const std::vector<SceneResult>& results,
+                            int indent = 2,
                             const MutationRun* mutation = nullptr);
 
 /// Writes results_to_json to `path` atomically (write_file_atomically: parent directories created,
 /// never a 0-byte or half file). Throws InvalidInput naming the path when it cannot be written.
-void write_results_json(const std::filesystem::path& path, const std::vector<SceneResult>& results,
+void write_results_json(const std::filesystem::path& path,
+                        const std::vector<SceneResult>& results,
                         const MutationRun* mutation = nullptr);
 
 }  // namespace catena

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Reading a MoorDyn input file (v1 and v2 layouts; docs/how-to/moordyn-import.md) into plain data, for
-/// `catena import moordyn`. The file is a sequence of sections introduced by header lines that
+/// Reading a MoorDyn input file (v1 and v2 layouts; docs/how-to/moordyn-import.md) into plain data,
+/// for `catena import moordyn`. The file is a sequence of sections introduced by header lines that
 /// start with "---" and name the section (case-insensitive, any text around it): LINE TYPES or
 /// LINE DICTIONARY, POINTS (or POINT LIST, POINT PROPERTIES, CONNECTION PROPERTIES, NODE
 /// PROPERTIES), LINES (or LINE LIST, LINE PROPERTIES), OPTIONS (or SOLVER OPTIONS); ROD TYPES,
@@ -22,10 +22,10 @@ namespace catena {
 
 struct MoorDynLineType {
   std::string name;
-  double diameter_m = 0.0;        ///< volume-equivalent diameter
-  double mass_kg_per_m = 0.0;     ///< in air
-  std::optional<double> axial_stiffness_n;  ///< absent when EA is not a number (a curve, Syrope)
-  std::string axial_stiffness_text;         ///< EA as written
+  double diameter_m = 0.0;                     ///< volume-equivalent diameter
+  double mass_kg_per_m = 0.0;                  ///< in air
+  std::optional<double> axial_stiffness_n;     ///< absent when EA is not a number (a curve, Syrope)
+  std::string axial_stiffness_text;            ///< EA as written
   double normal_added_mass_coefficient = 0.0;  ///< Can (v1) or Ca (v2)
   int file_line = 0;
 };

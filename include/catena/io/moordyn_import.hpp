@@ -2,8 +2,9 @@
 #pragma once
 /// \file
 /// Converting a MoorDyn deck (io/moordyn_deck.hpp) into Catena scenes, one per line or per chain
-/// of lines in series joined at free points (docs/how-to/moordyn-import.md). Each line becomes a vertical
-/// plane through its two held ends (end A the lower); MoorDyn's quantities become Catena's:
+/// of lines in series joined at free points (docs/how-to/moordyn-import.md). Each line becomes a
+/// vertical plane through its two held ends (end A the lower); MoorDyn's quantities become
+/// Catena's:
 ///   weight     = (MassDen - rho_w pi/4 Diam^2) g         [N/m]
 ///   added_mass = Ca rho_w pi/4 Diam^2                     [kg/m]
 ///   point weight = (M - rho_w V) g, point added mass = Ca rho_w V

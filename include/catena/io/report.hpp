@@ -18,7 +18,8 @@ struct ReportOptions {
   /// Directory for report.md, report.html, data/*.csv and figures/*.png.
   std::filesystem::path out_dir = "build/report";
   /// The data dir: figures.py, results_keys.py, reference/published/*.csv and
-  /// the copy of benchmarks/results/time-vs-error.csv. Empty: found from the executable (see the file comment).
+  /// the copy of benchmarks/results/time-vs-error.csv. Empty: found from the executable (see the
+  /// file comment).
   std::filesystem::path data_dir;
   /// Directory of figures.py when it is not the data dir's (e.g. a source tree's
   /// verification/tools). Empty: the data dir.

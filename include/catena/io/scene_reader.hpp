@@ -32,8 +32,8 @@
 namespace catena {
 
 /// Reads one scene file. Returns one Scene, or one per value for a sweep. The file must be a
-/// regular file of at most kMaxInputFileBytes, nested at most 64 levels (docs/reference/scene-format.md,
-/// "Limits"); otherwise a ParseError naming the path.
+/// regular file of at most kMaxInputFileBytes, nested at most 64 levels
+/// (docs/reference/scene-format.md, "Limits"); otherwise a ParseError naming the path.
 std::vector<Scene> read_scene_file(const std::filesystem::path& path);
 
 /// Parses scene text (for tests); `origin` names it in messages.

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The cable and its supports in SI units (docs/explanation/physics.md), and the Problem every solver answers.
+/// The cable and its supports in SI units (docs/explanation/physics.md), and the Problem every
+/// solver answers.
 
 #include <optional>
 #include <string>
@@ -13,9 +14,9 @@
 namespace catena {
 
 /// Bounds on the magnitude of every cable and support value in SI units (L, W0, EA, m, ma, the
-/// support coordinates; docs/reference/scene-format.md, "Limits"). Outside them the statics overflow or
-/// underflow: the tension scales as W0 L and Newton's Jacobian as its square and fourth power.
-/// EA may also be +inf (inextensible); ma and coordinates may also be 0.
+/// support coordinates; docs/reference/scene-format.md, "Limits"). Outside them the statics
+/// overflow or underflow: the tension scales as W0 L and Newton's Jacobian as its square and fourth
+/// power. EA may also be +inf (inextensible); ma and coordinates may also be 0.
 inline constexpr double kMinCableMagnitude = 1e-15;
 inline constexpr double kMaxCableMagnitude = 1e15;
 /// EA may be larger: a taut string of small static strain needs EA up to ~1e20 N (Grinfogel's
@@ -88,9 +89,9 @@ struct Problem {
   /// determined by the chord only to about (rounding / static strain), e.g. 1e-2 relative for
   /// eps = 1e-6, so a tension-specified problem must not be re-solved from its geometry.
   std::optional<EndForces> prescribed_forces;
-  /// A flat seabed under the line (docs/explanation/physics.md, "Seabed contact"): end A lies on it, end B
-  /// above it. The statics then lays a grounded length from A on it where the line would go
-  /// below it (catena/statics/seabed_statics.hpp).
+  /// A flat seabed under the line (docs/explanation/physics.md, "Seabed contact"): end A lies on
+  /// it, end B above it. The statics then lays a grounded length from A on it where the line would
+  /// go below it (catena/statics/seabed_statics.hpp).
   std::optional<Seabed> seabed;
 
   /// True for the uniform `cable` (line.segments empty).

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// A general line (docs/explanation/physics.md, "General lines"): an ordered list of segments from end A to
-/// end B, each with its own section, plus point attachments (clump weights, buoys, anchor heads)
-/// at given unstretched arc lengths from A.
+/// A general line (docs/explanation/physics.md, "General lines"): an ordered list of segments from
+/// end A to end B, each with its own section, plus point attachments (clump weights, buoys, anchor
+/// heads) at given unstretched arc lengths from A.
 
 #include <optional>
 #include <vector>
@@ -49,9 +49,13 @@ struct PointAttachment {
   std::optional<double> added_mass_normal_kg;
   std::optional<double> added_mass_outofplane_kg;
 
-  double tangential_added_mass_kg() const { return added_mass_tangential_kg.value_or(added_mass_kg); }
+  double tangential_added_mass_kg() const {
+    return added_mass_tangential_kg.value_or(added_mass_kg);
+  }
   double normal_added_mass_kg() const { return added_mass_normal_kg.value_or(added_mass_kg); }
-  double outofplane_added_mass_kg() const { return added_mass_outofplane_kg.value_or(added_mass_kg); }
+  double outofplane_added_mass_kg() const {
+    return added_mass_outofplane_kg.value_or(added_mass_kg);
+  }
 };
 
 /// Segments in order from A to B and point attachments in order of s.

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// A flat horizontal seabed under a line (docs/explanation/physics.md, "Seabed contact"): its height, the
-/// Coulomb friction of the statics and the foundation stiffnesses of the linear dynamics.
+/// A flat horizontal seabed under a line (docs/explanation/physics.md, "Seabed contact"): its
+/// height, the Coulomb friction of the statics and the foundation stiffnesses of the linear
+/// dynamics.
 
 namespace catena {
 

@@ -3,9 +3,9 @@
 /// \file
 /// The `airy` solver: Triantafyllou's Airy-function solution of the linear dynamics of a taut
 /// inclined cable, the 'exact' reference of Grinfogel (1984, chapter 1 and §2.1.2;
-/// docs/reference/references.md), described in docs/explanation/methods/airy.md. It regenerates the paper's 'exact'
-/// column so that it can be compared with the truly exact `shooting` solver: it is itself an
-/// asymptotic model (small eps), only a more complete one than eq. (21).
+/// docs/reference/references.md), described in docs/explanation/methods/airy.md. It regenerates the
+/// paper's 'exact' column so that it can be compared with the truly exact `shooting` solver: it is
+/// itself an asymptotic model (small eps), only a more complete one than eq. (21).
 ///
 /// Model (re-derived from the paper's eqs. 1–5; the printed eqs. 12–13 swap the labels u and w).
 /// With u along the static tangent t (s increasing from support a), w along n = t rotated

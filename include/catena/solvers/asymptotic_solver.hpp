@@ -2,8 +2,8 @@
 #pragma once
 /// \file
 /// The `asymptotic` solver: Grinfogel's perturbation solution for a taut, inclined, elastic cable
-/// (L. Grinfogel, "Dynamics of elastic taut inclined cables", MIT M.S. thesis, 1984; docs/reference/references.md),
-/// docs/explanation/methods/asymptotic.md.
+/// (L. Grinfogel, "Dynamics of elastic taut inclined cables", MIT M.S. thesis, 1984;
+/// docs/reference/references.md), docs/explanation/methods/asymptotic.md.
 ///
 /// Notation (the paper's): \f$\varepsilon = W_0 L / T_0\f$, \f$\phi_a\f$ the chord inclination,
 /// \f$\lambda^2 = EA\,\varepsilon^2\cos^2\phi_a / T_0\f$, \f$h = m/M\f$,
@@ -30,8 +30,8 @@
 ///
 /// Out-of-plane frequencies: the WKB string condition
 /// \f$\omega \int_0^L \sqrt{M(1+e(s))/T(s)}\,ds = n\pi\f$ with the shared statics T(s), e(s)
-/// (the (1+e) factor is the model's exact coefficient T/(1+e) of docs/explanation/physics.md; it is 1 for an
-/// inextensible cable), integrated by Gauss–Legendre quadrature.
+/// (the (1+e) factor is the model's exact coefficient T/(1+e) of docs/explanation/physics.md; it is
+/// 1 for an inextensible cable), integrated by Gauss–Legendre quadrature.
 ///
 /// Mode shapes (when asked): transverse w from eq. (34) (uniformly valid in lambda^2; with the
 /// second-order near-cross-over terms multiplied by \f$\varepsilon^2\sin^2\phi_a\f$ as in eqs.

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The `fe` solver (docs/explanation/methods/fe.md): the cable as a chain of N two-node axial bar elements with
-/// lumped nodal masses, linearised about the chain's own exact static equilibrium, and solved as
-/// the sparse generalized eigenproblem K phi = omega^2 Mmat phi.
+/// The `fe` solver (docs/explanation/methods/fe.md): the cable as a chain of N two-node axial bar
+/// elements with lumped nodal masses, linearised about the chain's own exact static equilibrium,
+/// and solved as the sparse generalized eigenproblem K phi = omega^2 Mmat phi.
 ///
 /// Discrete statics. The unstretched length L is cut into N elements of length l0 = L/N; the weight
 /// W0 l0 of each element is lumped half on each of its two nodes, so interior nodes carry W0 l0 and
@@ -21,9 +21,9 @@
 /// discretisation error that Richardson extrapolation removes.
 ///
 /// Dynamics. Element tangent stiffness k_j = (EA/l0) t_j t_j^T + (T_j/l_j)(I - t_j t_j^T)
-/// (docs/explanation/physics.md, A = EA t t^T + T/(1+e) n n^T, integrated over one element); lumped node masses
-/// l0 (m t_i t_i^T + M n_i n_i^T), with the node tangent t_i the bisector of the two adjacent
-/// element tangents; the fixed end nodes are removed. In plane: 2 (N-1) unknowns, block
+/// (docs/explanation/physics.md, A = EA t t^T + T/(1+e) n n^T, integrated over one element); lumped
+/// node masses l0 (m t_i t_i^T + M n_i n_i^T), with the node tangent t_i the bisector of the two
+/// adjacent element tangents; the fixed end nodes are removed. In plane: 2 (N-1) unknowns, block
 /// tridiagonal. Out of plane: k_j = T_j / l_j, node mass M l0: N-1 unknowns, tridiagonal.
 ///
 /// Eigenpairs. With the lumped mass factored blockwise, Mmat = L L^T (2x2 blocks), the problem is
@@ -44,13 +44,13 @@
 /// modes returned (ModalResult::proved_count_below_top), on every mesh.
 ///
 /// Error. Lumped-mass bar chains converge as O(l0^2). With Richardson extrapolation (default) the
-/// problem is solved with N and 2N elements and omega = omega_2N + (omega_2N - omega_N)/3 (order 4);
-/// the error estimate of each frequency is |omega - omega_2N|, the size of the correction: an upper
-/// estimate, since the extrapolated value is much closer than the unextrapolated one (for the taut
-/// string, estimate 1e-5 for an actual error below 1e-9 at N = 1000, mode 10). Modes are paired
-/// across meshes (and penalties) by their shapes (largest MAC on the common nodes), not by rank:
-/// near a cross-over two close modes may swap order between meshes. The extrapolated modes are
-/// reported lowest first.
+/// problem is solved with N and 2N elements and omega = omega_2N + (omega_2N - omega_N)/3 (order
+/// 4); the error estimate of each frequency is |omega - omega_2N|, the size of the correction: an
+/// upper estimate, since the extrapolated value is much closer than the unextrapolated one (for the
+/// taut string, estimate 1e-5 for an actual error below 1e-9 at N = 1000, mode 10). Modes are
+/// paired across meshes (and penalties) by their shapes (largest MAC on the common nodes), not by
+/// rank: near a cross-over two close modes may swap order between meshes. The extrapolated modes
+/// are reported lowest first.
 ///
 /// Inextensible cables (EA = inf). A finite penalty EA = H / kappa is used, with two values
 /// kappa and 2 kappa and a linear extrapolation to kappa = 0 (the frequencies depend on the
@@ -88,11 +88,13 @@
 namespace catena {
 
 /// Options of the `fe` solver. Scene knobs: `elements`, `richardson`, `kappa`, `observed_order`,
-/// `tolerance`, `max_elements`; `eigen_tolerance` and `max_restarts` are set through this struct only.
+/// `tolerance`, `max_elements`; `eigen_tolerance` and `max_restarts` are set through this struct
+/// only.
 struct FeSolverOptions {
   /// Number of bar elements N (the coarse mesh when Richardson is on). In [2, 5e7]; the coarsest
-  /// mesh used resolves at most N / 2 modes per plane (docs/explanation/methods/fe.md), more is InvalidInput.
-  /// The discretisation error of mode n is about (n pi / 2N)^2 / 6 relative without Richardson.
+  /// mesh used resolves at most N / 2 modes per plane (docs/explanation/methods/fe.md), more is
+  /// InvalidInput. The discretisation error of mode n is about (n pi / 2N)^2 / 6 relative without
+  /// Richardson.
   int elements = 400;
   /// Solve with N and 2N elements and extrapolate (order 2 -> 4). Without it, the error estimate
   /// needs a second mesh anyway, so N/2 is solved as well (when N >= 4) for the estimate only.
@@ -108,8 +110,9 @@ struct FeSolverOptions {
   double kappa = 1e-6;
   /// Accuracy target of each frequency [-], in [0, 1]; 0: none. When a mode's error estimate
   /// exceeds it, fe solves again on a finer mesh (N predicted from the estimates' order, at most
-  /// max_elements; docs/explanation/methods/fe.md, "Meeting a tolerance"); a mode that still exceeds it is
-  /// listed in the plane's SolverSummary::missed_modes and the plane is NoConvergence.
+  /// max_elements; docs/explanation/methods/fe.md, "Meeting a tolerance"); a mode that still
+  /// exceeds it is listed in the plane's SolverSummary::missed_modes and the plane is
+  /// NoConvergence.
   double tolerance = 0.0;
   /// The largest N a tolerance may refine to, in [2, 5e7]. At or below `elements`: no refinement.
   int max_elements = 51200;

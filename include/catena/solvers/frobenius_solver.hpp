@@ -1,16 +1,17 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The `frobenius` solver (docs/explanation/methods/frobenius.md): Gale's power-series solution of the
-/// inextensible catenary (Gale 1976, sec. II.4; docs/reference/references.md), extended.
+/// The `frobenius` solver (docs/explanation/methods/frobenius.md): Gale's power-series solution of
+/// the inextensible catenary (Gale 1976, sec. II.4; docs/reference/references.md), extended.
 ///
 /// Model: EA = inf (inextensible), so the tangential strain of the motion vanishes. In Gale's
 /// variables (a = H/W0, sigma = (s - s_apex)/a, xi = sign(sigma)(sqrt(1+sigma^2) - 1),
 /// Omega = w / sqrt(g/a), g = W0/m, mu = M/m) the tangential displacement U obeys the fourth-order
 /// eq. 2.42 in |xi| (exponents 0, 1/2, 1, 3/2 at the apex xi = 0), the normal displacement is
 /// V = (1+sigma^2) dU/dsigma (2.36) and the dynamic tension T (2.37); out of plane the displacement
-/// obeys eq. 2.44 (exponents 0, 1/2). The equations were re-derived from the model of docs/explanation/physics.md (see
-/// verification/tools/frobenius_derive_odes.py), not copied from the OCR.
+/// obeys eq. 2.44 (exponents 0, 1/2). The equations were re-derived from the model of
+/// docs/explanation/physics.md (see verification/tools/frobenius_derive_odes.py), not copied from
+/// the OCR.
 ///
 /// Method: a general Frobenius engine builds the series from the coefficient polynomials; the
 /// expansion about the apex is continued by Taylor expansions about ordinary points, matched where
@@ -74,11 +75,14 @@ struct FrobeniusSolverOptions {
 /// Solves `request` for an inextensible catenary. Returns NotApplicable (with the reason) for an
 /// extensible cable or one without an apex parameterization (H = 0). Never throws for numerical
 /// trouble (it is a status in the summaries); throws InvalidInput for bad options or request.
-SolverOutput solve_frobenius(const Problem& problem, const StaticSolution& statics,
-                             const DimensionlessGroups& groups, const SolveRequest& request,
+SolverOutput solve_frobenius(const Problem& problem,
+                             const StaticSolution& statics,
+                             const DimensionlessGroups& groups,
+                             const SolveRequest& request,
                              const FrobeniusSolverOptions& options = {});
 
 /// nullopt when the solver applies to `problem`; otherwise why not.
-std::optional<std::string> frobenius_not_applicable_reason(const Problem& problem, const DimensionlessGroups& groups);
+std::optional<std::string> frobenius_not_applicable_reason(const Problem& problem,
+                                                           const DimensionlessGroups& groups);
 
 }  // namespace catena

@@ -7,8 +7,8 @@
 /// directly): in-plane shapes are scaled so that max_j |w(s_j)| = 1 and w is positive where |w| is
 /// largest (the first such station); a mode whose normal motion is negligible (max|w| <= 1e-6
 /// max|u|, e.g. the axial modes of a straight bar) is scaled by u instead and `normalised_by` says
-/// "u". Out-of-plane shapes are scaled the same way by v. Dynamic tension is given for that scaling,
-/// i.e. per unit maximum normal amplitude [N/m of displacement].
+/// "u". Out-of-plane shapes are scaled the same way by v. Dynamic tension is given for that
+/// scaling, i.e. per unit maximum normal amplitude [N/m of displacement].
 
 #include <optional>
 #include <string>
@@ -72,14 +72,14 @@ struct ModalResult {
 /// Response to one forcing frequency.
 ///
 /// Resonance is decided by each solver relative to its own accuracy at that frequency, never by a
-/// fixed threshold on a determinant (docs/explanation/methods/<solver>.md, "Forced response"): a forcing
-/// frequency is at resonance (`at_resonance`, a diagnostic and no fields) only when it lies within
-/// the error estimate of a natural frequency the solver computed, |omega - omega_n| <= c omega_n
-/// estimate_n, or when the solver's boundary determinant (or pivot), scaled by its condition, is
-/// at the level of the solver's own error in it. A finite response that the nearness of a natural
-/// frequency amplifies is flagged `near_resonance` (and its error estimate grows). A frequency the
-/// method cannot resolve (e.g. too high for its series or mesh) is declined with a diagnostic that
-/// says so, with at_resonance false.
+/// fixed threshold on a determinant (docs/explanation/methods/<solver>.md, "Forced response"): a
+/// forcing frequency is at resonance (`at_resonance`, a diagnostic and no fields) only when it lies
+/// within the error estimate of a natural frequency the solver computed, |omega - omega_n| <= c
+/// omega_n estimate_n, or when the solver's boundary determinant (or pivot), scaled by its
+/// condition, is at the level of the solver's own error in it. A finite response that the nearness
+/// of a natural frequency amplifies is flagged `near_resonance` (and its error estimate grows). A
+/// frequency the method cannot resolve (e.g. too high for its series or mesh) is declined with a
+/// diagnostic that says so, with at_resonance false.
 struct ForcedResponse {
   double omega_rad_s = 0.0;
   /// Stations [m] and the displacement amplitude there [m] (u, w in plane; v out of plane).

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The `shooting` solver (docs/explanation/methods/shooting.md): the exact linear boundary-value solution of
-/// the cable equations, integrated along s by an explicit Runge-Kutta 6(5) pair (or SUNDIALS
-/// CVODE: knob `method`). It is the project's accuracy reference.
+/// The `shooting` solver (docs/explanation/methods/shooting.md): the exact linear boundary-value
+/// solution of the cable equations, integrated along s by an explicit Runge-Kutta 6(5) pair (or
+/// SUNDIALS CVODE: knob `method`). It is the project's accuracy reference.
 ///
-/// Model (docs/explanation/physics.md). About the static elastic catenary, harmonic motion D = Phi(s) e^{i w t}
-/// satisfies (A Phi')' + w^2 Mmat Phi = 0 with A = EA t t^T + (T/(1+e)) n n^T and
+/// Model (docs/explanation/physics.md). About the static elastic catenary, harmonic motion D =
+/// Phi(s) e^{i w t} satisfies (A Phi')' + w^2 Mmat Phi = 0 with A = EA t t^T + (T/(1+e)) n n^T and
 /// Mmat = m t t^T + M n n^T; out of plane ((T/(1+e)) v')' + w^2 M v = 0. The solver integrates the
 /// first-order form Phi' = A^{-1} F, F' = -w^2 Mmat Phi, with
 /// A^{-1} = t t^T / EA + ((1+e)/T) n n^T, which is finite for EA = inf: an inextensible cable is
@@ -38,13 +38,14 @@
 ///
 /// Loss of independence. The in-plane pair can grow at different exponential rates (the "chain"
 /// solutions of curved inextensible cables at high frequency, large lambda^2). After every
-/// integration step the Gram matrix of the pair is checked; when its condition number exceeds `max_condition`
-/// or its scale leaves [1e-6, 1e6], the pair is replaced by the Q of its QR factorisation with
-/// positive diagonal R (det R > 0, so the sign of det Phi and the phase are unchanged) and the
-/// integration continues from it; the R factors map the final null vector back onto every segment. A compound-matrix
-/// (exterior-product) formulation was not used because the shapes and the forced response need
-/// the solutions themselves. The variables are also rescaled symplectically (Phi by kappa, F by
-/// 1/kappa, kappa^2 = max(Omega, 1)) so that the phase turns at a nearly uniform rate.
+/// integration step the Gram matrix of the pair is checked; when its condition number exceeds
+/// `max_condition` or its scale leaves [1e-6, 1e6], the pair is replaced by the Q of its QR
+/// factorisation with positive diagonal R (det R > 0, so the sign of det Phi and the phase are
+/// unchanged) and the integration continues from it; the R factors map the final null vector back
+/// onto every segment. A compound-matrix (exterior-product) formulation was not used because the
+/// shapes and the forced response need the solutions themselves. The variables are also rescaled
+/// symplectically (Phi by kappa, F by 1/kappa, kappa^2 = max(Omega, 1)) so that the phase turns at
+/// a nearly uniform rate.
 ///
 /// Straight inextensible cable (vertical, H = 0, EA = inf): the axial direction is rigid and
 /// det Phi(L) vanishes for every w; the in-plane modes are then the transverse string modes
@@ -52,11 +53,12 @@
 /// statically indeterminate); a forced axial displacement has no finite response (diagnostic).
 ///
 /// Mode shapes: the null vector of Phi(L) combined with the solutions recorded at the request's
-/// stations (one step of the method from the step's start, or CVODE's dense output), u = Phi . t, w = Phi . n, tau = t . F, normalised and
-/// integrated with the shared mode_tools. Forced response: the principal solutions from the fixed
-/// end, combined to meet the prescribed displacement at the driven end (one 2x2 solve per
-/// frequency); a frequency where det Phi(L) is at the integration-noise level is reported as
-/// resonance, one with |det| < 1e-3 gets a near-resonance warning.
+/// stations (one step of the method from the step's start, or CVODE's dense output), u = Phi . t, w
+/// = Phi . n, tau = t . F, normalised and integrated with the shared mode_tools. Forced response:
+/// the principal solutions from the fixed end, combined to meet the prescribed displacement at the
+/// driven end (one 2x2 solve per frequency); a frequency where det Phi(L) is at the
+/// integration-noise level is reported as resonance, one with |det| < 1e-3 gets a near-resonance
+/// warning.
 ///
 /// Error estimate per frequency: half the final root bracket plus the change of the root when the
 /// end determinant is re-evaluated at 10x tighter tolerances (one extra shot per mode, one secant
@@ -64,7 +66,8 @@
 /// from rtol = 1e-4 to 1e-12, and the estimate covers it (see the convergence test).
 ///
 /// References: Atkinson, Discrete and Continuous Boundary Problems (1964), ch. 10 (oscillation
-/// of Hamiltonian systems); Irvine, Cable Structures (1981); Gale (1976) (docs/reference/references.md).
+/// of Hamiltonian systems); Irvine, Cable Structures (1981); Gale (1976)
+/// (docs/reference/references.md).
 
 #include <string>
 
@@ -90,8 +93,8 @@ std::string to_string(ShootingMethod method);
 struct ShootingSolverOptions {
   /// Relative tolerance of the integration [-] (knob `rtol`). In [1e-14, 1e-2].
   double relative_tolerance = 1e-10;
-  /// Absolute tolerance of the integration on the scaled state (displacements in units of L, forces in units
-  /// of the largest end tension; the basis has norm ~1) [-] (knob `atol`). 0 means
+  /// Absolute tolerance of the integration on the scaled state (displacements in units of L, forces
+  /// in units of the largest end tension; the basis has norm ~1) [-] (knob `atol`). 0 means
   /// relative_tolerance / 100. In [0, 1e-2].
   double absolute_tolerance = 0.0;
   /// Relative width of the final root bracket [-] (knob `root_tolerance`). 0 means

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// What a scene asks the solvers to compute (docs/reference/scene-format.md, `[request]`). Only what is asked is computed.
+/// What a scene asks the solvers to compute (docs/reference/scene-format.md, `[request]`). Only
+/// what is asked is computed.
 
 #include <cstddef>
 #include <optional>
@@ -18,10 +19,10 @@ std::string to_string(CableEnd end);
 
 /// Direction of the prescribed end displacement.
 enum class ForcingDirection {
-  Tangential,  ///< along the static tangent at the driven end
-  Normal,      ///< along the in-plane normal at the driven end
-  GivenVector, ///< a given in-plane vector (x, z), normalised
-  OutOfPlane   ///< normal to the plane of the supports
+  Tangential,   ///< along the static tangent at the driven end
+  Normal,       ///< along the in-plane normal at the driven end
+  GivenVector,  ///< a given in-plane vector (x, z), normalised
+  OutOfPlane    ///< normal to the plane of the supports
 };
 std::string to_string(ForcingDirection direction);
 
@@ -43,8 +44,8 @@ struct ForcedRequest {
   Vec2 unit_vector() const;
 };
 
-/// Most modes a request may ask for in each plane (docs/reference/scene-format.md, "Limits on work"): at
-/// the measured cost the largest request takes minutes, not days. Use a time limit
+/// Most modes a request may ask for in each plane (docs/reference/scene-format.md, "Limits on
+/// work"): at the measured cost the largest request takes minutes, not days. Use a time limit
 /// (catena/solvers/run_limits.hpp) for less.
 inline constexpr int kMaxRequestModes = 1000;
 /// Most stations a request may ask for (docs/reference/scene-format.md, "Limits").

@@ -72,8 +72,8 @@ struct SolverEntry {
   /// The code path that computes each quantity the harness compares, by quantity
   /// ("frequency-in-plane", "frequency-out-of-plane", "shape-in-plane", "shape-out-of-plane",
   /// "tension", "forced"): two solvers that declare the same id for a quantity are one witness,
-  /// and the harness does not compare them on it (docs/reference/verdicts.md, "Independence"). A quantity
-  /// the solver does not produce is absent.
+  /// and the harness does not compare them on it (docs/reference/verdicts.md, "Independence"). A
+  /// quantity the solver does not produce is absent.
   std::map<std::string, std::string> computations;
 };
 
@@ -89,6 +89,8 @@ const SolverEntry* find_solver(const std::string& name);
 /// applicability (a NotApplicable output with the reason when the solver declines), runs each
 /// requested plane and the forced response, times them, and never lets a numerical exception
 /// escape (it becomes NumericalFailure with its message). InvalidInput propagates.
-SolverOutput run_solver(const SolverEntry& entry, const SolveContext& context, const SolverKnobs& knobs);
+SolverOutput run_solver(const SolverEntry& entry,
+                        const SolveContext& context,
+                        const SolverKnobs& knobs);
 
 }  // namespace catena

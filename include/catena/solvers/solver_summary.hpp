@@ -36,9 +36,10 @@ struct SolverSummary {
   /// e.g. max_i ||K phi - w^2 M phi|| / ||K phi|| (-1: not applicable).
   double max_residual = -1.0;
   /// The relative accuracy of each frequency the solver was asked for (its tolerance, in the
-  /// solver's own terms: docs/explanation/methods/<solver>.md), -1 when it was asked for none. A mode whose
-  /// error estimate exceeds it is not returned as converged: the part becomes NoConvergence and
-  /// the mode is listed in missed_modes (the skeleton applies this rule for every solver).
+  /// solver's own terms: docs/explanation/methods/<solver>.md), -1 when it was asked for none. A
+  /// mode whose error estimate exceeds it is not returned as converged: the part becomes
+  /// NoConvergence and the mode is listed in missed_modes (the skeleton applies this rule for every
+  /// solver).
   double accuracy_target = -1.0;
   /// The modes beyond accuracy_target, one line each: "in-plane mode 1: estimate 2.4e-07 >
   /// target 1.1e-09" (the part's warnings say why, when the solver knows).

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The dimensionless groups of docs/explanation/physics.md ("Dimensionless groups"), computed for any problem, and the frequency
-/// conversions between rad/s, kL/pi (Grinfogel) and w / sqrt(g/a) (Gale).
+/// The dimensionless groups of docs/explanation/physics.md ("Dimensionless groups"), computed for
+/// any problem, and the frequency conversions between rad/s, kL/pi (Grinfogel) and w / sqrt(g/a)
+/// (Gale).
 
 #include <optional>
 #include <string>
@@ -12,14 +13,14 @@
 
 namespace catena {
 
-/// Groups of the taut inclined cable (Grinfogel 1984; docs/reference/references.md) and of the suspended catenary
-/// (Gale 1976; docs/reference/references.md).
+/// Groups of the taut inclined cable (Grinfogel 1984; docs/reference/references.md) and of the
+/// suspended catenary (Gale 1976; docs/reference/references.md).
 struct DimensionlessGroups {
-  /// True for a uniform cable. For a general line (docs/explanation/physics.md, "General lines") the groups of
-  /// Grinfogel and Gale mean nothing: only chord_angle_rad, t0_n (the larger end tension),
-  /// mass_ratio and taut_frequency_scale_rad_s (with the length-averaged normal mass, so that kL/pi
-  /// stays a frequency unit) are set; eps, lambda2 and s_a are 0 and not reported, and Gale's
-  /// parameterization is absent.
+  /// True for a uniform cable. For a general line (docs/explanation/physics.md, "General lines")
+  /// the groups of Grinfogel and Gale mean nothing: only chord_angle_rad, t0_n (the larger end
+  /// tension), mass_ratio and taut_frequency_scale_rad_s (with the length-averaged normal mass, so
+  /// that kL/pi stays a frequency unit) are set; eps, lambda2 and s_a are 0 and not reported, and
+  /// Gale's parameterization is absent.
   bool uniform = true;
 
   // --- taut inclined cable (Grinfogel 1984) ---
@@ -79,6 +80,8 @@ std::optional<FrequencyUnit> parse_frequency_unit(const std::string& text);
 /// Converts a frequency in `unit` to rad/s.
 double to_rad_per_second(double value, FrequencyUnit unit, const DimensionlessGroups& groups);
 /// Converts rad/s to `unit`.
-double from_rad_per_second(double omega_rad_s, FrequencyUnit unit, const DimensionlessGroups& groups);
+double from_rad_per_second(double omega_rad_s,
+                           FrequencyUnit unit,
+                           const DimensionlessGroups& groups);
 
 }  // namespace catena

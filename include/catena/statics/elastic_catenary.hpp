@@ -50,8 +50,8 @@ struct StaticPiece {
   /// Offset of the start from support a [m] and stretched length of [0, s_begin] [m].
   Vec2 offset_begin_m = Vec2::Zero();
   double stretched_begin_m = 0.0;
-  /// True for a piece resting on the seabed (docs/explanation/physics.md, "Seabed contact"): straight and
-  /// horizontal, V = 0, tension set by friction (grounded_tension_begin_n).
+  /// True for a piece resting on the seabed (docs/explanation/physics.md, "Seabed contact"):
+  /// straight and horizontal, V = 0, tension set by friction (grounded_tension_begin_n).
   bool grounded = false;
   /// Grounded pieces: H - C_B (weight resting on the seabed between the start and the touchdown
   /// point) [N], before clipping at 0; the tension along the piece is
@@ -62,9 +62,9 @@ struct StaticPiece {
 /// The static state of the cable: the two end-force unknowns plus closed forms at any s.
 /// Every function of s takes the unstretched arc length s in [0, L] [m].
 ///
-/// A general line (docs/explanation/physics.md, "General lines") is the same state piecewise: V jumps by the
-/// weight of each point attachment, so at a point every function of s gives the value just beyond
-/// it (toward b; the `_before_` variants give the value on the side of a).
+/// A general line (docs/explanation/physics.md, "General lines") is the same state piecewise: V
+/// jumps by the weight of each point attachment, so at a point every function of s gives the value
+/// just beyond it (toward b; the `_before_` variants give the value on the side of a).
 class StaticSolution {
  public:
   StaticSolution() = default;
@@ -72,11 +72,13 @@ class StaticSolution {
   StaticSolution(const CableProperties& cable, const Vec2& a_m, double H, double V_A);
   /// The equilibrium of a general line (validated) with forces (H, V_A) at support `a`.
   StaticSolution(const Line& line, const Vec2& a_m, double H, double V_A);
-  /// The equilibrium of a line (validated) on `seabed` (docs/explanation/physics.md, "Seabed contact"): the
-  /// grounded length L_g = `grounded_length_m` from A rests on the seabed; the rest is suspended
-  /// with horizontal force `H` [N], leaving the seabed tangentially (V = 0 at s = L_g). The grounded
-  /// pieces come first, cut at joints, points and where the friction tension reaches 0.
-  StaticSolution(const Line& line, const Vec2& a_m, const Seabed& seabed, double H, double grounded_length_m);
+  /// The equilibrium of a line (validated) on `seabed` (docs/explanation/physics.md, "Seabed
+  /// contact"): the grounded length L_g = `grounded_length_m` from A rests on the seabed; the rest
+  /// is suspended with horizontal force `H` [N], leaving the seabed tangentially (V = 0 at s =
+  /// L_g). The grounded pieces come first, cut at joints, points and where the friction tension
+  /// reaches 0.
+  StaticSolution(
+      const Line& line, const Vec2& a_m, const Seabed& seabed, double H, double grounded_length_m);
 
   /// Records the seabed under a solution that does not touch it (L_g = 0; nothing else changes).
   void set_seabed_without_contact(const Seabed& seabed) { seabed_ = seabed; }
@@ -147,7 +149,8 @@ class StaticSolution {
   /// Why solve_statics stopped when !converged (closure error, tolerance, iterations, forces);
   /// empty when converged.
   std::string message;
-  /// One line: "H = ... N, V_A = ... N, T_A = ..., T_B = ..., 5 Newton iterations, closure 1e-16 m".
+  /// One line: "H = ... N, V_A = ... N, T_A = ..., T_B = ..., 5 Newton iterations, closure 1e-16
+  /// m".
   std::string brief_report() const;
 
  private:
@@ -164,8 +167,8 @@ class StaticSolution {
   double grounded_length_m_ = 0.0;
 };
 
-/// Offset r(L) - r(0) of a cable with end forces (H, V_A): the closure function of the Newton solve.
-/// Also used by problem builders. `H` >= 0 [N]; H = 0 requires V > 0 on (0, L].
+/// Offset r(L) - r(0) of a cable with end forces (H, V_A): the closure function of the Newton
+/// solve. Also used by problem builders. `H` >= 0 [N]; H = 0 requires V > 0 on (0, L].
 Vec2 catenary_end_offset(const CableProperties& cable, double H, double V_A);
 
 /// Solves the statics: finds (H, V_A) with r(L) = B - A by Newton's method on the 2x2 system with

@@ -2,9 +2,9 @@
 #pragma once
 /// \file
 /// Gale's end coordinate xi and the catenary slope parameter sigma = V/H (Gale 1976; see
-/// docs/explanation/physics.md, "Dimensionless groups", and docs/reference/references.md). Plain functions of one number,
-/// used both to describe a solved catenary (dimensionless_groups) and to build one from Gale's
-/// inputs (problem_builders).
+/// docs/explanation/physics.md, "Dimensionless groups", and docs/reference/references.md). Plain
+/// functions of one number, used both to describe a solved catenary (dimensionless_groups) and to
+/// build one from Gale's inputs (problem_builders).
 
 namespace catena {
 

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Statics of a general line (docs/explanation/physics.md, "General lines"): segments of different sections,
-/// point weights and buoys. H is constant; V jumps by each segment's and each point's weight; each
-/// piece between joints and points is an elastic catenary (sagging, straight or hogging).
+/// Statics of a general line (docs/explanation/physics.md, "General lines"): segments of different
+/// sections, point weights and buoys. H is constant; V jumps by each segment's and each point's
+/// weight; each piece between joints and points is an elastic catenary (sagging, straight or
+/// hogging).
 
 #include "catena/models/cable.hpp"
 #include "catena/statics/elastic_catenary.hpp"

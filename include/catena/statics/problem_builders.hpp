@@ -1,26 +1,26 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Builders of a physical Problem from the dimensionless forms of the published papers (docs/explanation/physics.md, "Dimensionless groups").
-/// Each builder's output, passed through solve_statics and compute_dimensionless_groups,
-/// reproduces its inputs (tested to 1e-12).
+/// Builders of a physical Problem from the dimensionless forms of the published papers
+/// (docs/explanation/physics.md, "Dimensionless groups"). Each builder's output, passed through
+/// solve_statics and compute_dimensionless_groups, reproduces its inputs (tested to 1e-12).
 
 #include "catena/models/cable.hpp"
 #include "catena/statics/gale_coordinates.hpp"
 
 namespace catena {
 
-/// Taut inclined cable from Grinfogel's groups (Grinfogel 1984; docs/reference/references.md): L = 1 m, T0 = 1 N, M = 1 kg/m,
-/// m = mass_ratio, W0 = eps, EA = lambda2 / (eps^2 cos^2 phi), H = cos phi; the point where the
-/// static angle equals phi sits at s_a, found by a 1-D root so that the chord has angle phi.
-/// \param eps W0 L / T0, in (0, 10].
-/// \param phi_deg chord inclination [deg], in [0, 90) (lambda2 is 0 for a vertical cable).
-/// \param lambda2 EA eps^2 cos^2(phi) / T0, > 0 and finite.
-/// \param mass_ratio h = m / M, in (0, 1].
+/// Taut inclined cable from Grinfogel's groups (Grinfogel 1984; docs/reference/references.md): L =
+/// 1 m, T0 = 1 N, M = 1 kg/m, m = mass_ratio, W0 = eps, EA = lambda2 / (eps^2 cos^2 phi), H = cos
+/// phi; the point where the static angle equals phi sits at s_a, found by a 1-D root so that the
+/// chord has angle phi. \param eps W0 L / T0, in (0, 10]. \param phi_deg chord inclination [deg],
+/// in [0, 90) (lambda2 is 0 for a vertical cable). \param lambda2 EA eps^2 cos^2(phi) / T0, > 0 and
+/// finite. \param mass_ratio h = m / M, in (0, 1].
 Problem make_taut_inclined_problem(double eps, double phi_deg, double lambda2, double mass_ratio);
 
-/// Inextensible catenary from Gale's end coordinates xi1 < xi2 (Gale 1976; docs/reference/references.md): a = H/W0 = 1 m,
-/// W0 = 1 N/m, m = 1 kg/m (so sqrt(g/a) = 1 rad/s and omega is Gale's ratio), no added mass.
+/// Inextensible catenary from Gale's end coordinates xi1 < xi2 (Gale 1976;
+/// docs/reference/references.md): a = H/W0 = 1 m, W0 = 1 N/m, m = 1 kg/m (so sqrt(g/a) = 1 rad/s
+/// and omega is Gale's ratio), no added mass.
 Problem make_gale_xi_problem(double xi1, double xi2);
 
 /// Inextensible catenary from Gale's geometry: h/b (support height difference over span, >= 0)

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Statics of a line over a flat seabed (docs/explanation/physics.md, "Seabed contact"): end A (the anchor)
-/// lies on the seabed; where the hanging line would go below it, a grounded length L_g from A
-/// rests on it, straight and horizontal, with Coulomb friction; the rest is suspended and leaves
+/// Statics of a line over a flat seabed (docs/explanation/physics.md, "Seabed contact"): end A (the
+/// anchor) lies on the seabed; where the hanging line would go below it, a grounded length L_g from
+/// A rests on it, straight and horizontal, with Coulomb friction; the rest is suspended and leaves
 /// the seabed tangentially (V = 0 at the touchdown point).
 
 #include "catena/models/cable.hpp"

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The touchdown form of the elastic catenary (Turchetto 2016, docs/reference/references.md, eqs. 1.6-1.10): a mooring
-/// line hanging from its lowest point (theta = 0, where it leaves a flat seabed) up to a fairlead at
-/// height `depth` above the seabed. The part beyond the lowest point rests on the seabed.
+/// The touchdown form of the elastic catenary (Turchetto 2016, docs/reference/references.md,
+/// eqs. 1.6-1.10): a mooring line hanging from its lowest point (theta = 0, where it leaves a flat
+/// seabed) up to a fairlead at height `depth` above the seabed. The part beyond the lowest point
+/// rests on the seabed.
 ///
 /// With c = T_H / W0 and theta the tension angle at the fairlead:
 ///
-///     s(theta) = c tan(theta) + (T_H/EA) (c/2) [tan(theta) sec(theta) + ln(sec(theta) + tan(theta))]
-///     x(theta) = c ln(sec(theta) + tan(theta)) + c tan(theta) T_H / EA
-///     y(theta) = c sec(theta) (1 + (T_H/EA) sec(theta) / 2)
-///     depth    = y(theta_max) - y(0)                                    (1.10)
+///     s(theta) = c tan(theta) + (T_H/EA) (c/2) [tan(theta) sec(theta) + ln(sec(theta) +
+///     tan(theta))] x(theta) = c ln(sec(theta) + tan(theta)) + c tan(theta) T_H / EA y(theta) = c
+///     sec(theta) (1 + (T_H/EA) sec(theta) / 2) depth    = y(theta_max) - y(0) (1.10)
 ///
 /// Here W0 is the weight per *unstretched* length and s(theta) the *stretched* suspended length;
 /// the unstretched suspended length is c tan(theta).

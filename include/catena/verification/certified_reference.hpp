@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Catena's certified reference for `catena check` (docs/how-to/check.md, "The reference"): of the two
-/// exact, reference-grade solvers, shooting and fe (Richardson-extrapolated), the one that
+/// Catena's certified reference for `catena check` (docs/how-to/check.md, "The reference"): of the
+/// two exact, reference-grade solvers, shooting and fe (Richardson-extrapolated), the one that
 /// converged with the smaller error estimate; when both converged, their largest disagreement is
 /// reported as an independent confirmation.
 
@@ -19,7 +19,8 @@ namespace catena {
 /// "fe"). A solver qualifies when its plane converged with at least one mode; among those, the
 /// smaller largest error estimate wins (shooting on a tie). nullopt, with `why` saying what each
 /// solver reported, when none qualifies.
-std::optional<CertifiedReference> certified_reference(const std::vector<SolverOutput>& outputs, Plane plane,
+std::optional<CertifiedReference> certified_reference(const std::vector<SolverOutput>& outputs,
+                                                      Plane plane,
                                                       std::string& why);
 
 }  // namespace catena

@@ -2,9 +2,9 @@
 #pragma once
 /// \file
 /// Checking another program's natural frequencies, and optionally its mode shapes and dynamic
-/// tensions, against Catena's certified reference (docs/how-to/check.md). Pure data in, comparison out:
-/// reading the other program's files is include/catena/io/external_results_reader.hpp, choosing
-/// the reference is include/catena/verification/certified_reference.hpp, the report is
+/// tensions, against Catena's certified reference (docs/how-to/check.md). Pure data in, comparison
+/// out: reading the other program's files is include/catena/io/external_results_reader.hpp,
+/// choosing the reference is include/catena/verification/certified_reference.hpp, the report is
 /// include/catena/io/check_report.hpp.
 ///
 /// What is compared, per mode of the other program:
@@ -113,12 +113,12 @@ struct ConvergenceStudy {
 
 /// The verdict on one mode (docs/how-to/check.md, "Verdicts").
 enum class ModeVerdict {
-  WithinTolerance,          ///< one resolution (or an inconclusive study): |error| <= rtol
-  BeyondTolerance,          ///< one resolution (or an inconclusive study): |error| > rtol
-  Converged,                ///< trustworthy study, right limit, finest |error| <= rtol
-  NotYetWithinTolerance,    ///< trustworthy study, right limit, finest |error| > rtol
-  ConvergesToWrongLimit,    ///< trustworthy study, |bias| - uncertainty > rtol
-  Unpaired                  ///< no Catena mode left to pair with
+  WithinTolerance,        ///< one resolution (or an inconclusive study): |error| <= rtol
+  BeyondTolerance,        ///< one resolution (or an inconclusive study): |error| > rtol
+  Converged,              ///< trustworthy study, right limit, finest |error| <= rtol
+  NotYetWithinTolerance,  ///< trustworthy study, right limit, finest |error| > rtol
+  ConvergesToWrongLimit,  ///< trustworthy study, |bias| - uncertainty > rtol
+  Unpaired                ///< no Catena mode left to pair with
 };
 /// "within tolerance", "beyond tolerance", "converged", "converges, not yet within tolerance",
 /// "converges to a wrong limit", "unpaired".
@@ -182,7 +182,8 @@ ExternalCheck check_external_results(const std::vector<ExternalMode>& results,
 /// The convergence study of values at resolutions (ascending resolution), as used by
 /// check_external_results; exposed for tests and other callers. `reference` is Catena's value.
 ConvergenceStudy study_convergence(const std::vector<double>& resolutions,
-                                   const std::vector<double>& values, double reference,
+                                   const std::vector<double>& values,
+                                   double reference,
                                    const ExternalCheckOptions& options = {});
 
 }  // namespace catena

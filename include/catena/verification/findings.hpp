@@ -39,7 +39,9 @@ class FindingsTable {
   explicit FindingsTable(std::vector<Finding> findings) : findings_(std::move(findings)) {}
 
   /// The finding for this scene, quantity, mode and solver, or nullptr.
-  const Finding* find(const std::string& scene, const std::string& quantity, int mode,
+  const Finding* find(const std::string& scene,
+                      const std::string& quantity,
+                      int mode,
                       const std::string& solver) const;
   const std::vector<Finding>& findings() const { return findings_; }
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The condition number of a forced response (docs/reference/verdicts.md, "Forced response: conditioning"):
-/// near a natural frequency omega_n the response 1 / (omega_n^2 - Omega^2) moves by
+/// The condition number of a forced response (docs/reference/verdicts.md, "Forced response:
+/// conditioning"): near a natural frequency omega_n the response 1 / (omega_n^2 - Omega^2) moves by
 /// 2 delta omega_n^2 / |omega_n^2 - Omega^2| for a relative change delta of omega_n, for ANY
 /// solver. kappa(Omega) = max(1, max_n 2 omega_n^2 / |omega_n^2 - Omega^2|) is a property of the
 /// physics, computed from the natural frequencies of the most accurate exact solver that ran, not

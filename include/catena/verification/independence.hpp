@@ -25,7 +25,9 @@ inline constexpr const char* kIdentityCheck = "identity";
 
 /// The id both `a` and `b` declare for `quantity` ("frequency-in-plane", ...), or nullopt when
 /// they differ or either declares none.
-std::optional<std::string> shared_computation(const SolverEntry& a, const SolverEntry& b, const std::string& quantity);
+std::optional<std::string> shared_computation(const SolverEntry& a,
+                                              const SolverEntry& b,
+                                              const std::string& quantity);
 
 /// An identity flag (kIdentityCheck, verdict FAIL) for every group of cross-solver value checks
 /// ("frequency", "tension", "forced"; same compare and plane; skipped checks and pairs of exact

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Mutation testing of the verification harness (`catena verify --mutation`, docs/explanation/mutation.md):
-/// after a scene is solved, one result at a time is made wrong by a stated amount and the scene's
-/// checks are run again on the mutated results (nothing is re-solved). A mutation is caught when
-/// some check of that scene goes from a non-FAIL verdict to FAIL. The share caught measures how
-/// much a "0 failed" is worth.
+/// Mutation testing of the verification harness (`catena verify --mutation`,
+/// docs/explanation/mutation.md): after a scene is solved, one result at a time is made wrong by a
+/// stated amount and the scene's checks are run again on the mutated results (nothing is
+/// re-solved). A mutation is caught when some check of that scene goes from a non-FAIL verdict to
+/// FAIL. The share caught measures how much a "0 failed" is worth.
 
 #include <map>
 #include <string>
@@ -27,7 +27,8 @@ inline constexpr double kShapeMutationFactor = 10.0;
 /// A forced response's max |tension| (and its tension curve) is multiplied by (1 + this).
 inline constexpr double kForcedTensionMutation = 1e-4;
 /// fe's target when a scene does not set its `tolerance` knob: the accuracy the tolerance table
-/// declares for it and holds its frequency checks to (verification/tolerances.toml, docs/explanation/mutation.md).
+/// declares for it and holds its frequency checks to (verification/tolerances.toml,
+/// docs/explanation/mutation.md).
 inline constexpr double kFeAccuracyTarget = 1e-6;
 
 /// What a mutation changed.
@@ -87,16 +88,22 @@ struct MutationRun {
 bool is_exact_solver(const std::string& solver);
 
 /// The relative accuracy `solver` promises on `mode`: its accuracy target (shooting 10 rtol +
-/// root_tolerance, frobenius 10 tolerance, with the scene's knobs or the defaults; fe its `tolerance`
-/// knob, else kFeAccuracyTarget), asymptotic and airy the mode's own model-error estimate. 0 when there is none (no mutation is made).
-double frequency_accuracy_target(const std::string& solver, const SolverKnobs& knobs, const Mode& mode);
+/// root_tolerance, frobenius 10 tolerance, with the scene's knobs or the defaults; fe its
+/// `tolerance` knob, else kFeAccuracyTarget), asymptotic and airy the mode's own model-error
+/// estimate. 0 when there is none (no mutation is made).
+double frequency_accuracy_target(const std::string& solver,
+                                 const SolverKnobs& knobs,
+                                 const Mode& mode);
 
 /// Every mutation of one solved scene, each checked with `options`' tables. A scene without
 /// statics (an error) gives none.
-std::vector<MutationOutcome> mutate_scene(const SceneResult& result, const SceneRunOptions& options);
+std::vector<MutationOutcome> mutate_scene(const SceneResult& result,
+                                          const SceneRunOptions& options);
 
 /// mutate_scene on every result, on `jobs` threads (0: all cores), timed.
-MutationRun run_mutations(const std::vector<SceneResult>& results, int jobs, const SceneRunOptions& options,
+MutationRun run_mutations(const std::vector<SceneResult>& results,
+                          int jobs,
+                          const SceneRunOptions& options,
                           const SuiteProgress& progress = {});
 
 }  // namespace catena

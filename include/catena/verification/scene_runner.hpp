@@ -69,7 +69,8 @@ struct SceneRunOptions {
   /// Compute the checks (otherwise statics and solvers only).
   bool checks = true;
   /// Wall-clock budget of each scene [s], from the start of run_scene (none: no limit). When it
-  /// runs out, the solvers stop cooperatively and keep what they have (catena/solvers/run_limits.hpp).
+  /// runs out, the solvers stop cooperatively and keep what they have
+  /// (catena/solvers/run_limits.hpp).
   std::optional<double> time_limit_s;
   /// Progress of the solvers (see ProgressCallback); empty: none.
   ProgressCallback progress;

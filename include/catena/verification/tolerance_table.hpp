@@ -4,8 +4,8 @@
 /// Expected agreement, held as reviewed data (verification/tolerances.toml, after Boost.Math's
 /// expected_results()): each rule says which check and which pair of solvers (or a solver and the
 /// published value) it governs, the tolerance, and why. A tolerance never depends on what a solver
-/// says of its own accuracy (docs/reference/verdicts.md, "Tolerances"): it is a fixed number, plus, for an
-/// asymptotic model, the model's published error term evaluated on the scene.
+/// says of its own accuracy (docs/reference/verdicts.md, "Tolerances"): it is a fixed number, plus,
+/// for an asymptotic model, the model's published error term evaluated on the scene.
 ///
 ///     [[tolerance]]
 ///     check = "frequency"               # frequency, published, mac, shape, tension, forced,
@@ -76,7 +76,8 @@ struct ToleranceRule {
   double tolerance(const ModelParameters& parameters) const;
 };
 
-/// What the estimate check needs to know of a solver (docs/reference/verdicts.md, "The estimate as a claim").
+/// What the estimate check needs to know of a solver (docs/reference/verdicts.md, "The estimate as
+/// a claim").
 struct SolverAccuracy {
   std::string name;
   /// True for "exact": a method whose error can be driven to rounding (it may be the reference
@@ -91,11 +92,13 @@ struct SolverAccuracy {
 };
 
 /// The rules in order, and the solvers' accuracy declarations. Plain data with lookups; reading it
-/// from TOML is io's job (catena/io/tolerance_reader.hpp), and a run receives it in SceneRunOptions.
+/// from TOML is io's job (catena/io/tolerance_reader.hpp), and a run receives it in
+/// SceneRunOptions.
 class ToleranceTable {
  public:
   ToleranceTable() = default;
-  explicit ToleranceTable(std::vector<ToleranceRule> rules, std::vector<SolverAccuracy> solvers = {})
+  explicit ToleranceTable(std::vector<ToleranceRule> rules,
+                          std::vector<SolverAccuracy> solvers = {})
       : rules_(std::move(rules)), solvers_(std::move(solvers)) {}
 
   /// The first rule for `check` comparing `a` with `b` in `scene` (with `tags`), or nullptr.

@@ -8,9 +8,9 @@ namespace {
 
 // The order of a row's cells.
 const nlohmann::json& check_fields() {
-  static const nlohmann::json fields = {key::check,   key::compare,  key::plane,   key::mode,
-                                        key::value_a, key::value_b,  key::measured, key::tolerance,
-                                        key::verdict, key::detail,   key::tolerance_reason};
+  static const nlohmann::json fields = {
+      key::check,    key::compare,   key::plane,   key::mode,   key::value_a,         key::value_b,
+      key::measured, key::tolerance, key::verdict, key::detail, key::tolerance_reason};
   return fields;
 }
 
@@ -19,7 +19,8 @@ nlohmann::json expanded(const nlohmann::json& table) {
   nlohmann::json records = nlohmann::json::array();
   for (const auto& row : table.at(key::rows)) {
     nlohmann::json record = nlohmann::json::object();
-    for (std::size_t i = 0; i < fields.size() && i < row.size(); ++i) record[fields[i].get<std::string>()] = row[i];
+    for (std::size_t i = 0; i < fields.size() && i < row.size(); ++i)
+      record[fields[i].get<std::string>()] = row[i];
     records.push_back(std::move(record));
   }
   return records;
@@ -31,7 +32,8 @@ nlohmann::json check_table(const nlohmann::json& records) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& record : records) {
     nlohmann::json row = nlohmann::json::array();
-    for (const auto& field : check_fields()) row.push_back(record.value(field.get<std::string>(), nlohmann::json()));
+    for (const auto& field : check_fields())
+      row.push_back(record.value(field.get<std::string>(), nlohmann::json()));
     rows.push_back(std::move(row));
   }
   return {{key::fields, check_fields()}, {key::rows, rows}};
@@ -42,7 +44,8 @@ void expand_check_tables(nlohmann::json& document) {
   for (auto& scene : document[key::scenes]) {
     if (!scene.is_object() || !scene.contains(key::checks)) continue;
     nlohmann::json& checks = scene[key::checks];
-    if (checks.is_object() && checks.contains(key::fields) && checks.contains(key::rows)) checks = expanded(checks);
+    if (checks.is_object() && checks.contains(key::fields) && checks.contains(key::rows))
+      checks = expanded(checks);
   }
 }
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // A scene's checks in report.json as one table: the field names once, then one row per check
-// (docs/reference/json-layout.md). The suite has about 25,000 checks; their eleven key names, repeated in
-// every record, were a fifth of the file.
+// (docs/reference/json-layout.md). The suite has about 25,000 checks; their eleven key names,
+// repeated in every record, were a fifth of the file.
 
 #include <nlohmann/json.hpp>
 

@@ -17,10 +17,12 @@ std::optional<std::filesystem::path> find_data_dir(const std::filesystem::path& 
                                                    const std::filesystem::path& build_tree_dir) {
   std::error_code error;
   if (!executable.empty()) {
-    const std::filesystem::path installed = executable.parent_path().parent_path() / "share" / "catena";
+    const std::filesystem::path installed =
+        executable.parent_path().parent_path() / "share" / "catena";
     if (std::filesystem::is_directory(installed, error)) return installed;
   }
-  if (!build_tree_dir.empty() && std::filesystem::is_directory(build_tree_dir, error)) return build_tree_dir;
+  if (!build_tree_dir.empty() && std::filesystem::is_directory(build_tree_dir, error))
+    return build_tree_dir;
   return std::nullopt;
 }
 

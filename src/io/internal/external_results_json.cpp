@@ -2,6 +2,7 @@
 #include "io/internal/external_results_json.hpp"
 
 #include <fmt/format.h>
+
 #include <nlohmann/json.hpp>
 
 #include "catena/core/error.hpp"
@@ -13,11 +14,13 @@ namespace {
 
 using nlohmann::json;
 
-const char* const kItemKeys[] = {"plane", "mode", "resolution", "frequency_hz", "omega_rad_s", "shape"};
+const char* const kItemKeys[] = {"plane",        "mode",        "resolution",
+                                 "frequency_hz", "omega_rad_s", "shape"};
 const char* const kShapeKeys[] = {"s_m", "u", "w", "v", "tension_n"};
 
 double number_of(const json& value, const std::string& where) {
-  if (!value.is_number()) throw InvalidInput(fmt::format("{}: {} is not a number", where, value.dump()));
+  if (!value.is_number())
+    throw InvalidInput(fmt::format("{}: {} is not a number", where, value.dump()));
   return value.get<double>();
 }
 
@@ -25,9 +28,13 @@ double number_at(const json& item, const std::string& key, const std::string& wh
   return number_of(item.at(key), where + "." + key);
 }
 
-void reject_unknown_keys(const json& object, const char* const* begin, const char* const* end, const std::string& where) {
+void reject_unknown_keys(const json& object,
+                         const char* const* begin,
+                         const char* const* end,
+                         const std::string& where) {
   for (const auto& [key, value] : object.items()) {
-    if (std::find(begin, end, key) == end) throw InvalidInput(fmt::format("{}: unknown key '{}'", where, key));
+    if (std::find(begin, end, key) == end)
+      throw InvalidInput(fmt::format("{}: unknown key '{}'", where, key));
   }
 }
 
@@ -46,8 +53,9 @@ ExternalShape read_shape(const json& shape, const std::string& where) {
   if (!shape.is_object()) throw InvalidInput(fmt::format("{}: not an object", where));
   reject_unknown_keys(shape, std::begin(kShapeKeys), std::end(kShapeKeys), where);
   if (!shape.contains("s_m")) throw InvalidInput(fmt::format("{}: missing 's_m'", where));
-  return {numbers_at(shape, "s_m", where), numbers_at(shape, "u", where), numbers_at(shape, "w", where),
-          numbers_at(shape, "v", where), numbers_at(shape, "tension_n", where)};
+  return {numbers_at(shape, "s_m", where), numbers_at(shape, "u", where),
+          numbers_at(shape, "w", where), numbers_at(shape, "v", where),
+          numbers_at(shape, "tension_n", where)};
 }
 
 ExternalMode read_item(const json& item, const std::string& where) {
@@ -58,15 +66,17 @@ ExternalMode read_item(const json& item, const std::string& where) {
   }
   const bool hz = item.contains("frequency_hz");
   if (hz == item.contains("omega_rad_s")) {
-    throw InvalidInput(fmt::format("{}: give exactly one of 'frequency_hz' and 'omega_rad_s'", where));
+    throw InvalidInput(
+        fmt::format("{}: give exactly one of 'frequency_hz' and 'omega_rad_s'", where));
   }
   ExternalMode mode;
   mode.origin = where;
   const json& plane = item.at("plane");
   const auto parsed = plane.is_string() ? parse_plane(plane.get<std::string>()) : std::nullopt;
   if (!parsed) {
-    throw InvalidInput(fmt::format("{}.plane: {} is not a plane (in-plane, inplane, out-of-plane, outofplane)", where,
-                                   plane.dump()));
+    throw InvalidInput(
+        fmt::format("{}.plane: {} is not a plane (in-plane, inplane, out-of-plane, outofplane)",
+                    where, plane.dump()));
   }
   mode.plane = *parsed;
   mode.mode = mode_number(number_at(item, "mode", where), where + ".mode");
@@ -80,19 +90,24 @@ ExternalMode read_item(const json& item, const std::string& where) {
 }  // namespace
 
 std::vector<ExternalMode> read_external_results_json(const std::filesystem::path& path) {
-  return parse_results_json_text(read_input_file(path, "results JSON", 64 * kMaxInputFileBytes), path_text(path));
+  return parse_results_json_text(read_input_file(path, "results JSON", 64 * kMaxInputFileBytes),
+                                 path_text(path));
 }
 
-std::vector<ExternalMode> parse_results_json_text(const std::string& text, const std::string& file) {
+std::vector<ExternalMode> parse_results_json_text(const std::string& text,
+                                                  const std::string& file) {
   const json document = json::parse(text, nullptr, false);
-  if (document.is_discarded()) throw InvalidInput(fmt::format("{}: not valid JSON (NaN is not JSON either)", file));
+  if (document.is_discarded())
+    throw InvalidInput(fmt::format("{}: not valid JSON (NaN is not JSON either)", file));
   const json* list = &document;
   if (document.is_object()) {
     reject_unknown_keys(document, std::begin({"results"}), std::end({"results"}), file);
-    if (!document.contains("results")) throw InvalidInput(fmt::format("{}: missing 'results'", file));
+    if (!document.contains("results"))
+      throw InvalidInput(fmt::format("{}: missing 'results'", file));
     list = &document.at("results");
   }
-  if (!list->is_array() || list->empty()) throw InvalidInput(fmt::format("{}: 'results' must be a non-empty array", file));
+  if (!list->is_array() || list->empty())
+    throw InvalidInput(fmt::format("{}: 'results' must be a non-empty array", file));
   std::vector<ExternalMode> modes;
   for (std::size_t i = 0; i < list->size(); ++i) {
     modes.push_back(read_item(list->at(i), fmt::format("{}: results[{}]", file, i)));

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "io/internal/moordyn_scene_text.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 namespace catena::internal {
 namespace {
@@ -16,23 +17,34 @@ int end_point_id(const std::string& end) {
 
 // The point a chain element is entered by (`entry`) or left by.
 int point_of(const MoorDynDeck& deck, const ChainSegment& segment, bool entry) {
-  const auto& line = *std::find_if(deck.lines.begin(), deck.lines.end(), [&](const MoorDynLine& l) { return l.id == segment.line; });
+  const auto& line = *std::find_if(deck.lines.begin(), deck.lines.end(),
+                                   [&](const MoorDynLine& l) { return l.id == segment.line; });
   return end_point_id(entry != segment.reversed ? line.end_a : line.end_b);
 }
 
 SegmentProperties segment_of(const MoorDynDeck& deck, int line_id) {
-  const auto& line = *std::find_if(deck.lines.begin(), deck.lines.end(), [&](const MoorDynLine& l) { return l.id == line_id; });
-  const auto& type = *std::find_if(deck.types.begin(), deck.types.end(), [&](const MoorDynLineType& t) { return t.name == line.type; });
+  const auto& line = *std::find_if(deck.lines.begin(), deck.lines.end(),
+                                   [&](const MoorDynLine& l) { return l.id == line_id; });
+  const auto& type = *std::find_if(deck.types.begin(), deck.types.end(),
+                                   [&](const MoorDynLineType& t) { return t.name == line.type; });
   const double area = kPi / 4.0 * type.diameter_m * type.diameter_m;
   const double rho = deck.water_density();
-  return {line.id, type.name, line.length_m, (type.mass_kg_per_m - rho * area) * deck.gravity(), *type.axial_stiffness_n,
-          type.mass_kg_per_m, type.normal_added_mass_coefficient * rho * area, type.diameter_m};
+  return {line.id,
+          type.name,
+          line.length_m,
+          (type.mass_kg_per_m - rho * area) * deck.gravity(),
+          *type.axial_stiffness_n,
+          type.mass_kg_per_m,
+          type.normal_added_mass_coefficient * rho * area,
+          type.diameter_m};
 }
 
 std::optional<double> seabed_height(const MoorDynDeck& deck) {
   if (const auto depth = deck.water_depth()) return -*depth;
   if (deck.points.empty()) return std::nullopt;
-  return std::min_element(deck.points.begin(), deck.points.end(), [](const auto& a, const auto& b) { return a.z_m < b.z_m; })->z_m;
+  return std::min_element(deck.points.begin(), deck.points.end(),
+                          [](const auto& a, const auto& b) { return a.z_m < b.z_m; })
+      ->z_m;
 }
 
 // A TOML float (always with a '.' or an exponent: "400" would be an integer).
@@ -42,17 +54,29 @@ std::string number(double value) {
   return text;
 }
 
-std::string header(const ChainDescription& d, const std::string& name, const std::vector<std::string>& needs) {
+std::string header(const ChainDescription& d,
+                   const std::string& name,
+                   const std::vector<std::string>& needs) {
   const auto point_text = [](const MoorDynPoint* p) {
-    return fmt::format("point {} ({}) at ({}, {}, {}) m", p->id, p->attachment, p->x_m, p->y_m, p->z_m);
+    return fmt::format("point {} ({}) at ({}, {}, {}) m", p->id, p->attachment, p->x_m, p->y_m,
+                       p->z_m);
   };
   std::string lines;
-  for (const auto& s : d.segments) lines += fmt::format("{}{} (type {})", lines.empty() ? "" : ", ", s.line, s.type);
-  std::string out = fmt::format("# Imported by `catena import moordyn` from {} (docs/how-to/moordyn-import.md).\n", d.deck_file);
-  out += fmt::format("# MoorDyn line(s) {}, end A = {}, end B = {}.\n", lines, point_text(d.geometry.end_a), point_text(d.geometry.end_b));
-  out += "# The vertical plane through the two ends: x = horizontal distance from end A, z = MoorDyn's z.\n";
-  out += fmt::format("# weight = (MassDen - rho_w pi/4 Diam^2) g, added_mass = Ca rho_w pi/4 Diam^2; g = {} m/s^2, "
-                     "rho_w = {} kg/m^3.\n", d.gravity, d.water_density);
+  for (const auto& s : d.segments)
+    lines += fmt::format("{}{} (type {})", lines.empty() ? "" : ", ", s.line, s.type);
+  std::string out = fmt::format(
+      "# Imported by `catena import moordyn` from {} (docs/how-to/moordyn-import.md).\n",
+      d.deck_file);
+  out += fmt::format("# MoorDyn line(s) {}, end A = {}, end B = {}.\n", lines,
+                     point_text(d.geometry.end_a), point_text(d.geometry.end_b));
+  out +=
+      "# The vertical plane through the two ends: x = horizontal distance from end A, z = "
+      "MoorDyn's z.\n";
+  out += fmt::format(
+      "# weight = (MassDen - rho_w pi/4 Diam^2) g, added_mass = Ca rho_w pi/4 Diam^2; g = {} "
+      "m/s^2, "
+      "rho_w = {} kg/m^3.\n",
+      d.gravity, d.water_density);
   if (needs.empty()) {
     out += "# Needs: nothing beyond the one-segment [cable] (Catena solves it today).\n";
   } else {
@@ -60,40 +84,51 @@ std::string header(const ChainDescription& d, const std::string& name, const std
     for (const auto& need : needs) out += " " + need + ";";
     out += "\n# (Catena solves this scene once its readers accept these tables.)\n";
   }
-  return out + fmt::format("name = \"{}\"\ndescription = \"MoorDyn line(s) {} of {}\"\ntags = [\"moordyn-import\"]\n\n", name,
-                           lines, d.deck_file);
+  return out + fmt::format(
+                   "name = \"{}\"\ndescription = \"MoorDyn line(s) {} of {}\"\ntags = "
+                   "[\"moordyn-import\"]\n\n",
+                   name, lines, d.deck_file);
 }
 
 std::string cable_table(const ChainDescription& d) {
   const SegmentProperties& s = d.segments.front();
-  return fmt::format("[cable]\nlength = {}\nweight = {}\nEA = {}\nmass = {}\nadded_mass = {}\na = [{}, {}]\nb = [{}, {}]\n\n",
-                     number(s.length_m), number(s.weight_n_per_m), number(s.axial_stiffness_n), number(s.mass_kg_per_m),
-                     number(s.added_mass_kg_per_m), number(d.geometry.a_m.x()), number(d.geometry.a_m.y()),
-                     number(d.geometry.b_m.x()), number(d.geometry.b_m.y()));
+  return fmt::format(
+      "[cable]\nlength = {}\nweight = {}\nEA = {}\nmass = {}\nadded_mass = {}\na = [{}, {}]\nb = "
+      "[{}, {}]\n\n",
+      number(s.length_m), number(s.weight_n_per_m), number(s.axial_stiffness_n),
+      number(s.mass_kg_per_m), number(s.added_mass_kg_per_m), number(d.geometry.a_m.x()),
+      number(d.geometry.a_m.y()), number(d.geometry.b_m.x()), number(d.geometry.b_m.y()));
 }
 
 std::string line_table(const ChainDescription& d) {
-  std::string out = fmt::format("[line]\na = [{}, {}]\nb = [{}, {}]\n", number(d.geometry.a_m.x()), number(d.geometry.a_m.y()),
-                                number(d.geometry.b_m.x()), number(d.geometry.b_m.y()));
+  std::string out = fmt::format("[line]\na = [{}, {}]\nb = [{}, {}]\n", number(d.geometry.a_m.x()),
+                                number(d.geometry.a_m.y()), number(d.geometry.b_m.x()),
+                                number(d.geometry.b_m.y()));
   for (const auto& s : d.segments) {
-    out += fmt::format("[[line.segments]]                 # MoorDyn line {}\nlength = {}\nweight = {}\nEA = {}\nmass = {}\n"
-                       "added_mass = {}\n",
-                       s.line, number(s.length_m), number(s.weight_n_per_m), number(s.axial_stiffness_n),
-                       number(s.mass_kg_per_m), number(s.added_mass_kg_per_m));
+    out += fmt::format(
+        "[[line.segments]]                 # MoorDyn line {}\nlength = {}\nweight = {}\nEA = "
+        "{}\nmass = {}\n"
+        "added_mass = {}\n",
+        s.line, number(s.length_m), number(s.weight_n_per_m), number(s.axial_stiffness_n),
+        number(s.mass_kg_per_m), number(s.added_mass_kg_per_m));
   }
   for (const auto& p : d.points) {
-    out += fmt::format("[[line.points]]                   # MoorDyn point {}\ns = {}\nmass = {}\nweight = {}\nadded_mass = {}\n",
-                       p.point, number(p.s_m), number(p.mass_kg), number(p.weight_n), number(p.added_mass_kg));
+    out += fmt::format(
+        "[[line.points]]                   # MoorDyn point {}\ns = {}\nmass = {}\nweight = "
+        "{}\nadded_mass = {}\n",
+        p.point, number(p.s_m), number(p.mass_kg), number(p.weight_n), number(p.added_mass_kg));
   }
   return out + "\n";
 }
 
 }  // namespace
 
-ChainDescription describe_chain(const MoorDynDeck& deck, std::vector<ChainSegment> chain,
+ChainDescription describe_chain(const MoorDynDeck& deck,
+                                std::vector<ChainSegment> chain,
                                 const std::map<int, const MoorDynPoint*>& points) {
   // End A is the lower held end (the anchor): reverse the chain when it starts higher.
-  if (points.at(point_of(deck, chain.front(), true))->z_m > points.at(point_of(deck, chain.back(), false))->z_m) {
+  if (points.at(point_of(deck, chain.front(), true))->z_m >
+      points.at(point_of(deck, chain.back(), false))->z_m) {
     std::reverse(chain.begin(), chain.end());
     for (auto& segment : chain) segment.reversed = !segment.reversed;
   }
@@ -116,7 +151,8 @@ ChainDescription describe_chain(const MoorDynDeck& deck, std::vector<ChainSegmen
     const MoorDynPoint& joint = *points.at(point_of(deck, chain[i], false));
     // A joint without mass or volume is only where the properties change: no attachment.
     if (joint.mass_kg != 0.0 || joint.volume_m3 != 0.0) {
-      d.points.push_back({joint.id, s, joint.mass_kg, (joint.mass_kg - d.water_density * joint.volume_m3) * d.gravity,
+      d.points.push_back({joint.id, s, joint.mass_kg,
+                          (joint.mass_kg - d.water_density * joint.volume_m3) * d.gravity,
                           joint.added_mass_coefficient * d.water_density * joint.volume_m3});
     }
   }
@@ -125,14 +161,20 @@ ChainDescription describe_chain(const MoorDynDeck& deck, std::vector<ChainSegmen
   return d;
 }
 
-std::string scene_text(const ChainDescription& d, const std::string& name, const std::vector<std::string>& needs,
-                       bool seabed, bool as_line) {
+std::string scene_text(const ChainDescription& d,
+                       const std::string& name,
+                       const std::vector<std::string>& needs,
+                       bool seabed,
+                       bool as_line) {
   std::string out = header(d, name, needs) + (as_line ? line_table(d) : cable_table(d));
   if (seabed) {
-    out += fmt::format("[seabed]                          # kBot {} Pa/m times Diam {} m at end A\nz = {}\nfriction = 0.0\n"
-                       "stiffness = {}\n\n",
-                       number(d.seabed_stiffness_n_per_m2 / d.segments.front().diameter_m),
-                       number(d.segments.front().diameter_m), number(*d.seabed_z), number(d.seabed_stiffness_n_per_m2));
+    out += fmt::format(
+        "[seabed]                          # kBot {} Pa/m times Diam {} m at end A\nz = "
+        "{}\nfriction = 0.0\n"
+        "stiffness = {}\n\n",
+        number(d.seabed_stiffness_n_per_m2 / d.segments.front().diameter_m),
+        number(d.segments.front().diameter_m), number(*d.seabed_z),
+        number(d.seabed_stiffness_n_per_m2));
   }
   return out + "[request]\ninplane_modes = 6\noutofplane_modes = 6\n";
 }

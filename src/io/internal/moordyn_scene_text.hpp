@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// A chain of MoorDyn lines described in Catena's terms (docs/how-to/moordyn-import.md), and written as
-// a scene: `[cable]` for one uniform line, `[line]` with segments and points otherwise, `[seabed]`
-// when the line touches it.
+// A chain of MoorDyn lines described in Catena's terms (docs/how-to/moordyn-import.md), and written
+// as a scene: `[cable]` for one uniform line, `[line]` with segments and points otherwise,
+// `[seabed]` when the line touches it.
 
 #include <map>
 #include <optional>
@@ -24,7 +24,7 @@ struct SegmentProperties {
   int line = 0;
   std::string type;
   double length_m = 0.0;
-  double weight_n_per_m = 0.0;      ///< (MassDen - rho_w pi/4 Diam^2) g
+  double weight_n_per_m = 0.0;  ///< (MassDen - rho_w pi/4 Diam^2) g
   double axial_stiffness_n = 0.0;
   double mass_kg_per_m = 0.0;
   double added_mass_kg_per_m = 0.0;  ///< Ca rho_w pi/4 Diam^2
@@ -35,8 +35,8 @@ struct PointAttachment {
   int point = 0;
   double s_m = 0.0;
   double mass_kg = 0.0;
-  double weight_n = 0.0;      ///< (M - rho_w V) g
-  double added_mass_kg = 0.0; ///< Ca rho_w V
+  double weight_n = 0.0;       ///< (M - rho_w V) g
+  double added_mass_kg = 0.0;  ///< Ca rho_w V
 };
 
 /// The line's plane: end A (the lower held end) at x = 0, end B at the horizontal distance.
@@ -61,12 +61,16 @@ struct ChainDescription {
 };
 
 /// The chain (held end to held end, any direction) described from its lower end.
-ChainDescription describe_chain(const MoorDynDeck& deck, std::vector<ChainSegment> chain,
+ChainDescription describe_chain(const MoorDynDeck& deck,
+                                std::vector<ChainSegment> chain,
                                 const std::map<int, const MoorDynPoint*>& points);
 
 /// The scene file: a header comment (source, conversion, `needs`), then `[cable]` or, when
 /// `as_line`, `[line]`; `[seabed]` when `seabed`; a request for 6 modes per plane.
-std::string scene_text(const ChainDescription& d, const std::string& name, const std::vector<std::string>& needs,
-                       bool seabed, bool as_line);
+std::string scene_text(const ChainDescription& d,
+                       const std::string& name,
+                       const std::vector<std::string>& needs,
+                       bool seabed,
+                       bool as_line);
 
 }  // namespace catena::internal

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "io/internal/process.hpp"
 
-#include <cerrno>
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
+
+#include <cerrno>
 
 #include "catena/core/error.hpp"
 
@@ -23,7 +24,8 @@ class FileActions {
 
   // Both stdout and stderr to `file`.
   void redirect_output(const std::string& file) {
-    posix_spawn_file_actions_addopen(&actions_, STDOUT_FILENO, file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&actions_, STDOUT_FILENO, file.c_str(),
+                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&actions_, STDOUT_FILENO, STDERR_FILENO);
   }
   const posix_spawn_file_actions_t* get() const { return &actions_; }
@@ -34,8 +36,10 @@ class FileActions {
 
 }  // namespace
 
-int run_process(const std::vector<std::string>& arguments, const std::filesystem::path& output_file) {
-  if (arguments.empty()) throw InvalidInput("run_process: empty argument vector (no program to run)");
+int run_process(const std::vector<std::string>& arguments,
+                const std::filesystem::path& output_file) {
+  if (arguments.empty())
+    throw InvalidInput("run_process: empty argument vector (no program to run)");
   std::vector<char*> argv;
   for (const auto& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);

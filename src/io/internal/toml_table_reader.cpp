@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "io/internal/toml_table_reader.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <sstream>
 
 #include "catena/core/error.hpp"
@@ -25,7 +26,8 @@ std::size_t skip_string(const std::string& text, std::size_t i, int& line) {
       if (k < text.size() && text[k] == '\n') ++line;
       continue;
     }
-    if (text[k] != quote || (multi_line && text.compare(k, 3, std::string(3, quote)) != 0)) continue;
+    if (text[k] != quote || (multi_line && text.compare(k, 3, std::string(3, quote)) != 0))
+      continue;
     return k + open;
   }
   return text.size();
@@ -51,8 +53,9 @@ void check_nesting_depth(const std::string& text, const std::string& origin) {
     if (c == '[' || c == '{') ++depth;
     if ((c == ']' || c == '}') && depth > 0) --depth;
     if (depth > kMaxTomlNesting) {
-      throw ParseError(fmt::format("{}: line {}: arrays and inline tables nested deeper than {} levels (the limit)",
-                                   origin, line, kMaxTomlNesting));
+      throw ParseError(fmt::format(
+          "{}: line {}: arrays and inline tables nested deeper than {} levels (the limit)", origin,
+          line, kMaxTomlNesting));
     }
     ++i;
   }
@@ -106,8 +109,11 @@ double TableReader::number(const std::string& key, double fallback) {
   return value ? to_number(*value, key) : fallback;
 }
 
-double TableReader::checked(const std::string& key, bool (*ok)(double), const char* rule,
-                            const char* unit, std::optional<double> fallback) {
+double TableReader::checked(const std::string& key,
+                            bool (*ok)(double),
+                            const char* rule,
+                            const char* unit,
+                            std::optional<double> fallback) {
   const double value = fallback && !has(key) ? number(key, *fallback) : number(key);
   if (!std::isfinite(value) || !ok(value)) {
     throw InvalidInput(fmt::format("{} = {}: must be {} [{}]", where(key), value, rule, unit));
@@ -129,11 +135,15 @@ long TableReader::integer(const std::string& key, long fallback) {
   return static_cast<long>(value->as_integer());
 }
 
-long TableReader::read_integer(const std::string& key, long low, long high, std::optional<long> fallback) {
+long TableReader::read_integer(const std::string& key,
+                               long low,
+                               long high,
+                               std::optional<long> fallback) {
   if (fallback && !has(key)) return *fallback;
   const long value = integer(key);
   if (value < low || value > high) {
-    throw InvalidInput(fmt::format("{} = {}: must be an integer in [{}, {}]", where(key), value, low, high));
+    throw InvalidInput(
+        fmt::format("{} = {}: must be an integer in [{}, {}]", where(key), value, low, high));
   }
   return value;
 }
@@ -143,7 +153,8 @@ std::vector<long> TableReader::integers(const std::string& key, long low, long h
   for (double x : numbers(key)) {
     // The range test comes first: casting a double outside long's range is undefined.
     if (!(x >= static_cast<double>(low) && x <= static_cast<double>(high)) || x != std::floor(x)) {
-      throw InvalidInput(fmt::format("{}: entry {} must be an integer in [{}, {}]", where(key), x, low, high));
+      throw InvalidInput(
+          fmt::format("{}: entry {} must be an integer in [{}, {}]", where(key), x, low, high));
     }
     out.push_back(static_cast<long>(x));
   }
@@ -154,7 +165,8 @@ bool TableReader::boolean(const std::string& key, bool fallback) {
   const toml::value* value = find(key);
   if (!value) return fallback;
   if (!value->is_boolean()) {
-    throw ParseError(fmt::format("{}: expected true or false, got {}", where(key), type_name(*value)));
+    throw ParseError(
+        fmt::format("{}: expected true or false, got {}", where(key), type_name(*value)));
   }
   return value->as_boolean();
 }
@@ -176,12 +188,14 @@ std::string TableReader::string(const std::string& key, const std::string& fallb
 std::vector<double> TableReader::numbers(const std::string& key) {
   const toml::value& value = require(key);
   if (!value.is_array()) {
-    throw ParseError(fmt::format("{}: expected an array of numbers, got {}", where(key), type_name(value)));
+    throw ParseError(
+        fmt::format("{}: expected an array of numbers, got {}", where(key), type_name(value)));
   }
   std::vector<double> out;
   for (const auto& item : value.as_array()) {
     const double x = to_number(item, key);
-    if (!std::isfinite(x)) throw InvalidInput(fmt::format("{}: entry {} is not finite", where(key), x));
+    if (!std::isfinite(x))
+      throw InvalidInput(fmt::format("{}: entry {} is not finite", where(key), x));
     out.push_back(x);
   }
   return out;
@@ -190,7 +204,8 @@ std::vector<double> TableReader::numbers(const std::string& key) {
 std::vector<std::string> TableReader::strings(const std::string& key) {
   const toml::value& value = require(key);
   if (!value.is_array()) {
-    throw ParseError(fmt::format("{}: expected an array of strings, got {}", where(key), type_name(value)));
+    throw ParseError(
+        fmt::format("{}: expected an array of strings, got {}", where(key), type_name(value)));
   }
   std::vector<std::string> out;
   for (const auto& item : value.as_array()) {
@@ -205,7 +220,8 @@ std::vector<std::string> TableReader::strings(const std::string& key) {
 Vec2 TableReader::point(const std::string& key) {
   const std::vector<double> xs = numbers(key);
   if (xs.size() != 2) {
-    throw InvalidInput(fmt::format("{}: expected [x, z] (2 numbers) [m], got {} numbers", where(key), xs.size()));
+    throw InvalidInput(
+        fmt::format("{}: expected [x, z] (2 numbers) [m], got {} numbers", where(key), xs.size()));
   }
   return {xs[0], xs[1]};
 }

@@ -15,8 +15,9 @@
 
 namespace catena::internal {
 
-/// Deepest nesting of arrays and inline tables accepted in a TOML file (docs/reference/scene-format.md,
-/// "Limits"): our deepest is 2; the parser recurses once per level.
+/// Deepest nesting of arrays and inline tables accepted in a TOML file
+/// (docs/reference/scene-format.md, "Limits"): our deepest is 2; the parser recurses once per
+/// level.
 inline constexpr int kMaxTomlNesting = 64;
 
 /// Parses TOML text; a syntax error, or nesting deeper than kMaxTomlNesting, is a ParseError
@@ -40,13 +41,19 @@ class TableReader {
   double number(const std::string& key);
   double number(const std::string& key, double fallback);
   /// A finite number that must satisfy `ok`; `rule` and `unit` go into the InvalidInput message.
-  double checked(const std::string& key, bool (*ok)(double), const char* rule, const char* unit,
+  double checked(const std::string& key,
+                 bool (*ok)(double),
+                 const char* rule,
+                 const char* unit,
                  std::optional<double> fallback = std::nullopt);
   long integer(const std::string& key);
   long integer(const std::string& key, long fallback);
   /// An integer in [low, high] (`fallback` when absent; required without one). A value outside
   /// the range is an InvalidInput naming the key and the range, never a wrapped cast.
-  long read_integer(const std::string& key, long low, long high, std::optional<long> fallback = std::nullopt);
+  long read_integer(const std::string& key,
+                    long low,
+                    long high,
+                    std::optional<long> fallback = std::nullopt);
   /// An array of integers in [low, high] (required); whole numbers written as floats (2.0) count.
   std::vector<long> integers(const std::string& key, long low, long high);
   bool boolean(const std::string& key, bool fallback);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "io/report/document.hpp"
 
-#include <cstdint>
 #include <fmt/format.h>
+
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 
@@ -37,11 +38,13 @@ std::string markdown_table(const Table& t) {
 }
 
 const char* kStyle =
-    "body{font-family:system-ui,sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;color:#222}\n"
+    "body{font-family:system-ui,sans-serif;max-width:1200px;margin:2em auto;padding:0 "
+    "1em;color:#222}\n"
     "table{border-collapse:collapse;margin:0.5em 0 1.5em;font-size:0.9em}\n"
     "th,td{border:1px solid #ccc;padding:3px 8px;text-align:right}th{background:#f0f0f0}\n"
     "td:first-child,th:first-child{text-align:left}\n"
-    ".PASS{color:#176117}.FAIL{color:#b00;font-weight:bold}.SOURCE{color:#a15c00;font-weight:bold}\n"
+    ".PASS{color:#176117}.FAIL{color:#b00;font-weight:bold}.SOURCE{color:#a15c00;font-weight:bold}"
+    "\n"
     "figure{margin:1em 0}figure img{max-width:100%;border:1px solid #ddd}\n"
     "figcaption{font-size:0.9em;color:#555}h2{border-bottom:1px solid #ccc;margin-top:2em}\n";
 
@@ -53,8 +56,10 @@ std::string html_table(const Table& t) {
     out += "<tr>";
     for (const auto& cell : row) {
       // Verdict cells carry their verdict as a class (coloured by kStyle).
-      const bool verdict = cell == "PASS" || cell == "FAIL" || cell == "SOURCE" || cell == "WARN" || cell == "SKIP";
-      out += (verdict ? "<td class=\"" + cell + "\">" : std::string("<td>")) + html_escape(cell) + "</td>";
+      const bool verdict =
+          cell == "PASS" || cell == "FAIL" || cell == "SOURCE" || cell == "WARN" || cell == "SKIP";
+      out += (verdict ? "<td class=\"" + cell + "\">" : std::string("<td>")) + html_escape(cell) +
+             "</td>";
     }
     out += "</tr>\n";
   }
@@ -63,15 +68,18 @@ std::string html_table(const Table& t) {
 
 std::string html_block(const Block& block) {
   if (const auto* h = std::get_if<Heading>(&block)) {
-    return fmt::format("<h{0} id=\"{2}\">{1}</h{0}>\n", h->level, html_escape(h->text), html_escape(h->anchor));
+    return fmt::format("<h{0} id=\"{2}\">{1}</h{0}>\n", h->level, html_escape(h->text),
+                       html_escape(h->anchor));
   }
-  if (const auto* p = std::get_if<Paragraph>(&block)) return "<p>" + html_escape(p->text) + "</p>\n";
+  if (const auto* p = std::get_if<Paragraph>(&block))
+    return "<p>" + html_escape(p->text) + "</p>\n";
   if (const auto* t = std::get_if<Table>(&block)) return html_table(*t);
   const auto& img = std::get<Image>(block);
   // PNG from figures.py, SVG from the library's own plots (io/report/svg_plot.hpp).
   const char* type = img.file.extension() == ".svg" ? "image/svg+xml" : "image/png";
   return "<figure><img alt=\"" + html_escape(img.caption) + "\" src=\"data:" + type + ";base64," +
-         base64(read_binary(img.file)) + "\"><figcaption>" + html_escape(img.caption) + "</figcaption></figure>\n";
+         base64(read_binary(img.file)) + "\"><figcaption>" + html_escape(img.caption) +
+         "</figcaption></figure>\n";
 }
 
 }  // namespace
@@ -90,11 +98,20 @@ std::string html_escape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -102,7 +119,9 @@ std::string html_escape(const std::string& text) {
 
 std::string base64(const std::string& bytes) {
   static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  auto byte = [&](std::size_t i) { return static_cast<unsigned>(static_cast<std::uint8_t>(bytes[i])); };
+  auto byte = [&](std::size_t i) {
+    return static_cast<unsigned>(static_cast<std::uint8_t>(bytes[i]));
+  };
   std::string out;
   std::size_t i = 0;
   for (; i + 2 < bytes.size(); i += 3) {

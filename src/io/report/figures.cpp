@@ -2,6 +2,7 @@
 #include "io/report/figures.hpp"
 
 #include <fmt/format.h>
+
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -10,20 +11,24 @@
 
 namespace catena::internal {
 
-std::vector<Image> draw_figures(const std::filesystem::path& results_json, const FigureInputs& inputs,
-                                const std::filesystem::path& figures_dir, std::string& note) {
+std::vector<Image> draw_figures(const std::filesystem::path& results_json,
+                                const FigureInputs& inputs,
+                                const std::filesystem::path& figures_dir,
+                                std::string& note) {
   if (!std::filesystem::exists(inputs.script)) {
     note = "figures not drawn: " + inputs.script.string() + " not found";
     return {};
   }
   std::filesystem::create_directories(figures_dir);
   const std::filesystem::path log = figures_dir / "figures.log";
-  const int status = run_process({inputs.python, inputs.script.string(), "--results", results_json.string(),
-                                  "--published", inputs.published_dir.string(), "--time-vs-error",
-                                  inputs.time_vs_error.string(), "--out", figures_dir.string()},
-                                 log);
+  const int status =
+      run_process({inputs.python, inputs.script.string(), "--results", results_json.string(),
+                   "--published", inputs.published_dir.string(), "--time-vs-error",
+                   inputs.time_vs_error.string(), "--out", figures_dir.string()},
+                  log);
   if (status != 0) {
-    note = fmt::format("figures not drawn: '{}' failed (status {}); see {}", inputs.python, status, log.string());
+    note = fmt::format("figures not drawn: '{}' failed (status {}); see {}", inputs.python, status,
+                       log.string());
     return {};
   }
   std::ifstream index(figures_dir / "index.json");

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The analytic models' actual error (asymptotic, airy) against the most accurate exact solver
 // that ran, over the suite: by eps with lambda^2 and phi ranges, and the fitted order in eps.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <map>
 
 #include "catena/io/csv_table.hpp"
@@ -47,8 +48,9 @@ std::map<int, std::pair<double, double>> omegas(const json& output, const char* 
   for (const auto& m : list_or_empty(output[plane], key::modes)) {
     if (!m[key::omega_rad_s].is_number()) continue;
     const json& estimate = m.value(key::relative_error_estimate, json(nullptr));
-    out[m.value(key::index, 0)] = {m[key::omega_rad_s].get<double>(),
-                                   estimate.is_number() ? std::max(0.0, estimate.get<double>()) : 0.0};
+    out[m.value(key::index, 0)] = {
+        m[key::omega_rad_s].get<double>(),
+        estimate.is_number() ? std::max(0.0, estimate.get<double>()) : 0.0};
   }
   return out;
 }
@@ -60,7 +62,9 @@ void collect_scene(const json& scene, std::vector<ErrorPoint>& points) {
   for (const char* plane : {key::inplane, key::outofplane}) {
     const char* reference = nullptr;
     for (const char* r : kReferenceOrder) {
-      if (!reference && solvers.contains(r) && usable(solvers[r]) && !omegas(solvers[r], plane).empty()) reference = r;
+      if (!reference && solvers.contains(r) && usable(solvers[r]) &&
+          !omegas(solvers[r], plane).empty())
+        reference = r;
     }
     if (!reference) continue;
     const auto exact = omegas(solvers[reference], plane);
@@ -69,7 +73,8 @@ void collect_scene(const json& scene, std::vector<ErrorPoint>& points) {
       for (const auto& [index, value] : omegas(solvers[model], plane)) {
         if (!exact.count(index)) continue;
         const auto [truth, truth_estimate] = exact.at(index);
-        points.push_back({model, plane, scene.value(key::name, ""), reference, g.value(key::eps, 0.0),
+        points.push_back({model, plane, scene.value(key::name, ""), reference,
+                          g.value(key::eps, 0.0),
                           g[key::lambda2].is_number() ? g[key::lambda2].get<double>() : INFINITY,
                           g.value(key::chord_angle_deg, 0.0), index,
                           std::abs(value.first - truth) / std::abs(truth), truth_estimate});
@@ -121,18 +126,29 @@ std::vector<std::pair<double, double>> scene_points(const std::vector<const Erro
   return out;
 }
 
-std::vector<std::string> fit_row(const std::string& model, const std::string& plane, const std::string& lambda2,
-                                 const std::string& phi, const std::vector<std::pair<double, double>>& eps_error) {
+std::vector<std::string> fit_row(const std::string& model,
+                                 const std::string& plane,
+                                 const std::string& lambda2,
+                                 const std::string& phi,
+                                 const std::vector<std::pair<double, double>>& eps_error) {
   double lo = INFINITY, hi = 0.0;
   for (const auto& [eps, error] : eps_error) lo = std::min(lo, eps), hi = std::max(hi, eps);
   const Fit fit = fit_order(eps_error);
-  return {model, plane, lambda2, phi, std::to_string(fit.scenes), fit.scenes ? range_text(lo, hi) : "-",
-          number_text(fit.order, "{:.2f}"), number_text(fit.constant, "{:.3g}")};
+  return {model,
+          plane,
+          lambda2,
+          phi,
+          std::to_string(fit.scenes),
+          fit.scenes ? range_text(lo, hi) : "-",
+          number_text(fit.order, "{:.2f}"),
+          number_text(fit.constant, "{:.3g}")};
 }
 
 void add_fit_table(Document& out, const PointGroup& groups) {
-  Table t{{"model", "plane", "lambda^2", "phi [deg]", "scenes fitted", "eps range", "fitted order p", "constant C"},
-          {}, "model-error"};
+  Table t{{"model", "plane", "lambda^2", "phi [deg]", "scenes fitted", "eps range",
+           "fitted order p", "constant C"},
+          {},
+          "model-error"};
   for (const auto& [what, points] : groups) {
     t.rows.push_back(fit_row(what.first, what.second, "all", "all", scene_points(points)));
     std::map<std::pair<std::string, std::string>, std::vector<const ErrorPoint*>> by_group;
@@ -143,20 +159,25 @@ void add_fit_table(Document& out, const PointGroup& groups) {
       const auto eps_error = scene_points(list);
       std::vector<double> distinct;
       for (const auto& e : eps_error) {
-        if (std::find(distinct.begin(), distinct.end(), e.first) == distinct.end()) distinct.push_back(e.first);
+        if (std::find(distinct.begin(), distinct.end(), e.first) == distinct.end())
+          distinct.push_back(e.first);
       }
-      if (distinct.size() >= kMinDistinctEps) t.rows.push_back(fit_row(what.first, what.second, group.first, group.second, eps_error));
+      if (distinct.size() >= kMinDistinctEps)
+        t.rows.push_back(fit_row(what.first, what.second, group.first, group.second, eps_error));
     }
   }
   add_table_or_none(out, std::move(t));
 }
 
 void add_by_eps_table(Document& out, const PointGroup& groups) {
-  Table t{{"model", "plane", "eps", "scenes", "lambda^2", "phi [deg]", "modes", "median error", "max error"}, {},
+  Table t{{"model", "plane", "eps", "scenes", "lambda^2", "phi [deg]", "modes", "median error",
+           "max error"},
+          {},
           "model-error"};
   for (const auto& [what, points] : groups) {
     std::map<double, std::vector<const ErrorPoint*>> by_eps;
-    for (const ErrorPoint* p : points) by_eps[std::stod(fmt::format("{:.3g}", p->eps))].push_back(p);
+    for (const ErrorPoint* p : points)
+      by_eps[std::stod(fmt::format("{:.3g}", p->eps))].push_back(p);
     for (const auto& [eps, list] : by_eps) {
       std::vector<double> errors;
       std::map<std::string, int> scenes;
@@ -168,23 +189,26 @@ void add_by_eps_table(Document& out, const PointGroup& groups) {
         p_lo = std::min(p_lo, p->phi_deg), p_hi = std::max(p_hi, p->phi_deg);
       }
       std::sort(errors.begin(), errors.end());
-      t.rows.push_back({what.first, what.second, fmt::format("{:.3g}", eps), std::to_string(scenes.size()),
-                        range_text(l_lo, l_hi), range_text(p_lo, p_hi), std::to_string(errors.size()),
-                        fmt::format("{:.2e}", errors[errors.size() / 2]), fmt::format("{:.2e}", errors.back())});
+      t.rows.push_back(
+          {what.first, what.second, fmt::format("{:.3g}", eps), std::to_string(scenes.size()),
+           range_text(l_lo, l_hi), range_text(p_lo, p_hi), std::to_string(errors.size()),
+           fmt::format("{:.2e}", errors[errors.size() / 2]), fmt::format("{:.2e}", errors.back())});
     }
   }
   add_table_or_none(out, std::move(t));
 }
 
 void write_points(const std::vector<ErrorPoint>& points, const std::filesystem::path& data_dir) {
-  CsvTable csv{{"Actual relative error of the analytic models against the most accurate exact solver that ran "
+  CsvTable csv{{"Actual relative error of the analytic models against the most accurate exact "
+                "solver that ran "
                 "(reference). Written by catena report from report.json."},
-               {"model", "plane", "scene", "eps", "lambda2", "phi_deg", "mode", "relative_error", "reference"},
+               {"model", "plane", "scene", "eps", "lambda2", "phi_deg", "mode", "relative_error",
+                "reference"},
                {}};
   for (const auto& p : points) {
-    csv.rows.push_back({p.model, p.plane, p.scene, fmt::format("{:.17g}", p.eps), fmt::format("{:.17g}", p.lambda2),
-                        fmt::format("{:.17g}", p.phi_deg), std::to_string(p.mode), fmt::format("{:.6e}", p.error),
-                        p.reference});
+    csv.rows.push_back({p.model, p.plane, p.scene, fmt::format("{:.17g}", p.eps),
+                        fmt::format("{:.17g}", p.lambda2), fmt::format("{:.17g}", p.phi_deg),
+                        std::to_string(p.mode), fmt::format("{:.6e}", p.error), p.reference});
   }
   std::filesystem::create_directories(data_dir);
   write_csv_table(data_dir / "model-error.csv", csv);
@@ -197,15 +221,21 @@ void add_model_error(Document& out, const json& document, const std::filesystem:
   for (const auto& scene : document[key::scenes]) collect_scene(scene, points);
   write_points(points, data_dir);
   out.push_back(Heading{2, "Model error of the analytic solvers", "model-error"});
-  out.push_back(Paragraph{fmt::format(
-      "asymptotic and airy against the most accurate exact solver that ran on the scene (frobenius, else shooting, "
-      "else fe), relative error of each mode's frequency. Fitted order: least squares of ln(error) on ln(eps), "
-      "error ~ C eps^p, one point per scene (the median over its modes) over the asymptotic range: eps <= {:g} "
-      "(the models' validity-warning threshold) and a median error at least {:g} x the reference's own estimate "
-      "(below, the reference's error shows). First over every scene ('all': lambda^2 and phi vary too), then for each "
-      "(lambda^2, phi) with at least {} distinct eps. The in-plane error also carries the strain term T0/(2 EA), "
-      "which does not scale with eps. Every point: data/model-error.csv.",
-      kAsymptoticRangeEps, kMeasurableFactor, kMinDistinctEps)});
+  out.push_back(
+      Paragraph{fmt::format("asymptotic and airy against the most accurate exact solver that ran "
+                            "on the scene (frobenius, else shooting, "
+                            "else fe), relative error of each mode's frequency. Fitted order: "
+                            "least squares of ln(error) on ln(eps), "
+                            "error ~ C eps^p, one point per scene (the median over its modes) over "
+                            "the asymptotic range: eps <= {:g} "
+                            "(the models' validity-warning threshold) and a median error at least "
+                            "{:g} x the reference's own estimate "
+                            "(below, the reference's error shows). First over every scene ('all': "
+                            "lambda^2 and phi vary too), then for each "
+                            "(lambda^2, phi) with at least {} distinct eps. The in-plane error "
+                            "also carries the strain term T0/(2 EA), "
+                            "which does not scale with eps. Every point: data/model-error.csv.",
+                            kAsymptoticRangeEps, kMeasurableFactor, kMinDistinctEps)});
   PointGroup groups;
   for (const auto& p : points) groups[{p.model, p.plane}].push_back(&p);
   add_fit_table(out, groups);

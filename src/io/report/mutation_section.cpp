@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The mutation score of `catena verify --mutation` (docs/explanation/mutation.md): by solver and scene
-// family, by solver and quantity, and every uncaught mutation.
+// The mutation score of `catena verify --mutation` (docs/explanation/mutation.md): by solver and
+// scene family, by solver and quantity, and every uncaught mutation.
 #include <fmt/format.h>
+
 #include <map>
 
 #include "io/report/sections.hpp"
@@ -13,13 +14,18 @@ struct Tally {
   int made = 0, caught = 0;
 };
 
-std::string percent(const Tally& t) { return t.made ? fmt::format("{:.1f}%", 100.0 * t.caught / t.made) : "-"; }
+std::string percent(const Tally& t) {
+  return t.made ? fmt::format("{:.1f}%", 100.0 * t.caught / t.made) : "-";
+}
 
-void add_tally_table(Document& out, const std::string& second, const std::map<std::pair<std::string, std::string>, Tally>& tallies) {
+void add_tally_table(Document& out,
+                     const std::string& second,
+                     const std::map<std::pair<std::string, std::string>, Tally>& tallies) {
   Table t{{"solver", second, "made", "caught", "uncaught", "caught [%]"}, {}, "mutation"};
   for (const auto& [what, tally] : tallies) {
-    t.rows.push_back({what.first, what.second, std::to_string(tally.made), std::to_string(tally.caught),
-                      std::to_string(tally.made - tally.caught), percent(tally)});
+    t.rows.push_back({what.first, what.second, std::to_string(tally.made),
+                      std::to_string(tally.caught), std::to_string(tally.made - tally.caught),
+                      percent(tally)});
   }
   add_table_or_none(out, std::move(t));
 }
@@ -42,7 +48,10 @@ std::string joined_estimates(const json& list) {
 
 void add_uncaught(Document& out, const json& uncaught) {
   out.push_back(Heading{3, "Uncaught mutations", "mutation-uncaught"});
-  Table t{{"scene", "solver", "quantity", "plane", "modes", "sizes", "own estimates", "exact witness"}, {}, "uncaught"};
+  Table t{
+      {"scene", "solver", "quantity", "plane", "modes", "sizes", "own estimates", "exact witness"},
+      {},
+      "uncaught"};
   for (const auto& u : uncaught) {
     t.rows.push_back({u.value(key::scene, ""), u.value(key::solver, ""), u.value(key::quantity, ""),
                       u.value(key::plane, ""), joined_numbers(list_or_empty(u, key::modes), "{:g}"),
@@ -64,16 +73,23 @@ void add_mutation(Document& out, const json& document) {
   const json beyond_json = m.value(key::exact_beyond_estimate, json::object());
   const Tally beyond{beyond_json.value(key::made, 0), beyond_json.value(key::caught, 0)};
   out.push_back(Paragraph{fmt::format(
-      "One result at a time made wrong, then the scene's checks re-run on the mutated results (nothing re-solved): "
-      "a frequency by {:g} x its solver's accuracy target (shooting 10 rtol + root_tolerance, frobenius 10 tolerance, "
-      "fe its scene's tolerance or else {:g}, asymptotic and airy their model-error estimate), a mode shape by a mix with its neighbour so that 1 - MAC is {:g} x the "
-      "widest MAC tolerance, a forced max |tension| by {:g} relative. Caught: some check of the scene went to FAIL "
-      "(docs/explanation/mutation.md). Exact solvers (fe, shooting, frobenius) where another exact solver ran: {} of {} caught "
-      "({}); of those, the changes larger than the mutated value's own error estimate (beyond what its solver "
+      "One result at a time made wrong, then the scene's checks re-run on the mutated results "
+      "(nothing re-solved): "
+      "a frequency by {:g} x its solver's accuracy target (shooting 10 rtol + root_tolerance, "
+      "frobenius 10 tolerance, "
+      "fe its scene's tolerance or else {:g}, asymptotic and airy their model-error estimate), a "
+      "mode shape by a mix with its neighbour so that 1 - MAC is {:g} x the "
+      "widest MAC tolerance, a forced max |tension| by {:g} relative. Caught: some check of the "
+      "scene went to FAIL "
+      "(docs/explanation/mutation.md). Exact solvers (fe, shooting, frobenius) where another exact "
+      "solver ran: {} of {} caught "
+      "({}); of those, the changes larger than the mutated value's own error estimate (beyond what "
+      "its solver "
       "claims): {} of {} caught ({}). {:.1f} s on {} threads.",
-      m.value(key::frequency_factor, 0.0), m.value(key::fe_accuracy_target, 0.0), m.value(key::shape_factor, 0.0),
-      m.value(key::forced_tension_relative, 0.0), target.caught, target.made, percent(target), beyond.caught,
-      beyond.made, percent(beyond), m.value(key::wall_time_s, 0.0), m.value(key::threads, 0))});
+      m.value(key::frequency_factor, 0.0), m.value(key::fe_accuracy_target, 0.0),
+      m.value(key::shape_factor, 0.0), m.value(key::forced_tension_relative, 0.0), target.caught,
+      target.made, percent(target), beyond.caught, beyond.made, percent(beyond),
+      m.value(key::wall_time_s, 0.0), m.value(key::threads, 0))});
   std::map<std::pair<std::string, std::string>, Tally> by_family, by_quantity;
   for (const auto& t : list_or_empty(m, key::tallies)) {
     for (auto* table : {&by_family, &by_quantity}) {

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "io/report/report_data.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "catena/io/csv_table.hpp"
 
@@ -24,9 +25,10 @@ void add_frequencies(const json& scene, CsvTable& frequencies) {
     for (const char* plane : {key::inplane, key::outofplane}) {
       if (!output.contains(plane)) continue;
       for (const auto& mode : output[plane][key::modes]) {
-        frequencies.rows.push_back({name, solver, plane, cell(mode[key::index]), cell(mode[key::omega_rad_s]),
-                                    cell(mode[key::frequency_hz]), cell(mode[key::k_l_over_pi]),
-                                    cell(mode[key::gale_ratio]), cell(mode[key::relative_error_estimate])});
+        frequencies.rows.push_back({name, solver, plane, cell(mode[key::index]),
+                                    cell(mode[key::omega_rad_s]), cell(mode[key::frequency_hz]),
+                                    cell(mode[key::k_l_over_pi]), cell(mode[key::gale_ratio]),
+                                    cell(mode[key::relative_error_estimate])});
       }
     }
   }
@@ -35,12 +37,20 @@ void add_frequencies(const json& scene, CsvTable& frequencies) {
 void add_checks(const json& scene, CsvTable& checks, CsvTable& published) {
   const std::string name = scene.value(key::name, "");
   for (const auto& check : scene[key::checks]) {
-    std::vector<std::string> row = {name, cell(check[key::check]), cell(check[key::compare]),
-                                    cell(check[key::plane]), cell(check[key::mode]), cell(check[key::value_a]),
-                                    cell(check[key::value_b]), cell(check[key::measured]),
-                                    cell(check[key::tolerance]), cell(check[key::verdict]), cell(check[key::detail])};
+    std::vector<std::string> row = {name,
+                                    cell(check[key::check]),
+                                    cell(check[key::compare]),
+                                    cell(check[key::plane]),
+                                    cell(check[key::mode]),
+                                    cell(check[key::value_a]),
+                                    cell(check[key::value_b]),
+                                    cell(check[key::measured]),
+                                    cell(check[key::tolerance]),
+                                    cell(check[key::verdict]),
+                                    cell(check[key::detail])};
     if (check.value(key::check, "") == "published") {
-      published.rows.push_back({name, row[2], row[3], row[4], row[5], row[6], row[7], row[8], row[9], row[10]});
+      published.rows.push_back(
+          {name, row[2], row[3], row[4], row[5], row[6], row[7], row[8], row[9], row[10]});
     }
     checks.rows.push_back(std::move(row));
   }
@@ -71,17 +81,20 @@ bool has_tag(const json& scene, const std::string& tag) {
 }
 
 void write_data_tables(const json& document, const std::filesystem::path& dir) {
-  CsvTable frequencies{{"Every natural frequency every solver returned. Written by catena report from report.json."},
-                       {"scene", "solver", "plane", "mode", "omega_rad_s", "frequency_hz", "k_l_over_pi",
-                        "gale_ratio", "relative_error_estimate"},
-                       {}};
-  CsvTable checks{{"Every check of the run. measured and tolerance: see each check kind in verification/README.md."},
-                  {"scene", "check", "compare", "plane", "mode", "value_a", "value_b", "measured", "tolerance",
-                   "verdict", "detail"},
+  CsvTable frequencies{
+      {"Every natural frequency every solver returned. Written by catena report from report.json."},
+      {"scene", "solver", "plane", "mode", "omega_rad_s", "frequency_hz", "k_l_over_pi",
+       "gale_ratio", "relative_error_estimate"},
+      {}};
+  CsvTable checks{{"Every check of the run. measured and tolerance: see each check kind in "
+                   "verification/README.md."},
+                  {"scene", "check", "compare", "plane", "mode", "value_a", "value_b", "measured",
+                   "tolerance", "verdict", "detail"},
                   {}};
-  CsvTable published{{"Our values beside the published ones (value_a = ours, value_b = printed, in the table's unit)."},
-                     {"scene", "compare", "plane", "mode", "ours", "printed", "abs_difference", "tolerance", "verdict",
-                      "detail"},
+  CsvTable published{{"Our values beside the published ones (value_a = ours, value_b = printed, in "
+                      "the table's unit)."},
+                     {"scene", "compare", "plane", "mode", "ours", "printed", "abs_difference",
+                      "tolerance", "verdict", "detail"},
                      {}};
   for (const auto& scene : document[key::scenes]) {
     add_frequencies(scene, frequencies);
@@ -102,7 +115,8 @@ TimeToAccuracy read_time_to_accuracy(const std::filesystem::path& csv) {
     const std::string& solver = table.text(row, "solver");
     const double time_s = table.number(row, "time_s").value_or(std::nan(""));
     const double error = table.number(row, "max_rel_error").value_or(std::nan(""));
-    if (std::find(result.cases.begin(), result.cases.end(), name) == result.cases.end()) result.cases.push_back(name);
+    if (std::find(result.cases.begin(), result.cases.end(), name) == result.cases.end())
+      result.cases.push_back(name);
     for (double target : kAccuracyTargets) {
       if (!(error <= target)) continue;
       auto& slot = result.best_time_s[name][solver];

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "catena/io/report.hpp"
-
 #include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 #include "catena/io/file_access.hpp"
+#include "catena/io/report.hpp"
 #include "io/internal/check_table.hpp"
 #include "io/internal/data_dir.hpp"
 #include "io/report/figures.hpp"
@@ -19,14 +18,17 @@ json read_results(const std::filesystem::path& results_json) {
   // The suite's report.json is about 10 MB (far more with shapes asked); a regular file is required
   // (not a FIFO or device).
   constexpr std::uintmax_t kMaxResultsBytes = std::uintmax_t(4) << 30;
-  json document = json::parse(read_input_file(results_json, "results JSON", kMaxResultsBytes), nullptr, false);
+  json document =
+      json::parse(read_input_file(results_json, "results JSON", kMaxResultsBytes), nullptr, false);
   if (document.is_discarded() || !document.contains(internal::key::scenes)) {
-    throw ParseError(fmt::format("{}: not a catena results JSON (no \"scenes\")", path_text(results_json)));
+    throw ParseError(
+        fmt::format("{}: not a catena results JSON (no \"scenes\")", path_text(results_json)));
   }
   try {
     internal::expand_check_tables(document);  // the report reads checks as records
   } catch (const nlohmann::json::exception& e) {
-    throw ParseError(fmt::format("{}: malformed check table: {}", path_text(results_json), e.what()));
+    throw ParseError(
+        fmt::format("{}: malformed check table: {}", path_text(results_json), e.what()));
   }
   return document;
 }
@@ -37,19 +39,24 @@ std::filesystem::path resolve_data_dir(const ReportOptions& options) {
   return internal::data_dir().value_or(std::filesystem::path());
 }
 
-void add_figures(internal::Document& out, const std::filesystem::path& results_json, const ReportOptions& options,
+void add_figures(internal::Document& out,
+                 const std::filesystem::path& results_json,
+                 const ReportOptions& options,
                  ReportFiles& files) {
   std::vector<internal::Image> images;
   const std::filesystem::path data = resolve_data_dir(options);
   if (!options.figures) {
     files.figures_note = "figures not drawn (--no-figures)";
   } else if (data.empty() && options.tools_dir.empty()) {
-    files.figures_note = "figures not drawn: no data dir (share/catena) found next to the executable";
+    files.figures_note =
+        "figures not drawn: no data dir (share/catena) found next to the executable";
   } else {
-    const internal::FigureInputs inputs{(options.tools_dir.empty() ? data : options.tools_dir) / "figures.py",
-                                        data / "reference" / "published",
-                                        data / "benchmarks" / "time-vs-error.csv", options.python};
-    images = internal::draw_figures(results_json, inputs, options.out_dir / "figures", files.figures_note);
+    const internal::FigureInputs inputs{
+        (options.tools_dir.empty() ? data : options.tools_dir) / "figures.py",
+        data / "reference" / "published", data / "benchmarks" / "time-vs-error.csv",
+        options.python};
+    images = internal::draw_figures(results_json, inputs, options.out_dir / "figures",
+                                    files.figures_note);
   }
   files.figures = static_cast<int>(images.size());
   out.push_back(internal::Heading{2, "Figures", "figures"});
@@ -77,7 +84,8 @@ ReportFiles write_report(const std::filesystem::path& results_json, const Report
   internal::add_model_error(report, document, files.data_dir);
   const std::filesystem::path data = resolve_data_dir(options);
   if (!data.empty()) {
-    internal::add_time_to_accuracy(report, internal::read_time_to_accuracy(data / "benchmarks" / "time-vs-error.csv"));
+    internal::add_time_to_accuracy(
+        report, internal::read_time_to_accuracy(data / "benchmarks" / "time-vs-error.csv"));
   }
   add_figures(report, results_json, options, files);
   internal::add_scenes(report, document);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "io/report/sections.hpp"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 
 namespace catena::internal {
 namespace {
@@ -51,17 +52,19 @@ std::string scene_info(const json& scene) {
   std::string info = scene.value(key::description, "");
   if (scene.contains(key::groups)) {
     const json& g = scene[key::groups];
-    info += fmt::format(" — eps = {}, phi_a = {} deg, lambda^2 = {}, h = {}", number_text(g[key::eps]),
-                        number_text(g[key::chord_angle_deg]),
-                        g[key::lambda2].is_null() ? std::string("inf") : number_text(g[key::lambda2]),
-                        number_text(g[key::mass_ratio]));
+    info +=
+        fmt::format(" — eps = {}, phi_a = {} deg, lambda^2 = {}, h = {}", number_text(g[key::eps]),
+                    number_text(g[key::chord_angle_deg]),
+                    g[key::lambda2].is_null() ? std::string("inf") : number_text(g[key::lambda2]),
+                    number_text(g[key::mass_ratio]));
     if (g.contains(key::gale)) {
       info += fmt::format(", Gale xi = ({}, {})", number_text(g[key::gale][key::xi1], "{:.4f}"),
                           number_text(g[key::gale][key::xi2], "{:.4f}"));
     }
   }
   if (!scene[key::error].is_null()) info += " — ERROR: " + scene[key::error].get<std::string>();
-  return info + fmt::format(" — {} checks, {} failed.", scene[key::checks].size(), count_checks(scene, "FAIL"));
+  return info + fmt::format(" — {} checks, {} failed.", scene[key::checks].size(),
+                            count_checks(scene, "FAIL"));
 }
 
 // The published value of `mode` in `entry`, or "-".
@@ -75,7 +78,10 @@ std::string published_cell(const json& entry, std::size_t mode) {
 }
 
 // One plane's frequencies: a column per solver and per published source, a row per mode.
-void add_frequency_table(Document& out, const json& scene, const char* plane, const std::string& unit) {
+void add_frequency_table(Document& out,
+                         const json& scene,
+                         const char* plane,
+                         const std::string& unit) {
   std::vector<std::string> solvers;
   std::size_t modes = 0;
   for (const auto& [solver, output] : scene[key::solvers].items()) {
@@ -94,7 +100,8 @@ void add_frequency_table(Document& out, const json& scene, const char* plane, co
   for (const auto* p : published) {
     t.header.push_back(p->value(key::source, "published"));
     const json& listed = p->at(key::modes);
-    modes = std::max(modes, static_cast<std::size_t>(*std::max_element(listed.begin(), listed.end())));
+    modes =
+        std::max(modes, static_cast<std::size_t>(*std::max_element(listed.begin(), listed.end())));
   }
   for (std::size_t i = 0; i < modes; ++i) {
     std::vector<std::string> row = {std::to_string(i + 1)};
@@ -128,8 +135,9 @@ void add_forced_table(Document& out, const json& scene) {
         continue;
       }
       const std::string diagnostic = list[i].value(key::diagnostic, "");
-      row.push_back(diagnostic.empty() ? fmt::format("{:.6g}", list[i].value(key::max_abs_tension_n, 0.0) / H)
-                                       : diagnostic);
+      row.push_back(diagnostic.empty()
+                        ? fmt::format("{:.6g}", list[i].value(key::max_abs_tension_n, 0.0) / H)
+                        : diagnostic);
     }
     t.rows.push_back(row);
   }
@@ -148,16 +156,20 @@ void add_summary(Document& out, const json& document) {
   const json& meta = document[key::catena];
   out.push_back(Heading{1, "Catena verification report", "top"});
   out.push_back(Paragraph{fmt::format(
-      "catena {} (git {}) · {} · {} · {} · {} scenes, {} checks, {} failed, {} source discrepancies",
+      "catena {} (git {}) · {} · {} · {} · {} scenes, {} checks, {} failed, {} source "
+      "discrepancies",
       meta.value(key::version, "?"), meta.value(key::git, "?"), meta.value(key::compiler, "?"),
-      meta.value(key::build_type, "?"), meta.value(key::generated_utc, "?"), document[key::scenes].size(), total,
-      verdicts["FAIL"], verdicts["SOURCE"])});
+      meta.value(key::build_type, "?"), meta.value(key::generated_utc, "?"),
+      document[key::scenes].size(), total, verdicts["FAIL"], verdicts["SOURCE"])});
   Table t{{"verdict", "checks", "meaning"}, {}, "summary"};
   const std::map<std::string, std::string> meaning = {
-      {"PASS", "within tolerance"}, {"FAIL", "beyond tolerance: a defect of ours"},
+      {"PASS", "within tolerance"},
+      {"FAIL", "beyond tolerance: a defect of ours"},
       {"SOURCE", "a published value contradicted by our agreeing solvers (or a reviewed finding)"},
-      {"WARN", "beyond tolerance for a documented reason"}, {"SKIP", "not evaluated (reason given)"}};
-  for (const auto& [verdict, text] : meaning) t.rows.push_back({verdict, std::to_string(verdicts[verdict]), text});
+      {"WARN", "beyond tolerance for a documented reason"},
+      {"SKIP", "not evaluated (reason given)"}};
+  for (const auto& [verdict, text] : meaning)
+    t.rows.push_back({verdict, std::to_string(verdicts[verdict]), text});
   out.push_back(t);
 }
 
@@ -165,17 +177,19 @@ void add_solvers(Document& out, const json& document) {
   out.push_back(Heading{2, "Solvers", "solvers"});
   std::map<std::string, SolverStats> stats;
   for (const auto& scene : document[key::scenes]) {
-    for (const auto& [solver, output] : scene[key::solvers].items()) add_to_stats(output[key::summary], stats[solver]);
+    for (const auto& [solver, output] : scene[key::solvers].items())
+      add_to_stats(output[key::summary], stats[solver]);
   }
-  Table t{{"solver", "scenes run", "converged", "failed", "declined (not applicable)", "median time [ms]",
-           "total time [s]", "largest error estimate"},
+  Table t{{"solver", "scenes run", "converged", "failed", "declined (not applicable)",
+           "median time [ms]", "total time [s]", "largest error estimate"},
           {},
           "solvers"};
   for (auto& [solver, s] : stats) {
     std::sort(s.times_s.begin(), s.times_s.end());
     const double median = s.times_s.empty() ? 0.0 : s.times_s[s.times_s.size() / 2];
-    t.rows.push_back({solver, std::to_string(s.run), std::to_string(s.converged), std::to_string(s.failed),
-                      std::to_string(s.declined), fmt::format("{:.3g}", median * 1e3), fmt::format("{:.3g}", s.time_s),
+    t.rows.push_back({solver, std::to_string(s.run), std::to_string(s.converged),
+                      std::to_string(s.failed), std::to_string(s.declined),
+                      fmt::format("{:.3g}", median * 1e3), fmt::format("{:.3g}", s.time_s),
                       fmt::format("{:.2e}", s.max_estimate)});
   }
   out.push_back(t);
@@ -183,18 +197,24 @@ void add_solvers(Document& out, const json& document) {
 
 void add_failures(Document& out, const json& document) {
   out.push_back(Heading{2, "Failures and warnings", "failures"});
-  Table t{{"scene", "check", "compared", "plane", "mode", "measured", "tolerance", "verdict", "detail"}, {}, "failures"};
+  Table t{
+      {"scene", "check", "compared", "plane", "mode", "measured", "tolerance", "verdict", "detail"},
+      {},
+      "failures"};
   for (const auto& scene : document[key::scenes]) {
     const std::string name = scene.value(key::name, "");
     if (!scene[key::error].is_null()) {
-      t.rows.push_back({name, "scene", "-", "-", "-", "-", "-", "FAIL", scene[key::error].get<std::string>()});
+      t.rows.push_back(
+          {name, "scene", "-", "-", "-", "-", "-", "FAIL", scene[key::error].get<std::string>()});
     }
     for (const auto& check : scene[key::checks]) {
       const std::string verdict = check.value(key::verdict, "");
       if (verdict != "FAIL" && verdict != "WARN") continue;
-      t.rows.push_back({name, check.value(key::check, ""), check.value(key::compare, ""), check.value(key::plane, ""),
-                        std::to_string(check.value(key::mode, 0)), number_text(check[key::measured], "{:.3e}"),
-                        number_text(check[key::tolerance], "{:.3e}"), verdict, check.value(key::detail, "")});
+      t.rows.push_back({name, check.value(key::check, ""), check.value(key::compare, ""),
+                        check.value(key::plane, ""), std::to_string(check.value(key::mode, 0)),
+                        number_text(check[key::measured], "{:.3e}"),
+                        number_text(check[key::tolerance], "{:.3e}"), verdict,
+                        check.value(key::detail, "")});
     }
   }
   add_table_or_none(out, std::move(t));
@@ -216,29 +236,33 @@ void add_stress_outcomes(Document& out, const json& document) {
                                                                     : "diagnosed";
       std::string message = output[key::summary].value(key::message, "");
       if (message.size() > 160) message = message.substr(0, 157) + "...";
-      t.rows.push_back({scene.value(key::name, ""), solver, outcome, std::to_string(failed), message});
+      t.rows.push_back(
+          {scene.value(key::name, ""), solver, outcome, std::to_string(failed), message});
     }
   }
   if (t.rows.empty()) return;
   out.push_back(Heading{2, "Stress suite outcomes", "stress"});
-  out.push_back(Paragraph{"Each solver on each stress scene: accurate (all its checks pass), diagnosed (a "
-                          "clear numerical diagnostic instead of a number), or declined (outside its model)."});
+  out.push_back(Paragraph{
+      "Each solver on each stress scene: accurate (all its checks pass), diagnosed (a "
+      "clear numerical diagnostic instead of a number), or declined (outside its model)."});
   out.push_back(t);
 }
 
 void add_time_to_accuracy(Document& out, const TimeToAccuracy& timing) {
   if (timing.cases.empty()) return;
   out.push_back(Heading{2, "Time to accuracy", "time-to-accuracy"});
-  out.push_back(Paragraph{"Fastest wall time for each solver to reach a relative error on the first six in-plane "
-                          "frequencies (benchmarks/results/time-vs-error.csv; error against shooting at rtol "
-                          "1e-13; 'cannot': no setting reached it)."});
+  out.push_back(Paragraph{
+      "Fastest wall time for each solver to reach a relative error on the first six in-plane "
+      "frequencies (benchmarks/results/time-vs-error.csv; error against shooting at rtol "
+      "1e-13; 'cannot': no setting reached it)."});
   Table t{{"case", "solver", "1e-3", "1e-6", "1e-9"}, {}, "timing"};
   for (const auto& name : timing.cases) {
     if (!timing.best_time_s.count(name)) continue;
     for (const auto& [solver, targets] : timing.best_time_s.at(name)) {
       std::vector<std::string> row = {name, solver};
       for (double target : kAccuracyTargets) {
-        row.push_back(targets.count(target) ? fmt::format("{:.3g} ms", targets.at(target) * 1e3) : "cannot");
+        row.push_back(targets.count(target) ? fmt::format("{:.3g} ms", targets.at(target) * 1e3)
+                                            : "cannot");
       }
       t.rows.push_back(row);
     }
@@ -253,7 +277,8 @@ void add_scenes(Document& out, const json& document) {
     out.push_back(Heading{3, name, name});
     out.push_back(Paragraph{scene_info(scene)});
     const std::string unit = display_unit(scene);
-    for (const char* plane : {key::inplane, key::outofplane}) add_frequency_table(out, scene, plane, unit);
+    for (const char* plane : {key::inplane, key::outofplane})
+      add_frequency_table(out, scene, plane, unit);
     add_forced_table(out, scene);
   }
 }

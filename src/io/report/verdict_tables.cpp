@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The headline tables (checks by kind and by solver pair) and the source discrepancies, one row
 // per published entry.
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <map>
 
 #include "io/report/sections.hpp"
@@ -58,22 +59,32 @@ void add_headline(Document& out, const json& document) {
 namespace {
 
 // A solver's value for published entry `mode` in the entry's unit ("-" when it has none).
-std::string solver_value(const json& scene, const std::string& solver, const json& entry, int mode) {
+std::string solver_value(const json& scene,
+                         const std::string& solver,
+                         const json& entry,
+                         int mode) {
   const json& solvers = scene[key::solvers];
   if (!solvers.contains(solver)) return "-";
   const json& output = solvers[solver];
   const std::string quantity = entry.value(key::quantity, "");
   if (quantity == "forced_max_tension") {
     const json& forced = list_or_empty(output, key::forced);
-    if (mode < 0 || mode >= static_cast<int>(forced.size()) || !forced[mode].value(key::diagnostic, "").empty()) return "-";
-    const double H = scene.contains(key::statics) ? scene[key::statics].value(key::horizontal_force_n, 1.0) : 1.0;
+    if (mode < 0 || mode >= static_cast<int>(forced.size()) ||
+        !forced[mode].value(key::diagnostic, "").empty())
+      return "-";
+    const double H = scene.contains(key::statics)
+                         ? scene[key::statics].value(key::horizontal_force_n, 1.0)
+                         : 1.0;
     return number_text(forced[mode].value(key::max_abs_tension_n, json(nullptr)).is_number()
-                           ? json(forced[mode][key::max_abs_tension_n].get<double>() / H) : json(nullptr), "{:.8g}");
+                           ? json(forced[mode][key::max_abs_tension_n].get<double>() / H)
+                           : json(nullptr),
+                       "{:.8g}");
   }
   const char* plane = quantity == "inplane_frequency" ? key::inplane : key::outofplane;
   if (!output.contains(plane)) return "-";
   for (const auto& m : list_or_empty(output[plane], key::modes)) {
-    if (m.value(key::index, 0) == mode) return number_text(mode_value(m, entry.value(key::unit, "rad/s")), "{:.8g}");
+    if (m.value(key::index, 0) == mode)
+      return number_text(mode_value(m, entry.value(key::unit, "rad/s")), "{:.8g}");
   }
   return "-";
 }
@@ -91,13 +102,16 @@ std::string diagnosis(const std::string& detail) {
 std::vector<std::string> entry_row(const json& scene, const json& entry, int mode, double printed) {
   const std::string quantity = entry.value(key::quantity, "");
   const bool forced = quantity == "forced_max_tension";
-  const std::string plane = forced ? "forced" : quantity.substr(0, quantity.find('_'));  // inplane, outofplane
+  const std::string plane =
+      forced ? "forced" : quantity.substr(0, quantity.find('_'));  // inplane, outofplane
   const std::string source = entry.value(key::source, "");
   std::vector<std::string> verdicts;
   std::string why;
   for (const auto& check : scene[key::checks]) {
     const std::string compare = check.value(key::compare, "");
-    if (check.value(key::check, "") != "published" || check.value(key::mode, -1) != (forced ? mode + 1 : mode)) continue;
+    if (check.value(key::check, "") != "published" ||
+        check.value(key::mode, -1) != (forced ? mode + 1 : mode))
+      continue;
     std::string check_plane = check.value(key::plane, "");
     check_plane.erase(std::remove(check_plane.begin(), check_plane.end(), '-'), check_plane.end());
     if (check_plane != plane) continue;
@@ -108,7 +122,8 @@ std::vector<std::string> entry_row(const json& scene, const json& entry, int mod
     if (verdict == "SOURCE" && why.empty()) why = diagnosis(check.value(key::detail, ""));
   }
   if (why.empty()) return {};
-  std::vector<std::string> row = {scene.value(key::name, ""), source, std::to_string(forced ? mode + 1 : mode),
+  std::vector<std::string> row = {scene.value(key::name, ""), source,
+                                  std::to_string(forced ? mode + 1 : mode),
                                   fmt::format("{:g}", printed)};
   for (const char* solver : kExactSolvers) row.push_back(solver_value(scene, solver, entry, mode));
   std::string verdict_text;
@@ -122,11 +137,14 @@ std::vector<std::string> entry_row(const json& scene, const json& entry, int mod
 
 int add_discrepancies(Document& out, const json& document) {
   out.push_back(Heading{2, "Source discrepancies", "source-discrepancies"});
-  out.push_back(Paragraph{"Published entries we believe wrong, one row per printed value: two of our independent "
-                          "solvers agree with each other and not with the printed value, or a reviewed finding "
-                          "(verification/findings.toml) explains the difference. Values in the table's unit; "
-                          "'verdicts' lists each solver compared with the entry."});
-  Table t{{"scene", "source", "mode", "printed", "fe", "shooting", "frobenius", "verdicts", "diagnosis"}, {},
+  out.push_back(Paragraph{
+      "Published entries we believe wrong, one row per printed value: two of our independent "
+      "solvers agree with each other and not with the printed value, or a reviewed finding "
+      "(verification/findings.toml) explains the difference. Values in the table's unit; "
+      "'verdicts' lists each solver compared with the entry."});
+  Table t{{"scene", "source", "mode", "printed", "fe", "shooting", "frobenius", "verdicts",
+           "diagnosis"},
+          {},
           "discrepancies"};
   for (const auto& scene : document[key::scenes]) {
     for (const auto& entry : list_or_empty(scene, key::published)) {

@@ -27,10 +27,18 @@ BesselZeroPhase hankel_expansion(double z) {
     previous = size;
     // i^k: k = 1 -> i, 2 -> -1, 3 -> -i, 4 -> 1.
     switch (k % 4) {
-      case 1: q += a; break;
-      case 2: p -= a; break;
-      case 3: q -= a; break;
-      default: p += a; break;
+      case 1:
+        q += a;
+        break;
+      case 2:
+        p -= a;
+        break;
+      case 3:
+        q -= a;
+        break;
+      default:
+        p += a;
+        break;
     }
   }
   return {std::atan2(q, p), std::sqrt(2.0 / kPi) * std::hypot(p, q)};

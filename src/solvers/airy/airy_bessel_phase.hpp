@@ -14,8 +14,8 @@
 namespace catena::internal {
 
 struct BesselZeroPhase {
-  double phase_offset = 0.0;     ///< phi(z) = theta(z) - z + pi/4
-  double scaled_modulus = 0.0;   ///< sqrt(z) M(z) = sqrt(z (J0^2 + Y0^2))
+  double phase_offset = 0.0;    ///< phi(z) = theta(z) - z + pi/4
+  double scaled_modulus = 0.0;  ///< sqrt(z) M(z) = sqrt(z (J0^2 + Y0^2))
 };
 
 /// At and above this argument the Hankel expansion (DLMF 10.17.3) is summed, whose terms fall

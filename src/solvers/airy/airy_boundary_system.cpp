@@ -51,8 +51,8 @@ BoundarySystem boundary_system(const AiryModel& model, double omega) {
   const double ends[2] = {0.0, model.length};
   const double phases[2] = {0.0, omega * model.travel_time};
   for (int i = 0; i < 2; ++i) {
-    const StationRows rows = station_rows(model, omega, ends[i], model.alpha_end[i],
-                                          model.c_end[i], phases[i], system.exponents);
+    const StationRows rows = station_rows(model, omega, ends[i], model.alpha_end[i], model.c_end[i],
+                                          phases[i], system.exponents);
     for (int j = 0; j < 4; ++j) {
       system.matrix(2 * i, j) = rows.w[j];
       system.matrix(2 * i + 1, j) = rows.u[j];

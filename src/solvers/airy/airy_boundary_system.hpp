@@ -7,9 +7,8 @@
 /// its largest exponential factor and the system is equilibrated by positive factors, so its
 /// determinant has the zeros and signs of eq. 16 without overflow.
 
-#include <array>
-
 #include <Eigen/Core>
+#include <array>
 
 #include "solvers/airy/airy_model.hpp"
 

@@ -47,13 +47,13 @@ AiryModeShape airy_mode_shape(const AiryModel& model,
   for (Index j = 0; j < n; ++j) {
     const double s = stations_m[j];
     const double c = std::sqrt(statics.tension_n(s) / model.normal_mass);
-    const StationRows rows = station_rows(model, omega, s, static_curvature(statics, s), c,
-                                          phases[j], system.exponents);
+    const StationRows rows =
+        station_rows(model, omega, s, static_curvature(statics, s), c, phases[j], system.exponents);
     shape.w[j] = Eigen::Map<const Eigen::RowVector4d>(rows.w.data()).dot(coefficients);
     shape.u[j] = Eigen::Map<const Eigen::RowVector4d>(rows.u.data()).dot(coefficients);
     // tau = m omega^2 v with v = C1 Ai + C2 Bi (w_slow = -h alpha v).
-    shape.tension_n[j] =
-        model.mass * omega * omega * (rows.slow_ai * coefficients[0] + rows.slow_bi * coefficients[1]);
+    shape.tension_n[j] = model.mass * omega * omega *
+                         (rows.slow_ai * coefficients[0] + rows.slow_bi * coefficients[1]);
   }
   return shape;
 }

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The mode shape of the Airy model at a root (docs/explanation/methods/airy.md): the null vector of the
-/// boundary system gives (C1, C2, C3, C4); w, u follow from the station rows and the dynamic
+/// The mode shape of the Airy model at a root (docs/explanation/methods/airy.md): the null vector
+/// of the boundary system gives (C1, C2, C3, C4); w, u follow from the station rows and the dynamic
 /// tension from the slow solution, tau = m omega^2 v with v = C1 Ai + C2 Bi.
 
 #include "catena/core/types.hpp"

@@ -9,7 +9,9 @@ namespace catena::internal {
 namespace {
 
 // int_0^L sqrt(M/T) ds, the transverse travel time of the fast (string) solution [s].
-double transverse_travel_time(const StaticSolution& statics, double normal_mass, double length,
+double transverse_travel_time(const StaticSolution& statics,
+                              double normal_mass,
+                              double length,
                               int quadrature_panels) {
   auto slowness = [&](double s) { return std::sqrt(normal_mass / statics.tension_n(s)); };
   const double panel = length / quadrature_panels;
@@ -22,8 +24,10 @@ double transverse_travel_time(const StaticSolution& statics, double normal_mass,
 }
 
 // alpha^2(s) made linear in s: a2_ref + a2_slope (s - s_ref).
-void fit_curvature_squared(const StaticSolution& statics, const DimensionlessGroups& groups,
-                           AiryCurvatureFit fit, AiryModel& model) {
+void fit_curvature_squared(const StaticSolution& statics,
+                           const DimensionlessGroups& groups,
+                           AiryCurvatureFit fit,
+                           AiryModel& model) {
   const double W0 = statics.cable().weight_n_per_m;
   switch (fit) {
     case AiryCurvatureFit::Tangent: {

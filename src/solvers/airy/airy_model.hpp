@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The omega-independent part of Triantafyllou's Airy model (docs/explanation/methods/airy.md; notation in
-/// include/catena/solvers/airy_solver.hpp): the statics at the ends, the transverse travel time
-/// and the linear fit Q(s) = Q0 (s - s0) that turns the slow solution into Airy functions.
+/// The omega-independent part of Triantafyllou's Airy model (docs/explanation/methods/airy.md;
+/// notation in include/catena/solvers/airy_solver.hpp): the statics at the ends, the transverse
+/// travel time and the linear fit Q(s) = Q0 (s - s0) that turns the slow solution into Airy
+/// functions.
 
 #include "catena/models/cable.hpp"
 #include "catena/solvers/airy_solver.hpp"
@@ -40,7 +41,8 @@ AiryModel build_airy_model(const Problem& problem,
                            AiryCurvatureFit fit,
                            int quadrature_panels);
 
-/// Argument -z(s) = -Q(s) / kappa^2 of the Airy functions at frequency omega [rad/s], station s [m].
+/// Argument -z(s) = -Q(s) / kappa^2 of the Airy functions at frequency omega [rad/s], station s
+/// [m].
 double airy_argument(const AiryModel& model, double omega, double s);
 
 }  // namespace catena::internal

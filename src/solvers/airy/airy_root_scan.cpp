@@ -23,7 +23,9 @@ bool same_sign(double a, double b) { return (a > 0.0) == (b > 0.0); }
 // The scan's state: determinant calls are counted, roots collected into `scan`.
 class RootScanner {
  public:
-  RootScanner(const AiryModel& model, const DimensionlessGroups& groups, int tolerance_bits,
+  RootScanner(const AiryModel& model,
+              const DimensionlessGroups& groups,
+              int tolerance_bits,
               AiryRootScan& scan)
       : model_(model), groups_(groups), tolerance_(tolerance_bits), scan_(scan) {}
 
@@ -52,9 +54,8 @@ class RootScanner {
   // The root between two samples of opposite sign, by TOMS 748.
   void refine(const Sample& a, const Sample& b) {
     boost::uintmax_t iterations = 100;
-    const auto bracket = boost::math::tools::toms748_solve([this](double kl) { return det(kl); },
-                                                           a.kl, b.kl, a.det, b.det, tolerance_,
-                                                           iterations);
+    const auto bracket = boost::math::tools::toms748_solve(
+        [this](double kl) { return det(kl); }, a.kl, b.kl, a.det, b.det, tolerance_, iterations);
     scan_.roots.push_back(0.5 * (bracket.first + bracket.second));
   }
 
@@ -123,10 +124,13 @@ AiryRootScan scan_airy_roots(const AiryModel& model,
     before = previous;
     have_before = true;
     previous = current;
-    if (++steps % kStepsPerCheck == 0 && meter && meter->stop_after(static_cast<long>(scan.roots.size()))) break;
+    if (++steps % kStepsPerCheck == 0 && meter &&
+        meter->stop_after(static_cast<long>(scan.roots.size())))
+      break;
   }
   std::sort(scan.roots.begin(), scan.roots.end());
-  if (static_cast<int>(scan.roots.size()) > count) scan.roots.resize(static_cast<std::size_t>(count));
+  if (static_cast<int>(scan.roots.size()) > count)
+    scan.roots.resize(static_cast<std::size_t>(count));
   return scan;
 }
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The roots kL of the Airy boundary determinant (docs/explanation/methods/airy.md): a scan in kL from a
-/// cutoff above the model's spurious low root, with a sign change refined by TOMS 748 and every
-/// grid minimum of |det| searched (Brent) for a hidden close pair of roots, as near cross-over.
-/// The scan proves no count: the solver cross-checks it with eq. (21).
+/// The roots kL of the Airy boundary determinant (docs/explanation/methods/airy.md): a scan in kL
+/// from a cutoff above the model's spurious low root, with a sign change refined by TOMS 748 and
+/// every grid minimum of |det| searched (Brent) for a hidden close pair of roots, as near
+/// cross-over. The scan proves no count: the solver cross-checks it with eq. (21).
 
 #include <vector>
 
@@ -16,12 +16,12 @@ namespace catena::internal {
 
 /// What a scan found, and how.
 struct AiryRootScan {
-  std::vector<double> roots;   ///< kL, ascending, at most the count asked
-  long evaluations = 0;        ///< determinant evaluations
-  int sign_changes = 0;        ///< roots found between samples of opposite sign (or at a zero)
-  int pairs_from_minima = 0;   ///< close pairs found at grid minima of |det|
-  double cutoff_kl = 0.0;      ///< the scan starts here: roots below are the spurious one
-  double limit_kl = 0.0;       ///< the scan gives up here
+  std::vector<double> roots;  ///< kL, ascending, at most the count asked
+  long evaluations = 0;       ///< determinant evaluations
+  int sign_changes = 0;       ///< roots found between samples of opposite sign (or at a zero)
+  int pairs_from_minima = 0;  ///< close pairs found at grid minima of |det|
+  double cutoff_kl = 0.0;     ///< the scan starts here: roots below are the spurious one
+  double limit_kl = 0.0;      ///< the scan gives up here
 };
 
 /// cutoff_fraction times a rigorous lower bound of the first in-plane kL of the full model

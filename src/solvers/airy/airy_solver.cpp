@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Triantafyllou's Airy-function solution (Grinfogel 1984, eqs. 7-16; docs/explanation/methods/airy.md): the
-// solver's knobs, applicability and numerics. The model, its boundary determinant, the root scan
-// and the mode shapes are in src/solvers/airy/airy_*; the out-of-plane string of linear
-// tension in src/solvers/airy/airy_tension_string.hpp.
+// Triantafyllou's Airy-function solution (Grinfogel 1984, eqs. 7-16;
+// docs/explanation/methods/airy.md): the solver's knobs, applicability and numerics. The model, its
+// boundary determinant, the root scan and the mode shapes are in src/solvers/airy/airy_*; the
+// out-of-plane string of linear tension in src/solvers/airy/airy_tension_string.hpp.
 #include "catena/solvers/airy_solver.hpp"
 
 #include <fmt/format.h>
@@ -18,12 +18,12 @@
 #include "solvers/airy/airy_root_scan.hpp"
 #include "solvers/airy/airy_tension_string.hpp"
 #include "solvers/common/knob_table.hpp"
+#include "solvers/common/line_applicability.hpp"
 #include "solvers/common/mode_tools.hpp"
 #include "solvers/common/solver_driver.hpp"
 #include "solvers/common/solver_entries.hpp"
 #include "solvers/common/taut_cable_theory.hpp"
 #include "solvers/common/work_meter.hpp"
-#include "solvers/common/line_applicability.hpp"
 
 namespace catena {
 
@@ -86,8 +86,9 @@ std::optional<std::string> airy_not_applicable_reason(const Problem& problem,
   // Like eq. (21), the Airy model linearises about a slightly stretched string.
   const double strain = internal::static_strain(problem, groups);
   if (strain > internal::kMaxStaticStrain) {
-    return fmt::format("static strain T0/EA = {:.3g} > {:.1g}: the small-strain Airy model does not apply",
-                       strain, internal::kMaxStaticStrain);
+    return fmt::format(
+        "static strain T0/EA = {:.3g} > {:.1g}: the small-strain Airy model does not apply", strain,
+        internal::kMaxStaticStrain);
   }
   if (!(statics.horizontal_force_n() > 0.0) || std::abs(std::cos(groups.chord_angle_rad)) < 1e-9) {
     return fmt::format(
@@ -139,9 +140,12 @@ class AiryNumerics final : public SolverNumerics {
         inplane_error_estimate_(std::max(inplane_model_error_, root_error_)) {}
 
   std::optional<std::string> not_applicable() const override {
-    if (auto reason = uniform_cable_only(context_.problem, "the Airy boundary-layer solution")) return reason;
-    if (auto reason = no_seabed_contact(context_.statics, "the Airy boundary-layer solution")) return reason;
-    return airy_not_applicable_reason(context_.problem, context_.statics, context_.groups, options_);
+    if (auto reason = uniform_cable_only(context_.problem, "the Airy boundary-layer solution"))
+      return reason;
+    if (auto reason = no_seabed_contact(context_.statics, "the Airy boundary-layer solution"))
+      return reason;
+    return airy_not_applicable_reason(context_.problem, context_.statics, context_.groups,
+                                      options_);
   }
 
   void describe(SolverSummary& summary) const override;
@@ -154,12 +158,22 @@ class AiryNumerics final : public SolverNumerics {
   std::string resolution() const;
   ModalResult inplane_modes(int count) const;
   ModalResult outofplane_modes() const;  // as many as the request asks
-  Mode outofplane_mode(int n, double omega, const TensionString& string, const Vector& stations,
+  Mode outofplane_mode(int n,
+                       double omega,
+                       const TensionString& string,
+                       const Vector& stations,
                        double estimate) const;
-  Mode inplane_mode(int index, double kl, const AiryModel& model, const Vector& stations,
-                    const Vector& travel_times, double& max_residual) const;
+  Mode inplane_mode(int index,
+                    double kl,
+                    const AiryModel& model,
+                    const Vector& stations,
+                    const Vector& travel_times,
+                    double& max_residual) const;
   void add_scan_notes(const AiryRootScan& scan, SolverSummary& summary) const;
-  void set_inplane_outcome(int found, int count, const AiryRootScan& scan, double max_residual,
+  void set_inplane_outcome(int found,
+                           int count,
+                           const AiryRootScan& scan,
+                           double max_residual,
                            SolverSummary& summary) const;
 
   const SolveContext& context_;
@@ -194,8 +208,11 @@ void AiryNumerics::describe(SolverSummary& summary) const {
 
 // One in-plane mode at root kL; with the shape (and tension) on the stations when asked,
 // normalised like every solver's. `max_residual` gains the boundary system's sigma ratio.
-Mode AiryNumerics::inplane_mode(int index, double kl, const AiryModel& model,
-                                const Vector& stations, const Vector& travel_times,
+Mode AiryNumerics::inplane_mode(int index,
+                                double kl,
+                                const AiryModel& model,
+                                const Vector& stations,
+                                const Vector& travel_times,
                                 double& max_residual) const {
   const SolveRequest& request = context_.request;
   const CableProperties& cable = context_.problem.cable;
@@ -238,8 +255,11 @@ void AiryNumerics::add_scan_notes(const AiryRootScan& scan, SolverSummary& summa
   }
 }
 
-void AiryNumerics::set_inplane_outcome(int found, int count, const AiryRootScan& scan,
-                                       double max_residual, SolverSummary& summary) const {
+void AiryNumerics::set_inplane_outcome(int found,
+                                       int count,
+                                       const AiryRootScan& scan,
+                                       double max_residual,
+                                       SolverSummary& summary) const {
   const bool need_shape = context_.request.shapes || context_.request.tension;
   if (found < count) {
     summary.termination = Termination::NoConvergence;
@@ -248,28 +268,29 @@ void AiryNumerics::set_inplane_outcome(int found, int count, const AiryRootScan&
     return;
   }
   summary.termination = Termination::Converged;
-  summary.message = fmt::format(
-      "Converged: {} of {} in-plane roots of the Airy determinant to {} bits{}", found, count,
-      options_.tolerance_bits,
-      need_shape ? fmt::format(", max sigma_min/sigma_max {:.1e}", max_residual) : "");
+  summary.message =
+      fmt::format("Converged: {} of {} in-plane roots of the Airy determinant to {} bits{}", found,
+                  count, options_.tolerance_bits,
+                  need_shape ? fmt::format(", max sigma_min/sigma_max {:.1e}", max_residual) : "");
 }
 
 ModalResult AiryNumerics::inplane_modes(int count) const {
   const SolveContext& c = context_;
-  const AiryModel model =
-      build_airy_model(c.problem, c.statics, c.groups, options_.curvature_fit, options_.quadrature_panels);
+  const AiryModel model = build_airy_model(c.problem, c.statics, c.groups, options_.curvature_fit,
+                                           options_.quadrature_panels);
   WorkMeter meter(c, "airy", "in-plane modes", count);
   const AiryRootScan scan = scan_airy_roots(model, c.groups, c.statics, count, options_, &meter);
   const bool need_shape = c.request.shapes || c.request.tension;
   const Vector stations = c.request.stations_m(c.problem.cable.length_m);
-  const Vector travel_times = need_shape ? transverse_travel_times(
-                                               c.statics, c.problem.cable.normal_mass_kg_per_m(), stations)
-                                         : Vector();
+  const Vector travel_times =
+      need_shape
+          ? transverse_travel_times(c.statics, c.problem.cable.normal_mass_kg_per_m(), stations)
+          : Vector();
   ModalResult result;
   double max_residual = 0.0;
   for (std::size_t i = 0; i < scan.roots.size(); ++i) {
-    result.modes.push_back(
-        inplane_mode(static_cast<int>(i) + 1, scan.roots[i], model, stations, travel_times, max_residual));
+    result.modes.push_back(inplane_mode(static_cast<int>(i) + 1, scan.roots[i], model, stations,
+                                        travel_times, max_residual));
   }
   SolverSummary& summary = result.summary;
   summary.resolution = resolution();
@@ -316,8 +337,11 @@ ModalResult AiryNumerics::outofplane_modes() const {
 
 // The n-th out-of-plane mode at omega; with the Bessel shape when asked, normalised like every
 // solver's, and no first-order tension (out-of-plane motion stretches the cable to second order).
-Mode AiryNumerics::outofplane_mode(int n, double omega, const TensionString& string,
-                                   const Vector& stations, double estimate) const {
+Mode AiryNumerics::outofplane_mode(int n,
+                                   double omega,
+                                   const TensionString& string,
+                                   const Vector& stations,
+                                   double estimate) const {
   const SolveRequest& request = context_.request;
   Mode mode;
   mode.index = n;
@@ -355,7 +379,8 @@ SolverOutput solve_airy(const Problem& problem,
                         const DimensionlessGroups& groups,
                         const SolveRequest& request,
                         const AirySolverOptions& options) {
-  return internal::solve_with<internal::AiryNumerics>("airy", {problem, statics, groups, request}, options);
+  return internal::solve_with<internal::AiryNumerics>("airy", {problem, statics, groups, request},
+                                                      options);
 }
 
 }  // namespace catena

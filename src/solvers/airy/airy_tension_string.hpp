@@ -5,10 +5,11 @@
 ///     (P v')' + M omega^2 v = 0,   v(0) = v(L) = 0,
 /// with its geometric stiffness P = T / (1 + e) (docs/explanation/physics.md) made linear in s,
 /// P(s) = P_A + P' s, P' = (P_B - P_A) / L (fit_tension_string: the closest such line in the
-/// relative max norm, which makes the model error bound of linear_tension_error_bound smallest). With x = P(s) the equation becomes
-/// P'^2 d/dx(x dv/dx) + M omega^2 v = 0, solved exactly by J0(z), Y0(z), z = 2 omega sqrt(M P) / |P'|;
-/// the frequencies are the zeros of J0(z_A) Y0(z_B) - J0(z_B) Y0(z_A) = M_A M_B sin(theta_B - theta_A)
-/// (modulus-phase form, airy_bessel_phase.hpp). Because the Bessel phase difference
+/// relative max norm, which makes the model error bound of linear_tension_error_bound smallest).
+/// With x = P(s) the equation becomes P'^2 d/dx(x dv/dx) + M omega^2 v = 0, solved exactly by
+/// J0(z), Y0(z), z = 2 omega sqrt(M P) / |P'|; the frequencies are the zeros of J0(z_A) Y0(z_B) -
+/// J0(z_B) Y0(z_A) = M_A M_B sin(theta_B - theta_A) (modulus-phase form, airy_bessel_phase.hpp).
+/// Because the Bessel phase difference
 ///     Delta(omega) = theta(z_B) - theta(z_A) (taken positive: z_A, z_B ordered)
 /// rises strictly from 0 (its derivative is (2 / (pi omega)) (1/M(z_hi)^2 - 1/M(z_lo)^2) > 0,
 /// M decreasing), the n-th root is the n-th mode: Delta = n pi, a count that needs no scan. It is
@@ -23,10 +24,10 @@ namespace catena::internal {
 
 /// The linear-tension string of a cable.
 struct TensionString {
-  double length = 1.0;        // L [m]
-  double normal_mass = 1.0;   // M [kg/m]
-  double stiffness_a = 1.0;   // P_A = T/(1+e) at s = 0 [N]
-  double stiffness_b = 1.0;   // P_B at s = L [N]
+  double length = 1.0;       // L [m]
+  double normal_mass = 1.0;  // M [kg/m]
+  double stiffness_a = 1.0;  // P_A = T/(1+e) at s = 0 [N]
+  double stiffness_b = 1.0;  // P_B at s = L [N]
 };
 
 /// P(s) = T(s) / (1 + e(s)), the out-of-plane geometric stiffness of the statics [N].

@@ -2,8 +2,9 @@
 #pragma once
 /// \file
 /// Closed-form in-plane mode shapes of Grinfogel (1984) used by the asymptotic solver (notation
-/// in include/catena/solvers/asymptotic_solver.hpp and docs/explanation/methods/asymptotic.md). What the
-/// asymptotic and airy solvers share (WKB out of plane, static strain) is in taut_cable_theory.hpp.
+/// in include/catena/solvers/asymptotic_solver.hpp and docs/explanation/methods/asymptotic.md).
+/// What the asymptotic and airy solvers share (WKB out of plane, static strain) is in
+/// taut_cable_theory.hpp.
 
 #include "catena/core/types.hpp"
 

@@ -13,12 +13,12 @@
 #include "catena/core/error.hpp"
 #include "solvers/asymptotic/asymptotic_formulas.hpp"
 #include "solvers/asymptotic/asymptotic_wkb_string.hpp"
-#include "solvers/common/taut_cable_theory.hpp"
 #include "solvers/common/knob_table.hpp"
-#include "solvers/common/solver_driver.hpp"
-#include "solvers/common/mode_tools.hpp"
-#include "solvers/common/solver_entries.hpp"
 #include "solvers/common/line_applicability.hpp"
+#include "solvers/common/mode_tools.hpp"
+#include "solvers/common/solver_driver.hpp"
+#include "solvers/common/solver_entries.hpp"
+#include "solvers/common/taut_cable_theory.hpp"
 
 namespace catena {
 namespace {
@@ -218,9 +218,12 @@ class AsymptoticNumerics final : public SolverNumerics {
         error_estimate_(context.groups.eps * context.groups.eps + 0.5 * static_strain_) {}
 
   std::optional<std::string> not_applicable() const override {
-    if (auto reason = uniform_cable_only(context_.problem, "the taut-cable asymptotic expansion")) return reason;
-    if (auto reason = no_seabed_contact(context_.statics, "the taut-cable asymptotic expansion")) return reason;
-    return asymptotic_not_applicable_reason(context_.problem, context_.statics, context_.groups, options_);
+    if (auto reason = uniform_cable_only(context_.problem, "the taut-cable asymptotic expansion"))
+      return reason;
+    if (auto reason = no_seabed_contact(context_.statics, "the taut-cable asymptotic expansion"))
+      return reason;
+    return asymptotic_not_applicable_reason(context_.problem, context_.statics, context_.groups,
+                                            options_);
   }
 
   void describe(SolverSummary& summary) const override;
@@ -245,7 +248,8 @@ void AsymptoticNumerics::describe(SolverSummary& summary) const {
   summary.resolution = "closed form: eq. (21) roots to double precision (TOMS 748), WKB with " +
                        fmt::format("{} x 20-point Gauss-Legendre", options_.quadrature_panels);
   summary.notes.push_back(fmt::format(
-      "model error O(eps^2): eps = {:.4g}, phi_a = {:.4g} deg, lambda^2 = {:.6g}, h = {:.4g}; every "
+      "model error O(eps^2): eps = {:.4g}, phi_a = {:.4g} deg, lambda^2 = {:.6g}, h = {:.4g}; "
+      "every "
       "frequency carries relative_error_estimate = eps^2 + e0/2 = {:.3g} (e0 = T0/EA = {:.3g}, the "
       "static strain the theory neglects)",
       groups.eps, groups.chord_angle_rad * 180.0 / kPi, groups.lambda2, groups.mass_ratio,
@@ -315,7 +319,8 @@ void AsymptoticNumerics::add_character_notes(const std::vector<double>& roots,
   }
   summary.notes.push_back(
       "mode character (S symmetric-like, A antisymmetric-like, H hybrid: |k^2L^2/lambda^2 - 1| "
-      "< 2 eps sin(phi_a)): " + character);
+      "< 2 eps sin(phi_a)): " +
+      character);
   if (!hybrid.empty()) {
     summary.notes.push_back(fmt::format(
         "modes in the hybrid (near-cross-over) region |k^2L^2/lambda^2 - 1| < 2 eps sin(phi_a): "
@@ -357,15 +362,15 @@ ModalResult AsymptoticNumerics::inplane_modes(int count) const {
 
 ModalResult AsymptoticNumerics::outofplane_modes(int count) const {
   const double M = context_.problem.cable.normal_mass_kg_per_m();
-  ModalResult result = wkb_outofplane_modes(context_.statics, context_.groups, context_.request, M,
-                                            error_estimate_, options_.quadrature_panels, "asymptotic");
+  ModalResult result =
+      wkb_outofplane_modes(context_.statics, context_.groups, context_.request, M, error_estimate_,
+                           options_.quadrature_panels, "asymptotic");
   result.summary.message = fmt::format(
       "Converged: {} of {} out-of-plane WKB string modes omega_n = n pi / int sqrt(M(1+e)/T) ds",
       result.modes.size(), count);
   result.summary.max_error_estimate = error_estimate_;
   return result;
 }
-
 
 }  // namespace
 
@@ -386,7 +391,8 @@ SolverOutput solve_asymptotic(const Problem& problem,
                               const DimensionlessGroups& groups,
                               const SolveRequest& request,
                               const AsymptoticSolverOptions& options) {
-  return internal::solve_with<internal::AsymptoticNumerics>("asymptotic", {problem, statics, groups, request}, options);
+  return internal::solve_with<internal::AsymptoticNumerics>(
+      "asymptotic", {problem, statics, groups, request}, options);
 }
 
 }  // namespace catena

@@ -42,7 +42,8 @@ ModalResult wkb_outofplane_modes(const StaticSolution& statics,
   result.plane = Plane::OutOfPlane;
   const Vector stations = request.stations_m(statics.cable().length_m);
   const bool need_shape = request.shapes || request.tension;
-  const std::vector<double> omegas = wkb_outofplane_omegas(statics, request.outofplane_modes, quadrature_panels);
+  const std::vector<double> omegas =
+      wkb_outofplane_omegas(statics, request.outofplane_modes, quadrature_panels);
   for (std::size_t i = 0; i < omegas.size(); ++i) {
     Mode mode;
     mode.index = static_cast<int>(i) + 1;

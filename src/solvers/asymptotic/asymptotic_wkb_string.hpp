@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The asymptotic solver's out-of-plane modes (docs/explanation/methods/asymptotic.md): the WKB string,
-/// frequencies omega_n int_0^L sqrt(M (1 + e) / T) ds = n pi (wkb_outofplane_omegas in
+/// The asymptotic solver's out-of-plane modes (docs/explanation/methods/asymptotic.md): the WKB
+/// string, frequencies omega_n int_0^L sqrt(M (1 + e) / T) ds = n pi (wkb_outofplane_omegas in
 /// catena/solvers/asymptotic_solver.hpp) and shapes (P M)^(-1/4) sin(omega int_0^s sqrt(M/P) ds),
 /// P = T/(1+e). Only the asymptotic solver uses them; airy has its own out-of-plane model
 /// (src/solvers/airy/airy_tension_string.hpp).

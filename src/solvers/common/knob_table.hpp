@@ -9,10 +9,13 @@
 ///
 ///   const KnobTable<FeSolverOptions>& fe_knobs() {
 ///     static const KnobTable<FeSolverOptions> table("fe", {
-///         integer_knob("elements", &FeSolverOptions::elements, Range::at_least(2), "bar elements N"),
-///         flag_knob("richardson", &FeSolverOptions::richardson, "solve N and 2N, extrapolate")});
+///         integer_knob("elements", &FeSolverOptions::elements, Range::at_least(2), "bar elements
+///         N"), flag_knob("richardson", &FeSolverOptions::richardson, "solve N and 2N,
+///         extrapolate")});
 ///     return table;
 ///   }
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <functional>
@@ -20,8 +23,6 @@
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 #include "catena/solvers/solver_registry.hpp"
@@ -38,7 +39,9 @@ struct Range {
 
   static Range closed(double a, double b) { return {a, b, false, false}; }
   static Range open_closed(double a, double b) { return {a, b, true, false}; }
-  static Range at_least(double a) { return {a, std::numeric_limits<double>::infinity(), false, true}; }
+  static Range at_least(double a) {
+    return {a, std::numeric_limits<double>::infinity(), false, true};
+  }
   static Range above(double a) { return {a, std::numeric_limits<double>::infinity(), true, true}; }
 
   bool contains(double x) const {
@@ -49,8 +52,11 @@ struct Range {
   }
   /// "[2, inf)", "(0, 0.01]".
   std::string to_string() const {
-    const auto bound = [](double v) { return std::isinf(v) ? std::string("inf") : fmt::format("{:g}", v); };
-    return fmt::format("{}{}, {}{}", low_open ? "(" : "[", bound(low), bound(high), high_open ? ")" : "]");
+    const auto bound = [](double v) {
+      return std::isinf(v) ? std::string("inf") : fmt::format("{:g}", v);
+    };
+    return fmt::format("{}{}, {}{}", low_open ? "(" : "[", bound(low), bound(high),
+                       high_open ? ")" : "]");
   }
 };
 
@@ -63,7 +69,8 @@ inline std::string knob_key(const std::string& solver, const std::string& knob) 
 template <class Options>
 struct KnobBinding {
   KnobSpec spec;
-  /// Sets the field from a scene value; throws InvalidInput (naming `key`) on a wrong type or value.
+  /// Sets the field from a scene value; throws InvalidInput (naming `key`) on a wrong type or
+  /// value.
   std::function<void(Options&, const KnobValue&, const std::string& key)> assign;
   /// Throws InvalidInput (naming `key`) when the field holds a value outside the range.
   std::function<void(const Options&, const std::string& key)> check;
@@ -96,10 +103,16 @@ inline long as_integer(const KnobValue& value, const std::string& key) {
 
 /// A real knob in `range`.
 template <class Options>
-KnobBinding<Options> real_knob(std::string name, double Options::*field, Range range, std::string help) {
+KnobBinding<Options> real_knob(std::string name,
+                               double Options::*field,
+                               Range range,
+                               std::string help) {
   KnobBinding<Options> b;
-  b.spec = {std::move(name), std::move(help), "real", fmt::format("{:g}", Options{}.*field), range.to_string()};
-  b.check = [field, range](const Options& o, const std::string& key) { knob_detail::check_range(o.*field, range, key); };
+  b.spec = {std::move(name), std::move(help), "real", fmt::format("{:g}", Options{}.*field),
+            range.to_string()};
+  b.check = [field, range](const Options& o, const std::string& key) {
+    knob_detail::check_range(o.*field, range, key);
+  };
   b.assign = [field, check = b.check](Options& o, const KnobValue& v, const std::string& key) {
     o.*field = knob_detail::as_real(v, key);
     check(o, key);
@@ -109,10 +122,16 @@ KnobBinding<Options> real_knob(std::string name, double Options::*field, Range r
 
 /// An integer knob in `range` (range checked before narrowing, so nothing wraps).
 template <class Options, class Int>
-KnobBinding<Options> integer_knob(std::string name, Int Options::*field, Range range, std::string help) {
+KnobBinding<Options> integer_knob(std::string name,
+                                  Int Options::*field,
+                                  Range range,
+                                  std::string help) {
   KnobBinding<Options> b;
-  b.spec = {std::move(name), std::move(help), "integer", fmt::format("{}", Options{}.*field), range.to_string()};
-  b.check = [field, range](const Options& o, const std::string& key) { knob_detail::check_range(o.*field, range, key); };
+  b.spec = {std::move(name), std::move(help), "integer", fmt::format("{}", Options{}.*field),
+            range.to_string()};
+  b.check = [field, range](const Options& o, const std::string& key) {
+    knob_detail::check_range(o.*field, range, key);
+  };
   b.assign = [field, range](Options& o, const KnobValue& v, const std::string& key) {
     const long value = knob_detail::as_integer(v, key);
     knob_detail::check_range(value, range, key);
@@ -137,8 +156,10 @@ KnobBinding<Options> flag_knob(std::string name, bool Options::*field, std::stri
 
 /// A knob that picks one of named values of a field (an enum, usually).
 template <class Options, class Field>
-KnobBinding<Options> choice_knob(std::string name, Field Options::*field,
-                                 std::vector<std::pair<std::string, Field>> choices, std::string help) {
+KnobBinding<Options> choice_knob(std::string name,
+                                 Field Options::*field,
+                                 std::vector<std::pair<std::string, Field>> choices,
+                                 std::string help) {
   std::string valid, default_name;
   for (const auto& [text, value] : choices) {
     valid += fmt::format("{}\"{}\"", valid.empty() ? "" : " or ", text);
@@ -171,7 +192,8 @@ class KnobTable {
   /// Options from scene knobs, defaults elsewhere; throws InvalidInput naming the knob.
   Options read(const SolverKnobs& knobs) const {
     Options options;
-    for (const auto& [name, value] : knobs) binding(name).assign(options, value, knob_key(solver_, name));
+    for (const auto& [name, value] : knobs)
+      binding(name).assign(options, value, knob_key(solver_, name));
     return options;
   }
 
@@ -195,8 +217,9 @@ class KnobTable {
       if (b.spec.name == name) return b;
       known += (known.empty() ? "" : ", ") + b.spec.name;
     }
-    throw InvalidInput(fmt::format("{}: unknown knob for solver '{}' (known: {})", knob_key(solver_, name),
-                                   solver_, known.empty() ? "none" : known));
+    throw InvalidInput(fmt::format("{}: unknown knob for solver '{}' (known: {})",
+                                   knob_key(solver_, name), solver_,
+                                   known.empty() ? "none" : known));
   }
 
   std::string solver_;

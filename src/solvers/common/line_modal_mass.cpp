@@ -15,7 +15,8 @@ namespace {
 Vec2 squared_motion_at(Plane plane, const Mode& mode, double s) {
   const Vector& x = mode.s_m;
   const Index n = x.size();
-  const Index k = std::clamp<Index>(static_cast<Index>(std::upper_bound(x.data(), x.data() + n, s) - x.data()), 1, n - 1);
+  const Index k = std::clamp<Index>(
+      static_cast<Index>(std::upper_bound(x.data(), x.data() + n, s) - x.data()), 1, n - 1);
   const double f = (s - x[k - 1]) / (x[k] - x[k - 1]);
   auto at = [&](const Vector& y) { return (1.0 - f) * y[k - 1] + f * y[k]; };
   if (plane == Plane::OutOfPlane) return Vec2(std::pow(at(mode.v), 2), 0.0);
@@ -24,12 +25,16 @@ Vec2 squared_motion_at(Plane plane, const Mode& mode, double s) {
 
 }  // namespace
 
-double line_modal_mass(Plane plane, const Mode& mode, const Line& line, const StaticSolution& statics) {
+double line_modal_mass(Plane plane,
+                       const Mode& mode,
+                       const Line& line,
+                       const StaticSolution& statics) {
   if (mode.s_m.size() < 2) return -1.0;
   auto density = [&](double s, const Vec2& motion) {
     const LineSegment segment = statics.segment_at(s);
-    return plane == Plane::InPlane ? segment.mass_kg_per_m * motion.x() + segment.normal_mass_kg_per_m() * motion.y()
-                                   : segment.normal_mass_kg_per_m() * motion.x();
+    return plane == Plane::InPlane
+               ? segment.mass_kg_per_m * motion.x() + segment.normal_mass_kg_per_m() * motion.y()
+               : segment.normal_mass_kg_per_m() * motion.x();
   };
   double sum = 0.0;
   for (Index k = 1; k < mode.s_m.size(); ++k) {
@@ -41,8 +46,9 @@ double line_modal_mass(Plane plane, const Mode& mode, const Line& line, const St
     cuts.push_back(mode.s_m[k]);
     for (std::size_t c = 1; c < cuts.size(); ++c) {
       const double a = cuts[c - 1], b = cuts[c], middle = 0.5 * (a + b);
-      sum += 0.5 * (b - a) * (density(middle, squared_motion_at(plane, mode, a)) +
-                              density(middle, squared_motion_at(plane, mode, b)));
+      sum += 0.5 * (b - a) *
+             (density(middle, squared_motion_at(plane, mode, a)) +
+              density(middle, squared_motion_at(plane, mode, b)));
     }
   }
   for (const PointAttachment& point : line.points) {

@@ -15,6 +15,9 @@ namespace catena::internal {
 /// m u^2 + M w^2 (in plane) or M v^2 (out of plane) with each segment's densities (station
 /// intervals are cut at the joints, the shape interpolated linearly there), plus each point
 /// attachment's (P + ma_t) u^2 + (P + ma_n) w^2 or (P + ma_out) v^2 at its arc length.
-double line_modal_mass(Plane plane, const Mode& mode, const Line& line, const StaticSolution& statics);
+double line_modal_mass(Plane plane,
+                       const Mode& mode,
+                       const Line& line,
+                       const StaticSolution& statics);
 
 }  // namespace catena::internal

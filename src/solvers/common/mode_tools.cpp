@@ -64,8 +64,8 @@ double integrate_on_stations(const Vector& s, const Vector& f) {
 }
 
 double inplane_modal_mass(const Mode& mode, double mass_kg_per_m, double normal_mass_kg_per_m) {
-  const Vector density = mass_kg_per_m * mode.u.array().square() +
-                         normal_mass_kg_per_m * mode.w.array().square();
+  const Vector density =
+      mass_kg_per_m * mode.u.array().square() + normal_mass_kg_per_m * mode.w.array().square();
   return integrate_on_stations(mode.s_m, density);
 }
 

@@ -14,7 +14,8 @@ void set_mode_frequency(Mode& mode, double omega_rad_s, const DimensionlessGroup
 
 /// Scales an in-plane mode (u, w and, when present, tension_n) to max|w| = 1 with w > 0 at the
 /// first station of largest |w|; a mode with max|w| <= 1e-6 max|u| is scaled by u instead.
-/// Sets normalised_by and max_abs_tension_n (when tension_n is present). Returns the factor applied.
+/// Sets normalised_by and max_abs_tension_n (when tension_n is present). Returns the factor
+/// applied.
 double normalise_inplane_mode(Mode& mode);
 
 /// Same for an out-of-plane mode, by v.

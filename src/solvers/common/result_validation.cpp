@@ -16,7 +16,9 @@ bool is_estimate(double relative_error) {
 }
 
 // -1 means "not asked" for max_abs_tension_n and modal_mass_kg.
-bool is_finite_or_unset(double value) { return std::isfinite(value) && (value >= 0.0 || value == -1.0); }
+bool is_finite_or_unset(double value) {
+  return std::isfinite(value) && (value >= 0.0 || value == -1.0);
+}
 
 bool arrays_finite(const Mode& mode) {
   return mode.s_m.allFinite() && mode.u.allFinite() && mode.w.allFinite() && mode.v.allFinite() &&
@@ -25,37 +27,49 @@ bool arrays_finite(const Mode& mode) {
 
 // What is wrong with the mode at `position` (0-based), given the one before it; nullopt if
 // nothing.
-std::optional<std::string> mode_violation(const Mode& mode, std::size_t position, const Mode* previous) {
+std::optional<std::string> mode_violation(const Mode& mode,
+                                          std::size_t position,
+                                          const Mode* previous) {
   const auto expected = static_cast<int>(position) + 1;
   if (mode.index != expected)
-    return fmt::format("mode at position {} has index {} (indices must be 1, 2, 3, ...)", expected, mode.index);
+    return fmt::format("mode at position {} has index {} (indices must be 1, 2, 3, ...)", expected,
+                       mode.index);
   const double omega = mode.omega_rad_s;
   if (!std::isfinite(omega) || !(omega > 0.0))
-    return fmt::format("mode {}: omega = {} rad/s is not a finite positive frequency", mode.index, omega);
+    return fmt::format("mode {}: omega = {} rad/s is not a finite positive frequency", mode.index,
+                       omega);
   if (!std::isfinite(mode.frequency_hz) || !std::isfinite(mode.k_l_over_pi) ||
       (mode.gale_ratio && !std::isfinite(*mode.gale_ratio)))
-    return fmt::format("mode {}: a frequency unit conversion of omega = {} rad/s is not finite", mode.index, omega);
+    return fmt::format("mode {}: a frequency unit conversion of omega = {} rad/s is not finite",
+                       mode.index, omega);
   // Within a multiple root the solver proved, the modes share one frequency.
   const bool proved_multiple = previous && mode.multiplicity > 1 && previous->multiplicity > 1 &&
                                omega == previous->omega_rad_s;
   if (previous && !(omega > previous->omega_rad_s) && !proved_multiple)
-    return fmt::format("mode {}: omega = {:.12g} rad/s is not above mode {} ({:.12g} rad/s): frequencies must be "
-                       "strictly ascending",
-                       mode.index, omega, previous->index, previous->omega_rad_s);
+    return fmt::format(
+        "mode {}: omega = {:.12g} rad/s is not above mode {} ({:.12g} rad/s): frequencies must be "
+        "strictly ascending",
+        mode.index, omega, previous->index, previous->omega_rad_s);
   if (!is_estimate(mode.relative_error_estimate))
-    return fmt::format("mode {}: relative error estimate {} is neither finite and >= 0 nor -1 (none)", mode.index,
-                       mode.relative_error_estimate);
-  if (!arrays_finite(mode) || !is_finite_or_unset(mode.max_abs_tension_n) || !is_finite_or_unset(mode.modal_mass_kg))
-    return fmt::format("mode {}: its shape, tension or modal mass holds a non-finite value", mode.index);
+    return fmt::format(
+        "mode {}: relative error estimate {} is neither finite and >= 0 nor -1 (none)", mode.index,
+        mode.relative_error_estimate);
+  if (!arrays_finite(mode) || !is_finite_or_unset(mode.max_abs_tension_n) ||
+      !is_finite_or_unset(mode.modal_mass_kg))
+    return fmt::format("mode {}: its shape, tension or modal mass holds a non-finite value",
+                       mode.index);
   return std::nullopt;
 }
 
 // The first violation of the per-mode rules and of the requested count, with the length of the
 // valid prefix.
-std::optional<std::string> prefix_violation(const ModalResult& result, int requested, std::size_t& prefix) {
+std::optional<std::string> prefix_violation(const ModalResult& result,
+                                            int requested,
+                                            std::size_t& prefix) {
   const std::vector<Mode>& modes = result.modes;
   for (prefix = 0; prefix < modes.size(); ++prefix) {
-    if (auto why = mode_violation(modes[prefix], prefix, prefix ? &modes[prefix - 1] : nullptr)) return why;
+    if (auto why = mode_violation(modes[prefix], prefix, prefix ? &modes[prefix - 1] : nullptr))
+      return why;
   }
   if (modes.size() > static_cast<std::size_t>(std::max(requested, 0))) {
     prefix = static_cast<std::size_t>(std::max(requested, 0));
@@ -69,15 +83,17 @@ std::optional<std::string> count_violation(const ModalResult& result) {
   const auto returned = static_cast<int>(result.modes.size());
   if (proved < 0 || proved == returned) return std::nullopt;
   return fmt::format(
-      "the counting argument proves {} eigenvalues at or below the top returned frequency, but {} modes were "
+      "the counting argument proves {} eigenvalues at or below the top returned frequency, but {} "
+      "modes were "
       "returned: a root was skipped or returned twice, so the mode indices are not proved",
       proved, returned);
 }
 
 bool response_finite(const ForcedResponse& response) {
   return std::isfinite(response.max_abs_tension_n) && response.max_abs_tension_n >= 0.0 &&
-         is_estimate(response.relative_error_estimate) && response.s_m.allFinite() && response.u.allFinite() &&
-         response.w.allFinite() && response.v.allFinite() && response.tension_n.allFinite();
+         is_estimate(response.relative_error_estimate) && response.s_m.allFinite() &&
+         response.u.allFinite() && response.w.allFinite() && response.v.allFinite() &&
+         response.tension_n.allFinite();
 }
 
 // A response without a finite answer keeps its frequency and stations, and says why.
@@ -94,9 +110,11 @@ void clear_response(ForcedResponse& response, std::string diagnostic) {
 void reject_part(SolverSummary& summary, Termination termination, const std::string& reason) {
   const bool worse = summary.termination == Termination::Converged ||
                      summary.termination == Termination::NotApplicable ||
-                     (summary.termination == Termination::NoConvergence && termination == Termination::NumericalFailure);
+                     (summary.termination == Termination::NoConvergence &&
+                      termination == Termination::NumericalFailure);
   if (worse) summary.termination = termination;
-  summary.message = fmt::format("Result rejected: {} (the solver reported: {})", reason, summary.message);
+  summary.message =
+      fmt::format("Result rejected: {} (the solver reported: {})", reason, summary.message);
   summary.warnings.push_back("result rejected: " + reason);
 }
 
@@ -111,8 +129,9 @@ void validate_modal_result(ModalResult& result, int requested) {
     const std::size_t returned = result.modes.size();
     result.modes.resize(prefix);
     if (result.proved_count_below_top >= 0) result.proved_count_below_top = -1;
-    reject_part(result.summary, prefix > 0 ? Termination::NoConvergence : Termination::NumericalFailure,
-                fmt::format("{}; kept the {} modes below it of {} returned", *why, prefix, returned));
+    reject_part(
+        result.summary, prefix > 0 ? Termination::NoConvergence : Termination::NumericalFailure,
+        fmt::format("{}; kept the {} modes below it of {} returned", *why, prefix, returned));
   }
 }
 
@@ -134,11 +153,12 @@ void scale_forced_outcome(ForcedOutcome& outcome, double amplitude_m) {
     response.max_abs_tension_n = scale(response.max_abs_tension_n);
     if (!was_finite || response_finite(response)) continue;
     ++overflowed;
-    clear_response(response, fmt::format("the response to amplitude {:.6g} m overflows double precision "
-                                         "(max |tau| = {:.6g} N per metre of amplitude): not representable",
-                                         amplitude_m, per_metre));
-    outcome.summary.warnings.push_back(fmt::format("forced response at {:.10g} rad/s: {}", response.omega_rad_s,
-                                                   response.diagnostic));
+    clear_response(response,
+                   fmt::format("the response to amplitude {:.6g} m overflows double precision "
+                               "(max |tau| = {:.6g} N per metre of amplitude): not representable",
+                               amplitude_m, per_metre));
+    outcome.summary.warnings.push_back(fmt::format("forced response at {:.10g} rad/s: {}",
+                                                   response.omega_rad_s, response.diagnostic));
   }
   if (overflowed > 0)
     reject_part(outcome.summary, Termination::NoConvergence,
@@ -156,15 +176,16 @@ void validate_forced_outcome(ForcedOutcome& outcome) {
       continue;
     }
     ++silent;
-    clear_response(response, fmt::format("non-finite response without a diagnostic (max |tau| = {})",
-                                         response.max_abs_tension_n));
-    outcome.summary.warnings.push_back(fmt::format("forced response at {:.10g} rad/s: {}", response.omega_rad_s,
-                                                   response.diagnostic));
+    clear_response(response,
+                   fmt::format("non-finite response without a diagnostic (max |tau| = {})",
+                               response.max_abs_tension_n));
+    outcome.summary.warnings.push_back(fmt::format("forced response at {:.10g} rad/s: {}",
+                                                   response.omega_rad_s, response.diagnostic));
   }
   if (silent > 0)
     reject_part(outcome.summary, Termination::NoConvergence,
-                fmt::format("{} of {} forced responses were not finite and had no diagnostic", silent,
-                            outcome.responses.size()));
+                fmt::format("{} of {} forced responses were not finite and had no diagnostic",
+                            silent, outcome.responses.size()));
 }
 
 }  // namespace catena::internal

@@ -2,8 +2,8 @@
 #pragma once
 /// \file
 /// What every solver's results must satisfy before they leave the solver skeleton
-/// (docs/contributing/architecture.md, "Result validation"). drive_solver() applies these checks after each
-/// part, for every solver alike, so that no wrong answer is ever reported as converged.
+/// (docs/contributing/architecture.md, "Result validation"). drive_solver() applies these checks
+/// after each part, for every solver alike, so that no wrong answer is ever reported as converged.
 ///
 /// Modes of one plane, in the order returned:
 ///   - index = position + 1 (1-based, lowest first);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "catena/solvers/run_limits.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "catena/core/error.hpp"
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "catena/solvers/solve_request.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "catena/core/error.hpp"
 
@@ -12,10 +13,14 @@ std::string to_string(CableEnd end) { return end == CableEnd::A ? "a" : "b"; }
 
 std::string to_string(ForcingDirection direction) {
   switch (direction) {
-    case ForcingDirection::Tangential: return "tangential";
-    case ForcingDirection::Normal: return "normal";
-    case ForcingDirection::GivenVector: return "vector";
-    case ForcingDirection::OutOfPlane: return "out_of_plane";
+    case ForcingDirection::Tangential:
+      return "tangential";
+    case ForcingDirection::Normal:
+      return "normal";
+    case ForcingDirection::GivenVector:
+      return "vector";
+    case ForcingDirection::OutOfPlane:
+      return "out_of_plane";
   }
   return "?";
 }
@@ -23,7 +28,8 @@ std::string to_string(ForcingDirection direction) {
 void SolveRequest::validate() const {
   auto require_in = [](const char* field, long value, long low, long high) {
     if (value < low || value > high) {
-      throw InvalidInput(fmt::format("Invalid SolveRequest::{} = {}: must be in [{}, {}]", field, value, low, high));
+      throw InvalidInput(fmt::format("Invalid SolveRequest::{} = {}: must be in [{}, {}]", field,
+                                     value, low, high));
     }
   };
   require_in("inplane_modes", inplane_modes, 0, kMaxRequestModes);
@@ -31,9 +37,11 @@ void SolveRequest::validate() const {
   require_in("points", points, 2, kMaxRequestPoints);
   const long shape_values = shapes ? long(points) * (inplane_modes + outofplane_modes) : 0;
   if (shape_values > kMaxShapeValues) {
-    throw InvalidInput(fmt::format(
-        "Invalid SolveRequest: points x modes = {} x {} = {} shape values: must be <= {} (ask for fewer "
-        "points or modes)", points, inplane_modes + outofplane_modes, shape_values, kMaxShapeValues));
+    throw InvalidInput(
+        fmt::format("Invalid SolveRequest: points x modes = {} x {} = {} shape values: must be <= "
+                    "{} (ask for fewer "
+                    "points or modes)",
+                    points, inplane_modes + outofplane_modes, shape_values, kMaxShapeValues));
   }
   if (forced && forced->omegas_rad_s.size() > kMaxForcingFrequencies) {
     throw InvalidInput(fmt::format(
@@ -42,11 +50,13 @@ void SolveRequest::validate() const {
   }
   if (forced) {
     if (!std::isfinite(forced->amplitude_m) || forced->amplitude_m <= 0.0) {
-      throw InvalidInput(fmt::format(
-          "Invalid ForcedRequest::amplitude_m = {}: must be finite and > 0 [m]", forced->amplitude_m));
+      throw InvalidInput(
+          fmt::format("Invalid ForcedRequest::amplitude_m = {}: must be finite and > 0 [m]",
+                      forced->amplitude_m));
     }
     if (forced->omegas_rad_s.empty()) {
-      throw InvalidInput("Invalid ForcedRequest::omegas_rad_s: at least one forcing frequency needed");
+      throw InvalidInput(
+          "Invalid ForcedRequest::omegas_rad_s: at least one forcing frequency needed");
     }
     for (double omega : forced->omegas_rad_s) {
       if (!std::isfinite(omega) || omega < 0.0) {

@@ -2,10 +2,10 @@
 // The one solver skeleton: see solver_driver.hpp for the steps and the combination rule.
 #include "solvers/common/solver_driver.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <exception>
-
-#include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 #include "solvers/common/result_validation.hpp"
@@ -23,8 +23,10 @@ double seconds_since(Clock::time_point start) {
 
 // The driver's check between parts (catena/solvers/run_limits.hpp): once a part has run and the
 // run's deadline has passed, the parts not started yet are skipped and reported with nothing done.
-std::optional<SolverSummary> skipped_for_time(const SolveContext& context, const SolverOutput& output,
-                                              const std::string& units, long total) {
+std::optional<SolverSummary> skipped_for_time(const SolveContext& context,
+                                              const SolverOutput& output,
+                                              const std::string& units,
+                                              long total) {
   const bool after_a_part = output.inplane || output.outofplane;
   if (!after_a_part || !context.limits || !context.limits->expired()) return std::nullopt;
   SolverSummary summary;
@@ -37,15 +39,19 @@ std::optional<SolverSummary> skipped_for_time(const SolveContext& context, const
 
 // The forced plane follows the forcing direction: out of plane only when the end moves normal to
 // the plane of the supports.
-void run_parts(const SolveContext& context, SolverNumerics& numerics, SolverOutput& output,
+void run_parts(const SolveContext& context,
+               SolverNumerics& numerics,
+               SolverOutput& output,
                std::optional<ForcedOutcome>& forced) {
   const SolveRequest& request = context.request;
   const std::pair<Plane, int> planes[] = {{Plane::InPlane, request.inplane_modes},
                                           {Plane::OutOfPlane, request.outofplane_modes}};
   for (const auto& [plane, count] : planes) {
     if (count <= 0) continue;
-    if (auto skipped = skipped_for_time(context, output, std::string(to_string(plane)) + " modes", count)) {
-      ModalResult& result = (plane == Plane::InPlane ? output.inplane : output.outofplane).emplace();
+    if (auto skipped =
+            skipped_for_time(context, output, std::string(to_string(plane)) + " modes", count)) {
+      ModalResult& result =
+          (plane == Plane::InPlane ? output.inplane : output.outofplane).emplace();
       result.plane = plane;
       result.summary = *skipped;
       continue;
@@ -90,7 +96,8 @@ ForcedOutcome SolverNumerics::forced(const ForcedRequest& request) {
   return outcome;
 }
 
-SolverOutput drive_solver(const std::string& solver, const SolveContext& context,
+SolverOutput drive_solver(const std::string& solver,
+                          const SolveContext& context,
                           SolverNumerics& numerics) {
   context.request.validate();
   context.problem.validate();
@@ -146,8 +153,10 @@ void apply_accuracy_target(ModalResult& result) {
     mode.meets_target = estimate >= 0.0 && estimate <= target;
     if (mode.meets_target) continue;
     summary.missed_modes.push_back(
-        estimate < 0.0 ? fmt::format("mode {}: no error estimate (target {:.2g})", mode.index, target)
-                       : fmt::format("mode {}: estimate {:.2g} > target {:.2g}", mode.index, estimate, target));
+        estimate < 0.0
+            ? fmt::format("mode {}: no error estimate (target {:.2g})", mode.index, target)
+            : fmt::format("mode {}: estimate {:.2g} > target {:.2g}", mode.index, estimate,
+                          target));
   }
   if (summary.missed_modes.empty()) return;
   const std::string missed =
@@ -177,7 +186,8 @@ void combine_summaries(const std::vector<std::pair<std::string, const SolverSumm
     max_residual = std::max(max_residual, part->max_residual);
     message += (message.empty() ? "" : "; ") + part->message;
     for (const auto& warning : part->warnings) overall.warnings.push_back(name + ": " + warning);
-    for (const auto& missed : part->missed_modes) overall.missed_modes.push_back(name + " " + missed);
+    for (const auto& missed : part->missed_modes)
+      overall.missed_modes.push_back(name + " " + missed);
     overall.accuracy_target = std::max(overall.accuracy_target, part->accuracy_target);
     if (name == "forced") {
       // A plane's notes stay in its own summary; the forced part has no other place for them.

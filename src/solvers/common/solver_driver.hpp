@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The one solver skeleton (docs/contributing/architecture.md, "Solver skeleton"). A solver implements
-/// SolverNumerics (its numerics only); drive_solver() owns everything around it, the same way for
-/// every solver:
+/// The one solver skeleton (docs/contributing/architecture.md, "Solver skeleton"). A solver
+/// implements SolverNumerics (its numerics only); drive_solver() owns everything around it, the
+/// same way for every solver:
 ///
 ///   1. validate the request and the problem (InvalidInput propagates: bad input, exit 2);
 ///   2. ask not_applicable(): a reason ends the run as NotApplicable;
@@ -68,13 +68,16 @@ class SolverNumerics {
 };
 
 /// Runs `numerics` through the steps above. `solver` names the outputs and summaries.
-SolverOutput drive_solver(const std::string& solver, const SolveContext& context,
+SolverOutput drive_solver(const std::string& solver,
+                          const SolveContext& context,
                           SolverNumerics& numerics);
 
 /// The typed entry points (solve_fe(...) and the others): validate the options, build the
 /// solver's numerics and drive them, exactly as run_solver() does for a registry entry.
 template <class Numerics, class Options>
-SolverOutput solve_with(const std::string& solver, const SolveContext& context, const Options& options) {
+SolverOutput solve_with(const std::string& solver,
+                        const SolveContext& context,
+                        const Options& options) {
   options.validate();
   Numerics numerics(context, options);
   return drive_solver(solver, context, numerics);

@@ -7,10 +7,14 @@ namespace catena {
 
 std::string to_string(Termination termination) {
   switch (termination) {
-    case Termination::Converged: return "converged";
-    case Termination::NoConvergence: return "no-convergence";
-    case Termination::NumericalFailure: return "numerical-failure";
-    case Termination::NotApplicable: return "not-applicable";
+    case Termination::Converged:
+      return "converged";
+    case Termination::NoConvergence:
+      return "no-convergence";
+    case Termination::NumericalFailure:
+      return "numerical-failure";
+    case Termination::NotApplicable:
+      return "not-applicable";
   }
   return "?";
 }

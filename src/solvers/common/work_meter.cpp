@@ -6,9 +6,12 @@
 
 namespace catena::internal {
 
-std::string time_limit_message(const RunLimits& limits, long done, long total, const std::string& units) {
-  return fmt::format("time limit of {:g} s reached after {} of {} {}", limits.time_limit_s, done, total,
-                     units);
+std::string time_limit_message(const RunLimits& limits,
+                               long done,
+                               long total,
+                               const std::string& units) {
+  return fmt::format("time limit of {:g} s reached after {} of {} {}", limits.time_limit_s, done,
+                     total, units);
 }
 
 WorkMeter::WorkMeter(const RunLimits* limits, std::string solver, std::string units, long total)

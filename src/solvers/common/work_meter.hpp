@@ -14,7 +14,10 @@
 namespace catena::internal {
 
 /// "time limit of 5 s reached after 37 of 600 in-plane modes".
-std::string time_limit_message(const RunLimits& limits, long done, long total, const std::string& units);
+std::string time_limit_message(const RunLimits& limits,
+                               long done,
+                               long total,
+                               const std::string& units);
 
 /// Marks the summary of a part stopped by its meter: NoConvergence, and the message
 /// "No convergence: time limit of ... reached after k of n ...; <what the part said>" (a leading

@@ -29,7 +29,8 @@ void BandedLdlt::prepare(Eigen::Index n, int bandwidth) {
   bandwidth_ = bandwidth;
   // assign() and setZero() keep the capacity: a later factorisation of the same size does not
   // touch fresh pages.
-  lower_.assign(static_cast<std::size_t>(n_) * static_cast<std::size_t>(std::max(bandwidth, 1)), 0.0);
+  lower_.assign(static_cast<std::size_t>(n_) * static_cast<std::size_t>(std::max(bandwidth, 1)),
+                0.0);
   pivots_.setZero(n_);
 }
 
@@ -54,7 +55,8 @@ bool BandedLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
   return factor_scattered();
 }
 
-bool BandedLdlt::factorize(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+bool BandedLdlt::factorize(const Eigen::SparseMatrix<double>& K,
+                           const Eigen::SparseMatrix<double>& M,
                            double sigma) {
   prepare(K.rows(), std::max(half_bandwidth(K), half_bandwidth(M)));
   // 0 + k = k and k + (-sigma m) = k - sigma m exactly: the entries of the sparse difference.
@@ -65,9 +67,12 @@ bool BandedLdlt::factorize(const Eigen::SparseMatrix<double>& K, const Eigen::Sp
 
 bool BandedLdlt::factor_scattered() {
   switch (bandwidth_) {
-    case 1: return factor_rows<1>();
-    case 3: return factor_rows<3>();
-    default: return factor_rows<0>();
+    case 1:
+      return factor_rows<1>();
+    case 3:
+      return factor_rows<3>();
+    default:
+      return factor_rows<0>();
   }
 }
 
@@ -84,7 +89,8 @@ bool BandedLdlt::factor_rows() {
     for (Eigen::Index j = first; j < i; ++j) {
       const double* row_j = lower_.data() + j * b + b - j;
       double sum = row_i[j];
-      for (Eigen::Index k = std::max(first, j - b); k < j; ++k) sum -= row_i[k] * pivots[k] * row_j[k];
+      for (Eigen::Index k = std::max(first, j - b); k < j; ++k)
+        sum -= row_i[k] * pivots[k] * row_j[k];
       row_i[j] = sum / pivots[j];
     }
     double d = pivots[i];
@@ -133,9 +139,15 @@ void BandedLdlt::solve_rows(double* x) const {
 
 void BandedLdlt::solve_in_place(double* x) const {
   switch (bandwidth_) {
-    case 1: solve_rows<1>(x); break;
-    case 3: solve_rows<3>(x); break;
-    default: solve_rows<0>(x); break;
+    case 1:
+      solve_rows<1>(x);
+      break;
+    case 3:
+      solve_rows<3>(x);
+      break;
+    default:
+      solve_rows<0>(x);
+      break;
   }
 }
 
@@ -143,7 +155,9 @@ void BandedLdlt::solve_in_place(Eigen::Ref<Eigen::MatrixXd> x) const {
   for (Eigen::Index c = 0; c < x.cols(); ++c) solve_in_place(x.col(c).data());
 }
 
-int BandedLdlt::negative_pivots() const { return static_cast<int>((pivots_.array() < 0.0).count()); }
+int BandedLdlt::negative_pivots() const {
+  return static_cast<int>((pivots_.array() < 0.0).count());
+}
 
 double BandedLdlt::pivot_ratio() const {
   const double largest = pivots_.cwiseAbs().maxCoeff();

@@ -5,8 +5,8 @@
 /// matrices (half bandwidth 3 in plane, 1 out of plane). Without pivoting the factorisation is a
 /// congruence A = L D L^T, so the signs of the pivots D give the inertia of A (Sylvester's law):
 /// the number of negative pivots of K - sigma M is the number of eigenvalues below sigma. This is
-/// the classical Sturm-count argument; it is reliable as long as no pivot is tiny, which the callers
-/// check (a tiny pivot means sigma sits on an eigenvalue).
+/// the classical Sturm-count argument; it is reliable as long as no pivot is tiny, which the
+/// callers check (a tiny pivot means sigma sits on an eigenvalue).
 ///
 /// Cost: O(n b^2) to factor, O(n b) per solve, no symbolic analysis and no index indirection, which
 /// is what makes the shift-invert Lanczos iterations cheap here (Eigen's general SimplicialLDLT
@@ -29,7 +29,9 @@ class BandedLdlt {
   bool factorize(const Eigen::SparseMatrix<double>& A);
   /// Factors A = K - sigma M without forming A (M's pattern must lie within the band of K's or
   /// widen it; each entry is k - sigma m, as the sparse difference would compute it).
-  bool factorize(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double sigma);
+  bool factorize(const Eigen::SparseMatrix<double>& K,
+                 const Eigen::SparseMatrix<double>& M,
+                 double sigma);
 
   /// Solves A x = b in place (b may hold several columns).
   void solve_in_place(Eigen::Ref<Eigen::MatrixXd> b) const;
@@ -37,7 +39,8 @@ class BandedLdlt {
 
   /// The pivots D.
   const Eigen::VectorXd& pivots() const { return pivots_; }
-  /// Number of negative pivots (= eigenvalues of A below 0; of (K, M) below sigma for A = K - sigma M).
+  /// Number of negative pivots (= eigenvalues of A below 0; of (K, M) below sigma for A = K - sigma
+  /// M).
   int negative_pivots() const;
   /// min |D_i| / max |D_i|.
   double pivot_ratio() const;

@@ -14,8 +14,8 @@ namespace {
 
 // The vertical force at each element's midpoint minus V_A: half of node 0's weight goes into
 // support a, and each interior node carries half of each neighbouring element's weight plus the
-// weight of a point attachment there (docs/explanation/methods/fe.md). One piece keeps the closed form
-// W0 l0 (j + 1/2).
+// weight of a point attachment there (docs/explanation/methods/fe.md). One piece keeps the closed
+// form W0 l0 (j + 1/2).
 void lump_weights(FeChain& chain, const FeLineMesh& mesh) {
   const int N = chain.elements;
   chain.vertical_offset_n.resize(N);
@@ -43,14 +43,16 @@ void lump_weights(FeChain& chain, const FeLineMesh& mesh) {
     after_grounded = false;
     const double W0 = piece.section.weight_n_per_m;
     const double l0 = chain.element_length_m[j];
-    for (int k = 0; k < piece.elements; ++k, ++j) chain.vertical_offset_n[j] = before + W0 * l0 * (k + 0.5);
+    for (int k = 0; k < piece.elements; ++k, ++j)
+      chain.vertical_offset_n[j] = before + W0 * l0 * (k + 0.5);
     before += W0 * piece.section.length_m;
   }
 }
 
 // The grounded elements (the mesh's grounded pieces come first) and their static tension relative
-// to the continuous H: the friction profile at each element's midpoint (docs/explanation/physics.md, "Seabed
-// contact"), which is linear on a piece, so the midpoint value is the element's mean tension.
+// to the continuous H: the friction profile at each element's midpoint
+// (docs/explanation/physics.md, "Seabed contact"), which is linear on a piece, so the midpoint
+// value is the element's mean tension.
 void lay_out_contact(FeChain& chain, const FeLineMesh& mesh, double continuous_horizontal_force_n) {
   chain.grounded_tension_offset_n.resize(0);
   if (!mesh.seabed) return;
@@ -62,14 +64,19 @@ void lay_out_contact(FeChain& chain, const FeLineMesh& mesh, double continuous_h
     const double l0 = piece.section.length_m / piece.elements;
     const double slope = mesh.seabed->friction * piece.section.weight_n_per_m;
     for (int k = 0; k < piece.elements; ++k)
-      offsets.push_back(piece.grounded_tension_begin_n + slope * l0 * (k + 0.5) - continuous_horizontal_force_n);
+      offsets.push_back(piece.grounded_tension_begin_n + slope * l0 * (k + 0.5) -
+                        continuous_horizontal_force_n);
   }
   chain.grounded_elements = static_cast<int>(offsets.size());
-  chain.grounded_tension_offset_n = Eigen::Map<const Vector>(offsets.data(), chain.grounded_elements);
+  chain.grounded_tension_offset_n =
+      Eigen::Map<const Vector>(offsets.data(), chain.grounded_elements);
 }
 
 // The sections of the elements, the nodes' arc lengths and point inertias, and the lumped weights.
-void lay_out_chain(FeChain& chain, const FeLineMesh& mesh, double penalty_axial_stiffness_n, double continuous_h_n) {
+void lay_out_chain(FeChain& chain,
+                   const FeLineMesh& mesh,
+                   double penalty_axial_stiffness_n,
+                   double continuous_h_n) {
   const int N = mesh.elements();
   chain.elements = N;
   chain.equal_elements = mesh.is_one_piece();
@@ -86,15 +93,17 @@ void lay_out_chain(FeChain& chain, const FeLineMesh& mesh, double penalty_axial_
     chain.piece_first_element.push_back(j);
     if (piece.point_at_start >= 0) {
       const PointAttachment& point = mesh.points[static_cast<std::size_t>(piece.point_at_start)];
-      chain.node_inertia[static_cast<std::size_t>(j)] = {point.mass_kg + point.tangential_added_mass_kg(),
-                                                         point.mass_kg + point.normal_added_mass_kg(),
-                                                         point.mass_kg + point.outofplane_added_mass_kg()};
+      chain.node_inertia[static_cast<std::size_t>(j)] = {
+          point.mass_kg + point.tangential_added_mass_kg(),
+          point.mass_kg + point.normal_added_mass_kg(),
+          point.mass_kg + point.outofplane_added_mass_kg()};
     }
     const LineSegment& section = piece.section;
     const double l0 = section.length_m / piece.elements;
     for (int k = 0; k < piece.elements; ++k, ++j) {
       chain.element_length_m[j] = l0;
-      chain.axial_stiffness_n[j] = section.is_inextensible() ? penalty_axial_stiffness_n : section.axial_stiffness_n;
+      chain.axial_stiffness_n[j] =
+          section.is_inextensible() ? penalty_axial_stiffness_n : section.axial_stiffness_n;
       chain.mass_kg_per_m[j] = section.mass_kg_per_m;
       chain.normal_mass_kg_per_m[j] = section.normal_mass_kg_per_m();
       chain.node_s_m[j] = s + k * l0;
@@ -132,7 +141,8 @@ void build_chain(FeChain& chain, double H, double V_A) {
     const auto [T, t] = element_force(chain, j, H, V_A);
     chain.tension_n[j] = T;
     chain.direction[static_cast<std::size_t>(j)] = t;
-    chain.stretched_length_m[j] = chain.element_length_m[j] * (1.0 + T / chain.axial_stiffness_n[j]);
+    chain.stretched_length_m[j] =
+        chain.element_length_m[j] * (1.0 + T / chain.axial_stiffness_n[j]);
     chain.node_offset_m[static_cast<std::size_t>(j) + 1] =
         chain.node_offset_m[static_cast<std::size_t>(j)] + chain.stretched_length_m[j] * t;
   }
@@ -156,12 +166,14 @@ Eigen::Matrix2d closure_jacobian(const FeChain& chain) {
   for (int j = 0; j < chain.elements; ++j) {
     if (j < chain.grounded_elements) {
       // Only the grounded tension's stretch depends on H (while it is positive).
-      if (chain.tension_n[j] > 0.0) J(0, 0) += chain.element_length_m[j] / chain.axial_stiffness_n[j];
+      if (chain.tension_n[j] > 0.0)
+        J(0, 0) += chain.element_length_m[j] / chain.axial_stiffness_n[j];
       continue;
     }
     const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
-    J += chain.element_length_m[j] * ((Eigen::Matrix2d::Identity() - t * t.transpose()) / chain.tension_n[j] +
-                                      Eigen::Matrix2d::Identity() / chain.axial_stiffness_n[j]);
+    J += chain.element_length_m[j] *
+         ((Eigen::Matrix2d::Identity() - t * t.transpose()) / chain.tension_n[j] +
+          Eigen::Matrix2d::Identity() / chain.axial_stiffness_n[j]);
   }
   return J;
 }

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Discrete statics of the `fe` chain (docs/explanation/methods/fe.md): N two-node bar elements with the weight
-/// lumped on the nodes, in exact equilibrium between the supports. Element j carries the
-/// continuous force at its midpoint; the support force (H, V_A) closes the chain on support b by a
-/// 2x2 Newton iteration, or is kept as given for a problem stated by its end forces. On a line
-/// (fe_line_mesh.hpp) each element has its segment's section, and a point attachment's weight
-/// is lumped on its node.
+/// Discrete statics of the `fe` chain (docs/explanation/methods/fe.md): N two-node bar elements
+/// with the weight lumped on the nodes, in exact equilibrium between the supports. Element j
+/// carries the continuous force at its midpoint; the support force (H, V_A) closes the chain on
+/// support b by a 2x2 Newton iteration, or is kept as given for a problem stated by its end forces.
+/// On a line (fe_line_mesh.hpp) each element has its segment's section, and a point attachment's
+/// weight is lumped on its node.
 
 #include <string>
 #include <vector>
@@ -18,7 +18,8 @@
 namespace catena::internal {
 
 /// The lumped inertia of a point attachment on its node [kg]: structural mass plus added mass
-/// along the node tangent, the in-plane normal and out of plane (docs/explanation/physics.md, "General lines").
+/// along the node tangent, the in-plane normal and out of plane (docs/explanation/physics.md,
+/// "General lines").
 struct FeNodeInertia {
   double tangential_kg = 0.0;
   double normal_kg = 0.0;
@@ -39,12 +40,13 @@ struct FeChain {
   Vector mass_kg_per_m;
   Vector normal_mass_kg_per_m;
   Vector vertical_offset_n;
-  /// Seabed contact (docs/explanation/methods/fe.md, "Seabed contact"): the first `grounded_elements` elements
-  /// lie on the seabed, horizontal, with tension max(H + grounded_tension_offset_n[j], 0) (the
-  /// continuous friction profile at the element's midpoint, shifted with the chain's own H); the
-  /// others are suspended from the touchdown node, where the chain's vertical force is V_A
-  /// (vertical_offset_n then counts only the weight beyond the touchdown point). The foundation
-  /// stiffnesses k_s (vertical) and k_t (along and across) act on the grounded elements [N/m/m].
+  /// Seabed contact (docs/explanation/methods/fe.md, "Seabed contact"): the first
+  /// `grounded_elements` elements lie on the seabed, horizontal, with tension max(H +
+  /// grounded_tension_offset_n[j], 0) (the continuous friction profile at the element's midpoint,
+  /// shifted with the chain's own H); the others are suspended from the touchdown node, where the
+  /// chain's vertical force is V_A (vertical_offset_n then counts only the weight beyond the
+  /// touchdown point). The foundation stiffnesses k_s (vertical) and k_t (along and across) act on
+  /// the grounded elements [N/m/m].
   int grounded_elements = 0;
   Vector grounded_tension_offset_n;
   double foundation_vertical_n_per_m2 = 0.0;

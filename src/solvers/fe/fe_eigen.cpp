@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The lowest eigenpairs of one fe operator pair: see fe_eigen.hpp and docs/explanation/methods/fe.md.
+// The lowest eigenpairs of one fe operator pair: see fe_eigen.hpp and
+// docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_eigen.hpp"
 
 #include <fmt/format.h>
@@ -35,7 +36,8 @@ class ShiftInvertOperator {
     bool ok = ldlt_.factorize(stiffness_, mass_, sigma);
     factorization_time_s += seconds_since(start);
     ok = ok && ldlt_.pivot_ratio() > 1e-14;
-    if (!ok) throw std::invalid_argument(fmt::format("K - sigma M is singular at sigma = {:.6e}", sigma));
+    if (!ok)
+      throw std::invalid_argument(fmt::format("K - sigma M is singular at sigma = {:.6e}", sigma));
   }
   /// Solves (K - sigma M) Y = X in place for a block of right-hand sides.
   void solve_in_place(Eigen::MatrixXd& X) const { ldlt_.solve_in_place(X); }
@@ -62,7 +64,11 @@ class ShiftInvertOperator {
 class MassFactor {
  public:
   MassFactor(const SparseMatrix& mass, int dofs_per_node)
-      : dofs_(dofs_per_node), nodes_(mass.rows() / dofs_per_node), l11_(nodes_), l21_(nodes_), l22_(nodes_) {
+      : dofs_(dofs_per_node),
+        nodes_(mass.rows() / dofs_per_node),
+        l11_(nodes_),
+        l21_(nodes_),
+        l22_(nodes_) {
     for (Eigen::Index node = 0; node < nodes_; ++node) {
       const Eigen::Index i = node * dofs_;
       l11_[node] = std::sqrt(mass.coeff(i, i));
@@ -85,10 +91,14 @@ class MassFactor {
   /// y = L^T x.
   void lower_transpose(const double* x, double* y) const { lower_transpose_nodes(x, y, 0, nodes_); }
   /// The rows of nodes [first, first + count) of L^T x, into y[0 .. count * dofs).
-  void lower_transpose_nodes(const double* x, double* y, Eigen::Index first, Eigen::Index count) const {
+  void lower_transpose_nodes(const double* x,
+                             double* y,
+                             Eigen::Index first,
+                             Eigen::Index count) const {
     const Eigen::Index offset = first * dofs_;
     if (dofs_ == 1) {
-      for (Eigen::Index node = first; node < first + count; ++node) y[node - offset] = l11_[node] * x[node];
+      for (Eigen::Index node = first; node < first + count; ++node)
+        y[node - offset] = l11_[node] * x[node];
       return;
     }
     for (Eigen::Index node = first, i = offset; node < first + count; ++node, i += 2) {
@@ -178,7 +188,8 @@ void normalise_and_measure_residuals(const FeMatrices& matrices, FeEigenSolution
   Eigen::MatrixXd& phi = out.eigenvectors;
   const Eigen::Index k = phi.cols();
   // Per vector: phi^T M phi, |K phi|^2, |K phi - lambda M phi|^2 and |phi|^2.
-  Eigen::ArrayXd m_norm2 = Eigen::ArrayXd::Zero(k), k_phi2 = m_norm2, residual2 = m_norm2, phi2 = m_norm2;
+  Eigen::ArrayXd m_norm2 = Eigen::ArrayXd::Zero(k), k_phi2 = m_norm2, residual2 = m_norm2,
+                 phi2 = m_norm2;
   Eigen::MatrixXd K_phi, M_phi;
   for (Eigen::Index r = 0; r < phi.rows(); r += kRows) {
     const Eigen::Index rows = std::min(kRows, phi.rows() - r);
@@ -201,7 +212,8 @@ void normalise_and_measure_residuals(const FeMatrices& matrices, FeEigenSolution
     const double denominator = std::sqrt(k_phi2[i]) / norm, r = std::sqrt(residual2[i]) / norm;
     out.max_residual = std::max(out.max_residual, denominator > 0.0 ? r / denominator : r);
     out.max_backward_error = std::max(
-        out.max_backward_error, r / ((k_norm + std::abs(out.eigenvalues[i]) * m_norm) * (std::sqrt(phi2[i]) / norm)));
+        out.max_backward_error,
+        r / ((k_norm + std::abs(out.eigenvalues[i]) * m_norm) * (std::sqrt(phi2[i]) / norm)));
   }
 }
 
@@ -232,9 +244,10 @@ void normalise_and_check(const FeMatrices& matrices, FeEigenSolution& out) {
 }
 
 // Subspace (inverse) iteration with Rayleigh-Ritz on the converged Ritz vectors, with the
-// factorisation the Lanczos iteration already used. Lanczos leaves components along the stiff axial directions
-// of size ~ tolerance; K amplifies them by EA/l0 into the residual. One inverse-iteration step
-// damps them by lambda/lambda_axial (<= 1e-4 here), so one or two steps reach the rounding floor.
+// factorisation the Lanczos iteration already used. Lanczos leaves components along the stiff axial
+// directions of size ~ tolerance; K amplifies them by EA/l0 into the residual. One
+// inverse-iteration step damps them by lambda/lambda_axial (<= 1e-4 here), so one or two steps
+// reach the rounding floor.
 void refine(const FeMatrices& matrices, const ShiftInvertOperator& op, FeEigenSolution& out) {
   {
     Eigen::MatrixXd Y = matrices.mass * out.eigenvectors;
@@ -268,31 +281,37 @@ void solve_dense(const FeMatrices& matrices, int modes, FeEigenSolution& out) {
   out.termination = Termination::Converged;
 }
 
-
 // lambda = sigma + 1 / theta, ascending, with the vectors mapped back by L^{-T} in place (the
 // Lanczos vectors become the eigenvectors: no second n x k matrix).
-void take_ritz_pairs(LanczosResult&& lanczos, double sigma, const MassFactor& factor,
+void take_ritz_pairs(LanczosResult&& lanczos,
+                     double sigma,
+                     const MassFactor& factor,
                      FeEigenSolution& out) {
   const auto count = lanczos.values.size();
   std::vector<Eigen::Index> order(static_cast<std::size_t>(count));
   for (Eigen::Index i = 0; i < count; ++i) order[static_cast<std::size_t>(i)] = i;
   auto lambda = [&](Eigen::Index i) { return sigma + 1.0 / lanczos.values[i]; };
-  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return lambda(a) < lambda(b); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](auto a, auto b) { return lambda(a) < lambda(b); });
   out.eigenvalues.resize(count);
-  for (Eigen::Index i = 0; i < count; ++i) out.eigenvalues[i] = lambda(order[static_cast<std::size_t>(i)]);
+  for (Eigen::Index i = 0; i < count; ++i)
+    out.eigenvalues[i] = lambda(order[static_cast<std::size_t>(i)]);
   factor.inverse_transpose_in_place(lanczos.vectors);
   out.eigenvectors = std::move(lanczos.vectors);
   // Largest theta first is already ascending lambda unless the shift moved into the spectrum.
   if (!std::is_sorted(order.begin(), order.end())) {
     const Eigen::MatrixXd unsorted = out.eigenvectors;
-    for (Eigen::Index i = 0; i < count; ++i) out.eigenvectors.col(i) = unsorted.col(order[static_cast<std::size_t>(i)]);
+    for (Eigen::Index i = 0; i < count; ++i)
+      out.eigenvectors.col(i) = unsorted.col(order[static_cast<std::size_t>(i)]);
   }
   out.termination = Termination::Converged;
 }
 
 // Polishes converged Ritz pairs: one or two inverse-iteration steps, only until the normwise
 // backward error is at rounding level; the M-orthogonality of the final vectors is measured once.
-void polish(const FeMatrices& matrices, const ShiftInvertOperator& op, const MassFactor& factor,
+void polish(const FeMatrices& matrices,
+            const ShiftInvertOperator& op,
+            const MassFactor& factor,
             FeEigenSolution& out) {
   for (int step = 0; step < 3; ++step) {
     normalise_and_measure_residuals(matrices, out);
@@ -316,22 +335,29 @@ Vector standard_form_guess(const Vector* guess, const MassFactor& factor, Eigen:
   return y;
 }
 
-void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, double tolerance,
-                       int max_restarts, FeEigenWorkspace& workspace, const Vector* guess,
+void solve_iteratively(const FeMatrices& matrices,
+                       int modes,
+                       int subspace,
+                       double tolerance,
+                       int max_restarts,
+                       FeEigenWorkspace& workspace,
+                       const Vector* guess,
                        FeEigenSolution& out) {
   ShiftInvertOperator op(matrices.stiffness, matrices.mass, workspace.factor);
   const MassFactor factor(matrices.mass, matrices.dofs_per_node);
   StandardFormOperator standard(op, factor);
-  const SymmetricOperator apply = [&standard](const double* x, double* y) { standard.perform_op(x, y); };
+  const SymmetricOperator apply = [&standard](const double* x, double* y) {
+    standard.perform_op(x, y);
+  };
   const Vector start_guess = standard_form_guess(guess, factor, standard.rows());
   double sigma = 0.0;
   for (int attempt = 0; attempt < 4; ++attempt) {
     try {
       standard.set_shift(sigma);
       const auto start = Clock::now();
-      LanczosResult lanczos =
-          largest_magnitude_eigenpairs(apply, standard.rows(), modes, subspace, tolerance, max_restarts,
-                                       workspace.lanczos, start_guess.size() > 0 ? start_guess.data() : nullptr);
+      LanczosResult lanczos = largest_magnitude_eigenpairs(
+          apply, standard.rows(), modes, subspace, tolerance, max_restarts, workspace.lanczos,
+          start_guess.size() > 0 ? start_guess.data() : nullptr);
       out.iteration_time_s += seconds_since(start);
       out.restarts += lanczos.restarts;
       out.operations += lanczos.operations;
@@ -348,11 +374,13 @@ void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, doub
       break;
     } catch (const std::invalid_argument& error) {
       // A singular shift (ShiftInvertOperator says so by invalid_argument).
-      const double scale = (matrices.stiffness.diagonal().array() /
-                            matrices.mass.diagonal().array()).abs().maxCoeff();
+      const double scale =
+          (matrices.stiffness.diagonal().array() / matrices.mass.diagonal().array())
+              .abs()
+              .maxCoeff();
       const double moved = -1e-8 * scale * std::pow(100.0, attempt);
-      out.warnings.push_back(fmt::format("shift {:.3e} rejected ({}); moved to {:.3e}", sigma,
-                                         error.what(), moved));
+      out.warnings.push_back(
+          fmt::format("shift {:.3e} rejected ({}); moved to {:.3e}", sigma, error.what(), moved));
       sigma = moved;
       out.termination = Termination::NumericalFailure;
       out.message = error.what();
@@ -366,7 +394,10 @@ void solve_iteratively(const FeMatrices& matrices, int modes, int subspace, doub
 // above the eigenvalue's rounding error, which for a stiff penalised chain is set by the residual
 // floor eps ||K|| / ||K phi|| rather than by the convergence tolerance, and far below any physical
 // gap between modes.
-void prove_mode_count(const FeMatrices& matrices, int modes, BandedLdlt& factor, FeEigenSolution& out) {
+void prove_mode_count(const FeMatrices& matrices,
+                      int modes,
+                      BandedLdlt& factor,
+                      FeEigenSolution& out) {
   const auto start = Clock::now();
   const double top = out.eigenvalues[out.eigenvalues.size() - 1];
   out.inertia_shift = top + std::max(1e-9, 10.0 * out.max_residual) * std::abs(top);
@@ -387,7 +418,8 @@ void prove_mode_count(const FeMatrices& matrices, int modes, BandedLdlt& factor,
 }  // namespace
 
 void reserve_for_largest_solve(FeEigenWorkspace& workspace, Eigen::Index unknowns, int modes) {
-  if (!solved_densely(unknowns, modes)) workspace.lanczos.reserve(unknowns, lanczos_subspace(unknowns, modes));
+  if (!solved_densely(unknowns, modes))
+    workspace.lanczos.reserve(unknowns, lanczos_subspace(unknowns, modes));
 }
 
 Vector mode_sum_guess(const Eigen::MatrixXd& modes, int dofs_per_node, Eigen::Index rows) {
@@ -403,7 +435,8 @@ Vector mode_sum_guess(const Eigen::MatrixXd& modes, int dofs_per_node, Eigen::In
   };
   for (Eigen::Index f = 1; f <= 2 * coarse_nodes + 1; ++f)
     for (Eigen::Index dof = 0; dof < d; ++dof)
-      fine[(f - 1) * d + dof] = f % 2 == 0 ? coarse(f / 2, dof) : 0.5 * (coarse(f / 2, dof) + coarse(f / 2 + 1, dof));
+      fine[(f - 1) * d + dof] =
+          f % 2 == 0 ? coarse(f / 2, dof) : 0.5 * (coarse(f / 2, dof) + coarse(f / 2 + 1, dof));
   return fine;
 }
 

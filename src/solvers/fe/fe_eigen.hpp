@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The lowest eigenpairs of one `fe` operator pair, K phi = omega^2 M phi (docs/explanation/methods/fe.md):
-/// our thick-restart shift-invert Lanczos (fe_lanczos.hpp) on the standard form L^{-1} K L^{-T}
-/// (M = L L^T blockwise),
-/// applied through a banded LDL^T of K - sigma M; at most two polishing steps of inverse subspace
-/// iteration with Rayleigh-Ritz until the normwise backward error is at rounding level; and the
-/// mode count proved by Sylvester's law of inertia. Problems of at most 64 unknowns are solved
-/// densely.
+/// The lowest eigenpairs of one `fe` operator pair, K phi = omega^2 M phi
+/// (docs/explanation/methods/fe.md): our thick-restart shift-invert Lanczos (fe_lanczos.hpp) on the
+/// standard form L^{-1} K L^{-T} (M = L L^T blockwise), applied through a banded LDL^T of K - sigma
+/// M; at most two polishing steps of inverse subspace iteration with Rayleigh-Ritz until the
+/// normwise backward error is at rounding level; and the mode count proved by Sylvester's law of
+/// inertia. Problems of at most 64 unknowns are solved densely.
 
 #include <Eigen/Dense>
 #include <string>

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Mode matching and extrapolation of the fe solver: see fe_extrapolation.hpp and docs/explanation/methods/fe.md.
+// Mode matching and extrapolation of the fe solver: see fe_extrapolation.hpp and
+// docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_extrapolation.hpp"
 
 #include <algorithm>
@@ -13,20 +14,25 @@ namespace {
 
 // The displacement of the free nodes of a chain of `elements` elements, restricted to the nodes
 // of a chain of `coarse_elements` (a divisor): node i of the coarse chain is node i r of the fine.
-Eigen::MatrixXd restrict_to_nodes(const Eigen::Ref<const Eigen::MatrixXd>& vectors, int elements, int coarse_elements,
+Eigen::MatrixXd restrict_to_nodes(const Eigen::Ref<const Eigen::MatrixXd>& vectors,
+                                  int elements,
+                                  int coarse_elements,
                                   Plane plane) {
   const int per_node = plane == Plane::InPlane ? 2 : 1;
   const int ratio = elements / coarse_elements;
   Eigen::MatrixXd out(per_node * (coarse_elements - 1), vectors.cols());
   for (int i = 1; i < coarse_elements; ++i)
-    out.middleRows(per_node * (i - 1), per_node) = vectors.middleRows(per_node * (i * ratio - 1), per_node);
+    out.middleRows(per_node * (i - 1), per_node) =
+        vectors.middleRows(per_node * (i * ratio - 1), per_node);
   return out;
 }
 
 // The greedy assignment of match_modes on the MAC between the columns of a and b.
-std::vector<int> assign_by_mac(const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const Eigen::MatrixXd>& b) {
+std::vector<int> assign_by_mac(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                               const Eigen::Ref<const Eigen::MatrixXd>& b) {
   const Eigen::MatrixXd cross = a.transpose() * b;
-  const Vector na = a.colwise().squaredNorm().transpose(), nb = b.colwise().squaredNorm().transpose();
+  const Vector na = a.colwise().squaredNorm().transpose(),
+               nb = b.colwise().squaredNorm().transpose();
   const auto n = static_cast<int>(a.cols());
   std::vector<int> result(static_cast<std::size_t>(n), -1);
   std::vector<bool> used(static_cast<std::size_t>(b.cols()), false);
@@ -61,9 +67,12 @@ std::vector<int> match_modes(const Eigen::Ref<const Eigen::MatrixXd>& reference,
                              Plane plane) {
   const int common = std::min(reference_elements, other_elements);
   // A mesh whose nodes are all common is used as it is, not copied.
-  if (reference_elements == common && other_elements == common) return assign_by_mac(reference, other);
-  if (reference_elements == common) return assign_by_mac(reference, restrict_to_nodes(other, other_elements, common, plane));
-  if (other_elements == common) return assign_by_mac(restrict_to_nodes(reference, reference_elements, common, plane), other);
+  if (reference_elements == common && other_elements == common)
+    return assign_by_mac(reference, other);
+  if (reference_elements == common)
+    return assign_by_mac(reference, restrict_to_nodes(other, other_elements, common, plane));
+  if (other_elements == common)
+    return assign_by_mac(restrict_to_nodes(reference, reference_elements, common, plane), other);
   return assign_by_mac(restrict_to_nodes(reference, reference_elements, common, plane),
                        restrict_to_nodes(other, other_elements, common, plane));
 }
@@ -74,7 +83,10 @@ std::vector<int> match_modes(const Eigen::Ref<const Eigen::MatrixXd>& reference,
 // The reference level matches itself mode for mode: it is not compared with itself (at N = 1e6
 // that comparison copied and multiplied two n x k blocks for nothing). Column blocks are passed
 // as references, not copied.
-FeModeMatches match_level_modes(const FeLevels& levels, const FePlan& plan, Plane plane, int available) {
+FeModeMatches match_level_modes(const FeLevels& levels,
+                                const FePlan& plan,
+                                Plane plane,
+                                int available) {
   const FeLevel& reference = levels[static_cast<std::size_t>(plan.main_fine)][0];
   const auto reference_vectors = reference.eigen.at(plane).eigenvectors.leftCols(available);
   FeModeMatches matches(levels.size(), std::vector<std::vector<int>>(plan.penalties()));
@@ -88,7 +100,8 @@ FeModeMatches match_level_modes(const FeLevels& levels, const FePlan& plan, Plan
         continue;
       }
       matches[m][k] = match_modes(reference_vectors, reference.chain.elements,
-                                  level.eigen.at(plane).eigenvectors.leftCols(available), level.chain.elements, plane);
+                                  level.eigen.at(plane).eigenvectors.leftCols(available),
+                                  level.chain.elements, plane);
     }
   }
   return matches;
@@ -108,8 +121,8 @@ std::vector<std::vector<double>> level_omegas(const FeLevels& levels,
   return omega;
 }
 
-double rounding_estimate(const FePlan& plan, const FeLevels& levels, const FeModeMatches& matches,
-                         Plane plane, int i) {
+double rounding_estimate(
+    const FePlan& plan, const FeLevels& levels, const FeModeMatches& matches, Plane plane, int i) {
   double largest = 0.0;
   for (std::size_t m = 0; m < levels.size(); ++m) {
     for (std::size_t k = 0; k < levels[m].size(); ++k) {
@@ -166,9 +179,10 @@ FeExtrapolatedFrequency extrapolate_frequency(const FePlan& plan,
   if (!plan.inextensible) return {per_penalty[0], per_penalty_error[0]};
   // Linear in kappa (Irvine's 1/lambda^2 is linear in the extensibility): 2 w(kappa) - w(2 kappa).
   const double linear = 2.0 * per_penalty[0] - per_penalty[1];
-  const double kappa_error = per_penalty.size() > 2
-                                 ? kappa_extrapolation_error(per_penalty[0], per_penalty[1], per_penalty[2])
-                                 : std::abs(per_penalty[0] - per_penalty[1]);
+  const double kappa_error =
+      per_penalty.size() > 2
+          ? kappa_extrapolation_error(per_penalty[0], per_penalty[1], per_penalty[2])
+          : std::abs(per_penalty[0] - per_penalty[1]);
   const double error = per_penalty_error[0] < 0.0 ? -1.0 : per_penalty_error[0] + kappa_error;
   return {linear, error};
 }

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The `fe` solver's extrapolation (docs/explanation/methods/fe.md): modes paired across levels by their shapes
-/// (largest MAC on the common nodes), Richardson in the mesh (order 2, mesh ratio 2:
+/// The `fe` solver's extrapolation (docs/explanation/methods/fe.md): modes paired across levels by
+/// their shapes (largest MAC on the common nodes), Richardson in the mesh (order 2, mesh ratio 2:
 /// omega = omega_2N + (omega_2N - omega_N) / 3; the error estimate is the difference from the
 /// Richardson value on N/2, N where that mesh was solved and the frequencies show their order 2,
 /// else the correction itself), linear extrapolation in the penalty kappa to 0 for an
@@ -30,7 +30,10 @@ std::vector<int> match_modes(const Eigen::Ref<const Eigen::MatrixXd>& reference,
 /// matches[mesh][penalty][i]: the mode of that level paired with mode i of the reference level
 /// (the finest main mesh, first penalty), for the lowest `available` modes of `plane`.
 using FeModeMatches = std::vector<std::vector<std::vector<int>>>;
-FeModeMatches match_level_modes(const FeLevels& levels, const FePlan& plan, Plane plane, int available);
+FeModeMatches match_level_modes(const FeLevels& levels,
+                                const FePlan& plan,
+                                Plane plane,
+                                int available);
 
 /// omega[mesh][penalty] of reference mode i [rad/s], through the matches.
 std::vector<std::vector<double>> level_omegas(const FeLevels& levels,
@@ -42,8 +45,8 @@ std::vector<std::vector<double>> level_omegas(const FeLevels& levels,
 /// its levels' element-wise Rayleigh quotients (FeEigenSolution::rounding, relative on lambda =
 /// omega^2, so halved) times what the extrapolations amplify a level's error by (Richardson in
 /// the mesh 4/3 + 1/3, linear in kappa 2 + 1). 0 when a level carries no bound.
-double rounding_estimate(const FePlan& plan, const FeLevels& levels, const FeModeMatches& matches,
-                         Plane plane, int i);
+double rounding_estimate(
+    const FePlan& plan, const FeLevels& levels, const FeModeMatches& matches, Plane plane, int i);
 
 /// A frequency extrapolated in the mesh (Richardson, when planned) and in kappa (inextensible).
 struct FeExtrapolatedFrequency {

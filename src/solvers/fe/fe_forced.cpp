@@ -9,12 +9,12 @@
 #include <cmath>
 #include <limits>
 
+#include "solvers/common/work_meter.hpp"
 #include "solvers/fe/fe_banded_ldlt.hpp"
 #include "solvers/fe/fe_extrapolation.hpp"
 #include "solvers/fe/fe_forced_richardson.hpp"
 #include "solvers/fe/fe_structured_residual.hpp"
 #include "solvers/fe/fe_summary.hpp"
-#include "solvers/common/work_meter.hpp"
 
 namespace catena::internal {
 namespace {
@@ -26,18 +26,27 @@ double seconds_since(Clock::time_point start) {
 
 // The imposed end displacements (d at the forced end, 0 at the other). Out of plane the amplitude
 // is carried in x.
-std::pair<Vec2, Vec2> end_displacements(const ForcedRequest& request, const StaticSolution& statics,
+std::pair<Vec2, Vec2> end_displacements(const ForcedRequest& request,
+                                        const StaticSolution& statics,
                                         double length_m) {
   const double s_end = request.end == CableEnd::A ? 0.0 : length_m;
   Vec2 direction = Vec2(1.0, 0.0);
   switch (request.direction) {
-    case ForcingDirection::Tangential: direction = statics.tangent(s_end); break;
-    case ForcingDirection::Normal: direction = statics.normal(s_end); break;
-    case ForcingDirection::GivenVector: direction = request.unit_vector(); break;
-    case ForcingDirection::OutOfPlane: break;
+    case ForcingDirection::Tangential:
+      direction = statics.tangent(s_end);
+      break;
+    case ForcingDirection::Normal:
+      direction = statics.normal(s_end);
+      break;
+    case ForcingDirection::GivenVector:
+      direction = request.unit_vector();
+      break;
+    case ForcingDirection::OutOfPlane:
+      break;
   }
   const Vec2 d = request.amplitude_m * direction;
-  return {request.end == CableEnd::A ? d : Vec2::Zero(), request.end == CableEnd::B ? d : Vec2::Zero()};
+  return {request.end == CableEnd::A ? d : Vec2::Zero(),
+          request.end == CableEnd::B ? d : Vec2::Zero()};
 }
 
 // What one forcing frequency needs besides omega.
@@ -58,7 +67,8 @@ std::vector<FeFieldPiece> field_pieces(const FeChain& chain) {
   const std::vector<int>& first = chain.piece_first_element;
   for (std::size_t k = 0; k < first.size(); ++k) {
     const int end = k + 1 < first.size() ? first[k + 1] : chain.elements;
-    pieces.push_back({first[k], end - first[k], chain.node_s_m[first[k]], chain.element_length_m[first[k]]});
+    pieces.push_back(
+        {first[k], end - first[k], chain.node_s_m[first[k]], chain.element_length_m[first[k]]});
   }
   return pieces;
 }
@@ -79,7 +89,9 @@ struct MeshResponse {
   double tension_rounding = 0.0;
 };
 
-MeshResponse respond_on_mesh(const Forcing& forcing, const std::vector<FeLevel>& mesh, double omega) {
+MeshResponse respond_on_mesh(const Forcing& forcing,
+                             const std::vector<FeLevel>& mesh,
+                             double omega) {
   MeshResponse out;
   std::vector<FeResponseField> fields;
   for (const FeLevel& level : mesh) {
@@ -93,15 +105,16 @@ MeshResponse respond_on_mesh(const Forcing& forcing, const std::vector<FeLevel>&
   }
   if (fields.size() >= 2) out.tension_rounding *= 3.0;
   out.field = fields.size() >= 2 ? extrapolate_field_in_kappa(fields[0], fields[1]) : fields[0];
-  out.kappa_reference = fields.size() == 3 ? quadratic_field_in_kappa(fields[0], fields[1], fields[2]) : fields[0];
+  out.kappa_reference =
+      fields.size() == 3 ? quadratic_field_in_kappa(fields[0], fields[1], fields[2]) : fields[0];
   out.kappa_factor = fields.size() == 3 ? 2.0 : 1.0;
   return out;
 }
 
 // The error estimate's pieces, absolute over the stations (in the peak tension's unit).
 struct ForcedErrorParts {
-  double mesh = 0.0;      // the Richardson correction |R - fine| (without Richardson: |fine - coarse|)
-  double kappa = 0.0;     // the kappa term on the fine mesh (inextensible, MeshResponse)
+  double mesh = 0.0;   // the Richardson correction |R - fine| (without Richardson: |fine - coarse|)
+  double kappa = 0.0;  // the kappa term on the fine mesh (inextensible, MeshResponse)
   double rounding = 0.0;  // the tensions' rounding, through the extrapolations (MeshResponse)
 };
 
@@ -112,25 +125,37 @@ struct ForcedErrorParts {
 // resonance, and the response of any model whose omega_n is off by delta_n is off by about
 // 2 delta_n omega_n^2 / |omega_n^2 - omega^2|: that term, with fe's own frequency estimates, is
 // added, so the estimate never falls below the frequency error's amplification.
-double forced_estimate(const ForcedErrorParts& parts, double peak, double omega,
+double forced_estimate(const ForcedErrorParts& parts,
+                       double peak,
+                       double omega,
                        const std::vector<FeNaturalFrequency>& naturals) {
-  return (parts.mesh + parts.kappa + parts.rounding) / peak + frequency_error_amplification(omega, naturals);
+  return (parts.mesh + parts.kappa + parts.rounding) / peak +
+         frequency_error_amplification(omega, naturals);
 }
 
 // The mesh term of the estimate in plane (absolute, over the stations): |R(N, 2N) - R(N/2, N)|
 // where the estimate mesh N/2 answered and the peak tensions of the three unextrapolated responses
 // converge at order 2 (within 0.25, as for the frequencies: fe_extrapolation.hpp); otherwise
 // `correction`, the Richardson correction |R - fine|, which bounds the unextrapolated error.
-double mesh_term(const Forcing& forcing, const FePlan& plan, const FeLevels& levels, double omega,
-                 const MeshResponse& coarse, const FeSampled& fine, const FeSampled& result, double correction) {
-  if (!plan.richardson || !plan.has_estimate_mesh() || forcing.plane != Plane::InPlane) return correction;
-  const MeshResponse half = respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.estimate_coarse)], omega);
+double mesh_term(const Forcing& forcing,
+                 const FePlan& plan,
+                 const FeLevels& levels,
+                 double omega,
+                 const MeshResponse& coarse,
+                 const FeSampled& fine,
+                 const FeSampled& result,
+                 double correction) {
+  if (!plan.richardson || !plan.has_estimate_mesh() || forcing.plane != Plane::InPlane)
+    return correction;
+  const MeshResponse half =
+      respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.estimate_coarse)], omega);
   if (!half.diagnostic.empty()) return correction;
   auto sampled = [&](const FeResponseField& field) {
     return sample_field(forcing.plane, field, forcing.stations, forcing.statics);
   };
-  const double order = observed_order(max_abs(sampled(half.field).tension), max_abs(sampled(coarse.field).tension),
-                                      max_abs(fine.tension));
+  const double order =
+      observed_order(max_abs(sampled(half.field).tension), max_abs(sampled(coarse.field).tension),
+                     max_abs(fine.tension));
   if (!(std::abs(order - 2.0) <= 0.25)) return correction;
   return max_station_difference(result, sampled(richardson_field(half.field, coarse.field)), true);
 }
@@ -138,23 +163,29 @@ double mesh_term(const Forcing& forcing, const FePlan& plan, const FeLevels& lev
 // The response at one forcing frequency: the meshes combined (Richardson in h on coinciding
 // points, fe_forced_richardson.hpp) and sampled on the stations, with the relative error estimate
 // of its peak tension (forced_estimate).
-void respond(ForcedResponse& response, const Forcing& forcing, const FePlan& plan, const FeLevels& levels,
+void respond(ForcedResponse& response,
+             const Forcing& forcing,
+             const FePlan& plan,
+             const FeLevels& levels,
              const std::vector<FeNaturalFrequency>& naturals) {
   const double omega = response.omega_rad_s;
-  const MeshResponse fine = respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.main_fine)], omega);
+  const MeshResponse fine =
+      respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.main_fine)], omega);
   MeshResponse coarse;
   if (plan.has_coarse() && fine.diagnostic.empty())
     coarse = respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.main_coarse)], omega);
   response.diagnostic = fine.diagnostic.empty() ? coarse.diagnostic : fine.diagnostic;
   if (!response.diagnostic.empty()) return;
-  const FeSampled fine_sampled = sample_field(forcing.plane, fine.field, forcing.stations, forcing.statics);
+  const FeSampled fine_sampled =
+      sample_field(forcing.plane, fine.field, forcing.stations, forcing.statics);
   FeSampled result = fine_sampled;
   ForcedErrorParts parts;
   const bool in_plane = forcing.plane == Plane::InPlane;
   if (plan.has_coarse()) {
     const FeSampled other =
         plan.richardson
-            ? sample_field(forcing.plane, richardson_field(coarse.field, fine.field), forcing.stations, forcing.statics)
+            ? sample_field(forcing.plane, richardson_field(coarse.field, fine.field),
+                           forcing.stations, forcing.statics)
             : sample_field(forcing.plane, coarse.field, forcing.stations, forcing.statics);
     if (plan.richardson) result = other;
     parts.mesh = mesh_term(forcing, plan, levels, omega, coarse, fine_sampled, result,
@@ -167,7 +198,8 @@ void respond(ForcedResponse& response, const Forcing& forcing, const FePlan& pla
   if (plan.inextensible) {
     const FeSampled kappa_reference =
         sample_field(forcing.plane, fine.kappa_reference, forcing.stations, forcing.statics);
-    parts.kappa = fine.kappa_factor * max_station_difference(fine_sampled, kappa_reference, in_plane);
+    parts.kappa =
+        fine.kappa_factor * max_station_difference(fine_sampled, kappa_reference, in_plane);
   }
   response.u = result.u;
   response.w = result.w;
@@ -175,7 +207,8 @@ void respond(ForcedResponse& response, const Forcing& forcing, const FePlan& pla
   response.tension_n = result.tension;
   response.max_abs_tension_n = max_abs(result.tension);
   if (plan.has_coarse() && response.max_abs_tension_n > 0.0)
-    response.relative_error_estimate = forced_estimate(parts, response.max_abs_tension_n, omega, naturals);
+    response.relative_error_estimate =
+        forced_estimate(parts, response.max_abs_tension_n, omega, naturals);
   const double scale = std::max({max_abs(response.u), max_abs(response.w), max_abs(response.v)});
   if (!std::isfinite(scale) || !std::isfinite(response.max_abs_tension_n) ||
       !std::isfinite(response.relative_error_estimate)) {
@@ -203,7 +236,9 @@ Plane forced_plane(const ForcedRequest& request) {
 
 // A forcing frequency indistinguishable from a computed natural frequency (within that
 // frequency's own error estimate) has no meaningful finite answer.
-std::string resonance_diagnostic(double omega, Plane plane, const std::vector<FeNaturalFrequency>& naturals) {
+std::string resonance_diagnostic(double omega,
+                                 Plane plane,
+                                 const std::vector<FeNaturalFrequency>& naturals) {
   for (const FeNaturalFrequency& mode : naturals) {
     const double window =
         std::max(1e-9, 3.0 * std::max(0.0, mode.relative_error_estimate)) * mode.omega_rad_s;
@@ -218,7 +253,8 @@ std::string resonance_diagnostic(double omega, Plane plane, const std::vector<Fe
   return {};
 }
 
-double frequency_error_amplification(double omega, const std::vector<FeNaturalFrequency>& naturals) {
+double frequency_error_amplification(double omega,
+                                     const std::vector<FeNaturalFrequency>& naturals) {
   double worst = 0.0;
   for (const FeNaturalFrequency& mode : naturals) {
     if (!(mode.relative_error_estimate >= 0.0)) continue;
@@ -237,7 +273,8 @@ double tension_rounding(const FeChain& chain, const std::vector<Vec2>& D) {
   double worst = 0.0;
   for (int j = 0; j < chain.elements; ++j) {
     const auto k = static_cast<std::size_t>(j);
-    worst = std::max(worst, chain.axial_stiffness_n[j] / chain.element_length_m[j] * (D[k].norm() + D[k + 1].norm()));
+    worst = std::max(worst, chain.axial_stiffness_n[j] / chain.element_length_m[j] *
+                                (D[k].norm() + D[k + 1].norm()));
   }
   return std::numeric_limits<double>::epsilon() * worst;
 }
@@ -299,21 +336,24 @@ ForcedOutcome fe_forced_response(const ForcedRequest& request,
                                  FeTimings& timings) {
   const auto start = Clock::now();
   const Vector stations = context.request.stations_m(context.problem.length_m());
-  const auto [end_a, end_b] = end_displacements(request, context.statics, context.problem.length_m());
+  const auto [end_a, end_b] =
+      end_displacements(request, context.statics, context.problem.length_m());
   const Forcing forcing{forced_plane(request), end_a, end_b, stations, context.statics};
   std::vector<std::size_t> meshes = {static_cast<std::size_t>(plan.main_fine)};
   if (plan.has_coarse()) meshes.push_back(static_cast<std::size_t>(plan.main_coarse));
   if (plan.has_estimate_mesh()) meshes.push_back(static_cast<std::size_t>(plan.estimate_coarse));
   assemble_missing(levels, forcing.plane, meshes);
   ForcedOutcome outcome;
-  WorkMeter meter(context, "fe", "forced frequencies", static_cast<long>(request.omegas_rad_s.size()));
+  WorkMeter meter(context, "fe", "forced frequencies",
+                  static_cast<long>(request.omegas_rad_s.size()));
   for (double omega : request.omegas_rad_s) {
     ForcedResponse response;
     response.omega_rad_s = omega;
     response.s_m = stations;
     response.diagnostic = resonance_diagnostic(omega, forcing.plane, naturals);
     if (response.diagnostic.empty()) respond(response, forcing, plan, levels, naturals);
-    // Every diagnostic of fe's forced response is a resonance (its own, or a singular K - omega^2 M).
+    // Every diagnostic of fe's forced response is a resonance (its own, or a singular K - omega^2
+    // M).
     response.at_resonance = !response.diagnostic.empty();
     response.near_resonance = response.diagnostic.empty() && near_natural(omega, naturals);
     if (!response.diagnostic.empty()) outcome.summary.warnings.push_back(response.diagnostic);

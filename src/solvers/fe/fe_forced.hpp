@@ -1,22 +1,22 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The `fe` solver's forced response (docs/explanation/methods/fe.md): a harmonic end displacement d imposed by
-/// one banded solve of (K - omega^2 M) x = -K_ib d per forcing frequency and level (each penalty,
-/// extrapolated to kappa = 0 when the cable is inextensible), Richardson-extrapolated in h over the
-/// main mesh pair (fe_forced_richardson.hpp), with a relative error estimate of the peak tension
-/// that includes the amplification of the natural frequencies' errors near a resonance. A forcing frequency at a natural frequency
-/// (within the frequency's own error estimate) or at a singular K - omega^2 M gets a diagnostic
-/// instead of a response.
+/// The `fe` solver's forced response (docs/explanation/methods/fe.md): a harmonic end displacement
+/// d imposed by one banded solve of (K - omega^2 M) x = -K_ib d per forcing frequency and level
+/// (each penalty, extrapolated to kappa = 0 when the cable is inextensible),
+/// Richardson-extrapolated in h over the main mesh pair (fe_forced_richardson.hpp), with a relative
+/// error estimate of the peak tension that includes the amplification of the natural frequencies'
+/// errors near a resonance. A forcing frequency at a natural frequency (within the frequency's own
+/// error estimate) or at a singular K - omega^2 M gets a diagnostic instead of a response.
 
 #include <vector>
 
 #include "catena/solvers/modal_result.hpp"
 #include "catena/solvers/solve_request.hpp"
+#include "solvers/common/solver_driver.hpp"
 #include "solvers/fe/fe_forced_richardson.hpp"
 #include "solvers/fe/fe_levels.hpp"
 #include "solvers/fe/fe_shapes.hpp"
-#include "solvers/common/solver_driver.hpp"
 
 namespace catena::internal {
 
@@ -36,7 +36,9 @@ Plane forced_plane(const ForcedRequest& request);
 
 /// The resonance diagnostic when `omega` lies within max(1e-9, 3 x relative error estimate) of a
 /// natural frequency (relative); empty otherwise.
-std::string resonance_diagnostic(double omega, Plane plane, const std::vector<FeNaturalFrequency>& naturals);
+std::string resonance_diagnostic(double omega,
+                                 Plane plane,
+                                 const std::vector<FeNaturalFrequency>& naturals);
 
 /// The response of one level (a chain and its operators) at `omega` to end displacements
 /// `end_a`, `end_b`: nodal displacements and element tensions; `diagnostic` set (and no response)

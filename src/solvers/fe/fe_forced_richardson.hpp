@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Richardson extrapolation in h of the `fe` forced response (docs/explanation/methods/fe.md, "Forced
-/// response"), done where the two meshes' values describe the same point. The lumped chain's nodal
-/// displacements converge as O(h^2) at the nodes, and its element tensions as O(h^2) at the element
-/// midpoints; sampling either on the request's stations by linear interpolation adds an O(h^2)
-/// error whose coefficient depends on where a station falls between grid points, which differs
-/// between the meshes, so extrapolating station by station would not cancel it. Instead:
+/// Richardson extrapolation in h of the `fe` forced response (docs/explanation/methods/fe.md,
+/// "Forced response"), done where the two meshes' values describe the same point. The lumped
+/// chain's nodal displacements converge as O(h^2) at the nodes, and its element tensions as O(h^2)
+/// at the element midpoints; sampling either on the request's stations by linear interpolation adds
+/// an O(h^2) error whose coefficient depends on where a station falls between grid points, which
+/// differs between the meshes, so extrapolating station by station would not cancel it. Instead:
 /// displacements are extrapolated at the coarse mesh's nodes (which are nodes of the fine mesh),
 /// tensions at the coarse mesh's element midpoints (the fine mesh's tensions brought there by
 /// cubic interpolation, O(h^4)), and the extrapolated fields are sampled on the stations by cubic
@@ -44,14 +44,17 @@ struct FeResponseField {
 /// same polynomial). Exact for cubics.
 double cubic_interpolate(const std::vector<double>& values, double first, double spacing, double x);
 /// The same on `count` values starting at `values`.
-double cubic_interpolate(const double* values, std::size_t count, double first, double spacing, double x);
+double cubic_interpolate(
+    const double* values, std::size_t count, double first, double spacing, double x);
 
 /// Linear extrapolation to kappa = 0 of the fields at kappa (`at_kappa`) and 2 kappa: 2a - b.
-FeResponseField extrapolate_field_in_kappa(const FeResponseField& at_kappa, const FeResponseField& at_2kappa);
+FeResponseField extrapolate_field_in_kappa(const FeResponseField& at_kappa,
+                                           const FeResponseField& at_2kappa);
 
 /// The quadratic in kappa through the fields at kappa, 2 kappa and 4 kappa, at kappa = 0:
 /// (8a - 6b + c) / 3. Its distance from the linear extrapolation is the latter's O(kappa^2) error.
-FeResponseField quadratic_field_in_kappa(const FeResponseField& at_kappa, const FeResponseField& at_2kappa,
+FeResponseField quadratic_field_in_kappa(const FeResponseField& at_kappa,
+                                         const FeResponseField& at_2kappa,
                                          const FeResponseField& at_4kappa);
 
 /// Richardson in h for order 2 and mesh ratio 2, (4 fine - coarse) / 3, on the coarse mesh's nodes
@@ -60,7 +63,9 @@ FeResponseField richardson_field(const FeResponseField& coarse, const FeResponse
 
 /// The field on the stations, by cubic interpolation: displacements projected on the continuous
 /// static tangent and normal in plane; the tension (zero out of plane).
-FeSampled sample_field(Plane plane, const FeResponseField& field, const Vector& stations,
+FeSampled sample_field(Plane plane,
+                       const FeResponseField& field,
+                       const Vector& stations,
                        const StaticSolution& statics);
 
 /// max over the stations of |a - b| for the tension (in plane) or the displacements.

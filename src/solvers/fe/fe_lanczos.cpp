@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Thick-restart Lanczos with DGKS re-orthogonalisation: see fe_lanczos.hpp and docs/explanation/methods/fe.md.
+// Thick-restart Lanczos with DGKS re-orthogonalisation: see fe_lanczos.hpp and
+// docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_lanczos.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -18,7 +19,8 @@ void LanczosWorkspace::reserve(Eigen::Index rows, int subspace) {
     basis_ = std::make_unique_for_overwrite<double[]>(basis_size);
     basis_capacity_ = basis_size;
   }
-  if (residual_.size() < static_cast<std::size_t>(rows)) residual_.resize(static_cast<std::size_t>(rows));
+  if (residual_.size() < static_cast<std::size_t>(rows))
+    residual_.resize(static_cast<std::size_t>(rows));
   if (coefficients_.size() < static_cast<std::size_t>(subspace)) {
     coefficients_.resize(static_cast<std::size_t>(subspace));
     correction_.resize(static_cast<std::size_t>(subspace));
@@ -73,14 +75,21 @@ constexpr Eigen::Index kCombinationRows = 256;
 
 // acc += V(rows r0 .. r0 + count, columns k0 .. k1) c(k0 .. k1), the columns in order, four at a
 // time.
-void accumulate_columns(const double* V, Eigen::Index rows, Eigen::Index r0, Eigen::Index count, Eigen::Index k0,
-                        Eigen::Index k1, const double* c, double* acc) {
+void accumulate_columns(const double* V,
+                        Eigen::Index rows,
+                        Eigen::Index r0,
+                        Eigen::Index count,
+                        Eigen::Index k0,
+                        Eigen::Index k1,
+                        const double* c,
+                        double* acc) {
   Eigen::Index k = k0;
   for (; k + 4 <= k1; k += 4) {
     const double* v0 = V + k * rows + r0;
     const double *v1 = v0 + rows, *v2 = v1 + rows, *v3 = v2 + rows;
     const double c0 = c[k], c1 = c[k + 1], c2 = c[k + 2], c3 = c[k + 3];
-    for (Eigen::Index r = 0; r < count; ++r) acc[r] = (((acc[r] + v0[r] * c0) + v1[r] * c1) + v2[r] * c2) + v3[r] * c3;
+    for (Eigen::Index r = 0; r < count; ++r)
+      acc[r] = (((acc[r] + v0[r] * c0) + v1[r] * c1) + v2[r] * c2) + v3[r] * c3;
   }
   for (; k < k1; ++k) {
     const double* v = V + k * rows + r0;
@@ -99,7 +108,9 @@ void accumulate_columns(const double* V, Eigen::Index rows, Eigen::Index r0, Eig
 // last bit in the SSE2 build that introduced it; compiled for FMA (cmake/instruction_set.cmake)
 // the compiler and Eigen each decide which multiply-adds to fuse, and the two may differ in the
 // last bit.
-double subtract_combination(const BasisMap& basis, Eigen::Index columns, const Eigen::Ref<const Eigen::VectorXd>& c,
+double subtract_combination(const BasisMap& basis,
+                            Eigen::Index columns,
+                            const Eigen::Ref<const Eigen::VectorXd>& c,
                             Eigen::Ref<Eigen::VectorXd> w) {
   const Eigen::Index rows = w.size();
   const Eigen::Index column_block =
@@ -110,7 +121,8 @@ double subtract_combination(const BasisMap& basis, Eigen::Index columns, const E
     const Eigen::Index count = std::min(kCombinationRows, rows - r0);
     for (Eigen::Index k0 = 0; k0 < columns; k0 += column_block) {
       std::fill(acc, acc + count, 0.0);
-      accumulate_columns(basis.data(), rows, r0, count, k0, std::min(k0 + column_block, columns), c.data(), acc);
+      accumulate_columns(basis.data(), rows, r0, count, k0, std::min(k0 + column_block, columns),
+                         c.data(), acc);
       for (Eigen::Index r = 0; r < count; ++r) x[r0 + r] = x[r0 + r] - acc[r];
     }
   }
@@ -119,8 +131,11 @@ double subtract_combination(const BasisMap& basis, Eigen::Index columns, const E
 
 // Classical Gram-Schmidt of w against the first `columns` basis vectors, a second pass only when
 // the first kept less than 1/sqrt(2) of the norm (DGKS). `h` receives the total coefficients.
-Orthogonalised orthogonalise(const BasisMap& basis, Eigen::Index columns, Eigen::Ref<Eigen::VectorXd> w,
-                             Eigen::Ref<Eigen::VectorXd> h, Eigen::Ref<Eigen::VectorXd> correction) {
+Orthogonalised orthogonalise(const BasisMap& basis,
+                             Eigen::Index columns,
+                             Eigen::Ref<Eigen::VectorXd> w,
+                             Eigen::Ref<Eigen::VectorXd> h,
+                             Eigen::Ref<Eigen::VectorXd> correction) {
   const auto V = basis.leftCols(columns);
   auto coefficients = h.head(columns);
   const double before = w.norm();
@@ -165,8 +180,8 @@ void fresh_direction(Run& run, Eigen::Index columns, Eigen::Ref<Eigen::VectorXd>
 
 // The Ritz pairs of the projection, ordered by decreasing magnitude.
 struct RitzPairs {
-  Eigen::VectorXd values;   // ordered
-  Matrix vectors;           // columns in the same order
+  Eigen::VectorXd values;     // ordered
+  Matrix vectors;             // columns in the same order
   Eigen::VectorXd residuals;  // |beta_m s_mi|
 };
 
@@ -201,7 +216,8 @@ int converged_count(const RitzPairs& ritz, int wanted, double tolerance) {
 // vector j + 1 standing for the residual direction. A breakdown (beta = 0) is never a stop: the
 // invariant subspace found may lack some wanted eigenvalues.
 bool converged_early(Run& run, int j, double beta) {
-  if (run.check_stride == 0 || j + 1 <= run.wanted || (j + 1 - run.wanted) % run.check_stride != 0) return false;
+  if (run.check_stride == 0 || j + 1 <= run.wanted || (j + 1 - run.wanted) % run.check_stride != 0)
+    return false;
   run.size = j + 1;
   run.residual_norm = beta;
   if (converged_count(ritz_pairs(run), run.wanted, run.tolerance) >= run.wanted) return true;
@@ -305,13 +321,27 @@ void start(Run& run, const double* guess) {
 
 }  // namespace
 
-LanczosResult largest_magnitude_eigenpairs(const SymmetricOperator& apply, Eigen::Index rows, int wanted,
-                                           int subspace, double tolerance, int max_restarts,
-                                           LanczosWorkspace& workspace, const double* guess) {
+LanczosResult largest_magnitude_eigenpairs(const SymmetricOperator& apply,
+                                           Eigen::Index rows,
+                                           int wanted,
+                                           int subspace,
+                                           double tolerance,
+                                           int max_restarts,
+                                           LanczosWorkspace& workspace,
+                                           const double* guess) {
   const int m = static_cast<int>(std::min<Eigen::Index>(rows, std::max(subspace, wanted + 1)));
   workspace.reserve(rows, m);
-  Run run{apply, workspace.basis(), workspace.residual(), workspace.coefficients(), workspace.correction(),
-          workspace.projection(), workspace.block(), m, wanted, tolerance, m,
+  Run run{apply,
+          workspace.basis(),
+          workspace.residual(),
+          workspace.coefficients(),
+          workspace.correction(),
+          workspace.projection(),
+          workspace.block(),
+          m,
+          wanted,
+          tolerance,
+          m,
           early_check_stride(rows, m, wanted)};
   run.block.resize(std::min(kRotationRows, rows), m);
   start(run, guess);

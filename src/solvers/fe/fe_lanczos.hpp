@@ -2,15 +2,15 @@
 #pragma once
 /// \file
 /// Thick-restart Lanczos for the largest-magnitude eigenpairs of a symmetric operator, written for
-/// fe's shift-invert operator (docs/explanation/methods/fe.md, "The Lanczos iteration"). Each step applies the
-/// operator once and orthogonalises the new vector against the whole basis by classical
+/// fe's shift-invert operator (docs/explanation/methods/fe.md, "The Lanczos iteration"). Each step
+/// applies the operator once and orthogonalises the new vector against the whole basis by classical
 /// Gram-Schmidt, a second time only when the first pass cancelled more than 1 - 1/sqrt(2) of its
-/// norm (the test of Daniel, Gragg, Kaufman and Stewart, 1976: docs/reference/references.md). After m steps
-/// the tridiagonal (arrowhead after a restart) projection is diagonalised; Ritz pairs whose
+/// norm (the test of Daniel, Gragg, Kaufman and Stewart, 1976: docs/reference/references.md). After
+/// m steps the tridiagonal (arrowhead after a restart) projection is diagonalised; Ritz pairs whose
 /// residual |beta_m s_mi| is below tolerance * max(eps^(2/3), |theta_i|) are converged; otherwise
 /// the best Ritz vectors are kept and the iteration restarts from them (Wu and Simon, 2000:
-/// docs/reference/references.md). All storage lives in a LanczosWorkspace that callers keep across solves of
-/// the same or smaller size, so a restart or a second solve allocates nothing.
+/// docs/reference/references.md). All storage lives in a LanczosWorkspace that callers keep across
+/// solves of the same or smaller size, so a restart or a second solve allocates nothing.
 
 #include <Eigen/Core>
 #include <functional>

@@ -23,11 +23,14 @@ double seconds_since(Clock::time_point start) {
 
 // The meshes: N and 2N with Richardson; otherwise N alone, with N/2 for the error estimate when it
 // resolves the modes asked. observed_order adds one mesh twice as fine as the finest.
-void plan_meshes(FePlan& plan, const FeSolverOptions& options, int max_modes_in_plane,
+void plan_meshes(FePlan& plan,
+                 const FeSolverOptions& options,
+                 int max_modes_in_plane,
                  int max_modes_out_of_plane) {
   const int N = options.elements;
   auto fits = [&](int elements) {
-    return elements >= 2 && fe_resolvable_modes(elements) >= std::max(max_modes_in_plane, max_modes_out_of_plane);
+    return elements >= 2 &&
+           fe_resolvable_modes(elements) >= std::max(max_modes_in_plane, max_modes_out_of_plane);
   };
   if (options.richardson) {
     plan.meshes = {N, 2 * N};
@@ -57,7 +60,8 @@ void plan_penalty_strain(FePlan& plan, const Problem& problem, const StaticSolut
   double largest_tension = std::max(statics.tension_n(0.0), statics.tension_n(L));
   for (const StaticPiece& piece : statics.pieces())
     largest_tension = std::max({largest_tension, statics.tension_n(piece.s_begin_m),
-                                std::hypot(statics.horizontal_force_n(), statics.vertical_force_before_n(piece.s_begin_m))});
+                                std::hypot(statics.horizontal_force_n(),
+                                           statics.vertical_force_before_n(piece.s_begin_m))});
   plan.penalty_strain = largest_tension / plan.axial_stiffness_n[1];  // at 2 kappa
 }
 
@@ -68,7 +72,8 @@ void plan_penalty_strain(FePlan& plan, const Problem& problem, const StaticSolut
 // Richardson correction, 1e-7 to 1e-6 for errors near 1e-10).
 void plan_layouts(FePlan& plan, const Problem& problem, const StaticSolution& statics) {
   if (meshed_as_one_piece(problem, statics)) {
-    for (int elements : plan.meshes) plan.mesh_layouts.push_back(uniform_cable_mesh(problem.cable, elements));
+    for (int elements : plan.meshes)
+      plan.mesh_layouts.push_back(uniform_cable_mesh(problem.cable, elements));
     return;
   }
   FeLineMesh coarsest = make_line_mesh(problem, statics, plan.meshes.front());
@@ -97,7 +102,10 @@ void plan_estimate_mesh(FePlan& plan, int max_modes) {
 
 // Inextensible: the penalty EA = H / kappa on the inextensible segments, with the larger end
 // tension for a vertical chord (H = 0). Extensible: the stiffest segment's EA.
-void plan_penalties(FePlan& plan, const Problem& problem, const StaticSolution& statics, double kappa) {
+void plan_penalties(FePlan& plan,
+                    const Problem& problem,
+                    const StaticSolution& statics,
+                    double kappa) {
   const Line line = problem.as_line();
   double stiffest = 0.0;
   for (const LineSegment& segment : line.segments) {
@@ -110,7 +118,8 @@ void plan_penalties(FePlan& plan, const Problem& problem, const StaticSolution& 
   }
   plan.stiffest_extensible_n = stiffest;
   double reference = statics.horizontal_force_n();
-  if (!(reference > 0.0)) reference = std::max(statics.tension_n(0.0), statics.tension_n(problem.length_m()));
+  if (!(reference > 0.0))
+    reference = std::max(statics.tension_n(0.0), statics.tension_n(problem.length_m()));
   // kappa and 2 kappa give the result (linear extrapolation); 4 kappa its error estimate: the
   // quadratic through the three, whose distance from the linear one is the latter's leading
   // O(kappa^2) error (fe_extrapolation.hpp).
@@ -128,28 +137,35 @@ std::optional<std::string> fe_penalty_not_applicable(const FePlan& plan) {
   const double ratio = plan.penalty_strain / plan.relative_slack;
   if (plan.relative_slack > 0.0 && ratio <= kMaxPenaltyStrainOverSlack) return std::nullopt;
   return fmt::format(
-      "inextensible cable too close to taut for the penalty: the penalty strain T/EA = {:.3g} (at 2 kappa = {:.3g}) "
-      "is not small against the relative slack (L - chord)/L = {:.3g} (ratio {:.3g} > {:g}), so the penalised "
-      "chain's sag and tension are not the inextensible cable's; a kappa below {:.3g} would be needed, where the "
+      "inextensible cable too close to taut for the penalty: the penalty strain T/EA = {:.3g} (at "
+      "2 kappa = {:.3g}) "
+      "is not small against the relative slack (L - chord)/L = {:.3g} (ratio {:.3g} > {:g}), so "
+      "the penalised "
+      "chain's sag and tension are not the inextensible cable's; a kappa below {:.3g} would be "
+      "needed, where the "
       "stiff penalty springs' rounding error grows like 1/kappa",
       plan.penalty_strain, plan.kappas[1], plan.relative_slack, ratio, kMaxPenaltyStrainOverSlack,
       plan.kappas.front() * kMaxPenaltyStrainOverSlack / std::max(ratio, 1e-300));
 }
 
 double FePlan::statics_floor(double t0_n) const {
-  const double stiffness_ratio = std::max(axial_stiffness_n[0], stiffest_extensible_n) / std::max(t0_n, 1e-300);
-  return 0.5 * std::numeric_limits<double>::epsilon() * stiffness_ratio * static_cast<double>(finest_elements());
+  const double stiffness_ratio =
+      std::max(axial_stiffness_n[0], stiffest_extensible_n) / std::max(t0_n, 1e-300);
+  return 0.5 * std::numeric_limits<double>::epsilon() * stiffness_ratio *
+         static_cast<double>(finest_elements());
 }
 
 double FePlan::rounding_floor(double t0_n, int mode_number) const {
-  const double stiffness_ratio = std::max(axial_stiffness_n[0], stiffest_extensible_n) / std::max(t0_n, 1e-300);
+  const double stiffness_ratio =
+      std::max(axial_stiffness_n[0], stiffest_extensible_n) / std::max(t0_n, 1e-300);
   return normwise_rounding_floor(stiffness_ratio, finest_elements(), mode_number);
 }
 
 double normwise_rounding_floor(double stiffness_ratio, int elements, int mode_number) {
   const double n = static_cast<double>(mode_number);
   const auto N = static_cast<double>(elements);
-  return 0.5 * std::numeric_limits<double>::epsilon() * stiffness_ratio * N * N / (kPi * kPi * n * n);
+  return 0.5 * std::numeric_limits<double>::epsilon() * stiffness_ratio * N * N /
+         (kPi * kPi * n * n);
 }
 
 FePlan make_fe_plan(const Problem& problem,
@@ -174,7 +190,8 @@ FeLevels solve_level_statics(const Problem& problem,
   for (std::size_t m = 0; m < plan.meshes.size(); ++m) {
     for (std::size_t k = 0; k < plan.penalties(); ++k) {
       const auto start = Clock::now();
-      levels[m][k].chain = solve_chain_statics(problem, statics, plan.mesh_layouts[m], plan.axial_stiffness_n[k]);
+      levels[m][k].chain =
+          solve_chain_statics(problem, statics, plan.mesh_layouts[m], plan.axial_stiffness_n[k]);
       timings.statics_s += seconds_since(start);
       if (!levels[m][k].chain.in_equilibrium()) {
         failure = levels[m][k].chain.failure;
@@ -190,11 +207,12 @@ namespace {
 // Above this normwise floor of mode 1 (FePlan::rounding_floor, from the level's own chain) the
 // vectors get a last Rayleigh-Ritz step with the element-wise projected stiffness: the normwise
 // one leaves them mixed with the neighbouring modes by about floor x lambda / gap, which shows in
-// the quotients at second order (docs/explanation/methods/fe.md, "Rounding"; stress-eps at eps = 1e-4: 6e-8).
+// the quotients at second order (docs/explanation/methods/fe.md, "Rounding"; stress-eps at eps =
+// 1e-4: 6e-8).
 constexpr double kStructuredRitzFloor = 1e-7;
 
 bool needs_structured_ritz(const FeChain& chain, Plane plane) {
-  if (plane != Plane::InPlane) return false;          // no axial springs out of plane
+  if (plane != Plane::InPlane) return false;           // no axial springs out of plane
   if (!(chain.horizontal_force_n > 0.0)) return true;  // no tension scale
   const double stiffness_ratio = chain.axial_stiffness_n.maxCoeff() / chain.horizontal_force_n;
   return normwise_rounding_floor(stiffness_ratio, chain.elements, 1) > kStructuredRitzFloor;
@@ -203,12 +221,16 @@ bool needs_structured_ritz(const FeChain& chain, Plane plane) {
 // Each eigenvalue of a converged level replaced by its mode's element-wise Rayleigh quotient,
 // whose rounding is bounded without the normwise floor (fe_rayleigh_quotient.hpp), after the
 // structured Rayleigh-Ritz step where the chain is stiff.
-void use_element_rayleigh_quotients(const FeChain& chain, Plane plane, const FeMatrices& matrices,
+void use_element_rayleigh_quotients(const FeChain& chain,
+                                    Plane plane,
+                                    const FeMatrices& matrices,
                                     FeEigenSolution& eigen) {
-  if (needs_structured_ritz(chain, plane)) element_rayleigh_ritz(chain, plane, eigen.eigenvectors, matrices.mass);
+  if (needs_structured_ritz(chain, plane))
+    element_rayleigh_ritz(chain, plane, eigen.eigenvectors, matrices.mass);
   eigen.rounding.resize(eigen.eigenvalues.size());
   for (Eigen::Index i = 0; i < eigen.eigenvalues.size(); ++i) {
-    const RayleighQuotient q = element_rayleigh_quotient(chain, plane, eigen.eigenvectors.col(i), matrices.mass);
+    const RayleighQuotient q =
+        element_rayleigh_quotient(chain, plane, eigen.eigenvectors.col(i), matrices.mass);
     eigen.eigenvalues[i] = q.value;
     eigen.rounding[i] = q.relative_rounding;
   }
@@ -227,7 +249,8 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
   FeEigenWorkspace workspace;  // one basis and factor for every level of this plane
   Eigen::Index largest = 0;
   for (const auto& row : levels)
-    for (const FeLevel& level : row) largest = std::max<Eigen::Index>(largest, fe_unknowns(plane, level.chain.elements));
+    for (const FeLevel& level : row)
+      largest = std::max<Eigen::Index>(largest, fe_unknowns(plane, level.chain.elements));
   reserve_for_largest_solve(workspace, largest, modes);
   const FeEigenSolution* previous = nullptr;  // the last converged level: its modes start the next
   for (auto& row : levels) {
@@ -236,26 +259,32 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
       level.matrices[plane] = assemble(plane, level.chain);
       timings.assembly_s += seconds_since(start);
       const FeMatrices& matrices = level.matrices[plane];
-      const Vector guess = previous ? mode_sum_guess(previous->eigenvectors, matrices.dofs_per_node, matrices.mass.rows())
+      const Vector guess = previous ? mode_sum_guess(previous->eigenvectors, matrices.dofs_per_node,
+                                                     matrices.mass.rows())
                                     : Vector();
-      FeEigenSolution eigen = solve_lowest_modes(matrices, modes, options.eigen_tolerance, options.max_restarts,
-                                                 &workspace, guess.size() > 0 ? &guess : nullptr);
+      FeEigenSolution eigen =
+          solve_lowest_modes(matrices, modes, options.eigen_tolerance, options.max_restarts,
+                             &workspace, guess.size() > 0 ? &guess : nullptr);
       timings.factorization_s += eigen.factorization_time_s;
       timings.eigen_iterations_s += eigen.iteration_time_s;
       report.restarts += eigen.restarts;
       report.operations += eigen.operations;
       const int N = level.chain.elements;
-      for (const auto& warning : eigen.warnings) report.warnings.push_back(fmt::format("N = {}: {}", N, warning));
+      for (const auto& warning : eigen.warnings)
+        report.warnings.push_back(fmt::format("N = {}: {}", N, warning));
       if (eigen.termination != Termination::Converged) {
         // A numerical failure on any level outweighs a level that did not converge.
-        if (report.termination != Termination::NumericalFailure) report.termination = eigen.termination;
+        if (report.termination != Termination::NumericalFailure)
+          report.termination = eigen.termination;
         report.warnings.push_back(fmt::format("N = {}: {}", N, eigen.message));
       } else {
         report.max_residual = std::max(report.max_residual, eigen.max_residual);
-        report.max_orthogonality_error = std::max(report.max_orthogonality_error, eigen.max_orthogonality_error);
+        report.max_orthogonality_error =
+            std::max(report.max_orthogonality_error, eigen.max_orthogonality_error);
         report.max_backward_error = std::max(report.max_backward_error, eigen.max_backward_error);
       }
-      if (eigen.termination == Termination::Converged) use_element_rayleigh_quotients(level.chain, plane, matrices, eigen);
+      if (eigen.termination == Termination::Converged)
+        use_element_rayleigh_quotients(level.chain, plane, matrices, eigen);
       level.eigen[plane] = std::move(eigen);
       if (level.eigen[plane].termination == Termination::Converged) previous = &level.eigen[plane];
       if (meter && meter->stop_after(++solved)) return report;

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The `fe` solver's levels (docs/explanation/methods/fe.md): the plan of meshes (N and 2N for Richardson, N/2
-/// and N for an estimate without it, one finer mesh for an observed order) and penalties (kappa and
-/// 2 kappa for an inextensible cable), and for every (mesh, penalty) pair its discrete statics,
-/// its operators and its lowest eigenpairs (shift-invert, polish, inertia count).
+/// The `fe` solver's levels (docs/explanation/methods/fe.md): the plan of meshes (N and 2N for
+/// Richardson, N/2 and N for an estimate without it, one finer mesh for an observed order) and
+/// penalties (kappa and 2 kappa for an inextensible cable), and for every (mesh, penalty) pair its
+/// discrete statics, its operators and its lowest eigenpairs (shift-invert, polish, inertia count).
 
 #include <map>
 #include <optional>
@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "catena/solvers/solver_summary.hpp"
+#include "solvers/common/work_meter.hpp"
 #include "solvers/fe/fe_chain_statics.hpp"
 #include "solvers/fe/fe_eigen.hpp"
 #include "solvers/fe/fe_line_mesh.hpp"
 #include "solvers/fe/fe_operators.hpp"
-#include "solvers/common/work_meter.hpp"
 
 namespace catena {
 struct FeSolverOptions;
@@ -60,7 +60,7 @@ struct FePlan {
   /// Each mesh's pieces and element counts (fe_line_mesh.hpp): one piece for a uniform cable; on
   /// a line, each level doubles every piece's count of the one before.
   std::vector<FeLineMesh> mesh_layouts;
-  int main_coarse = -1;     // index in meshes of the pair used for the result (-1: no coarse mesh)
+  int main_coarse = -1;  // index in meshes of the pair used for the result (-1: no coarse mesh)
   int main_fine = -1;
   /// With Richardson: index of the mesh half as fine as the main coarse one (-1: none). Its
   /// Richardson value against the main coarse mesh, compared with the result, gives the error
@@ -101,8 +101,8 @@ struct FePlan {
 };
 
 /// The normwise rounding floor of mode `mode_number` on a chain of `elements` elements whose
-/// stiffest axial spring is `stiffness_ratio` times the tension scale: 1/2 eps (EA/T) N^2 / (pi n)^2
-/// (docs/explanation/methods/fe.md, "Rounding").
+/// stiffest axial spring is `stiffness_ratio` times the tension scale: 1/2 eps (EA/T) N^2 / (pi
+/// n)^2 (docs/explanation/methods/fe.md, "Rounding").
 double normwise_rounding_floor(double stiffness_ratio, int elements, int mode_number);
 
 /// Why the penalised chain cannot stand for this inextensible cable (its penalty strain is not

@@ -32,7 +32,8 @@ std::vector<int> proportional_counts(const std::vector<double>& lengths, int ele
   }
   std::vector<std::size_t> order(lengths.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return remainder[a] > remainder[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return remainder[a] > remainder[b]; });
   for (std::size_t k = 0; given < elements && k < order.size(); ++k, ++given) ++counts[order[k]];
   for (int& count : counts) count = std::max(count, 1);
   return counts;
@@ -41,8 +42,9 @@ std::vector<int> proportional_counts(const std::vector<double>& lengths, int ele
 // The grounded part's transverse motion decays away from the touchdown point within
 // delta = sqrt(T / k) (tension over foundation stiffness), far shorter than the line's elements
 // when k is large. The last kTouchdownLayerWidths delta before the touchdown point become a piece
-// of their own with elements of delta / kTouchdownLayerElementsPerWidth (docs/explanation/methods/fe.md,
-// "Seabed contact"): the layer's share of the discretisation error then no longer depends on k.
+// of their own with elements of delta / kTouchdownLayerElementsPerWidth
+// (docs/explanation/methods/fe.md, "Seabed contact"): the layer's share of the discretisation error
+// then no longer depends on k.
 constexpr double kTouchdownLayerWidths = 10.0;
 constexpr double kTouchdownLayerElementsPerWidth = 32.0;
 
@@ -50,16 +52,20 @@ void refine_touchdown_layer(FeLineMesh& mesh) {
   std::size_t last = 0;  // the grounded piece that ends at the touchdown point
   while (last + 1 < mesh.pieces.size() && mesh.pieces[last + 1].grounded) ++last;
   FeMeshPiece& piece = mesh.pieces[last];
-  const double k = std::max(mesh.seabed->stiffness_n_per_m2, mesh.seabed->tangential_stiffness_n_per_m2);
+  const double k =
+      std::max(mesh.seabed->stiffness_n_per_m2, mesh.seabed->tangential_stiffness_n_per_m2);
   const double length = piece.section.length_m;
   const double slope = mesh.seabed->friction * piece.section.weight_n_per_m;
   const double touchdown_tension = piece.grounded_tension_begin_n + slope * length;
   if (!(k > 0.0) || !(touchdown_tension > 0.0) || !piece.grounded) return;
   const double delta = std::sqrt(touchdown_tension / k);
   const double layer = kTouchdownLayerWidths * delta;
-  const int layer_elements = static_cast<int>(std::ceil(kTouchdownLayerElementsPerWidth * layer / delta));
+  const int layer_elements =
+      static_cast<int>(std::ceil(kTouchdownLayerElementsPerWidth * layer / delta));
   if (layer >= 0.5 * length) {
-    piece.elements = std::max(piece.elements, static_cast<int>(std::ceil(kTouchdownLayerElementsPerWidth * length / delta)));
+    piece.elements =
+        std::max(piece.elements,
+                 static_cast<int>(std::ceil(kTouchdownLayerElementsPerWidth * length / delta)));
     return;
   }
   FeMeshPiece near = piece;
@@ -68,7 +74,8 @@ void refine_touchdown_layer(FeLineMesh& mesh) {
   near.grounded_tension_begin_n = piece.grounded_tension_begin_n + slope * (length - layer);
   near.elements = layer_elements;
   piece.section.length_m = length - layer;
-  piece.elements = std::max(1, static_cast<int>(std::lround(piece.elements * (length - layer) / length)));
+  piece.elements =
+      std::max(1, static_cast<int>(std::lround(piece.elements * (length - layer) / length)));
   mesh.pieces.insert(mesh.pieces.begin() + static_cast<std::ptrdiff_t>(last) + 1, near);
 }
 

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// How the `fe` chain meshes a line (docs/explanation/methods/fe.md, "Lines"): the line is cut into pieces at
-/// every joint and point attachment (the pieces of the statics), each piece gets its own element
-/// count, proportional to its length and at least one, and a finer level doubles every count, so
-/// that node i of a mesh is node 2i of the next (the node mapping of fe_extrapolation.hpp).
+/// How the `fe` chain meshes a line (docs/explanation/methods/fe.md, "Lines"): the line is cut into
+/// pieces at every joint and point attachment (the pieces of the statics), each piece gets its own
+/// element count, proportional to its length and at least one, and a finer level doubles every
+/// count, so that node i of a mesh is node 2i of the next (the node mapping of
+/// fe_extrapolation.hpp).
 
 #include <optional>
 #include <vector>
@@ -24,7 +25,8 @@ struct FeMeshPiece {
   /// Index in Line::points of the point attachment at the piece's start (-1: none).
   int point_at_start = -1;
   /// True for a piece resting on the seabed (StaticPiece::grounded); its static tension is
-  /// max(grounded_tension_begin_n + C_B w (s - s_begin), 0) (docs/explanation/physics.md, "Seabed contact").
+  /// max(grounded_tension_begin_n + C_B w (s - s_begin), 0) (docs/explanation/physics.md, "Seabed
+  /// contact").
   bool grounded = false;
   double grounded_tension_begin_n = 0.0;
 };
@@ -57,9 +59,9 @@ bool meshed_as_one_piece(const Problem& problem, const StaticSolution& statics);
 
 /// The mesh of `problem` with about `elements` elements: a uniform cable gets exactly that many; a
 /// line's pieces (and those of a cable resting on the seabed, whose touchdown point and
-/// zero-tension point are cuts of the statics, hence nodes) (statics.pieces()) share them in proportion to their lengths (largest
-/// remainder), each getting at least one, so the total can exceed `elements` by the pieces that
-/// are too short for their share.
+/// zero-tension point are cuts of the statics, hence nodes) (statics.pieces()) share them in
+/// proportion to their lengths (largest remainder), each getting at least one, so the total can
+/// exceed `elements` by the pieces that are too short for their share.
 FeLineMesh make_line_mesh(const Problem& problem, const StaticSolution& statics, int elements);
 
 }  // namespace catena::internal

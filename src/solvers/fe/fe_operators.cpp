@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The fe chain's stiffness and mass matrices: see fe_operators.hpp and docs/explanation/methods/fe.md.
+// The fe chain's stiffness and mass matrices: see fe_operators.hpp and
+// docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_operators.hpp"
 
 #include <cassert>
@@ -17,12 +18,13 @@ namespace {
 // Filled in place: Eigen 3.4's SparseMatrix has no move assignment, and a copy of a large matrix
 // costs mostly first-touch page faults.
 template <int P>
-void fill_block_tridiagonal(SparseMatrix& matrix,
-                            const std::vector<Eigen::Matrix<double, P, P>>& element,
-                            const std::vector<Eigen::Matrix<double, P, P>>& node,
-                            int elements,
-                            bool diagonal_only,
-                            const std::vector<Eigen::Matrix<double, P, P>>* node_stiffness = nullptr) {
+void fill_block_tridiagonal(
+    SparseMatrix& matrix,
+    const std::vector<Eigen::Matrix<double, P, P>>& element,
+    const std::vector<Eigen::Matrix<double, P, P>>& node,
+    int elements,
+    bool diagonal_only,
+    const std::vector<Eigen::Matrix<double, P, P>>* node_stiffness = nullptr) {
   const int free_nodes = elements - 1;
   const Eigen::Index n = static_cast<Eigen::Index>(P) * free_nodes;
   const Eigen::Index nonzeros = diagonal_only ? P * n : 3 * P * n - 2 * P * P;
@@ -69,7 +71,8 @@ bool same_section(const FeChain& chain, int i) {
 
 // Node i's lumped share of a density: half of each neighbouring element's [kg].
 double half_sum(const FeChain& chain, const Vector& density, int i) {
-  return 0.5 * (chain.element_length_m[i - 1] * density[i - 1] + chain.element_length_m[i] * density[i]);
+  return 0.5 *
+         (chain.element_length_m[i - 1] * density[i - 1] + chain.element_length_m[i] * density[i]);
 }
 
 bool has_point(const FeChain& chain, int i) {
@@ -83,7 +86,8 @@ Eigen::Matrix2d half_element_mass(const FeChain& chain, int j) {
   const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
   const Eigen::Matrix2d ttT = t * t.transpose();
   const double M = chain.normal_mass_kg_per_m[j];
-  return 0.5 * chain.element_length_m[j] * (chain.mass_kg_per_m[j] * ttT + M * (Eigen::Matrix2d::Identity() - ttT));
+  return 0.5 * chain.element_length_m[j] *
+         (chain.mass_kg_per_m[j] * ttT + M * (Eigen::Matrix2d::Identity() - ttT));
 }
 
 // The seabed foundation out of plane, lumped as inplane_foundation (fe_operators.hpp): node i
@@ -92,7 +96,8 @@ std::vector<Eigen::Matrix<double, 1, 1>> outofplane_foundation(const FeChain& ch
   if (!chain.has_contact()) return {};
   std::vector<Eigen::Matrix<double, 1, 1>> node(static_cast<std::size_t>(chain.elements) + 1);
   for (int i = 0; i <= chain.elements; ++i)
-    node[static_cast<std::size_t>(i)](0, 0) = chain.foundation_tangential_n_per_m2 * chain.grounded_share_m(i);
+    node[static_cast<std::size_t>(i)](0, 0) =
+        chain.foundation_tangential_n_per_m2 * chain.grounded_share_m(i);
   return node;
 }
 
@@ -100,7 +105,8 @@ std::vector<Eigen::Matrix<double, 1, 1>> outofplane_foundation(const FeChain& ch
 
 std::vector<Eigen::Matrix2d> inplane_foundation(const FeChain& chain) {
   if (!chain.has_contact()) return {};
-  std::vector<Eigen::Matrix2d> node(static_cast<std::size_t>(chain.elements) + 1, Eigen::Matrix2d::Zero());
+  std::vector<Eigen::Matrix2d> node(static_cast<std::size_t>(chain.elements) + 1,
+                                    Eigen::Matrix2d::Zero());
   for (int i = 1; i < chain.elements; ++i) {
     const double share = chain.grounded_share_m(i);
     node[static_cast<std::size_t>(i)].diagonal() << chain.foundation_tangential_n_per_m2 * share,
@@ -113,7 +119,8 @@ FeMatrices assemble_inplane(const FeChain& chain) {
   const int N = chain.elements;
   FeMatrices out;
   out.dofs_per_node = 2;
-  std::vector<Eigen::Matrix2d> element(static_cast<std::size_t>(N)), node(static_cast<std::size_t>(N) + 1);
+  std::vector<Eigen::Matrix2d> element(static_cast<std::size_t>(N)),
+      node(static_cast<std::size_t>(N) + 1);
   for (int j = 0; j < N; ++j) {
     const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
     const Eigen::Matrix2d ttT = t * t.transpose();
@@ -138,14 +145,16 @@ FeMatrices assemble_inplane(const FeChain& chain) {
       // line has a kink (an O(1) angle between the elements); lumped in the bisector frame, the
       // half elements' masses would be off by O(1) on one node, an O(h) error in every frequency
       // that Richardson's h^2 model cannot remove (docs/explanation/methods/fe.md, "Lines").
-      node[static_cast<std::size_t>(i)] = half_element_mass(chain, i - 1) + half_element_mass(chain, i);
+      node[static_cast<std::size_t>(i)] =
+          half_element_mass(chain, i - 1) + half_element_mass(chain, i);
     }
     const FeNodeInertia& point = chain.node_inertia[static_cast<std::size_t>(i)];
     if (point.tangential_kg > 0.0 || point.normal_kg > 0.0)
       node[static_cast<std::size_t>(i)] += point.tangential_kg * ttT + point.normal_kg * nnT;
   }
   const std::vector<Eigen::Matrix2d> foundation = inplane_foundation(chain);
-  fill_block_tridiagonal<2>(out.stiffness, element, node, N, false, foundation.empty() ? nullptr : &foundation);
+  fill_block_tridiagonal<2>(out.stiffness, element, node, N, false,
+                            foundation.empty() ? nullptr : &foundation);
   fill_block_tridiagonal<2>(out.mass, element, node, N, true);
   // Columns 0-1: node a's (x, z); columns 2-3: node b's.
   const Eigen::Index n = out.stiffness.rows();
@@ -177,11 +186,12 @@ FeMatrices assemble_outofplane(const FeChain& chain) {
         chain.node_inertia[static_cast<std::size_t>(i)].outofplane_kg;
   }
   const std::vector<Block> foundation = outofplane_foundation(chain);
-  fill_block_tridiagonal<1>(out.stiffness, element, node, N, false, foundation.empty() ? nullptr : &foundation);
+  fill_block_tridiagonal<1>(out.stiffness, element, node, N, false,
+                            foundation.empty() ? nullptr : &foundation);
   fill_block_tridiagonal<1>(out.mass, element, node, N, true);
   const Eigen::Index n = out.stiffness.rows();
-  const std::vector<Eigen::Triplet<double>> b_entries = {{0, 0, -element.front()(0, 0)},
-                                                   {static_cast<int>(n) - 1, 1, -element.back()(0, 0)}};
+  const std::vector<Eigen::Triplet<double>> b_entries = {
+      {0, 0, -element.front()(0, 0)}, {static_cast<int>(n) - 1, 1, -element.back()(0, 0)}};
   out.boundary_coupling.resize(n, 2);
   out.boundary_coupling.setFromTriplets(b_entries.begin(), b_entries.end());
   return out;
@@ -191,6 +201,8 @@ FeMatrices assemble(Plane plane, const FeChain& chain) {
   return plane == Plane::InPlane ? assemble_inplane(chain) : assemble_outofplane(chain);
 }
 
-int fe_unknowns(Plane plane, int elements) { return (plane == Plane::InPlane ? 2 : 1) * (elements - 1); }
+int fe_unknowns(Plane plane, int elements) {
+  return (plane == Plane::InPlane ? 2 : 1) * (elements - 1);
+}
 
 }  // namespace catena::internal

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The `fe` chain's operators (docs/explanation/methods/fe.md): sparse stiffness K and lumped mass M of one
-/// plane on the free (interior) nodes, and the coupling of the free unknowns to the end nodes
-/// (for an imposed end displacement). In plane the element tangent stiffness is
-/// (EA/l0) t t^T + (T/l)(I - t t^T) and the node mass l0 (m t t^T + M n n^T) about the bisecting
-/// node tangent (block tridiagonal, 2x2 blocks); out of plane T/l and M l0 (tridiagonal). On a
-/// line a node between two sections carries half of each element's mass, and a point
-/// attachment's inertia is added on its node (docs/explanation/physics.md, "General lines").
+/// The `fe` chain's operators (docs/explanation/methods/fe.md): sparse stiffness K and lumped mass
+/// M of one plane on the free (interior) nodes, and the coupling of the free unknowns to the end
+/// nodes (for an imposed end displacement). In plane the element tangent stiffness is (EA/l0) t t^T
+/// + (T/l)(I - t t^T) and the node mass l0 (m t t^T + M n n^T) about the bisecting node tangent
+/// (block tridiagonal, 2x2 blocks); out of plane T/l and M l0 (tridiagonal). On a line a node
+/// between two sections carries half of each element's mass, and a point attachment's inertia is
+/// added on its node (docs/explanation/physics.md, "General lines").
 
 #include <Eigen/Sparse>
 #include <utility>
@@ -53,9 +53,9 @@ FeMatrices assemble_outofplane(const FeChain& chain);
 /// assemble_inplane or assemble_outofplane.
 FeMatrices assemble(Plane plane, const FeChain& chain);
 
-/// The seabed foundation in plane on each node 0..N (docs/explanation/methods/fe.md, "Seabed contact"), lumped
-/// like the mass: node i carries k times half of each grounded neighbour's l0, k_t on x (along the
-/// seabed) and k_s on z; the end nodes carry none. Empty without contact.
+/// The seabed foundation in plane on each node 0..N (docs/explanation/methods/fe.md, "Seabed
+/// contact"), lumped like the mass: node i carries k times half of each grounded neighbour's l0,
+/// k_t on x (along the seabed) and k_s on z; the end nodes carry none. Empty without contact.
 std::vector<Eigen::Matrix2d> inplane_foundation(const FeChain& chain);
 
 /// Number of free unknowns of a chain of `elements` elements in `plane`: 2 (N - 1) or N - 1.

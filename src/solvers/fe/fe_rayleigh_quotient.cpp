@@ -21,17 +21,26 @@ Vec2 node_displacement(const Vector& phi, int i, int elements, int dofs) {
 // The strain projections of every column on elements [first, first + rows): stretch t . d and
 // turn n . d (out of plane: turn = d), scaled by the square roots of the element's springs, so
 // that the block's share of V^T K V is S^T S + T^T T.
-void scaled_strains(const FeChain& chain, Plane plane, const Eigen::MatrixXd& vectors, int first, int rows,
-                    Eigen::MatrixXd& S, Eigen::MatrixXd& T) {
+void scaled_strains(const FeChain& chain,
+                    Plane plane,
+                    const Eigen::MatrixXd& vectors,
+                    int first,
+                    int rows,
+                    Eigen::MatrixXd& S,
+                    Eigen::MatrixXd& T) {
   const int N = chain.elements, dofs = plane == Plane::InPlane ? 2 : 1;
   // Row of node i's first unknown, -1 at the fixed ends.
-  auto row = [&](int i) { return (i <= 0 || i >= N) ? Eigen::Index{-1} : static_cast<Eigen::Index>(dofs) * (i - 1); };
+  auto row = [&](int i) {
+    return (i <= 0 || i >= N) ? Eigen::Index{-1} : static_cast<Eigen::Index>(dofs) * (i - 1);
+  };
   S.resize(rows, vectors.cols());
   T.resize(rows, vectors.cols());
   for (int r = 0; r < rows; ++r) {
     const int j = first + r;
     const Eigen::Index a = row(j), b = row(j + 1);
-    const double axial = plane == Plane::InPlane ? std::sqrt(chain.axial_stiffness_n[j] / chain.element_length_m[j]) : 0.0;
+    const double axial = plane == Plane::InPlane
+                             ? std::sqrt(chain.axial_stiffness_n[j] / chain.element_length_m[j])
+                             : 0.0;
     const double string = std::sqrt(chain.tension_n[j] / chain.stretched_length_m[j]);
     const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
     for (Eigen::Index c = 0; c < vectors.cols(); ++c) {
@@ -50,7 +59,9 @@ void scaled_strains(const FeChain& chain, Plane plane, const Eigen::MatrixXd& ve
 
 // V^T K V element by element, in blocks of elements (each block's sum added to the total, which
 // keeps the summation's own rounding ~ (block + N / block) eps).
-Eigen::MatrixXd element_projected_stiffness(const FeChain& chain, Plane plane, const Eigen::MatrixXd& vectors) {
+Eigen::MatrixXd element_projected_stiffness(const FeChain& chain,
+                                            Plane plane,
+                                            const Eigen::MatrixXd& vectors) {
   constexpr int kBlock = 256;
   const Eigen::Index k = vectors.cols();
   const int dofs = plane == Plane::InPlane ? 2 : 1;
@@ -93,7 +104,9 @@ Eigen::MatrixXd projected_mass(const SparseMatrix& mass, const Eigen::MatrixXd& 
 
 }  // namespace
 
-bool element_rayleigh_ritz(const FeChain& chain, Plane plane, Eigen::MatrixXd& vectors,
+bool element_rayleigh_ritz(const FeChain& chain,
+                           Plane plane,
+                           Eigen::MatrixXd& vectors,
                            const SparseMatrix& mass) {
   Eigen::MatrixXd Kr = element_projected_stiffness(chain, plane, vectors);
   Eigen::MatrixXd Mr = projected_mass(mass, vectors);
@@ -110,7 +123,9 @@ bool element_rayleigh_ritz(const FeChain& chain, Plane plane, Eigen::MatrixXd& v
   return true;
 }
 
-RayleighQuotient element_rayleigh_quotient(const FeChain& chain, Plane plane, const Vector& phi,
+RayleighQuotient element_rayleigh_quotient(const FeChain& chain,
+                                           Plane plane,
+                                           const Vector& phi,
                                            const SparseMatrix& mass) {
   const int N = chain.elements;
   const int dofs = plane == Plane::InPlane ? 2 : 1;

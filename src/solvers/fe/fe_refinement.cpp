@@ -2,10 +2,10 @@
 // Mesh refinement toward fe's accuracy target: fe_refinement.hpp.
 #include "solvers/fe/fe_refinement.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 namespace catena::internal {
 namespace {
@@ -19,7 +19,9 @@ constexpr double kMargin = 1.25;
 constexpr double kMinFactor = 2.0;
 constexpr double kMaxFactor = 8.0;
 
-int round_up_to_multiple_of_4(double elements) { return 4 * static_cast<int>(std::ceil(elements / 4.0)); }
+int round_up_to_multiple_of_4(double elements) {
+  return 4 * static_cast<int>(std::ceil(elements / 4.0));
+}
 
 }  // namespace
 
@@ -35,13 +37,19 @@ FeRefinementStep fe_refined_elements(const FeRefinementState& state) {
   const double worst = fe_worst_miss(state.estimates, state.tolerance);
   if (worst == 0.0) return {};
   if (state.previous_worst > 0.0 && worst > state.previous_worst / kMinGain)
-    return {0, fmt::format("the last refinement took the largest estimate from {:.1e} only to {:.1e} (a part that "
-                           "does not fall with N holds it up)", state.previous_worst, worst)};
+    return {
+        0,
+        fmt::format(
+            "the last refinement took the largest estimate from {:.1e} only to {:.1e} (a part that "
+            "does not fall with N holds it up)",
+            state.previous_worst, worst)};
   const double order = state.richardson ? 4.0 : 2.0;
-  const double factor = std::clamp(kMargin * std::pow(worst / state.tolerance, 1.0 / order), kMinFactor, kMaxFactor);
+  const double factor =
+      std::clamp(kMargin * std::pow(worst / state.tolerance, 1.0 / order), kMinFactor, kMaxFactor);
   const int cap = 4 * (state.max_elements / 4);
   const int next = std::min(round_up_to_multiple_of_4(factor * state.elements), cap);
-  if (next <= state.elements) return {0, fmt::format("max_elements = {} reached", state.max_elements)};
+  if (next <= state.elements)
+    return {0, fmt::format("max_elements = {} reached", state.max_elements)};
   return {next, ""};
 }
 

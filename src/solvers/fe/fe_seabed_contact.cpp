@@ -24,7 +24,8 @@ std::optional<std::string> seabed_plane_singular(Plane plane, const StaticSoluti
   if (!(slack > 0.0)) return std::nullopt;
   const Seabed& seabed = statics.seabed();
   const bool inplane = plane == Plane::InPlane;
-  const double stiffness = inplane ? seabed.stiffness_n_per_m2 : seabed.tangential_stiffness_n_per_m2;
+  const double stiffness =
+      inplane ? seabed.stiffness_n_per_m2 : seabed.tangential_stiffness_n_per_m2;
   if (stiffness > 0.0) return std::nullopt;
   // The anchor's unclipped friction tension is H - C_B W_g (W_g: the grounded weight), so the
   // grounded part keeps some tension for C_B < H / W_g.
@@ -32,11 +33,14 @@ std::optional<std::string> seabed_plane_singular(Plane plane, const StaticSoluti
   const double drop = H - statics.pieces().front().grounded_tension_begin_n;
   const double largest_friction = seabed.friction * H / drop;
   return fmt::format(
-      "{}: the grounded stretch s in [0, {:.6g}] m has no static tension (seabed friction C_B = {:g} takes it all) "
-      "and [seabed].{} = 0, so its {} motion has no stiffness (a continuum of zero frequencies): give "
+      "{}: the grounded stretch s in [0, {:.6g}] m has no static tension (seabed friction C_B = "
+      "{:g} takes it all) "
+      "and [seabed].{} = 0, so its {} motion has no stiffness (a continuum of zero frequencies): "
+      "give "
       "[seabed].{} > 0, or a friction below C_B = {:.6g}",
       to_string(plane), slack, seabed.friction, inplane ? "stiffness" : "tangential_stiffness",
-      inplane ? "vertical" : "out-of-plane", inplane ? "stiffness" : "tangential_stiffness", largest_friction);
+      inplane ? "vertical" : "out-of-plane", inplane ? "stiffness" : "tangential_stiffness",
+      largest_friction);
 }
 
 }  // namespace catena::internal

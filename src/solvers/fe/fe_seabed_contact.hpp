@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Where `fe`'s linear dynamics on the seabed is singular (docs/explanation/methods/fe.md, "Seabed contact"):
-/// a grounded stretch left without static tension by the seabed friction resists transverse motion
-/// only through the foundation, so a plane whose foundation stiffness is zero there has a
-/// continuum of zero frequencies. Such a plane is declined with what to change.
+/// Where `fe`'s linear dynamics on the seabed is singular (docs/explanation/methods/fe.md, "Seabed
+/// contact"): a grounded stretch left without static tension by the seabed friction resists
+/// transverse motion only through the foundation, so a plane whose foundation stiffness is zero
+/// there has a continuum of zero frequencies. Such a plane is declined with what to change.
 
 #include <optional>
 #include <string>

@@ -22,7 +22,8 @@ struct FreeNodes {
     const auto i = static_cast<int>(node);
     if (i == 0) return end_a;
     if (i == elements) return end_b;
-    return plane == Plane::InPlane ? Vec2(free[2 * (i - 1)], free[2 * (i - 1) + 1]) : Vec2(free[i - 1], 0.0);
+    return plane == Plane::InPlane ? Vec2(free[2 * (i - 1)], free[2 * (i - 1) + 1])
+                                   : Vec2(free[i - 1], 0.0);
   }
 };
 
@@ -30,7 +31,8 @@ struct FreeNodes {
 template <typename Nodes>
 double tension_of_element(const FeChain& chain, const Nodes& D, int j) {
   const auto k = static_cast<std::size_t>(j);
-  return chain.axial_stiffness_n[j] * chain.direction[k].dot(D[k + 1] - D[k]) / chain.element_length_m[j];
+  return chain.axial_stiffness_n[j] * chain.direction[k].dot(D[k + 1] - D[k]) /
+         chain.element_length_m[j];
 }
 
 }  // namespace
@@ -96,8 +98,12 @@ namespace {
 // The samples for any node access D; `tension_at(j)` gives element j's tension (a null pointer:
 // no tension asked).
 template <typename Nodes, typename TensionAt>
-FeSampled sample_nodes(Plane plane, const FeChain& chain, const Nodes& D, const TensionAt* tension_at,
-                       const Vector& stations, const StaticSolution& statics) {
+FeSampled sample_nodes(Plane plane,
+                       const FeChain& chain,
+                       const Nodes& D,
+                       const TensionAt* tension_at,
+                       const Vector& stations,
+                       const StaticSolution& statics) {
   FeSampled out;
   const Index points = stations.size();
   if (plane == Plane::InPlane) {
@@ -111,14 +117,16 @@ FeSampled sample_nodes(Plane plane, const FeChain& chain, const Nodes& D, const 
     const double s = stations[p];
     const StationPlace at = place_of(chain, s);
     const double f = at.f;
-    const Vec2 d = (1.0 - f) * D[static_cast<std::size_t>(at.i)] + f * D[static_cast<std::size_t>(at.i) + 1];
+    const Vec2 d =
+        (1.0 - f) * D[static_cast<std::size_t>(at.i)] + f * D[static_cast<std::size_t>(at.i) + 1];
     if (plane == Plane::InPlane) {
       out.u[p] = d.dot(statics.tangent(s));
       out.w[p] = d.dot(statics.normal(s));
     } else {
       out.v[p] = d.x();
     }
-    if (tension_at) out.tension[p] = (1.0 - at.g) * (*tension_at)(at.j) + at.g * (*tension_at)(at.j + 1);
+    if (tension_at)
+      out.tension[p] = (1.0 - at.g) * (*tension_at)(at.j) + at.g * (*tension_at)(at.j + 1);
   }
   return out;
 }
@@ -145,8 +153,9 @@ Mode mode_on_stations(Plane plane,
   // mode costs more than the sampling).
   const FreeNodes D{plane, chain.elements, eigenvector.data(), Vec2::Zero(), Vec2::Zero()};
   const auto tension_at = [&](int j) { return tension_of_element(chain, D, j); };
-  const FeSampled sampled = sample_nodes(plane, chain, D, (with_tension && plane == Plane::InPlane) ? &tension_at : nullptr,
-                                         stations, statics);
+  const FeSampled sampled = sample_nodes(
+      plane, chain, D, (with_tension && plane == Plane::InPlane) ? &tension_at : nullptr, stations,
+      statics);
   Mode mode;
   mode.s_m = stations;
   if (plane == Plane::InPlane) {

@@ -2,9 +2,10 @@
 #pragma once
 /// \file
 /// From the `fe` chain's nodal displacements to what a user sees on the request's stations
-/// (docs/explanation/methods/fe.md): displacements interpolated linearly between nodes and projected on the
-/// continuous static tangent and normal (in plane), and the dynamic tension of each element,
-/// tau_j = EA t_j . (D_{j+1} - D_j) / l0, interpolated linearly between element midpoints.
+/// (docs/explanation/methods/fe.md): displacements interpolated linearly between nodes and
+/// projected on the continuous static tangent and normal (in plane), and the dynamic tension of
+/// each element, tau_j = EA t_j . (D_{j+1} - D_j) / l0, interpolated linearly between element
+/// midpoints.
 
 #include <vector>
 

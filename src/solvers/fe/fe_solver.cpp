@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The `fe` solver: its knobs, and its numerics on the solver skeleton. The method is documented in
-// fe_solver.hpp and docs/explanation/methods/fe.md; its stages are in internal/fe_*: discrete statics
-// (fe_chain_statics), operators (fe_operators), eigenpairs of one level (fe_eigen), the plan and
-// its levels (fe_levels), stations (fe_shapes), extrapolation (fe_extrapolation), forced response
-// (fe_forced) and summary text (fe_summary).
+// fe_solver.hpp and docs/explanation/methods/fe.md; its stages are in internal/fe_*: discrete
+// statics (fe_chain_statics), operators (fe_operators), eigenpairs of one level (fe_eigen), the
+// plan and its levels (fe_levels), stations (fe_shapes), extrapolation (fe_extrapolation), forced
+// response (fe_forced) and summary text (fe_summary).
 #include "catena/solvers/fe_solver.hpp"
 
 #include <fmt/format.h>
@@ -13,20 +13,20 @@
 #include <map>
 
 #include "catena/core/error.hpp"
+#include "solvers/common/knob_table.hpp"
+#include "solvers/common/line_applicability.hpp"
+#include "solvers/common/line_modal_mass.hpp"
+#include "solvers/common/mode_tools.hpp"
+#include "solvers/common/solver_driver.hpp"
+#include "solvers/common/solver_entries.hpp"
+#include "solvers/common/work_meter.hpp"
 #include "solvers/fe/fe_extrapolation.hpp"
 #include "solvers/fe/fe_forced.hpp"
 #include "solvers/fe/fe_levels.hpp"
 #include "solvers/fe/fe_refinement.hpp"
 #include "solvers/fe/fe_seabed_contact.hpp"
 #include "solvers/fe/fe_shapes.hpp"
-#include "solvers/common/line_modal_mass.hpp"
 #include "solvers/fe/fe_summary.hpp"
-#include "solvers/common/knob_table.hpp"
-#include "solvers/common/mode_tools.hpp"
-#include "solvers/common/line_applicability.hpp"
-#include "solvers/common/solver_driver.hpp"
-#include "solvers/common/solver_entries.hpp"
-#include "solvers/common/work_meter.hpp"
 
 namespace catena {
 namespace internal {
@@ -34,21 +34,25 @@ namespace internal {
 const KnobTable<FeSolverOptions>& fe_knobs() {
   using O = FeSolverOptions;
   static const KnobTable<O> table(
-      "fe", {integer_knob("elements", &O::elements, Range::closed(2, 5e7),
-                          "number of bar elements N (the coarse mesh with Richardson); resolves up to N/2 modes per plane"),
-             flag_knob("richardson", &O::richardson,
-                       "solve N and 2N and extrapolate (order 2 -> 4); N/2 too, for the error estimate"),
-             real_knob("kappa", &O::kappa, Range::open_closed(0.0, 1e-2),
-                       "inextensible cables: penalty H/EA (and 2 kappa, extrapolated to 0; 4 kappa for the "
-                       "error estimate)"),
-             flag_knob("observed_order", &O::observed_order,
-                       "also solve 4N and report the observed convergence order"),
-             real_knob("tolerance", &O::tolerance, Range::closed(0.0, 1.0),
-                       "accuracy target of each frequency [-]: while a mode's error estimate exceeds it, "
-                       "fe solves again on a finer mesh (up to max_elements); a mode that still exceeds "
-                       "it is named and the plane not converged (0: none)"),
-             integer_knob("max_elements", &O::max_elements, Range::closed(2, 5e7),
-                          "the largest N a tolerance may refine to (at or below elements: no refinement)")});
+      "fe",
+      {integer_knob("elements", &O::elements, Range::closed(2, 5e7),
+                    "number of bar elements N (the coarse mesh with Richardson); resolves up to "
+                    "N/2 modes per plane"),
+       flag_knob("richardson", &O::richardson,
+                 "solve N and 2N and extrapolate (order 2 -> 4); N/2 too, for the error estimate"),
+       real_knob(
+           "kappa", &O::kappa, Range::open_closed(0.0, 1e-2),
+           "inextensible cables: penalty H/EA (and 2 kappa, extrapolated to 0; 4 kappa for the "
+           "error estimate)"),
+       flag_knob("observed_order", &O::observed_order,
+                 "also solve 4N and report the observed convergence order"),
+       real_knob("tolerance", &O::tolerance, Range::closed(0.0, 1.0),
+                 "accuracy target of each frequency [-]: while a mode's error estimate exceeds it, "
+                 "fe solves again on a finer mesh (up to max_elements); a mode that still exceeds "
+                 "it is named and the plane not converged (0: none)"),
+       integer_knob(
+           "max_elements", &O::max_elements, Range::closed(2, 5e7),
+           "the largest N a tolerance may refine to (at or below elements: no refinement)")});
   return table;
 }
 
@@ -58,9 +62,11 @@ const KnobTable<FeSolverOptions>& fe_knobs() {
 void FeSolverOptions::validate() const {
   internal::fe_knobs().validate(*this);
   if (!(eigen_tolerance > 0.0) || !(eigen_tolerance <= 1e-4))
-    throw InvalidInput(fmt::format("FeSolverOptions::eigen_tolerance = {}: must be in (0, 1e-4]", eigen_tolerance));
+    throw InvalidInput(fmt::format("FeSolverOptions::eigen_tolerance = {}: must be in (0, 1e-4]",
+                                   eigen_tolerance));
   if (max_restarts < 1)
-    throw InvalidInput(fmt::format("FeSolverOptions::max_restarts = {}: must be >= 1", max_restarts));
+    throw InvalidInput(
+        fmt::format("FeSolverOptions::max_restarts = {}: must be >= 1", max_restarts));
 }
 
 namespace internal {
@@ -78,7 +84,10 @@ class FeNumerics final : public SolverNumerics {
   FeNumerics(const SolveContext& context, const FeSolverOptions& options)
       : context_(context),
         options_(options),
-        plan_(make_fe_plan(context.problem, context.statics, options, context.request.inplane_modes,
+        plan_(make_fe_plan(context.problem,
+                           context.statics,
+                           options,
+                           context.request.inplane_modes,
                            context.request.outofplane_modes)) {}
 
   std::optional<std::string> not_applicable() const override {
@@ -86,8 +95,10 @@ class FeNumerics final : public SolverNumerics {
   }
   void describe(SolverSummary& summary) const override {
     describe_fe_run(plan_, summary);
-    if (auto note = seabed_model_note(context_.statics, "lumped on the grounded nodes like the mass; the touchdown point "
-                                                        "is a node, the layer sqrt(T/k_s) beyond it a piece of its own"))
+    if (auto note =
+            seabed_model_note(context_.statics,
+                              "lumped on the grounded nodes like the mass; the touchdown point "
+                              "is a node, the layer sqrt(T/k_s) beyond it a piece of its own"))
       summary.notes.push_back(*note);
   }
   std::optional<Outcome> prepare() override;
@@ -102,7 +113,8 @@ class FeNumerics final : public SolverNumerics {
     }
     std::string note;
     if (naturals_[plane].empty()) note = compute_naturals_for(plane, request);
-    ForcedOutcome outcome = fe_forced_response(request, context_, plan_, levels_, naturals_[plane], timings_);
+    ForcedOutcome outcome =
+        fe_forced_response(request, context_, plan_, levels_, naturals_[plane], timings_);
     if (!note.empty()) outcome.summary.notes.push_back(note);
     return outcome;
   }
@@ -125,11 +137,17 @@ class FeNumerics final : public SolverNumerics {
     naturals_[plane] = std::move(run.naturals);
   }
   std::string compute_naturals_for(Plane plane, const ForcedRequest& request);
-  void extrapolate_modes(Plane plane, int available, ModalResult& result, std::vector<double>& orders);
-  Mode extrapolated_mode(Plane plane, int i, const FeModeMatches& matches,
-                         const FeExtrapolatedFrequency& frequency, const Vector& stations) const;
-  void attach_shape(Plane plane, int i, const FeModeMatches& matches, const Vector& stations,
-                    Mode& mode) const;
+  void extrapolate_modes(Plane plane,
+                         int available,
+                         ModalResult& result,
+                         std::vector<double>& orders);
+  Mode extrapolated_mode(Plane plane,
+                         int i,
+                         const FeModeMatches& matches,
+                         const FeExtrapolatedFrequency& frequency,
+                         const Vector& stations) const;
+  void attach_shape(
+      Plane plane, int i, const FeModeMatches& matches, const Vector& stations, Mode& mode) const;
 
   const SolveContext& context_;
   FeSolverOptions options_;
@@ -150,8 +168,10 @@ void FeNumerics::require_modes_fit() const {
                                      std::pair{Plane::OutOfPlane, request.outofplane_modes}}) {
     if (modes > 0 && fe_resolvable_modes(coarsest) < modes) {
       throw InvalidInput(fmt::format(
-          "[solvers.fe].elements = {}: too few for {} {} modes (the coarsest mesh, {} elements, resolves at most "
-          "{} modes per plane: at least 4 elements per wavelength, see docs/explanation/methods/fe.md). Violated "
+          "[solvers.fe].elements = {}: too few for {} {} modes (the coarsest mesh, {} elements, "
+          "resolves at most "
+          "{} modes per plane: at least 4 elements per wavelength, see "
+          "docs/explanation/methods/fe.md). Violated "
           "constraint: modes <= elements / 2, i.e. elements >= {}.",
           N, modes, to_string(plane), coarsest, fe_resolvable_modes(coarsest), 2 * modes));
     }
@@ -161,14 +181,16 @@ void FeNumerics::require_modes_fit() const {
 std::optional<Outcome> FeNumerics::prepare() {
   require_modes_fit();
   const SolveRequest& request = context_.request;
-  const bool inplane_asked =
-      request.inplane_modes > 0 || (request.forced && forced_plane(*request.forced) == Plane::InPlane);
+  const bool inplane_asked = request.inplane_modes > 0 ||
+                             (request.forced && forced_plane(*request.forced) == Plane::InPlane);
   const double t0_n = context_.groups.t0_n;
   if (inplane_asked && plan_.rounding_floor(t0_n, 1) > kMaxRoundingFloor)
-    return Outcome{Termination::NoConvergence, fe_rounding_floor_decline(plan_, t0_n, kMaxRoundingFloor)};
+    return Outcome{Termination::NoConvergence,
+                   fe_rounding_floor_decline(plan_, t0_n, kMaxRoundingFloor)};
   std::string failure;
   levels_ = solve_level_statics(context_.problem, context_.statics, plan_, timings_, failure);
-  if (!failure.empty()) return Outcome{Termination::NumericalFailure, "Numerical failure: " + failure};
+  if (!failure.empty())
+    return Outcome{Termination::NumericalFailure, "Numerical failure: " + failure};
   return std::nullopt;
 }
 
@@ -179,34 +201,38 @@ std::optional<Outcome> FeNumerics::prepare() {
 // unknowns (the higher modes are not resolved). Returns the note for the summary.
 std::string FeNumerics::compute_naturals_for(Plane plane, const ForcedRequest& request) {
   if (request.omegas_rad_s.empty()) return {};
-  const double top = 1.05 * *std::max_element(request.omegas_rad_s.begin(), request.omegas_rad_s.end());
+  const double top =
+      1.05 * *std::max_element(request.omegas_rad_s.begin(), request.omegas_rad_s.end());
   const auto fine = static_cast<std::size_t>(plan_.main_fine);
   assemble_missing(levels_, plane, {fine});
   const int below = count_eigenvalues_below(levels_[fine][0].matrices.at(plane), top * top);
   const int cap = fe_unknowns(plane, std::max(2, options_.elements / 2)) / 4;
   if (below < 0 || below + 1 > cap)
-    return fmt::format("resonance check of the forced response by the pivots of K - omega^2 M only: {} {} modes "
-                       "lie below the forcing frequencies, more than the {} the meshes resolve",
-                       below, to_string(plane), cap);
+    return fmt::format(
+        "resonance check of the forced response by the pivots of K - omega^2 M only: {} {} modes "
+        "lie below the forcing frequencies, more than the {} the meshes resolve",
+        below, to_string(plane), cap);
   const ModalResult own = modes(plane, below + 1);
-  return fmt::format("resonance check of the forced response against the {} lowest {} natural frequencies, "
-                     "computed for it (relative error estimates up to {:.1e})",
-                     own.modes.size(), to_string(plane), own.summary.max_error_estimate);
+  return fmt::format(
+      "resonance check of the forced response against the {} lowest {} natural frequencies, "
+      "computed for it (relative error estimates up to {:.1e})",
+      own.modes.size(), to_string(plane), own.summary.max_error_estimate);
 }
 
 // Shapes and tension from the finest main mesh (extrapolated in kappa when penalised).
-void FeNumerics::attach_shape(Plane plane, int i, const FeModeMatches& matches, const Vector& stations,
-                              Mode& mode) const {
+void FeNumerics::attach_shape(
+    Plane plane, int i, const FeModeMatches& matches, const Vector& stations, Mode& mode) const {
   const SolveRequest& request = context_.request;
   const auto fine = static_cast<std::size_t>(plan_.main_fine);
   const bool with_tension = request.tension;
   auto level_mode = [&](std::size_t k, int column) {
     const FeLevel& level = levels_[fine][k];
-    return mode_on_stations(plane, level.chain, level.eigen.at(plane).eigenvectors.col(column), stations,
-                            context_.statics, with_tension);
+    return mode_on_stations(plane, level.chain, level.eigen.at(plane).eigenvectors.col(column),
+                            stations, context_.statics, with_tension);
   };
   Mode shaped = level_mode(0, i);
-  if (plan_.inextensible) extrapolate_mode_in_kappa(shaped, level_mode(1, matches[fine][1][static_cast<std::size_t>(i)]));
+  if (plan_.inextensible)
+    extrapolate_mode_in_kappa(shaped, level_mode(1, matches[fine][1][static_cast<std::size_t>(i)]));
   mode.normalised_by = shaped.normalised_by;
   if (with_tension) mode.max_abs_tension_n = shaped.max_abs_tension_n;
   if (!request.shapes) return;
@@ -221,16 +247,20 @@ void FeNumerics::attach_shape(Plane plane, int i, const FeModeMatches& matches, 
     return;
   }
   const CableProperties& cable = problem.cable;
-  mode.modal_mass_kg = plane == Plane::InPlane
-                           ? inplane_modal_mass(mode, cable.mass_kg_per_m, cable.normal_mass_kg_per_m())
-                           : outofplane_modal_mass(mode, cable.normal_mass_kg_per_m());
+  mode.modal_mass_kg =
+      plane == Plane::InPlane
+          ? inplane_modal_mass(mode, cable.mass_kg_per_m, cable.normal_mass_kg_per_m())
+          : outofplane_modal_mass(mode, cable.normal_mass_kg_per_m());
 }
 
 // Mode i: the extrapolated frequency, its relative error estimate (plus the rounding of the
 // levels' Rayleigh quotients, and the statics' rounding floor where the estimate mesh makes the
 // estimate tight), and its shape.
-Mode FeNumerics::extrapolated_mode(Plane plane, int i, const FeModeMatches& matches,
-                                   const FeExtrapolatedFrequency& frequency, const Vector& stations) const {
+Mode FeNumerics::extrapolated_mode(Plane plane,
+                                   int i,
+                                   const FeModeMatches& matches,
+                                   const FeExtrapolatedFrequency& frequency,
+                                   const Vector& stations) const {
   const double omega = frequency.omega_rad_s, error = frequency.error_rad_s;
   Mode mode;
   mode.index = i + 1;
@@ -239,7 +269,8 @@ Mode FeNumerics::extrapolated_mode(Plane plane, int i, const FeModeMatches& matc
   if (mode.relative_error_estimate >= 0.0)
     mode.relative_error_estimate += rounding_estimate(plan_, levels_, matches, plane, i);
   // Prescribed end forces are kept exactly (no Newton on the closure): no statics rounding floor.
-  if (plan_.has_estimate_mesh() && mode.relative_error_estimate >= 0.0 && !context_.problem.prescribed_forces)
+  if (plan_.has_estimate_mesh() && mode.relative_error_estimate >= 0.0 &&
+      !context_.problem.prescribed_forces)
     mode.relative_error_estimate += plan_.statics_floor(context_.groups.t0_n);
   attach_shape(plane, i, matches, stations, mode);
   return mode;
@@ -247,7 +278,9 @@ Mode FeNumerics::extrapolated_mode(Plane plane, int i, const FeModeMatches& matc
 
 // The lowest `available` modes of `plane`, extrapolated, lowest first; the observed orders when
 // asked.
-void FeNumerics::extrapolate_modes(Plane plane, int available, ModalResult& result,
+void FeNumerics::extrapolate_modes(Plane plane,
+                                   int available,
+                                   ModalResult& result,
                                    std::vector<double>& orders) {
   const auto start = Clock::now();
   const Vector stations = context_.request.stations_m(context_.problem.length_m());
@@ -258,14 +291,16 @@ void FeNumerics::extrapolate_modes(Plane plane, int available, ModalResult& resu
     if (options_.observed_order && plan_.meshes.size() >= 3)
       orders.push_back(observed_order(omega[last - 2][0], omega[last - 1][0], omega[last][0]));
     Mode mode = extrapolated_mode(plane, i, matches, extrapolate_frequency(plan_, omega), stations);
-    result.summary.max_error_estimate = std::max(result.summary.max_error_estimate, mode.relative_error_estimate);
+    result.summary.max_error_estimate =
+        std::max(result.summary.max_error_estimate, mode.relative_error_estimate);
     result.modes.push_back(std::move(mode));
   }
   // Extrapolation may reorder two modes closer than their discretisation errors: report them
   // lowest first.
   std::stable_sort(result.modes.begin(), result.modes.end(),
                    [](const Mode& a, const Mode& b) { return a.omega_rad_s < b.omega_rad_s; });
-  for (std::size_t i = 0; i < result.modes.size(); ++i) result.modes[i].index = static_cast<int>(i) + 1;
+  for (std::size_t i = 0; i < result.modes.size(); ++i)
+    result.modes[i].index = static_cast<int>(i) + 1;
   timings_.postprocessing_s += std::chrono::duration<double>(Clock::now() - start).count();
 }
 
@@ -276,18 +311,25 @@ std::string FeNumerics::refine_plan(Plane plane, int elements) {
   FeSolverOptions finer = options_;
   finer.elements = elements;
   const SolveRequest& request = context_.request;
-  FePlan plan = make_fe_plan(context_.problem, context_.statics, finer, request.inplane_modes, request.outofplane_modes);
+  FePlan plan = make_fe_plan(context_.problem, context_.statics, finer, request.inplane_modes,
+                             request.outofplane_modes);
   const double t0_n = context_.groups.t0_n;
   if (plane == Plane::InPlane && plan.rounding_floor(t0_n, 1) > kMaxRoundingFloor)
-    return fmt::format("at N = {} the chain's normwise rounding floor would be {:.1e}, where fe declines the plane",
-                       elements, plan.rounding_floor(t0_n, 1));
+    return fmt::format(
+        "at N = {} the chain's normwise rounding floor would be {:.1e}, where fe declines the "
+        "plane",
+        elements, plan.rounding_floor(t0_n, 1));
   // The statics' rounding floor grows with N (FePlan::statics_floor): a mesh whose floor alone
   // exceeds the target cannot meet it.
-  if (plan.has_estimate_mesh() && !context_.problem.prescribed_forces && plan.statics_floor(t0_n) >= options_.tolerance)
-    return fmt::format("at N = {} the statics' rounding floor alone would be {:.1e}", elements, plan.statics_floor(t0_n));
+  if (plan.has_estimate_mesh() && !context_.problem.prescribed_forces &&
+      plan.statics_floor(t0_n) >= options_.tolerance)
+    return fmt::format("at N = {} the statics' rounding floor alone would be {:.1e}", elements,
+                       plan.statics_floor(t0_n));
   std::string failure;
-  FeLevels levels = solve_level_statics(context_.problem, context_.statics, plan, timings_, failure);
-  if (!failure.empty()) return fmt::format("the discrete statics at N = {} failed: {}", elements, failure);
+  FeLevels levels =
+      solve_level_statics(context_.problem, context_.statics, plan, timings_, failure);
+  if (!failure.empty())
+    return fmt::format("the discrete statics at N = {} failed: {}", elements, failure);
   options_ = finer;
   plan_ = std::move(plan);
   levels_ = std::move(levels);
@@ -311,8 +353,9 @@ ModalResult FeNumerics::modes(Plane plane, int count) {
   std::string stop_reason;
   while (result.summary.termination == Termination::Converged) {
     const std::vector<double> estimates = error_estimates(result);
-    const FeRefinementStep step = fe_refined_elements(
-        {options_.elements, options_.max_elements, options_.tolerance, options_.richardson, estimates, previous_worst});
+    const FeRefinementStep step =
+        fe_refined_elements({options_.elements, options_.max_elements, options_.tolerance,
+                             options_.richardson, estimates, previous_worst});
     stop_reason = step.stop_reason;
     if (step.elements == 0) break;
     FeRun kept{options_, plan_, std::move(levels_), naturals_[plane]};
@@ -328,8 +371,8 @@ ModalResult FeNumerics::modes(Plane plane, int count) {
     if (finer.modes.size() < result.modes.size() || finer_worst > previous_worst) {
       stop_reason = finer.modes.size() < result.modes.size()
                         ? fmt::format("the solve at N = {} did not complete", options_.elements)
-                        : fmt::format("at N = {} the largest estimate grew to {:.1e}; N = {} kept", options_.elements,
-                                      finer_worst, kept.options.elements);
+                        : fmt::format("at N = {} the largest estimate grew to {:.1e}; N = {} kept",
+                                      options_.elements, finer_worst, kept.options.elements);
       restore(plane, std::move(kept));
       break;
     }
@@ -337,9 +380,13 @@ ModalResult FeNumerics::modes(Plane plane, int count) {
   }
   std::string note;
   if (options_.elements != first_elements)
-    note = fmt::format("mesh refined for the accuracy target {:.1e}: from N = {} (largest estimate {:.1e}) to N = {} "
-                       "elements", options_.tolerance, first_elements, first_worst, options_.elements);
-  if (!stop_reason.empty()) note += (note.empty() ? "mesh not refined: " : "; not refined further: ") + stop_reason;
+    note = fmt::format(
+        "mesh refined for the accuracy target {:.1e}: from N = {} (largest estimate {:.1e}) to N = "
+        "{} "
+        "elements",
+        options_.tolerance, first_elements, first_worst, options_.elements);
+  if (!stop_reason.empty())
+    note += (note.empty() ? "mesh not refined: " : "; not refined further: ") + stop_reason;
   if (!note.empty()) result.summary.notes.push_back(note);
   return result;
 }
@@ -355,8 +402,10 @@ ModalResult FeNumerics::modes_on_plan(Plane plane, int count) {
     summary.message = *singular;
     return result;
   }
-  WorkMeter meter(context_, "fe", std::string(to_string(plane)) + " eigen solves (mesh levels)", level_count(levels_));
-  const FePlaneEigenReport eigen = solve_level_modes(levels_, plane, count, options_, timings_, &meter);
+  WorkMeter meter(context_, "fe", std::string(to_string(plane)) + " eigen solves (mesh levels)",
+                  level_count(levels_));
+  const FePlaneEigenReport eigen =
+      solve_level_modes(levels_, plane, count, options_, timings_, &meter);
   summary.termination = eigen.termination;
   summary.iterations = eigen.restarts;
   summary.operations = eigen.operations;
@@ -417,7 +466,8 @@ SolverOutput solve_fe(const Problem& problem,
                       const DimensionlessGroups& groups,
                       const SolveRequest& request,
                       const FeSolverOptions& options) {
-  return internal::solve_with<internal::FeNumerics>("fe", {problem, statics, groups, request}, options);
+  return internal::solve_with<internal::FeNumerics>("fe", {problem, statics, groups, request},
+                                                    options);
 }
 
 }  // namespace catena

@@ -12,7 +12,8 @@ std::string inertia_note(const FePlaneFacts& facts) {
   return fmt::format(
       "mode count proved by Sylvester inertia: LDLT(K - sigma M) at sigma = {:.9e} rad^2/s^2 "
       "(just above the top eigenvalue, N = {}) has {} negative pivots for {} modes{}",
-      finest.inertia_shift, facts.finest_chain->elements, finest.inertia_count, finest.eigenvalues.size(),
+      finest.inertia_shift, facts.finest_chain->elements, finest.inertia_count,
+      finest.eigenvalues.size(),
       facts.inertia_proved_everywhere ? "; same on every mesh" : "; NOT on every mesh");
 }
 
@@ -37,7 +38,8 @@ std::string statics_note(const FeChain& chain, bool prescribed_forces) {
       "discrete statics (N = {}): H = {:.12g} N, V_A = {:.12g} N, {} Newton iterations, closure "
       "{:.2e} m ({})",
       chain.elements, chain.horizontal_force_n, chain.vertical_force_a_n, chain.newton_iterations,
-      chain.closure_error_m, prescribed_forces ? "prescribed end forces kept" : "Newton on the chain's closure");
+      chain.closure_error_m,
+      prescribed_forces ? "prescribed end forces kept" : "Newton on the chain's closure");
 }
 
 std::string time_note(const FeTimings& timings) {
@@ -58,12 +60,14 @@ std::string format_seconds(double seconds) {
 std::string fe_resolution(const FePlan& plan) {
   std::string meshes;
   for (int N : plan.meshes) meshes += fmt::format("{}{}", meshes.empty() ? "" : ", ", N);
-  std::string resolution = fmt::format("N = {} elements{}", meshes,
-                                       plan.richardson ? ", Richardson (order 2 -> 4)" : ", no Richardson");
+  std::string resolution =
+      fmt::format("N = {} elements{}", meshes,
+                  plan.richardson ? ", Richardson (order 2 -> 4)" : ", no Richardson");
   if (plan.inextensible) {
-    resolution += fmt::format("; penalty kappa = {:.1e} and {:.1e}, extrapolated to 0", plan.kappas[0],
-                              plan.kappas[1]);
-    if (plan.kappas.size() > 2) resolution += fmt::format(" ({:.1e} for the estimate)", plan.kappas[2]);
+    resolution += fmt::format("; penalty kappa = {:.1e} and {:.1e}, extrapolated to 0",
+                              plan.kappas[0], plan.kappas[1]);
+    if (plan.kappas.size() > 2)
+      resolution += fmt::format(" ({:.1e} for the estimate)", plan.kappas[2]);
   }
   return resolution;
 }
@@ -97,7 +101,8 @@ void describe_fe_plane(const FePlaneFacts& facts, ModalResult& result) {
   }
   summary.notes.push_back(inertia_note(facts));
   summary.notes.push_back(quality_note(*facts.eigen));
-  if (!facts.observed_orders.empty()) summary.notes.push_back(observed_order_note(*facts.plan, facts.observed_orders));
+  if (!facts.observed_orders.empty())
+    summary.notes.push_back(observed_order_note(*facts.plan, facts.observed_orders));
   summary.notes.push_back(statics_note(*facts.finest_chain, facts.prescribed_forces));
   summary.notes.push_back(time_note(*facts.timings));
   if (summary.termination == Termination::Converged) {
@@ -107,9 +112,9 @@ void describe_fe_plane(const FePlaneFacts& facts, ModalResult& result) {
         facts.modes_available, facts.modes_asked, plane, summary.max_residual,
         facts.eigen->max_backward_error, facts.finest->inertia_count, summary.max_error_estimate);
   } else {
-    summary.message = fmt::format("No convergence: {} of {} {} modes ({})", facts.modes_available,
-                                  facts.modes_asked, plane,
-                                  summary.warnings.empty() ? std::string("see warnings") : summary.warnings.back());
+    summary.message = fmt::format(
+        "No convergence: {} of {} {} modes ({})", facts.modes_available, facts.modes_asked, plane,
+        summary.warnings.empty() ? std::string("see warnings") : summary.warnings.back());
   }
 }
 
@@ -121,14 +126,16 @@ std::string fe_eigen_failure_message(Plane plane, const FePlaneEigenReport& eige
 void describe_forced(ForcedOutcome& outcome, const FeTimings& timings) {
   const std::size_t asked = outcome.responses.size();
   std::size_t resonant = 0;
-  for (const ForcedResponse& response : outcome.responses) resonant += response.diagnostic.empty() ? 0 : 1;
+  for (const ForcedResponse& response : outcome.responses)
+    resonant += response.diagnostic.empty() ? 0 : 1;
   SolverSummary& summary = outcome.summary;
   // A resonance diagnostic is the discrete model's answer at that frequency, not a failure.
   summary.termination = Termination::Converged;
-  summary.message = fmt::format("Converged: {} of {} forced frequencies{}", asked - resonant, asked,
-                                resonant ? fmt::format(" ({} at resonance: no finite response)", resonant)
-                                         : std::string());
-  summary.notes.push_back(fmt::format("time: forced response {}", format_seconds(timings.forced_s)));
+  summary.message = fmt::format(
+      "Converged: {} of {} forced frequencies{}", asked - resonant, asked,
+      resonant ? fmt::format(" ({} at resonance: no finite response)", resonant) : std::string());
+  summary.notes.push_back(
+      fmt::format("time: forced response {}", format_seconds(timings.forced_s)));
 }
 
 }  // namespace catena::internal

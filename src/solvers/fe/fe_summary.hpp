@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "catena/solvers/modal_result.hpp"
-#include "solvers/fe/fe_levels.hpp"
 #include "solvers/common/solver_driver.hpp"
+#include "solvers/fe/fe_levels.hpp"
 
 namespace catena::internal {
 
@@ -33,7 +33,8 @@ struct FePlaneFacts {
   Plane plane = Plane::InPlane;
   int modes_asked = 0;
   int modes_available = 0;
-  /// The elements of the N/2 estimate mesh that could not be used (no coarse mesh), for the warning.
+  /// The elements of the N/2 estimate mesh that could not be used (no coarse mesh), for the
+  /// warning.
   int estimate_elements = 0;
   bool has_coarse = false;
   /// The eigen solve on the reference level (finest main mesh, first penalty) and its mesh.

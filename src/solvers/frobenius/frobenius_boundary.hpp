@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The boundary problem of one plane of the frobenius solver (docs/explanation/methods/frobenius.md): the
-/// series basis evaluated at both ends of the cable, as a square matrix whose determinant vanishes
-/// exactly at the natural frequencies. In plane the rows are U and DU at sigma1, then at sigma2
-/// (4x4: U = V = 0 at both ends, V = C^2 DU); out of plane the row is U at each end (2x2).
+/// The boundary problem of one plane of the frobenius solver
+/// (docs/explanation/methods/frobenius.md): the series basis evaluated at both ends of the cable,
+/// as a square matrix whose determinant vanishes exactly at the natural frequencies. In plane the
+/// rows are U and DU at sigma1, then at sigma2 (4x4: U = V = 0 at both ends, V = C^2 DU); out of
+/// plane the row is U at each end (2x2).
 ///
 /// The columns are divided by the norm of all derivatives D^0..D^(n-1) U_j at both ends. That
 /// norm is positive and smooth in omega (the derivatives of a solution cannot all vanish), so the
@@ -47,7 +48,8 @@ struct BoundaryMatrix {
   bool converged = true;
 };
 
-/// The boundary matrix of `setup` at Omega = omega. Instantiated for double, long double and QuadFloat.
+/// The boundary matrix of `setup` at Omega = omega. Instantiated for double, long double and
+/// QuadFloat.
 template <class Real>
 BoundaryMatrix<Real> boundary_matrix(const PlaneSetup& setup, const Real& omega);
 

@@ -7,7 +7,8 @@
 /// Units: lengths in a = H/W0, sigma = (s - s_apex)/a, C = sqrt(1 + sigma^2), eta = |xi| = C - 1,
 /// q = sigma^2 = eta (2 + eta), Omega = w / sqrt(g/a) (g = W0/m), mu = M/m. D = d/dsigma.
 ///
-/// In-plane (tangential U, normal V, dynamic tension T / H; verification/tools/frobenius_derive_odes.py):
+/// In-plane (tangential U, normal V, dynamic tension T / H;
+/// verification/tools/frobenius_derive_odes.py):
 ///   eta^2 (1+eta)(2+eta)^2 U'''' + 2 eta (2+eta)(3+10 eta+5 eta^2) U'''
 ///     + [3(1+eta)(1+16 eta+8 eta^2) + mu W2 eta (1+eta)^2 (2+eta)] U''
 ///     + [6(1+4 eta+2 eta^2) + mu W2 (1+eta)(1+8 eta+4 eta^2)] U' - W2 U = 0        (Gale 2.42)
@@ -75,11 +76,12 @@ PolynomialOde<Real> catenary_ode(bool inplane, const Real& w2, const Real& mu) {
   PolynomialOde<Real> ode;
   const Real mw = mu * w2;
   if (inplane) {
-    ode.p = {{-w2},
-             {Real(6) + mw, Real(24) + Real(9) * mw, Real(12) + Real(12) * mw, Real(4) * mw},
-             {Real(3), Real(51) + Real(2) * mw, Real(72) + Real(5) * mw, Real(24) + Real(4) * mw, mw},
-             {Real(0), Real(12), Real(46), Real(40), Real(10)},
-             {Real(0), Real(0), Real(4), Real(8), Real(5), Real(1)}};
+    ode.p = {
+        {-w2},
+        {Real(6) + mw, Real(24) + Real(9) * mw, Real(12) + Real(12) * mw, Real(4) * mw},
+        {Real(3), Real(51) + Real(2) * mw, Real(72) + Real(5) * mw, Real(24) + Real(4) * mw, mw},
+        {Real(0), Real(12), Real(46), Real(40), Real(10)},
+        {Real(0), Real(0), Real(4), Real(8), Real(5), Real(1)}};
   } else {
     ode.p = {{mw, mw}, {Real(1), Real(1)}, {Real(0), Real(2), Real(1)}};
   }
@@ -164,17 +166,27 @@ struct BasisValues {
 template <class Real>
 class CatenaryBasis {
  public:
-  CatenaryBasis(bool inplane, const Real& omega, const Real& mu, double eta_max,
+  CatenaryBasis(bool inplane,
+                const Real& omega,
+                const Real& mu,
+                double eta_max,
                 const CatenarySeriesSettings& settings)
-      : inplane_(inplane), n_(inplane ? 4 : 2), omega_(static_cast<double>(omega)), mu_(static_cast<double>(mu)) {
+      : inplane_(inplane),
+        n_(inplane ? 4 : 2),
+        omega_(static_cast<double>(omega)),
+        mu_(static_cast<double>(mu)) {
     const PolynomialOde<Real> ode = catenary_ode<Real>(inplane, omega * omega, mu);
     // Indicial roots (0, 1/2, 1, 3/2 in plane; 0, 1/2 out of plane) and singular points (roots of
     // the leading coefficient: 0, -1, -2 in plane; 0, -2 out of plane), both from the polynomials.
     // Neither depends on the frequency: computed once per plane.
-    static const std::vector<double> roots_in = indicial_roots(catenary_ode<double>(true, 1.0, 1.0));
-    static const std::vector<double> roots_out = indicial_roots(catenary_ode<double>(false, 1.0, 1.0));
-    static const std::vector<std::complex<double>> singular_in = leading_roots(catenary_ode<double>(true, 1.0, 1.0));
-    static const std::vector<std::complex<double>> singular_out = leading_roots(catenary_ode<double>(false, 1.0, 1.0));
+    static const std::vector<double> roots_in =
+        indicial_roots(catenary_ode<double>(true, 1.0, 1.0));
+    static const std::vector<double> roots_out =
+        indicial_roots(catenary_ode<double>(false, 1.0, 1.0));
+    static const std::vector<std::complex<double>> singular_in =
+        leading_roots(catenary_ode<double>(true, 1.0, 1.0));
+    static const std::vector<std::complex<double>> singular_out =
+        leading_roots(catenary_ode<double>(false, 1.0, 1.0));
     roots_ = inplane ? roots_in : roots_out;
     singular_ = inplane ? singular_in : singular_out;
     add_apex_expansion(ode, settings);
@@ -199,7 +211,8 @@ class CatenaryBasis {
 
   /// D^k U_j(sigma), k = 0..max_derivative (<= 3); with `errors` Skipped the error and
   /// largest_term entries stay 0 (for callers that use the values alone).
-  BasisValues<Real> evaluate(const Real& sigma, int max_derivative,
+  BasisValues<Real> evaluate(const Real& sigma,
+                             int max_derivative,
                              SeriesErrors errors = SeriesErrors::Tracked) const {
     using std::sqrt;
     BasisValues<Real> out;
@@ -230,7 +243,8 @@ class CatenaryBasis {
     for (int j = 0; j < n_; ++j) {
       bool ok = false;
       singular_series_.push_back(adaptive_series(table0, Real(roots_[static_cast<std::size_t>(j)]),
-                                                 Real(rho * r0), settings.term_tolerance, settings.max_terms, ok));
+                                                 Real(rho * r0), settings.term_tolerance,
+                                                 settings.max_terms, ok));
       converged_ = converged_ && ok;
       total_terms_ += static_cast<long>(singular_series_.back().a.size());
     }
@@ -253,15 +267,17 @@ class CatenaryBasis {
 
   // A Taylor expansion about the next ordinary centre, continuing every basis function: the
   // unit solutions there are combined to match the previous expansion's derivatives at x_m.
-  void add_ordinary_expansion(const PolynomialOde<Real>& ode, const CatenarySeriesSettings& settings) {
+  void add_ordinary_expansion(const PolynomialOde<Real>& ode,
+                              const CatenarySeriesSettings& settings) {
     double rho = settings.step_ratio;
     const double x_m = centres_.back() + reach_.back();
     double c = next_centre(x_m, rho);
     double step = rho * radius(c);
     // The wave limit: the phase rate falls with eta, so its value at x_m bounds it on the disc.
-    const double wave_step = settings.max_phase_per_expansion > 0.0
-                                 ? settings.max_phase_per_expansion / wave_phase_rate(omega_, mu_, x_m)
-                                 : step;
+    const double wave_step =
+        settings.max_phase_per_expansion > 0.0
+            ? settings.max_phase_per_expansion / wave_phase_rate(omega_, mu_, x_m)
+            : step;
     if (wave_step < step) {
       c = x_m + wave_step;
       step = wave_step;
@@ -272,7 +288,8 @@ class CatenaryBasis {
     std::size_t longest = 0;
     for (int m = 0; m < n_; ++m) {
       bool ok = false;
-      unit.push_back(adaptive_series(table, Real(m), Real(step), settings.term_tolerance, settings.max_terms, ok));
+      unit.push_back(adaptive_series(table, Real(m), Real(step), settings.term_tolerance,
+                                     settings.max_terms, ok));
       converged_ = converged_ && ok;
       longest = std::max(longest, unit.back().a.size() + static_cast<std::size_t>(m));
     }
@@ -286,7 +303,8 @@ class CatenaryBasis {
     }
     std::vector<FrobeniusSeries<Real>> combined(n);
     for (std::size_t j = 0; j < n; ++j) {
-      const auto d = raw_derivatives(static_cast<int>(centres_.size()) - 1, static_cast<int>(j), Real(x_m), n_ - 1);
+      const auto d = raw_derivatives(static_cast<int>(centres_.size()) - 1, static_cast<int>(j),
+                                     Real(x_m), n_ - 1);
       const std::vector<Real> coef = solve_dense(B, d.derivative);
       auto& s = combined[j];
       s.r = Real(0);
@@ -305,19 +323,25 @@ class CatenaryBasis {
   // An odd (half-integer exponent) basis function near the apex: U = sigma h(eta),
   // h = g(eta) (2+eta)^(-1/2), g = eta^(r-1/2) S(eta) (integer powers), so that the
   // sigma-derivatives have no cancelling eta^(-1/2) terms.
-  void odd_near_apex(std::size_t j, const Real& sigma, const Real& eta, int max_derivative, SeriesErrors errors,
+  void odd_near_apex(std::size_t j,
+                     const Real& sigma,
+                     const Real& eta,
+                     int max_derivative,
+                     SeriesErrors errors,
                      BasisValues<Real>& out) const {
     using std::abs;
     using std::sqrt;
     const Real eps = std::numeric_limits<Real>::epsilon();
     const FrobeniusSeries<Real>& s = singular_series_[j];  // g: its coefficients, exponent r - 1/2
-    const auto gv = evaluate_series(s.a, Real(s.r - Real(0.5)), eta, max_derivative, Real(ratio_[0]), errors);
+    const auto gv =
+        evaluate_series(s.a, Real(s.r - Real(0.5)), eta, max_derivative, Real(ratio_[0]), errors);
     for (const auto& x : gv.largest_term) out.largest_term[j] = std::max(out.largest_term[j], x);
     // Derivatives in eta of h by Leibniz's rule with w = (2+eta)^(-1/2).
     std::array<Real, 4> w{}, h{}, he{};
     const Real root = sqrt(Real(2) + eta);
     w[0] = Real(1) / root;
-    for (std::size_t i = 1; i < 4; ++i) w[i] = w[i - 1] * (Real(0.5) - Real(static_cast<int>(i))) / (Real(2) + eta);
+    for (std::size_t i = 1; i < 4; ++i)
+      w[i] = w[i - 1] * (Real(0.5) - Real(static_cast<int>(i))) / (Real(2) + eta);
     static const int binom[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
     for (std::size_t d = 0; d <= static_cast<std::size_t>(max_derivative); ++d)
       for (std::size_t i = 0; i <= d; ++i) {
@@ -328,8 +352,13 @@ class CatenaryBasis {
   }
 
   // D^k (sigma h(eta)) from the eta-derivatives h, with their error bounds he.
-  void sigma_derivatives_of_odd(std::size_t j, const Real& sigma, const Real& eta, const std::array<Real, 4>& h,
-                                const std::array<Real, 4>& he, int max_derivative, BasisValues<Real>& out) const {
+  void sigma_derivatives_of_odd(std::size_t j,
+                                const Real& sigma,
+                                const Real& eta,
+                                const std::array<Real, 4>& h,
+                                const std::array<Real, 4>& he,
+                                int max_derivative,
+                                BasisValues<Real>& out) const {
     using std::abs;
     const Real q = sigma * sigma;
     const Real C = Real(1) + eta;
@@ -358,11 +387,18 @@ class CatenaryBasis {
 
   // Basis function j from expansion k as a series in eta, U_j = F_j(|xi|) (even) or
   // sign(sigma) F_j(|xi|) (odd), converted to sigma-derivatives (D eta = sigma / C).
-  void from_series_in_eta(std::size_t j, int k, bool odd, const Real& sigma, const Real& eta, int max_derivative,
-                          SeriesErrors errors, BasisValues<Real>& out) const {
+  void from_series_in_eta(std::size_t j,
+                          int k,
+                          bool odd,
+                          const Real& sigma,
+                          const Real& eta,
+                          int max_derivative,
+                          SeriesErrors errors,
+                          BasisValues<Real>& out) const {
     using std::abs;
     const Real eps = std::numeric_limits<Real>::epsilon();
-    const SeriesValue<Real> v = raw_derivatives(k, static_cast<int>(j), eta, max_derivative, errors);
+    const SeriesValue<Real> v =
+        raw_derivatives(k, static_cast<int>(j), eta, max_derivative, errors);
     std::array<Real, 4> F{}, Fe{};
     for (const auto& x : v.largest_term) out.largest_term[j] = std::max(out.largest_term[j], x);
     for (std::size_t d = 0; d <= static_cast<std::size_t>(max_derivative); ++d) {
@@ -386,8 +422,10 @@ class CatenaryBasis {
       fe[2] = q * iC2 * Fe[2] + iC3 * Fe[1];
     }
     if (max_derivative >= 3) {
-      f[3] = sign * sigma * (q * iC3 * F[3] + Real(3) * iC2 * iC2 * F[2] - Real(3) * iC2 * iC3 * F[1]);
-      fe[3] = abs(sigma) * (q * iC3 * Fe[3] + Real(3) * iC2 * iC2 * Fe[2] + Real(3) * iC2 * iC3 * Fe[1]);
+      f[3] =
+          sign * sigma * (q * iC3 * F[3] + Real(3) * iC2 * iC2 * F[2] - Real(3) * iC2 * iC3 * F[1]);
+      fe[3] = abs(sigma) *
+              (q * iC3 * Fe[3] + Real(3) * iC2 * iC2 * Fe[2] + Real(3) * iC2 * iC3 * Fe[1]);
     }
   }
 
@@ -400,18 +438,25 @@ class CatenaryBasis {
 
   int centre_index(double eta) const {
     int k = 0;
-    while (k + 1 < static_cast<int>(centres_.size()) && eta >= lower_[static_cast<std::size_t>(k + 1)]) ++k;
+    while (k + 1 < static_cast<int>(centres_.size()) &&
+           eta >= lower_[static_cast<std::size_t>(k + 1)])
+      ++k;
     return k;
   }
 
   /// F_j^(m)(eta), m = 0..max_derivative, from expansion k (eta > 0).
-  SeriesValue<Real> raw_derivatives(int k, int j, const Real& eta, int max_derivative,
+  SeriesValue<Real> raw_derivatives(int k,
+                                    int j,
+                                    const Real& eta,
+                                    int max_derivative,
                                     SeriesErrors errors = SeriesErrors::Tracked) const {
     if (k == 0)
-      return evaluate_series(singular_series_[static_cast<std::size_t>(j)], eta, max_derivative, Real(ratio_[0]), errors);
-    return evaluate_series(ordinary_series_[static_cast<std::size_t>(k - 1)][static_cast<std::size_t>(j)],
-                           Real(eta - Real(centres_[static_cast<std::size_t>(k)])), max_derivative,
-                           Real(ratio_[static_cast<std::size_t>(k)]), errors);
+      return evaluate_series(singular_series_[static_cast<std::size_t>(j)], eta, max_derivative,
+                             Real(ratio_[0]), errors);
+    return evaluate_series(
+        ordinary_series_[static_cast<std::size_t>(k - 1)][static_cast<std::size_t>(j)],
+        Real(eta - Real(centres_[static_cast<std::size_t>(k)])), max_derivative,
+        Real(ratio_[static_cast<std::size_t>(k)]), errors);
   }
 
   bool inplane_;

@@ -2,12 +2,12 @@
 // Conjugate-point count of the frobenius solver: see frobenius_conjugate_points.hpp.
 #include "solvers/frobenius/frobenius_conjugate_points.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/SVD>
 #include <array>
 #include <cmath>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "catena/core/types.hpp"
 
@@ -65,30 +65,35 @@ int count_conjugate_points(const PlaneSetup& setup, double omega, int points) {
 }  // namespace
 
 int conjugate_point_count(Precision p, const PlaneSetup& setup, double omega, int points) {
-  return with_precision(p, [&](auto zero) {
-    return count_conjugate_points<decltype(zero)>(setup, omega, points);
-  });
+  return with_precision(
+      p, [&](auto zero) { return count_conjugate_points<decltype(zero)>(setup, omega, points); });
 }
 
-int confirm_inplane_count(const PlaneSetup& setup, int count, const RootSettings& settings, PlaneRoots& found) {
+int confirm_inplane_count(const PlaneSetup& setup,
+                          int count,
+                          const RootSettings& settings,
+                          PlaneRoots& found) {
   RootSettings retry = settings;
   for (int attempt = 0; attempt < 3 && !found.roots.empty(); ++attempt) {
     // Just above the highest root (1 % of the last gap): the last conjugate point then lies far
     // enough inside the cable to be resolved.
     const std::size_t n = found.roots.size();
-    const double gap = n > 1 ? found.roots[n - 1].omega - found.roots[n - 2].omega : found.roots[0].omega;
+    const double gap =
+        n > 1 ? found.roots[n - 1].omega - found.roots[n - 2].omega : found.roots[0].omega;
     const double top = found.roots.back().omega + 0.01 * gap;
     // Only signs along the cable are needed: ~100 steps per mode, in the scan's precision.
     const int grid = 100 * static_cast<int>(n) + 200;
     const int counted = conjugate_point_count(found.scan_precision, setup, top, grid);
     if (counted == static_cast<int>(n)) {
-      found.notes.push_back(fmt::format(
-          "mode count checked by conjugate points (Morse index) on {} steps: {} frequencies below the highest returned",
-          grid, counted));
+      found.notes.push_back(
+          fmt::format("mode count checked by conjugate points (Morse index) on {} steps: {} "
+                      "frequencies below the highest returned",
+                      grid, counted));
       return counted;
     }
-    const std::string text = fmt::format("conjugate-point count {} differs from the {} roots found with scan_fraction {:g}",
-                                         counted, n, retry.scan_fraction);
+    const std::string text = fmt::format(
+        "conjugate-point count {} differs from the {} roots found with scan_fraction {:g}", counted,
+        n, retry.scan_fraction);
     if (attempt == 2 || retry.scan_fraction / 4.0 < 0.001) {
       found.warnings.push_back(text + ": a root may be missing");
       return -1;
@@ -97,7 +102,8 @@ int confirm_inplane_count(const PlaneSetup& setup, int count, const RootSettings
     const long evaluations = found.work.determinant_evaluations;
     found = find_frequencies(setup, count, retry);
     found.work.determinant_evaluations += evaluations;
-    found.notes.push_back(fmt::format("{}; rescanned with scan_fraction {:g}", text, retry.scan_fraction));
+    found.notes.push_back(
+        fmt::format("{}; rescanned with scan_fraction {:g}", text, retry.scan_fraction));
   }
   return -1;
 }

@@ -16,7 +16,10 @@ namespace {
 using std::sqrt;
 
 // Mode shapes from the fields at `stations` (units a and H to m and N).
-void set_inplane_shape(Mode& mode, const std::vector<FieldValues>& values, bool tension, const CableUnits& units) {
+void set_inplane_shape(Mode& mode,
+                       const std::vector<FieldValues>& values,
+                       bool tension,
+                       const CableUnits& units) {
   const Index n = mode.s_m.size();
   mode.u.resize(n);
   mode.w.resize(n);
@@ -55,9 +58,13 @@ std::vector<Real> null_vector(const PlaneSetup& setup, double omega) {
 }
 
 template <class Real>
-std::vector<FieldValues> fields(const PlaneSetup& setup, double omega, const std::vector<Real>& c,
-                                const std::vector<double>& sigmas, bool with_tension) {
-  CatenaryBasis<Real> basis(setup.inplane, Real(omega), Real(setup.mu), setup.eta_max, setup.settings);
+std::vector<FieldValues> fields(const PlaneSetup& setup,
+                                double omega,
+                                const std::vector<Real>& c,
+                                const std::vector<double>& sigmas,
+                                bool with_tension) {
+  CatenaryBasis<Real> basis(setup.inplane, Real(omega), Real(setup.mu), setup.eta_max,
+                            setup.settings);
   const int derivatives = setup.inplane ? (with_tension ? 3 : 1) : 0;
   std::vector<FieldValues> out;
   const Real w2mu = Real(omega) * Real(omega) * Real(setup.mu);
@@ -66,7 +73,8 @@ std::vector<FieldValues> fields(const PlaneSetup& setup, double omega, const std
     const auto b = basis.evaluate(sigma, derivatives, SeriesErrors::Skipped);  // values only
     Real d[4] = {Real(0), Real(0), Real(0), Real(0)};
     for (std::size_t j = 0; j < static_cast<std::size_t>(basis.size()); ++j)
-      for (std::size_t k = 0; k <= static_cast<std::size_t>(derivatives); ++k) d[k] += c[j] * b.value[j][k];
+      for (std::size_t k = 0; k <= static_cast<std::size_t>(derivatives); ++k)
+        d[k] += c[j] * b.value[j][k];
     FieldValues f;
     f.u = static_cast<double>(d[0]);
     if (setup.inplane) {
@@ -74,7 +82,8 @@ std::vector<FieldValues> fields(const PlaneSetup& setup, double omega, const std
       const Real C = sqrt(Real(1) + q);
       f.v = static_cast<double>(q * d[1] + d[1]);
       if (with_tension)
-        f.t = static_cast<double>(sigma / C * d[0] - ((Real(3) + Real(4) * q) * C + w2mu * C * C * C * C) * d[1] -
+        f.t = static_cast<double>(sigma / C * d[0] -
+                                  ((Real(3) + Real(4) * q) * C + w2mu * C * C * C * C) * d[1] -
                                   Real(5) * sigma * C * C * C * d[2] - C * C * C * C * C * d[3]);
     }
     out.push_back(f);
@@ -82,17 +91,20 @@ std::vector<FieldValues> fields(const PlaneSetup& setup, double omega, const std
   return out;
 }
 
-#define CATENA_FROBENIUS_FIELDS_INSTANTIATE(Real)                                                        \
-  template std::vector<Real> null_vector<Real>(const PlaneSetup&, double);                               \
-  template std::vector<FieldValues> fields<Real>(const PlaneSetup&, double, const std::vector<Real>&,    \
-                                                 const std::vector<double>&, bool);
+#define CATENA_FROBENIUS_FIELDS_INSTANTIATE(Real)                          \
+  template std::vector<Real> null_vector<Real>(const PlaneSetup&, double); \
+  template std::vector<FieldValues> fields<Real>(                          \
+      const PlaneSetup&, double, const std::vector<Real>&, const std::vector<double>&, bool);
 CATENA_FROBENIUS_FIELDS_INSTANTIATE(double)
 CATENA_FROBENIUS_FIELDS_INSTANTIATE(long double)
 CATENA_FROBENIUS_FIELDS_INSTANTIATE(QuadFloat)
 #undef CATENA_FROBENIUS_FIELDS_INSTANTIATE
 
-std::vector<FieldValues> mode_fields(Precision p, const PlaneSetup& setup, double omega,
-                                     const std::vector<double>& sigmas, bool with_tension) {
+std::vector<FieldValues> mode_fields(Precision p,
+                                     const PlaneSetup& setup,
+                                     double omega,
+                                     const std::vector<double>& sigmas,
+                                     bool with_tension) {
   return with_precision(p, [&](auto zero) {
     using Real = decltype(zero);
     return fields<Real>(setup, omega, null_vector<Real>(setup, omega), sigmas, with_tension);
@@ -106,7 +118,11 @@ int interior_sign_changes(const Vector& v) {
   return changes;
 }
 
-int add_mode_fields(Mode& mode, const PlaneSetup& setup, double omega, Precision p, const ModeFieldRequest& request,
+int add_mode_fields(Mode& mode,
+                    const PlaneSetup& setup,
+                    double omega,
+                    Precision p,
+                    const ModeFieldRequest& request,
                     const CableUnits& units) {
   const bool want_fields = request.shapes || request.tension || !setup.inplane;
   if (!want_fields) return -1;
@@ -122,7 +138,8 @@ int add_mode_fields(Mode& mode, const PlaneSetup& setup, double omega, Precision
     mode.modal_mass_kg = inplane_modal_mass(mode, units.mass_kg_per_m, units.normal_mass_kg_per_m);
   } else {
     mode.v.resize(stations.s_m.size());
-    for (Index k = 0; k < stations.s_m.size(); ++k) mode.v(k) = units.length_m * values[static_cast<std::size_t>(k)].u;
+    for (Index k = 0; k < stations.s_m.size(); ++k)
+      mode.v(k) = units.length_m * values[static_cast<std::size_t>(k)].u;
     sign_changes = interior_sign_changes(mode.v);
     normalise_outofplane_mode(mode);
     mode.modal_mass_kg = outofplane_modal_mass(mode, units.normal_mass_kg_per_m);

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The fields of the frobenius solver (docs/explanation/methods/frobenius.md): the combination of the series
-/// basis that meets the boundary conditions (the null vector of the boundary matrix at a natural
-/// frequency, or the driven solution of the forced response), and its displacements and dynamic
-/// tension along the cable (Gale 1976, eqs. 2.36, 2.37; docs/reference/references.md):
+/// The fields of the frobenius solver (docs/explanation/methods/frobenius.md): the combination of
+/// the series basis that meets the boundary conditions (the null vector of the boundary matrix at a
+/// natural frequency, or the driven solution of the forced response), and its displacements and
+/// dynamic tension along the cable (Gale 1976, eqs. 2.36, 2.37; docs/reference/references.md):
 ///   U tangential, V = C^2 DU normal, T = (sigma/C) U - [(3 + 4 sigma^2) C + mu Omega^2 C^4] DU
 ///   - 5 sigma C^3 D^2U - C^5 D^3U, in units of a (displacements) and H (tension); out of plane
 ///   U is the displacement normal to the plane.
@@ -49,12 +49,18 @@ std::vector<Real> null_vector(const PlaneSetup& setup, double omega);
 /// U, V and (when `with_tension`, in plane) T of the combination c of the basis at each sigma.
 /// Instantiated for double, long double and QuadFloat.
 template <class Real>
-std::vector<FieldValues> fields(const PlaneSetup& setup, double omega, const std::vector<Real>& c,
-                                const std::vector<double>& sigmas, bool with_tension);
+std::vector<FieldValues> fields(const PlaneSetup& setup,
+                                double omega,
+                                const std::vector<Real>& c,
+                                const std::vector<double>& sigmas,
+                                bool with_tension);
 
 /// The fields of the mode at Omega = omega (null vector and fields in precision `p`).
-std::vector<FieldValues> mode_fields(Precision p, const PlaneSetup& setup, double omega,
-                                     const std::vector<double>& sigmas, bool with_tension);
+std::vector<FieldValues> mode_fields(Precision p,
+                                     const PlaneSetup& setup,
+                                     double omega,
+                                     const std::vector<double>& sigmas,
+                                     bool with_tension);
 
 /// Which fields a mode carries, and where.
 struct ModeFieldRequest {
@@ -71,8 +77,12 @@ struct ModeFieldRequest {
 /// shapes only max |T| is kept. Out of plane the shape is always computed (its interior sign
 /// changes are the Sturm check of the count), and returned only when asked. Returns those
 /// interior sign changes of the out-of-plane shape (interior_sign_changes), -1 in plane.
-int add_mode_fields(Mode& mode, const PlaneSetup& setup, double omega, Precision p, const ModeFieldRequest& request,
-                     const CableUnits& units);
+int add_mode_fields(Mode& mode,
+                    const PlaneSetup& setup,
+                    double omega,
+                    Precision p,
+                    const ModeFieldRequest& request,
+                    const CableUnits& units);
 
 /// Sign changes of v between its second and its second-to-last station (the end stations, where
 /// the mode vanishes, are left out): n - 1 for the n-th string-like mode (Sturm).

@@ -2,13 +2,13 @@
 // Forced response of the frobenius solver: see frobenius_forced.hpp.
 #include "solvers/frobenius/frobenius_forced.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "solvers/frobenius/frobenius_root_scan.hpp"
 
@@ -25,7 +25,8 @@ constexpr double kNearResonanceCondition = 1e3;
 // per expansion and the series cut 1e-3 finer.
 PlaneSetup forced_setup(const PlaneSetup& base, bool finer) {
   PlaneSetup setup = base;
-  setup.settings.max_phase_per_expansion = finer ? 0.5 * kForcedPhasePerExpansion : kForcedPhasePerExpansion;
+  setup.settings.max_phase_per_expansion =
+      finer ? 0.5 * kForcedPhasePerExpansion : kForcedPhasePerExpansion;
   setup.settings.max_centres = finer ? 2 * kForcedMaxCentres : kForcedMaxCentres;
   if (finer) setup.settings.term_tolerance = std::max(setup.settings.term_tolerance * 1e-3, 1e-30);
   return setup;
@@ -33,7 +34,7 @@ PlaneSetup forced_setup(const PlaneSetup& base, bool finer) {
 
 // One evaluation of the boundary system at one frequency.
 struct ForcedSolve {
-  std::vector<long double> coefficients;  // in the unscaled basis
+  std::vector<long double> coefficients;       // in the unscaled basis
   std::vector<std::vector<long double>> rows;  // the scaled matrix, rows equilibrated
   std::vector<long double> row_scale;
   double entry_error = 0.0;  // the entries' own error estimate, relative to their row
@@ -64,7 +65,10 @@ double condition_1(const std::vector<std::vector<long double>>& a) {
 // The boundary system with the fixed end at rest and the driven end displaced by `end`, solved
 // in long double (the system is small; the extra digits are cheap and keep the fields accurate
 // near resonance).
-ForcedSolve solve_forcing(const PlaneSetup& setup, double omega, bool driven_at_b, const EndDisplacement& end) {
+ForcedSolve solve_forcing(const PlaneSetup& setup,
+                          double omega,
+                          bool driven_at_b,
+                          const EndDisplacement& end) {
   const auto m = boundary_matrix<long double>(setup, static_cast<long double>(omega));
   const std::size_t n = m.a.size();
   ForcedSolve out;
@@ -75,7 +79,9 @@ ForcedSolve solve_forcing(const PlaneSetup& setup, double omega, bool driven_at_
   const double sigma_end = driven_at_b ? setup.sigma2 : setup.sigma1;
   const std::size_t row = driven_at_b ? n / 2 : 0;
   rhs[row] = static_cast<long double>(end.u);
-  if (setup.inplane) rhs[row + 1] = static_cast<long double>(end.v) / static_cast<long double>(1.0 + sigma_end * sigma_end);  // DU = V / C^2
+  if (setup.inplane)
+    rhs[row + 1] = static_cast<long double>(end.v) /
+                   static_cast<long double>(1.0 + sigma_end * sigma_end);  // DU = V / C^2
   // Solved as scaled (the rows' scaling is only for the condition and the uncertainty).
   out.coefficients = solve_dense(m.a, rhs);
   for (std::size_t j = 0; j < n; ++j) out.coefficients[j] /= m.column_scale[j];
@@ -87,10 +93,12 @@ ForcedSolve solve_forcing(const PlaneSetup& setup, double omega, bool driven_at_
     if (big > 0) out.row_scale[i] = big;
     for (std::size_t j = 0; j < n; ++j) {
       out.rows[i][j] /= out.row_scale[i];
-      out.entry_error = std::max(out.entry_error, static_cast<double>(m.error[i][j] / out.row_scale[i]));
+      out.entry_error =
+          std::max(out.entry_error, static_cast<double>(m.error[i][j] / out.row_scale[i]));
     }
   }
-  out.entry_error = std::max(out.entry_error, static_cast<double>(std::numeric_limits<long double>::epsilon()));
+  out.entry_error =
+      std::max(out.entry_error, static_cast<double>(std::numeric_limits<long double>::epsilon()));
   out.condition = condition_1(out.rows);
   return out;
 }
@@ -106,8 +114,12 @@ double matrix_difference(const ForcedSolve& a, const ForcedSolve& b) {
 }
 
 // Fills the fields of `response` from the combination c of the basis at Omega = omega.
-void set_fields(ForcedResponse& response, const PlaneSetup& setup, double omega, const std::vector<long double>& c,
-                const FieldStations& stations, const CableUnits& units) {
+void set_fields(ForcedResponse& response,
+                const PlaneSetup& setup,
+                double omega,
+                const std::vector<long double>& c,
+                const FieldStations& stations,
+                const CableUnits& units) {
   const auto values = fields<long double>(setup, omega, c, stations.sigma, setup.inplane);
   const Index n = stations.s_m.size();
   if (setup.inplane) {
@@ -123,7 +135,8 @@ void set_fields(ForcedResponse& response, const PlaneSetup& setup, double omega,
     response.max_abs_tension_n = response.tension_n.cwiseAbs().maxCoeff();
   } else {
     response.v.resize(n);
-    for (Index k = 0; k < n; ++k) response.v(k) = units.length_m * values[static_cast<std::size_t>(k)].u;
+    for (Index k = 0; k < n; ++k)
+      response.v(k) = units.length_m * values[static_cast<std::size_t>(k)].u;
   }
 }
 
@@ -151,27 +164,36 @@ void decline(ForcedResponse& response, std::string reason, bool at_resonance) {
 
 // Why the basis of Omega = omega cannot be trusted (too many centres, truncated series, entries
 // not known to kForcedMaxEntryError), or nullopt.
-std::optional<std::string> basis_trouble(const PlaneSetup& setup, double omega, const ForcedSolve& a,
-                                         const ForcedSolve& b, double uncertainty) {
+std::optional<std::string> basis_trouble(const PlaneSetup& setup,
+                                         double omega,
+                                         const ForcedSolve& a,
+                                         const ForcedSolve& b,
+                                         double uncertainty) {
   const double needed = forced_centres_needed(setup, omega);
   if (!(needed <= kForcedMaxCentres))
-    return fmt::format("forcing at Omega = {:g} is beyond the frobenius series: about {:.3g} expansion centres "
-                       "would be needed to keep each expansion within {:g} rad of phase (cap {}); declined",
-                       omega, needed, kForcedPhasePerExpansion, kForcedMaxCentres);
+    return fmt::format(
+        "forcing at Omega = {:g} is beyond the frobenius series: about {:.3g} expansion centres "
+        "would be needed to keep each expansion within {:g} rad of phase (cap {}); declined",
+        omega, needed, kForcedPhasePerExpansion, kForcedMaxCentres);
   if (a.truncated || b.truncated)
-    return fmt::format("forcing at Omega = {:g}: some series hit max_terms = {} before converging; declined", omega,
-                       setup.settings.max_terms);
+    return fmt::format(
+        "forcing at Omega = {:g}: some series hit max_terms = {} before converging; declined",
+        omega, setup.settings.max_terms);
   if (!(uncertainty <= kForcedMaxEntryError))
-    return fmt::format("forcing at Omega = {:g}: the boundary matrix is known only to {:.1e} (relative, two "
-                       "evaluations); declined",
-                       omega, uncertainty);
+    return fmt::format(
+        "forcing at Omega = {:g}: the boundary matrix is known only to {:.1e} (relative, two "
+        "evaluations); declined",
+        omega, uncertainty);
   return std::nullopt;
 }
 
 // Whether the response is resolved a quarter of the WKB mode spacing to either side of Omega =
 // omega: then the condition kappa(omega) >= 1 / uncertainty comes from a natural frequency close
 // to omega (near one, 1 / kappa falls linearly with the distance to it), not from the basis.
-bool resolved_nearby(const PlaneSetup& setup, double omega, bool driven_at_b, const EndDisplacement& end,
+bool resolved_nearby(const PlaneSetup& setup,
+                     double omega,
+                     bool driven_at_b,
+                     const EndDisplacement& end,
                      double uncertainty) {
   const double h = 0.25 * wkb_mode_spacing(setup);
   for (double side : {omega - h, omega + h}) {
@@ -185,20 +207,29 @@ bool resolved_nearby(const PlaneSetup& setup, double omega, bool driven_at_b, co
 // resonance when the response is resolved nearby, else beyond the series' accuracy.
 std::string unresolved_reason(double omega, bool resonance, double condition, double uncertainty) {
   const std::string measure = fmt::format(
-      "condition number {:.2e} of the row-equilibrated boundary matrix times its uncertainty {:.1e} >= 1", condition,
-      uncertainty);
+      "condition number {:.2e} of the row-equilibrated boundary matrix times its uncertainty "
+      "{:.1e} >= 1",
+      condition, uncertainty);
   if (resonance)
-    return fmt::format("forcing at Omega = {:g} is at a natural frequency within the series' accuracy ({}): "
-                       "resonance, no finite response",
-                       omega, measure);
-  return fmt::format("forcing at Omega = {:g}: the response is not determined by the series at this frequency ({}, "
-                     "also a quarter mode spacing away: not a resonance); declined",
-                     omega, measure);
+    return fmt::format(
+        "forcing at Omega = {:g} is at a natural frequency within the series' accuracy ({}): "
+        "resonance, no finite response",
+        omega, measure);
+  return fmt::format(
+      "forcing at Omega = {:g}: the response is not determined by the series at this frequency "
+      "({}, "
+      "also a quarter mode spacing away: not a resonance); declined",
+      omega, measure);
 }
 
 // The response at one frequency [rad/s] (the resonance rule is in frobenius_forced.hpp).
-ForcedResponse response_at(const PlaneSetup& base, bool driven_at_b, const EndDisplacement& end, double omega_rad_s,
-                           const FieldStations& stations, const CableUnits& units, ForcedWork& work) {
+ForcedResponse response_at(const PlaneSetup& base,
+                           bool driven_at_b,
+                           const EndDisplacement& end,
+                           double omega_rad_s,
+                           const FieldStations& stations,
+                           const CableUnits& units,
+                           ForcedWork& work) {
   ForcedResponse response;
   response.omega_rad_s = omega_rad_s;
   response.s_m = stations.s_m;
@@ -228,7 +259,8 @@ ForcedResponse response_at(const PlaneSetup& base, bool driven_at_b, const EndDi
   ForcedResponse finer = response;
   set_fields(finer, check, omega, b.coefficients, stations, units);
   if (!finite_fields(response) || !finite_fields(finer)) {
-    decline(response, fmt::format("forcing at Omega = {:g}: non-finite fields; declined", omega), false);
+    decline(response, fmt::format("forcing at Omega = {:g}: non-finite fields; declined", omega),
+            false);
     return response;
   }
   const double scale = std::max(peak(response), std::numeric_limits<double>::min());
@@ -253,13 +285,21 @@ double forced_centres_needed(const PlaneSetup& setup, double omega) {
   return 1.0 + omega * std::sqrt(setup.mu) * integral / kForcedPhasePerExpansion;
 }
 
-EndDisplacement forced_end_displacement(const ForcedRequest& forced, double sigma_end, double length_m) {
+EndDisplacement forced_end_displacement(const ForcedRequest& forced,
+                                        double sigma_end,
+                                        double length_m) {
   const double a = length_m;
   EndDisplacement end;
   switch (forced.direction) {
-    case ForcingDirection::Tangential: end.u = forced.amplitude_m / a; break;
-    case ForcingDirection::Normal: end.v = forced.amplitude_m / a; break;
-    case ForcingDirection::OutOfPlane: end.u = forced.amplitude_m / a; break;
+    case ForcingDirection::Tangential:
+      end.u = forced.amplitude_m / a;
+      break;
+    case ForcingDirection::Normal:
+      end.v = forced.amplitude_m / a;
+      break;
+    case ForcingDirection::OutOfPlane:
+      end.u = forced.amplitude_m / a;
+      break;
     case ForcingDirection::GivenVector: {
       // Resolved on the end's unit tangent t = (1, sigma)/C and normal n = (-sigma, 1)/C.
       const double C_end = std::sqrt(1.0 + sigma_end * sigma_end);
@@ -273,13 +313,17 @@ EndDisplacement forced_end_displacement(const ForcedRequest& forced, double sigm
   return end;
 }
 
-std::vector<ForcedResponse> frobenius_forced_responses(const PlaneSetup& base, const ForcedRequest& forced,
-                                                       const FieldStations& stations, const CableUnits& units,
-                                                       ForcedWork& work, WorkMeter* meter) {
+std::vector<ForcedResponse> frobenius_forced_responses(const PlaneSetup& base,
+                                                       const ForcedRequest& forced,
+                                                       const FieldStations& stations,
+                                                       const CableUnits& units,
+                                                       ForcedWork& work,
+                                                       WorkMeter* meter) {
   const bool at_b = forced.end == CableEnd::B;
   PlaneSetup setup = base;
   setup.inplane = forced.direction != ForcingDirection::OutOfPlane;
-  const EndDisplacement end = forced_end_displacement(forced, at_b ? base.sigma2 : base.sigma1, units.length_m);
+  const EndDisplacement end =
+      forced_end_displacement(forced, at_b ? base.sigma2 : base.sigma1, units.length_m);
   std::vector<ForcedResponse> responses;
   for (double omega_rad_s : forced.omegas_rad_s) {
     try {
@@ -289,7 +333,9 @@ std::vector<ForcedResponse> frobenius_forced_responses(const PlaneSetup& base, c
       ForcedResponse response;
       response.omega_rad_s = omega_rad_s;
       response.s_m = stations.s_m;
-      decline(response, fmt::format("forcing at {:g} rad/s: series failure ({}); declined", omega_rad_s, e.what()),
+      decline(response,
+              fmt::format("forcing at {:g} rad/s: series failure ({}); declined", omega_rad_s,
+                          e.what()),
               false);
       responses.push_back(std::move(response));
     }

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The forced response of the frobenius solver (docs/explanation/methods/frobenius.md; Gale 1976, eqs.
-/// 2.76-2.79, docs/reference/references.md): the fixed end at rest, the driven end given its displacement
-/// amplitude (tangential, normal, a given in-plane vector resolved on the end's tangent and
-/// normal, or out of plane), and the fields U, V, T of the solution along the cable. The
-/// combination of the basis solves the boundary system with that right-hand side.
+/// The forced response of the frobenius solver (docs/explanation/methods/frobenius.md; Gale 1976,
+/// eqs. 2.76-2.79, docs/reference/references.md): the fixed end at rest, the driven end given its
+/// displacement amplitude (tangential, normal, a given in-plane vector resolved on the end's
+/// tangent and normal, or out of plane), and the fields U, V, T of the solution along the cable.
+/// The combination of the basis solves the boundary system with that right-hand side.
 ///
 /// High forcing frequencies: a solution is a wave of wave number Omega sqrt(mu/C), and a series
 /// reaching a phase P sums terms of size e^P to an O(1) result. The basis is therefore built with
@@ -27,8 +27,8 @@
 
 #include "catena/solvers/modal_result.hpp"
 #include "catena/solvers/solve_request.hpp"
-#include "solvers/frobenius/frobenius_fields.hpp"
 #include "solvers/common/work_meter.hpp"
+#include "solvers/frobenius/frobenius_fields.hpp"
 
 namespace catena::internal {
 
@@ -50,7 +50,9 @@ struct EndDisplacement {
 
 /// The displacement `forced` prescribes at its end, where sigma = sigma_end, in units of a
 /// (`length_m`).
-EndDisplacement forced_end_displacement(const ForcedRequest& forced, double sigma_end, double length_m);
+EndDisplacement forced_end_displacement(const ForcedRequest& forced,
+                                        double sigma_end,
+                                        double length_m);
 
 /// What the forced responses cost, for the summary.
 struct ForcedWork {
@@ -63,9 +65,12 @@ struct ForcedWork {
 /// problem (the plane follows the forcing direction). `work` gains the largest series and centre
 /// counts of the bases used. A `meter` is told each frequency done and may stop early (the
 /// responses computed so far).
-std::vector<ForcedResponse> frobenius_forced_responses(const PlaneSetup& base, const ForcedRequest& forced,
-                                                       const FieldStations& stations, const CableUnits& units,
-                                                       ForcedWork& work, WorkMeter* meter = nullptr);
+std::vector<ForcedResponse> frobenius_forced_responses(const PlaneSetup& base,
+                                                       const ForcedRequest& forced,
+                                                       const FieldStations& stations,
+                                                       const CableUnits& units,
+                                                       ForcedWork& work,
+                                                       WorkMeter* meter = nullptr);
 
 /// Estimated number of expansion centres the forced basis needs at Omega = omega (phase along the
 /// longer half of the cable over the phase one expansion covers).

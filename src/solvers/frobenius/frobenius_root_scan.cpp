@@ -2,13 +2,13 @@
 // Root finding of the frobenius solver: see frobenius_root_scan.hpp for the steps.
 #include "solvers/frobenius/frobenius_root_scan.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <utility>
-
-#include <fmt/format.h>
 
 #include "catena/core/types.hpp"
 
@@ -20,15 +20,27 @@ namespace {
 // lives here so that the scan can be resumed when a bracket is lost in refinement.
 class FrequencyFinder {
  public:
-  FrequencyFinder(const PlaneSetup& setup, int count, const RootSettings& settings, WorkMeter* meter)
-      : setup_(setup), coarse_(setup), count_(count), settings_(settings),
-        spacing_(wkb_mode_spacing(setup)), step_(settings.scan_fraction * spacing_), meter_(meter) {}
+  FrequencyFinder(const PlaneSetup& setup,
+                  int count,
+                  const RootSettings& settings,
+                  WorkMeter* meter)
+      : setup_(setup),
+        coarse_(setup),
+        count_(count),
+        settings_(settings),
+        spacing_(wkb_mode_spacing(setup)),
+        step_(settings.scan_fraction * spacing_),
+        meter_(meter) {}
 
   PlaneRoots run();
 
  private:
-  double full(double omega) { return scaled_determinant(result_.scan_precision, setup_, omega, result_.work); }
-  double coarse(double omega) { return scaled_determinant(result_.scan_precision, coarse_, omega, result_.work); }
+  double full(double omega) {
+    return scaled_determinant(result_.scan_precision, setup_, omega, result_.work);
+  }
+  double coarse(double omega) {
+    return scaled_determinant(result_.scan_precision, coarse_, omega, result_.work);
+  }
 
   void choose_scan_precision();
   void choose_coarse_series();
@@ -65,12 +77,15 @@ void FrequencyFinder::choose_scan_precision() {
   result_.work.determinant_evaluations += probe.determinant_evaluations;
   result_.work.cancellation = probe.cancellation;
   Precision precision = Precision::Double;
-  if ((overflow || probe.cancellation * std::numeric_limits<double>::epsilon() > 1e-8) && settings_.extended_precision)
-    precision = probe.cancellation * std::numeric_limits<long double>::epsilon() > 1e-8 ? Precision::Quad
-                                                                                       : Precision::LongDouble;
-  result_.notes.push_back(fmt::format("cancellation (largest series term / |sum|) at Omega = {:g}: {:g}{}; root scan in {}",
-                                      top, probe.cancellation, overflow ? " (det not finite in double)" : "",
-                                      precision_name(precision)));
+  if ((overflow || probe.cancellation * std::numeric_limits<double>::epsilon() > 1e-8) &&
+      settings_.extended_precision)
+    precision = probe.cancellation * std::numeric_limits<long double>::epsilon() > 1e-8
+                    ? Precision::Quad
+                    : Precision::LongDouble;
+  result_.notes.push_back(fmt::format(
+      "cancellation (largest series term / |sum|) at Omega = {:g}: {:g}{}; root scan in {}", top,
+      probe.cancellation, overflow ? " (det not finite in double)" : "",
+      precision_name(precision)));
   result_.scan_precision = precision;
 }
 
@@ -81,15 +96,17 @@ void FrequencyFinder::choose_scan_precision() {
 // full series.
 void FrequencyFinder::choose_coarse_series() {
   coarse_.settings.term_tolerance =
-      std::max(setup_.settings.term_tolerance, std::min(1e-9, 1e-4 / std::max(1.0, result_.work.cancellation)));
+      std::max(setup_.settings.term_tolerance,
+               std::min(1e-9, 1e-4 / std::max(1.0, result_.work.cancellation)));
   const double top = (count_ + 1.0) * spacing_;
   const double full_det = full(top);
   const double cut_det = coarse(top);
   if (std::abs(cut_det - full_det) > 1e-2 * std::abs(full_det)) {
     coarse_ = setup_;
-    result_.notes.push_back(fmt::format(
-        "coarse-series scan rejected (det differs by {:g} relative at the top of the range): scan with the full series",
-        std::abs(cut_det - full_det) / std::max(std::abs(full_det), 1e-300)));
+    result_.notes.push_back(
+        fmt::format("coarse-series scan rejected (det differs by {:g} relative at the top of the "
+                    "range): scan with the full series",
+                    std::abs(cut_det - full_det) / std::max(std::abs(full_det), 1e-300)));
   }
 }
 
@@ -104,9 +121,17 @@ std::optional<double> FrequencyFinder::hidden_crossing(double a, double b, doubl
     if (fc < 0.0) return c;
     if (fd < 0.0) return d;
     if (fc < fd) {
-      b = d; d = c; fd = fc; c = b - g * (b - a); fc = sign * coarse(c);
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - g * (b - a);
+      fc = sign * coarse(c);
     } else {
-      a = c; c = d; fc = fd; d = a + g * (b - a); fd = sign * coarse(d);
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + g * (b - a);
+      fd = sign * coarse(d);
     }
     if (b - a < 1e-14 * b) break;
   }
@@ -117,7 +142,9 @@ std::optional<double> FrequencyFinder::hidden_crossing(double a, double b, doubl
 void FrequencyFinder::scan_more(std::size_t wanted) {
   const double limit = (3.0 * count_ + 20.0) * spacing_;
   while (brackets_.size() < wanted && x1_ < limit) {
-    if (meter_ && !brackets_.empty() && ++scan_steps_ % kScanStepsPerCheck == 0 && meter_->stop_after(0)) break;
+    if (meter_ && !brackets_.empty() && ++scan_steps_ % kScanStepsPerCheck == 0 &&
+        meter_->stop_after(0))
+      break;
     const double x2 = x1_ + step_, f2 = coarse(x2);
     if ((f0_ < 0.0) != (f1_ < 0.0)) brackets_.emplace_back(x0_, x1_);
     // A local minimum of |det| without a sign change on either side may hide two close roots.
@@ -128,8 +155,8 @@ void FrequencyFinder::scan_more(std::size_t wanted) {
         ++result_.hidden_pairs_found;
         brackets_.emplace_back(x0_, *crossing);
         brackets_.emplace_back(*crossing, x2);
-        result_.notes.push_back(
-            fmt::format("close pair of roots found inside one scan cell near Omega = {:g}", *crossing));
+        result_.notes.push_back(fmt::format(
+            "close pair of roots found inside one scan cell near Omega = {:g}", *crossing));
         x0_ = x2;
         f0_ = f2;
         x1_ = x2 + step_;
@@ -153,7 +180,8 @@ PlaneRoots FrequencyFinder::run() {
   f1_ = coarse(x1_);
   scan_more(static_cast<std::size_t>(count_));
   const double rtol = std::max(settings_.tolerance * 0.1, 4e-16);
-  for (std::size_t index = 0; index < brackets_.size() && static_cast<int>(result_.roots.size()) < count_; ++index) {
+  for (std::size_t index = 0;
+       index < brackets_.size() && static_cast<int>(result_.roots.size()) < count_; ++index) {
     refine_bracket(index, rtol);
     if (meter_ && meter_->stop_after(static_cast<long>(result_.roots.size()))) break;
   }
@@ -175,20 +203,23 @@ void FrequencyFinder::refine_bracket(std::size_t index, double rtol) {
     fb = full(b);
   }
   if ((fa < 0.0) == (fb < 0.0)) {
-    result_.warnings.push_back(fmt::format(
-        "a sign change of the scan near Omega = {:g} is not confirmed by the full series; skipped, scan resumed", lo));
+    result_.warnings.push_back(
+        fmt::format("a sign change of the scan near Omega = {:g} is not confirmed by the full "
+                    "series; skipped, scan resumed",
+                    lo));
     scan_more(brackets_.size() + 1);
     return;
   }
   int iterations = 0;
-  const double omega = refine_root([this](double x) { return full(x); }, a, b, fa, fb, rtol, iterations);
+  const double omega =
+      refine_root([this](double x) { return full(x); }, a, b, fa, fb, rtol, iterations);
   const FoundRoot root = corrected_root(omega, rtol);
   if (!std::isfinite(root.omega) || !std::isfinite(root.relative_error)) {
     // The determinant overflowed or lost every digit (NaN compares as positive, so the scan may
     // even have bracketed it): not a frequency. The plane then has fewer roots than asked.
     result_.warnings.push_back(fmt::format(
-        "the root bracketed in [{:g}, {:g}] came out non-finite in {} (series overflow): dropped", a, b,
-        precision_name(std::max(result_.scan_precision, Precision::LongDouble))));
+        "the root bracketed in [{:g}, {:g}] came out non-finite in {} (series overflow): dropped",
+        a, b, precision_name(std::max(result_.scan_precision, Precision::LongDouble))));
     return;
   }
   result_.roots.push_back(root);
@@ -212,7 +243,8 @@ FoundRoot FrequencyFinder::corrected_root(double omega, double rtol) {
   const double above = full(omega + h);
   double slope = (above - full(omega - h)) / (2.0 * h);
   for (int level = 0; level < 4 && slope != 0.0; ++level) {
-    if (level == 2 && settings_.extended_precision && correction > 0.1 * settings_.tolerance) check = Precision::Quad;
+    if (level == 2 && settings_.extended_precision && correction > 0.1 * settings_.tolerance)
+      check = Precision::Quad;
     fine.settings.term_tolerance = std::max(fine.settings.term_tolerance * 1e-3, 1e-40);
     const double ga = scaled_determinant(check, fine, omega, result_.work);
     if (level > 0) slope = (scaled_determinant(check, fine, omega + h, result_.work) - ga) / h;
@@ -246,7 +278,9 @@ double wkb_mode_spacing(const PlaneSetup& setup) {
   return kPi / integral;
 }
 
-PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const RootSettings& settings,
+PlaneRoots find_frequencies(const PlaneSetup& setup,
+                            int count,
+                            const RootSettings& settings,
                             WorkMeter* meter) {
   return FrequencyFinder(setup, count, settings, meter).run();
 }

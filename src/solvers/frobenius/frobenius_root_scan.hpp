@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Root finding of the frobenius solver (docs/explanation/methods/frobenius.md): the natural frequencies of
-/// one plane as the zeros of the scaled boundary determinant (frobenius_boundary.hpp).
+/// Root finding of the frobenius solver (docs/explanation/methods/frobenius.md): the natural
+/// frequencies of one plane as the zeros of the scaled boundary determinant
+/// (frobenius_boundary.hpp).
 ///
 ///  1. Scan: a grid in Omega `scan_fraction` of the asymptotic (WKB) mode spacing apart, with the
 ///     series cut coarser (only signs are needed). A sign change brackets a root; a local minimum
@@ -20,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "solvers/frobenius/frobenius_boundary.hpp"
 #include "solvers/common/work_meter.hpp"
+#include "solvers/frobenius/frobenius_boundary.hpp"
 
 namespace catena::internal {
 
@@ -63,14 +64,21 @@ double wkb_mode_spacing(const PlaneSetup& setup);
 /// The `count` lowest roots of the scaled boundary determinant of `setup` (fewer when the scan
 /// reaches (3 count + 20) mode spacings first), ascending. A `meter` is told each root found and
 /// may stop the refinement early (fewer roots, the lowest ones).
-PlaneRoots find_frequencies(const PlaneSetup& setup, int count, const RootSettings& settings,
+PlaneRoots find_frequencies(const PlaneSetup& setup,
+                            int count,
+                            const RootSettings& settings,
                             WorkMeter* meter = nullptr);
 
 /// Root of f in [lo, hi] (f(lo) f(hi) < 0) by Illinois regula falsi, bisecting every fourth step
 /// so that the bracket shrinks at least geometrically. Stops when hi - lo <= relative_tolerance
 /// |hi| (or after 200 steps); `iterations` receives the steps taken.
 template <class F>
-double refine_root(F&& f, double lo, double hi, double flo, double fhi, double relative_tolerance,
+double refine_root(F&& f,
+                   double lo,
+                   double hi,
+                   double flo,
+                   double fhi,
+                   double relative_tolerance,
                    int& iterations) {
   int side = 0;
   for (iterations = 0; iterations < 200; ++iterations) {

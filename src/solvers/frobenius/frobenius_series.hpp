@@ -5,7 +5,8 @@
 ///
 ///     sum_{k=0}^{n} p_k(x) y^{(k)}(x) = 0,      p_k(x) = sum_j p_{k,j} x^j,
 ///
-/// used by the `frobenius` solver (Gale 1976, sec. II.4; docs/reference/references.md) but independent of it.
+/// used by the `frobenius` solver (Gale 1976, sec. II.4; docs/reference/references.md) but
+/// independent of it.
 ///
 /// About a regular singular (or ordinary) point x = 0, substituting y = sum_m a_m x^{m+r} and
 /// collecting the power x^{N + r + d_min} gives, with the shift polynomials
@@ -25,6 +26,7 @@
 /// Everything is templated on the real type (double, long double, Boost.Multiprecision) so that a
 /// caller can re-run in extended precision when it detects cancellation.
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -34,8 +36,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <Eigen/Eigenvalues>
 
 namespace catena::internal {
 
@@ -105,7 +105,8 @@ class ShiftTable {
           d_min_ = std::min(d_min_, j - k);
           d_max = std::max(d_max, j - k);
         }
-    if (d_min_ == std::numeric_limits<int>::max()) throw std::invalid_argument("ODE is identically zero");
+    if (d_min_ == std::numeric_limits<int>::max())
+      throw std::invalid_argument("ODE is identically zero");
     width_ = d_max - d_min_ + 1;
     coefficient_.assign(static_cast<std::size_t>(width_ * (order_ + 1)), Real(0));
     for (int k = 0; k <= order_; ++k)
@@ -143,7 +144,8 @@ class ShiftTable {
     std::vector<double> result(order_ + 1, 0.0);
     std::vector<double> falling{1.0};  // r (r-1) ... (r-k+1), low to high
     for (int k = 0; k <= order_; ++k) {
-      for (std::size_t i = 0; i < falling.size(); ++i) result[i] += static_cast<double>(at(0, k)) * falling[i];
+      for (std::size_t i = 0; i < falling.size(); ++i)
+        result[i] += static_cast<double>(at(0, k)) * falling[i];
       std::vector<double> next(falling.size() + 1, 0.0);
       for (std::size_t i = 0; i < falling.size(); ++i) {
         next[i + 1] += falling[i];
@@ -156,7 +158,9 @@ class ShiftTable {
 
  private:
   Real& at(int e, int k) { return coefficient_[static_cast<std::size_t>(e * (order_ + 1) + k)]; }
-  const Real& at(int e, int k) const { return coefficient_[static_cast<std::size_t>(e * (order_ + 1) + k)]; }
+  const Real& at(int e, int k) const {
+    return coefficient_[static_cast<std::size_t>(e * (order_ + 1) + k)];
+  }
   int order_;
   int d_min_;
   int width_;
@@ -164,16 +168,17 @@ class ShiftTable {
   std::vector<int> active_;
 };
 
-/// Real indicial roots about x = 0, ascending; snapped to the nearest multiple of 1/2^20 when within
-/// 1e-9 of it (roots of the indicial polynomial of an integer-coefficient ODE are usually rational).
-/// Throws std::domain_error for complex roots or an irregular point.
+/// Real indicial roots about x = 0, ascending; snapped to the nearest multiple of 1/2^20 when
+/// within 1e-9 of it (roots of the indicial polynomial of an integer-coefficient ODE are usually
+/// rational). Throws std::domain_error for complex roots or an irregular point.
 template <class Real>
 std::vector<double> indicial_roots(const PolynomialOde<Real>& ode) {
   ShiftTable<Real> table(ode);
   if (!table.is_regular()) throw std::domain_error("x = 0 is an irregular singular point");
   std::vector<double> roots;
   for (const auto& z : polynomial_roots(table.indicial_polynomial())) {
-    if (std::abs(z.imag()) > 1e-8 * (1.0 + std::abs(z))) throw std::domain_error("complex indicial root");
+    if (std::abs(z.imag()) > 1e-8 * (1.0 + std::abs(z)))
+      throw std::domain_error("complex indicial root");
     double r = z.real();
     const double snapped = std::round(r * 1048576.0) / 1048576.0;
     if (std::abs(r - snapped) < 1e-9) r = snapped;
@@ -212,7 +217,8 @@ bool is_resonant_index(const ShiftTable<Real>& table, const Real& lead, const Re
   Real scale = abs(table.q(0, nu + Real(1)));
   const bool tiny_polynomial = scale < Real(1);
   if (tiny_polynomial)
-    for (int k = 2; k <= table.order(); ++k) scale = std::max(scale, Real(abs(table.q(0, nu + Real(k)))));
+    for (int k = 2; k <= table.order(); ++k)
+      scale = std::max(scale, Real(abs(table.q(0, nu + Real(k)))));
   return abs(lead) <= Real(1e-9) * (tiny_polynomial ? std::min(scale, Real(1)) : scale + Real(1));
 }
 
@@ -220,7 +226,9 @@ bool is_resonant_index(const ShiftTable<Real>& table, const Real& lead, const Re
 /// indices N where Q_{d_min}(N + r) = 0, a[N] = `resonant_value(N)`, default 0), up to index
 /// `num_terms - 1`. Throws std::domain_error when a resonance carries a logarithm.
 template <class Real>
-FrobeniusSeries<Real> frobenius_series(const ShiftTable<Real>& table, const Real& r, int num_terms,
+FrobeniusSeries<Real> frobenius_series(const ShiftTable<Real>& table,
+                                       const Real& r,
+                                       int num_terms,
                                        const std::vector<Real>& initial = {Real(1)}) {
   using std::abs;
   FrobeniusSeries<Real> series;
@@ -239,8 +247,9 @@ FrobeniusSeries<Real> frobenius_series(const ShiftTable<Real>& table, const Real
       // Resonance: free coefficient if the right side vanishes.
       if (abs(rhs) > Real(1e-8) * (scale + Real(1e-300)) && abs(rhs) > Real(1e-12))
         throw std::domain_error("logarithmic solution at resonant index " + std::to_string(N));
-      series.a[static_cast<std::size_t>(N)] =
-          static_cast<std::size_t>(N) < initial.size() ? initial[static_cast<std::size_t>(N)] : Real(0);
+      series.a[static_cast<std::size_t>(N)] = static_cast<std::size_t>(N) < initial.size()
+                                                  ? initial[static_cast<std::size_t>(N)]
+                                                  : Real(0);
     } else {
       series.a[static_cast<std::size_t>(N)] = rhs / lead;
     }
@@ -258,11 +267,16 @@ enum class SeriesErrors { Tracked, Skipped };
 /// truncation estimate from the last `tail` terms assuming a geometric tail of ratio `ratio` =
 /// |x| / radius (< 1) unless `errors` is Skipped (largest_term and truncation then stay 0).
 template <class Real>
-SeriesValue<Real> evaluate_series(const std::vector<Real>& a, const Real& r, const Real& x, int max_derivative,
-                                  const Real& ratio, SeriesErrors errors = SeriesErrors::Tracked) {
+SeriesValue<Real> evaluate_series(const std::vector<Real>& a,
+                                  const Real& r,
+                                  const Real& x,
+                                  int max_derivative,
+                                  const Real& ratio,
+                                  SeriesErrors errors = SeriesErrors::Tracked) {
   using std::abs;
   using std::pow;
-  if (max_derivative < 0 || max_derivative > 3) throw std::domain_error("evaluate_series: derivatives 0..3 only");
+  if (max_derivative < 0 || max_derivative > 3)
+    throw std::domain_error("evaluate_series: derivatives 0..3 only");
   SeriesValue<Real> value;
   const bool tracked = errors == SeriesErrors::Tracked;
   const std::size_t K1 = static_cast<std::size_t>(max_derivative + 1);
@@ -307,7 +321,9 @@ SeriesValue<Real> evaluate_series(const std::vector<Real>& a, const Real& r, con
       Real term = product;
       if (at_origin) {
         const Real power = nu - Real(k);
-        term = power == Real(0) ? product : (power > Real(0) ? Real(0) : std::numeric_limits<Real>::infinity());
+        term = power == Real(0)
+                   ? product
+                   : (power > Real(0) ? Real(0) : std::numeric_limits<Real>::infinity());
       }
       const std::size_t kk = static_cast<std::size_t>(k);
       value.derivative[kk] += term;
@@ -326,14 +342,18 @@ SeriesValue<Real> evaluate_series(const std::vector<Real>& a, const Real& r, con
   if (!tracked) return value;
   for (int k = 0; k <= K; ++k)
     value.truncation[static_cast<std::size_t>(k)] =
-        ratio < Real(1) ? last[static_cast<std::size_t>(k)] * ratio / (Real(1) - ratio) : std::numeric_limits<Real>::infinity();
+        ratio < Real(1) ? last[static_cast<std::size_t>(k)] * ratio / (Real(1) - ratio)
+                        : std::numeric_limits<Real>::infinity();
   return value;
 }
 
 /// evaluate_series for a FrobeniusSeries (its coefficients and exponent).
 template <class Real>
-SeriesValue<Real> evaluate_series(const FrobeniusSeries<Real>& series, const Real& x, int max_derivative,
-                                  const Real& ratio, SeriesErrors errors = SeriesErrors::Tracked) {
+SeriesValue<Real> evaluate_series(const FrobeniusSeries<Real>& series,
+                                  const Real& x,
+                                  int max_derivative,
+                                  const Real& ratio,
+                                  SeriesErrors errors = SeriesErrors::Tracked) {
   return evaluate_series(series.a, series.r, x, max_derivative, ratio, errors);
 }
 
@@ -342,8 +362,12 @@ SeriesValue<Real> evaluate_series(const FrobeniusSeries<Real>& series, const Rea
 /// coefficients are generated one at a time (the recurrence of frobenius_series) up to
 /// `max_terms`. Returns the series and sets `converged`.
 template <class Real>
-FrobeniusSeries<Real> adaptive_series(const ShiftTable<Real>& table, const Real& r, const Real& rho,
-                                      double tolerance, int max_terms, bool& converged,
+FrobeniusSeries<Real> adaptive_series(const ShiftTable<Real>& table,
+                                      const Real& r,
+                                      const Real& rho,
+                                      double tolerance,
+                                      int max_terms,
+                                      bool& converged,
                                       const std::vector<Real>& initial = {Real(1)}) {
   using std::abs;
   FrobeniusSeries<Real> series;
@@ -367,7 +391,8 @@ FrobeniusSeries<Real> adaptive_series(const ShiftTable<Real>& table, const Real&
     if (is_resonant_index(table, lead, Real(N) + r)) {
       if (abs(rhs) > Real(1e-8) * (scale + Real(1e-300)) && abs(rhs) > Real(1e-12))
         throw std::domain_error("logarithmic solution at resonant index " + std::to_string(N));
-      value = static_cast<std::size_t>(N) < initial.size() ? initial[static_cast<std::size_t>(N)] : Real(0);
+      value = static_cast<std::size_t>(N) < initial.size() ? initial[static_cast<std::size_t>(N)]
+                                                           : Real(0);
     } else {
       value = rhs / lead;
     }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The `frobenius` solver: Gale's power series for the inextensible catenary
-// (docs/explanation/methods/frobenius.md). This file holds the options, the applicability rule and the
-// numerics class that ties the parts together; the parts live in src/solvers/frobenius/:
+// (docs/explanation/methods/frobenius.md). This file holds the options, the applicability rule and
+// the numerics class that ties the parts together; the parts live in src/solvers/frobenius/:
 //   frobenius_series.hpp, frobenius_catenary.hpp  the series engine and the catenary's basis
 //   frobenius_boundary.*                          the scaled boundary matrix and determinant
 //   frobenius_root_scan.*                         the frequencies (scan, refinement, correction)
@@ -10,23 +10,23 @@
 //   frobenius_forced.*                            the forced response
 #include "catena/solvers/frobenius_solver.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
 
-#include <fmt/format.h>
-
 #include "catena/core/error.hpp"
-#include "solvers/frobenius/frobenius_conjugate_points.hpp"
-#include "solvers/frobenius/frobenius_fields.hpp"
-#include "solvers/frobenius/frobenius_forced.hpp"
-#include "solvers/frobenius/frobenius_root_scan.hpp"
 #include "solvers/common/knob_table.hpp"
+#include "solvers/common/line_applicability.hpp"
 #include "solvers/common/mode_tools.hpp"
 #include "solvers/common/solver_driver.hpp"
 #include "solvers/common/solver_entries.hpp"
 #include "solvers/common/work_meter.hpp"
-#include "solvers/common/line_applicability.hpp"
+#include "solvers/frobenius/frobenius_conjugate_points.hpp"
+#include "solvers/frobenius/frobenius_fields.hpp"
+#include "solvers/frobenius/frobenius_forced.hpp"
+#include "solvers/frobenius/frobenius_root_scan.hpp"
 
 namespace catena {
 
@@ -38,7 +38,8 @@ const KnobTable<FrobeniusSolverOptions>& frobenius_knobs() {
       "frobenius",
       {real_knob("tolerance", &O::tolerance, Range::closed(1e-15, 1e-3),
                  "target relative accuracy of each frequency [-]"),
-       integer_knob("max_terms", &O::max_terms, Range::closed(8, 5000), "cap on the terms of one expansion"),
+       integer_knob("max_terms", &O::max_terms, Range::closed(8, 5000),
+                    "cap on the terms of one expansion"),
        real_knob("step_ratio", &O::step_ratio, Range::closed(0.1, 0.8),
                  "expansion-centre spacing as a fraction of the radius of convergence"),
        real_knob("scan_fraction", &O::scan_fraction, Range::closed(0.01, 0.5),
@@ -52,13 +53,17 @@ const KnobTable<FrobeniusSolverOptions>& frobenius_knobs() {
 
 void FrobeniusSolverOptions::validate() const { internal::frobenius_knobs().validate(*this); }
 
-std::optional<std::string> frobenius_not_applicable_reason(const Problem& problem, const DimensionlessGroups& groups) {
+std::optional<std::string> frobenius_not_applicable_reason(const Problem& problem,
+                                                           const DimensionlessGroups& groups) {
   if (!problem.cable.is_inextensible())
-    return fmt::format("the frobenius solver models an inextensible cable (EA = inf, Gale 1976); this cable has "
-                       "EA = {:f} N",
-                       problem.cable.axial_stiffness_n);
+    return fmt::format(
+        "the frobenius solver models an inextensible cable (EA = inf, Gale 1976); this cable has "
+        "EA = {:f} N",
+        problem.cable.axial_stiffness_n);
   if (!groups.has_apex_parameterization || !(groups.catenary_parameter_m > 0.0))
-    return std::string("the frobenius solver needs a catenary with H > 0 (Gale's parameter a = H/W0 is undefined)");
+    return std::string(
+        "the frobenius solver needs a catenary with H > 0 (Gale's parameter a = H/W0 is "
+        "undefined)");
   if (!(problem.cable.weight_n_per_m > 0.0))
     return std::string("the frobenius solver needs a positive weight W0 (Gale's catenary)");
   return std::nullopt;
@@ -72,7 +77,8 @@ FieldStations field_stations(const StaticSolution& statics, const Vector& s_m) {
   FieldStations stations;
   stations.s_m = s_m;
   const double H = statics.horizontal_force_n();
-  for (Index i = 0; i < s_m.size(); ++i) stations.sigma.push_back(statics.vertical_force_n(s_m(i)) / H);
+  for (Index i = 0; i < s_m.size(); ++i)
+    stations.sigma.push_back(statics.vertical_force_n(s_m(i)) / H);
   return stations;
 }
 
@@ -83,8 +89,10 @@ class FrobeniusNumerics final : public SolverNumerics {
       : context_(context), options_(options) {}
 
   std::optional<std::string> not_applicable() const override {
-    if (auto reason = uniform_cable_only(context_.problem, "the Frobenius series of the catenary")) return reason;
-    if (auto reason = no_seabed_contact(context_.statics, "the Frobenius series of the catenary")) return reason;
+    if (auto reason = uniform_cable_only(context_.problem, "the Frobenius series of the catenary"))
+      return reason;
+    if (auto reason = no_seabed_contact(context_.statics, "the Frobenius series of the catenary"))
+      return reason;
     return frobenius_not_applicable_reason(context_.problem, context_.groups);
   }
   void describe(SolverSummary& summary) const override;
@@ -108,11 +116,11 @@ class FrobeniusNumerics final : public SolverNumerics {
 };
 
 void FrobeniusNumerics::describe(SolverSummary& summary) const {
-  summary.resolution = fmt::format("tolerance {:g}, max_terms {}, step_ratio {:g}, scan_fraction {:g}, {}",
-                                   options_.tolerance, options_.max_terms, options_.step_ratio,
-                                   options_.scan_fraction,
-                                   options_.extended_precision ? "long double / quad when double loses digits"
-                                                               : "double precision only");
+  summary.resolution = fmt::format(
+      "tolerance {:g}, max_terms {}, step_ratio {:g}, scan_fraction {:g}, {}", options_.tolerance,
+      options_.max_terms, options_.step_ratio, options_.scan_fraction,
+      options_.extended_precision ? "long double / quad when double loses digits"
+                                  : "double precision only");
 }
 
 std::optional<Outcome> FrobeniusNumerics::prepare() {
@@ -144,7 +152,8 @@ ModalResult FrobeniusNumerics::modes(Plane plane, int count) {
   WorkMeter meter(context_, "frobenius", std::string(to_string(plane)) + " modes", count);
   PlaneRoots found = find_frequencies(setup, count, root_settings(), &meter);
   ModalResult result;
-  if (inplane) result.proved_count_below_top = confirm_inplane_count(setup, count, root_settings(), found);
+  if (inplane)
+    result.proved_count_below_top = confirm_inplane_count(setup, count, root_settings(), found);
   const SolveRequest& request = context_.request;
   const ModeFieldRequest fields{request.shapes, request.tension, &stations_, &dense_};
   int sturm_ok = 0;
@@ -155,13 +164,15 @@ ModalResult FrobeniusNumerics::modes(Plane plane, int count) {
     set_mode_frequency(mode, root.omega * units_.frequency_rad_s, context_.groups);
     mode.relative_error_estimate = root.relative_error;
     // Sturm: the n-th out-of-plane mode has n - 1 interior nodes (checked on the stations).
-    if (add_mode_fields(mode, setup, root.omega, root.precision, fields, units_) == mode.index - 1) ++sturm_ok;
+    if (add_mode_fields(mode, setup, root.omega, root.precision, fields, units_) == mode.index - 1)
+      ++sturm_ok;
     result.modes.push_back(mode);
   }
   if (!inplane && sturm_ok == static_cast<int>(found.roots.size()) && !found.roots.empty()) {
     result.proved_count_below_top = static_cast<int>(found.roots.size());
     found.notes.push_back(fmt::format(
-        "mode count checked by Sturm oscillation: mode n has n - 1 interior nodes for n = 1..{}", found.roots.size()));
+        "mode count checked by Sturm oscillation: mode n has n - 1 interior nodes for n = 1..{}",
+        found.roots.size()));
   }
   summarise_plane(plane, count, found, result);
   mark_time_limit(meter, result.summary);
@@ -171,7 +182,10 @@ ModalResult FrobeniusNumerics::modes(Plane plane, int count) {
 // Converged when every root was found, no series hit max_terms and every root's error estimate
 // is within ten times the tolerance (the estimate is the last a-posteriori correction, itself
 // conservative).
-void FrobeniusNumerics::summarise_plane(Plane plane, int count, const PlaneRoots& found, ModalResult& result) const {
+void FrobeniusNumerics::summarise_plane(Plane plane,
+                                        int count,
+                                        const PlaneRoots& found,
+                                        ModalResult& result) const {
   double worst = 0.0;
   Precision precision = Precision::Double;
   for (const FoundRoot& root : found.roots) {
@@ -181,28 +195,35 @@ void FrobeniusNumerics::summarise_plane(Plane plane, int count, const PlaneRoots
   const bool converged = static_cast<int>(found.roots.size()) == count && !found.work.truncated &&
                          worst <= std::max(options_.tolerance, 1e-14) * 10.0;
   SolverSummary& summary = result.summary;
-  summary.accuracy_target = std::max(options_.tolerance, 1e-14) * 10.0;  // the skeleton names misses
+  summary.accuracy_target =
+      std::max(options_.tolerance, 1e-14) * 10.0;  // the skeleton names misses
   summary.termination = converged ? Termination::Converged
-                                  : (found.roots.empty() ? Termination::NumericalFailure : Termination::NoConvergence);
-  summary.message = fmt::format("{}: {} of {} {} modes, max relative error estimate {:g} {} {:g}{}",
-                                converged ? "Converged" : "Not converged", found.roots.size(), count, to_string(plane),
-                                worst, converged ? "<=" : "vs", options_.tolerance * 10.0,
-                                found.work.truncated ? fmt::format("; some series hit max_terms = {}", options_.max_terms)
-                                                     : std::string());
-  summary.resolution = fmt::format("tolerance {:g}, up to {} series terms over {} expansion centres, highest precision {}",
-                                   options_.tolerance, found.work.terms, found.work.centres, precision_name(precision));
+                                  : (found.roots.empty() ? Termination::NumericalFailure
+                                                         : Termination::NoConvergence);
+  summary.message = fmt::format(
+      "{}: {} of {} {} modes, max relative error estimate {:g} {} {:g}{}",
+      converged ? "Converged" : "Not converged", found.roots.size(), count, to_string(plane), worst,
+      converged ? "<=" : "vs", options_.tolerance * 10.0,
+      found.work.truncated ? fmt::format("; some series hit max_terms = {}", options_.max_terms)
+                           : std::string());
+  summary.resolution = fmt::format(
+      "tolerance {:g}, up to {} series terms over {} expansion centres, highest precision {}",
+      options_.tolerance, found.work.terms, found.work.centres, precision_name(precision));
   summary.iterations = found.work.terms;
   summary.operations = found.work.determinant_evaluations;
   summary.max_error_estimate = worst;
   summary.notes = found.notes;
-  summary.notes.push_back(fmt::format("root scan: {} local minima of |det| searched for hidden close pairs, {} found",
-                                      found.minima_checked, found.hidden_pairs_found));
+  summary.notes.push_back(
+      fmt::format("root scan: {} local minima of |det| searched for hidden close pairs, {} found",
+                  found.minima_checked, found.hidden_pairs_found));
   summary.warnings = found.warnings;
   if (precision != Precision::Double)
-    summary.warnings.push_back(fmt::format(
-        "the double-precision roots needed corrections above tolerance/10 from the finer-series re-evaluation in {} "
-        "(truncation carried through the matched expansions and/or rounding); the returned roots include them",
-        precision_name(precision)));
+    summary.warnings.push_back(
+        fmt::format("the double-precision roots needed corrections above tolerance/10 from the "
+                    "finer-series re-evaluation in {} "
+                    "(truncation carried through the matched expansions and/or rounding); the "
+                    "returned roots include them",
+                    precision_name(precision)));
 }
 
 // A forcing frequency at a natural frequency has no finite response: that response carries the
@@ -211,27 +232,35 @@ void FrobeniusNumerics::summarise_plane(Plane plane, int count, const PlaneRoots
 ForcedOutcome FrobeniusNumerics::forced(const ForcedRequest& request) {
   ForcedOutcome outcome;
   ForcedWork work;
-  WorkMeter meter(context_, "frobenius", "forced frequencies", static_cast<long>(request.omegas_rad_s.size()));
+  WorkMeter meter(context_, "frobenius", "forced frequencies",
+                  static_cast<long>(request.omegas_rad_s.size()));
   outcome.responses = frobenius_forced_responses(base_, request, stations_, units_, work, &meter);
   std::size_t at_resonance = 0, declined = 0;
   double worst = 0.0;
   for (const ForcedResponse& r : outcome.responses) {
-    if (r.at_resonance) ++at_resonance;
-    else if (!r.diagnostic.empty()) ++declined;
+    if (r.at_resonance)
+      ++at_resonance;
+    else if (!r.diagnostic.empty())
+      ++declined;
     worst = std::max(worst, r.relative_error_estimate);
     if (!r.diagnostic.empty()) outcome.summary.warnings.push_back(r.diagnostic);
   }
   SolverSummary& summary = outcome.summary;
-  summary.termination = declined == 0 ? Termination::Converged
+  summary.termination = declined == 0                         ? Termination::Converged
                         : declined < outcome.responses.size() ? Termination::NoConvergence
                                                               : Termination::NumericalFailure;
-  summary.message = fmt::format("{} of {} forced frequencies", outcome.responses.size() - at_resonance - declined,
-                                request.omegas_rad_s.size());
-  if (at_resonance > 0) summary.message += fmt::format(" ({} at a natural frequency: no finite response)", at_resonance);
-  if (declined > 0) summary.message += fmt::format(" ({} declined: beyond the series' resolution)", declined);
-  summary.resolution = fmt::format("up to {} series terms over {} expansion centres (at most {:g} rad of "
-                                   "phase per expansion), long double",
-                                   work.terms, work.centres, kForcedPhasePerExpansion);
+  summary.message =
+      fmt::format("{} of {} forced frequencies", outcome.responses.size() - at_resonance - declined,
+                  request.omegas_rad_s.size());
+  if (at_resonance > 0)
+    summary.message +=
+        fmt::format(" ({} at a natural frequency: no finite response)", at_resonance);
+  if (declined > 0)
+    summary.message += fmt::format(" ({} declined: beyond the series' resolution)", declined);
+  summary.resolution = fmt::format(
+      "up to {} series terms over {} expansion centres (at most {:g} rad of "
+      "phase per expansion), long double",
+      work.terms, work.centres, kForcedPhasePerExpansion);
   summary.notes.push_back(summary.resolution);
   summary.operations = work.evaluations;
   summary.max_error_estimate = worst > 0.0 ? worst : -1.0;
@@ -243,7 +272,8 @@ ForcedOutcome FrobeniusNumerics::forced(const ForcedRequest& request) {
 
 SolverEntry make_frobenius_entry() {
   return make_solver_entry(
-      "Gale's power series for the inextensible catenary (Gale 1976), chained expansions to any sag, adaptive "
+      "Gale's power series for the inextensible catenary (Gale 1976), chained expansions to any "
+      "sag, adaptive "
       "terms, extended precision when needed",
       frobenius_knobs(), [](const SolveContext& context, const FrobeniusSolverOptions& options) {
         return std::make_unique<FrobeniusNumerics>(context, options);
@@ -252,9 +282,13 @@ SolverEntry make_frobenius_entry() {
 
 }  // namespace internal
 
-SolverOutput solve_frobenius(const Problem& problem, const StaticSolution& statics, const DimensionlessGroups& groups,
-                             const SolveRequest& request, const FrobeniusSolverOptions& options) {
-  return internal::solve_with<internal::FrobeniusNumerics>("frobenius", {problem, statics, groups, request}, options);
+SolverOutput solve_frobenius(const Problem& problem,
+                             const StaticSolution& statics,
+                             const DimensionlessGroups& groups,
+                             const SolveRequest& request,
+                             const FrobeniusSolverOptions& options) {
+  return internal::solve_with<internal::FrobeniusNumerics>(
+      "frobenius", {problem, statics, groups, request}, options);
 }
 
 }  // namespace catena

@@ -19,7 +19,9 @@ struct BlockContent {
   double phase = 1.0;                       // M_pp
 };
 
-BlockContent& content(SUNLinearSolver solver) { return *static_cast<BlockContent*>(solver->content); }
+BlockContent& content(SUNLinearSolver solver) {
+  return *static_cast<BlockContent*>(solver->content);
+}
 
 // The square block of the dense matrix starting at (row, column).
 Eigen::MatrixXd block_of(SUNMatrix matrix, int row, int column, int size) {

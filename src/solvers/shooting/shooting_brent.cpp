@@ -15,8 +15,16 @@ constexpr int kMaxZeroDepth = 8;
 
 // The step of one iteration from b toward the root (inverse quadratic or secant when it is safe
 // and shrinks fast enough, else bisection); updates the last two step lengths d and e.
-void choose_step(double a, double b, double c, double fa, double fb, double fc, double tol1,
-                 double xm, double& d, double& e) {
+void choose_step(double a,
+                 double b,
+                 double c,
+                 double fa,
+                 double fb,
+                 double fc,
+                 double tol1,
+                 double xm,
+                 double& d,
+                 double& e) {
   if (std::abs(e) >= tol1 && std::abs(fa) > std::abs(fb)) {
     double p, q;
     const double s = fb / fa;
@@ -40,9 +48,13 @@ void choose_step(double a, double b, double c, double fa, double fb, double fc, 
   e = d;
 }
 
-std::pair<double, double> brent_zero_at_depth(const std::function<double(double)>& f, double a,
-                                              double b, double fa, double fb,
-                                              double relative_tolerance, int depth);
+std::pair<double, double> brent_zero_at_depth(const std::function<double(double)>& f,
+                                              double a,
+                                              double b,
+                                              double fa,
+                                              double fb,
+                                              double relative_tolerance,
+                                              int depth);
 
 bool same_sign(double x, double y) { return (x > 0.0 && y > 0.0) || (x < 0.0 && y < 0.0); }
 
@@ -53,9 +65,14 @@ bool same_sign(double x, double y) { return (x > 0.0 && y > 0.0) || (x < 0.0 && 
 // spurious (the stress-eps scene at eps = 1e-5 meets an end determinant of exactly 0 about 1e-3
 // away from the root) and the search goes on in the strict bracket it leaves. Probes that are
 // zero too are moved out tenfold; when that leaves (a, c), the bracket is [a, c] as it stands.
-std::pair<double, double> resolve_exact_zero(const std::function<double(double)>& f, double a,
-                                             double fa, double b, double c, double fc,
-                                             double relative_tolerance, int depth) {
+std::pair<double, double> resolve_exact_zero(const std::function<double(double)>& f,
+                                             double a,
+                                             double fa,
+                                             double b,
+                                             double c,
+                                             double fc,
+                                             double relative_tolerance,
+                                             int depth) {
   const double toward_c = c > a ? 1.0 : -1.0;
   for (double delta = 0.5 * relative_tolerance * std::abs(b);
        delta < std::abs(c - a) && depth < kMaxZeroDepth; delta *= 10.0) {
@@ -63,15 +80,21 @@ std::pair<double, double> resolve_exact_zero(const std::function<double(double)>
     if ((qa - a) * toward_c <= 0.0 || (c - qc) * toward_c <= 0.0) break;
     const double fqa = f(qa), fqc = f(qc);
     if (same_sign(fqa, fa) && same_sign(fqc, fc)) return {std::min(qa, qc), std::max(qa, qc)};
-    if (same_sign(fqc, fa)) return brent_zero_at_depth(f, qc, c, fqc, fc, relative_tolerance, depth + 1);
-    if (same_sign(fqa, fc)) return brent_zero_at_depth(f, a, qa, fa, fqa, relative_tolerance, depth + 1);
+    if (same_sign(fqc, fa))
+      return brent_zero_at_depth(f, qc, c, fqc, fc, relative_tolerance, depth + 1);
+    if (same_sign(fqa, fc))
+      return brent_zero_at_depth(f, a, qa, fa, fqa, relative_tolerance, depth + 1);
   }
   return {std::min(a, c), std::max(a, c)};
 }
 
-std::pair<double, double> brent_zero_at_depth(const std::function<double(double)>& f, double a,
-                                              double b, double fa, double fb,
-                                              double relative_tolerance, int depth) {
+std::pair<double, double> brent_zero_at_depth(const std::function<double(double)>& f,
+                                              double a,
+                                              double b,
+                                              double fa,
+                                              double fb,
+                                              double relative_tolerance,
+                                              int depth) {
   double c = a, fc = fa;
   double d = b - a, e = d;
   for (int iteration = 0; iteration < 300; ++iteration) {
@@ -105,8 +128,12 @@ std::pair<double, double> brent_zero_at_depth(const std::function<double(double)
 
 }  // namespace
 
-std::pair<double, double> brent_zero(const std::function<double(double)>& f, double a, double b,
-                                     double fa, double fb, double relative_tolerance) {
+std::pair<double, double> brent_zero(const std::function<double(double)>& f,
+                                     double a,
+                                     double b,
+                                     double fa,
+                                     double fb,
+                                     double relative_tolerance) {
   // An end given exactly at the root is the root (a shot accurate to rounding can land there).
   if (fa == 0.0) return {a, a};
   if (fb == 0.0) return {b, b};

@@ -17,7 +17,11 @@ namespace catena::internal {
 /// bracket, a probe with the other side's sign continues the search in the strict bracket it
 /// leaves (the zero was spurious). Only when the probes cannot decide (zero too, out to the ends)
 /// is the bracket as it stands returned, wider than the tolerance.
-std::pair<double, double> brent_zero(const std::function<double(double)>& f, double a, double b,
-                                     double fa, double fb, double relative_tolerance);
+std::pair<double, double> brent_zero(const std::function<double(double)>& f,
+                                     double a,
+                                     double b,
+                                     double fa,
+                                     double fb,
+                                     double relative_tolerance);
 
 }  // namespace catena::internal

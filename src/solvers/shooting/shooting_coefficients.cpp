@@ -69,8 +69,9 @@ ShootingCoefficients ShootingCoefficients::from_statics(const StaticSolution& st
     for (const StaticPiece& piece : statics.pieces()) {
       // A line entirely on the seabed ends in an empty suspended piece: nothing to integrate.
       if (statics.has_contact() && !piece.grounded && piece.section.length_m <= 0.0) continue;
-      c.pieces.push_back(piece.grounded ? grounded_piece_of(piece, statics.seabed())
-                                        : piece_of(piece.section, piece.s_begin_m, piece.vertical_begin_n));
+      c.pieces.push_back(piece.grounded
+                             ? grounded_piece_of(piece, statics.seabed())
+                             : piece_of(piece.section, piece.s_begin_m, piece.vertical_begin_n));
     }
     c.pieces.back().s_end = cable.length_m;
     for (const PointAttachment& point : statics.line().points) {
@@ -140,7 +141,8 @@ bool ShootingCoefficients::is_inextensible() const {
 }
 
 bool ShootingCoefficients::has_grounded_piece() const {
-  return std::any_of(pieces.begin(), pieces.end(), [](const ShootingPiece& p) { return p.grounded; });
+  return std::any_of(pieces.begin(), pieces.end(),
+                     [](const ShootingPiece& p) { return p.grounded; });
 }
 
 bool is_straight_inextensible(const ShootingCoefficients& k) {

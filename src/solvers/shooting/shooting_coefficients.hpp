@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The static coefficients the `shooting` solver integrates along s (docs/explanation/methods/shooting.md):
-/// tension, tangent and normal of the elastic catenary in the closed forms of the shared statics,
-/// with the scales that make the shot dimensionless. A general line (docs/explanation/physics.md, "General
-/// lines") is a list of pieces, each a closed-form catenary with its own section, and a list of
-/// point attachments at piece boundaries, where the internal force jumps.
+/// The static coefficients the `shooting` solver integrates along s
+/// (docs/explanation/methods/shooting.md): tension, tangent and normal of the elastic catenary in
+/// the closed forms of the shared statics, with the scales that make the shot dimensionless. A
+/// general line (docs/explanation/physics.md, "General lines") is a list of pieces, each a
+/// closed-form catenary with its own section, and a list of point attachments at piece boundaries,
+/// where the internal force jumps.
 
 #include <vector>
 
@@ -15,23 +16,23 @@
 namespace catena::internal {
 
 /// One piece between consecutive breaks (joints, points, the touchdown point):
-/// V = V_begin + W0 (s - s_begin). A grounded piece (docs/explanation/methods/shooting.md, "Seabed contact")
-/// lies straight along +x on the seabed with V = 0 (W0 = 0: the seabed carries its weight), the
-/// friction tension max(tension_begin + tension_slope (s - s_begin), 0), and the foundation
-/// springs per stretched length of seabed.
+/// V = V_begin + W0 (s - s_begin). A grounded piece (docs/explanation/methods/shooting.md, "Seabed
+/// contact") lies straight along +x on the seabed with V = 0 (W0 = 0: the seabed carries its
+/// weight), the friction tension max(tension_begin + tension_slope (s - s_begin), 0), and the
+/// foundation springs per stretched length of seabed.
 struct ShootingPiece {
-  double s_begin = 0.0;     ///< unstretched arc length of the start [m]
-  double s_end = 1.0;       ///< unstretched arc length of the end [m]
-  double V_begin = 0.0;     ///< vertical force just after the start [N]
-  double W0 = 0.0;          ///< weight per unstretched length [N/m]
-  double compliance = 0.0;  ///< 1/EA [1/N], 0 when inextensible
-  double m = 1.0;           ///< mass [kg/m]
-  double M = 1.0;           ///< normal mass m + ma [kg/m]
-  bool grounded = false;              ///< resting on the seabed
-  double tension_begin = 0.0;         ///< grounded: tension at the start before clipping [N]
-  double tension_slope = 0.0;         ///< grounded: C_B w [N/m]
-  double foundation_normal = 0.0;     ///< grounded: k_s, vertical [N/m per unstretched m]
-  double foundation_tangential = 0.0; ///< grounded: k_t, along and across [N/m per unstretched m]
+  double s_begin = 0.0;                ///< unstretched arc length of the start [m]
+  double s_end = 1.0;                  ///< unstretched arc length of the end [m]
+  double V_begin = 0.0;                ///< vertical force just after the start [N]
+  double W0 = 0.0;                     ///< weight per unstretched length [N/m]
+  double compliance = 0.0;             ///< 1/EA [1/N], 0 when inextensible
+  double m = 1.0;                      ///< mass [kg/m]
+  double M = 1.0;                      ///< normal mass m + ma [kg/m]
+  bool grounded = false;               ///< resting on the seabed
+  double tension_begin = 0.0;          ///< grounded: tension at the start before clipping [N]
+  double tension_slope = 0.0;          ///< grounded: C_B w [N/m]
+  double foundation_normal = 0.0;      ///< grounded: k_s, vertical [N/m per unstretched m]
+  double foundation_tangential = 0.0;  ///< grounded: k_t, along and across [N/m per unstretched m]
 
   /// T(s) [N] for the horizontal force H of the suspended part.
   double tension(double H, double s) const;
@@ -42,11 +43,11 @@ struct ShootingPiece {
 /// A point attachment: its inertia in the local static directions (t the bisector of the
 /// tangents on both sides, n in plane, out of plane), docs/explanation/physics.md "General lines".
 struct ShootingPoint {
-  double s = 0.0;                    ///< unstretched arc length [m]
-  Vec2 t = Vec2(1.0, 0.0);           ///< bisector of the tangents on both sides
-  double mass_tangential = 0.0;      ///< P + ma_t [kg]
-  double mass_normal = 0.0;          ///< P + ma_n [kg]
-  double mass_outofplane = 0.0;      ///< P + ma_out [kg]
+  double s = 0.0;                ///< unstretched arc length [m]
+  Vec2 t = Vec2(1.0, 0.0);       ///< bisector of the tangents on both sides
+  double mass_tangential = 0.0;  ///< P + ma_t [kg]
+  double mass_normal = 0.0;      ///< P + ma_n [kg]
+  double mass_outofplane = 0.0;  ///< P + ma_out [kg]
 };
 
 /// Static coefficients along the cable, in the closed forms of the shared statics.

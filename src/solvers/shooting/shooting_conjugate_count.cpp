@@ -82,7 +82,8 @@ double frame_phase(const FrameBlock<D>& Phi, const FrameBlock<D>& F) {
 }
 
 template <int D>
-ConjugateCount count_conjugate_points(const FrameBlock<D>& Phi, const FrameBlock<D>& F,
+ConjugateCount count_conjugate_points(const FrameBlock<D>& Phi,
+                                      const FrameBlock<D>& F,
                                       double theta_integrated) {
   ConjugateCount out;
   const FrameBlock<D> G = Phi.transpose() * Phi + F.transpose() * F;
@@ -109,7 +110,11 @@ template Eigen::Matrix<double, 1, 1> unitary_angles<1>(const FrameBlock<1>&, con
 template Eigen::Matrix<double, 2, 1> unitary_angles<2>(const FrameBlock<2>&, const FrameBlock<2>&);
 template double frame_phase<1>(const FrameBlock<1>&, const FrameBlock<1>&);
 template double frame_phase<2>(const FrameBlock<2>&, const FrameBlock<2>&);
-template ConjugateCount count_conjugate_points<1>(const FrameBlock<1>&, const FrameBlock<1>&, double);
-template ConjugateCount count_conjugate_points<2>(const FrameBlock<2>&, const FrameBlock<2>&, double);
+template ConjugateCount count_conjugate_points<1>(const FrameBlock<1>&,
+                                                  const FrameBlock<1>&,
+                                                  double);
+template ConjugateCount count_conjugate_points<2>(const FrameBlock<2>&,
+                                                  const FrameBlock<2>&,
+                                                  double);
 
 }  // namespace catena::internal

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Conjugate-point counting for the `shooting` solver (docs/explanation/methods/shooting.md): from the end
-/// frame [Phi; F] of the principal solutions and the integrated phase theta = arg det(Phi + i F),
-/// the number of conjugate points on (0, L] -- by Morse index theory (Sturm out of plane) the
+/// Conjugate-point counting for the `shooting` solver (docs/explanation/methods/shooting.md): from
+/// the end frame [Phi; F] of the principal solutions and the integrated phase theta = arg det(Phi +
+/// i F), the number of conjugate points on (0, L] -- by Morse index theory (Sturm out of plane) the
 /// number of eigenfrequencies below the trial frequency -- and the end eigen-angles that make the
 /// count a continuous function of the frequency (Atkinson 1964, ch. 10; Pruefer's angle for D = 1).
 ///
@@ -51,7 +51,8 @@ double frame_phase(const FrameBlock<D>& Phi, const FrameBlock<D>& F);
 
 /// Count, eigen-angles, phase defect and normalised determinant of the end frame; D = 1 or 2.
 template <int D>
-ConjugateCount count_conjugate_points(const FrameBlock<D>& Phi, const FrameBlock<D>& F,
+ConjugateCount count_conjugate_points(const FrameBlock<D>& Phi,
+                                      const FrameBlock<D>& F,
                                       double theta_integrated);
 
 /// The count-aware root function of mode n (D = 1: Pruefer's continuous count):

@@ -73,7 +73,9 @@ Drive make_drive(const ShootingCoefficients& k, const ForcedRequest& forced) {
   return drive;
 }
 
-void set_profiles(ForcedResponse& response, const Profile& p, const Vector& stations,
+void set_profiles(ForcedResponse& response,
+                  const Profile& p,
+                  const Vector& stations,
                   bool inplane) {
   response.s_m = stations;
   if (inplane) {
@@ -88,8 +90,11 @@ void set_profiles(ForcedResponse& response, const Profile& p, const Vector& stat
 }
 
 // The response of one shot: the combination of its end basis that meets the drive.
-Profile response_profile(const Shot& shot, const Drive& drive, const ShootingCoefficients& k,
-                         const Vector& stations, bool from_b) {
+Profile response_profile(const Shot& shot,
+                         const Drive& drive,
+                         const ShootingCoefficients& k,
+                         const Vector& stations,
+                         bool from_b) {
   const int D = drive.plane == Plane::InPlane ? 2 : 1;
   const Eigen::MatrixXd phi_end = shot.y_end.topRows(D);
   const Eigen::VectorXd c = phi_end.partialPivLu().solve(drive.d / k.length_m);
@@ -113,9 +118,12 @@ double relative_change(const Profile& a, const Profile& b) {
 }  // namespace
 
 ForcedResponse shooting_forced_response(ShootingIntegrator& integrator,
-                                        const ShootingCoefficients& k, const ForcedRequest& forced,
-                                        double omega, const Vector& stations,
-                                        double relative_tolerance, bool& near_resonance) {
+                                        const ShootingCoefficients& k,
+                                        const ForcedRequest& forced,
+                                        double omega,
+                                        const Vector& stations,
+                                        double relative_tolerance,
+                                        bool& near_resonance) {
   ForcedResponse response;
   response.omega_rad_s = omega;
   const Drive drive = make_drive(k, forced);
@@ -154,16 +162,19 @@ ForcedResponse shooting_forced_response(ShootingIntegrator& integrator,
   return response;
 }
 
-ForcedOutcome shooting_forced_responses(const ShootingCoefficients& k, const ForcedRequest& forced,
-                                        const Vector& stations, const IntegratorSettings& settings,
+ForcedOutcome shooting_forced_responses(const ShootingCoefficients& k,
+                                        const ForcedRequest& forced,
+                                        const Vector& stations,
+                                        const IntegratorSettings& settings,
                                         WorkMeter* meter) {
   ForcedOutcome outcome;
   SolverSummary& summary = outcome.summary;
   const std::size_t asked = forced.omegas_rad_s.size();
   try {
-    const Plane plane = forced.direction == ForcingDirection::OutOfPlane || is_straight_inextensible(k)
-                            ? Plane::OutOfPlane
-                            : Plane::InPlane;
+    const Plane plane =
+        forced.direction == ForcingDirection::OutOfPlane || is_straight_inextensible(k)
+            ? Plane::OutOfPlane
+            : Plane::InPlane;
     ShootingIntegrator integrator(plane, k, settings);
     for (double omega : forced.omegas_rad_s) {
       bool near_resonance = false;

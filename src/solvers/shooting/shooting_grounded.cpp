@@ -16,8 +16,13 @@
 
 namespace catena::internal {
 
-void grounded_coefficients(const ShootingCoefficients& k, const ShootingPiece& p, int dimension,
-                           double omega2, double s, double* b, double* c) {
+void grounded_coefficients(const ShootingCoefficients& k,
+                           const ShootingPiece& p,
+                           int dimension,
+                           double omega2,
+                           double s,
+                           double* b,
+                           double* c) {
   const double foundation_scale = k.length_m * k.length_m / k.t_ref;
   const double b_transverse = k.t_ref * (1.0 / p.tension(k.H, s) + p.compliance);
   const double c_transverse = omega2 * p.M / k.M;
@@ -205,7 +210,9 @@ GroundedFrame GroundedRun::Impl::frame() const {
   return f;
 }
 
-GroundedRun::GroundedRun(const ShootingCoefficients& k, int dimension, std::size_t pieces,
+GroundedRun::GroundedRun(const ShootingCoefficients& k,
+                         int dimension,
+                         std::size_t pieces,
                          long max_steps)
     : impl_(std::make_unique<Impl>(k, dimension, pieces, max_steps)) {}
 

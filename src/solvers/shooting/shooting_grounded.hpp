@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The grounded part of a shot (docs/explanation/methods/shooting.md, "Seabed contact: the grounded run"): the
-/// leading pieces of a line resting on the seabed, shot from the anchor A, integrated in a form
-/// whose cost does not grow with the foundation's stiffness.
+/// The grounded part of a shot (docs/explanation/methods/shooting.md, "Seabed contact: the grounded
+/// run"): the leading pieces of a line resting on the seabed, shot from the anchor A, integrated in
+/// a form whose cost does not grow with the foundation's stiffness.
 ///
 /// On the seabed the cable is straight along +x, so the scaled system (shooting_integrator.hpp)
 /// falls apart into independent scalar directions d (in plane: axial x, then vertical y; out of
@@ -49,8 +49,13 @@ struct GroundedFrame {
 
 /// The direction coefficients of one grounded piece at s (header): b_d and c_d for the scaled
 /// Omega^2 `omega2`; `dimension` 2 (x, y) or 1 (out of plane).
-void grounded_coefficients(const ShootingCoefficients& k, const ShootingPiece& p, int dimension,
-                           double omega2, double s, double* b, double* c);
+void grounded_coefficients(const ShootingCoefficients& k,
+                           const ShootingPiece& p,
+                           int dimension,
+                           double omega2,
+                           double s,
+                           double* b,
+                           double* c);
 
 /// The number of leading pieces the grounded run takes: the grounded pieces from A, none when a
 /// point attachment lies on or at the end of them (its jump couples nothing, but it is left to the

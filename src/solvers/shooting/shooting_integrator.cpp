@@ -182,8 +182,8 @@ Square<D> point_jump(const RhsData& data, const ShootingPoint& point) {
   } else {
     const Vec2 n(-point.t.y(), point.t.x());
     const Vec2 tq = data.to_axial_force * point.t, nq = data.to_axial_force * n;
-    K = scale * (point.mass_tangential * tq * tq.transpose() +
-                 point.mass_normal * nq * nq.transpose());
+    K = scale *
+        (point.mass_tangential * tq * tq.transpose() + point.mass_normal * nq * nq.transpose());
   }
   return K;
 }
@@ -227,7 +227,8 @@ struct ShootingIntegrator::Impl {
     stepper = plain.get();
     const std::size_t run = grounded_run_length(data.coefficients, dimension);
     if (run > 0) {
-      grounded = std::make_unique<GroundedRun>(data.coefficients, dimension, run, settings.max_steps);
+      grounded =
+          std::make_unique<GroundedRun>(data.coefficients, dimension, run, settings.max_steps);
     }
   }
 
@@ -271,7 +272,7 @@ struct ShootingIntegrator::Impl {
   std::unique_ptr<ShotStepper> plain;
   std::unique_ptr<ShotStepper> with_slope;  // made at the first shot that asks for the slope
   ShotStepper* stepper = nullptr;           // the stepper of the current shot
-  std::vector<Break> breaks;  // of the current shot, in the order of integration
+  std::vector<Break> breaks;                // of the current shot, in the order of integration
   std::size_t next_break = 0;
   // The seabed part of a shot from A (shooting_grounded.hpp); null when the line starts off it.
   std::unique_ptr<GroundedRun> grounded;
@@ -286,7 +287,9 @@ struct ShootingIntegrator::Impl {
 // Sets the frequency and the balancing, starts the principal solutions at Phi = 0, F = I and
 // starts the stepper with the tolerances scaled by `tolerance_factor`.
 template <int D>
-void ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor, bool from_b,
+void ShootingIntegrator::Impl::begin_shot(double omega,
+                                          double tolerance_factor,
+                                          bool from_b,
                                           bool slope) {
   grounded_shot = grounded && !from_b;
   // The slope is carried on the general shot only (not through the grounded run), and only where
@@ -328,7 +331,8 @@ void ShootingIntegrator::Impl::begin_shot(double omega, double tolerance_factor,
 
 // Stations passed by the last step (ending at x), from the stepper's interpolant.
 template <int D>
-void ShootingIntegrator::Impl::record_passed_stations(StationRecorder<D>& recorder, double x,
+void ShootingIntegrator::Impl::record_passed_stations(StationRecorder<D>& recorder,
+                                                      double x,
                                                       bool before_x_only) {
   while (recorder.next_at_or_before(x) && !(before_x_only && recorder.next_station() >= x)) {
     const double xs = recorder.next_station();
@@ -373,8 +377,8 @@ void ShootingIntegrator::Impl::cross_break(double x) {
     if (slope_shot) {
       // K is proportional to w^2: S_F -> S_F - K S_Phi - 2 c K Phi (Phi is continuous).
       Eigen::Map<Basis<D>> S(state + 2 * D * D + 1);
-      S.template bottomRows<D>() -= K * S.template topRows<D>() +
-                                    (2.0 * data.slope_scale) * K * Y.template topRows<D>();
+      S.template bottomRows<D>() -=
+          K * S.template topRows<D>() + (2.0 * data.slope_scale) * K * Y.template topRows<D>();
     }
     state[2 * D * D] += apply_jump<D>(Y, K);
   }
@@ -387,7 +391,8 @@ void ShootingIntegrator::Impl::cross_break(double x) {
 // phase is the one whose count formula gives the run's count (the count is the same in every
 // frame: it counts the zeros of det Phi).
 template <int D>
-void ShootingIntegrator::Impl::set_grounded_state(const GroundedFrame& frame, Shot& shot,
+void ShootingIntegrator::Impl::set_grounded_state(const GroundedFrame& frame,
+                                                  Shot& shot,
                                                   Eigen::VectorXd& pushed) {
   constexpr double kLargestLogFactor = 600.0;
   Eigen::VectorXd growth = frame.log_scale - pushed;
@@ -415,7 +420,8 @@ void ShootingIntegrator::Impl::set_grounded_state(const GroundedFrame& frame, Sh
   // seabed, mode 5: estimate 7e-2 for a root right to 1e-13).
   const double from_count = kPi * (D - frame.count) - 0.5 * unitary_angles<D>(Phi, F).sum();
   const double modulo = frame_phase<D>(Phi, F);
-  stepper->state()[2 * D * D] = modulo + 2.0 * kPi * std::round((from_count - modulo) / (2.0 * kPi));
+  stepper->state()[2 * D * D] =
+      modulo + 2.0 * kPi * std::round((from_count - modulo) / (2.0 * kPi));
 }
 
 // The grounded run from x = 0 to its end, recording the stations on it; the stepper restarted
@@ -446,8 +452,9 @@ void ShootingIntegrator::Impl::integrate(Shot& shot, StationRecorder<D>& recorde
   while (x < 1.0) {
     x = stepper->step(stop_time());
     if (++steps_total > settings.max_steps) {
-      throw ShootingFailure(fmt::format("more than {} integration steps (max_steps) at s/L = {:.6g}",
-                                        settings.max_steps, from_b ? 1.0 - x : x));
+      throw ShootingFailure(
+          fmt::format("more than {} integration steps (max_steps) at s/L = {:.6g}",
+                      settings.max_steps, from_b ? 1.0 - x : x));
     }
     // A station on a break gets the state on its b side, where the coefficients' tangent and
     // force are taken (ShootingCoefficients::piece_at): shot from a, it is recorded after the
@@ -492,9 +499,12 @@ void ShootingIntegrator::Impl::finish_shot(Shot& shot) {
 // the end angle (D = 1: -2 arg(Phi + i F)) from the carried slope S = c w dY/dw and the balancing's
 // own change with w (the start F~ = I is a right factor, which changes neither h nor the angle):
 //   dh = [tr(adj(Phi) dPhi) - h sqrt(det G) tr(G^{-1} dG) / 2] / sqrt(det G),
-//   dG = dPhi^T Phi + Phi^T dPhi + dF^T F + F^T dF,   d angle = -2 (Phi dF - F dPhi) / (Phi^2 + F^2).
+//   dG = dPhi^T Phi + Phi^T dPhi + dF^T F + F^T dF,   d angle = -2 (Phi dF - F dPhi) / (Phi^2 +
+//   F^2).
 template <int D>
-void ShootingIntegrator::Impl::set_slopes(Shot& shot, const Square<D>& Phi, const Square<D>& F) const {
+void ShootingIntegrator::Impl::set_slopes(Shot& shot,
+                                          const Square<D>& Phi,
+                                          const Square<D>& F) const {
   const Eigen::Map<const Basis<D>> S(stepper->state() + 2 * D * D + 1);
   const double to_slope = 1.0 / (data.slope_scale * shot.omega_rad_s);  // S -> dY/dw
   // The balancing kappa^2 = max(Omega, 1) moves with w as well (kappa ~ sqrt(w) above 1): the
@@ -504,8 +514,8 @@ void ShootingIntegrator::Impl::set_slopes(Shot& shot, const Square<D>& Phi, cons
   const Square<D> dPhi = to_slope * S.template topRows<D>() + balance_rate * Phi;
   const Square<D> dF = to_slope * S.template bottomRows<D>() - balance_rate * F;
   const Square<D> G = Phi.transpose() * Phi + F.transpose() * F;
-  const Square<D> dG = dPhi.transpose() * Phi + Phi.transpose() * dPhi + dF.transpose() * F +
-                       F.transpose() * dF;
+  const Square<D> dG =
+      dPhi.transpose() * Phi + Phi.transpose() * dPhi + dF.transpose() * F + F.transpose() * dF;
   Square<D> adjugate;
   if constexpr (D == 1) {
     adjugate(0, 0) = 1.0;
@@ -514,8 +524,8 @@ void ShootingIntegrator::Impl::set_slopes(Shot& shot, const Square<D>& Phi, cons
   }
   const double root_det_g = std::sqrt(G.determinant());
   shot.has_slope = true;
-  shot.determinant_slope = (adjugate * dPhi).trace() / root_det_g -
-                           0.5 * shot.determinant * (G.inverse() * dG).trace();
+  shot.determinant_slope =
+      (adjugate * dPhi).trace() / root_det_g - 0.5 * shot.determinant * (G.inverse() * dG).trace();
   if constexpr (D == 1) {
     shot.angle_slope = -2.0 * (Phi(0, 0) * dF(0, 0) - F(0, 0) * dPhi(0, 0)) / G(0, 0);
   }
@@ -557,7 +567,8 @@ Shot ShootingIntegrator::shoot(double omega_rad_s,
 
 double axial_stretch(double axial_compliance, double tangent_spread) {
   const double axial_scale = std::max(std::sqrt(axial_compliance), tangent_spread);
-  return axial_scale > 0.0 ? std::clamp(1.0 / axial_scale, 1.0, kMaxAxialStretch) : kMaxAxialStretch;
+  return axial_scale > 0.0 ? std::clamp(1.0 / axial_scale, 1.0, kMaxAxialStretch)
+                           : kMaxAxialStretch;
 }
 
 long ShootingIntegrator::total_steps() const { return impl_->total_steps; }

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The integration core of the `shooting` solver (docs/explanation/methods/shooting.md): one "shot" integrates the
-/// principal solutions of the linearised cable equations along s, for one frequency, with an
-/// explicit Runge-Kutta 6(5) pair (shooting_runge_kutta.hpp) or CVODE's Adams or BDF ("Integrators"
-/// in docs/explanation/methods/shooting.md).
+/// The integration core of the `shooting` solver (docs/explanation/methods/shooting.md): one "shot"
+/// integrates the principal solutions of the linearised cable equations along s, for one frequency,
+/// with an explicit Runge-Kutta 6(5) pair (shooting_runge_kutta.hpp) or CVODE's Adams or BDF
+/// ("Integrators" in docs/explanation/methods/shooting.md).
 ///
 /// Scaled first-order system. With x = s / L, Phi^ = Phi / L and F^ = F / T_ref (T_ref = the
 /// larger end tension), the harmonic equations (A Phi')' + w^2 Mmat Phi = 0 become
@@ -22,17 +22,19 @@
 ///     d theta / dx = -tr[ G^{-1} (Phi^T C Phi + F^T B F) ],   G = Phi^T Phi + F^T F,
 ///
 /// (monotone decreasing where C >= 0; a seabed foundation makes C indefinite, and then only its
-/// crossings of det Phi = 0 are one-way, which is all the count needs: docs/explanation/methods/shooting.md,
-/// "Seabed contact"), and is integrated as one extra ODE component (so it never needs unwrapping). At the far end
-/// it gives the number of conjugate points, i.e. of eigenfrequencies below w, by
-/// count_conjugate_points (shooting_conjugate_count.hpp). Out of plane this is Pruefer's angle.
+/// crossings of det Phi = 0 are one-way, which is all the count needs:
+/// docs/explanation/methods/shooting.md, "Seabed contact"), and is integrated as one extra ODE
+/// component (so it never needs unwrapping). At the far end it gives the number of conjugate
+/// points, i.e. of eigenfrequencies below w, by count_conjugate_points
+/// (shooting_conjugate_count.hpp). Out of plane this is Pruefer's angle.
 ///
 /// Loss of independence. The two in-plane columns can grow at different exponential rates (the
 /// "chain" solutions of a curved inextensible cable, or large lambda^2). After every step the
 /// Gram matrix G is checked; when its condition number exceeds `max_condition` (or the basis scale
 /// leaves [1e-6, 1e6]) the basis is replaced by the Q of its QR factorisation with positive
-/// diagonal R (so det R > 0: the sign of det Phi and theta are unchanged) and the stepper restarted.
-/// The R factors are kept so that a combination of the final basis maps back to every segment.
+/// diagonal R (so det R > 0: the sign of det Phi and theta are unchanged) and the stepper
+/// restarted. The R factors are kept so that a combination of the final basis maps back to every
+/// segment.
 ///
 /// Seabed. A shot from a starts with the grounded pieces of a line resting on the seabed
 /// (shooting_grounded.hpp): there the directions decouple and each column is integrated as a
@@ -42,14 +44,14 @@
 ///
 /// Frequency derivative. A shot may also carry S = c w dY/dw (the variational equation): w enters
 /// the carried system only through the inertia part Ci of C (proportional to w^2, the balancing
-/// kappa held at the shot's value) and the point jumps K (also ~ w^2), so S' = A S - 2 c [0; Ci Phi],
-/// S(0) = 0, S_F -> S_F - K S_Phi - 2 c K Phi at a point, S -> S R^{-1} at a re-orthonormalisation.
-/// The scale c = atol / (kSlopeAccuracy kappa^2) keeps S near atol / kSlopeAccuracy, so that CVODE
-/// controls it to about kSlopeAccuracy relative (enough for Newton's step) and it does not shorten
-/// the steps of Y. The slopes of the normalised end determinant and of the end angle follow from
-/// S at the end, with the change of kappa itself (kappa ~ sqrt(w) where Omega > 1): they are the
-/// total derivatives of the values the shots return. Not carried through the grounded run (its
-/// shots come without a slope).
+/// kappa held at the shot's value) and the point jumps K (also ~ w^2), so S' = A S - 2 c [0; Ci
+/// Phi], S(0) = 0, S_F -> S_F - K S_Phi - 2 c K Phi at a point, S -> S R^{-1} at a
+/// re-orthonormalisation. The scale c = atol / (kSlopeAccuracy kappa^2) keeps S near atol /
+/// kSlopeAccuracy, so that CVODE controls it to about kSlopeAccuracy relative (enough for Newton's
+/// step) and it does not shorten the steps of Y. The slopes of the normalised end determinant and
+/// of the end angle follow from S at the end, with the change of kappa itself (kappa ~ sqrt(w)
+/// where Omega > 1): they are the total derivatives of the values the shots return. Not carried
+/// through the grounded run (its shots come without a slope).
 ///
 /// Balancing. The shot integrates Phi~ = kappa Phi^, F~ = F^ / kappa with kappa^2 = max(Omega, 1)
 /// (a constant symplectic scaling: B -> kappa^2 B, C -> C / kappa^2). It balances B and C for the
@@ -64,9 +66,10 @@
 /// 1e-5, and moving by more with rtol). The shot therefore integrates Phi~ = P Phi^,
 /// F~ = P^{-T} F^ with P = diag(sigma, 1) R^T: R rotates to the mean tangent (the bisector of the
 /// end tangents) and sigma = axial_stretch(...) brings the axial component to the size of the
-/// normal one (used when sigma >= kMinAxialStretch). P is constant and P, P^{-T} preserve Phi = 0, so the system stays Hamiltonian and
-/// monotone (B -> P B P^T, C -> P^{-T} C P^{-1}) and the conjugate points, the count and the sign
-/// of the end determinant are those of the physical variables. Results are returned physical.
+/// normal one (used when sigma >= kMinAxialStretch). P is constant and P, P^{-T} preserve Phi = 0,
+/// so the system stays Hamiltonian and monotone (B -> P B P^T, C -> P^{-T} C P^{-1}) and the
+/// conjugate points, the count and the sign of the end determinant are those of the physical
+/// variables. Results are returned physical.
 
 #include <Eigen/Core>
 #include <memory>
@@ -173,8 +176,9 @@ constexpr double kMaxAxialStretch = 1e8;
 constexpr double kMinAxialStretch = 4.0;
 
 /// The axial stretch sigma of the axial frame (header comment) for the scaled axial compliance
-/// T_ref/EA and the largest angle between a tangent and the mean tangent [rad]: 1/max(sqrt(T_ref/EA),
-/// spread), within [1, kMaxAxialStretch] (1 for a cable with sag: nothing to balance).
+/// T_ref/EA and the largest angle between a tangent and the mean tangent [rad]:
+/// 1/max(sqrt(T_ref/EA), spread), within [1, kMaxAxialStretch] (1 for a cable with sag: nothing to
+/// balance).
 double axial_stretch(double axial_compliance, double tangent_spread);
 
 /// The solution (scaled [Phi^; F^], a 2D-vector) at station j of a shot for the combination `c`

@@ -23,8 +23,10 @@ std::vector<std::vector<Root>> cluster_roots(const std::vector<Root>& roots, dou
 }
 
 ShootingModeBuilder::ShootingModeBuilder(ShootingIntegrator& integrator,
-                                         const ShootingCoefficients& k, const SolveContext& context,
-                                         Plane plane, bool string_only)
+                                         const ShootingCoefficients& k,
+                                         const SolveContext& context,
+                                         Plane plane,
+                                         bool string_only)
     : integrator_(integrator),
       k_(k),
       context_(context),
@@ -36,7 +38,8 @@ ShootingModeBuilder::ShootingModeBuilder(ShootingIntegrator& integrator,
       stations_(request_.stations_m(k.length_m)),
       stations_x_(scaled_stations(stations_, k.length_m, false)) {}
 
-void ShootingModeBuilder::add_cluster(const std::vector<Root>& cluster, int num_modes,
+void ShootingModeBuilder::add_cluster(const std::vector<Root>& cluster,
+                                      int num_modes,
                                       std::vector<Mode>& modes) {
   int cluster_size = 0;
   double cluster_omega = 0.0;
@@ -95,7 +98,8 @@ void ShootingModeBuilder::mass_orthogonalise(const Shot& shot,
 
 // Shape, tension (on request), normalisation and modal mass of one mode; only the frequency
 // part is kept when the shapes were not asked (the tension alone needs the shape to normalise).
-void ShootingModeBuilder::set_shape(Mode& mode, const Shot& shot,
+void ShootingModeBuilder::set_shape(Mode& mode,
+                                    const Shot& shot,
                                     const Eigen::VectorXd& null_vector) const {
   Profile p = evaluate_profile(shot, null_vector, k_, stations_, false, integration_plane_);
   if (string_only_) p = string_as_inplane(p);

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// Mode construction of the `shooting` solver (docs/explanation/methods/shooting.md): the frequencies found
-/// by the root finder become Modes, and on request their shapes and dynamic tension, from the
-/// null vector of Phi(L) combined with the principal solutions recorded at the request's stations.
-/// Roots closer than the integration resolves form one cluster: its null space is spanned by the
-/// smallest singular vectors of Phi(L) together, and a double root gets a mass-orthogonal pair.
+/// Mode construction of the `shooting` solver (docs/explanation/methods/shooting.md): the
+/// frequencies found by the root finder become Modes, and on request their shapes and dynamic
+/// tension, from the null vector of Phi(L) combined with the principal solutions recorded at the
+/// request's stations. Roots closer than the integration resolves form one cluster: its null space
+/// is spanned by the smallest singular vectors of Phi(L) together, and a double root gets a
+/// mass-orthogonal pair.
 
 #include <Eigen/Core>
 #include <vector>
@@ -32,8 +33,11 @@ class ShootingModeBuilder {
   /// transverse string (straight inextensible cable), whose integrator is out of plane.
   /// `context`: the solve's problem (a general line's densities and points give its modal
   /// mass), statics, groups and request.
-  ShootingModeBuilder(ShootingIntegrator& integrator, const ShootingCoefficients& k, const SolveContext& context,
-                      Plane plane, bool string_only);
+  ShootingModeBuilder(ShootingIntegrator& integrator,
+                      const ShootingCoefficients& k,
+                      const SolveContext& context,
+                      Plane plane,
+                      bool string_only);
 
   /// Appends the modes of one cluster to `modes`, numbered on from modes.size() + 1 and at most
   /// `num_modes` in all. Throws ShootingFailure when the shape shot fails.

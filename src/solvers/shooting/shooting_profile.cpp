@@ -4,8 +4,12 @@
 
 namespace catena::internal {
 
-Profile evaluate_profile(const Shot& shot, const Eigen::VectorXd& c, const ShootingCoefficients& k,
-                         const Vector& stations_m, bool reversed, Plane plane) {
+Profile evaluate_profile(const Shot& shot,
+                         const Eigen::VectorXd& c,
+                         const ShootingCoefficients& k,
+                         const Vector& stations_m,
+                         bool reversed,
+                         Plane plane) {
   const Index n = stations_m.size();
   Profile p;
   if (plane == Plane::InPlane) {

@@ -23,8 +23,12 @@ struct Profile {
 
 /// The profile of the combination `c` of the final basis of `shot`, which recorded
 /// `stations_m` (in reverse order when it was shot from b, `reversed`).
-Profile evaluate_profile(const Shot& shot, const Eigen::VectorXd& c, const ShootingCoefficients& k,
-                         const Vector& stations_m, bool reversed, Plane plane);
+Profile evaluate_profile(const Shot& shot,
+                         const Eigen::VectorXd& c,
+                         const ShootingCoefficients& k,
+                         const Vector& stations_m,
+                         bool reversed,
+                         Plane plane);
 
 /// The out-of-plane profile of the transverse string re-labelled as the in-plane normal motion
 /// (a straight inextensible cable): w = v, u = 0, tension 0.

@@ -39,8 +39,10 @@ class PurposeScope {
 
 }  // namespace
 
-ShootingRootFinder::ShootingRootFinder(ShotFunction shoot, const RootFinderSettings& settings,
-                                       double first_guess_rad_s, bool scalar)
+ShootingRootFinder::ShootingRootFinder(ShotFunction shoot,
+                                       const RootFinderSettings& settings,
+                                       double first_guess_rad_s,
+                                       bool scalar)
     : shoot_(std::move(shoot)),
       settings_(settings),
       first_guess_(first_guess_rad_s),
@@ -51,7 +53,8 @@ double ShootingRootFinder::count_function(const Sample& sample, int n) {
   return internal::count_function(sample.count, sample.angle_min, sample.angle_max, n);
 }
 
-std::vector<Root> ShootingRootFinder::find(int num_modes, std::vector<std::string>& warnings,
+std::vector<Root> ShootingRootFinder::find(int num_modes,
+                                           std::vector<std::string>& warnings,
                                            WorkMeter* meter) {
   auto stop_after = [meter](int found) { return meter && meter->stop_after(found); };
   std::vector<Root> roots;
@@ -130,7 +133,10 @@ void ShootingRootFinder::sample_prediction(int n) {
 
 // Mode n in its count bracket, refined at tighter tolerances when its estimate exceeds the target;
 // a warning says why a mode still misses it.
-Root ShootingRootFinder::refine_to_target(int n, double lo, double hi, std::vector<std::string>& warnings) {
+Root ShootingRootFinder::refine_to_target(int n,
+                                          double lo,
+                                          double hi,
+                                          std::vector<std::string>& warnings) {
   const Root first = refine(n, lo, hi);
   const Root root = refine_tighter(n, first, lo, hi);
   if (root.relative_error > settings_.target) {
@@ -185,7 +191,8 @@ const ShootingRootFinder::Sample& ShootingRootFinder::evaluate_with_slope(double
 }
 
 // One shot at the solver's tolerances for the sample cache.
-ShootingRootFinder::Sample ShootingRootFinder::cached_shot(double omega, const ShotFunction& shoot) {
+ShootingRootFinder::Sample ShootingRootFinder::cached_shot(double omega,
+                                                           const ShotFunction& shoot) {
   if (shots_ >= kMaxShots) throw ShootingFailure(fmt::format("more than {} shots", kMaxShots));
   Shot shot = shoot(omega, 1.0);
   ++shots_;
@@ -223,7 +230,9 @@ void ShootingRootFinder::raise_to_count(double& top, int num_modes) {
 // rounding can give the count n with h_n = -1e-15: the bracket must carry the signs the
 // refinement narrows by.
 std::pair<double, double> ShootingRootFinder::bracket(int n) const {
-  auto below = [this, n](const Sample& s) { return scalar_ ? count_function(s, n) < 0.0 : s.count < n; };
+  auto below = [this, n](const Sample& s) {
+    return scalar_ ? count_function(s, n) < 0.0 : s.count < n;
+  };
   double lo = 0.0;
   for (const auto& [omega, sample] : samples_) {
     if (below(sample)) lo = std::max(lo, omega);
@@ -260,7 +269,9 @@ double ShootingRootFinder::trial_point(int n, double lo, double hi) const {
 
 // Several eigenvalues inside a bracket narrower than the tolerance: a multiple root (e.g.
 // Irvine's cross-over), returned as that many modes.
-Root ShootingRootFinder::multiple_root(int n, double lo, double hi,
+Root ShootingRootFinder::multiple_root(int n,
+                                       double lo,
+                                       double hi,
                                        std::vector<std::string>& warnings) const {
   const Sample& a = samples_.at(lo);
   const Sample& b = samples_.at(hi);
@@ -272,10 +283,10 @@ Root ShootingRootFinder::multiple_root(int n, double lo, double hi,
         fmt::format("mode {}: count {} just below the root (expected {})", n, a.count, n - 1));
   }
   if (b.count - a.count == 1) {
-    warnings.push_back(fmt::format(
-        "mode {}: the end determinant does not change sign across the count bracket "
-        "[{:.17g}, {:.17g}] rad/s; located by bisection on the count",
-        n, lo, hi));
+    warnings.push_back(
+        fmt::format("mode {}: the end determinant does not change sign across the count bracket "
+                    "[{:.17g}, {:.17g}] rad/s; located by bisection on the count",
+                    n, lo, hi));
   }
   root.relative_error = 0.5 * (hi - lo) / root.omega + 10.0 * settings_.relative_tolerance;
   root.residual = std::min(std::abs(a.determinant), std::abs(b.determinant));
@@ -434,8 +445,8 @@ std::optional<ShootingRootFinder::Sample> ShootingRootFinder::tight_slope_sample
 // function Newton works on) with the tight point's slope (a slope differs between the two
 // tolerances by far less than a value does) and either the value and slope of the nearer end
 // `end` (hermite) or the values of both ends. Three Newton steps on it from the tight point.
-double ShootingRootFinder::normal_tolerance_root(int n, double lo, double hi, double end,
-                                                 bool hermite, const ModelPoint& tight) const {
+double ShootingRootFinder::normal_tolerance_root(
+    int n, double lo, double hi, double end, bool hermite, const ModelPoint& tight) const {
   const bool narrow = !hermite;
   const double base = hermite ? end : lo;
   const Sample& sb = samples_.at(base);
@@ -468,7 +479,8 @@ double ShootingRootFinder::normal_tolerance_root(int n, double lo, double hi, do
 // (h ~ h0 + atan((w - p) / gamma) / pi, its slope there hundreds of times that between the
 // modes), where Newton on h overshoots from either side; g is then a Moebius function of w.
 // Only within half a mode of the root: tan(pi h) vanishes at the neighbouring roots too (h = -+1).
-ShootingRootFinder::ModelPoint ShootingRootFinder::model_point(double x, double f,
+ShootingRootFinder::ModelPoint ShootingRootFinder::model_point(double x,
+                                                               double f,
                                                                double slope) const {
   if (!scalar_ || std::abs(f) >= 0.5) return {x, f, slope, false};
   const double c = std::cos(kPi * f);
@@ -499,7 +511,8 @@ double ShootingRootFinder::model_step(const ModelPoint& current,
 // 1/(step/last) times the quadratic prediction step^3 / last^2 (the error falls as K e^2 with
 // K = step / last^2), plus the part an error of the slope leaves, when that is within a quarter
 // of the root tolerance.
-std::optional<double> ShootingRootFinder::newton_error_bound(double step, double last_step,
+std::optional<double> ShootingRootFinder::newton_error_bound(double step,
+                                                             double last_step,
                                                              double omega) const {
   // kSlopeMargin: the slope's own relative error, which leaves that fraction of the step.
   constexpr double kSlopeMargin = 1e-4;
@@ -520,8 +533,8 @@ std::optional<double> ShootingRootFinder::newton_error_bound(double step, double
 // tighter tolerances: the root is moved by it (when it stays within the target and inside the
 // sign bracket [lo, hi]), which takes out
 // most of the integration error at no cost (the estimate stays that of the unmoved root).
-Root ShootingRootFinder::newton_root(int n, double omega, double step, const Sample& last,
-                                     double lo, double hi) {
+Root ShootingRootFinder::newton_root(
+    int n, double omega, double step, const Sample& last, double lo, double hi) {
   Root root;
   root.omega = omega;
   root.residual = std::abs(last.determinant);
@@ -549,8 +562,8 @@ Root ShootingRootFinder::newton_root(int n, double omega, double step, const Sam
 // bracket (or assumed 10 rtol when that shot is not asked for). 100x, not 10x: CVODE's global error
 // does not fall in proportion to its tolerances, and against a 10x tighter shot the estimate fell
 // short of the error measured against frobenius by up to 9.5x on the Gale B-4 scenes.
-Root ShootingRootFinder::root_in_bracket(int n, double a, double b, const Sample& sa,
-                                         const Sample& sb, double factor) {
+Root ShootingRootFinder::root_in_bracket(
+    int n, double a, double b, const Sample& sa, const Sample& sb, double factor) {
   Root root;
   root.omega = 0.5 * (a + b);
   root.residual = std::min(std::abs(sa.determinant), std::abs(sb.determinant));
@@ -569,7 +582,8 @@ Root ShootingRootFinder::root_in_bracket(int n, double a, double b, const Sample
   // Never below the target: against frobenius the error exceeds this measured estimate by up to
   // 9.6x on the Gale B-4 scenes (out of plane, 2.3e-10 against 2.4e-11) through a part that
   // tightening the integrator does not reveal; the largest error measured over the suite, 5.8e-10,
-  // is within the target (docs/explanation/methods/shooting.md, "Error behaviour and its estimate").
+  // is within the target (docs/explanation/methods/shooting.md, "Error behaviour and its
+  // estimate").
   root.relative_error = std::max(root.relative_error, settings_.estimate_floor);
   return root;
 }

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The root finder of the `shooting` solver (docs/explanation/methods/shooting.md): brackets each natural
-/// frequency by conjugate-point counts and refines it by safeguarded Newton steps with the shot's
-/// frequency derivative (set_slope_shots; docs/explanation/methods/shooting.md, "Newton refinement"), or with
-/// Brent's method.
+/// The root finder of the `shooting` solver (docs/explanation/methods/shooting.md): brackets each
+/// natural frequency by conjugate-point counts and refines it by safeguarded Newton steps with the
+/// shot's frequency derivative (set_slope_shots; docs/explanation/methods/shooting.md, "Newton
+/// refinement"), or with Brent's method.
 ///
 /// Mode n is the root of the count-aware function h_n (count_function in
 /// shooting_conjugate_count.hpp), bracketed by any two samples with counts < n and >= n: the sign
@@ -18,15 +18,15 @@
 
 #include <functional>
 #include <limits>
-#include <optional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "solvers/common/work_meter.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
 #include "solvers/shooting/shooting_root_prediction.hpp"
-#include "solvers/common/work_meter.hpp"
 
 namespace catena::internal {
 
@@ -74,14 +74,18 @@ class ShootingRootFinder {
 
   /// `first_guess_rad_s`: a frequency expected above the wanted modes (enlarged until it is).
   /// `scalar`: a one-component problem, whose continuous count is smooth across the eigenvalues.
-  ShootingRootFinder(ShotFunction shoot, const RootFinderSettings& settings,
-                     double first_guess_rad_s, bool scalar);
+  ShootingRootFinder(ShotFunction shoot,
+                     const RootFinderSettings& settings,
+                     double first_guess_rad_s,
+                     bool scalar);
 
   /// The lowest `num_modes` eigenfrequencies (a multiple root counts its multiplicity), with
   /// warnings about counts that did not behave. Throws ShootingFailure when a shot fails or
   /// more than kMaxShots are needed. A `meter` is told each mode found and may stop the search
   /// early (fewer roots, the lowest ones).
-  std::vector<Root> find(int num_modes, std::vector<std::string>& warnings, WorkMeter* meter = nullptr);
+  std::vector<Root> find(int num_modes,
+                         std::vector<std::string>& warnings,
+                         WorkMeter* meter = nullptr);
 
   /// Shots that carry the frequency derivative (ShootingIntegrator::shoot with_slope): given,
   /// each root is refined by safeguarded Newton steps inside its sign bracket (refine_newton)
@@ -130,8 +134,8 @@ class ShootingRootFinder {
   double newton_start(int n, double a, double b) const;
   struct ModelPoint {
     double x = 0.0;
-    double g = 0.0;   ///< the function Newton works on (model_point)
-    double dg = 0.0;  ///< its slope
+    double g = 0.0;        ///< the function Newton works on (model_point)
+    double dg = 0.0;       ///< its slope
     bool tangent = false;  ///< g = tan(pi h) rather than h
   };
   ModelPoint model_point(double x, double f, double slope) const;
@@ -139,14 +143,15 @@ class ShootingRootFinder {
   std::optional<Root> tight_newton_root(int n, double lo, double hi, double& x0);
   std::optional<Sample> tight_slope_sample(double omega);
   struct ModelPoint;
-  double normal_tolerance_root(int n, double lo, double hi, double base, bool hermite,
-                               const ModelPoint& tight) const;
+  double normal_tolerance_root(
+      int n, double lo, double hi, double base, bool hermite, const ModelPoint& tight) const;
   std::optional<double> newton_error_bound(double step, double last_step, double omega) const;
   void close_top_bracket(const std::vector<Root>& roots);
   Sample to_sample(const Shot& shot) const;
   std::optional<Root> refine_newton(int n, double& lo, double& hi);
   Root newton_root(int n, double omega, double step, const Sample& last, double lo, double hi);
-  Root root_in_bracket(int n, double a, double b, const Sample& sa, const Sample& sb, double factor);
+  Root root_in_bracket(
+      int n, double a, double b, const Sample& sa, const Sample& sb, double factor);
   Root refine_tighter(int n, Root root, double lo, double hi);
 
   ShotFunction shoot_;

@@ -40,9 +40,11 @@ std::optional<RootPrediction> RootPredictor::next() const {
   }
   RootPrediction prediction;
   prediction.omega = extrapolate(best, size);
-  prediction.half_width = std::max(kSafety * best_error, min_half_width_ * std::abs(prediction.omega));
+  prediction.half_width =
+      std::max(kSafety * best_error, min_half_width_ * std::abs(prediction.omega));
   const double spacing = roots_[size - 1] - roots_[size - 2];
-  if (!(prediction.half_width < 0.25 * spacing) || !(prediction.omega > roots_.back())) return std::nullopt;
+  if (!(prediction.half_width < 0.25 * spacing) || !(prediction.omega > roots_.back()))
+    return std::nullopt;
   return prediction;
 }
 

@@ -2,11 +2,11 @@
 #pragma once
 /// \file
 /// Where the next natural frequency of a plane is expected, from those found so far
-/// (docs/explanation/methods/shooting.md, "Cost per root"). The root finder places its first counting samples
-/// for mode n around this prediction, so that Brent starts in a bracket a few prediction errors
-/// wide instead of one that reaches back to mode n - 1 (whose root makes the end determinant
-/// vanish there too). A prediction is a place to look, never a result: the count bracket and
-/// Brent decide, and a wrong prediction costs shots, not modes.
+/// (docs/explanation/methods/shooting.md, "Cost per root"). The root finder places its first
+/// counting samples for mode n around this prediction, so that Brent starts in a bracket a few
+/// prediction errors wide instead of one that reaches back to mode n - 1 (whose root makes the end
+/// determinant vanish there too). A prediction is a place to look, never a result: the count
+/// bracket and Brent decide, and a wrong prediction costs shots, not modes.
 ///
 /// The frequencies of a cable are asymptotically equally spaced, out of plane smoothly, in plane
 /// alternately (symmetric and antisymmetric modes have slightly different spacings, and an axial

@@ -49,7 +49,9 @@ const ButcherTableau& verner_6_5() {
   return table;
 }
 
-RungeKuttaStepper::RungeKuttaStepper(const ButcherTableau& tableau, int size, Rhs rhs,
+RungeKuttaStepper::RungeKuttaStepper(const ButcherTableau& tableau,
+                                     int size,
+                                     Rhs rhs,
                                      const void* data)
     : tableau_(tableau),
       rhs_(rhs),
@@ -113,8 +115,8 @@ double RungeKuttaStepper::initial_step() {
   return std::min({100.0 * h0, h1, span});
 }
 
-double RungeKuttaStepper::attempt(double x0, const Eigen::VectorXd& y0, double h,
-                                  Eigen::VectorXd& out, bool with_error) {
+double RungeKuttaStepper::attempt(
+    double x0, const Eigen::VectorXd& y0, double h, Eigen::VectorXd& out, bool with_error) {
   const int s = tableau_.stages;
   for (int i = 1; i < s; ++i) {
     stage_state_ = y0;

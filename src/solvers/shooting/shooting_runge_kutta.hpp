@@ -77,8 +77,8 @@ class RungeKuttaStepper {
   double initial_step();
   // One step of size h from (x0, y0) into out; the stage derivatives stay in k_ (k_.col(0) must
   // already hold f(x0, y0)). Returns the weighted error norm when asked.
-  double attempt(double x0, const Eigen::VectorXd& y0, double h, Eigen::VectorXd& out,
-                 bool with_error);
+  double attempt(
+      double x0, const Eigen::VectorXd& y0, double h, Eigen::VectorXd& out, bool with_error);
   double weighted_norm(const Eigen::VectorXd& v, const Eigen::VectorXd& reference) const;
   void evaluate(double x, const Eigen::VectorXd& y, int stage);
 

@@ -16,22 +16,25 @@
 #include "catena/core/error.hpp"
 #include "solvers/common/knob_table.hpp"
 #include "solvers/common/line_applicability.hpp"
+#include "solvers/common/solver_driver.hpp"
+#include "solvers/common/solver_entries.hpp"
+#include "solvers/common/work_meter.hpp"
 #include "solvers/shooting/shooting_coefficients.hpp"
 #include "solvers/shooting/shooting_forced.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
 #include "solvers/shooting/shooting_modes.hpp"
 #include "solvers/shooting/shooting_root_finder.hpp"
-#include "solvers/common/solver_driver.hpp"
-#include "solvers/common/solver_entries.hpp"
-#include "solvers/common/work_meter.hpp"
 
 namespace catena {
 
 std::string to_string(ShootingMethod method) {
   switch (method) {
-    case ShootingMethod::RungeKutta: return "rk";
-    case ShootingMethod::Adams: return "adams";
-    case ShootingMethod::Bdf: return "bdf";
+    case ShootingMethod::RungeKutta:
+      return "rk";
+    case ShootingMethod::Adams:
+      return "adams";
+    case ShootingMethod::Bdf:
+      return "bdf";
   }
   return "?";
 }
@@ -70,8 +73,9 @@ const KnobTable<ShootingSolverOptions>& shooting_knobs() {
                  "re-orthonormalise the principal pair when cond(Gram) exceeds this"),
        flag_knob("error_estimate", &O::error_estimate,
                  "one extra shot per mode at 100x tighter tolerances"),
-       choice_knob("root_finder", &O::newton, {{"newton", true}, {"brent", false}},
-                   "refine each root by Newton with the shot's frequency derivative, or by Brent")});
+       choice_knob(
+           "root_finder", &O::newton, {{"newton", true}, {"brent", false}},
+           "refine each root by Newton with the shot's frequency derivative, or by Brent")});
   return table;
 }
 
@@ -113,8 +117,9 @@ std::string resolution(const ShootingSolverOptions& options) {
   const std::string method = options.method == ShootingMethod::RungeKutta
                                  ? "Runge-Kutta 6(5)"
                                  : "CVODE " + to_string(options.method);
-  return fmt::format("{} rtol {:.1e} atol {:.1e}, root bracket {:.1e}", method, options.relative_tolerance,
-                     options.effective_absolute_tolerance(), options.effective_root_tolerance());
+  return fmt::format("{} rtol {:.1e} atol {:.1e}, root bracket {:.1e}", method,
+                     options.relative_tolerance, options.effective_absolute_tolerance(),
+                     options.effective_root_tolerance());
 }
 
 // A plane whose frequencies could not be found: the integrator failed (the reason says where).
@@ -149,18 +154,26 @@ class ShootingNumerics final : public SolverNumerics {
   void describe(SolverSummary& summary) const override;
   ModalResult modes(Plane plane, int count) override;
   ForcedOutcome forced(const ForcedRequest& request) override {
-    WorkMeter meter(context_, "shooting", "forced frequencies", static_cast<long>(request.omegas_rad_s.size()));
-    ForcedOutcome outcome = shooting_forced_responses(k_, request, context_.request.stations_m(k_.length_m),
-                                                      integrator_settings(options_), &meter);
+    WorkMeter meter(context_, "shooting", "forced frequencies",
+                    static_cast<long>(request.omegas_rad_s.size()));
+    ForcedOutcome outcome =
+        shooting_forced_responses(k_, request, context_.request.stations_m(k_.length_m),
+                                  integrator_settings(options_), &meter);
     mark_time_limit(meter, outcome.summary);
     return outcome;
   }
 
  private:
-  void add_modes(ShootingIntegrator& integrator, const std::vector<Root>& roots, Plane plane,
-                 int count, ModalResult& result) const;
-  void finish_summary(const ShootingRootFinder& finder, const ShootingIntegrator& integrator,
-                      Plane plane, int count, ModalResult& result) const;
+  void add_modes(ShootingIntegrator& integrator,
+                 const std::vector<Root>& roots,
+                 Plane plane,
+                 int count,
+                 ModalResult& result) const;
+  void finish_summary(const ShootingRootFinder& finder,
+                      const ShootingIntegrator& integrator,
+                      Plane plane,
+                      int count,
+                      ModalResult& result) const;
 
   const SolveContext& context_;
   ShootingSolverOptions options_;
@@ -187,7 +200,8 @@ void ShootingNumerics::describe(SolverSummary& summary) const {
       "exact linearisation about the closed-form static catenary; A^{-1} used, so EA = inf is "
       "exact (no penalty); counting by the conjugate points of the principal solution (phase of "
       "det(Phi + iF), Morse index / Sturm)");
-  const char* how = "integrated piece by piece, matched to the suspended part at the touchdown point";
+  const char* how =
+      "integrated piece by piece, matched to the suspended part at the touchdown point";
   if (auto note = seabed_model_note(context_.statics, how)) summary.notes.push_back(*note);
 }
 
@@ -221,8 +235,8 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
       root_finder_settings(options_), guess, integration_plane == Plane::OutOfPlane);
   // A line with point attachments keeps Brent: near a mode localised at a heavy point the count
   // steps steeply, Newton's safeguard shoots slopes it does not use, and its fewer shots cost
-  // more time (docs/explanation/methods/shooting.md, "Newton refinement"). Segments alone do not: three
-  // identical segments cost 1.9x the one-segment cable out of plane with Brent.
+  // more time (docs/explanation/methods/shooting.md, "Newton refinement"). Segments alone do not:
+  // three identical segments cost 1.9x the one-segment cable out of plane with Brent.
   if (options_.newton && k_.points.empty()) {
     finder.set_slope_shots([&integrator](double omega, double factor) {
       return integrator->shoot(omega, factor, nullptr, false, true);
@@ -246,8 +260,11 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
 // Modes of the roots, clustered: roots closer than the integration can resolve form one
 // (numerically) multiple root whose null space is spanned by the smallest singular vectors of
 // Phi(L) together. A failing shape shot keeps the modes built so far, with a warning.
-void ShootingNumerics::add_modes(ShootingIntegrator& integrator, const std::vector<Root>& roots,
-                                 Plane plane, int count, ModalResult& result) const {
+void ShootingNumerics::add_modes(ShootingIntegrator& integrator,
+                                 const std::vector<Root>& roots,
+                                 Plane plane,
+                                 int count,
+                                 ModalResult& result) const {
   SolverSummary& summary = result.summary;
   const double merge =
       1000.0 * std::max(options_.relative_tolerance, options_.effective_root_tolerance());
@@ -261,7 +278,8 @@ void ShootingNumerics::add_modes(ShootingIntegrator& integrator, const std::vect
   const bool string_only = plane == Plane::InPlane && is_straight_inextensible(k_);
   ShootingModeBuilder builder(integrator, k_, context_, plane, string_only);
   try {
-    for (const std::vector<Root>& cluster : clusters) builder.add_cluster(cluster, count, result.modes);
+    for (const std::vector<Root>& cluster : clusters)
+      builder.add_cluster(cluster, count, result.modes);
   } catch (const ShootingFailure& failure) {
     summary.warnings.push_back(fmt::format("shapes: {}", failure.what()));
   }
@@ -270,7 +288,9 @@ void ShootingNumerics::add_modes(ShootingIntegrator& integrator, const std::vect
 }
 
 void ShootingNumerics::finish_summary(const ShootingRootFinder& finder,
-                                      const ShootingIntegrator& integrator, Plane plane, int count,
+                                      const ShootingIntegrator& integrator,
+                                      Plane plane,
+                                      int count,
                                       ModalResult& result) const {
   SolverSummary& summary = result.summary;
   result.proved_count_below_top = finder.proved_count();
@@ -286,7 +306,8 @@ void ShootingNumerics::finish_summary(const ShootingRootFinder& finder,
       summary.max_error_estimate);
   const ShotTally& tally = finder.tally();
   summary.notes.push_back(fmt::format(
-      "{} shots ({} bracketing by counts, {} refining, {} error estimates, {} tightening), {} integration steps, {} RHS evaluations; principal pair re-orthonormalised {} times "
+      "{} shots ({} bracketing by counts, {} refining, {} error estimates, {} tightening), {} "
+      "integration steps, {} RHS evaluations; principal pair re-orthonormalised {} times "
       "(max log volume growth {:.3g}); max phase defect {:.2e} rad ({} re-shots for phase); {} "
       "refinements at tighter tolerances for estimates above the target {:.2g}",
       finder.shots(), tally.bracketing, tally.refining, tally.estimate, tally.tightening,
@@ -316,7 +337,8 @@ SolverOutput solve_shooting(const Problem& problem,
                             const DimensionlessGroups& groups,
                             const SolveRequest& request,
                             const ShootingSolverOptions& options) {
-  return internal::solve_with<internal::ShootingNumerics>("shooting", {problem, statics, groups, request}, options);
+  return internal::solve_with<internal::ShootingNumerics>(
+      "shooting", {problem, statics, groups, request}, options);
 }
 
 }  // namespace catena

@@ -86,8 +86,8 @@ int jacobian(
 // state with the slope [Y, phase, S] (the latter solved by blocks: shooting_block_solver.hpp).
 class CvodeStepper final : public ShotStepper {
  public:
-  CvodeStepper(SUNContext context, int dimension, bool slope, const IntegratorSettings& s,
-               RhsData& data)
+  CvodeStepper(
+      SUNContext context, int dimension, bool slope, const IntegratorSettings& s, RhsData& data)
       : block_(2 * dimension * dimension),
         slope_(slope),
         size_(slope ? 2 * block_ + 1 : block_ + 1),
@@ -116,8 +116,7 @@ class CvodeStepper final : public ShotStepper {
       }
       check(CVodeSetNonlinearSolver(mem, nonlinear_solver_.get()), "CVodeSetNonlinearSolver");
     } else {
-      check(CVodeSetLinearSolver(mem, linear_solver_.get(), matrix_.get()),
-            "CVodeSetLinearSolver");
+      check(CVodeSetLinearSolver(mem, linear_solver_.get(), matrix_.get()), "CVodeSetLinearSolver");
       check(CVodeSetJacFn(mem, jac), "CVodeSetJacFn");
     }
     check(CVodeSetMaxNumSteps(mem, s.max_steps), "CVodeSetMaxNumSteps");
@@ -172,8 +171,8 @@ class CvodeStepper final : public ShotStepper {
  private:
   static void check(int flag, const char* call, double x = 0.0) {
     if (flag < 0) {
-      throw ShootingFailure(fmt::format("{} returned {} ({}) at x = {:.6g}", call,
-                                        cvode_flag_name(flag), flag, x));
+      throw ShootingFailure(
+          fmt::format("{} returned {} ({}) at x = {:.6g}", call, cvode_flag_name(flag), flag, x));
     }
   }
 
@@ -197,7 +196,8 @@ class RungeKuttaShotStepper final : public ShotStepper {
  public:
   RungeKuttaShotStepper(int dimension, bool slope, const RhsData& data)
       : block_(2 * dimension * dimension),
-        stepper_(verner_6_5(), slope ? 2 * block_ + 1 : block_ + 1,
+        stepper_(verner_6_5(),
+                 slope ? 2 * block_ + 1 : block_ + 1,
                  dimension == 2 ? (slope ? runge_kutta_rhs<2, true> : runge_kutta_rhs<2, false>)
                                 : (slope ? runge_kutta_rhs<1, true> : runge_kutta_rhs<1, false>),
                  &data) {}
@@ -222,8 +222,8 @@ class RungeKuttaShotStepper final : public ShotStepper {
     try {
       return stepper_.step();
     } catch (const std::runtime_error& e) {
-      throw ShootingFailure(fmt::format("Runge-Kutta step at x = {:.6g}: {}", stepper_.x(),
-                                        e.what()));
+      throw ShootingFailure(
+          fmt::format("Runge-Kutta step at x = {:.6g}: {}", stepper_.x(), e.what()));
     }
   }
 
@@ -238,8 +238,11 @@ class RungeKuttaShotStepper final : public ShotStepper {
 
 }  // namespace
 
-std::unique_ptr<ShotStepper> make_shot_stepper(const IntegratorSettings& settings, SUNContext context,
-                                               int dimension, bool slope, RhsData& data) {
+std::unique_ptr<ShotStepper> make_shot_stepper(const IntegratorSettings& settings,
+                                               SUNContext context,
+                                               int dimension,
+                                               bool slope,
+                                               RhsData& data) {
   if (settings.method == ShootingMethod::RungeKutta) {
     return std::make_unique<RungeKuttaShotStepper>(dimension, slope, data);
   }

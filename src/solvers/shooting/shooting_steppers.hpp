@@ -2,8 +2,8 @@
 #pragma once
 /// \file
 /// The integrators a `shooting` shot can be stepped by ("Integrators" in
-/// docs/explanation/methods/shooting.md): one interface, ShotStepper, for the explicit Runge-Kutta pair
-/// (shooting_runge_kutta.hpp; the default) and CVODE's Adams or BDF. Private to the shooting
+/// docs/explanation/methods/shooting.md): one interface, ShotStepper, for the explicit Runge-Kutta
+/// pair (shooting_runge_kutta.hpp; the default) and CVODE's Adams or BDF. Private to the shooting
 /// solver.
 
 #include <sundials/sundials_context.h>
@@ -40,7 +40,10 @@ class ShotStepper {
 /// The stepper of `settings.method` for the plain state (slope = false) or the state with the
 /// frequency derivative, on the right-hand side of `data` (kept by reference: it must outlive the
 /// stepper). `context` is used by CVODE only.
-std::unique_ptr<ShotStepper> make_shot_stepper(const IntegratorSettings& settings, SUNContext context,
-                                               int dimension, bool slope, RhsData& data);
+std::unique_ptr<ShotStepper> make_shot_stepper(const IntegratorSettings& settings,
+                                               SUNContext context,
+                                               int dimension,
+                                               bool slope,
+                                               RhsData& data);
 
 }  // namespace catena::internal

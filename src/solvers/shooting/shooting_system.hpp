@@ -44,10 +44,11 @@ struct RhsData {
   double atol_phase = 1e-6;
 };
 
-// The Winkler foundation under a grounded piece (docs/explanation/methods/shooting.md, "Seabed contact"):
-// springs k per unstretched metre (like m, M and W0: docs/explanation/physics.md, "Seabed contact: linear
-// dynamics") enter the force balance as F' = -(w^2 Mmat - Kf) D, Kf = k_t t t^T + k_s n n^T (out of
-// plane k_t), t = +x: in the scaled, carried variables C -> C - L^2 Q Kf Q^T / (T_ref kappa^2).
+// The Winkler foundation under a grounded piece (docs/explanation/methods/shooting.md, "Seabed
+// contact"): springs k per unstretched metre (like m, M and W0: docs/explanation/physics.md,
+// "Seabed contact: linear dynamics") enter the force balance as F' = -(w^2 Mmat - Kf) D, Kf = k_t t
+// t^T + k_s n n^T (out of plane k_t), t = +x: in the scaled, carried variables C -> C - L^2 Q Kf
+// Q^T / (T_ref kappa^2).
 template <int D>
 void subtract_foundation(const RhsData& data, const ShootingPiece& p, Square<D>& C) {
   const ShootingCoefficients& k = data.coefficients;
@@ -64,8 +65,8 @@ void subtract_foundation(const RhsData& data, const ShootingPiece& p, Square<D>&
 // B and C of the scaled system at x (see the header). From b the variable is x' = 1 - s/L and the
 // force is carried as -F^, which leaves the equations unchanged.
 template <int D>
-void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C,
-                     Square<D>* inertia = nullptr) {
+void coefficients_at(
+    const RhsData& data, double x, Square<D>& B, Square<D>& C, Square<D>* inertia = nullptr) {
   const ShootingCoefficients& k = data.coefficients;
   const ShootingPiece& p = k.pieces[data.piece];
   const double s = k.length_m * (data.from_b ? 1.0 - x : x);
@@ -94,8 +95,8 @@ void coefficients_at(const RhsData& data, double x, Square<D>& B, Square<D>& C,
   if (p.grounded) subtract_foundation<D>(data, p, C);
 }
 
-// Y' = A Y with A = [0 B; -C 0], the phase, and for a shot with the slope S' = A S - 2 c [0; Ci Phi]
-// (Ci the inertia part of C, c the slope scale): the derivative of Y' = A Y with respect to
+// Y' = A Y with A = [0 B; -C 0], the phase, and for a shot with the slope S' = A S - 2 c [0; Ci
+// Phi] (Ci the inertia part of C, c the slope scale): the derivative of Y' = A Y with respect to
 // log w, as C's inertia part is proportional to w^2 and nothing else depends on w (the balancing
 // kappa is held at its value for the shot).
 template <int D, bool Slope>

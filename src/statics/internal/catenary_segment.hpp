@@ -2,9 +2,9 @@
 #pragma once
 /// \file
 /// Closed forms of one piece of elastic catenary with end forces (H, V_A) at its start
-/// (docs/explanation/physics.md): its offset, the Jacobian of its end offset, its stretched length. The weight
-/// per length may be positive (sagging), zero (a straight bar) or negative (hogging), so the same
-/// forms serve the uniform cable and every piece of a general line.
+/// (docs/explanation/physics.md): its offset, the Jacobian of its end offset, its stretched length.
+/// The weight per length may be positive (sagging), zero (a straight bar) or negative (hogging), so
+/// the same forms serve the uniform cable and every piece of a general line.
 
 #include <Eigen/Dense>
 

@@ -20,8 +20,15 @@ namespace {
 
 // Appends a piece starting at `s` with start state (V, r, stretched) and advances the state to
 // its end.
-void append_piece(std::vector<StaticPiece>& pieces, const LineSegment& segment, std::size_t index, double s,
-                  double length, double H, double& V, Vec2& r, double& stretched) {
+void append_piece(std::vector<StaticPiece>& pieces,
+                  const LineSegment& segment,
+                  std::size_t index,
+                  double s,
+                  double length,
+                  double H,
+                  double& V,
+                  Vec2& r,
+                  double& stretched) {
   StaticPiece piece{section_of(segment, length), index, s, V, r, stretched};
   r += offset(piece.section, H, V, length);
   stretched += stretched_increment(piece.section, H, V, length);
@@ -59,12 +66,14 @@ std::vector<StaticPiece> build_line_pieces(const Line& line, double H, double V_
 
 Vec2 line_end_offset(const std::vector<StaticPiece>& pieces, double H) {
   const StaticPiece& last = pieces.back();
-  return last.offset_begin_m + offset(last.section, H, last.vertical_begin_n, last.section.length_m);
+  return last.offset_begin_m +
+         offset(last.section, H, last.vertical_begin_n, last.section.length_m);
 }
 
 Eigen::Matrix2d line_end_jacobian(const std::vector<StaticPiece>& pieces, double H) {
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
-  for (const StaticPiece& piece : pieces) J += offset_jacobian(piece.section, H, piece.vertical_begin_n);
+  for (const StaticPiece& piece : pieces)
+    J += offset_jacobian(piece.section, H, piece.vertical_begin_n);
   return J;
 }
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The pieces of a general line's statics (docs/explanation/physics.md, "General lines"): the line cut at
-/// every joint and point attachment, each piece a closed-form catenary, chained by continuity of
-/// position and H and by the jump of V at each point's weight.
+/// The pieces of a general line's statics (docs/explanation/physics.md, "General lines"): the line
+/// cut at every joint and point attachment, each piece a closed-form catenary, chained by
+/// continuity of position and H and by the jump of V at each point's weight.
 
 #include <Eigen/Dense>
 #include <vector>

@@ -33,7 +33,9 @@ double grounded_weight_beyond(const Line& line, double s, double grounded_length
 // Where the friction tension H - C_B W(s) reaches 0 (it grows with s), found by bisection to
 // adjacent doubles; -1 when it stays positive down to A.
 double slack_end(const Line& line, double friction, double H, double grounded_length) {
-  auto tension = [&](double s) { return H - friction * grounded_weight_beyond(line, s, grounded_length); };
+  auto tension = [&](double s) {
+    return H - friction * grounded_weight_beyond(line, s, grounded_length);
+  };
   if (friction == 0.0 || tension(0.0) >= 0.0) return -1.0;
   double lo = 0.0;
   double hi = grounded_length;
@@ -91,7 +93,8 @@ Line line_beyond(const Line& line, double s_m, std::size_t& first_segment) {
 }
 
 double grounded_tension(const StaticPiece& piece, double friction, double ds) {
-  return std::max(piece.grounded_tension_begin_n + friction * piece.section.weight_n_per_m * ds, 0.0);
+  return std::max(piece.grounded_tension_begin_n + friction * piece.section.weight_n_per_m * ds,
+                  0.0);
 }
 
 double grounded_stretched_increment(const StaticPiece& piece, double friction, double ds) {
@@ -108,7 +111,10 @@ double grounded_stretched_increment(const StaticPiece& piece, double friction, d
   return ds + inverse_stiffness(piece.section) * std::max(integral, 0.0);
 }
 
-std::vector<StaticPiece> build_seabed_pieces(const Line& line, double friction, double seabed_offset_z_m, double H,
+std::vector<StaticPiece> build_seabed_pieces(const Line& line,
+                                             double friction,
+                                             double seabed_offset_z_m,
+                                             double H,
                                              double grounded_length_m) {
   std::vector<StaticPiece> pieces;
   const double slack = slack_end(line, friction, H, grounded_length_m);
@@ -117,9 +123,11 @@ std::vector<StaticPiece> build_seabed_pieces(const Line& line, double friction, 
   for (std::size_t i = 0; i + 1 < cuts.size() && grounded_length_m > 0.0; ++i) {
     const std::size_t k = segment_index(line, cuts[i]);
     const double length = cuts[i + 1] - cuts[i];
-    StaticPiece piece{section_of(line.segments[k], length), k, cuts[i], 0.0, Vec2(x, seabed_offset_z_m), x};
+    StaticPiece piece{section_of(line.segments[k], length), k, cuts[i], 0.0,
+                      Vec2(x, seabed_offset_z_m),           x};
     piece.grounded = true;
-    piece.grounded_tension_begin_n = H - friction * grounded_weight_beyond(line, cuts[i], grounded_length_m);
+    piece.grounded_tension_begin_n =
+        H - friction * grounded_weight_beyond(line, cuts[i], grounded_length_m);
     x += grounded_stretched_increment(piece, friction, length);
     pieces.push_back(piece);
   }

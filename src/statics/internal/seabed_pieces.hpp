@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The pieces of a line resting partly on a flat seabed (docs/explanation/physics.md, "Seabed contact"): the
-/// grounded pieces (straight, horizontal, tension set by Coulomb friction) from A to the touchdown
-/// point, then the suspended pieces of a general line leaving the seabed with V = 0.
+/// The pieces of a line resting partly on a flat seabed (docs/explanation/physics.md, "Seabed
+/// contact"): the grounded pieces (straight, horizontal, tension set by Coulomb friction) from A to
+/// the touchdown point, then the suspended pieces of a general line leaving the seabed with V = 0.
 
 #include <vector>
 
@@ -20,7 +20,10 @@ Line line_beyond(const Line& line, double s_m, std::size_t& first_segment);
 /// The pieces of `line` (validated) on a seabed at height `seabed_offset_z_m` relative to A, with
 /// grounded length `grounded_length_m` (in [0, L)), friction coefficient `friction` and suspended
 /// horizontal force `H` (> 0). Offsets are relative to A.
-std::vector<StaticPiece> build_seabed_pieces(const Line& line, double friction, double seabed_offset_z_m, double H,
+std::vector<StaticPiece> build_seabed_pieces(const Line& line,
+                                             double friction,
+                                             double seabed_offset_z_m,
+                                             double H,
                                              double grounded_length_m);
 
 /// Tension of a grounded piece at `ds` from its start [N]: max(T_begin + C_B w ds, 0).

@@ -1,21 +1,25 @@
 // SPDX-License-Identifier: MIT
 #include "verification/internal/check_builder.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "catena/verification/independence.hpp"
 
 namespace catena::internal {
 namespace {
 
-// Whatever a tolerance says, a relative difference above this is a gross disagreement (docs/reference/verdicts.md).
+// Whatever a tolerance says, a relative difference above this is a gross disagreement
+// (docs/reference/verdicts.md).
 constexpr double kGrossRelative = kGrossRelativeDifference;
 
 }  // namespace
 
-const char* plane_name(Plane plane) { return plane == Plane::InPlane ? "in-plane" : "out-of-plane"; }
+const char* plane_name(Plane plane) {
+  return plane == Plane::InPlane ? "in-plane" : "out-of-plane";
+}
 
 double relative_difference(double a, double b) {
   const double scale = std::max(std::abs(a), std::abs(b));
@@ -36,22 +40,30 @@ ModelParameters model_parameters(const SceneResult& result) {
   return parameters;
 }
 
-CheckBuilder::CheckBuilder(const SceneResult& result, const ToleranceTable& tolerances,
-                           const FindingsTable& findings, const std::vector<SolverEntry>& solvers)
-    : result_(result), tolerances_(tolerances), findings_(findings), solvers_(solvers),
+CheckBuilder::CheckBuilder(const SceneResult& result,
+                           const ToleranceTable& tolerances,
+                           const FindingsTable& findings,
+                           const std::vector<SolverEntry>& solvers)
+    : result_(result),
+      tolerances_(tolerances),
+      findings_(findings),
+      solvers_(solvers),
       parameters_(model_parameters(result)) {}
 
-std::optional<CheckBuilder::Tolerance> CheckBuilder::tolerance(const std::string& check, const std::string& a,
-                                                               const std::string& b,
-                                                               std::optional<double> scene_override) const {
+std::optional<CheckBuilder::Tolerance> CheckBuilder::tolerance(
+    const std::string& check,
+    const std::string& a,
+    const std::string& b,
+    std::optional<double> scene_override) const {
   if (scene_override) return Tolerance{*scene_override, "scene [checks] override"};
   const ToleranceRule* rule = tolerances_.find(check, a, b, result_.scene.name, result_.scene.tags);
   if (!rule) return std::nullopt;
   return Tolerance{rule->tolerance(parameters_), rule->reason, rule->warn_only};
 }
 
-std::optional<CheckBuilder::ForcedTolerance> CheckBuilder::forced_tolerance(const std::string& a, const std::string& b,
-                                                                          double omega) const {
+std::optional<CheckBuilder::ForcedTolerance> CheckBuilder::forced_tolerance(const std::string& a,
+                                                                            const std::string& b,
+                                                                            double omega) const {
   const auto rule = tolerance("forced", a, b, result_.scene.checks.tension_rel);
   if (!rule) return std::nullopt;
   const ForcedConditioning& conditioning = result_.forced_conditioning;
@@ -61,11 +73,12 @@ std::optional<CheckBuilder::ForcedTolerance> CheckBuilder::forced_tolerance(cons
   out.tolerance = *rule;
   out.tolerance.value = out.max * out.kappa;
   out.checkable = out.tolerance.value <= kMostConditionedForcedTolerance;
-  const std::string source = conditioning.covers(omega)
-                                 ? fmt::format("from {}'s natural frequencies", conditioning.solver)
-                                 : fmt::format("conditioning unknown, the strictest: {}", conditioning.note);
-  out.note = fmt::format("tolerance {:.1e} x kappa {:.3g} ({}) = {:.2e}", out.max, out.kappa, source,
-                         out.tolerance.value);
+  const std::string source =
+      conditioning.covers(omega)
+          ? fmt::format("from {}'s natural frequencies", conditioning.solver)
+          : fmt::format("conditioning unknown, the strictest: {}", conditioning.note);
+  out.note = fmt::format("tolerance {:.1e} x kappa {:.3g} ({}) = {:.2e}", out.max, out.kappa,
+                         source, out.tolerance.value);
   return out;
 }
 
@@ -76,26 +89,32 @@ const SolverEntry* CheckBuilder::entry(const std::string& name) const {
   return nullptr;
 }
 
-std::optional<std::string> CheckBuilder::shared(const std::string& a, const std::string& b,
+std::optional<std::string> CheckBuilder::shared(const std::string& a,
+                                                const std::string& b,
                                                 const std::string& quantity) const {
   const SolverEntry* x = entry(a);
   const SolverEntry* y = entry(b);
   return x && y ? shared_computation(*x, *y, quantity) : std::nullopt;
 }
 
-bool CheckBuilder::independent(const std::string& a, const std::string& b, const std::string& quantity,
-                               const std::string& check, const std::string& plane) {
+bool CheckBuilder::independent(const std::string& a,
+                               const std::string& b,
+                               const std::string& quantity,
+                               const std::string& check,
+                               const std::string& plane) {
   const auto id = shared(a, b, quantity);
   if (!id) return true;
   CheckResult skip = base(check, a + " vs " + b, plane, 0);
   skip.verdict = Verdict::Skipped;
-  skip.detail = fmt::format("{}{} (both solvers compute {} by it: one witness, not two)", kSharedComputationDetail,
-                            *id, quantity);
+  skip.detail = fmt::format("{}{} (both solvers compute {} by it: one witness, not two)",
+                            kSharedComputationDetail, *id, quantity);
   add(std::move(skip));
   return false;
 }
 
-CheckResult CheckBuilder::base(const std::string& check, const std::string& compare, const std::string& plane,
+CheckResult CheckBuilder::base(const std::string& check,
+                               const std::string& compare,
+                               const std::string& plane,
                                int mode) const {
   CheckResult c;
   c.scene = result_.scene.name;
@@ -109,7 +128,10 @@ CheckResult CheckBuilder::base(const std::string& check, const std::string& comp
 
 void CheckBuilder::add(CheckResult check) { checks_.push_back(std::move(check)); }
 
-void CheckBuilder::add_measured(CheckResult check, double measured, const Tolerance& tol, bool relative) {
+void CheckBuilder::add_measured(CheckResult check,
+                                double measured,
+                                const Tolerance& tol,
+                                bool relative) {
   check.measured = measured;
   check.tolerance = tol.value;
   if (!std::isfinite(measured)) {

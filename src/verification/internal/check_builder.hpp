@@ -2,7 +2,8 @@
 #pragma once
 /// \file
 /// Collects the checks of one scene: their common fields, tolerances from the reviewed table (never
-/// from a solver's own estimate), the verdict rules, and the independence rule (docs/reference/verdicts.md).
+/// from a solver's own estimate), the verdict rules, and the independence rule
+/// (docs/reference/verdicts.md).
 
 #include <optional>
 #include <string>
@@ -32,7 +33,9 @@ ModelParameters model_parameters(const SceneResult& result);
 class CheckBuilder {
  public:
   /// `solvers`: the solvers' declarations of their computations (normally solver_registry()).
-  CheckBuilder(const SceneResult& result, const ToleranceTable& tolerances, const FindingsTable& findings,
+  CheckBuilder(const SceneResult& result,
+               const ToleranceTable& tolerances,
+               const FindingsTable& findings,
                const std::vector<SolverEntry>& solvers);
 
   const SceneResult& result() const { return result_; }
@@ -47,13 +50,16 @@ class CheckBuilder {
   };
   /// The tolerance for `check` between a and b: the scene's [checks] override, else the first
   /// matching rule evaluated on the scene's model parameters; nullopt when neither exists.
-  std::optional<Tolerance> tolerance(const std::string& check, const std::string& a, const std::string& b,
+  std::optional<Tolerance> tolerance(const std::string& check,
+                                     const std::string& a,
+                                     const std::string& b,
                                      std::optional<double> scene_override) const;
 
   /// The forced tolerance at forcing frequency `omega`: the rule's max (or the scene's override)
-  /// times the response's condition number kappa(omega) (catena/verification/forced_conditioning.hpp,
-  /// from the most accurate exact solver's natural frequencies, never from an estimate).
-  /// `checkable` is false when that would exceed kMostConditionedForcedTolerance.
+  /// times the response's condition number kappa(omega)
+  /// (catena/verification/forced_conditioning.hpp, from the most accurate exact solver's natural
+  /// frequencies, never from an estimate). `checkable` is false when that would exceed
+  /// kMostConditionedForcedTolerance.
   struct ForcedTolerance {
     Tolerance tolerance;  // value = max x kappa
     double max = 0.0;
@@ -61,16 +67,26 @@ class CheckBuilder {
     bool checkable = true;
     std::string note;  // "tolerance <max> x kappa <kappa> (<source>) = <value>"
   };
-  std::optional<ForcedTolerance> forced_tolerance(const std::string& a, const std::string& b, double omega) const;
+  std::optional<ForcedTolerance> forced_tolerance(const std::string& a,
+                                                  const std::string& b,
+                                                  double omega) const;
 
   /// The computation id solvers a and b share for `quantity`, if any.
-  std::optional<std::string> shared(const std::string& a, const std::string& b, const std::string& quantity) const;
+  std::optional<std::string> shared(const std::string& a,
+                                    const std::string& b,
+                                    const std::string& quantity) const;
   /// False, after recording one SKIP (kind `check`) naming the shared id, when a and b share the
   /// computation of `quantity`; true when they may be compared.
-  bool independent(const std::string& a, const std::string& b, const std::string& quantity,
-                   const std::string& check, const std::string& plane);
+  bool independent(const std::string& a,
+                   const std::string& b,
+                   const std::string& quantity,
+                   const std::string& check,
+                   const std::string& plane);
 
-  CheckResult base(const std::string& check, const std::string& compare, const std::string& plane, int mode) const;
+  CheckResult base(const std::string& check,
+                   const std::string& compare,
+                   const std::string& plane,
+                   int mode) const;
   void add(CheckResult check);
   /// measured <= tolerance, with the gross and non-finite rules.
   void add_measured(CheckResult check, double measured, const Tolerance& tol, bool relative);

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "verification/internal/checks.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <limits>
 #include <map>
 
@@ -23,7 +24,9 @@ namespace {
 // a wrong equilibrium.
 constexpr double kStaticsClosureRel = 1e-9;
 
-const ModalResult* modal(const SolverOutput& output, Plane plane) { return modal_of(output, plane); }
+const ModalResult* modal(const SolverOutput& output, Plane plane) {
+  return modal_of(output, plane);
+}
 
 void statics_closure(const SceneResult& result, CheckBuilder& builder) {
   CheckResult check = builder.base("statics-closure", "statics vs supports", "", 0);
@@ -32,8 +35,8 @@ void statics_closure(const SceneResult& result, CheckBuilder& builder) {
   check.measured = result.statics->closure_error_m / std::max(L, chord);
   check.tolerance = kStaticsClosureRel;
   check.verdict = check.measured <= check.tolerance ? Verdict::Pass : Verdict::Fail;
-  check.detail = fmt::format("closure error {:.3e} m on a cable of {} m ({})", result.statics->closure_error_m,
-                             L, result.statics->brief_report());
+  check.detail = fmt::format("closure error {:.3e} m on a cable of {} m ({})",
+                             result.statics->closure_error_m, L, result.statics->brief_report());
   builder.add(check);
 }
 
@@ -41,10 +44,18 @@ void solver_status(const SolverOutput& output, CheckBuilder& builder) {
   CheckResult check = builder.base("solver-status", output.solver, "", 0);
   check.detail = output.summary.brief_report();
   switch (output.summary.termination) {
-    case Termination::Converged: check.verdict = Verdict::Pass; break;
-    case Termination::NotApplicable: check.verdict = Verdict::Skipped; break;
-    case Termination::NoConvergence: check.verdict = Verdict::Warn; break;
-    case Termination::NumericalFailure: check.verdict = Verdict::Fail; break;
+    case Termination::Converged:
+      check.verdict = Verdict::Pass;
+      break;
+    case Termination::NotApplicable:
+      check.verdict = Verdict::Skipped;
+      break;
+    case Termination::NoConvergence:
+      check.verdict = Verdict::Warn;
+      break;
+    case Termination::NumericalFailure:
+      check.verdict = Verdict::Fail;
+      break;
   }
   builder.add(check);
 }
@@ -58,16 +69,20 @@ void mode_count(const SolverOutput& output, Plane plane, CheckBuilder& builder) 
   check.measured = std::abs(check.value_a - check.value_b);
   check.tolerance = 0.0;
   check.verdict = check.measured == 0.0 ? Verdict::Pass : Verdict::Fail;
-  check.detail = fmt::format("{} eigenvalues proved at or below the top returned frequency, {} returned",
-                             m->proved_count_below_top, m->modes.size());
+  check.detail =
+      fmt::format("{} eigenvalues proved at or below the top returned frequency, {} returned",
+                  m->proved_count_below_top, m->modes.size());
   builder.add(check);
 }
 
 // A mode its solver declared beyond its own accuracy target (Mode::meets_target, listed in the
 // summary's missed_modes) is still compared, but a disagreement is the WARN the solver announced,
-// not a FAIL (docs/reference/verdicts.md, "Declared misses"); the estimate check still holds the declared
-// estimate to the actual error.
-CheckBuilder::Tolerance declared_miss(CheckBuilder::Tolerance tol, const Mode& x, const Mode& y, CheckResult& check) {
+// not a FAIL (docs/reference/verdicts.md, "Declared misses"); the estimate check still holds the
+// declared estimate to the actual error.
+CheckBuilder::Tolerance declared_miss(CheckBuilder::Tolerance tol,
+                                      const Mode& x,
+                                      const Mode& y,
+                                      CheckResult& check) {
   if (x.meets_target && y.meets_target) return tol;
   tol.warn_only = true;
   check.detail += "; declared beyond its solver's accuracy target (missed_modes)";
@@ -78,10 +93,13 @@ CheckBuilder::Tolerance declared_miss(CheckBuilder::Tolerance tol, const Mode& x
 // the scene's knobs, never by an estimate) are held to the sum of those targets where it is below
 // the table's rule: a scene that asks shooting for 1e-12 sees a 1e-10 change of frobenius. The
 // rule stays the ceiling, so no tolerance ever widens (docs/reference/verdicts.md, "Tolerances").
-std::optional<CheckBuilder::Tolerance> tightened_by_targets(std::optional<CheckBuilder::Tolerance> tol,
-                                                            const CheckBuilder& builder, const SolverOutput& a,
-                                                            const SolverOutput& b, const ModalResult& ma,
-                                                            const ModalResult& mb) {
+std::optional<CheckBuilder::Tolerance> tightened_by_targets(
+    std::optional<CheckBuilder::Tolerance> tol,
+    const CheckBuilder& builder,
+    const SolverOutput& a,
+    const SolverOutput& b,
+    const ModalResult& ma,
+    const ModalResult& mb) {
   const SolverAccuracy* da = builder.tolerances().solver(a.solver);
   const SolverAccuracy* db = builder.tolerances().solver(b.solver);
   const double ta = ma.summary.accuracy_target, tb = mb.summary.accuracy_target;
@@ -89,17 +107,21 @@ std::optional<CheckBuilder::Tolerance> tightened_by_targets(std::optional<CheckB
   if (!(ta + tb < tol->value)) return tol;
   tol->value = ta + tb;
   tol->reason = fmt::format(
-      "the sum of the accuracy targets the scene asked ({} {:.2g} + {} {:.2g}), below the rule: {}", a.solver, ta,
-      b.solver, tb, tol->reason);
+      "the sum of the accuracy targets the scene asked ({} {:.2g} + {} {:.2g}), below the rule: {}",
+      a.solver, ta, b.solver, tb, tol->reason);
   return tol;
 }
 
-void frequency_pair(const SceneResult& result, const SolverOutput& a, const SolverOutput& b, Plane plane,
+void frequency_pair(const SceneResult& result,
+                    const SolverOutput& a,
+                    const SolverOutput& b,
+                    Plane plane,
                     CheckBuilder& builder) {
   const ModalResult* ma = modal(a, plane);
   const ModalResult* mb = modal(b, plane);
   if (!ma || !mb) return;
-  const std::string quantity = plane == Plane::InPlane ? "frequency-in-plane" : "frequency-out-of-plane";
+  const std::string quantity =
+      plane == Plane::InPlane ? "frequency-in-plane" : "frequency-out-of-plane";
   if (!builder.independent(a.solver, b.solver, quantity, "frequency", plane_name(plane))) return;
   std::optional<CheckBuilder::Tolerance> tol =
       builder.tolerance("frequency", a.solver, b.solver, result.scene.checks.frequency_rel);
@@ -108,14 +130,16 @@ void frequency_pair(const SceneResult& result, const SolverOutput& a, const Solv
   for (std::size_t i = 0; i < n; ++i) {
     const Mode& x = ma->modes[i];
     const Mode& y = mb->modes[i];
-    CheckResult check = builder.base("frequency", a.solver + " vs " + b.solver, plane_name(plane), x.index);
+    CheckResult check =
+        builder.base("frequency", a.solver + " vs " + b.solver, plane_name(plane), x.index);
     check.value_a = x.omega_rad_s;
     check.value_b = y.omega_rad_s;
-    check.detail = fmt::format("omega {:.12g} vs {:.12g} rad/s (error estimates {:.1e}, {:.1e})", x.omega_rad_s,
-                               y.omega_rad_s, x.relative_error_estimate, y.relative_error_estimate);
+    check.detail = fmt::format("omega {:.12g} vs {:.12g} rad/s (error estimates {:.1e}, {:.1e})",
+                               x.omega_rad_s, y.omega_rad_s, x.relative_error_estimate,
+                               y.relative_error_estimate);
     if (!tol) continue;
-    builder.add_measured(check, relative_difference(x.omega_rad_s, y.omega_rad_s), declared_miss(*tol, x, y, check),
-                         true);
+    builder.add_measured(check, relative_difference(x.omega_rad_s, y.omega_rad_s),
+                         declared_miss(*tol, x, y, check), true);
   }
 }
 
@@ -133,24 +157,32 @@ double integrate(const Vector& s, const Vector& f) {
   return sum * h / 3.0;
 }
 
-void shape_pair(const SceneResult& result, const SolverOutput& a, const SolverOutput& b, Plane plane,
+void shape_pair(const SceneResult& result,
+                const SolverOutput& a,
+                const SolverOutput& b,
+                Plane plane,
                 CheckBuilder& builder) {
   const ModalResult* ma = modal(a, plane);
   const ModalResult* mb = modal(b, plane);
-  if (!ma || !mb || !has_stacked_shape(ma->modes[0], plane) || !has_stacked_shape(mb->modes[0], plane)) return;
+  if (!ma || !mb || !has_stacked_shape(ma->modes[0], plane) ||
+      !has_stacked_shape(mb->modes[0], plane))
+    return;
   const std::string quantity = plane == Plane::InPlane ? "shape-in-plane" : "shape-out-of-plane";
   if (!builder.independent(a.solver, b.solver, quantity, "shape", plane_name(plane))) return;
   const std::size_t n = std::min(ma->modes.size(), mb->modes.size());
   for (std::size_t i = 0; i < n; ++i) {
     const Mode& x = ma->modes[i];
     const Mode& y = mb->modes[i];
-    if (!has_stacked_shape(x, plane) || !has_stacked_shape(y, plane) || x.s_m.size() != y.s_m.size()) continue;
+    if (!has_stacked_shape(x, plane) || !has_stacked_shape(y, plane) ||
+        x.s_m.size() != y.s_m.size())
+      continue;
     const Vector p = stacked_shape(x, plane), q = stacked_shape(y, plane);
     const double mac = std::pow(p.dot(q), 2) / (p.squaredNorm() * q.squaredNorm());
     const std::string compare = a.solver + " vs " + b.solver;
     if (auto tol = builder.tolerance("mac", a.solver, b.solver,
-                                     result.scene.checks.mac_min ? std::optional(1.0 - *result.scene.checks.mac_min)
-                                                                 : std::nullopt)) {
+                                     result.scene.checks.mac_min
+                                         ? std::optional(1.0 - *result.scene.checks.mac_min)
+                                         : std::nullopt)) {
       CheckResult check = builder.base("mac", compare, plane_name(plane), x.index);
       check.value_a = mac;
       check.detail = fmt::format("MAC = {:.9f} (measured: 1 - MAC)", mac);
@@ -158,8 +190,10 @@ void shape_pair(const SceneResult& result, const SolverOutput& a, const SolverOu
     }
     // Max difference of the normalised shapes, signs aligned.
     const double sign = p.dot(q) < 0.0 ? -1.0 : 1.0;
-    const double max_diff = (p - sign * q).cwiseAbs().maxCoeff() / std::max(p.cwiseAbs().maxCoeff(), 1e-300);
-    if (auto tol = builder.tolerance("shape", a.solver, b.solver, result.scene.checks.shape_max_diff)) {
+    const double max_diff =
+        (p - sign * q).cwiseAbs().maxCoeff() / std::max(p.cwiseAbs().maxCoeff(), 1e-300);
+    if (auto tol =
+            builder.tolerance("shape", a.solver, b.solver, result.scene.checks.shape_max_diff)) {
       CheckResult check = builder.base("shape", compare, plane_name(plane), x.index);
       check.detail = "max |shape_a - shape_b| / max |shape_a| over the stations";
       builder.add_measured(check, max_diff, *tol, false);
@@ -167,7 +201,10 @@ void shape_pair(const SceneResult& result, const SolverOutput& a, const SolverOu
   }
 }
 
-void tension_pair(const SceneResult& result, const SolverOutput& a, const SolverOutput& b, Plane plane,
+void tension_pair(const SceneResult& result,
+                  const SolverOutput& a,
+                  const SolverOutput& b,
+                  Plane plane,
                   CheckBuilder& builder) {
   const ModalResult* ma = modal(a, plane);
   const ModalResult* mb = modal(b, plane);
@@ -180,14 +217,17 @@ void tension_pair(const SceneResult& result, const SolverOutput& a, const Solver
     const Mode& y = mb->modes[i];
     if (x.max_abs_tension_n < 0.0 || y.max_abs_tension_n < 0.0) continue;
     if (x.normalised_by != y.normalised_by) continue;
-    const auto tol = builder.tolerance("tension", a.solver, b.solver, result.scene.checks.tension_rel);
+    const auto tol =
+        builder.tolerance("tension", a.solver, b.solver, result.scene.checks.tension_rel);
     if (!tol) continue;
-    CheckResult check = builder.base("tension", a.solver + " vs " + b.solver, plane_name(plane), x.index);
+    CheckResult check =
+        builder.base("tension", a.solver + " vs " + b.solver, plane_name(plane), x.index);
     check.value_a = x.max_abs_tension_n;
     check.value_b = y.max_abs_tension_n;
-    check.detail = fmt::format("max |tau| {:.9g} vs {:.9g} N per unit max |{}|", x.max_abs_tension_n,
-                               y.max_abs_tension_n, x.normalised_by);
-    builder.add_measured(check, relative_difference(x.max_abs_tension_n, y.max_abs_tension_n), *tol, true);
+    check.detail = fmt::format("max |tau| {:.9g} vs {:.9g} N per unit max |{}|",
+                               x.max_abs_tension_n, y.max_abs_tension_n, x.normalised_by);
+    builder.add_measured(check, relative_difference(x.max_abs_tension_n, y.max_abs_tension_n), *tol,
+                         true);
   }
 }
 
@@ -197,8 +237,11 @@ void tension_pair(const SceneResult& result, const SolverOutput& a, const Solver
 // response: consistent only when the other flags it near_resonance (resonance-amplified, within
 // the first solver's accuracy of a natural frequency); a finite response nobody flags contradicts
 // the resonance claim, and one of the two answers is wrong: FAIL.
-void resonance_claim(const ForcedResponse& x, const ForcedResponse& y, const std::string& solver_x,
-                     const std::string& solver_y, CheckResult& check) {
+void resonance_claim(const ForcedResponse& x,
+                     const ForcedResponse& y,
+                     const std::string& solver_x,
+                     const std::string& solver_y,
+                     CheckResult& check) {
   check.verdict = Verdict::Skipped;
   const bool x_finite = x.diagnostic.empty(), y_finite = y.diagnostic.empty();
   const ForcedResponse& claim = x_finite ? y : x;
@@ -210,32 +253,38 @@ void resonance_claim(const ForcedResponse& x, const ForcedResponse& y, const std
   const std::string& claimant = x_finite ? solver_y : solver_x;
   const std::string& other = x_finite ? solver_x : solver_y;
   if (!claim.at_resonance) {
-    check.detail = fmt::format("not compared: {} declined this frequency: {}", claimant, claim.diagnostic);
+    check.detail =
+        fmt::format("not compared: {} declined this frequency: {}", claimant, claim.diagnostic);
   } else if (finite.near_resonance) {
-    check.detail = fmt::format("not compared: {} is at resonance within its accuracy ({}); {} flags its finite "
-                               "response near a natural frequency (error estimate {:.1e})",
-                               claimant, claim.diagnostic, other, finite.relative_error_estimate);
+    check.detail = fmt::format(
+        "not compared: {} is at resonance within its accuracy ({}); {} flags its finite "
+        "response near a natural frequency (error estimate {:.1e})",
+        claimant, claim.diagnostic, other, finite.relative_error_estimate);
   } else {
     check.verdict = Verdict::Fail;
-    check.detail = fmt::format("contradiction: {} says resonance ({}) while {} gives a finite response, max |tau| = "
-                               "{:.9g} N (error estimate {:.1e}), not flagged near a natural frequency",
-                               claimant, claim.diagnostic, other, finite.max_abs_tension_n,
-                               finite.relative_error_estimate);
+    check.detail = fmt::format(
+        "contradiction: {} says resonance ({}) while {} gives a finite response, max |tau| = "
+        "{:.9g} N (error estimate {:.1e}), not flagged near a natural frequency",
+        claimant, claim.diagnostic, other, finite.max_abs_tension_n,
+        finite.relative_error_estimate);
   }
 }
 
 // The forced check held to max x kappa(Omega) (CheckBuilder::forced_tolerance); beyond the largest
 // conditioned tolerance a WARN "at resonance, not checkable", unless the difference is gross.
-void conditioned_forced_check(CheckResult& check, double measured, const CheckBuilder::ForcedTolerance& tol,
+void conditioned_forced_check(CheckResult& check,
+                              double measured,
+                              const CheckBuilder::ForcedTolerance& tol,
                               CheckBuilder& builder) {
   check.detail += "; " + tol.note;
   if (!tol.checkable && measured <= kGrossRelativeDifference) {
     check.measured = measured;
     check.tolerance = tol.tolerance.value;
     check.verdict = Verdict::Warn;
-    check.detail = fmt::format("at resonance, not checkable: kappa = {:.3g} would allow more than {:g}; ", tol.kappa,
-                               kMostConditionedForcedTolerance) +
-                   check.detail + "; tolerance: " + tol.tolerance.reason;
+    check.detail =
+        fmt::format("at resonance, not checkable: kappa = {:.3g} would allow more than {:g}; ",
+                    tol.kappa, kMostConditionedForcedTolerance) +
+        check.detail + "; tolerance: " + tol.tolerance.reason;
     builder.add(check);
     return;
   }
@@ -248,7 +297,8 @@ void forced_pair(const SolverOutput& a, const SolverOutput& b, CheckBuilder& bui
   for (std::size_t i = 0; i < n; ++i) {
     const ForcedResponse& x = a.forced[i];
     const ForcedResponse& y = b.forced[i];
-    CheckResult check = builder.base("forced", a.solver + " vs " + b.solver, "forced", static_cast<int>(i + 1));
+    CheckResult check =
+        builder.base("forced", a.solver + " vs " + b.solver, "forced", static_cast<int>(i + 1));
     check.value_a = x.max_abs_tension_n;
     check.value_b = y.max_abs_tension_n;
     if (!x.diagnostic.empty() || !y.diagnostic.empty()) {
@@ -258,14 +308,19 @@ void forced_pair(const SolverOutput& a, const SolverOutput& b, CheckBuilder& bui
     }
     const auto tol = builder.forced_tolerance(a.solver, b.solver, x.omega_rad_s);
     if (!tol) continue;
-    check.detail = fmt::format("max |tau| at {:.6g} rad/s: {:.9g} vs {:.9g} N (error estimates {:.1e}, {:.1e})",
-                               x.omega_rad_s, x.max_abs_tension_n, y.max_abs_tension_n, x.relative_error_estimate,
-                               y.relative_error_estimate);
-    conditioned_forced_check(check, relative_difference(x.max_abs_tension_n, y.max_abs_tension_n), *tol, builder);
+    check.detail = fmt::format(
+        "max |tau| at {:.6g} rad/s: {:.9g} vs {:.9g} N (error estimates {:.1e}, {:.1e})",
+        x.omega_rad_s, x.max_abs_tension_n, y.max_abs_tension_n, x.relative_error_estimate,
+        y.relative_error_estimate);
+    conditioned_forced_check(check, relative_difference(x.max_abs_tension_n, y.max_abs_tension_n),
+                             *tol, builder);
   }
 }
 
-void orthogonality(const SceneResult& result, const SolverOutput& output, Plane plane, CheckBuilder& builder) {
+void orthogonality(const SceneResult& result,
+                   const SolverOutput& output,
+                   Plane plane,
+                   CheckBuilder& builder) {
   const ModalResult* m = modal(output, plane);
   if (!m || m->modes.size() < 2 || !has_stacked_shape(m->modes[0], plane)) return;
   if (!result.scene.problem.is_uniform()) {
@@ -274,17 +329,20 @@ void orthogonality(const SceneResult& result, const SolverOutput& output, Plane 
     // across them is O(h), not the O(h^4) the tolerance assumes, so the check could not tell.
     CheckResult skip = builder.base("orthogonality", output.solver, plane_name(plane), 0);
     skip.verdict = Verdict::Skipped;
-    skip.detail = "not checked on a general line: the stations do not resolve its joints and points (the mass "
-                  "density jumps and point masses the M-inner product needs)";
+    skip.detail =
+        "not checked on a general line: the stations do not resolve its joints and points (the "
+        "mass "
+        "density jumps and point masses the M-inner product needs)";
     builder.add(std::move(skip));
     return;
   }
   const double mass = result.scene.problem.cable.mass_kg_per_m;
   const double normal_mass = result.scene.problem.cable.normal_mass_kg_per_m();
   auto inner = [&](const Mode& x, const Mode& y) {
-    const Vector density = plane == Plane::InPlane
-                               ? Vector(mass * x.u.cwiseProduct(y.u) + normal_mass * x.w.cwiseProduct(y.w))
-                               : Vector(normal_mass * x.v.cwiseProduct(y.v));
+    const Vector density =
+        plane == Plane::InPlane
+            ? Vector(mass * x.u.cwiseProduct(y.u) + normal_mass * x.w.cwiseProduct(y.w))
+            : Vector(normal_mass * x.v.cwiseProduct(y.v));
     return integrate(x.s_m, density);
   };
   double worst = 0.0;
@@ -302,16 +360,20 @@ void orthogonality(const SceneResult& result, const SolverOutput& output, Plane 
       }
     }
   }
-  const auto tol = builder.tolerance("orthogonality", output.solver, output.solver, result.scene.checks.orthogonality);
+  const auto tol = builder.tolerance("orthogonality", output.solver, output.solver,
+                                     result.scene.checks.orthogonality);
   if (!tol) return;
   CheckResult check = builder.base("orthogonality", output.solver, plane_name(plane), 0);
-  check.detail = fmt::format("max |<phi_i, phi_j>_M| / (|phi_i| |phi_j|) over mode pairs, at modes {} and {}",
-                             worst_i, worst_j);
+  check.detail =
+      fmt::format("max |<phi_i, phi_j>_M| / (|phi_i| |phi_j|) over mode pairs, at modes {} and {}",
+                  worst_i, worst_j);
   builder.add_measured(check, worst, *tol, false);
 }
 
 // The pair checks of one plane, and each solver's own mode count and orthogonality.
-void plane_checks(const SceneResult& result, const std::vector<const SolverOutput*>& usable, Plane plane,
+void plane_checks(const SceneResult& result,
+                  const std::vector<const SolverOutput*>& usable,
+                  Plane plane,
                   CheckBuilder& builder) {
   for (const SolverOutput* output : usable) mode_count(*output, plane, builder);
   for (std::size_t i = 0; i < usable.size(); ++i) {
@@ -326,8 +388,10 @@ void plane_checks(const SceneResult& result, const std::vector<const SolverOutpu
 
 }  // namespace
 
-std::vector<CheckResult> run_checks(const SceneResult& result, const ToleranceTable& tolerances,
-                                    const FindingsTable& findings, const std::vector<SolverEntry>& solvers) {
+std::vector<CheckResult> run_checks(const SceneResult& result,
+                                    const ToleranceTable& tolerances,
+                                    const FindingsTable& findings,
+                                    const std::vector<SolverEntry>& solvers) {
   CheckBuilder builder(result, tolerances, findings, solvers);
   if (!result.statics) return {};
   statics_closure(result, builder);
@@ -336,9 +400,11 @@ std::vector<CheckResult> run_checks(const SceneResult& result, const ToleranceTa
   for (const auto& output : result.outputs) {
     if (output.summary.is_usable()) usable.push_back(&output);
   }
-  for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) plane_checks(result, usable, plane, builder);
+  for (Plane plane : {Plane::InPlane, Plane::OutOfPlane})
+    plane_checks(result, usable, plane, builder);
   for (std::size_t i = 0; i < usable.size(); ++i) {
-    for (std::size_t j = i + 1; j < usable.size(); ++j) forced_pair(*usable[i], *usable[j], builder);
+    for (std::size_t j = i + 1; j < usable.size(); ++j)
+      forced_pair(*usable[i], *usable[j], builder);
   }
   estimate_checks(usable, builder);
   published_checks(builder);

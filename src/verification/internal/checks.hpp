@@ -17,7 +17,8 @@ namespace catena::internal {
 /// Tolerances come from `tolerances` (first matching rule) unless the scene overrides them;
 /// `findings` turns a reviewed disagreement with a published value into a source discrepancy;
 /// `solvers` declare the computations each solver owns (a pair sharing one is not compared).
-std::vector<CheckResult> run_checks(const SceneResult& result, const ToleranceTable& tolerances,
+std::vector<CheckResult> run_checks(const SceneResult& result,
+                                    const ToleranceTable& tolerances,
                                     const FindingsTable& findings,
                                     const std::vector<SolverEntry>& solvers = solver_registry());
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "verification/internal/estimate_checks.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <functional>
 #include <optional>
 
@@ -29,7 +30,9 @@ using ClaimOf = std::function<std::optional<Claim>(const SolverOutput&, bool as_
 // The accuracy the scene asked of the solver: the target the solver reported for the value (what
 // it promises: shooting's 10 rtol + root_tolerance, fe's tolerance), else its accuracy knob when
 // the scene sets it, else the table's default.
-double requested_accuracy(const SceneResult& result, const SolverAccuracy& accuracy, const Claim& claim) {
+double requested_accuracy(const SceneResult& result,
+                          const SolverAccuracy& accuracy,
+                          const Claim& claim) {
   if (claim.target > 0.0) return claim.target;
   const auto solver = result.scene.solvers.find(accuracy.name);
   if (!accuracy.accuracy_knob.empty() && solver != result.scene.solvers.end()) {
@@ -49,14 +52,19 @@ std::optional<Claim> usable_claim(double value, double estimate, double target =
 // The reference for `claimant`'s value at `place`: among the other solvers declared exact in the
 // table, Converged, not sharing the computation, with a finite value and an estimate, the one whose
 // estimate is smallest (the first on a tie).
-const SolverOutput* reference_for(const SolverOutput& claimant, const std::vector<const SolverOutput*>& usable,
-                                  const Place& place, const ClaimOf& claim_of, const CheckBuilder& builder,
+const SolverOutput* reference_for(const SolverOutput& claimant,
+                                  const std::vector<const SolverOutput*>& usable,
+                                  const Place& place,
+                                  const ClaimOf& claim_of,
+                                  const CheckBuilder& builder,
                                   Claim& reference_claim) {
   const SolverOutput* best = nullptr;
   for (const SolverOutput* other : usable) {
     if (other == &claimant || other->summary.termination != Termination::Converged) continue;
     const SolverAccuracy* accuracy = builder.tolerances().solver(other->solver);
-    if (!accuracy || !accuracy->exact || builder.shared(claimant.solver, other->solver, place.quantity)) continue;
+    if (!accuracy || !accuracy->exact ||
+        builder.shared(claimant.solver, other->solver, place.quantity))
+      continue;
     const auto claim = claim_of(*other, true);
     if (!claim || !std::isfinite(claim->value)) continue;
     if (!best || claim->estimate < reference_claim.estimate) {
@@ -80,29 +88,37 @@ void judge(CheckResult& check, const Claim& claim, const Claim& reference, doubl
   if (!std::isfinite(claim.value) || !(actual <= check.tolerance)) {
     check.verdict = Verdict::Fail;
     check.detail = "estimate not an upper bound; " + check.detail;
-    if (reference.estimate > claim.estimate) check.detail += " (the reference's estimate is the larger: the miss may be the reference's)";
+    if (reference.estimate > claim.estimate)
+      check.detail += " (the reference's estimate is the larger: the miss may be the reference's)";
   } else if (claim.estimate > kUninformativeRatio * resolvable && claim.estimate > requested) {
     check.verdict = Verdict::Warn;
-    check.detail = fmt::format("estimate uninformative: {:.1e} x the resolvable error, above the requested accuracy "
-                               "{:.1e}; {}", claim.estimate / resolvable, requested, check.detail);
+    check.detail = fmt::format(
+        "estimate uninformative: {:.1e} x the resolvable error, above the requested accuracy "
+        "{:.1e}; {}",
+        claim.estimate / resolvable, requested, check.detail);
   } else {
     check.verdict = Verdict::Pass;
   }
 }
 
-void check_claim(const SolverOutput& claimant, const std::vector<const SolverOutput*>& usable, const Place& place,
-                 const ClaimOf& claim_of, CheckBuilder& builder) {
+void check_claim(const SolverOutput& claimant,
+                 const std::vector<const SolverOutput*>& usable,
+                 const Place& place,
+                 const ClaimOf& claim_of,
+                 CheckBuilder& builder) {
   const SolverAccuracy* accuracy = builder.tolerances().solver(claimant.solver);
   const auto claim = claim_of(claimant, false);
   if (!accuracy || !claim) return;
   Claim reference;
   const SolverOutput* ref = reference_for(claimant, usable, place, claim_of, builder, reference);
   if (!ref) return;
-  CheckResult check = builder.base("estimate", claimant.solver + " vs " + ref->solver, place.plane, place.mode);
-  check.detail = fmt::format("{} {:.12g} with estimate {:.2e} against the reference {} {:.12g} (estimate {:.2e}): "
-                             "actual relative error {:.2e}",
-                             claimant.solver, claim->value, claim->estimate, ref->solver, reference.value,
-                             reference.estimate, relative_difference(claim->value, reference.value));
+  CheckResult check =
+      builder.base("estimate", claimant.solver + " vs " + ref->solver, place.plane, place.mode);
+  check.detail = fmt::format(
+      "{} {:.12g} with estimate {:.2e} against the reference {} {:.12g} (estimate {:.2e}): "
+      "actual relative error {:.2e}",
+      claimant.solver, claim->value, claim->estimate, ref->solver, reference.value,
+      reference.estimate, relative_difference(claim->value, reference.value));
   judge(check, *claim, reference, requested_accuracy(builder.result(), *accuracy, *claim));
   builder.add(std::move(check));
 }
@@ -111,10 +127,12 @@ void check_claim(const SolverOutput& claimant, const std::vector<const SolverOut
 ClaimOf frequency_claim(Plane plane, int index) {
   return [plane, index](const SolverOutput& output, bool as_reference) -> std::optional<Claim> {
     const auto& modal = plane == Plane::InPlane ? output.inplane : output.outofplane;
-    if (!modal || (as_reference && modal->summary.termination != Termination::Converged)) return std::nullopt;
+    if (!modal || (as_reference && modal->summary.termination != Termination::Converged))
+      return std::nullopt;
     for (const Mode& mode : modal->modes) {
       if (mode.index == index)
-        return usable_claim(mode.omega_rad_s, mode.relative_error_estimate, modal->summary.accuracy_target);
+        return usable_claim(mode.omega_rad_s, mode.relative_error_estimate,
+                            modal->summary.accuracy_target);
     }
     return std::nullopt;
   };
@@ -124,7 +142,8 @@ ClaimOf frequency_claim(Plane plane, int index) {
 ClaimOf forced_claim(std::size_t i) {
   return [i](const SolverOutput& output, bool) -> std::optional<Claim> {
     if (i >= output.forced.size() || !output.forced[i].diagnostic.empty()) return std::nullopt;
-    return usable_claim(output.forced[i].max_abs_tension_n, output.forced[i].relative_error_estimate);
+    return usable_claim(output.forced[i].max_abs_tension_n,
+                        output.forced[i].relative_error_estimate);
   };
 }
 
@@ -135,14 +154,16 @@ void estimate_checks(const std::vector<const SolverOutput*>& usable, CheckBuilde
     for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
       const auto& modal = plane == Plane::InPlane ? output->inplane : output->outofplane;
       if (!modal) continue;
-      const std::string quantity = plane == Plane::InPlane ? "frequency-in-plane" : "frequency-out-of-plane";
+      const std::string quantity =
+          plane == Plane::InPlane ? "frequency-in-plane" : "frequency-out-of-plane";
       for (const Mode& mode : modal->modes) {
-        check_claim(*output, usable, {quantity, plane_name(plane), mode.index}, frequency_claim(plane, mode.index),
-                    builder);
+        check_claim(*output, usable, {quantity, plane_name(plane), mode.index},
+                    frequency_claim(plane, mode.index), builder);
       }
     }
     for (std::size_t i = 0; i < output->forced.size(); ++i) {
-      check_claim(*output, usable, {"forced", "forced", static_cast<int>(i + 1)}, forced_claim(i), builder);
+      check_claim(*output, usable, {"forced", "forced", static_cast<int>(i + 1)}, forced_claim(i),
+                  builder);
     }
   }
 }

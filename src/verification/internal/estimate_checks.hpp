@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// \file
-/// The error estimate as a checked claim (docs/reference/verdicts.md, "The estimate as a claim"): each
-/// frequency and forced response a solver returns with an error estimate is compared with the
+/// The error estimate as a checked claim (docs/reference/verdicts.md, "The estimate as a claim"):
+/// each frequency and forced response a solver returns with an error estimate is compared with the
 /// reference, the most accurate other exact solver that converged on the same scene and plane.
 
 #include <vector>

@@ -63,7 +63,8 @@ RunLimits conditioning_limits(const RunLimits& scene) {
 }
 
 // The exact solvers that ran and converged, most accurate (smallest declared accuracy) first.
-std::vector<const SolverOutput*> exact_candidates(const SceneResult& result, const ToleranceTable& tolerances) {
+std::vector<const SolverOutput*> exact_candidates(const SceneResult& result,
+                                                  const ToleranceTable& tolerances) {
   std::vector<const SolverOutput*> out;
   for (const SolverOutput& output : result.outputs) {
     const SolverAccuracy* declared = tolerances.solver(output.solver);
@@ -86,8 +87,12 @@ std::vector<double> frequencies(const std::optional<ModalResult>& modal) {
 
 // The forced plane's modes of `solver`, solved for: the lowest kFirstConditioningModes, then more
 // (next_count) until the top one lies above `top`, cut back to the count the doubling from
-// kFirstConditioningModes would stop at. Empty when the solver gives none (or throws on the request).
-std::vector<double> solve_modes(const SceneResult& result, const std::string& solver, Plane plane, double top,
+// kFirstConditioningModes would stop at. Empty when the solver gives none (or throws on the
+// request).
+std::vector<double> solve_modes(const SceneResult& result,
+                                const std::string& solver,
+                                Plane plane,
+                                double top,
                                 const RunLimits& limits) {
   const SolverEntry* entry = find_solver(solver);
   if (!entry) return {};
@@ -95,13 +100,15 @@ std::vector<double> solve_modes(const SceneResult& result, const std::string& so
   request.forced.reset();
   request.shapes = false;
   request.tension = false;
-  const SolverKnobs knobs = result.scene.solvers.count(solver) ? result.scene.solvers.at(solver) : SolverKnobs{};
+  const SolverKnobs knobs =
+      result.scene.solvers.count(solver) ? result.scene.solvers.at(solver) : SolverKnobs{};
   std::vector<double> omegas;
   int solved = 0;  // the count behind `omegas`
   for (int count = kFirstConditioningModes;;) {
     request.inplane_modes = plane == Plane::InPlane ? count : 0;
     request.outofplane_modes = plane == Plane::OutOfPlane ? count : 0;
-    const SolveContext context{result.scene.problem, *result.statics, *result.groups, request, &limits};
+    const SolveContext context{result.scene.problem, *result.statics, *result.groups, request,
+                               &limits};
     try {
       const SolverOutput output = run_solver(*entry, context, knobs);
       if (!output.summary.is_usable()) return {};
@@ -114,7 +121,9 @@ std::vector<double> solve_modes(const SceneResult& result, const std::string& so
       count = 2 * solved;
       continue;
     }
-    if ((!omegas.empty() && omegas.back() > top) || limits.expired() || count >= kMostConditioningModes) break;
+    if ((!omegas.empty() && omegas.back() > top) || limits.expired() ||
+        count >= kMostConditioningModes)
+      break;
     count = next_count(count, omegas.empty() ? 0.0 : omegas.back(), top);
   }
   omegas.resize(doubling_count(omegas, top));
@@ -128,13 +137,16 @@ std::vector<double> solve_modes(const SceneResult& result, const std::string& so
 // kappa needs the frequencies to ~1e-4 only (a relative delta moves kappa by ~kappa x delta), and
 // fe gives 64 modes of a Gale C-2 catenary in 0.04 s where frobenius took 3.9 s (and stopped at
 // 40 modes, the top ones beyond its target) and shooting 2.2 s.
-ForcedConditioning find_forced_conditioning(const SceneResult& result, const ToleranceTable& tolerances,
+ForcedConditioning find_forced_conditioning(const SceneResult& result,
+                                            const ToleranceTable& tolerances,
                                             const RunLimits& limits) {
   ForcedConditioning out;
-  if (!result.request.forced || result.request.forced->omegas_rad_s.empty() || !result.statics) return out;
+  if (!result.request.forced || result.request.forced->omegas_rad_s.empty() || !result.statics)
+    return out;
   const ForcedRequest& forced = *result.request.forced;
   out.plane = forced.direction == ForcingDirection::OutOfPlane ? Plane::OutOfPlane : Plane::InPlane;
-  const double top = kAboveForcing * *std::max_element(forced.omegas_rad_s.begin(), forced.omegas_rad_s.end());
+  const double top =
+      kAboveForcing * *std::max_element(forced.omegas_rad_s.begin(), forced.omegas_rad_s.end());
   const auto keep = [&](const std::string& solver, std::vector<double> omegas, const char* how) {
     out.solver = solver;
     out.omegas_rad_s = std::move(omegas);
@@ -147,7 +159,8 @@ ForcedConditioning find_forced_conditioning(const SceneResult& result, const Tol
   for (const SolverOutput* candidate : candidates) {
     std::vector<double> omegas =
         frequencies(out.plane == Plane::InPlane ? candidate->inplane : candidate->outofplane);
-    if (!omegas.empty() && omegas.back() > top) return keep(candidate->solver, std::move(omegas), "from its result");
+    if (!omegas.empty() && omegas.back() > top)
+      return keep(candidate->solver, std::move(omegas), "from its result");
   }
   std::vector<std::string> solvers{"fe"};
   for (const SolverOutput* candidate : candidates)

@@ -34,7 +34,8 @@ std::size_t doubling_count(const std::vector<double>& omegas, double top);
 /// omega_n ~ n puts `top` beyond it.
 int next_count(int solved, double highest, double top);
 
-ForcedConditioning find_forced_conditioning(const SceneResult& result, const ToleranceTable& tolerances,
+ForcedConditioning find_forced_conditioning(const SceneResult& result,
+                                            const ToleranceTable& tolerances,
                                             const RunLimits& limits);
 
 }  // namespace catena::internal

@@ -62,7 +62,8 @@ void mix_modes(Mode& mode, const Mode& neighbour, double delta) {
   const double peak = signed_peak(by);
   if (peak == 0.0) return;
   for (Vector* x : {&mode.u, &mode.w, &mode.v, &mode.tension_n}) *x /= peak;
-  if (mode.tension_n.size() && mode.max_abs_tension_n >= 0.0) mode.max_abs_tension_n = mode.tension_n.cwiseAbs().maxCoeff();
+  if (mode.tension_n.size() && mode.max_abs_tension_n >= 0.0)
+    mode.max_abs_tension_n = mode.tension_n.cwiseAbs().maxCoeff();
 }
 
 }  // namespace catena::internal

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "verification/internal/published_checks.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <map>
 
 namespace catena::internal {
@@ -14,8 +15,10 @@ namespace {
 constexpr double kConfirmationRatio = 0.1;
 
 // The value a solver gives for a published entry, in the entry's unit.
-std::optional<double> solver_value(const SceneResult& result, const SolverOutput& output,
-                                   const PublishedValues& published, int mode) {
+std::optional<double> solver_value(const SceneResult& result,
+                                   const SolverOutput& output,
+                                   const PublishedValues& published,
+                                   int mode) {
   if (published.quantity == PublishedQuantity::ForcedMaxTension) {
     if (mode < 0 || mode >= static_cast<int>(output.forced.size())) return std::nullopt;
     const ForcedResponse& response = output.forced[static_cast<std::size_t>(mode)];
@@ -34,11 +37,13 @@ std::optional<double> solver_value(const SceneResult& result, const SolverOutput
 
 // True when `solver` returned published frequency `mode` marked beyond its own accuracy target
 // (Mode::meets_target; docs/reference/verdicts.md, "Declared misses").
-bool declared_miss(const SceneResult& result, const std::string& solver, const PublishedValues& published,
+bool declared_miss(const SceneResult& result,
+                   const std::string& solver,
+                   const PublishedValues& published,
                    int mode) {
   if (published.quantity == PublishedQuantity::ForcedMaxTension) return false;
-  const Plane plane =
-      published.quantity == PublishedQuantity::InPlaneFrequency ? Plane::InPlane : Plane::OutOfPlane;
+  const Plane plane = published.quantity == PublishedQuantity::InPlaneFrequency ? Plane::InPlane
+                                                                                : Plane::OutOfPlane;
   for (const auto& output : result.outputs) {
     const ModalResult* m = output.solver == solver ? modal_of(output, plane) : nullptr;
     if (!m) continue;
@@ -52,9 +57,12 @@ bool declared_miss(const SceneResult& result, const std::string& solver, const P
 // The compared quantity (SolverEntry::computations) and the cross-check kind of a published column.
 std::pair<std::string, std::string> quantity_and_check(PublishedQuantity quantity) {
   switch (quantity) {
-    case PublishedQuantity::InPlaneFrequency: return {"frequency-in-plane", "frequency"};
-    case PublishedQuantity::OutOfPlaneFrequency: return {"frequency-out-of-plane", "frequency"};
-    case PublishedQuantity::ForcedMaxTension: return {"forced", "forced"};
+    case PublishedQuantity::InPlaneFrequency:
+      return {"frequency-in-plane", "frequency"};
+    case PublishedQuantity::OutOfPlaneFrequency:
+      return {"frequency-out-of-plane", "frequency"};
+    case PublishedQuantity::ForcedMaxTension:
+      return {"forced", "forced"};
   }
   return {"", ""};
 }
@@ -64,8 +72,11 @@ using PublishedCandidates = std::map<std::string, double>;
 
 // The pair tolerance a confirmation is held to: for a forced entry the conditioned one at the
 // forcing frequency (none where the response is at resonance, not checkable).
-std::optional<double> pair_tolerance(const CheckBuilder& builder, const std::string& check, const std::string& a,
-                                     const std::string& b, double forcing_omega) {
+std::optional<double> pair_tolerance(const CheckBuilder& builder,
+                                     const std::string& check,
+                                     const std::string& a,
+                                     const std::string& b,
+                                     double forcing_omega) {
   if (check != "forced") {
     const auto tol = builder.tolerance(check, a, b, std::nullopt);
     return tol ? std::optional(tol->value) : std::nullopt;
@@ -77,8 +88,11 @@ std::optional<double> pair_tolerance(const CheckBuilder& builder, const std::str
 // A second solver that confirms `solver`'s value: an independent computation (not sharing the
 // code path) that agrees with ours within their pair tolerance and far better
 // (kConfirmationRatio) than ours agrees with the print. Empty when none does.
-std::string confirming_solver(const CheckBuilder& builder, PublishedQuantity published_quantity,
-                              const std::string& solver, const PublishedCandidates& values, double measured,
+std::string confirming_solver(const CheckBuilder& builder,
+                              PublishedQuantity published_quantity,
+                              const std::string& solver,
+                              const PublishedCandidates& values,
+                              double measured,
                               double forcing_omega) {
   const double ours = values.at(solver);
   const auto [quantity, check] = quantity_and_check(published_quantity);
@@ -87,7 +101,8 @@ std::string confirming_solver(const CheckBuilder& builder, PublishedQuantity pub
     if (other == solver || builder.shared(solver, other, quantity)) continue;
     const double between = std::abs(other_value - ours);
     const auto pair_tol = pair_tolerance(builder, check, solver, other, forcing_omega);
-    if (pair_tol && between <= *pair_tol * std::abs(ours) && between <= kConfirmationRatio * measured) {
+    if (pair_tol && between <= *pair_tol * std::abs(ours) &&
+        between <= kConfirmationRatio * measured) {
       partner = other;
     }
   }
@@ -96,7 +111,9 @@ std::string confirming_solver(const CheckBuilder& builder, PublishedQuantity pub
 
 // True when every other independent solver's forced pair check with `solver` at this forcing
 // frequency is "at resonance, not checkable".
-bool at_resonance_for_all(const CheckBuilder& builder, const std::string& solver, const PublishedCandidates& values,
+bool at_resonance_for_all(const CheckBuilder& builder,
+                          const std::string& solver,
+                          const PublishedCandidates& values,
                           double forcing_omega) {
   bool any = false;
   for (const auto& [other, value] : values) {
@@ -110,8 +127,12 @@ bool at_resonance_for_all(const CheckBuilder& builder, const std::string& solver
 
 // Beyond the printed digits: a source discrepancy when confirmed by a second solver or by a
 // reviewed finding that still matches our value; a failure otherwise.
-void judge_disagreement(const CheckBuilder& builder, const PublishedValues& published, const std::string& solver,
-                        const PublishedCandidates& values, int mode, CheckResult& check) {
+void judge_disagreement(const CheckBuilder& builder,
+                        const PublishedValues& published,
+                        const std::string& solver,
+                        const PublishedCandidates& values,
+                        int mode,
+                        CheckResult& check) {
   const double ours = values.at(solver);
   const auto& forced = builder.result().request.forced;
   const double forcing_omega =
@@ -120,8 +141,8 @@ void judge_disagreement(const CheckBuilder& builder, const PublishedValues& publ
           : 0.0;
   const std::string partner =
       confirming_solver(builder, published.quantity, solver, values, check.measured, forcing_omega);
-  const Finding* finding =
-      builder.findings().find(builder.result().scene.name, to_string(published.quantity), mode, solver);
+  const Finding* finding = builder.findings().find(builder.result().scene.name,
+                                                   to_string(published.quantity), mode, solver);
   if (!partner.empty()) {
     check.verdict = Verdict::SourceDiscrepancy;
     check.detail += fmt::format("; confirmed by {} = {:.8g}", partner, values.at(partner));
@@ -144,23 +165,32 @@ void judge_disagreement(const CheckBuilder& builder, const PublishedValues& publ
 
 const char* published_plane(PublishedQuantity quantity) {
   switch (quantity) {
-    case PublishedQuantity::InPlaneFrequency: return "in-plane";
-    case PublishedQuantity::OutOfPlaneFrequency: return "out-of-plane";
-    case PublishedQuantity::ForcedMaxTension: return "forced";
+    case PublishedQuantity::InPlaneFrequency:
+      return "in-plane";
+    case PublishedQuantity::OutOfPlaneFrequency:
+      return "out-of-plane";
+    case PublishedQuantity::ForcedMaxTension:
+      return "forced";
   }
   return "";
 }
 
 // The tolerance: the printed rounding half-width, plus the rule's stated `max` (absolute, in the
 // table's unit), plus its model term relative to our value.
-void published_entry(CheckBuilder& builder, const PublishedValues& published, const std::string& solver,
-                     const PublishedCandidates& values, int mode, double printed) {
+void published_entry(CheckBuilder& builder,
+                     const PublishedValues& published,
+                     const std::string& solver,
+                     const PublishedCandidates& values,
+                     int mode,
+                     double printed) {
   const SceneResult& result = builder.result();
-  const double half_unit = published.decimals >= 0 ? 0.5 * std::pow(10.0, -published.decimals) : 0.0;
+  const double half_unit =
+      published.decimals >= 0 ? 0.5 * std::pow(10.0, -published.decimals) : 0.0;
   const double ours = values.at(solver);
-  const ToleranceRule* rule =
-      builder.tolerances().find("published", solver, "published", result.scene.name, result.scene.tags);
-  const double slack = rule ? rule->max + rule->model_term(model_parameters(result)) * std::abs(ours) : 0.0;
+  const ToleranceRule* rule = builder.tolerances().find("published", solver, "published",
+                                                        result.scene.name, result.scene.tags);
+  const double slack =
+      rule ? rule->max + rule->model_term(model_parameters(result)) * std::abs(ours) : 0.0;
   const bool forced = published.quantity == PublishedQuantity::ForcedMaxTension;
   CheckResult check = builder.base("published", solver + " vs " + published.source,
                                    published_plane(published.quantity), forced ? mode + 1 : mode);
@@ -168,8 +198,9 @@ void published_entry(CheckBuilder& builder, const PublishedValues& published, co
   check.value_b = printed;
   check.measured = std::abs(ours - printed);
   check.tolerance = half_unit + slack;
-  check.detail = fmt::format("ours {:.8g}, printed {} ({} decimals; absolute difference, in the table's unit)",
-                             ours, printed, published.decimals);
+  check.detail =
+      fmt::format("ours {:.8g}, printed {} ({} decimals; absolute difference, in the table's unit)",
+                  ours, printed, published.decimals);
   if (!std::isfinite(ours)) {
     check.verdict = Verdict::Fail;
   } else if (check.measured <= check.tolerance) {

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "verification/internal/shape_comparison.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "catena/core/error.hpp"
 
@@ -29,7 +30,10 @@ Vector interpolate_all(const Vector& stations, const Vector& values, const Vecto
 
 // The displacement components the plane has, concatenated: the other's and Catena's at the same
 // stations.
-void displacement_vectors(const ExternalShape& shape, Plane plane, const ReferenceMode& ref, Vector& other,
+void displacement_vectors(const ExternalShape& shape,
+                          Plane plane,
+                          const ReferenceMode& ref,
+                          Vector& other,
                           Vector& catena) {
   std::vector<std::pair<const Vector*, const Vector*>> parts;
   if (plane == Plane::InPlane) {
@@ -43,28 +47,39 @@ void displacement_vectors(const ExternalShape& shape, Plane plane, const Referen
   catena.resize(other.size());
   for (std::size_t k = 0; k < parts.size(); ++k) {
     other.segment(static_cast<Index>(k) * n, n) = *parts[k].first;
-    catena.segment(static_cast<Index>(k) * n, n) = interpolate_all(ref.s_m, *parts[k].second, shape.s_m);
+    catena.segment(static_cast<Index>(k) * n, n) =
+        interpolate_all(ref.s_m, *parts[k].second, shape.s_m);
   }
 }
 
 }  // namespace
 
-void validate_external_shape(const ExternalShape& shape, Plane plane, double length_m, const std::string& origin) {
+void validate_external_shape(const ExternalShape& shape,
+                             Plane plane,
+                             double length_m,
+                             const std::string& origin) {
   const Index n = shape.s_m.size();
-  auto fail = [&](const std::string& why) { throw InvalidInput(fmt::format("{}: shape: {}", origin, why)); };
+  auto fail = [&](const std::string& why) {
+    throw InvalidInput(fmt::format("{}: shape: {}", origin, why));
+  };
   if (n < 2) fail("needs at least two stations");
   for (Index i = 0; i < n; ++i) {
-    if (!std::isfinite(shape.s_m[i]) || shape.s_m[i] < 0.0 || shape.s_m[i] > length_m * (1.0 + 1e-9)) {
+    if (!std::isfinite(shape.s_m[i]) || shape.s_m[i] < 0.0 ||
+        shape.s_m[i] > length_m * (1.0 + 1e-9)) {
       fail(fmt::format("station s = {} m outside [0, L = {} m]", shape.s_m[i], length_m));
     }
-    if (i > 0 && !(shape.s_m[i] > shape.s_m[i - 1])) fail(fmt::format("stations not ascending at s = {} m", shape.s_m[i]));
+    if (i > 0 && !(shape.s_m[i] > shape.s_m[i - 1]))
+      fail(fmt::format("stations not ascending at s = {} m", shape.s_m[i]));
   }
   const bool inplane = plane == Plane::InPlane;
   if (inplane && shape.v.size() > 0) fail("an in-plane mode has no v (out-of-plane) displacement");
-  if (!inplane && (shape.u.size() > 0 || shape.w.size() > 0)) fail("an out-of-plane mode has only v, not u or w");
+  if (!inplane && (shape.u.size() > 0 || shape.w.size() > 0))
+    fail("an out-of-plane mode has only v, not u or w");
   if (inplane && shape.u.size() == 0 && shape.w.size() == 0) fail("an in-plane shape needs u or w");
   if (!inplane && shape.v.size() == 0) fail("an out-of-plane shape needs v");
-  for (const auto& [name, values] : {std::pair{"u", &shape.u}, {"w", &shape.w}, {"v", &shape.v},
+  for (const auto& [name, values] : {std::pair{"u", &shape.u},
+                                     {"w", &shape.w},
+                                     {"v", &shape.v},
                                      {"tension_n", &shape.tension_n}}) {
     if (values->size() > 0 && values->size() != n) {
       fail(fmt::format("{} has {} values for {} stations", name, values->size(), n));
@@ -91,7 +106,8 @@ ShapeComparison compare_shape(const ExternalShape& shape, Plane plane, const Ref
     const double alpha = cross / other.squaredNorm();
     const Vector tension = interpolate_all(ref.s_m, ref.tension_n, shape.s_m);
     const double scale = tension.cwiseAbs().maxCoeff();
-    out.tension_relative = scale > 0.0 ? (alpha * shape.tension_n - tension).cwiseAbs().maxCoeff() / scale : 0.0;
+    out.tension_relative =
+        scale > 0.0 ? (alpha * shape.tension_n - tension).cwiseAbs().maxCoeff() / scale : 0.0;
   }
   return out;
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Comparing another program's mode shape (at its stations) with Catena's (at Catena's stations):
-// MAC, and the dynamic tension after scaling the other mode to Catena's (docs/how-to/check.md, "Shapes").
+// MAC, and the dynamic tension after scaling the other mode to Catena's (docs/how-to/check.md,
+// "Shapes").
 
 #include <optional>
 #include <string>
@@ -20,9 +21,14 @@ struct ShapeComparison {
 /// Checks that `shape` is well formed for `plane` (InvalidInput naming `origin`): stations
 /// ascending within [0, length_m], components of the plane only (in-plane u and/or w, out-of-plane
 /// v), every given vector as long as the stations, not all zero.
-void validate_external_shape(const ExternalShape& shape, Plane plane, double length_m, const std::string& origin);
+void validate_external_shape(const ExternalShape& shape,
+                             Plane plane,
+                             double length_m,
+                             const std::string& origin);
 
 /// MAC and tension difference of `shape` against `reference`, whose shape must be present.
-ShapeComparison compare_shape(const ExternalShape& shape, Plane plane, const ReferenceMode& reference);
+ShapeComparison compare_shape(const ExternalShape& shape,
+                              Plane plane,
+                              const ReferenceMode& reference);
 
 }  // namespace catena::internal

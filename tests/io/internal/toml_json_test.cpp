@@ -26,8 +26,10 @@ std::string source_file(const std::string& relative) {
 
 TEST(TomlJson, KeepsEveryTypeAndNesting) {
   const toml::value document = parse_toml(
-      "i = 3\nf = 3.0\nnegative = -2.5e-300\nb = false\ns = \"quote \\\" backslash \\\\ tab \\t é\"\n"
-      "list = [1, 2.5, \"x\", [true]]\n[[rule]]\nname = \"a\"\n[[rule]]\nname = \"b\"\n[t.u]\nv = 1\n",
+      "i = 3\nf = 3.0\nnegative = -2.5e-300\nb = false\ns = \"quote \\\" backslash \\\\ tab \\t "
+      "é\"\n"
+      "list = [1, 2.5, \"x\", [true]]\n[[rule]]\nname = \"a\"\n[[rule]]\nname = \"b\"\n[t.u]\nv = "
+      "1\n",
       "t.toml");
   const toml::value back = toml_from_json(json_from_toml(document));
   EXPECT_EQ(back, document);
@@ -57,9 +59,13 @@ TEST(TomlJson, TheBuiltInTablesAreTheFilesDocuments) {
 
 TEST(TomlJson, TheBuiltInTablesReadAsTheFilesDo) {
   EXPECT_EQ(builtin_tolerance_table().rules().size(),
-            read_tolerance_file(std::string(CATENA_SOURCE_DIR) + "/verification/tolerances.toml").rules().size());
+            read_tolerance_file(std::string(CATENA_SOURCE_DIR) + "/verification/tolerances.toml")
+                .rules()
+                .size());
   EXPECT_EQ(builtin_findings_table().findings().size(),
-            read_findings_file(std::string(CATENA_SOURCE_DIR) + "/verification/findings.toml").findings().size());
+            read_findings_file(std::string(CATENA_SOURCE_DIR) + "/verification/findings.toml")
+                .findings()
+                .size());
 }
 
 }  // namespace

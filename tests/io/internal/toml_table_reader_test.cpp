@@ -10,7 +10,8 @@ namespace catena::internal {
 namespace {
 
 TEST(TomlTableReader, ReadsTypedValuesAndRejectsUnreadKeys) {
-  const toml::value doc = parse_toml("x = 1\ny = 2.5\nname = \"n\"\nflag = true\nlist = [\"a\", \"b\"]\nextra = 0\n", "t.toml");
+  const toml::value doc = parse_toml(
+      "x = 1\ny = 2.5\nname = \"n\"\nflag = true\nlist = [\"a\", \"b\"]\nextra = 0\n", "t.toml");
   TableReader root(doc, "t.toml", "");
   EXPECT_EQ(root.number("x"), 1.0);
   EXPECT_EQ(root.number("y"), 2.5);
@@ -23,7 +24,8 @@ TEST(TomlTableReader, ReadsTypedValuesAndRejectsUnreadKeys) {
     root.finish();
     FAIL() << "extra was never read";
   } catch (const ParseError& error) {
-    EXPECT_NE(std::string(error.what()).find("t.toml: extra: unknown key"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("t.toml: extra: unknown key"), std::string::npos)
+        << error.what();
   }
 }
 
@@ -37,7 +39,8 @@ TEST(TomlTableReader, WrongTypesAndMissingKeysNameTheKey) {
     t.number("absent");
     FAIL();
   } catch (const ParseError& error) {
-    EXPECT_NE(std::string(error.what()).find("[t].absent: missing required key"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("[t].absent: missing required key"), std::string::npos)
+        << error.what();
   }
   EXPECT_THROW(parse_toml("x = = 1", "bad.toml"), ParseError);
 }

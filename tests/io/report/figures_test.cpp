@@ -48,8 +48,10 @@ class DrawFigures : public ::testing::Test {
     std::ofstream(inputs.script) << "# never run by python here\n";
     inputs.published_dir = root / "published";
     inputs.time_vs_error = root / "time-vs-error.csv";
-    inputs.python = interpreter("ok", "printf '%s\\n' \"$@\" > \"$dir/args.txt\"\n"
-                                      "printf '%s' '" + index_json_ + "' > \"$out/index.json\"\n");
+    inputs.python = interpreter("ok",
+                                "printf '%s\\n' \"$@\" > \"$dir/args.txt\"\n"
+                                "printf '%s' '" +
+                                    index_json_ + "' > \"$out/index.json\"\n");
   }
 
   // A stand-in interpreter: finds --out among its arguments, then runs `body` (sh) with $dir (its
@@ -63,7 +65,9 @@ class DrawFigures : public ::testing::Test {
     return path.string();
   }
 
-  std::vector<Image> draw(std::string& note) const { return draw_figures(results, inputs, figures_dir, note); }
+  std::vector<Image> draw(std::string& note) const {
+    return draw_figures(results, inputs, figures_dir, note);
+  }
 
   const std::string index_json_ =
       R"([{"file": "frequencies.png", "caption": "Frequencies"}, {"file": "sub/timing.svg", "caption": "Time, error"},)"
@@ -74,10 +78,11 @@ TEST_F(DrawFigures, PassesTheInputsToTheScriptAndReadsTheIndexBackInOrder) {
   std::string note;
   const std::vector<Image> images = draw(note);
   EXPECT_EQ(note, "");
-  EXPECT_EQ(lines_of(root / "args.txt"),
-            (std::vector<std::string>{inputs.script.string(), "--results", results.string(), "--published",
-                                      inputs.published_dir.string(), "--time-vs-error",
-                                      inputs.time_vs_error.string(), "--out", figures_dir.string()}));
+  EXPECT_EQ(
+      lines_of(root / "args.txt"),
+      (std::vector<std::string>{inputs.script.string(), "--results", results.string(),
+                                "--published", inputs.published_dir.string(), "--time-vs-error",
+                                inputs.time_vs_error.string(), "--out", figures_dir.string()}));
   ASSERT_EQ(images.size(), 3u);
   EXPECT_EQ(images[0].file, figures_dir / "frequencies.png");
   EXPECT_EQ(images[0].caption, "Frequencies");
@@ -102,7 +107,8 @@ TEST_F(DrawFigures, FailingInterpreterGivesItsStatusAndTheLog) {
   EXPECT_TRUE(draw(note).empty());
   EXPECT_EQ(note, "figures not drawn: '" + inputs.python + "' failed (status 3); see " +
                       (figures_dir / "figures.log").string());
-  EXPECT_NE(read(figures_dir / "figures.log").find("No module named matplotlib"), std::string::npos);
+  EXPECT_NE(read(figures_dir / "figures.log").find("No module named matplotlib"),
+            std::string::npos);
 }
 
 TEST_F(DrawFigures, MissingInterpreterIsStatus127) {

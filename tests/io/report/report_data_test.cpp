@@ -72,8 +72,8 @@ class DataTables : public ::testing::Test {
 
 TEST_F(DataTables, FrequenciesHaveOneRowPerModeOfEverySolver) {
   const CsvTable t = read_csv_table(dir / "frequencies.csv");
-  EXPECT_EQ(t.columns, (Strings{"scene", "solver", "plane", "mode", "omega_rad_s", "frequency_hz", "k_l_over_pi",
-                                "gale_ratio", "relative_error_estimate"}));
+  EXPECT_EQ(t.columns, (Strings{"scene", "solver", "plane", "mode", "omega_rad_s", "frequency_hz",
+                                "k_l_over_pi", "gale_ratio", "relative_error_estimate"}));
   ASSERT_FALSE(t.comments.empty());
   ASSERT_EQ(t.rows.size(), 3u);  // fe 2 + frobenius 1; airy declined, stress-1 has no modes
   EXPECT_EQ(t.text(0, "scene"), "gale-a");
@@ -91,11 +91,12 @@ TEST_F(DataTables, FrequenciesHaveOneRowPerModeOfEverySolver) {
 
 TEST_F(DataTables, ChecksHaveEveryCheckOfEveryScene) {
   const CsvTable t = read_csv_table(dir / "checks.csv");
-  EXPECT_EQ(t.columns, (Strings{"scene", "check", "compare", "plane", "mode", "value_a", "value_b", "measured",
-                                "tolerance", "verdict", "detail"}));
+  EXPECT_EQ(t.columns, (Strings{"scene", "check", "compare", "plane", "mode", "value_a", "value_b",
+                                "measured", "tolerance", "verdict", "detail"}));
   ASSERT_EQ(t.rows.size(), 5u);
-  EXPECT_EQ(t.rows[0], (Strings{"gale-a", "published", "fe vs Gale 1976", "inplane", "1", "1.1000000000000001",
-                                "1.2", "0.089999999999999997", "0.01", "SOURCE", "misprint"}));
+  EXPECT_EQ(t.rows[0],
+            (Strings{"gale-a", "published", "fe vs Gale 1976", "inplane", "1", "1.1000000000000001",
+                     "1.2", "0.089999999999999997", "0.01", "SOURCE", "misprint"}));
   EXPECT_EQ(t.text(3, "value_a"), "");  // null
   EXPECT_EQ(t.text(4, "scene"), "stress-1");
   EXPECT_EQ(t.text(4, "verdict"), "FAIL");
@@ -103,8 +104,8 @@ TEST_F(DataTables, ChecksHaveEveryCheckOfEveryScene) {
 
 TEST_F(DataTables, PublishedHasOnlyThePublishedComparisons) {
   const CsvTable t = read_csv_table(dir / "published.csv");
-  EXPECT_EQ(t.columns, (Strings{"scene", "compare", "plane", "mode", "ours", "printed", "abs_difference", "tolerance",
-                                "verdict", "detail"}));
+  EXPECT_EQ(t.columns, (Strings{"scene", "compare", "plane", "mode", "ours", "printed",
+                                "abs_difference", "tolerance", "verdict", "detail"}));
   ASSERT_EQ(t.rows.size(), 2u);
   EXPECT_EQ(t.text(0, "compare"), "fe vs Gale 1976");
   EXPECT_EQ(*t.number(0, "ours"), 1.1);
@@ -147,10 +148,12 @@ TEST(ReportData, TimeToAccuracyCountsAnErrorOnTheTargetAndKeepsCasesInFileOrder)
 }
 
 TEST(ReportData, MalformedBaselineIsAParseError) {
-  EXPECT_THROW(read_time_to_accuracy(write_file("catena_report_timing_ragged.csv",
-                                                "scene,solver,setting,time_s,max_rel_error,status\na,fe,N\n")),
+  EXPECT_THROW(read_time_to_accuracy(
+                   write_file("catena_report_timing_ragged.csv",
+                              "scene,solver,setting,time_s,max_rel_error,status\na,fe,N\n")),
                ParseError);
-  EXPECT_THROW(read_time_to_accuracy(write_file("catena_report_timing_columns.csv", "scene,solver,time\na,fe,1\n")),
+  EXPECT_THROW(read_time_to_accuracy(
+                   write_file("catena_report_timing_columns.csv", "scene,solver,time\na,fe,1\n")),
                ParseError);
   EXPECT_THROW(read_time_to_accuracy(write_file("catena_report_timing_number.csv",
                                                 "scene,solver,setting,time_s,max_rel_error,status\n"

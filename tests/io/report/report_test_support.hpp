@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// A small results document in the layout of report.json (docs/reference/json-layout.md), written by hand so
-// that the report's tables can be checked cell by cell: two scenes, four solvers, every verdict.
+// A small results document in the layout of report.json (docs/reference/json-layout.md), written by
+// hand so that the report's tables can be checked cell by cell: two scenes, four solvers, every
+// verdict.
 //
 //   gale-a    tags gale; fe (2 in-plane modes, 2 forcing frequencies, one at a resonance),
 //             frobenius (1 mode), airy declined; published Gale 1976 modes 1 and 3;

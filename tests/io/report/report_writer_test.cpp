@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 // write_report on a small results JSON: the Markdown and HTML reports, the data tables read back
 // with csv_table, the figure note when figures are off, and a clear error for a bad input file.
-#include "catena/io/report.hpp"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,6 +10,7 @@
 #include "catena/core/error.hpp"
 #include "catena/io/csv_table.hpp"
 #include "catena/io/json_writer.hpp"
+#include "catena/io/report.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/io/tolerance_reader.hpp"
 
@@ -31,10 +30,12 @@ fs::path results_json(const fs::path& dir) {
   SceneRunOptions options;
   options.tolerances = builtin_tolerance_table();
   options.only_solvers = {"fe", "shooting"};
-  const Scene scene = parse_scene_text(
-      "name = \"report, test\"\n[cable]\nlength = 10.0\nweight = 1.0\nEA = 1e6\nmass = 1.0\n"
-      "a = [0.0, 0.0]\nb = [8.0, 1.0]\n[request]\ninplane_modes = 2\n",
-      "r.toml").front();
+  const Scene scene =
+      parse_scene_text(
+          "name = \"report, test\"\n[cable]\nlength = 10.0\nweight = 1.0\nEA = 1e6\nmass = 1.0\n"
+          "a = [0.0, 0.0]\nb = [8.0, 1.0]\n[request]\ninplane_modes = 2\n",
+          "r.toml")
+          .front();
   fs::create_directories(dir);
   write_results_json(dir / "report.json", {run_scene(scene, options)});
   return dir / "report.json";

@@ -40,7 +40,8 @@ TEST(ReportSections, SummaryCountsEachVerdictAndNamesTheBuild) {
   EXPECT_EQ(title.text, "Catena verification report");
   EXPECT_EQ(title.anchor, "top");
   EXPECT_EQ(std::get<Paragraph>(out[1]).text,
-            "catena 1.2.3 (git abc1234) · gcc 12 · Release · 2024-05-01T12:00:00Z · 2 scenes, 5 checks, 2 failed, "
+            "catena 1.2.3 (git abc1234) · gcc 12 · Release · 2024-05-01T12:00:00Z · 2 scenes, 5 "
+            "checks, 2 failed, "
             "1 source discrepancies");
   const Table& t = std::get<Table>(out[2]);
   EXPECT_EQ(t.header, (Strings{"verdict", "checks", "meaning"}));
@@ -90,12 +91,15 @@ TEST(ReportSections, FailuresListSceneErrorsFailsAndWarnsInSceneOrder) {
   Document out;
   add_failures(out, document);
   ASSERT_EQ(tables(out).size(), 1u);
-  EXPECT_EQ(tables(out)[0].rows,
-            (Rows{{"gale-a", "agreement", "fe vs frobenius", "inplane", "2", "4.340e-02", "1.000e-06", "FAIL", "too far"},
-                  {"gale-a", "error_estimate", "fe", "inplane", "1", "2.000e-05", "1.000e-05", "WARN", "estimate large"},
-                  {"stress-1", "scene", "-", "-", "-", "-", "-", "FAIL", "statics did not converge"},
-                  {"stress-1", "agreement", "shooting vs fe", "inplane", "1", "4.000e-01", "1.000e-08", "FAIL",
-                   "disagree"}}));
+  EXPECT_EQ(
+      tables(out)[0].rows,
+      (Rows{{"gale-a", "agreement", "fe vs frobenius", "inplane", "2", "4.340e-02", "1.000e-06",
+             "FAIL", "too far"},
+            {"gale-a", "error_estimate", "fe", "inplane", "1", "2.000e-05", "1.000e-05", "WARN",
+             "estimate large"},
+            {"stress-1", "scene", "-", "-", "-", "-", "-", "FAIL", "statics did not converge"},
+            {"stress-1", "agreement", "shooting vs fe", "inplane", "1", "4.000e-01", "1.000e-08",
+             "FAIL", "disagree"}}));
 }
 
 TEST(ReportSections, StressOutcomesJudgeEachSolverByItsOwnChecks) {
@@ -107,7 +111,8 @@ TEST(ReportSections, StressOutcomesJudgeEachSolverByItsOwnChecks) {
   // message cut to 160 characters), shooting converged to a failing value (FAIL).
   const Table t = tables(out)[0];
   ASSERT_EQ(t.rows.size(), 2u);
-  EXPECT_EQ(t.rows[0], (Strings{"stress-1", "fe", "diagnosed", "1", testing::long_failure_message().substr(0, 157) + "..."}));
+  EXPECT_EQ(t.rows[0], (Strings{"stress-1", "fe", "diagnosed", "1",
+                                testing::long_failure_message().substr(0, 157) + "..."}));
   EXPECT_EQ(t.rows[0][4].size(), 160u);
   EXPECT_EQ(t.rows[1], (Strings{"stress-1", "shooting", "FAIL", "1", "ok"}));
 }
@@ -159,7 +164,8 @@ TEST(ReportSections, ScenesHaveAHeadingAnInfoLineAndTheirTables) {
   const auto paragraphs = blocks_of<Paragraph>(out);
   ASSERT_EQ(paragraphs.size(), 2u);
   EXPECT_EQ(paragraphs[0].text,
-            "Gale's sagging cable — eps = 0.5, phi_a = 10 deg, lambda^2 = inf, h = 1, Gale xi = (-0.5000, 1.0000)"
+            "Gale's sagging cable — eps = 0.5, phi_a = 10 deg, lambda^2 = inf, h = 1, Gale xi = "
+            "(-0.5000, 1.0000)"
             " — 4 checks, 1 failed.");
   EXPECT_EQ(paragraphs[1].text, " — ERROR: statics did not converge — 1 checks, 1 failed.");
   // Only gale-a has frequencies (in plane) and a forced response; stress-1 has neither.
@@ -173,7 +179,9 @@ TEST(ReportSections, FrequencyTableHasASolverColumnAndAPublishedColumnInTheScene
   EXPECT_EQ(t.css_class, "frequencies");
   // Gale's ratio, the published unit; airy (declined) has no column; published mode 3 adds a row.
   EXPECT_EQ(t.header, (Strings{"in-plane mode [gale]", "fe", "frobenius", "Gale 1976"}));
-  EXPECT_EQ(t.rows, (Rows{{"1", "1.1", "1.1000001", "1.1"}, {"2", "2.2", "-", "-"}, {"3", "-", "-", "3.3"}}));
+  EXPECT_EQ(
+      t.rows,
+      (Rows{{"1", "1.1", "1.1000001", "1.1"}, {"2", "2.2", "-", "-"}, {"3", "-", "-", "3.3"}}));
 }
 
 TEST(ReportSections, FrequencyUnitFollowsTagsWhenNothingIsPublished) {

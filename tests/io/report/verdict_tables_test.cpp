@@ -24,23 +24,30 @@ std::vector<Table> tables(const Document& document) {
   return found;
 }
 
-json published_check(const std::string& solver, int mode, const std::string& verdict, const std::string& detail) {
-  return {{"check", "published"}, {"compare", solver + " vs Gale 1976"}, {"plane", "in-plane"}, {"mode", mode},
-          {"value_a", 1.0}, {"value_b", 1.2}, {"measured", 0.2}, {"tolerance", 0.005}, {"verdict", verdict},
-          {"detail", detail}};
+json published_check(const std::string& solver,
+                     int mode,
+                     const std::string& verdict,
+                     const std::string& detail) {
+  return {{"check", "published"}, {"compare", solver + " vs Gale 1976"},
+          {"plane", "in-plane"},  {"mode", mode},
+          {"value_a", 1.0},       {"value_b", 1.2},
+          {"measured", 0.2},      {"tolerance", 0.005},
+          {"verdict", verdict},   {"detail", detail}};
 }
 
 TEST(DiscrepancyTable, OneRowPerPublishedEntryWhateverTheNumberOfSolvers) {
   json document = testing::synthetic_results();
   json& checks = document["scenes"][0]["checks"];
-  checks = json::array({published_check("fe", 1, "SOURCE", "ours 1.1; confirmed by frobenius = 1.1"),
-                        published_check("frobenius", 1, "SOURCE", "ours 1.1; confirmed by fe = 1.1"),
-                        published_check("fe", 3, "PASS", ""), published_check("frobenius", 3, "PASS", "")});
+  checks = json::array(
+      {published_check("fe", 1, "SOURCE", "ours 1.1; confirmed by frobenius = 1.1"),
+       published_check("frobenius", 1, "SOURCE", "ours 1.1; confirmed by fe = 1.1"),
+       published_check("fe", 3, "PASS", ""), published_check("frobenius", 3, "PASS", "")});
   Document out;
   EXPECT_EQ(add_discrepancies(out, document), 1);  // two SOURCE checks, one entry
   ASSERT_EQ(tables(out).size(), 1u);
-  EXPECT_EQ(tables(out)[0].rows, (Rows{{"gale-a", "Gale 1976", "1", "1.1", "1.1", "-", "1.1000001",
-                                        "fe SOURCE, frobenius SOURCE", "confirmed by frobenius = 1.1"}}));
+  EXPECT_EQ(tables(out)[0].rows,
+            (Rows{{"gale-a", "Gale 1976", "1", "1.1", "1.1", "-", "1.1000001",
+                   "fe SOURCE, frobenius SOURCE", "confirmed by frobenius = 1.1"}}));
 }
 
 TEST(HeadlineTables, CountEachVerdictByKindAndBySolverPair) {
@@ -48,7 +55,8 @@ TEST(HeadlineTables, CountEachVerdictByKindAndBySolverPair) {
   add_headline(out, testing::synthetic_results());
   const auto t = tables(out);
   ASSERT_EQ(t.size(), 2u);
-  const std::vector<std::string> header = {"check", "checks", "PASS", "FAIL", "WARN", "SOURCE", "SKIP"};
+  const std::vector<std::string> header = {"check", "checks", "PASS", "FAIL",
+                                           "WARN",  "SOURCE", "SKIP"};
   EXPECT_EQ(t[0].header, header);
   EXPECT_EQ(t[0].rows, (Rows{{"agreement", "2", "0", "2", "0", "0", "0"},
                              {"error_estimate", "1", "0", "0", "1", "0", "0"},
@@ -62,7 +70,8 @@ TEST(HeadlineTables, CountEachVerdictByKindAndBySolverPair) {
 }
 
 json mutation_block() {
-  return json::parse(R"({"wall_time_s": 1.5, "threads": 2, "frequency_factor": 10.0, "shape_factor": 10.0,
+  return json::parse(
+      R"({"wall_time_s": 1.5, "threads": 2, "frequency_factor": 10.0, "shape_factor": 10.0,
     "forced_tension_relative": 1e-4, "fe_accuracy_target": 1e-7,
     "exact_with_witness": {"made": 4, "caught": 2}, "exact_beyond_estimate": {"made": 2, "caught": 2},
     "tallies": [{"solver": "fe", "family": "gale", "quantity": "frequency", "made": 3, "caught": 1},
@@ -80,8 +89,11 @@ TEST(MutationSection, ScoresBySolverAndFamilyAndListsEveryUncaughtMutation) {
   const auto t = tables(out);
   ASSERT_EQ(t.size(), 3u);
   EXPECT_EQ(t[0].rows, (Rows{{"fe", "gale", "4", "2", "2", "50.0%"}}));
-  EXPECT_EQ(t[1].rows, (Rows{{"fe", "forced-tension", "1", "1", "0", "100.0%"}, {"fe", "frequency", "3", "1", "2", "33.3%"}}));
-  EXPECT_EQ(t[2].rows, (Rows{{"gale-a", "fe", "frequency", "in-plane", "2, 3", "1e-06, 1e-06", "2e-06, -", "yes"}}));
+  EXPECT_EQ(t[1].rows, (Rows{{"fe", "forced-tension", "1", "1", "0", "100.0%"},
+                             {"fe", "frequency", "3", "1", "2", "33.3%"}}));
+  EXPECT_EQ(
+      t[2].rows,
+      (Rows{{"gale-a", "fe", "frequency", "in-plane", "2, 3", "1e-06, 1e-06", "2e-06, -", "yes"}}));
 }
 
 TEST(MutationSection, AbsentWithoutAMutationRun) {
@@ -94,11 +106,14 @@ TEST(MutationSection, AbsentWithoutAMutationRun) {
 json model_scene(double eps) {
   const double omega = 2.0, error = 0.5 * eps * eps;
   json mode_exact = {{"index", 1}, {"omega_rad_s", omega}, {"relative_error_estimate", 1e-12}};
-  json mode_model = {{"index", 1}, {"omega_rad_s", omega * (1.0 + error)}, {"relative_error_estimate", eps * eps}};
+  json mode_model = {
+      {"index", 1}, {"omega_rad_s", omega * (1.0 + error)}, {"relative_error_estimate", eps * eps}};
   json converged = {{"termination", "converged"}};
-  return {{"name", "s" + std::to_string(eps)}, {"groups", {{"eps", eps}, {"lambda2", 10.0}, {"chord_angle_deg", 30.0}}},
-          {"solvers", {{"shooting", {{"summary", converged}, {"inplane", {{"modes", {mode_exact}}}}}},
-                       {"asymptotic", {{"summary", converged}, {"inplane", {{"modes", {mode_model}}}}}}}},
+  return {{"name", "s" + std::to_string(eps)},
+          {"groups", {{"eps", eps}, {"lambda2", 10.0}, {"chord_angle_deg", 30.0}}},
+          {"solvers",
+           {{"shooting", {{"summary", converged}, {"inplane", {{"modes", {mode_exact}}}}}},
+            {"asymptotic", {{"summary", converged}, {"inplane", {{"modes", {mode_model}}}}}}}},
           {"checks", json::array()}};
 }
 
@@ -111,8 +126,9 @@ TEST(ModelError, FitsTheOrderOfAnExactPowerLawAndWritesEveryPoint) {
   const auto t = tables(out);
   ASSERT_EQ(t.size(), 2u);
   // eps = 0.5 is outside the asymptotic range (eps <= 0.3): four scenes fitted, p = 2, C = 0.5.
-  EXPECT_EQ(t[0].rows, (Rows{{"asymptotic", "inplane", "all", "all", "4", "0.01 - 0.2", "2.00", "0.5"},
-                             {"asymptotic", "inplane", "10", "30", "4", "0.01 - 0.2", "2.00", "0.5"}}));
+  EXPECT_EQ(t[0].rows,
+            (Rows{{"asymptotic", "inplane", "all", "all", "4", "0.01 - 0.2", "2.00", "0.5"},
+                  {"asymptotic", "inplane", "10", "30", "4", "0.01 - 0.2", "2.00", "0.5"}}));
   EXPECT_EQ(t[1].rows.size(), 5u);
   EXPECT_TRUE(std::filesystem::exists(dir / "model-error.csv"));
   std::filesystem::remove_all(dir);

@@ -26,7 +26,8 @@ struct Fixture {
 };
 
 Fixture make() {
-  Fixture f{catena::testing::prepare(make_taut_inclined_problem(0.05, 30.0, 38.0, 1.0)), {}, {}, {}};
+  Fixture f{
+      catena::testing::prepare(make_taut_inclined_problem(0.05, 30.0, 38.0, 1.0)), {}, {}, {}};
   f.model = build_airy_model(f.solved.problem, f.solved.statics, f.solved.groups,
                              AiryCurvatureFit::Tangent, 4);
   f.stations = Vector::LinSpaced(201, 0.0, f.model.length);
@@ -61,7 +62,8 @@ TEST(AiryModeShape, NullVectorAtARootSatisfiesTheBoundaryConditions) {
     EXPECT_GT(shape.tension_n.cwiseAbs().maxCoeff(), 0.0);
   }
   // Half-way between two roots the system is far from singular and the ends do not vanish.
-  const double omega = f.solved.groups.omega_from_k_l_over_pi(0.5 * (scan.roots[0] + scan.roots[1]) / kPi);
+  const double omega =
+      f.solved.groups.omega_from_k_l_over_pi(0.5 * (scan.roots[0] + scan.roots[1]) / kPi);
   const AiryModeShape off =
       airy_mode_shape(f.model, f.solved.statics, omega, f.stations, f.travel_times * omega);
   EXPECT_GT(off.residual, 1e-4);

@@ -74,8 +74,9 @@ TEST(AiryModel, SecantFitPassesThroughBothEnds) {
   const double L = s.problem.cable.length_m;
   EXPECT_EQ(model.s_ref, 0.0);
   EXPECT_EQ(model.a2_ref, model.alpha_end[0] * model.alpha_end[0]);
-  EXPECT_LE(relative_error(model.a2_ref + model.a2_slope * L, model.alpha_end[1] * model.alpha_end[1]),
-            1e-14);
+  EXPECT_LE(
+      relative_error(model.a2_ref + model.a2_slope * L, model.alpha_end[1] * model.alpha_end[1]),
+      1e-14);
 }
 
 TEST(AiryModel, PaperFitIsEquations17And18) {
@@ -118,8 +119,12 @@ TEST(AiryModel, TravelTimeIsTheIntegralOfTheSlowness) {
   for (int i = 1; i < n; ++i) simpson += (i % 2 ? 4.0 : 2.0) * slowness(i * L / n);
   simpson *= L / (3.0 * n);
   EXPECT_LE(relative_error(model.travel_time, simpson), 1e-12);
-  EXPECT_LE(relative_error(model_of(s, AiryCurvatureFit::Tangent, 1).travel_time, model.travel_time), 1e-13);
-  EXPECT_LE(relative_error(model_of(s, AiryCurvatureFit::Tangent, 40).travel_time, model.travel_time), 1e-13);
+  EXPECT_LE(
+      relative_error(model_of(s, AiryCurvatureFit::Tangent, 1).travel_time, model.travel_time),
+      1e-13);
+  EXPECT_LE(
+      relative_error(model_of(s, AiryCurvatureFit::Tangent, 40).travel_time, model.travel_time),
+      1e-13);
 }
 
 TEST(AiryModel, AiryArgumentFallsLinearlyAtRateKappa) {
@@ -133,8 +138,9 @@ TEST(AiryModel, AiryArgumentFallsLinearlyAtRateKappa) {
     EXPECT_LE(relative_error(slope, -model.kappa), 1e-12) << omega;
   }
   const double shift = airy_argument(model, 2.0, 0.0) - airy_argument(model, 0.0, 0.0);
-  EXPECT_LE(relative_error(shift, -model.mass * 4.0 * model.inverse_ea / (model.kappa * model.kappa)),
-            1e-9);
+  EXPECT_LE(
+      relative_error(shift, -model.mass * 4.0 * model.inverse_ea / (model.kappa * model.kappa)),
+      1e-9);
 }
 
 }  // namespace

@@ -42,8 +42,8 @@ ModalResult airy_outofplane(const Solved& s, bool shapes = false) {
 std::vector<double> shooting_outofplane(const Solved& s) {
   ShootingSolverOptions options;
   options.relative_tolerance = 1e-12;
-  const SolverOutput out =
-      solve_shooting(s.problem, s.statics, s.groups, catena::testing::modes_request(0, kModes), options);
+  const SolverOutput out = solve_shooting(s.problem, s.statics, s.groups,
+                                          catena::testing::modes_request(0, kModes), options);
   std::vector<double> omegas;
   if (out.outofplane) {
     for (const Mode& mode : out.outofplane->modes) omegas.push_back(mode.omega_rad_s);
@@ -72,17 +72,20 @@ Measured measure(double eps, double phi_deg) {
 
 TEST(AiryOutOfPlane, ErrorAgainstShootingFallsAsEpsSquaredAndStaysBelowTheBound) {
   // Measured (largest over 4 modes, mass ratio 0.8, lambda^2 = 50), error / estimate:
-  //   phi 10: eps 0.4 1.46e-3/4.83e-3, 0.2 3.72e-4/1.22e-3, 0.1 9.33e-5/3.06e-4, 0.05 2.33e-5/7.65e-5
-  //   phi 30: eps 0.4 1.13e-3/3.76e-3, 0.2 2.87e-4/9.45e-4, 0.1 7.21e-5/2.37e-4, 0.05 1.80e-5/5.92e-5
-  //   phi 60: eps 0.4 3.76e-4/1.28e-3, 0.2 9.57e-5/3.17e-4, 0.1 2.40e-5/7.90e-5, 0.05 6.01e-6/1.97e-5
+  //   phi 10: eps 0.4 1.46e-3/4.83e-3, 0.2 3.72e-4/1.22e-3, 0.1 9.33e-5/3.06e-4,
+  //   0.05 2.33e-5/7.65e-5 phi 30: eps 0.4 1.13e-3/3.76e-3, 0.2 2.87e-4/9.45e-4,
+  //   0.1 7.21e-5/2.37e-4, 0.05 1.80e-5/5.92e-5 phi 60: eps 0.4 3.76e-4/1.28e-3,
+  //   0.2 9.57e-5/3.17e-4, 0.1 2.40e-5/7.90e-5, 0.05 6.01e-6/1.97e-5
   // observed order 1.97-2.00; the estimate (a rigorous bound) is 3.3 times the error.
   const std::vector<double> eps_values{0.4, 0.2, 0.1, 0.05};
   for (double phi_deg : {10.0, 30.0, 60.0}) {
     std::vector<Measured> measured;
     for (double eps : eps_values) {
       measured.push_back(measure(eps, phi_deg));
-      EXPECT_LE(measured.back().error, measured.back().estimate) << "eps " << eps << " phi " << phi_deg;
-      EXPECT_GE(measured.back().error, measured.back().estimate / 10.0) << "eps " << eps << " phi " << phi_deg;
+      EXPECT_LE(measured.back().error, measured.back().estimate)
+          << "eps " << eps << " phi " << phi_deg;
+      EXPECT_GE(measured.back().error, measured.back().estimate / 10.0)
+          << "eps " << eps << " phi " << phi_deg;
     }
     for (std::size_t i = 1; i < measured.size(); ++i) {
       const double order = std::log(measured[i - 1].error / measured[i].error) /
@@ -97,12 +100,14 @@ TEST(AiryOutOfPlane, DiffersFromTheAsymptoticWkbString) {
   // frequencies differ by far more than the root tolerance (measured 1e-4 .. 1e-3 here).
   const Solved s = taut(0.18, 23.46, 38.0);
   const ModalResult airy = airy_outofplane(s);
-  const SolverOutput asymptotic =
-      solve_asymptotic(s.problem, s.statics, s.groups, catena::testing::modes_request(0, kModes), {});
+  const SolverOutput asymptotic = solve_asymptotic(s.problem, s.statics, s.groups,
+                                                   catena::testing::modes_request(0, kModes), {});
   ASSERT_TRUE(asymptotic.outofplane.has_value());
   ASSERT_EQ(airy.modes.size(), asymptotic.outofplane->modes.size());
   for (std::size_t i = 0; i < airy.modes.size(); ++i) {
-    EXPECT_GT(relative_error(airy.modes[i].omega_rad_s, asymptotic.outofplane->modes[i].omega_rad_s), 1e-5)
+    EXPECT_GT(
+        relative_error(airy.modes[i].omega_rad_s, asymptotic.outofplane->modes[i].omega_rad_s),
+        1e-5)
         << "mode " << i + 1;
   }
 }

@@ -45,12 +45,14 @@ TEST(AiryRootScan, CutoffIsAFractionOfTheSmallestStringBound) {
     double smallest = INFINITY;
     for (int j = 0; j <= 2000; ++j) {
       const double t = statics.tension_n(j * L / 2000);
-      smallest = std::min(smallest, kPi * std::sqrt(t / (1.0 + t * f.model.inverse_ea) / f.solved.groups.t0_n));
+      smallest = std::min(
+          smallest, kPi * std::sqrt(t / (1.0 + t * f.model.inverse_ea) / f.solved.groups.t0_n));
     }
     const double bound = spurious_root_cutoff_k_l(f.model, statics, f.solved.groups, 1.0);
     EXPECT_LE(bound, smallest * (1.0 + 1e-14)) << phi_deg;
     EXPECT_LE(relative_error(bound, smallest), 1e-6) << phi_deg;
-    EXPECT_DOUBLE_EQ(spurious_root_cutoff_k_l(f.model, statics, f.solved.groups, 0.75), 0.75 * bound);
+    EXPECT_DOUBLE_EQ(spurious_root_cutoff_k_l(f.model, statics, f.solved.groups, 0.75),
+                     0.75 * bound);
   }
 }
 
@@ -68,7 +70,8 @@ TEST(AiryRootScan, RootsAreAscendingSignChangesAboveTheCutoff) {
   }
   EXPECT_EQ(result.limit_kl, (2.0 * 6 + 20.0) * kPi);  // the automatic limit
   // One determinant per scan step at least, from the cutoff to the last root.
-  EXPECT_GE(result.evaluations, static_cast<long>((result.roots.back() - result.cutoff_kl) / (0.05 * kPi)));
+  EXPECT_GE(result.evaluations,
+            static_cast<long>((result.roots.back() - result.cutoff_kl) / (0.05 * kPi)));
 }
 
 TEST(AiryRootScan, FindsAClosePairBetweenTwoSamplesAtAMinimumOfTheDeterminant) {

@@ -16,9 +16,9 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/csv_table.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/asymptotic_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/common/solver_test_support.hpp"
 #include "test_utils.hpp"
 
@@ -296,15 +296,22 @@ std::string knob_error(const SolverKnobs& knobs) {
 
 TEST(AirySolver, KnobTableNamesTheKnobAndKeepsTheRanges) {
   // Open ends: cutoff_fraction in (0, 1); the eps warning threshold at most max_eps.
-  EXPECT_NE(knob_error({{"cutoff_fraction", 1.0}}).find("[solvers.airy].cutoff_fraction"), std::string::npos);
-  EXPECT_NE(knob_error({{"cutoff_fraction", 0.0}}).find("[solvers.airy].cutoff_fraction"), std::string::npos);
-  EXPECT_NE(knob_error({{"tolerance_bits", 19L}}).find("[solvers.airy].tolerance_bits"), std::string::npos);
-  EXPECT_NE(knob_error({{"max_k_l_over_pi", -1.0}}).find("[solvers.airy].max_k_l_over_pi"), std::string::npos);
+  EXPECT_NE(knob_error({{"cutoff_fraction", 1.0}}).find("[solvers.airy].cutoff_fraction"),
+            std::string::npos);
+  EXPECT_NE(knob_error({{"cutoff_fraction", 0.0}}).find("[solvers.airy].cutoff_fraction"),
+            std::string::npos);
+  EXPECT_NE(knob_error({{"tolerance_bits", 19L}}).find("[solvers.airy].tolerance_bits"),
+            std::string::npos);
+  EXPECT_NE(knob_error({{"max_k_l_over_pi", -1.0}}).find("[solvers.airy].max_k_l_over_pi"),
+            std::string::npos);
   EXPECT_NE(knob_error({{"eps_warning_threshold", 0.6}, {"max_eps", 0.5}})
                 .find("[solvers.airy].eps_warning_threshold"),
             std::string::npos);
-  EXPECT_EQ(knob_error({{"cutoff_fraction", 0.5}, {"scan_step", 1e-4}, {"tolerance_bits", 53L},
-                        {"max_eps", 10.0}, {"quadrature_panels", 1000L}}),
+  EXPECT_EQ(knob_error({{"cutoff_fraction", 0.5},
+                        {"scan_step", 1e-4},
+                        {"tolerance_bits", 53L},
+                        {"max_eps", 10.0},
+                        {"quadrature_panels", 1000L}}),
             "");
   // Defaults as `catena solvers` prints them come from the options struct.
   const SolverEntry* entry = find_solver("airy");
@@ -346,7 +353,8 @@ TEST(AirySolver, ForcedResponseIsNotComputedButDoesNotSpoilTheModes) {
   EXPECT_EQ(out.inplane->modes.size(), 2u);
   EXPECT_TRUE(out.forced.empty());
   bool warned = false;
-  for (const auto& warning : out.summary.warnings) warned = warned || warning.find("forced") != std::string::npos;
+  for (const auto& warning : out.summary.warnings)
+    warned = warned || warning.find("forced") != std::string::npos;
   EXPECT_TRUE(warned);
 }
 

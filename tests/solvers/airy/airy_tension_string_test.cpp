@@ -124,7 +124,8 @@ TEST(AiryTensionString, FrequenciesMatchAnIndependentRungeKuttaIntegration) {
 }
 
 TEST(AiryTensionString, ModeNHasNMinusOneInteriorZerosAndFixedEnds) {
-  for (const TensionString& string : {string_of(10.0, 90.0), string_of(90.0, 10.0), string_of(5.0, 5.0001)}) {
+  for (const TensionString& string :
+       {string_of(10.0, 90.0), string_of(90.0, 10.0), string_of(5.0, 5.0001)}) {
     const Vector s = stations(string.length, 401);
     for (int n = 1; n <= 6; ++n) {
       const Vector v = string_mode_shape(string, string_frequency(string, n, kBits), s);
@@ -154,7 +155,8 @@ TEST(AiryTensionString, FallingTensionGivesTheSameFrequenciesAndMirroredShapes) 
 
 TEST(AiryTensionString, ExtremeArgumentsGiveNoNaN) {
   // Tiny and huge Bessel arguments: a tension ratio of 1e8 (z_A ~ 1e-4 z_B) and a high mode.
-  for (const TensionString& string : {string_of(1e-6, 1e2), string_of(1e2, 1e-6), string_of(1.0, 1.0 + 1e-13)}) {
+  for (const TensionString& string :
+       {string_of(1e-6, 1e2), string_of(1e2, 1e-6), string_of(1.0, 1.0 + 1e-13)}) {
     const Vector s = stations(string.length, 51);
     for (int n : {1, 2, 500}) {
       const double omega = string_frequency(string, n, kBits);
@@ -182,7 +184,8 @@ TEST(AiryTensionString, FitHalvesTheSecantsDeviationAndBoundsIt) {
   double largest = 0.0;
   for (int i = 0; i <= 1000; ++i) {
     const double x = length * i / 1000.0;
-    const double linear = fitted.string.stiffness_a + (fitted.string.stiffness_b - fitted.string.stiffness_a) * i / 1000.0;
+    const double linear = fitted.string.stiffness_a +
+                          (fitted.string.stiffness_b - fitted.string.stiffness_a) * i / 1000.0;
     largest = std::max(largest, std::abs(outofplane_stiffness(s.statics, x) / linear - 1.0));
   }
   EXPECT_LE(largest, fitted.deviation);

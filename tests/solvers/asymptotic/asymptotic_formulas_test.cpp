@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Grinfogel's closed-form in-plane shapes (Grinfogel 1984; docs/reference/references.md), eqs. (34), (28)
-// and (37): the fixed end s = 0, the far end at a root of eq. (21), Irvine's shapes of the
-// horizontal cable (phi = 0, where both formulas reduce to them), the scaling of u with eps, and
-// the mirror used for a falling chord.
+// Grinfogel's closed-form in-plane shapes (Grinfogel 1984; docs/reference/references.md), eqs.
+// (34), (28) and (37): the fixed end s = 0, the far end at a root of eq. (21), Irvine's shapes of
+// the horizontal cable (phi = 0, where both formulas reduce to them), the scaling of u with eps,
+// and the mirror used for a falling chord.
 #include "solvers/asymptotic/asymptotic_formulas.hpp"
 
 #include <gtest/gtest.h>
@@ -25,7 +25,7 @@ double deg(double degrees) { return degrees * kPi / 180.0; }
 struct Case {
   double eps, phi_deg, lambda2;
 };
-const std::vector<Case> kCases = {{0.1, 30.0, 1.0},  {0.1, 30.0, 100.0},   {0.3, 60.0, 10.0},
+const std::vector<Case> kCases = {{0.1, 30.0, 1.0},  {0.1, 30.0, 100.0},     {0.3, 60.0, 10.0},
                                   {0.01, 60.0, 1.0}, {0.3, 30.0, kInfinity}, {0.1, 0.0, 10.0}};
 
 TEST(AsymptoticFormulas, BothShapesVanishAtTheFixedEndSEqualsZero) {
@@ -34,7 +34,8 @@ TEST(AsymptoticFormulas, BothShapesVanishAtTheFixedEndSEqualsZero) {
   for (const auto& c : kCases) {
     for (double kl : {1.3, 4.2, 9.0}) {
       for (Formula formula : {Formula::Eq34, Formula::Eq28}) {
-        const auto shape = asymptotic_mode_shape(stations(11, 2.0), 2.0, kl, c.eps, deg(c.phi_deg), c.lambda2, formula);
+        const auto shape = asymptotic_mode_shape(stations(11, 2.0), 2.0, kl, c.eps, deg(c.phi_deg),
+                                                 c.lambda2, formula);
         const double scale = shape.w.cwiseAbs().maxCoeff();
         EXPECT_LE(std::abs(shape.w[0]), 1e-14 * scale) << c.eps << " " << c.phi_deg << " kL " << kl;
         EXPECT_EQ(shape.u[0], 0.0);
@@ -50,14 +51,18 @@ TEST(AsymptoticFormulas, ZerothOrderShapeMissesTheFarEndByEqTwentyOneWithoutTheC
   for (const auto& c : kCases) {
     const double phi = deg(c.phi_deg);
     for (double kl : {1.3, 4.2, 9.0}) {
-      const auto shape = asymptotic_mode_shape(stations(5, 1.0), 1.0, kl, c.eps, phi, c.lambda2, Formula::Eq28);
-      EXPECT_NEAR(shape.w[4], -4.0 * grinfogel_eq21(kl, 0.0, phi, c.lambda2), 1e-13 * shape.w.cwiseAbs().maxCoeff());
+      const auto shape =
+          asymptotic_mode_shape(stations(5, 1.0), 1.0, kl, c.eps, phi, c.lambda2, Formula::Eq28);
+      EXPECT_NEAR(shape.w[4], -4.0 * grinfogel_eq21(kl, 0.0, phi, c.lambda2),
+                  1e-13 * shape.w.cwiseAbs().maxCoeff());
     }
     const double e1 = c.eps * std::sin(phi);
     for (double kl : grinfogel_eq21_roots(4, c.eps, phi, c.lambda2)) {
       // Enough stations to see the amplitude (kL near 4 pi has nodes at every quarter).
-      const auto shape = asymptotic_mode_shape(stations(41, 1.0), 1.0, kl, c.eps, phi, c.lambda2, Formula::Eq28);
-      EXPECT_NEAR(shape.w[40], -(49.0 / 16.0) * e1 * e1 * std::cos(kl), 1e-12 * shape.w.cwiseAbs().maxCoeff())
+      const auto shape =
+          asymptotic_mode_shape(stations(41, 1.0), 1.0, kl, c.eps, phi, c.lambda2, Formula::Eq28);
+      EXPECT_NEAR(shape.w[40], -(49.0 / 16.0) * e1 * e1 * std::cos(kl),
+                  1e-12 * shape.w.cwiseAbs().maxCoeff())
           << c.eps << " " << c.phi_deg << " kL " << kl;
     }
   }
@@ -70,7 +75,8 @@ TEST(AsymptoticFormulas, FirstOrderShapeMeetsTheFarEndToSecondOrderInE1) {
     const double phi = deg(c.phi_deg);
     const double e1 = c.eps * std::sin(phi);
     for (double kl : grinfogel_eq21_roots(4, c.eps, phi, c.lambda2)) {
-      const auto shape = asymptotic_mode_shape(stations(201, 1.0), 1.0, kl, c.eps, phi, c.lambda2, Formula::Eq34);
+      const auto shape =
+          asymptotic_mode_shape(stations(201, 1.0), 1.0, kl, c.eps, phi, c.lambda2, Formula::Eq34);
       const double amplitude = shape.w.cwiseAbs().maxCoeff();
       EXPECT_LE(std::abs(shape.w[200]), 4.0 * e1 * e1 * amplitude + 1e-12 * amplitude)
           << c.eps << " " << c.phi_deg << " kL " << kl;
@@ -79,7 +85,8 @@ TEST(AsymptoticFormulas, FirstOrderShapeMeetsTheFarEndToSecondOrderInE1) {
   // ... and the miss is really second order: a tenth of eps, a hundredth of the miss.
   const auto miss = [](double eps) {
     const double phi = deg(30.0), kl = grinfogel_eq21_roots(2, eps, phi, 100.0)[1];
-    const auto shape = asymptotic_mode_shape(stations(3, 1.0), 1.0, kl, eps, phi, 100.0, Formula::Eq34);
+    const auto shape =
+        asymptotic_mode_shape(stations(3, 1.0), 1.0, kl, eps, phi, 100.0, Formula::Eq34);
     return shape.w[2] / shape.w.cwiseAbs().maxCoeff();
   };
   EXPECT_NEAR(miss(0.1) / miss(0.01), 100.0, 10.0);
@@ -87,7 +94,8 @@ TEST(AsymptoticFormulas, FirstOrderShapeMeetsTheFarEndToSecondOrderInE1) {
 
 TEST(AsymptoticFormulas, HorizontalCableGivesIrvinesSymmetricShape) {
   // phi = 0: e1 = 0, eq. (34) is eq. (28), and eq. (21) is Irvine's tan(kL/2) = kL/2 - (4/lambda^2)
-  // (kL/2)^3. The symmetric mode is Irvine's 1 - cos(k s) - tan(kL/2) sin(k s), times -(1 - cos kL).
+  // (kL/2)^3. The symmetric mode is Irvine's 1 - cos(k s) - tan(kL/2) sin(k s), times -(1 - cos
+  // kL).
   for (double lambda2 : {1.0, 10.0, 100.0}) {
     const std::vector<double> roots = grinfogel_eq21_roots(4, 0.1, 0.0, lambda2);
     for (double kl : roots) {
@@ -114,7 +122,8 @@ TEST(AsymptoticFormulas, HorizontalCableGivesIrvinesSymmetricShape) {
 }
 
 TEST(AsymptoticFormulas, HorizontalCableGivesIrvinesAntisymmetricShape) {
-  // kL = 2 pi: no net stretching; w is Irvine's sin(2 pi s / L), of amplitude kL (1 - k^2L^2/lambda^2).
+  // kL = 2 pi: no net stretching; w is Irvine's sin(2 pi s / L), of amplitude kL (1 -
+  // k^2L^2/lambda^2).
   const double kl = 2.0 * kPi, lambda2 = 10.0;
   const Vector s = stations(33, 1.0);
   const auto shape = asymptotic_mode_shape(s, 1.0, kl, 0.2, 0.0, lambda2, Formula::Eq34);
@@ -139,9 +148,12 @@ TEST(AsymptoticFormulas, TangentialShapeScalesWithEpsCosPhiOverKL) {
 }
 
 TEST(AsymptoticFormulas, SlowAmplitudeIsOneMinusCosKLPlusSevenQuartersE1) {
-  const auto shape = asymptotic_mode_shape(stations(3, 1.0), 1.0, kPi, 0.1, deg(30.0), 10.0, Formula::Eq34);
-  EXPECT_NEAR(shape.slow_amplitude, 2.0 + 1.75 * 0.05, 1e-15);  // 1 - cos(pi) = 2, e1 = 0.1 sin 30 deg
-  const auto falling = asymptotic_mode_shape(stations(3, 1.0), 1.0, kPi, 0.1, deg(-30.0), 10.0, Formula::Eq34);
+  const auto shape =
+      asymptotic_mode_shape(stations(3, 1.0), 1.0, kPi, 0.1, deg(30.0), 10.0, Formula::Eq34);
+  EXPECT_NEAR(shape.slow_amplitude, 2.0 + 1.75 * 0.05,
+              1e-15);  // 1 - cos(pi) = 2, e1 = 0.1 sin 30 deg
+  const auto falling =
+      asymptotic_mode_shape(stations(3, 1.0), 1.0, kPi, 0.1, deg(-30.0), 10.0, Formula::Eq34);
   EXPECT_EQ(falling.slow_amplitude, shape.slow_amplitude);  // e1 = eps |sin phi|
 }
 
@@ -169,7 +181,7 @@ TEST(AsymptoticFormulas, FirstAxialModeIsTheBarMode) {
   // pi lambda / (eps cos(phi) sqrt(h)); none for an inextensible cable.
   const double eps = 0.2, phi = 0.3, lambda2 = 50.0, h = 0.8;
   EXPECT_LE(catena::testing::relative_error(first_axial_k_l(eps, phi, lambda2, h),
-                           kPi * std::sqrt(lambda2 / h) / (eps * std::cos(phi))),
+                                            kPi * std::sqrt(lambda2 / h) / (eps * std::cos(phi))),
             1e-15);
   EXPECT_TRUE(std::isinf(first_axial_k_l(eps, phi, kInfinity, h)));
 }

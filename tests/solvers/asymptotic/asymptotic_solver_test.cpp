@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/airy_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/common/solver_test_support.hpp"
 #include "test_utils.hpp"
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Tests of the asymptotic solver's WKB out-of-plane string (src/solvers/asymptotic/asymptotic_wkb_string.cpp):
-// harmonics of one travel time, shapes vanishing at the ends, no shapes when none are asked.
+// Tests of the asymptotic solver's WKB out-of-plane string
+// (src/solvers/asymptotic/asymptotic_wkb_string.cpp): harmonics of one travel time, shapes
+// vanishing at the ends, no shapes when none are asked.
 #include "solvers/asymptotic/asymptotic_wkb_string.hpp"
 
 #include <gtest/gtest.h>
@@ -51,8 +52,9 @@ TEST(AsymptoticWkbString, WkbModesAreHarmonicsOfOneTravelTime) {
 
 TEST(AsymptoticWkbString, WkbFrequenciesWithoutShapesCarryNoShapes) {
   const auto s = taut();
-  const ModalResult result = wkb_outofplane_modes(s.statics, s.groups, catena::testing::modes_request(0, 2),
-                                                  s.problem.cable.normal_mass_kg_per_m(), 0.01, 4, "demo");
+  const ModalResult result =
+      wkb_outofplane_modes(s.statics, s.groups, catena::testing::modes_request(0, 2),
+                           s.problem.cable.normal_mass_kg_per_m(), 0.01, 4, "demo");
   ASSERT_EQ(result.modes.size(), 2u);
   EXPECT_EQ(result.modes[0].v.size(), 0);
   EXPECT_EQ(result.modes[0].s_m.size(), 0);

@@ -19,10 +19,12 @@ struct Options {
 
 const KnobTable<Options>& knobs() {
   static const KnobTable<Options> table(
-      "demo", {integer_knob("elements", &Options::elements, Range::closed(2, 1000000), "bar elements"),
-               real_knob("tolerance", &Options::tolerance, Range::open_closed(0.0, 1e-2), "relative"),
-               flag_knob("richardson", &Options::richardson, "extrapolate"),
-               choice_knob("method", &Options::method, {{"adams", Method::Adams}, {"bdf", Method::Bdf}}, "")});
+      "demo",
+      {integer_knob("elements", &Options::elements, Range::closed(2, 1000000), "bar elements"),
+       real_knob("tolerance", &Options::tolerance, Range::open_closed(0.0, 1e-2), "relative"),
+       flag_knob("richardson", &Options::richardson, "extrapolate"),
+       choice_knob("method", &Options::method, {{"adams", Method::Adams}, {"bdf", Method::Bdf}},
+                   "")});
   return table;
 }
 void Options::validate() const { knobs().validate(*this); }
@@ -50,12 +52,14 @@ TEST(KnobTable, ReadsSceneValuesOverDefaults) {
 
 TEST(KnobTable, RejectsNamingTheKnobAndTheReason) {
   EXPECT_EQ(message_of({{"elemnts", 4L}}),
-            "[solvers.demo].elemnts: unknown knob for solver 'demo' (known: elements, tolerance, richardson, method)");
+            "[solvers.demo].elemnts: unknown knob for solver 'demo' (known: elements, tolerance, "
+            "richardson, method)");
   EXPECT_EQ(message_of({{"elements", 1L}}), "[solvers.demo].elements = 1: must be in [2, 1e+06]");
   EXPECT_EQ(message_of({{"elements", 2.5}}), "[solvers.demo].elements: expected an integer");
   EXPECT_EQ(message_of({{"tolerance", 0.0}}), "[solvers.demo].tolerance = 0: must be in (0, 0.01]");
   EXPECT_EQ(message_of({{"richardson", 1L}}), "[solvers.demo].richardson: expected true or false");
-  EXPECT_EQ(message_of({{"method", std::string("rk4")}}), "[solvers.demo].method = \"rk4\": must be \"adams\" or \"bdf\"");
+  EXPECT_EQ(message_of({{"method", std::string("rk4")}}),
+            "[solvers.demo].method = \"rk4\": must be \"adams\" or \"bdf\"");
 }
 
 TEST(KnobTable, IntegersAreRangeCheckedBeforeNarrowingSoNothingWraps) {
@@ -91,9 +95,9 @@ TEST(KnobTable, EntryValidatesAndBuildsFromTheSameTable) {
   struct Nothing final : SolverNumerics {
     ModalResult modes(Plane, int) override { return {}; }
   };
-  const SolverEntry entry = make_solver_entry("demo solver", knobs(), [](const SolveContext&, const Options&) {
-    return std::make_unique<Nothing>();
-  });
+  const SolverEntry entry = make_solver_entry(
+      "demo solver", knobs(),
+      [](const SolveContext&, const Options&) { return std::make_unique<Nothing>(); });
   EXPECT_EQ(entry.name, "demo");
   EXPECT_EQ(entry.knobs.size(), 4u);
   EXPECT_NO_THROW(entry.validate_knobs({{"elements", 10L}}));

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Independent anchors of fe and shooting on general lines, in plane as well as out of plane
-// (docs/explanation/physics.md, "General lines"). Each is a weightless taut line, straight along x, whose
-// in-plane motion splits into an axial bar (stiffness EA, mass m + point mass + its tangential
-// added mass) and a transverse string (stiffness S = T / (1 + e) per unstretched length, normal
-// mass M); out of plane it is the same string. The exact frequency equations are solved here by
-// bisection, independently of both solvers:
+// (docs/explanation/physics.md, "General lines"). Each is a weightless taut line, straight along x,
+// whose in-plane motion splits into an axial bar (stiffness EA, mass m + point mass + its
+// tangential added mass) and a transverse string (stiffness S = T / (1 + e) per unstretched length,
+// normal mass M); out of plane it is the same string. The exact frequency equations are solved here
+// by bisection, independently of both solvers:
 // - a point mass P at s = a (off centre) on a line of one section, fixed at both ends:
 //     S k sin(k L) = w^2 P sin(k a) sin(k (L - a)), k = w / c, for the bar (S = EA, c^2 = EA / m)
 //     and for the string (S = T / (1 + e), c^2 = S / M);
@@ -43,19 +43,21 @@ std::vector<double> merged(std::vector<double> a, const std::vector<double>& b, 
 }
 
 // Both solvers, 10 modes per plane, against the exact frequencies of each plane.
-void expect_both_solvers_match(const Problem& p, const std::vector<double>& inplane,
+void expect_both_solvers_match(const Problem& p,
+                               const std::vector<double>& inplane,
                                const std::vector<double>& outofplane) {
   ASSERT_EQ(inplane.size(), static_cast<std::size_t>(kModes));
   ASSERT_EQ(outofplane.size(), static_cast<std::size_t>(kModes));
   ShootingSolverOptions tight;
   tight.relative_tolerance = 1e-12;
   const SolveRequest request = catena::testing::modes_request(kModes, kModes);
-  const Solved fe = catena::testing::solve_problem(solve_fe, p, request, FeSolverOptions{.elements = 1000});
+  const Solved fe =
+      catena::testing::solve_problem(solve_fe, p, request, FeSolverOptions{.elements = 1000});
   const Solved shooting = catena::testing::solve_problem(solve_shooting, p, request, tight);
   for (const Solved* solved : {&fe, &shooting}) {
     const char* name = solved == &fe ? "fe" : "shooting";
-    ASSERT_EQ(solved->output.summary.termination, Termination::Converged) << name << ": "
-                                                                          << solved->output.summary.full_report();
+    ASSERT_EQ(solved->output.summary.termination, Termination::Converged)
+        << name << ": " << solved->output.summary.full_report();
     for (const bool in_plane : {true, false}) {
       const ModalResult& result = in_plane ? *solved->output.inplane : *solved->output.outofplane;
       const std::vector<double>& exact = in_plane ? inplane : outofplane;
@@ -70,7 +72,8 @@ void expect_both_solvers_match(const Problem& p, const std::vector<double>& inpl
 }
 
 // Fixed-fixed wave equation S u'' + w^2 rho u = 0 on (0, L) with a point inertia P at a.
-std::vector<double> point_mass_frequencies(double S, double rho, double L, double a, double P, double top) {
+std::vector<double> point_mass_frequencies(
+    double S, double rho, double L, double a, double P, double top) {
   const double c = std::sqrt(S / rho);
   auto equation = [&](double w) {
     const double k = w / c;
@@ -94,16 +97,18 @@ TEST(LineAnchors, OffCentrePointMassOnATautLineInBothPlanes) {
   const double T = EA * strain, S = T / (1.0 + strain);
   const double string_top = 12.0 * kPi * std::sqrt(S / M) / L;
   const std::vector<double> string = point_mass_frequencies(S, M, L, a, P, string_top);
-  const std::vector<double> bar = point_mass_frequencies(EA, m, L, a, P, 12.0 * kPi * std::sqrt(EA / m) / L);
+  const std::vector<double> bar =
+      point_mass_frequencies(EA, m, L, a, P, 12.0 * kPi * std::sqrt(EA / m) / L);
   expect_both_solvers_match(p, merged(string, bar, kModes), string);
 }
 
 // Fixed-fixed two-part wave equation: S_i u'' + w^2 rho_i u = 0 on each part, S u' continuous.
-std::vector<double> two_part_frequencies(double S1, double rho1, double L1, double S2, double rho2, double L2,
-                                         double top) {
+std::vector<double> two_part_frequencies(
+    double S1, double rho1, double L1, double S2, double rho2, double L2, double top) {
   auto equation = [&](double w) {
     const double k1 = w * std::sqrt(rho1 / S1), k2 = w * std::sqrt(rho2 / S2);
-    return S1 * k1 * std::cos(k1 * L1) * std::sin(k2 * L2) + S2 * k2 * std::sin(k1 * L1) * std::cos(k2 * L2);
+    return S1 * k1 * std::cos(k1 * L1) * std::sin(k2 * L2) +
+           S2 * k2 * std::sin(k1 * L1) * std::cos(k2 * L2);
   };
   return roots_by_bisection(equation, top, kModes);
 }
@@ -122,8 +127,10 @@ TEST(LineAnchors, TwoSegmentsOfDifferentEAInBothPlanes) {
   auto top = [&](double S1_, double rho1, double S2_, double rho2) {
     return 12.0 * kPi / (L1 * std::sqrt(rho1 / S1_) + L2 * std::sqrt(rho2 / S2_));
   };
-  const std::vector<double> string = two_part_frequencies(S1, M1, L1, S2, M2, L2, top(S1, M1, S2, M2));
-  const std::vector<double> bar = two_part_frequencies(EA1, m1, L1, EA2, m2, L2, top(EA1, m1, EA2, m2));
+  const std::vector<double> string =
+      two_part_frequencies(S1, M1, L1, S2, M2, L2, top(S1, M1, S2, M2));
+  const std::vector<double> bar =
+      two_part_frequencies(EA1, m1, L1, EA2, m2, L2, top(EA1, m1, EA2, m2));
   expect_both_solvers_match(p, merged(string, bar, kModes), string);
 }
 

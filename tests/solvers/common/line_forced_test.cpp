@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The forced response on a general line (docs/explanation/methods/fe.md, "Lines"; docs/explanation/methods/shooting.md,
-// "General lines"), by fe and by shooting:
+// The forced response on a general line (docs/explanation/methods/fe.md, "Lines";
+// docs/explanation/methods/shooting.md, "General lines"), by fe and by shooting:
 // - a weightless taut line of two segments with different mass densities, driven out of plane at
 //   end b: the exact response is a sine on each segment, matched in v and T v' at the joint
 //   (both solvers against it);
@@ -40,7 +40,9 @@ SolveRequest forced_request(CableEnd end, ForcingDirection direction, std::vecto
 }
 
 double max_abs(const Vector& x) { return x.cwiseAbs().maxCoeff(); }
-double max_abs_difference(const Vector& a, const Vector& b) { return (a - b).cwiseAbs().maxCoeff(); }
+double max_abs_difference(const Vector& a, const Vector& b) {
+  return (a - b).cwiseAbs().maxCoeff();
+}
 
 // Two weightless segments (40 m of 12 kg/m, 60 m of 2.5 kg/m, normal mass with added mass), EA =
 // 1e7 N, stretched from 100 m to 100.1 m: T = 1e4 N. Out-of-plane natural frequencies 1.26, 2.84,
@@ -56,10 +58,12 @@ Problem two_density_line() {
 // segment, v and v' continuous at the joint (same T and stretch on both sides).
 Vector exact_two_density_response(const Vector& s, double omega, double d) {
   const double T = 1e4, stretch = 1.0 + T / 1e7, L1 = 40.0, L = 100.0;
-  const double k1 = omega * std::sqrt(12.0 * stretch / T), k2 = omega * std::sqrt(2.5 * stretch / T);
+  const double k1 = omega * std::sqrt(12.0 * stretch / T),
+               k2 = omega * std::sqrt(2.5 * stretch / T);
   auto shape = [&](double x) {
     if (x <= L1) return std::sin(k1 * x);
-    return std::sin(k1 * L1) * std::cos(k2 * (x - L1)) + (k1 / k2) * std::cos(k1 * L1) * std::sin(k2 * (x - L1));
+    return std::sin(k1 * L1) * std::cos(k2 * (x - L1)) +
+           (k1 / k2) * std::cos(k1 * L1) * std::sin(k2 * (x - L1));
   };
   Vector v(s.size());
   for (Index j = 0; j < s.size(); ++j) v[j] = d * shape(s[j]) / shape(L);
@@ -68,9 +72,12 @@ Vector exact_two_density_response(const Vector& s, double omega, double d) {
 
 TEST(LineForced, TwoDensityStringMatchesTheExactResponseInBothSolvers) {
   const Problem p = two_density_line();
-  const SolveRequest request = forced_request(CableEnd::B, ForcingDirection::OutOfPlane, {0.7, 2.0, 4.6});
-  const Solved fe = catena::testing::solve_problem(solve_fe, p, request, FeSolverOptions{.elements = 1000});
-  const Solved shooting = catena::testing::solve_problem(solve_shooting, p, request, tight_shooting());
+  const SolveRequest request =
+      forced_request(CableEnd::B, ForcingDirection::OutOfPlane, {0.7, 2.0, 4.6});
+  const Solved fe =
+      catena::testing::solve_problem(solve_fe, p, request, FeSolverOptions{.elements = 1000});
+  const Solved shooting =
+      catena::testing::solve_problem(solve_shooting, p, request, tight_shooting());
   ASSERT_NEAR(shooting.statics.horizontal_force_n(), 1e4, 1e-5);
   for (const Solved* solved : {&fe, &shooting}) {
     ASSERT_EQ(solved->output.forced.size(), 3u);
@@ -98,11 +105,14 @@ Problem kinked_line() {
 }
 
 TEST(LineForced, FeAndShootingAgreeInPlaneAwayFromResonance) {
-  // The line's lowest in-plane frequencies are 1.13, 2.05 and 3.19 rad/s; these lie below and between.
+  // The line's lowest in-plane frequencies are 1.13, 2.05 and 3.19 rad/s; these lie below and
+  // between.
   for (CableEnd end : {CableEnd::A, CableEnd::B}) {
     const SolveRequest request = forced_request(end, ForcingDirection::Normal, {0.5, 1.6, 2.6});
-    const Solved fe = catena::testing::solve_problem(solve_fe, kinked_line(), request, FeSolverOptions{.elements = 1000});
-    const Solved shooting = catena::testing::solve_problem(solve_shooting, kinked_line(), request, tight_shooting());
+    const Solved fe = catena::testing::solve_problem(solve_fe, kinked_line(), request,
+                                                     FeSolverOptions{.elements = 1000});
+    const Solved shooting =
+        catena::testing::solve_problem(solve_shooting, kinked_line(), request, tight_shooting());
     ASSERT_EQ(fe.output.forced.size(), 3u);
     ASSERT_EQ(shooting.output.forced.size(), 3u);
     for (std::size_t f = 0; f < 3; ++f) {
@@ -112,7 +122,8 @@ TEST(LineForced, FeAndShootingAgreeInPlaneAwayFromResonance) {
       EXPECT_FALSE(a.near_resonance || b.near_resonance);
       const double tension = max_abs_difference(a.tension_n, b.tension_n) / max_abs(b.tension_n);
       const double scale = std::max(max_abs(b.u), max_abs(b.w));
-      const double displacement = std::max(max_abs_difference(a.u, b.u), max_abs_difference(a.w, b.w)) / scale;
+      const double displacement =
+          std::max(max_abs_difference(a.u, b.u), max_abs_difference(a.w, b.w)) / scale;
       EXPECT_LE(tension, a.relative_error_estimate) << "at " << a.omega_rad_s << " rad/s";
       EXPECT_LE(tension, 1e-7) << "at " << a.omega_rad_s << " rad/s";
       EXPECT_LE(displacement, 1e-7) << "at " << a.omega_rad_s << " rad/s";

@@ -30,13 +30,14 @@ TEST(LineModalMass, EachSegmentsDensityAndEachPointAtItsArcLength) {
   mode.s_m = Vector::LinSpaced(101, 0.0, 10.0);
   mode.v = Vector::Ones(101);  // uniform motion: the modal mass is the total moving mass
   const double total = 4.0 * 3.0 + 6.0 * 1.0 + 5.0 + 1.0;
-  EXPECT_NEAR(internal::line_modal_mass(Plane::OutOfPlane, mode, problem.line, statics), total, 1e-12 * total);
+  EXPECT_NEAR(internal::line_modal_mass(Plane::OutOfPlane, mode, problem.line, statics), total,
+              1e-12 * total);
   // v = s: int_0^4 3 s^2 + int_4^10 s^2 = 64 + 312 = 376, plus 6 x 25 at the point; the
   // trapezoid on 0.1 m intervals overestimates int s^2 by h^2 f''/12 = h^2/6 per metre and density.
   mode.v = mode.s_m;
   const double trapezoid_excess = 0.01 / 6.0 * (4.0 * 3.0 + 6.0 * 1.0);
-  EXPECT_NEAR(internal::line_modal_mass(Plane::OutOfPlane, mode, problem.line, statics), 376.0 + 150.0 + trapezoid_excess,
-              1e-9);
+  EXPECT_NEAR(internal::line_modal_mass(Plane::OutOfPlane, mode, problem.line, statics),
+              376.0 + 150.0 + trapezoid_excess, 1e-9);
 }
 
 }  // namespace

@@ -23,7 +23,8 @@ Vector values(std::initializer_list<double> list) {
 // Exact comparison of vectors, with the entries printed when they differ.
 void expect_equal(const Vector& actual, const Vector& expected) {
   ASSERT_EQ(actual.size(), expected.size());
-  for (Index i = 0; i < actual.size(); ++i) EXPECT_DOUBLE_EQ(actual[i], expected[i]) << "entry " << i;
+  for (Index i = 0; i < actual.size(); ++i)
+    EXPECT_DOUBLE_EQ(actual[i], expected[i]) << "entry " << i;
 }
 
 TEST(SetModeFrequency, FillsEveryUnitFromOmega) {
@@ -141,7 +142,8 @@ TEST(IntegrateOnStations, TrapezoidIsExactForLinearFunctionsOnUnequalSpacing) {
   const Vector f = (3.0 + 2.0 * s.array()).matrix();
   EXPECT_NEAR(integrate_on_stations(s, f), 3.0 * 1.2 + 1.2 * 1.2, 1e-15);
   // Shifted stations: the same rule on [2, 2.5].
-  EXPECT_NEAR(integrate_on_stations(values({2.0, 2.2, 2.5}), values({-1.0, -0.6, 0.0})), -0.25, 1e-15);
+  EXPECT_NEAR(integrate_on_stations(values({2.0, 2.2, 2.5}), values({-1.0, -0.6, 0.0})), -0.25,
+              1e-15);
 }
 
 TEST(IntegrateOnStations, TrapezoidOfAQuadraticHasItsKnownError) {
@@ -198,7 +200,8 @@ TEST(DropShapeFields, KeepsTheSummaryAndClearsTheShape) {
   mode.max_abs_tension_n = 5.0;
   mode.modal_mass_kg = 0.5;
   drop_shape_fields(mode);
-  EXPECT_EQ(mode.s_m.size() + mode.u.size() + mode.v.size() + mode.w.size() + mode.tension_n.size(), 0);
+  EXPECT_EQ(mode.s_m.size() + mode.u.size() + mode.v.size() + mode.w.size() + mode.tension_n.size(),
+            0);
   EXPECT_EQ(mode.modal_mass_kg, -1.0);
   EXPECT_EQ(mode.omega_rad_s, 2.0);
   EXPECT_EQ(mode.relative_error_estimate, 1e-9);

@@ -36,8 +36,8 @@ ModalResult valid_result(int count) {
 struct Violation {
   std::string name;
   std::function<void(ModalResult&)> apply;
-  std::size_t kept;         // the valid prefix
-  std::string in_message;   // names the mode and the property
+  std::size_t kept;        // the valid prefix
+  std::string in_message;  // names the mode and the property
 };
 
 void expect_rejected(const Violation& violation) {
@@ -51,7 +51,8 @@ void expect_rejected(const Violation& violation) {
       << violation.name;
   EXPECT_NE(result.summary.message.find(violation.in_message), std::string::npos)
       << violation.name << ": " << result.summary.message;
-  EXPECT_NE(result.summary.message.find("Converged: all"), std::string::npos) << "keeps the solver's own words";
+  EXPECT_NE(result.summary.message.find("Converged: all"), std::string::npos)
+      << "keeps the solver's own words";
   ASSERT_FALSE(result.summary.warnings.empty()) << violation.name;
 }
 
@@ -70,22 +71,30 @@ TEST(ValidateModalResult, AValidResultIsUntouched) {
 
 TEST(ValidateModalResult, EachViolatedPropertyIsNamedAndTheValidPrefixKept) {
   const std::vector<Violation> violations = {
-      {"negative omega", [](ModalResult& r) { r.modes[2].omega_rad_s = -0.525; r.modes[3].omega_rad_s = 4; }, 2,
-       "mode 3: omega = -0.525 rad/s is not a finite positive frequency"},
+      {"negative omega",
+       [](ModalResult& r) {
+         r.modes[2].omega_rad_s = -0.525;
+         r.modes[3].omega_rad_s = 4;
+       },
+       2, "mode 3: omega = -0.525 rad/s is not a finite positive frequency"},
       {"zero omega first", [](ModalResult& r) { r.modes[0].omega_rad_s = 0.0; }, 0, "mode 1"},
       {"NaN omega", [](ModalResult& r) { r.modes[1].omega_rad_s = std::nan(""); }, 1, "mode 2"},
       {"infinite omega", [](ModalResult& r) { r.modes[3].omega_rad_s = kInf; }, 3, "mode 4"},
       {"descending", [](ModalResult& r) { r.modes[2].omega_rad_s = 1.5; }, 2, "strictly ascending"},
-      {"tie", [](ModalResult& r) { r.modes[3].omega_rad_s = 3.0; }, 3, "mode 4: omega = 3 rad/s is not above mode 3"},
+      {"tie", [](ModalResult& r) { r.modes[3].omega_rad_s = 3.0; }, 3,
+       "mode 4: omega = 3 rad/s is not above mode 3"},
       {"index gap", [](ModalResult& r) { r.modes[1].index = 3; }, 1, "indices must be 1, 2, 3"},
       {"NaN estimate", [](ModalResult& r) { r.modes[1].relative_error_estimate = std::nan(""); }, 1,
        "mode 2: relative error estimate"},
-      {"negative estimate other than -1", [](ModalResult& r) { r.modes[2].relative_error_estimate = -0.5; }, 2,
+      {"negative estimate other than -1",
+       [](ModalResult& r) { r.modes[2].relative_error_estimate = -0.5; }, 2,
        "neither finite and >= 0 nor -1"},
-      {"non-finite Hz", [](ModalResult& r) { r.modes[0].frequency_hz = kInf; }, 0, "unit conversion"},
-      {"non-finite shape", [](ModalResult& r) { r.modes[1].w = Vector::Constant(3, std::nan("")); }, 1,
-       "mode 2: its shape"},
-      {"non-finite tension", [](ModalResult& r) { r.modes[3].max_abs_tension_n = kInf; }, 3, "mode 4: its shape"},
+      {"non-finite Hz", [](ModalResult& r) { r.modes[0].frequency_hz = kInf; }, 0,
+       "unit conversion"},
+      {"non-finite shape", [](ModalResult& r) { r.modes[1].w = Vector::Constant(3, std::nan("")); },
+       1, "mode 2: its shape"},
+      {"non-finite tension", [](ModalResult& r) { r.modes[3].max_abs_tension_n = kInf; }, 3,
+       "mode 4: its shape"},
   };
   for (const Violation& violation : violations) expect_rejected(violation);
 }
@@ -129,7 +138,8 @@ TEST(ValidateModalResult, ACountThatDoesNotCoverTheReturnedSetFailsThePlane) {
     validate_modal_result(result, 4);
     EXPECT_TRUE(result.modes.empty());
     EXPECT_EQ(result.summary.termination, Termination::NumericalFailure);
-    EXPECT_NE(result.summary.message.find(std::to_string(proved) + " eigenvalues"), std::string::npos);
+    EXPECT_NE(result.summary.message.find(std::to_string(proved) + " eigenvalues"),
+              std::string::npos);
   }
 }
 
@@ -180,7 +190,8 @@ TEST(ScaleForcedOutcome, AnOverflowBecomesADiagnosticNamingTheAmplitude) {
   ForcedOutcome outcome = unit_outcome(10.0);
   scale_forced_outcome(outcome, 1e308);
   const ForcedResponse& response = outcome.responses[0];
-  EXPECT_NE(response.diagnostic.find("amplitude 1e+308 m overflows"), std::string::npos) << response.diagnostic;
+  EXPECT_NE(response.diagnostic.find("amplitude 1e+308 m overflows"), std::string::npos)
+      << response.diagnostic;
   EXPECT_EQ(response.tension_n.size(), 0);
   EXPECT_EQ(response.max_abs_tension_n, 0.0);
   EXPECT_EQ(response.s_m.size(), 3);
@@ -197,7 +208,8 @@ TEST(ValidateForcedOutcome, ASilentNonFiniteResponseGetsADiagnostic) {
   ForcedOutcome outcome = unit_outcome(1.0);
   outcome.responses[0].w[1] = std::nan("");
   validate_forced_outcome(outcome);
-  EXPECT_NE(outcome.responses[0].diagnostic.find("non-finite response without a diagnostic"), std::string::npos);
+  EXPECT_NE(outcome.responses[0].diagnostic.find("non-finite response without a diagnostic"),
+            std::string::npos);
   EXPECT_EQ(outcome.responses[0].w.size(), 0);
   EXPECT_EQ(outcome.summary.termination, Termination::NoConvergence);
 }

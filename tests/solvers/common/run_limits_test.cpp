@@ -3,17 +3,18 @@
 // keeps valid partial results (never a hang, never a wrong "converged"); progress is reported
 // per unit; oversized requests are refused naming the field. No test depends on timing: an
 // already expired deadline makes every check deterministic.
+#include "catena/solvers/run_limits.hpp"
+
 #include <gtest/gtest.h>
 
 #include <map>
 #include <string>
 
 #include "catena/core/error.hpp"
-#include "catena/solvers/run_limits.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/problem_builders.hpp"
-#include "solvers/common/work_meter.hpp"
 #include "solvers/common/solver_test_support.hpp"
+#include "solvers/common/work_meter.hpp"
 
 namespace catena {
 namespace {
@@ -26,7 +27,9 @@ RunLimits expired_limits() {
   return limits;
 }
 
-SolverOutput run(const std::string& solver, const testing::SolvedProblem& solved, const SolveRequest& request,
+SolverOutput run(const std::string& solver,
+                 const testing::SolvedProblem& solved,
+                 const SolveRequest& request,
                  const RunLimits* limits) {
   const SolveContext context{solved.problem, solved.statics, solved.groups, request, limits};
   return run_solver(*find_solver(solver), context, {});
@@ -67,14 +70,18 @@ TEST_P(ExpiredDeadline, StopsWithValidPartialResultsAndSaysWhy) {
     EXPECT_EQ(inplane.modes[i].omega_rad_s, full.inplane->modes[i].omega_rad_s);
   }
   EXPECT_TRUE(limited.outofplane->modes.empty());
-  EXPECT_NE(limited.outofplane->summary.message.find("reached after 0 of 2 out-of-plane modes"), std::string::npos)
+  EXPECT_NE(limited.outofplane->summary.message.find("reached after 0 of 2 out-of-plane modes"),
+            std::string::npos)
       << limited.outofplane->summary.message;
   EXPECT_TRUE(limited.forced.empty());
-  EXPECT_NE(limited.summary.message.find("reached after 0 of 3 forced frequencies"), std::string::npos)
+  EXPECT_NE(limited.summary.message.find("reached after 0 of 3 forced frequencies"),
+            std::string::npos)
       << limited.summary.message;
 }
 
-INSTANTIATE_TEST_SUITE_P(Solvers, ExpiredDeadline, ::testing::Values("fe", "shooting", "frobenius"));
+INSTANTIATE_TEST_SUITE_P(Solvers,
+                         ExpiredDeadline,
+                         ::testing::Values("fe", "shooting", "frobenius"));
 
 // shooting and frobenius stop per mode: exactly the first mode is kept.
 TEST_F(ExpiredDeadline, ShootingAndFrobeniusKeepTheFirstModeFound) {
@@ -97,7 +104,8 @@ TEST_F(ExpiredDeadline, ForcedResponseKeepsTheFrequenciesDone) {
     ASSERT_EQ(output.forced.size(), 1u) << solver << ": " << output.summary.message;
     EXPECT_EQ(output.forced[0].omega_rad_s, 0.3);
     EXPECT_EQ(output.summary.termination, Termination::NoConvergence) << solver;
-    EXPECT_NE(output.summary.message.find("reached after 1 of 3 forced frequencies"), std::string::npos)
+    EXPECT_NE(output.summary.message.find("reached after 1 of 3 forced frequencies"),
+              std::string::npos)
         << solver << ": " << output.summary.message;
   }
 }
@@ -105,7 +113,8 @@ TEST_F(ExpiredDeadline, ForcedResponseKeepsTheFrequenciesDone) {
 // airy checks its scan every chunk of steps: an expired deadline stops it after the first chunk
 // with the roots below the point reached, each the unlimited run's.
 TEST(ExpiredDeadlineAiry, StopsTheScanAndKeepsTheRootsBelow) {
-  const testing::SolvedProblem solved = testing::prepare(make_taut_inclined_problem(0.5, 30.0, 50.0, 1.0));
+  const testing::SolvedProblem solved =
+      testing::prepare(make_taut_inclined_problem(0.5, 30.0, 50.0, 1.0));
   const RunLimits limits = expired_limits();
   const SolveRequest request = testing::modes_request(60, 0);
   const SolverOutput full = run("airy", solved, request, nullptr);
@@ -114,7 +123,8 @@ TEST(ExpiredDeadlineAiry, StopsTheScanAndKeepsTheRootsBelow) {
   ASSERT_TRUE(limited.inplane);
   EXPECT_LT(limited.inplane->modes.size(), 60u);
   EXPECT_EQ(limited.summary.termination, Termination::NoConvergence);
-  EXPECT_NE(limited.summary.message.find("time limit of 0.5 s"), std::string::npos) << limited.summary.message;
+  EXPECT_NE(limited.summary.message.find("time limit of 0.5 s"), std::string::npos)
+      << limited.summary.message;
   for (std::size_t i = 0; i < limited.inplane->modes.size(); ++i)
     EXPECT_EQ(limited.inplane->modes[i].omega_rad_s, full.inplane->modes[i].omega_rad_s);
 }
@@ -143,7 +153,8 @@ TEST(RunLimitsTimeLimit, RefusesNonPositiveNonFiniteAndHugeLimits) {
     RunLimits::check_time_limit(-2.0, "--time-limit");
     FAIL();
   } catch (const InvalidInput& error) {
-    EXPECT_NE(std::string(error.what()).find("--time-limit = -2"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("--time-limit = -2"), std::string::npos)
+        << error.what();
   }
   const RunLimits limits = RunLimits::time_limit(3600.0);
   EXPECT_FALSE(limits.expired());
@@ -162,7 +173,8 @@ TEST(SolveRequestLimits, RefusesTooManyModesOrForcingFrequenciesNamingTheField) 
     return std::string("no error");
   };
   request.inplane_modes = kMaxRequestModes + 1;
-  EXPECT_NE(message_of(request).find("inplane_modes = 1001"), std::string::npos) << message_of(request);
+  EXPECT_NE(message_of(request).find("inplane_modes = 1001"), std::string::npos)
+      << message_of(request);
   request.inplane_modes = 1;
   request.outofplane_modes = kMaxRequestModes + 1;
   EXPECT_NE(message_of(request).find("outofplane_modes"), std::string::npos) << message_of(request);

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
-// What adding a solver costs: a complete sixth solver, the taut string (omega_n = n pi sqrt(T0/M)/L,
-// both planes), written against the skeleton (src/solvers/common/solver_driver.hpp,
+// What adding a solver costs: a complete sixth solver, the taut string (omega_n = n pi
+// sqrt(T0/M)/L, both planes), written against the skeleton (src/solvers/common/solver_driver.hpp,
 // knob_table.hpp). Between the two markers: its numerics, its knob table and its registry entry,
 // which is all a new solver writes besides its tests (and one line in solver_registry.cpp).
 // The test runs it through the same run_solver() as the five real ones and compares it with
 // shooting on a taut string, where it is exact to the sag (eps = 1e-6).
 #include <gtest/gtest.h>
 
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solver_test_support.hpp"
 #include "solvers/common/knob_table.hpp"
 #include "solvers/common/mode_tools.hpp"
@@ -25,17 +25,20 @@ struct StringOptions {
 
 const internal::KnobTable<StringOptions>& string_knobs() {
   static const internal::KnobTable<StringOptions> table(
-      "string", {internal::real_knob("max_eps", &StringOptions::max_eps, internal::Range::open_closed(0, 1),
-                                     "eps above which the string model declines")});
+      "string",
+      {internal::real_knob("max_eps", &StringOptions::max_eps, internal::Range::open_closed(0, 1),
+                           "eps above which the string model declines")});
   return table;
 }
 void StringOptions::validate() const { string_knobs().validate(*this); }
 
 class StringNumerics final : public internal::SolverNumerics {
  public:
-  StringNumerics(const SolveContext& context, const StringOptions& options) : context_(context), options_(options) {}
+  StringNumerics(const SolveContext& context, const StringOptions& options)
+      : context_(context), options_(options) {}
   std::optional<std::string> not_applicable() const override {
-    if (context_.groups.eps > options_.max_eps) return "sagging cable: the string model ignores sag";
+    if (context_.groups.eps > options_.max_eps)
+      return "sagging cable: the string model ignores sag";
     return std::nullopt;
   }
   ModalResult modes(Plane, int count) override {
@@ -43,7 +46,8 @@ class StringNumerics final : public internal::SolverNumerics {
     for (int n = 1; n <= count; ++n) {
       Mode mode;
       mode.index = n;
-      internal::set_mode_frequency(mode, context_.groups.omega_from_k_l_over_pi(n), context_.groups);
+      internal::set_mode_frequency(mode, context_.groups.omega_from_k_l_over_pi(n),
+                                   context_.groups);
       result.modes.push_back(mode);
     }
     result.summary.termination = Termination::Converged;
@@ -66,11 +70,13 @@ SolverEntry make_string_entry() {
 
 TEST(SixthSolver, RunsThroughTheSharedDriverAndMatchesShootingOnATautString) {
   const SolverEntry entry = make_string_entry();
-  testing::SolvedProblem solved = testing::prepare(make_taut_inclined_problem(1e-6, 0.0, 1e-4, 1.0));
+  testing::SolvedProblem solved =
+      testing::prepare(make_taut_inclined_problem(1e-6, 0.0, 1e-4, 1.0));
   const SolveRequest request = testing::modes_request(4, 4);
   const SolveContext context{solved.problem, solved.statics, solved.groups, request};
   const SolverOutput string = run_solver(entry, context, {});
-  const SolverOutput shooting = solve_shooting(solved.problem, solved.statics, solved.groups, request);
+  const SolverOutput shooting =
+      solve_shooting(solved.problem, solved.statics, solved.groups, request);
   ASSERT_EQ(string.summary.termination, Termination::Converged) << string.summary.message;
   ASSERT_TRUE(string.inplane && string.outofplane);
   ASSERT_TRUE(shooting.outofplane);
@@ -80,7 +86,8 @@ TEST(SixthSolver, RunsThroughTheSharedDriverAndMatchesShootingOnATautString) {
   for (int i = 0; i < 4; ++i) {
     // Out of plane the taut string differs from the exact cable by the static strain and sag,
     // both about 1e-6 here.
-    EXPECT_NEAR(string.outofplane->modes[i].omega_rad_s / shooting.outofplane->modes[i].omega_rad_s, 1.0, 1e-5);
+    EXPECT_NEAR(string.outofplane->modes[i].omega_rad_s / shooting.outofplane->modes[i].omega_rad_s,
+                1.0, 1e-5);
   }
 }
 
@@ -91,7 +98,8 @@ TEST(SixthSolver, KnobsAndApplicabilityComeFromTheSkeleton) {
   EXPECT_EQ(entry.knobs[0].valid, "(0, 1]");
   EXPECT_THROW(entry.validate_knobs({{"max_eps", 2.0}}), InvalidInput);
   EXPECT_THROW(entry.validate_knobs({{"elements", 2L}}), InvalidInput);
-  testing::SolvedProblem sagging = testing::prepare(make_taut_inclined_problem(0.5, 20.0, 10.0, 1.0));
+  testing::SolvedProblem sagging =
+      testing::prepare(make_taut_inclined_problem(0.5, 20.0, 10.0, 1.0));
   const SolveRequest request = testing::modes_request(2, 0);
   const SolveContext context{sagging.problem, sagging.statics, sagging.groups, request};
   const SolverOutput output = run_solver(entry, context, {});

@@ -18,12 +18,17 @@ namespace {
 using testing::expect_invalid;
 
 TEST(SolveRequest, RejectsEachInvalidField) {
-  auto with = [](auto change) { SolveRequest r; change(r); return [r] { r.validate(); }; };
+  auto with = [](auto change) {
+    SolveRequest r;
+    change(r);
+    return [r] { r.validate(); };
+  };
   expect_invalid(with([](SolveRequest& r) { r.inplane_modes = -1; }), "inplane_modes");
   expect_invalid(with([](SolveRequest& r) { r.outofplane_modes = -1; }), "outofplane_modes");
   expect_invalid(with([](SolveRequest& r) { r.points = 1; }), "points");
   // 1e6 shape points ran out of memory while the JSON was written.
-  expect_invalid(with([](SolveRequest& r) { r.points = 1000000; }), "points = 1000000: must be in [2, 100000]");
+  expect_invalid(with([](SolveRequest& r) { r.points = 1000000; }),
+                 "points = 1000000: must be in [2, 100000]");
   expect_invalid(with([](SolveRequest& r) { r.inplane_modes = 100001; }), "inplane_modes");
   expect_invalid(with([](SolveRequest& r) {
                    r.shapes = true;

@@ -16,7 +16,9 @@
 namespace catena::internal {
 namespace {
 
-SolverSummary part(Termination termination, const std::string& message, long iterations = -1,
+SolverSummary part(Termination termination,
+                   const std::string& message,
+                   long iterations = -1,
                    double error = -1.0) {
   SolverSummary summary;
   summary.termination = termination;
@@ -169,7 +171,8 @@ class ScriptedNumerics final : public SolverNumerics {
 
 class DriveSolver : public ::testing::Test {
  protected:
-  testing::SolvedProblem solved = testing::prepare(make_taut_inclined_problem(0.1, 20.0, 10.0, 1.0));
+  testing::SolvedProblem solved =
+      testing::prepare(make_taut_inclined_problem(0.1, 20.0, 10.0, 1.0));
   SolveRequest request = testing::modes_request(3, 2);
   SolverOutput drive(ScriptedNumerics& numerics) {
     const SolveContext context{solved.problem, solved.statics, solved.groups, request};
@@ -257,7 +260,8 @@ TEST_F(DriveSolver, ANegativeFrequencyIsNeverReportedConverged) {
   const SolverOutput output = drive(numerics);
   EXPECT_EQ(output.inplane->summary.termination, Termination::NoConvergence);
   EXPECT_EQ(output.inplane->modes.size(), 2u);
-  EXPECT_NE(output.inplane->summary.message.find("mode 3"), std::string::npos) << output.inplane->summary.message;
+  EXPECT_NE(output.inplane->summary.message.find("mode 3"), std::string::npos)
+      << output.inplane->summary.message;
   EXPECT_EQ(output.outofplane->summary.termination, Termination::Converged);
   EXPECT_EQ(output.summary.termination, Termination::NoConvergence);
   EXPECT_NE(output.summary.message.find("not a finite positive frequency"), std::string::npos);
@@ -282,7 +286,8 @@ TEST_F(DriveSolver, ForcedResponseIsSolvedForTheAmplitudesMantissaAndScaled) {
   ScriptedNumerics numerics;
   numerics.unit_tension_n = 3.0;
   const SolverOutput output = drive(numerics);
-  EXPECT_EQ(numerics.amplitude_seen_m, 0.64);  // 0.02 = 0.64 / 32: the mantissa, then scaled by 2^-5
+  EXPECT_EQ(numerics.amplitude_seen_m,
+            0.64);  // 0.02 = 0.64 / 32: the mantissa, then scaled by 2^-5
   ASSERT_EQ(output.forced.size(), 2u);
   EXPECT_DOUBLE_EQ(output.forced[0].max_abs_tension_n, 0.06);
   EXPECT_DOUBLE_EQ(output.forced[0].w[1], 0.02);

@@ -18,16 +18,23 @@
 namespace catena {
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 // A taut inclined cable with a finite EA: in every model but Gale's inextensible catenary.
-testing::SolvedProblem taut_extensible() { return testing::prepare(make_taut_inclined_problem(0.1, 20.0, 10.0, 1.0)); }
+testing::SolvedProblem taut_extensible() {
+  return testing::prepare(make_taut_inclined_problem(0.1, 20.0, 10.0, 1.0));
+}
 
-SolverOutput run(const std::string& name, const testing::SolvedProblem& solved, const SolveRequest& request,
+SolverOutput run(const std::string& name,
+                 const testing::SolvedProblem& solved,
+                 const SolveRequest& request,
                  const SolverKnobs& knobs = {}) {
   const SolverEntry* entry = find_solver(name);
   if (entry == nullptr) throw std::logic_error("no solver " + name);
-  return run_solver(*entry, SolveContext{solved.problem, solved.statics, solved.groups, request}, knobs);
+  return run_solver(*entry, SolveContext{solved.problem, solved.statics, solved.groups, request},
+                    knobs);
 }
 
 std::string invalid_input_message(const std::string& name, const SolverKnobs& knobs) {
@@ -83,7 +90,8 @@ TEST(SolverRegistry, EveryEntryDescribesItselfAndItsKnobs) {
       EXPECT_FALSE(knob.default_value.empty());
       // Flags are true or false; every other knob says what values it accepts.
       if (knob.type == "flag") {
-        EXPECT_TRUE(knob.default_value == "true" || knob.default_value == "false") << knob.default_value;
+        EXPECT_TRUE(knob.default_value == "true" || knob.default_value == "false")
+            << knob.default_value;
         EXPECT_TRUE(knob.valid.empty()) << knob.valid;
       } else {
         EXPECT_FALSE(knob.valid.empty());
@@ -100,7 +108,8 @@ TEST(SolverRegistry, EveryEntryDescribesItselfAndItsKnobs) {
 TEST(SolverRegistry, EveryDocumentedDefaultIsAcceptedWhenWrittenInAScene) {
   for (const auto& entry : solver_registry()) {
     for (const auto& knob : entry.knobs) {
-      EXPECT_NO_THROW(entry.validate_knobs({{knob.name, scene_value(knob)}})) << entry.name << "." << knob.name;
+      EXPECT_NO_THROW(entry.validate_knobs({{knob.name, scene_value(knob)}}))
+          << entry.name << "." << knob.name;
     }
   }
 }
@@ -115,9 +124,12 @@ TEST(SolverRegistry, UnknownKnobIsInvalidInputNamingTheKnobAndTheKnownOnes) {
 }
 
 TEST(SolverRegistry, OutOfRangeOrMistypedKnobIsInvalidInputNamingTheKnob) {
-  EXPECT_TRUE(contains(invalid_input_message("fe", {{"elements", 1L}}), "[solvers.fe].elements = 1"));
-  EXPECT_TRUE(contains(invalid_input_message("fe", {{"richardson", 1L}}), "[solvers.fe].richardson"));
-  EXPECT_TRUE(contains(invalid_input_message("shooting", {{"rtol", std::string("small")}}), "[solvers.shooting].rtol"));
+  EXPECT_TRUE(
+      contains(invalid_input_message("fe", {{"elements", 1L}}), "[solvers.fe].elements = 1"));
+  EXPECT_TRUE(
+      contains(invalid_input_message("fe", {{"richardson", 1L}}), "[solvers.fe].richardson"));
+  EXPECT_TRUE(contains(invalid_input_message("shooting", {{"rtol", std::string("small")}}),
+                       "[solvers.shooting].rtol"));
 }
 
 TEST(SolverRegistry, KnobsAreValidatedBeforeApplicability) {
@@ -151,11 +163,13 @@ TEST(SolverRegistry, RunSolverReadsTheKnobsLikeTheTypedEntryPoint) {
   // the same options give bit-identical frequencies.
   const testing::SolvedProblem solved = taut_extensible();
   const SolveRequest request = testing::modes_request(3, 2);
-  const SolverOutput by_name = run("fe", solved, request, {{"elements", 40L}, {"richardson", false}});
+  const SolverOutput by_name =
+      run("fe", solved, request, {{"elements", 40L}, {"richardson", false}});
   FeSolverOptions options;
   options.elements = 40;
   options.richardson = false;
-  const SolverOutput typed = solve_fe(solved.problem, solved.statics, solved.groups, request, options);
+  const SolverOutput typed =
+      solve_fe(solved.problem, solved.statics, solved.groups, request, options);
   ASSERT_TRUE(by_name.inplane && typed.inplane && by_name.outofplane && typed.outofplane);
   ASSERT_EQ(by_name.inplane->modes.size(), 3u);
   ASSERT_EQ(by_name.outofplane->modes.size(), 2u);
@@ -163,7 +177,8 @@ TEST(SolverRegistry, RunSolverReadsTheKnobsLikeTheTypedEntryPoint) {
     EXPECT_EQ(by_name.inplane->modes[i].omega_rad_s, typed.inplane->modes[i].omega_rad_s) << i;
   }
   for (std::size_t i = 0; i < 2; ++i) {
-    EXPECT_EQ(by_name.outofplane->modes[i].omega_rad_s, typed.outofplane->modes[i].omega_rad_s) << i;
+    EXPECT_EQ(by_name.outofplane->modes[i].omega_rad_s, typed.outofplane->modes[i].omega_rad_s)
+        << i;
   }
   EXPECT_EQ(by_name.summary.termination, Termination::Converged);
   EXPECT_EQ(by_name.summary.solver, "fe");
@@ -176,18 +191,22 @@ TEST(SolverRegistry, RunSolverReadsTheKnobsLikeTheTypedEntryPoint) {
 TEST(SolverRegistry, EverySolverNamesItselfInItsOutput) {
   const testing::SolvedProblem solved = taut_extensible();
   for (const auto& entry : solver_registry()) {
-    const SolverOutput output =
-        run_solver(entry, SolveContext{solved.problem, solved.statics, solved.groups, testing::modes_request(2, 0)}, {});
+    const SolverOutput output = run_solver(
+        entry,
+        SolveContext{solved.problem, solved.statics, solved.groups, testing::modes_request(2, 0)},
+        {});
     EXPECT_EQ(output.solver, entry.name);
     EXPECT_EQ(output.summary.solver, entry.name);
     // Every solver but Gale's (inextensible only) covers this slightly sagging taut cable.
     if (entry.name == "frobenius") {
       EXPECT_EQ(output.summary.termination, Termination::NotApplicable);
     } else {
-      EXPECT_TRUE(output.summary.is_usable()) << entry.name << ": " << output.summary.brief_report();
+      EXPECT_TRUE(output.summary.is_usable())
+          << entry.name << ": " << output.summary.brief_report();
       ASSERT_TRUE(output.inplane.has_value()) << entry.name;
       ASSERT_EQ(output.inplane->modes.size(), 2u) << entry.name;
-      EXPECT_LT(output.inplane->modes[0].omega_rad_s, output.inplane->modes[1].omega_rad_s) << entry.name;
+      EXPECT_LT(output.inplane->modes[0].omega_rad_s, output.inplane->modes[1].omega_rad_s)
+          << entry.name;
     }
   }
 }

@@ -10,7 +10,9 @@
 namespace catena {
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 SolverSummary converged_summary() {
   SolverSummary summary;
@@ -64,7 +66,8 @@ TEST(SolverSummary, BriefReportAddsResolutionAndTimeInMilliseconds) {
   SolverSummary summary = converged_summary();
   summary.resolution = "N = 800 and 1600 elements";
   summary.wall_time_s = 0.0123;
-  EXPECT_EQ(summary.brief_report(), "fe: converged: 6 of 6 modes (N = 800 and 1600 elements) [12.3 ms]");
+  EXPECT_EQ(summary.brief_report(),
+            "fe: converged: 6 of 6 modes (N = 800 and 1600 elements) [12.3 ms]");
   // A time of exactly zero was measured (>= 0): it is shown.
   summary.resolution.clear();
   summary.wall_time_s = 0.0;

@@ -28,9 +28,13 @@ inline SolvedProblem prepare(const Problem& problem) {
   return solved;
 }
 
-/// prepare(), then `solve(problem, statics, groups, request, options)` (solve_fe, solve_shooting, ...).
+/// prepare(), then `solve(problem, statics, groups, request, options)` (solve_fe, solve_shooting,
+/// ...).
 template <typename Solve, typename Options>
-SolvedProblem solve_problem(Solve solve, const Problem& problem, const SolveRequest& request, const Options& options) {
+SolvedProblem solve_problem(Solve solve,
+                            const Problem& problem,
+                            const SolveRequest& request,
+                            const Options& options) {
   SolvedProblem solved = prepare(problem);
   solved.output = solve(solved.problem, solved.statics, solved.groups, request, options);
   return solved;

@@ -14,13 +14,16 @@
 namespace catena::internal {
 namespace {
 
-catena::testing::SolvedProblem taut(double eps = 0.18, double phi_deg = 23.46, double lambda2 = 38.0) {
+catena::testing::SolvedProblem taut(double eps = 0.18,
+                                    double phi_deg = 23.46,
+                                    double lambda2 = 38.0) {
   return catena::testing::prepare(make_taut_inclined_problem(eps, phi_deg, lambda2, 1.0));
 }
 
 TEST(TautCableTheory, StaticStrainIsT0OverEA) {
   const auto s = taut();
-  EXPECT_DOUBLE_EQ(static_strain(s.problem, s.groups), s.groups.t0_n / s.problem.cable.axial_stiffness_n);
+  EXPECT_DOUBLE_EQ(static_strain(s.problem, s.groups),
+                   s.groups.t0_n / s.problem.cable.axial_stiffness_n);
   Problem inextensible = s.problem;
   inextensible.cable.axial_stiffness_n = kInfinity;
   ASSERT_TRUE(inextensible.cable.is_inextensible());

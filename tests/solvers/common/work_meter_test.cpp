@@ -35,7 +35,8 @@ TEST(WorkMeter, NeverStopsWithoutLimitsOrWhenThePartIsDone) {
   summary.message = "Converged: 1 of 1 things";
   internal::mark_time_limit(early, summary);
   EXPECT_EQ(summary.termination, Termination::NoConvergence);
-  EXPECT_EQ(summary.message, "No convergence: time limit of 0.5 s reached after 1 of 3 things; 1 of 1 things");
+  EXPECT_EQ(summary.message,
+            "No convergence: time limit of 0.5 s reached after 1 of 3 things; 1 of 1 things");
 }
 
 TEST(WorkMeter, ReportsEachUnitToTheProgressCallback) {

@@ -50,7 +50,9 @@ double shift_between(const Dense& A, int below) {
   return 0.5 * (eigen.eigenvalues()[below - 1] + eigen.eigenvalues()[below]);
 }
 
-double relative_residual(const Dense& A, const Dense& x, const Dense& b) { return (A * x - b).norm() / b.norm(); }
+double relative_residual(const Dense& A, const Dense& x, const Dense& b) {
+  return (A * x - b).norm() / b.norm();
+}
 
 TEST(BandedLdlt, SolvesASpdBandedSystemLikeADenseSolve) {
   const Dense A = random_banded_spd(60, 3, 1);
@@ -181,7 +183,8 @@ TEST(BandedLdlt, ZeroOrNonFinitePivotFails) {
   ASSERT_EQ(shifted.fullPivLu().rank(), 30);
   EXPECT_FALSE(ldlt.factorize(to_sparse(shifted)));
   EXPECT_FALSE(ldlt.factorize(to_sparse((Dense(2, 2) << 1.0, 0.0, 0.0, std::nan("")).finished())));
-  EXPECT_FALSE(ldlt.factorize(to_sparse((Dense(2, 2) << 1.0e-300, 1.0e200, 1.0e200, 1.0).finished())));
+  EXPECT_FALSE(
+      ldlt.factorize(to_sparse((Dense(2, 2) << 1.0e-300, 1.0e200, 1.0e200, 1.0).finished())));
 }
 
 }  // namespace

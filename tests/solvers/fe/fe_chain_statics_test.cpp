@@ -18,8 +18,11 @@ using catena::testing::relative_error;
 
 Problem inclined_catenary() {
   Problem problem;
-  problem.cable = {.length_m = 1000.0, .weight_n_per_m = 1000.0, .axial_stiffness_n = 5e8,
-                   .mass_kg_per_m = 120.0, .added_mass_kg_per_m = 80.0};
+  problem.cable = {.length_m = 1000.0,
+                   .weight_n_per_m = 1000.0,
+                   .axial_stiffness_n = 5e8,
+                   .mass_kg_per_m = 120.0,
+                   .added_mass_kg_per_m = 80.0};
   problem.supports.b_m = Vec2(900.0, 300.0);
   return problem;
 }
@@ -54,8 +57,10 @@ TEST(FeChainStatics, ElementForceIsTheContinuousForceAtTheElementMidpoint) {
   const double W0 = problem.cable.weight_n_per_m, l0 = chain.element_length_m[0];
   for (int j : {0, 37, 99}) {
     const double V = chain.vertical_force_a_n + W0 * l0 * (j + 0.5);
-    EXPECT_DOUBLE_EQ(chain.tension_n[j], std::hypot(chain.horizontal_force_n, V)) << "element " << j;
-    EXPECT_DOUBLE_EQ(chain.stretched_length_m[j], l0 * (1.0 + chain.tension_n[j] / problem.cable.axial_stiffness_n));
+    EXPECT_DOUBLE_EQ(chain.tension_n[j], std::hypot(chain.horizontal_force_n, V))
+        << "element " << j;
+    EXPECT_DOUBLE_EQ(chain.stretched_length_m[j],
+                     l0 * (1.0 + chain.tension_n[j] / problem.cable.axial_stiffness_n));
   }
 }
 

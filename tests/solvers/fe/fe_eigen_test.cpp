@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "catena/statics/problem_builders.hpp"
-#include "test_utils.hpp"
 #include "solvers/fe/fe_test_support.hpp"
+#include "test_utils.hpp"
 
 namespace catena {
 namespace {
@@ -132,8 +132,10 @@ TEST(FeEigen, ModeSumGuessInterpolatesOntoTheMeshTwiceAsFine) {
   // The sums (x, z) at coarse nodes 1, 2, 3 are (2, 2), (4, 4), (6, 6); fine nodes 1..7:
   const std::vector<double> fine_x = {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 3.0}, fine_z = fine_x;
   for (int node = 0; node < 7; ++node) {
-    EXPECT_DOUBLE_EQ(fine[2 * node], fine_x[static_cast<std::size_t>(node)]) << "x at fine node " << node + 1;
-    EXPECT_DOUBLE_EQ(fine[2 * node + 1], fine_z[static_cast<std::size_t>(node)]) << "z at fine node " << node + 1;
+    EXPECT_DOUBLE_EQ(fine[2 * node], fine_x[static_cast<std::size_t>(node)])
+        << "x at fine node " << node + 1;
+    EXPECT_DOUBLE_EQ(fine[2 * node + 1], fine_z[static_cast<std::size_t>(node)])
+        << "z at fine node " << node + 1;
   }
   EXPECT_EQ(internal::mode_sum_guess(modes, 2, 10).size(), 0);
 }
@@ -148,9 +150,11 @@ TEST(FeEigen, ASharedWorkspaceChangesNoResult) {
   internal::reserve_for_largest_solve(shared, internal::fe_unknowns(Plane::InPlane, 400), 10);
   for (int elements : {400, 200, 400}) {
     const internal::FeMatrices matrices = internal::assemble(
-        Plane::InPlane, internal::solve_chain_statics(problem, statics, elements, problem.cable.axial_stiffness_n));
+        Plane::InPlane,
+        internal::solve_chain_statics(problem, statics, elements, problem.cable.axial_stiffness_n));
     const internal::FeEigenSolution fresh = internal::solve_lowest_modes(matrices, 10, 1e-13, 1000);
-    const internal::FeEigenSolution reused = internal::solve_lowest_modes(matrices, 10, 1e-13, 1000, &shared);
+    const internal::FeEigenSolution reused =
+        internal::solve_lowest_modes(matrices, 10, 1e-13, 1000, &shared);
     ASSERT_EQ(reused.termination, Termination::Converged) << reused.message;
     EXPECT_EQ(reused.eigenvalues, fresh.eigenvalues) << "N = " << elements;
     EXPECT_EQ(reused.eigenvectors, fresh.eigenvectors) << "N = " << elements;

@@ -25,9 +25,11 @@ TEST(FeExtrapolation, ModesArePairedByShapeNotByRank) {
   const Eigen::MatrixXd reference = string_shapes(40, {1, 2, 3});
   // On a mesh twice as coarse, with modes 1 and 2 swapped and mode 3 first.
   const Eigen::MatrixXd other = string_shapes(20, {3, 2, 1});
-  EXPECT_EQ(internal::match_modes(reference, 40, other, 20, Plane::OutOfPlane), (std::vector<int>{2, 1, 0}));
+  EXPECT_EQ(internal::match_modes(reference, 40, other, 20, Plane::OutOfPlane),
+            (std::vector<int>{2, 1, 0}));
   // And the other way round (the coarse mesh's nodes are the common ones).
-  EXPECT_EQ(internal::match_modes(other, 20, reference, 40, Plane::OutOfPlane), (std::vector<int>{2, 1, 0}));
+  EXPECT_EQ(internal::match_modes(other, 20, reference, 40, Plane::OutOfPlane),
+            (std::vector<int>{2, 1, 0}));
 }
 
 internal::FePlan two_mesh_plan(bool richardson, bool inextensible) {
@@ -85,11 +87,11 @@ internal::FePlan three_mesh_plan() {
 
 TEST(FeExtrapolation, TheEstimateMeshBoundsTheExtrapolatedErrorTightly) {
   auto omega = [](double h) { return 5.0 + 3.0 * h * h + 4.0 * std::pow(h, 4); };
-  const auto result =
-      internal::extrapolate_frequency(three_mesh_plan(), {{omega(1.0 / 50)}, {omega(1.0 / 100)}, {omega(1.0 / 200)}});
+  const auto result = internal::extrapolate_frequency(
+      three_mesh_plan(), {{omega(1.0 / 50)}, {omega(1.0 / 100)}, {omega(1.0 / 200)}});
   const double error = std::abs(result.omega_rad_s - 5.0);
   EXPECT_GT(error, 0.0);
-  EXPECT_GE(result.error_rad_s, error);        // an upper bound ...
+  EXPECT_GE(result.error_rad_s, error);         // an upper bound ...
   EXPECT_LE(result.error_rad_s, 20.0 * error);  // ... about 15x, not the correction's ~1e4x
   const double correction = (omega(1.0 / 200) - omega(1.0 / 100)) / 3.0;
   EXPECT_LT(result.error_rad_s, 1e-2 * std::abs(correction));
@@ -100,7 +102,8 @@ TEST(FeExtrapolation, WithoutOrderTwoTheCorrectionStaysTheEstimate) {
   // extrapolated difference is not trusted and the Richardson correction is the estimate.
   auto omega = [](double h) { return 5.0 + 3.0 * h; };
   const double fine = omega(1.0 / 200), coarse = omega(1.0 / 100);
-  const auto result = internal::extrapolate_frequency(three_mesh_plan(), {{omega(1.0 / 50)}, {coarse}, {fine}});
+  const auto result =
+      internal::extrapolate_frequency(three_mesh_plan(), {{omega(1.0 / 50)}, {coarse}, {fine}});
   EXPECT_NEAR(result.error_rad_s, std::abs(fine - coarse) / 3.0, 1e-15);
 }
 

@@ -50,12 +50,14 @@ struct Errors {
 
 // Max errors on 37 stations of the fine field and of the extrapolated one (coarse mesh `elements`).
 Errors errors_on_stations(int elements, double length) {
-  const internal::FeResponseField coarse = synthetic(elements, length), fine = synthetic(2 * elements, length);
+  const internal::FeResponseField coarse = synthetic(elements, length),
+                                  fine = synthetic(2 * elements, length);
   const internal::FeResponseField extrapolated = internal::richardson_field(coarse, fine);
   const Vector stations = Vector::LinSpaced(37, 0.0, length);  // most stations between nodes
   const StaticSolution unused;  // out of plane the statics are not needed: x is sampled as v
   const internal::FeSampled raw = internal::sample_field(Plane::OutOfPlane, fine, stations, unused);
-  const internal::FeSampled result = internal::sample_field(Plane::OutOfPlane, extrapolated, stations, unused);
+  const internal::FeSampled result =
+      internal::sample_field(Plane::OutOfPlane, extrapolated, stations, unused);
   const std::vector<double> tension(extrapolated.tension.data(),
                                     extrapolated.tension.data() + extrapolated.tension.size());
   const double h = length / elements;
@@ -64,7 +66,8 @@ Errors errors_on_stations(int elements, double length) {
     const double s = stations[p], exact = std::sin(2.0 * s);
     e.raw = std::max(e.raw, std::abs(raw.v[p] - exact));
     e.displacement = std::max(e.displacement, std::abs(result.v[p] - exact));
-    e.tension = std::max(e.tension, std::abs(internal::cubic_interpolate(tension, 0.5 * h, h, s) - exact));
+    e.tension =
+        std::max(e.tension, std::abs(internal::cubic_interpolate(tension, 0.5 * h, h, s) - exact));
   }
   return e;
 }
@@ -81,14 +84,17 @@ TEST(FeForcedRichardson, TheSecondOrderErrorCancelsOnCoincidingPoints) {
 }
 
 TEST(FeForcedRichardson, RefusesMeshesThatAreNotOneHalvingApart) {
-  EXPECT_THROW(internal::richardson_field(synthetic(100, 1.0), synthetic(150, 1.0)), std::logic_error);
+  EXPECT_THROW(internal::richardson_field(synthetic(100, 1.0), synthetic(150, 1.0)),
+               std::logic_error);
 }
 
-// Two pieces of a line, [0, 0.8] with n elements and [0.8, 2] with 3n, and a field whose slope jumps
-// at 0.8 (as a line's response does at a joint or point): the extrapolation and the sampling stay
-// within each piece, so the cancellation holds up to the break; across it, interpolation would
+// Two pieces of a line, [0, 0.8] with n elements and [0.8, 2] with 3n, and a field whose slope
+// jumps at 0.8 (as a line's response does at a joint or point): the extrapolation and the sampling
+// stay within each piece, so the cancellation holds up to the break; across it, interpolation would
 // leave an O(h) error near s = 0.8.
-double kinked(double s) { return s < 0.8 ? std::sin(2.0 * s) : std::sin(1.6) + 3.0 * (s - 0.8) * (s - 0.5); }
+double kinked(double s) {
+  return s < 0.8 ? std::sin(2.0 * s) : std::sin(1.6) + 3.0 * (s - 0.8) * (s - 0.5);
+}
 double kinked_error(double s) { return s < 0.8 ? 5.0 * std::cos(3.0 * s) : -2.0 * s; }
 
 internal::FeResponseField two_pieces(int n) {
@@ -113,12 +119,15 @@ internal::FeResponseField two_pieces(int n) {
 }
 
 double two_piece_error(int n) {
-  const internal::FeResponseField extrapolated = internal::richardson_field(two_pieces(n), two_pieces(2 * n));
+  const internal::FeResponseField extrapolated =
+      internal::richardson_field(two_pieces(n), two_pieces(2 * n));
   const Vector stations = Vector::LinSpaced(41, 0.0, 2.0);  // 0.8 is a station
   const StaticSolution unused;
-  const internal::FeSampled result = internal::sample_field(Plane::OutOfPlane, extrapolated, stations, unused);
+  const internal::FeSampled result =
+      internal::sample_field(Plane::OutOfPlane, extrapolated, stations, unused);
   double error = 0.0;
-  for (Index p = 0; p < stations.size(); ++p) error = std::max(error, std::abs(result.v[p] - kinked(stations[p])));
+  for (Index p = 0; p < stations.size(); ++p)
+    error = std::max(error, std::abs(result.v[p] - kinked(stations[p])));
   return error;
 }
 

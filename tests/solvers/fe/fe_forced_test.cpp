@@ -9,12 +9,12 @@
 #include <cmath>
 #include <string>
 
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
 #include "catena/solvers/shooting_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/common/solver_test_support.hpp"
-#include "test_utils.hpp"
 #include "solvers/fe/fe_test_support.hpp"
+#include "test_utils.hpp"
 
 namespace catena {
 namespace {
@@ -31,8 +31,8 @@ Solved solve(const Problem& problem, const SolveRequest& request, const FeSolver
 
 TEST(FeForced, ThePlaneFollowsTheForcingDirection) {
   ForcedRequest request;
-  for (ForcingDirection direction : {ForcingDirection::Tangential, ForcingDirection::Normal,
-                                     ForcingDirection::GivenVector}) {
+  for (ForcingDirection direction :
+       {ForcingDirection::Tangential, ForcingDirection::Normal, ForcingDirection::GivenVector}) {
     request.direction = direction;
     EXPECT_EQ(internal::forced_plane(request), Plane::InPlane);
   }
@@ -43,12 +43,14 @@ TEST(FeForced, ThePlaneFollowsTheForcingDirection) {
 TEST(FeForced, ResonanceWindowIsThreeErrorEstimatesOrOnePartPerBillion) {
   const std::vector<internal::FeNaturalFrequency> naturals = {{1, 10.0, 1e-6}, {2, 20.0, -1.0}};
   // Mode 1: window 3e-6 relative = 3e-5 rad/s.
-  EXPECT_NE(internal::resonance_diagnostic(10.0 + 2e-5, Plane::InPlane, naturals).find("natural frequency 1"),
+  EXPECT_NE(internal::resonance_diagnostic(10.0 + 2e-5, Plane::InPlane, naturals)
+                .find("natural frequency 1"),
             std::string::npos);
   EXPECT_TRUE(internal::resonance_diagnostic(10.0 + 4e-5, Plane::InPlane, naturals).empty());
   // Mode 2 without an estimate: window 1e-9 relative = 2e-8 rad/s.
-  EXPECT_NE(internal::resonance_diagnostic(20.0 + 1e-8, Plane::OutOfPlane, naturals).find("out-of-plane"),
-            std::string::npos);
+  EXPECT_NE(
+      internal::resonance_diagnostic(20.0 + 1e-8, Plane::OutOfPlane, naturals).find("out-of-plane"),
+      std::string::npos);
   EXPECT_TRUE(internal::resonance_diagnostic(20.0 + 1e-7, Plane::OutOfPlane, naturals).empty());
 }
 
@@ -66,16 +68,20 @@ TEST(FeForced, ForcedResponseOfAStraightBarMatchesTheStandingWave) {
        {ForcingDirection::Tangential, ForcingDirection::Normal, ForcingDirection::OutOfPlane}) {
     SolveRequest request = modes_request(0, 0);
     request.points = 21;
-    request.forced = ForcedRequest{.end = CableEnd::B, .direction = direction, .amplitude_m = amplitude,
+    request.forced = ForcedRequest{.end = CableEnd::B,
+                                   .direction = direction,
+                                   .amplitude_m = amplitude,
                                    .omegas_rad_s = {omega}};
     const Solved solved = solve(problem, request, {.elements = 400});
     ASSERT_EQ(solved.output.forced.size(), 1u);
     const ForcedResponse& response = solved.output.forced[0];
     ASSERT_TRUE(response.diagnostic.empty()) << response.diagnostic;
     const bool axial = direction == ForcingDirection::Tangential;
-    const double k = axial ? omega * std::sqrt(problem.cable.mass_kg_per_m / problem.cable.axial_stiffness_n)
-                           : omega * std::sqrt(problem.cable.normal_mass_kg_per_m() * (1.0 + strain) / T);
-    const Vector& moving = axial ? response.u : (direction == ForcingDirection::Normal ? response.w : response.v);
+    const double k =
+        axial ? omega * std::sqrt(problem.cable.mass_kg_per_m / problem.cable.axial_stiffness_n)
+              : omega * std::sqrt(problem.cable.normal_mass_kg_per_m() * (1.0 + strain) / T);
+    const Vector& moving =
+        axial ? response.u : (direction == ForcingDirection::Normal ? response.w : response.v);
     for (Index j = 0; j < response.s_m.size(); ++j) {
       const double s = response.s_m[j];
       const double exact = amplitude * std::sin(k * s) / std::sin(k * problem.cable.length_m);
@@ -83,7 +89,8 @@ TEST(FeForced, ForcedResponseOfAStraightBarMatchesTheStandingWave) {
       if (axial) {
         const double tension = problem.cable.axial_stiffness_n * amplitude * k * std::cos(k * s) /
                                std::sin(k * problem.cable.length_m);
-        EXPECT_NEAR(response.tension_n[j], tension, kTolShape * std::abs(tension) + 1e-9) << "s = " << s;
+        EXPECT_NEAR(response.tension_n[j], tension, kTolShape * std::abs(tension) + 1e-9)
+            << "s = " << s;
       }
     }
   }
@@ -99,8 +106,10 @@ TEST(FeForced, RichardsonPeakTensionOfAStraightBarIsAccurateAndItsEstimateBounds
   const double omega = 5.0, amplitude = 0.01;
   SolveRequest request = modes_request(0, 0);
   request.points = 21;
-  request.forced = ForcedRequest{.end = CableEnd::B, .direction = ForcingDirection::Tangential,
-                                 .amplitude_m = amplitude, .omegas_rad_s = {omega}};
+  request.forced = ForcedRequest{.end = CableEnd::B,
+                                 .direction = ForcingDirection::Tangential,
+                                 .amplitude_m = amplitude,
+                                 .omegas_rad_s = {omega}};
   const Solved solved = solve(problem, request, {.elements = 400});
   const ForcedResponse& response = solved.output.forced.at(0);
   ASSERT_TRUE(response.diagnostic.empty()) << response.diagnostic;
@@ -108,8 +117,8 @@ TEST(FeForced, RichardsonPeakTensionOfAStraightBarIsAccurateAndItsEstimateBounds
   const double L = problem.cable.length_m;
   double peak = 0.0;
   for (Index j = 0; j < response.s_m.size(); ++j)
-    peak = std::max(peak, std::abs(problem.cable.axial_stiffness_n * amplitude * k * std::cos(k * response.s_m[j]) /
-                                   std::sin(k * L)));
+    peak = std::max(peak, std::abs(problem.cable.axial_stiffness_n * amplitude * k *
+                                   std::cos(k * response.s_m[j]) / std::sin(k * L)));
   const double actual = relative_error(response.max_abs_tension_n, peak);
   EXPECT_LE(actual, kRelTolRichardsonTension) << response.max_abs_tension_n << " vs " << peak;
   EXPECT_GE(response.relative_error_estimate, actual);
@@ -119,7 +128,8 @@ TEST(FeForced, RichardsonPeakTensionOfAStraightBarIsAccurateAndItsEstimateBounds
 }
 
 TEST(FeForced, FrequencyErrorAmplificationIsTwoDeltaTimesTheConditionOfTheNearestMode) {
-  const std::vector<internal::FeNaturalFrequency> naturals = {{1, 10.0, 1e-6}, {2, 20.0, 1e-5}, {3, 30.0, -1.0}};
+  const std::vector<internal::FeNaturalFrequency> naturals = {
+      {1, 10.0, 1e-6}, {2, 20.0, 1e-5}, {3, 30.0, -1.0}};
   // At 19: mode 2 gives 2e-5 * 400 / 39, mode 1 gives 2e-6 * 100 / 261; mode 3 has no estimate.
   EXPECT_NEAR(internal::frequency_error_amplification(19.0, naturals), 2e-5 * 400.0 / 39.0, 1e-18);
   EXPECT_EQ(internal::frequency_error_amplification(19.0, {}), 0.0);
@@ -148,11 +158,14 @@ TEST(FeForced, QuasiStaticTensionOfAnInextensibleCatenaryIsTheStaticsDerivative)
   }
   SolveRequest request = modes_request(0, 0);
   request.points = 201;
-  request.forced = ForcedRequest{.end = CableEnd::B, .direction = ForcingDirection::Tangential,
-                                 .amplitude_m = 1.0, .omegas_rad_s = {0.0}};
+  request.forced = ForcedRequest{.end = CableEnd::B,
+                                 .direction = ForcingDirection::Tangential,
+                                 .amplitude_m = 1.0,
+                                 .omegas_rad_s = {0.0}};
   const Solved solved = solve(problem, request, {.elements = 400});
   ASSERT_TRUE(solved.output.forced[0].diagnostic.empty()) << solved.output.forced[0].diagnostic;
-  EXPECT_LE(relative_error(solved.output.forced[0].max_abs_tension_n, expected), kRelTolQuasiStaticTension)
+  EXPECT_LE(relative_error(solved.output.forced[0].max_abs_tension_n, expected),
+            kRelTolQuasiStaticTension)
       << solved.output.forced[0].max_abs_tension_n << " vs " << expected;
 }
 
@@ -166,14 +179,17 @@ TEST(FeForced, NearAResonanceOfAPenalisedChainTheTensionIsFreeOfTheAssembledEntr
   const catena::testing::SolvedProblem base = catena::testing::prepare(problem);
   const double H = base.statics.horizontal_force_n(), a = H / problem.cable.weight_n_per_m;
   SolveRequest request = modes_request(0, 0);
-  request.forced = ForcedRequest{.end = CableEnd::B, .direction = ForcingDirection::Tangential,
+  request.forced = ForcedRequest{.end = CableEnd::B,
+                                 .direction = ForcingDirection::Tangential,
                                  .amplitude_m = 0.01 * a,
                                  .omegas_rad_s = {1.32 * base.groups.gale_frequency_scale_rad_s}};
   const Solved fe = solve(problem, request, {});
-  const Solved shooting = catena::testing::solve_problem(solve_shooting, problem, request, ShootingSolverOptions{});
+  const Solved shooting =
+      catena::testing::solve_problem(solve_shooting, problem, request, ShootingSolverOptions{});
   const ForcedResponse& response = fe.output.forced.at(0);
   ASSERT_TRUE(response.diagnostic.empty()) << response.diagnostic;
-  const double error = relative_error(response.max_abs_tension_n, shooting.output.forced.at(0).max_abs_tension_n);
+  const double error =
+      relative_error(response.max_abs_tension_n, shooting.output.forced.at(0).max_abs_tension_n);
   EXPECT_LE(error, 1e-6);
   EXPECT_LE(error, response.relative_error_estimate);
 }
@@ -182,7 +198,8 @@ TEST(FeForced, ForcingAtANaturalFrequencyGivesADiagnosticNotInfinity) {
   const Problem problem = make_taut_inclined_problem(0.1, 10.0, 30.0, 1.0);
   const Solved modal = solve(problem, modes_request(3, 0), {.elements = 200});
   SolveRequest request = modes_request(3, 0);
-  request.forced = ForcedRequest{.end = CableEnd::B, .direction = ForcingDirection::Normal,
+  request.forced = ForcedRequest{.end = CableEnd::B,
+                                 .direction = ForcingDirection::Normal,
                                  .amplitude_m = 0.01,
                                  .omegas_rad_s = {modal.output.inplane->modes[1].omega_rad_s, 0.5}};
   const Solved solved = solve(problem, request, {.elements = 200});
@@ -198,16 +215,21 @@ TEST(FeForced, SummaryCountsTheFrequenciesWithAResponse) {
   const Problem problem = make_taut_inclined_problem(0.1, 10.0, 30.0, 1.0);
   const Solved modal = solve(problem, modes_request(3, 0), {.elements = 200});
   SolveRequest request = modes_request(3, 0);
-  request.forced = ForcedRequest{.end = CableEnd::B, .direction = ForcingDirection::Normal,
-                                 .amplitude_m = 0.01,
-                                 .omegas_rad_s = {modal.output.inplane->modes[1].omega_rad_s, 0.5, 0.7}};
+  request.forced =
+      ForcedRequest{.end = CableEnd::B,
+                    .direction = ForcingDirection::Normal,
+                    .amplitude_m = 0.01,
+                    .omegas_rad_s = {modal.output.inplane->modes[1].omega_rad_s, 0.5, 0.7}};
   const Solved solved = solve(problem, request, {.elements = 200});
   // A resonance is the discrete model's answer, not a failure of the run.
-  EXPECT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.full_report();
-  EXPECT_NE(solved.output.summary.message.find("2 of 3 forced frequencies (1 at resonance"), std::string::npos)
+  EXPECT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.full_report();
+  EXPECT_NE(solved.output.summary.message.find("2 of 3 forced frequencies (1 at resonance"),
+            std::string::npos)
       << solved.output.summary.message;
   bool warned = false;
-  for (const auto& warning : solved.output.summary.warnings) warned = warned || warning.rfind("forced: ", 0) == 0;
+  for (const auto& warning : solved.output.summary.warnings)
+    warned = warned || warning.rfind("forced: ", 0) == 0;
   EXPECT_TRUE(warned) << solved.output.summary.full_report();
 }
 
@@ -219,7 +241,8 @@ TEST(FeForced, WithoutModesAskedFeComputesTheNaturalFrequenciesItChecksResonance
   const Problem problem = make_taut_inclined_problem(0.1, 10.0, 30.0, 1.0);
   const Solved modal = solve(problem, modes_request(3, 0), {.elements = 200});
   SolveRequest request = modes_request(0, 0);
-  request.forced = ForcedRequest{.end = CableEnd::B, .direction = ForcingDirection::Normal,
+  request.forced = ForcedRequest{.end = CableEnd::B,
+                                 .direction = ForcingDirection::Normal,
                                  .amplitude_m = 0.01,
                                  .omegas_rad_s = {modal.output.inplane->modes[1].omega_rad_s, 0.5}};
   const Solved solved = solve(problem, request, {.elements = 200});

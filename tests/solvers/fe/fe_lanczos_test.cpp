@@ -29,7 +29,8 @@ double laplacian_eigenvalue(int k, int n) {
 // y = tridiag(-1, 2, -1) x.
 internal::SymmetricOperator laplacian(int n) {
   return [n](const double* x, double* y) {
-    for (int i = 0; i < n; ++i) y[i] = 2.0 * x[i] - (i > 0 ? x[i - 1] : 0.0) - (i + 1 < n ? x[i + 1] : 0.0);
+    for (int i = 0; i < n; ++i)
+      y[i] = 2.0 * x[i] - (i > 0 ? x[i - 1] : 0.0) - (i + 1 < n ? x[i + 1] : 0.0);
   };
 }
 
@@ -49,10 +50,13 @@ internal::SymmetricOperator inverse_laplacian(int n) {
 }
 
 // Unit vectors, mutually orthogonal, and A v = theta v to the tolerance.
-void expect_eigenpairs(const internal::SymmetricOperator& apply, const LanczosResult& result, double tolerance) {
+void expect_eigenpairs(const internal::SymmetricOperator& apply,
+                       const LanczosResult& result,
+                       double tolerance) {
   const auto n = result.vectors.rows();
   const Eigen::MatrixXd gram = result.vectors.transpose() * result.vectors;
-  EXPECT_LT((gram - Eigen::MatrixXd::Identity(gram.rows(), gram.cols())).cwiseAbs().maxCoeff(), 1e-13);
+  EXPECT_LT((gram - Eigen::MatrixXd::Identity(gram.rows(), gram.cols())).cwiseAbs().maxCoeff(),
+            1e-13);
   Eigen::VectorXd image(n);
   for (Eigen::Index i = 0; i < result.values.size(); ++i) {
     apply(result.vectors.col(i).data(), image.data());
@@ -65,7 +69,8 @@ TEST(FeLanczos, LowestStringModesThroughTheInverse) {
   const int n = 2000;
   LanczosWorkspace workspace;
   const auto apply = inverse_laplacian(n);
-  const LanczosResult result = largest_magnitude_eigenpairs(apply, n, 10, 30, 1e-13, 1000, workspace);
+  const LanczosResult result =
+      largest_magnitude_eigenpairs(apply, n, 10, 30, 1e-13, 1000, workspace);
   ASSERT_TRUE(result.converged);
   ASSERT_EQ(result.values.size(), 10);
   for (int k = 1; k <= 10; ++k) {
@@ -80,7 +85,8 @@ TEST(FeLanczos, ClusteredTopOfTheLaplacianNeedsRestarts) {
   const int n = 100;
   LanczosWorkspace workspace;
   const auto apply = laplacian(n);
-  const LanczosResult result = largest_magnitude_eigenpairs(apply, n, 4, 20, 1e-12, 2000, workspace);
+  const LanczosResult result =
+      largest_magnitude_eigenpairs(apply, n, 4, 20, 1e-12, 2000, workspace);
   ASSERT_TRUE(result.converged);
   EXPECT_GT(result.restarts, 1);
   for (int k = 0; k < 4; ++k) {
@@ -93,7 +99,8 @@ TEST(FeLanczos, ClusteredTopOfTheLaplacianNeedsRestarts) {
 TEST(FeLanczos, RepeatedAndNegativeEigenvaluesWithASubspaceLargerThanTheMatrix) {
   // A Krylov space holds one vector per distinct eigenvalue; with the subspace clamped to n the
   // iteration breaks down and continues with fresh directions, which find the repeated copies.
-  const std::vector<double> diagonal = {10.0, -10.5, 10.0, 9.0, 10.0, 9.0, 5.0, 4.0, 3.0, 2.0, 1.0, 0.5};
+  const std::vector<double> diagonal = {10.0, -10.5, 10.0, 9.0, 10.0, 9.0,
+                                        5.0,  4.0,   3.0,  2.0, 1.0,  0.5};
   const int n = static_cast<int>(diagonal.size());
   const internal::SymmetricOperator apply = [&](const double* x, double* y) {
     for (int i = 0; i < n; ++i) y[i] = diagonal[static_cast<std::size_t>(i)] * x[i];
@@ -103,7 +110,8 @@ TEST(FeLanczos, RepeatedAndNegativeEigenvaluesWithASubspaceLargerThanTheMatrix) 
   ASSERT_TRUE(result.converged);
   const std::vector<double> expected = {-10.5, 10.0, 10.0, 10.0, 9.0, 9.0};
   ASSERT_EQ(result.values.size(), 6);
-  for (int i = 0; i < 6; ++i) EXPECT_NEAR(result.values[i], expected[static_cast<std::size_t>(i)], 1e-12);
+  for (int i = 0; i < 6; ++i)
+    EXPECT_NEAR(result.values[i], expected[static_cast<std::size_t>(i)], 1e-12);
   expect_eigenpairs(apply, result, 1e-12);
 }
 
@@ -121,11 +129,13 @@ TEST(FeLanczos, AWorkspaceServesLargerAndSmallerRuns) {
   LanczosWorkspace workspace;
   for (int n : {500, 1500, 300}) {
     const auto apply = inverse_laplacian(n);
-    const LanczosResult result = largest_magnitude_eigenpairs(apply, n, 6, 20, 1e-13, 1000, workspace);
+    const LanczosResult result =
+        largest_magnitude_eigenpairs(apply, n, 6, 20, 1e-13, 1000, workspace);
     ASSERT_TRUE(result.converged) << "n = " << n;
     for (int k = 1; k <= 6; ++k) {
       const double exact = laplacian_eigenvalue(k, n);
-      EXPECT_NEAR(1.0 / result.values[k - 1], exact, 1e-12 * exact) << "n = " << n << ", mode " << k;
+      EXPECT_NEAR(1.0 / result.values[k - 1], exact, 1e-12 * exact)
+          << "n = " << n << ", mode " << k;
     }
   }
 }
@@ -139,25 +149,30 @@ TEST(FeLanczos, AGuessNearTheWantedVectorsSavesStepsAndChangesNoEigenpair) {
     // Fine unknown i is fine node i + 1: coarse node (i + 1) / 2 when i is odd, else a midpoint.
     auto at_coarse_node = [&](int c) { return std::sin(k * kPi * c / (coarse + 1)); };
     for (int i = 0; i < n; ++i)
-      guess[i] += i % 2 == 1 ? at_coarse_node((i + 1) / 2) : 0.5 * (at_coarse_node(i / 2) + at_coarse_node(i / 2 + 1));
+      guess[i] += i % 2 == 1 ? at_coarse_node((i + 1) / 2)
+                             : 0.5 * (at_coarse_node(i / 2) + at_coarse_node(i / 2 + 1));
   }
   LanczosWorkspace workspace;
   const auto apply = inverse_laplacian(n);
-  const LanczosResult plain = largest_magnitude_eigenpairs(apply, n, 10, 30, 1e-13, 1000, workspace);
-  const LanczosResult guessed = largest_magnitude_eigenpairs(apply, n, 10, 30, 1e-13, 1000, workspace, guess.data());
+  const LanczosResult plain =
+      largest_magnitude_eigenpairs(apply, n, 10, 30, 1e-13, 1000, workspace);
+  const LanczosResult guessed =
+      largest_magnitude_eigenpairs(apply, n, 10, 30, 1e-13, 1000, workspace, guess.data());
   ASSERT_TRUE(plain.converged);
   ASSERT_TRUE(guessed.converged);
   EXPECT_LT(guessed.operations, plain.operations);
   // The same eigenvalues of this operator as from the pseudo-random start (at n = 4001 the
   // inverse's own rounding, ~1e-11 relative in the lowest mode, exceeds the exact spectrum's test).
-  for (int k = 0; k < 10; ++k) EXPECT_NEAR(guessed.values[k], plain.values[k], 1e-13 * plain.values[k]) << "mode " << k;
+  for (int k = 0; k < 10; ++k)
+    EXPECT_NEAR(guessed.values[k], plain.values[k], 1e-13 * plain.values[k]) << "mode " << k;
   expect_eigenpairs(apply, guessed, 1e-11);
 }
 
 TEST(FeLanczos, ReportsNoConvergenceWhenRestartsRunOut) {
   const int n = 400;
   LanczosWorkspace workspace;
-  const LanczosResult result = largest_magnitude_eigenpairs(laplacian(n), n, 4, 8, 1e-13, 2, workspace);
+  const LanczosResult result =
+      largest_magnitude_eigenpairs(laplacian(n), n, 4, 8, 1e-13, 2, workspace);
   EXPECT_FALSE(result.converged);
   EXPECT_EQ(result.restarts, 2);
 }

@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/fe_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 
 namespace catena {
 namespace {
@@ -25,7 +25,8 @@ TEST(FeLevels, PlanMeshesFollowTheOptions) {
   EXPECT_TRUE(richardson.richardson && richardson.has_coarse() && richardson.has_estimate_mesh());
   EXPECT_EQ(richardson.meshes[static_cast<std::size_t>(richardson.main_coarse)], 100);
   EXPECT_EQ(richardson.finest_elements(), 200);
-  EXPECT_EQ(plan({.elements = 100, .observed_order = true}).meshes, (std::vector<int>{50, 100, 200, 400}));
+  EXPECT_EQ(plan({.elements = 100, .observed_order = true}).meshes,
+            (std::vector<int>{50, 100, 200, 400}));
   // N/2 = 5 elements resolve 2 modes, not 3: no estimate mesh; an odd N/2 count is not halved.
   EXPECT_EQ(plan({.elements = 10}).meshes, (std::vector<int>{10, 20}));
   EXPECT_EQ(plan({.elements = 101}, 1).meshes, (std::vector<int>{101, 202}));
@@ -83,14 +84,16 @@ TEST(FeLevels, EveryLevelIsSolvedAndProved) {
   const internal::FePlan plan = internal::make_fe_plan(problem, statics, options, 4, 0);
   internal::FeTimings timings;
   std::string failure;
-  internal::FeLevels levels = internal::solve_level_statics(problem, statics, plan, timings, failure);
+  internal::FeLevels levels =
+      internal::solve_level_statics(problem, statics, plan, timings, failure);
   ASSERT_TRUE(failure.empty()) << failure;
-  ASSERT_EQ(levels.size(), 3u);  // N/2, N, 2N
+  ASSERT_EQ(levels.size(), 3u);     // N/2, N, 2N
   ASSERT_EQ(levels[0].size(), 3u);  // three penalties
   EXPECT_EQ(levels[0][1].chain.elements, 30);
   EXPECT_EQ(levels[2][1].chain.elements, 120);
   EXPECT_EQ(levels[2][1].chain.axial_stiffness_n[0], plan.axial_stiffness_n[1]);
-  const internal::FePlaneEigenReport report = internal::solve_level_modes(levels, Plane::InPlane, 4, options, timings);
+  const internal::FePlaneEigenReport report =
+      internal::solve_level_modes(levels, Plane::InPlane, 4, options, timings);
   EXPECT_EQ(report.termination, Termination::Converged);
   EXPECT_TRUE(report.warnings.empty());
   EXPECT_GT(report.max_residual, 0.0);
@@ -99,7 +102,8 @@ TEST(FeLevels, EveryLevelIsSolvedAndProved) {
   EXPECT_GT(timings.statics_s, 0.0);
   // The forced response's operators: only the missing plane is assembled, on the meshes asked.
   internal::assemble_missing(levels, Plane::OutOfPlane, {1});
-  EXPECT_TRUE(levels[1][0].matrices.count(Plane::OutOfPlane) && levels[1][1].matrices.count(Plane::OutOfPlane));
+  EXPECT_TRUE(levels[1][0].matrices.count(Plane::OutOfPlane) &&
+              levels[1][1].matrices.count(Plane::OutOfPlane));
   EXPECT_FALSE(levels[0][0].matrices.count(Plane::OutOfPlane));
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// fe on a general line (docs/explanation/methods/fe.md, "Lines"), against anchors that need no other solver:
+// fe on a general line (docs/explanation/methods/fe.md, "Lines"), against anchors that need no
+// other solver:
 // - a uniform cable written as a line of 2 and 7 identical segments: the same frequencies as the
 //   one-segment cable to 1e-12 (the meshes coincide: N = 140 splits evenly);
 // - a weightless taut line of two segments with different mass densities: out of plane, the exact
@@ -17,9 +18,9 @@
 
 #include "catena/core/types.hpp"
 #include "catena/solvers/fe_solver.hpp"
+#include "solvers/common/solver_test_support.hpp"
 #include "solvers/fe/fe_levels.hpp"
 #include "solvers/fe/fe_line_mesh.hpp"
-#include "solvers/common/solver_test_support.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -83,17 +84,20 @@ std::vector<double> roots(const std::function<double(double)>& f, double top, in
 void expect_same_frequencies(const ModalResult& a, const ModalResult& b, double tolerance) {
   ASSERT_EQ(a.modes.size(), b.modes.size());
   for (std::size_t i = 0; i < a.modes.size(); ++i)
-    EXPECT_LE(relative_error(a.modes[i].omega_rad_s, b.modes[i].omega_rad_s), tolerance) << "mode " << i + 1;
+    EXPECT_LE(relative_error(a.modes[i].omega_rad_s, b.modes[i].omega_rad_s), tolerance)
+        << "mode " << i + 1;
 }
 
 TEST(FeLine, UniformLineSplitIntoIdenticalSegmentsReproducesTheCable) {
   const Problem cable = sagging_cable();
   const FeSolverOptions options{.elements = 140};
   const Solved one = solve(cable, modes_request(8, 8), options);
-  ASSERT_EQ(one.output.summary.termination, Termination::Converged) << one.output.summary.full_report();
+  ASSERT_EQ(one.output.summary.termination, Termination::Converged)
+      << one.output.summary.full_report();
   for (int pieces : {2, 7}) {
     const Solved line = solve(split_into_segments(cable, pieces), modes_request(8, 8), options);
-    ASSERT_EQ(line.output.summary.termination, Termination::Converged) << line.output.summary.full_report();
+    ASSERT_EQ(line.output.summary.termination, Termination::Converged)
+        << line.output.summary.full_report();
     expect_same_frequencies(*one.output.inplane, *line.output.inplane, 1e-12);
     expect_same_frequencies(*one.output.outofplane, *line.output.outofplane, 1e-12);
   }
@@ -110,7 +114,8 @@ Problem two_density_line() {
 TEST(FeLine, TwoDensityTautLineSatisfiesTheExactFrequencyEquation) {
   const Problem p = two_density_line();
   const Solved solved = solve(p, modes_request(0, 10), {.elements = 1000});
-  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.full_report();
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.full_report();
   const double T = solved.statics.horizontal_force_n();
   ASSERT_LE(relative_error(T, 1e7 * (100.1 / 100.0 - 1.0)), 1e-9);
   const double stretch = 1.0 + T / 1e7;
@@ -126,8 +131,10 @@ TEST(FeLine, TwoDensityTautLineSatisfiesTheExactFrequencyEquation) {
   ASSERT_EQ(modes.size(), 10u);
   for (std::size_t i = 0; i < 10; ++i) {
     const double error = relative_error(modes[i].omega_rad_s, exact[i]);
-    EXPECT_LE(error, 1e-9) << "mode " << i + 1 << ": fe " << modes[i].omega_rad_s << ", exact " << exact[i];
-    EXPECT_LE(error, modes[i].relative_error_estimate) << "mode " << i + 1 << ": the estimate must cover the error";
+    EXPECT_LE(error, 1e-9) << "mode " << i + 1 << ": fe " << modes[i].omega_rad_s << ", exact "
+                           << exact[i];
+    EXPECT_LE(error, modes[i].relative_error_estimate)
+        << "mode " << i + 1 << ": the estimate must cover the error";
   }
 }
 
@@ -144,10 +151,12 @@ Problem midspan_point_line() {
 
 TEST(FeLine, MidSpanPointMassKeepsAntisymmetricModesAndShiftsSymmetricOnes) {
   const Solved solved = solve(midspan_point_line(), modes_request(0, 10), {.elements = 1000});
-  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.full_report();
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.full_report();
   const double T = solved.statics.horizontal_force_n(), L = 100.0, M = 5.0, P = 200.0;
   const double wave = std::sqrt(M * (1.0 + T / 1e7) / T);  // k = w * wave
-  // Symmetric: cot(kL/2) = k P / (2 M), i.e. 2 M cos(kL/2) - k P sin(kL/2) = 0; antisymmetric: kL = 2 n pi.
+  // Symmetric: cot(kL/2) = k P / (2 M), i.e. 2 M cos(kL/2) - k P sin(kL/2) = 0; antisymmetric: kL =
+  // 2 n pi.
   auto symmetric = [&](double w) {
     const double k = w * wave;
     return 2.0 * M * std::cos(0.5 * k * L) - k * P * std::sin(0.5 * k * L);
@@ -159,7 +168,8 @@ TEST(FeLine, MidSpanPointMassKeepsAntisymmetricModesAndShiftsSymmetricOnes) {
   ASSERT_EQ(modes.size(), 10u);
   for (std::size_t i = 0; i < 10; ++i) {
     const double error = relative_error(modes[i].omega_rad_s, exact[i]);
-    EXPECT_LE(error, 1e-9) << "mode " << i + 1 << ": fe " << modes[i].omega_rad_s << ", exact " << exact[i];
+    EXPECT_LE(error, 1e-9) << "mode " << i + 1 << ": fe " << modes[i].omega_rad_s << ", exact "
+                           << exact[i];
     EXPECT_LE(error, modes[i].relative_error_estimate) << "mode " << i + 1;
   }
 }
@@ -179,7 +189,9 @@ TEST(FeLine, ForcedResponseOfASplitLineEqualsTheCables) {
   ASSERT_EQ(line.output.forced.size(), 2u);
   for (std::size_t f = 0; f < 2; ++f) {
     ASSERT_TRUE(line.output.forced[f].diagnostic.empty()) << line.output.forced[f].diagnostic;
-    EXPECT_LE(relative_error(one.output.forced[f].max_abs_tension_n, line.output.forced[f].max_abs_tension_n), 1e-9);
+    EXPECT_LE(relative_error(one.output.forced[f].max_abs_tension_n,
+                             line.output.forced[f].max_abs_tension_n),
+              1e-9);
   }
 }
 
@@ -198,22 +210,25 @@ TEST(FeLine, KinkAtAPointWeightKeepsSecondOrderInPlane) {
   for (int elements : {50, 100, 200})
     runs.push_back(solve(p, modes_request(4, 4), {.elements = elements, .richardson = false}));
   for (const Solved& run : runs)
-    ASSERT_EQ(run.output.summary.termination, Termination::Converged) << run.output.summary.full_report();
+    ASSERT_EQ(run.output.summary.termination, Termination::Converged)
+        << run.output.summary.full_report();
   for (const auto plane : {&SolverOutput::inplane, &SolverOutput::outofplane}) {
     for (std::size_t i = 0; i < 4; ++i) {
       const double w1 = (runs[0].output.*plane)->modes[i].omega_rad_s;
       const double w2 = (runs[1].output.*plane)->modes[i].omega_rad_s;
       const double w3 = (runs[2].output.*plane)->modes[i].omega_rad_s;
       const double order = std::log2((w1 - w2) / (w2 - w3));
-      EXPECT_NEAR(order, 2.0, 0.02) << (plane == &SolverOutput::inplane ? "in plane" : "out of plane") << " mode "
-                                    << i + 1;
+      EXPECT_NEAR(order, 2.0, 0.02)
+          << (plane == &SolverOutput::inplane ? "in plane" : "out of plane") << " mode " << i + 1;
     }
   }
 }
 
 TEST(FeLine, MeshHasNodesAtJointsAndPointsAndDoublesEveryPieceBetweenLevels) {
   Problem p;
-  p.line.segments = {{250.0, 1400.0, 7.5e8, 160.0, 25.0}, {600.0, 60.0, 2e8, 8.0, 4.0}, {100.0, 1400.0, 7.5e8, 160.0, 25.0}};
+  p.line.segments = {{250.0, 1400.0, 7.5e8, 160.0, 25.0},
+                     {600.0, 60.0, 2e8, 8.0, 4.0},
+                     {100.0, 1400.0, 7.5e8, 160.0, 25.0}};
   p.line.points = {point(400.0, 2e4, 1.5e5), point(800.0, 3e3, -4e4)};
   p.supports.a_m = Vec2(0.0, -300.0);
   p.supports.b_m = Vec2(800.0, 0.0);
@@ -222,7 +237,8 @@ TEST(FeLine, MeshHasNodesAtJointsAndPointsAndDoublesEveryPieceBetweenLevels) {
   const internal::FeLineMesh mesh = internal::make_line_mesh(p, statics, 95);
   ASSERT_EQ(mesh.pieces.size(), 5u);
   const std::vector<int> expected = {25, 15, 40, 5, 10};
-  for (std::size_t k = 0; k < mesh.pieces.size(); ++k) EXPECT_EQ(mesh.pieces[k].elements, expected[k]) << "piece " << k;
+  for (std::size_t k = 0; k < mesh.pieces.size(); ++k)
+    EXPECT_EQ(mesh.pieces[k].elements, expected[k]) << "piece " << k;
   EXPECT_EQ(mesh.pieces[2].point_at_start, 0);
   EXPECT_EQ(mesh.pieces[4].point_at_start, -1);  // the joint at 850 m carries no point
   EXPECT_EQ(mesh.pieces[3].point_at_start, 1);

@@ -35,13 +35,16 @@ TEST(FeRayleighQuotient, EqualsTheAssembledQuotient) {
   const Problem grounded = testing::forty_percent_grounded_chain(0.1, 3e6);
   const StaticSolution seabed = solve_seabed_statics(grounded);
   const internal::FeChain with_contact = internal::solve_chain_statics(
-      grounded, seabed, internal::make_line_mesh(grounded, seabed, 60), grounded.cable.axial_stiffness_n);
+      grounded, seabed, internal::make_line_mesh(grounded, seabed, 60),
+      grounded.cable.axial_stiffness_n);
   ASSERT_GT(with_contact.grounded_elements, 0);
-  for (const internal::FeChain& chain : {chain_of(make_taut_inclined_problem(0.1, 30.0, 50.0, 0.6), 40), with_contact}) {
+  for (const internal::FeChain& chain :
+       {chain_of(make_taut_inclined_problem(0.1, 30.0, 50.0, 0.6), 40), with_contact}) {
     for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
       const internal::FeMatrices matrices = internal::assemble(plane, chain);
       const Vector phi = Vector::Random(matrices.stiffness.rows());
-      const internal::RayleighQuotient q = internal::element_rayleigh_quotient(chain, plane, phi, matrices.mass);
+      const internal::RayleighQuotient q =
+          internal::element_rayleigh_quotient(chain, plane, phi, matrices.mass);
       const double expected = assembled_quotient(matrices, phi);
       EXPECT_NEAR(q.value, expected, 1e-12 * expected) << to_string(plane);
       EXPECT_GT(q.relative_rounding, 0.0);
@@ -51,7 +54,9 @@ TEST(FeRayleighQuotient, EqualsTheAssembledQuotient) {
 
 // The same quotient with the differences and sums in long double: the double evaluation's
 // rounding shows against it.
-double long_double_quotient(const internal::FeChain& chain, const Vector& phi, const internal::FeMatrices& matrices) {
+double long_double_quotient(const internal::FeChain& chain,
+                            const Vector& phi,
+                            const internal::FeMatrices& matrices) {
   using Real = long double;
   auto node = [&](int i, int k) -> Real {
     return (i <= 0 || i >= chain.elements) ? 0.0L : static_cast<Real>(phi[2 * (i - 1) + k]);
@@ -61,7 +66,8 @@ double long_double_quotient(const internal::FeChain& chain, const Vector& phi, c
     const Real dx = node(j + 1, 0) - node(j, 0), dz = node(j + 1, 1) - node(j, 1);
     const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
     const Real stretch = t.x() * dx + t.y() * dz, turn = t.x() * dz - t.y() * dx;
-    energy += static_cast<Real>(chain.axial_stiffness_n[j] / chain.element_length_m[j]) * stretch * stretch +
+    energy += static_cast<Real>(chain.axial_stiffness_n[j] / chain.element_length_m[j]) * stretch *
+                  stretch +
               static_cast<Real>(chain.tension_n[j] / chain.stretched_length_m[j]) * turn * turn;
   }
   Real kinetic = 0.0L;
@@ -82,9 +88,11 @@ TEST(FeRayleighQuotient, BoundsItsRoundingOnAStiffChainFarBelowTheNormwiseFloor)
   ASSERT_GT(stiffness_ratio, 5e5);
   for (int n = 1; n <= 4; ++n) {
     const Vector phi = eigen.eigenvectors.col(n - 1);
-    const internal::RayleighQuotient q = internal::element_rayleigh_quotient(chain, Plane::InPlane, phi, matrices.mass);
+    const internal::RayleighQuotient q =
+        internal::element_rayleigh_quotient(chain, Plane::InPlane, phi, matrices.mass);
     const double reference = long_double_quotient(chain, phi, matrices);
-    const double normwise = 0.5 * std::numeric_limits<double>::epsilon() * stiffness_ratio * N * N / (M_PI * M_PI * n * n);
+    const double normwise = 0.5 * std::numeric_limits<double>::epsilon() * stiffness_ratio * N * N /
+                            (M_PI * M_PI * n * n);
     EXPECT_LE(std::abs(q.value - reference), q.relative_rounding * reference) << n;
     EXPECT_LT(q.relative_rounding, 1e-4 * normwise) << n;
     // The quotient of the converged vector is the solver's eigenvalue to well within the floor.
@@ -121,7 +129,8 @@ TEST(FeRayleighQuotient, StructuredRitzUnmixesTheModesOfAStiffChain) {
   ASSERT_TRUE(internal::element_rayleigh_ritz(chain, Plane::InPlane, again, matrices.mass));
   double moved = 0.0, trace_before = 0.0, trace_after = 0.0;
   auto quotient = [&](const Eigen::MatrixXd& vectors, int i) {
-    return internal::element_rayleigh_quotient(chain, Plane::InPlane, vectors.col(i), matrices.mass);
+    return internal::element_rayleigh_quotient(chain, Plane::InPlane, vectors.col(i),
+                                               matrices.mass);
   };
   for (int i = 0; i < 4; ++i) {
     const auto reference = quotient(unmixed, i), before = quotient(mixed, i);

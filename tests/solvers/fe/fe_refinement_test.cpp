@@ -37,8 +37,8 @@ TEST(FeRefinement, PredictsTheMeshFromTheOrderOfTheEstimates) {
 }
 
 TEST(FeRefinement, StepsAreBetweenTwoAndEightTimesAndMultiplesOfFour) {
-  EXPECT_EQ(fe_refined_elements(state({1.01e-9})).elements, 800);     // at least 2x
-  EXPECT_EQ(fe_refined_elements(state({1.0})).elements, 3200);        // at most 8x
+  EXPECT_EQ(fe_refined_elements(state({1.01e-9})).elements, 800);  // at least 2x
+  EXPECT_EQ(fe_refined_elements(state({1.0})).elements, 3200);     // at most 8x
   FeRefinementState s = state({1.6e-8});
   s.elements = 402;
   EXPECT_EQ(fe_refined_elements(s).elements % 4, 0);
@@ -51,12 +51,14 @@ TEST(FeRefinement, StopsAtTheCapAndWhenARefinementDidNotHalveTheWorstMiss) {
   s.elements = 1000;
   const FeRefinementStep at_cap = fe_refined_elements(s);
   EXPECT_EQ(at_cap.elements, 0);
-  EXPECT_NE(at_cap.stop_reason.find("max_elements = 1000"), std::string::npos) << at_cap.stop_reason;
+  EXPECT_NE(at_cap.stop_reason.find("max_elements = 1000"), std::string::npos)
+      << at_cap.stop_reason;
   s = state({6e-9});
   s.previous_worst = 1e-8;  // fell by less than 2x: held up by a floor
   const FeRefinementStep stalled = fe_refined_elements(s);
   EXPECT_EQ(stalled.elements, 0);
-  EXPECT_NE(stalled.stop_reason.find("from 1.0e-08 only to 6.0e-09"), std::string::npos) << stalled.stop_reason;
+  EXPECT_NE(stalled.stop_reason.find("from 1.0e-08 only to 6.0e-09"), std::string::npos)
+      << stalled.stop_reason;
   s.previous_worst = 1.3e-8;
   EXPECT_GT(fe_refined_elements(s).elements, 0);
 }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// fe on the seabed (docs/explanation/methods/fe.md, "Seabed contact"), against anchors that need no other
-// solver:
+// fe on the seabed (docs/explanation/methods/fe.md, "Seabed contact"), against anchors that need no
+// other solver:
 // - a line lying entirely on the seabed, taut (tension H, C_B = 0): the exact frequencies of a
 //   tensioned string on a Winkler foundation, omega^2 = (H/(1+e) (n pi/L)^2 + k) / M with
 //   e = H/EA, L unstretched and k per unstretched length (k_t out of plane, k_s for the vertical
@@ -12,22 +12,21 @@
 // - a slack grounded stretch (friction) without foundation stiffness across it is declined.
 #include <gtest/gtest.h>
 
-#include <limits>
-
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "catena/core/types.hpp"
 #include "catena/solvers/fe_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/seabed_statics.hpp"
-#include "solvers/fe/fe_chain_statics.hpp"
-#include "solvers/fe/fe_line_mesh.hpp"
 #include "solvers/common/solver_test_support.hpp"
+#include "solvers/fe/fe_chain_statics.hpp"
 #include "solvers/fe/fe_levels.hpp"
-#include "solvers/fe/fe_structured_residual.hpp"
+#include "solvers/fe/fe_line_mesh.hpp"
 #include "solvers/fe/fe_operators.hpp"
+#include "solvers/fe/fe_structured_residual.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -49,7 +48,9 @@ Problem line_on_seabed() {
   return p;
 }
 
-SolverOutput solve_grounded(const Problem& problem, const StaticSolution& statics, const SolveRequest& request,
+SolverOutput solve_grounded(const Problem& problem,
+                            const StaticSolution& statics,
+                            const SolveRequest& request,
                             const FeSolverOptions& options) {
   const DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
   return solve_fe(problem, statics, groups, request, options);
@@ -65,14 +66,16 @@ TEST(FeSeabed, TheStructuredForcedResidualCarriesTheFoundation) {
   // fe_structured_residual.hpp on a grounded chain: the foundation's springs are part of
   // f - (K - w^2 M) x, as in the assembled stiffness.
   const Problem problem = line_on_seabed();
-  const StaticSolution statics(problem.as_line(), problem.supports.a_m, *problem.seabed, kTension, kLength);
+  const StaticSolution statics(problem.as_line(), problem.supports.a_m, *problem.seabed, kTension,
+                               kLength);
   FeSolverOptions options;
   options.elements = 20;
   options.richardson = false;
   const internal::FePlan plan = internal::make_fe_plan(problem, statics, options, 1, 0);
   internal::FeTimings timings;
   std::string failure;
-  const internal::FeLevels levels = internal::solve_level_statics(problem, statics, plan, timings, failure);
+  const internal::FeLevels levels =
+      internal::solve_level_statics(problem, statics, plan, timings, failure);
   ASSERT_TRUE(failure.empty()) << failure;
   const internal::FeChain& chain = levels[static_cast<std::size_t>(plan.main_fine)][0].chain;
   ASSERT_TRUE(chain.has_contact());
@@ -83,9 +86,10 @@ TEST(FeSeabed, TheStructuredForcedResidualCarriesTheFoundation) {
   Vector ends(4);
   ends << Vec2::Zero(), end_b;
   const double omega = 2.0;
-  const Vector assembled =
-      -(matrices.boundary_coupling * ends) - (matrices.stiffness * x - omega * omega * (matrices.mass * x));
-  const Vector structured = internal::inplane_structured_residual(chain, matrices, omega, x, Vec2::Zero(), end_b);
+  const Vector assembled = -(matrices.boundary_coupling * ends) -
+                           (matrices.stiffness * x - omega * omega * (matrices.mass * x));
+  const Vector structured =
+      internal::inplane_structured_residual(chain, matrices, omega, x, Vec2::Zero(), end_b);
   const double l0 = kLength / chain.elements;
   const double rounding = 1e3 * std::numeric_limits<double>::epsilon() * kAxial / l0 * 2e-3;
   EXPECT_LE((structured - assembled).cwiseAbs().maxCoeff(), rounding);
@@ -94,7 +98,8 @@ TEST(FeSeabed, TheStructuredForcedResidualCarriesTheFoundation) {
 
 TEST(FeSeabed, LineOnTheSeabedIsAStringAndABarOnAWinklerFoundation) {
   const Problem problem = line_on_seabed();
-  const StaticSolution statics(problem.as_line(), problem.supports.a_m, *problem.seabed, kTension, kLength);
+  const StaticSolution statics(problem.as_line(), problem.supports.a_m, *problem.seabed, kTension,
+                               kLength);
   ASSERT_TRUE(statics.has_contact());
   FeSolverOptions options;
   options.elements = 1000;
@@ -103,12 +108,18 @@ TEST(FeSeabed, LineOnTheSeabedIsAStringAndABarOnAWinklerFoundation) {
   ASSERT_EQ(out.outofplane->modes.size(), 6u) << out.outofplane->summary.message;
   ASSERT_EQ(out.inplane->modes.size(), 8u) << out.inplane->summary.message;
   const double e = kTension / kAxial, M = kMass + kAdded, m = kMass;
-  auto string = [&](int n, double k) { return std::sqrt((kTension / (1 + e) * std::pow(n * kPi / kLength, 2) + k) / M); };
-  auto bar = [&](int n) { return std::sqrt((kAxial * std::pow(n * kPi / kLength, 2) + kTangential) / m); };
+  auto string = [&](int n, double k) {
+    return std::sqrt((kTension / (1 + e) * std::pow(n * kPi / kLength, 2) + k) / M);
+  };
+  auto bar = [&](int n) {
+    return std::sqrt((kAxial * std::pow(n * kPi / kLength, 2) + kTangential) / m);
+  };
   for (int n = 1; n <= 6; ++n) {
     const Mode& mode = out.outofplane->modes[static_cast<std::size_t>(n) - 1];
-    EXPECT_LT(relative_error(mode.omega_rad_s, string(n, kTangential)), 1e-9) << "out of plane n = " << n;
-    EXPECT_LT(relative_error(mode.omega_rad_s, string(n, kTangential)), mode.relative_error_estimate);
+    EXPECT_LT(relative_error(mode.omega_rad_s, string(n, kTangential)), 1e-9)
+        << "out of plane n = " << n;
+    EXPECT_LT(relative_error(mode.omega_rad_s, string(n, kTangential)),
+              mode.relative_error_estimate);
   }
   std::vector<double> inplane;
   for (int n = 1; n <= 8; ++n) inplane.push_back(string(n, kVertical));
@@ -116,7 +127,8 @@ TEST(FeSeabed, LineOnTheSeabedIsAStringAndABarOnAWinklerFoundation) {
   inplane = sorted_first(inplane, 8);
   for (int i = 0; i < 8; ++i) {
     const Mode& mode = out.inplane->modes[static_cast<std::size_t>(i)];
-    EXPECT_LT(relative_error(mode.omega_rad_s, inplane[static_cast<std::size_t>(i)]), 1e-9) << "in plane " << i + 1;
+    EXPECT_LT(relative_error(mode.omega_rad_s, inplane[static_cast<std::size_t>(i)]), 1e-9)
+        << "in plane " << i + 1;
   }
   EXPECT_EQ(out.inplane->proved_count_below_top, 8);
   EXPECT_EQ(out.outofplane->proved_count_below_top, 6);
@@ -132,7 +144,8 @@ TEST(FeSeabed, WithoutFoundationTheGroundedLineIsAFreeString) {
   Problem problem = line_on_seabed();
   problem.seabed->stiffness_n_per_m2 = 0.0;
   problem.seabed->tangential_stiffness_n_per_m2 = 0.0;
-  const StaticSolution statics(problem.as_line(), problem.supports.a_m, *problem.seabed, kTension, kLength);
+  const StaticSolution statics(problem.as_line(), problem.supports.a_m, *problem.seabed, kTension,
+                               kLength);
   FeSolverOptions options;
   options.elements = 400;
   const SolverOutput out = solve_grounded(problem, statics, modes_request(4, 4), options);
@@ -141,8 +154,10 @@ TEST(FeSeabed, WithoutFoundationTheGroundedLineIsAFreeString) {
   const double c = std::sqrt(kTension / ((1.0 + kTension / kAxial) * (kMass + kAdded)));
   for (std::size_t i = 0; i < 4; ++i) {
     const double exact = (static_cast<double>(i) + 1.0) * kPi / kLength * c;
-    EXPECT_LT(relative_error(out.inplane->modes[i].omega_rad_s, exact), 1e-9) << "in plane " << i + 1;
-    EXPECT_LT(relative_error(out.outofplane->modes[i].omega_rad_s, exact), 1e-9) << "out of plane " << i + 1;
+    EXPECT_LT(relative_error(out.inplane->modes[i].omega_rad_s, exact), 1e-9)
+        << "in plane " << i + 1;
+    EXPECT_LT(relative_error(out.outofplane->modes[i].omega_rad_s, exact), 1e-9)
+        << "out of plane " << i + 1;
   }
 }
 
@@ -157,7 +172,8 @@ double exact_forced(double q2, double s) {
 
 TEST(FeSeabed, ForcedResponseOfTheLineOnTheSeabedIsExact) {
   const Problem problem = line_on_seabed();
-  const StaticSolution statics(problem.as_line(), problem.supports.a_m, *problem.seabed, kTension, kLength);
+  const StaticSolution statics(problem.as_line(), problem.supports.a_m, *problem.seabed, kTension,
+                               kLength);
   const double e = kTension / kAxial, d = 0.01;
   struct Case {
     ForcingDirection direction;
@@ -190,7 +206,8 @@ TEST(FeSeabed, ForcedResponseOfTheLineOnTheSeabedIsExact) {
       if (c.direction == ForcingDirection::Tangential) {
         const double q = std::sqrt(c.q2);
         const double tension = kAxial * d * q * std::cos(q * r.s_m[k]) / std::sin(q * kLength);
-        worst_tension = std::max(worst_tension, std::abs(r.tension_n[k] - tension) / r.max_abs_tension_n);
+        worst_tension =
+            std::max(worst_tension, std::abs(r.tension_n[k] - tension) / r.max_abs_tension_n);
       }
     }
     // Measured at N = 2000: 5e-10 axial, 3e-11 vertical, 1e-9 out of plane (6e-7 and 4e-8 at
@@ -203,8 +220,10 @@ TEST(FeSeabed, ForcedResponseOfTheLineOnTheSeabedIsExact) {
   }
 }
 
-
-SolverOutput solve_forty(double friction, double vertical_stiffness, int elements, bool richardson = true) {
+SolverOutput solve_forty(double friction,
+                         double vertical_stiffness,
+                         int elements,
+                         bool richardson = true) {
   const Problem problem = testing::forty_percent_grounded_chain(friction, vertical_stiffness);
   const StaticSolution statics = solve_seabed_statics(problem);
   FeSolverOptions options;
@@ -222,7 +241,8 @@ TEST(FeSeabed, DiscreteStaticsConvergesAtSecondOrder) {
     std::vector<double> h_error, v_error;
     for (int N : {100, 200, 400}) {
       const internal::FeLineMesh mesh = internal::make_line_mesh(problem, statics, N);
-      const internal::FeChain chain = internal::solve_chain_statics(problem, statics, mesh, problem.cable.axial_stiffness_n);
+      const internal::FeChain chain =
+          internal::solve_chain_statics(problem, statics, mesh, problem.cable.axial_stiffness_n);
       ASSERT_TRUE(chain.in_equilibrium()) << chain.failure;
       ASSERT_GT(chain.grounded_elements, 0);
       h_error.push_back(std::abs(chain.horizontal_force_n - statics.horizontal_force_n()));
@@ -245,10 +265,13 @@ TEST(FeSeabed, ObservedOrderTwoOnTheGroundedLine) {
     for (int i : {0, 4, 9}) {
       for (bool inplane : {true, false}) {
         auto omega = [&](std::size_t k) {
-          return (inplane ? out[k].inplane : out[k].outofplane)->modes[static_cast<std::size_t>(i)].omega_rad_s;
+          return (inplane ? out[k].inplane : out[k].outofplane)
+              ->modes[static_cast<std::size_t>(i)]
+              .omega_rad_s;
         };
         const double order = std::log2((omega(0) - omega(1)) / (omega(1) - omega(2)));
-        EXPECT_NEAR(order, 2.0, 0.05) << "C_B = " << friction << (inplane ? " in" : " out") << " mode " << i + 1;
+        EXPECT_NEAR(order, 2.0, 0.05)
+            << "C_B = " << friction << (inplane ? " in" : " out") << " mode " << i + 1;
       }
     }
   }
@@ -258,7 +281,8 @@ TEST(FeSeabed, ObservedOrderTwoOnTheGroundedLine) {
 // the N = 1600 and 3200 results within their estimates of each other.
 TEST(FeSeabed, FortyPercentGroundedConvergesWithinItsEstimate) {
   for (double friction : {0.0, 0.1}) {
-    const SolverOutput coarse = solve_forty(friction, 3e6, 1600), fine = solve_forty(friction, 3e6, 3200);
+    const SolverOutput coarse = solve_forty(friction, 3e6, 1600),
+                       fine = solve_forty(friction, 3e6, 3200);
     for (bool inplane : {true, false}) {
       const ModalResult& a = *(inplane ? coarse.inplane : coarse.outofplane);
       const ModalResult& b = *(inplane ? fine.inplane : fine.outofplane);
@@ -266,7 +290,8 @@ TEST(FeSeabed, FortyPercentGroundedConvergesWithinItsEstimate) {
       ASSERT_EQ(b.modes.size(), 10u);
       EXPECT_EQ(b.proved_count_below_top, 10);
       for (std::size_t i = 0; i < 10; ++i)
-        EXPECT_LT(relative_error(a.modes[i].omega_rad_s, b.modes[i].omega_rad_s), a.modes[i].relative_error_estimate);
+        EXPECT_LT(relative_error(a.modes[i].omega_rad_s, b.modes[i].omega_rad_s),
+                  a.modes[i].relative_error_estimate);
     }
     // The summary says which dynamic model of the contact fe solved.
     const std::vector<std::string>& notes = coarse.summary.notes;
@@ -281,7 +306,8 @@ TEST(FeSeabed, FortyPercentGroundedConvergesWithinItsEstimate) {
 // k_s^(-1/2): each tenfold k_s shrinks the change by sqrt(10) (observed order 1/2 in k_s).
 TEST(FeSeabed, FrequenciesConvergeAsTheSeabedStiffens) {
   std::vector<double> omega;
-  for (double ks : {3e5, 3e6, 3e7, 3e8, 3e9}) omega.push_back(solve_forty(0.1, ks, 800).inplane->modes[0].omega_rad_s);
+  for (double ks : {3e5, 3e6, 3e7, 3e8, 3e9})
+    omega.push_back(solve_forty(0.1, ks, 800).inplane->modes[0].omega_rad_s);
   for (std::size_t k = 0; k + 2 < omega.size(); ++k) {
     const double order = std::log10((omega[k + 1] - omega[k]) / (omega[k + 2] - omega[k + 1]));
     EXPECT_NEAR(order, 0.5, 0.01) << "k_s = 3e" << k + 5;
@@ -297,30 +323,37 @@ TEST(FeSeabed, TouchdownAtTheAnchorReproducesTheFreeLine) {
   free_line.supports.b_m = free_line.supports.a_m + catenary_end_offset(free_line.cable, 5e5, 0.0);
   Problem on_seabed = free_line;
   on_seabed.seabed = Seabed{-200.0, 0.1, 3e6, 1e4};
-  const StaticSolution free_statics = solve_statics(free_line), seabed_statics = solve_seabed_statics(on_seabed);
+  const StaticSolution free_statics = solve_statics(free_line),
+                       seabed_statics = solve_seabed_statics(on_seabed);
   ASSERT_LT(seabed_statics.grounded_length_m(), 1e-6);
   FeSolverOptions options;
   options.elements = 400;
   const SolverOutput a = solve_grounded(free_line, free_statics, modes_request(6, 6), options);
   const SolverOutput b = solve_grounded(on_seabed, seabed_statics, modes_request(6, 6), options);
   for (std::size_t i = 0; i < 6; ++i) {
-    EXPECT_LT(relative_error(a.inplane->modes[i].omega_rad_s, b.inplane->modes[i].omega_rad_s), 1e-9)
+    EXPECT_LT(relative_error(a.inplane->modes[i].omega_rad_s, b.inplane->modes[i].omega_rad_s),
+              1e-9)
         << b.inplane->summary.message;
-    EXPECT_LT(relative_error(a.outofplane->modes[i].omega_rad_s, b.outofplane->modes[i].omega_rad_s), 1e-9);
+    EXPECT_LT(
+        relative_error(a.outofplane->modes[i].omega_rad_s, b.outofplane->modes[i].omega_rad_s),
+        1e-9);
   }
 }
 
-// Friction C_B = 3 (its drop 3 w L_g exceeds H) leaves part of the grounded length without tension: out of plane (k_t = 0) it
-// has no stiffness, and fe declines that plane saying what to change; in plane the vertical
-// foundation holds it (and the axial EA), so that plane is solved. With k_s = 0 both decline.
+// Friction C_B = 3 (its drop 3 w L_g exceeds H) leaves part of the grounded length without tension:
+// out of plane (k_t = 0) it has no stiffness, and fe declines that plane saying what to change; in
+// plane the vertical foundation holds it (and the axial EA), so that plane is solved. With k_s = 0
+// both decline.
 TEST(FeSeabed, SlackGroundedStretchWithoutFoundationIsDeclined) {
   const SolverOutput out = solve_forty(3.0, 3e6, 400);
   ASSERT_TRUE(out.outofplane && out.inplane);
   EXPECT_EQ(out.outofplane->summary.termination, Termination::NotApplicable);
-  EXPECT_NE(out.outofplane->summary.message.find("[seabed].tangential_stiffness > 0"), std::string::npos)
+  EXPECT_NE(out.outofplane->summary.message.find("[seabed].tangential_stiffness > 0"),
+            std::string::npos)
       << out.outofplane->summary.message;
   EXPECT_TRUE(out.outofplane->modes.empty());
-  EXPECT_EQ(out.inplane->summary.termination, Termination::Converged) << out.inplane->summary.message;
+  EXPECT_EQ(out.inplane->summary.termination, Termination::Converged)
+      << out.inplane->summary.message;
   const SolverOutput soft = solve_forty(3.0, 0.0, 400);
   EXPECT_EQ(soft.inplane->summary.termination, Termination::NotApplicable);
   EXPECT_NE(soft.inplane->summary.message.find("[seabed].stiffness > 0"), std::string::npos);

@@ -8,8 +8,8 @@
 #include <limits>
 
 #include "catena/statics/problem_builders.hpp"
-#include "solvers/fe/fe_operators.hpp"
 #include "solvers/common/mode_tools.hpp"
+#include "solvers/fe/fe_operators.hpp"
 
 namespace catena {
 namespace {
@@ -29,14 +29,16 @@ Bar straight_bar() {
   problem.cable.mass_kg_per_m = 1.0;
   problem.supports.b_m = Vec2(1.1, 0.0);
   StaticSolution statics = solve_statics(problem);
-  internal::FeChain chain = internal::solve_chain_statics(problem, statics, 10, problem.cable.axial_stiffness_n);
+  internal::FeChain chain =
+      internal::solve_chain_statics(problem, statics, 10, problem.cable.axial_stiffness_n);
   return {problem, std::move(statics), std::move(chain)};
 }
 
 TEST(FeShapes, NodeDisplacementsCarryTheImposedEnds) {
   Vector free(2 * 3);
   free << 1, 2, 3, 4, 5, 6;
-  const auto inplane = internal::node_displacements(Plane::InPlane, 4, free, Vec2(7, 8), Vec2(9, 10));
+  const auto inplane =
+      internal::node_displacements(Plane::InPlane, 4, free, Vec2(7, 8), Vec2(9, 10));
   ASSERT_EQ(inplane.size(), 5u);
   EXPECT_EQ(inplane[0], Vec2(7, 8));
   EXPECT_EQ(inplane[2], Vec2(3, 4));
@@ -68,11 +70,12 @@ TEST(FeShapes, UniformStretchGivesUniformTensionAndExactLinearSampling) {
 TEST(FeShapes, ModeOnStationsIsNormalised) {
   const Bar bar = straight_bar();
   Vector eigenvector(bar.chain.elements - 1);
-  for (Index i = 0; i < eigenvector.size(); ++i) eigenvector[i] = -3.0 * std::sin(kPi * (i + 1) / 10.0);
+  for (Index i = 0; i < eigenvector.size(); ++i)
+    eigenvector[i] = -3.0 * std::sin(kPi * (i + 1) / 10.0);
   const Mode mode = internal::mode_on_stations(Plane::OutOfPlane, bar.chain, eigenvector,
                                                Vector::LinSpaced(11, 0.0, 1.0), bar.statics, true);
   EXPECT_EQ(mode.normalised_by, "v");
-  EXPECT_NEAR(mode.v.maxCoeff(), 1.0, 1e-12);  // the peak made positive and 1
+  EXPECT_NEAR(mode.v.maxCoeff(), 1.0, 1e-12);   // the peak made positive and 1
   EXPECT_EQ(mode.tension_n, Vector::Zero(11));  // no first-order tension out of plane
 }
 
@@ -84,10 +87,12 @@ TEST(FeShapes, ModeOnStationsIsNormalised) {
 TEST(FeShapes, ModeOnStationsEqualsSamplingTheCopiedNodes) {
   const Problem problem = make_taut_inclined_problem(0.1, 30.0, 50.0, 0.6);
   const StaticSolution statics = solve_statics(problem);
-  const internal::FeChain chain = internal::solve_chain_statics(problem, statics, 16, problem.cable.axial_stiffness_n);
+  const internal::FeChain chain =
+      internal::solve_chain_statics(problem, statics, 16, problem.cable.axial_stiffness_n);
   const Vector stations = Vector::LinSpaced(23, 0.0, problem.length_m());
   for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
-    const Vector free = Vector::LinSpaced(internal::fe_unknowns(plane, 16), -1.0, 2.0).array().sin();
+    const Vector free =
+        Vector::LinSpaced(internal::fe_unknowns(plane, 16), -1.0, 2.0).array().sin();
     const std::vector<Vec2> D = internal::node_displacements(plane, 16, free);
     const Vector tau = internal::element_tension(chain, D);
     const bool inplane = plane == Plane::InPlane;

@@ -28,12 +28,12 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/common/solver_test_support.hpp"
-#include "test_utils.hpp"
 #include "solvers/fe/fe_test_support.hpp"
+#include "test_utils.hpp"
 
 namespace catena {
 namespace {
@@ -57,9 +57,10 @@ constexpr double kRelTolTautString = 1e-6;
 constexpr double kRelTolTautStringExact = 1e-7;
 
 TEST(FeSolver, TautStringGivesIntegerKLOverPiInBothPlanes) {
-  const Solved solved =
-      solve(make_taut_inclined_problem(1e-6, 0.0, 1e-6, 1.0), modes_request(10, 10), {.elements = 1000});
-  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.full_report();
+  const Solved solved = solve(make_taut_inclined_problem(1e-6, 0.0, 1e-6, 1.0),
+                              modes_request(10, 10), {.elements = 1000});
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.full_report();
   const double strain = solved.groups.t0_n / solved.problem.cable.axial_stiffness_n;
   for (const auto* result : {&*solved.output.inplane, &*solved.output.outofplane}) {
     ASSERT_EQ(result->modes.size(), 10u);
@@ -67,7 +68,8 @@ TEST(FeSolver, TautStringGivesIntegerKLOverPiInBothPlanes) {
     for (const Mode& mode : result->modes) {
       const double n = mode.index;
       EXPECT_LE(relative_error(mode.k_l_over_pi, n), kRelTolTautString) << "mode " << mode.index;
-      EXPECT_LE(relative_error(mode.k_l_over_pi, n / std::sqrt(1.0 + strain)), kRelTolTautStringExact)
+      EXPECT_LE(relative_error(mode.k_l_over_pi, n / std::sqrt(1.0 + strain)),
+                kRelTolTautStringExact)
           << "mode " << mode.index << ": " << mode.k_l_over_pi;
       EXPECT_GT(mode.relative_error_estimate, 0.0);
       EXPECT_LT(mode.relative_error_estimate, 1e-4);
@@ -75,7 +77,8 @@ TEST(FeSolver, TautStringGivesIntegerKLOverPiInBothPlanes) {
       // (out of plane, and the antisymmetric in-plane modes: the sag's 4e-8 on in-plane mode 1,
       // 5e-10 on mode 3, is physics, not fe's error; fe's estimate is 3e-10 there).
       if (result == &*solved.output.outofplane || mode.index % 2 == 0) {
-        EXPECT_LE(relative_error(mode.k_l_over_pi, n / std::sqrt(1.0 + strain)), mode.relative_error_estimate)
+        EXPECT_LE(relative_error(mode.k_l_over_pi, n / std::sqrt(1.0 + strain)),
+                  mode.relative_error_estimate)
             << "mode " << mode.index;
       }
     }
@@ -86,16 +89,17 @@ TEST(FeSolver, UnextrapolatedTautStringConvergesAtSecondOrder) {
   const Problem problem = make_taut_inclined_problem(1e-6, 0.0, 1e-6, 1.0);
   std::vector<std::vector<double>> omegas;
   for (int N : {1000, 2000, 4000}) {
-    const Solved solved = solve(problem, modes_request(10, 10), {.elements = N, .richardson = false});
+    const Solved solved =
+        solve(problem, modes_request(10, 10), {.elements = N, .richardson = false});
     std::vector<double> row;
     for (const Mode& mode : solved.output.inplane->modes) row.push_back(mode.omega_rad_s);
     for (const Mode& mode : solved.output.outofplane->modes) row.push_back(mode.omega_rad_s);
     omegas.push_back(row);
   }
   for (std::size_t i = 0; i < omegas[0].size(); ++i) {
-    const double order =
-        std::log2((omegas[0][i] - omegas[1][i]) / (omegas[1][i] - omegas[2][i]));
-    EXPECT_NEAR(order, 2.0, 0.1) << "mode " << (i % 10) + 1 << (i < 10 ? " in plane" : " out of plane");
+    const double order = std::log2((omegas[0][i] - omegas[1][i]) / (omegas[1][i] - omegas[2][i]));
+    EXPECT_NEAR(order, 2.0, 0.1) << "mode " << (i % 10) + 1
+                                 << (i < 10 ? " in plane" : " out of plane");
   }
 }
 
@@ -106,8 +110,9 @@ TEST(FeSolver, ObservedOrderIsReportedWhenAsked) {
   ASSERT_TRUE(solved.output.inplane.has_value());
   bool found = false;
   for (const auto& note : solved.output.inplane->summary.notes)
-    found = found || note.find("observed order of the unextrapolated frequencies from N = 200, 400, 800") !=
-                         std::string::npos;
+    found = found ||
+            note.find("observed order of the unextrapolated frequencies from N = 200, 400, 800") !=
+                std::string::npos;
   EXPECT_TRUE(found) << solved.output.inplane->summary.full_report();
 }
 
@@ -117,14 +122,15 @@ constexpr double kRelTolAxial = 1e-6;
 
 TEST(FeSolver, StraightBarHasAxialFrequenciesOfTheElasticRod) {
   const Solved solved = solve(straight_bar(), modes_request(20, 0), {.elements = 1000});
-  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.full_report();
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.full_report();
   const CableProperties& cable = solved.problem.cable;
   int axial = 0;
   for (const Mode& mode : solved.output.inplane->modes) {
     if (mode.normalised_by != "u") continue;
     ++axial;
-    const double exact = axial * kPi * std::sqrt(cable.axial_stiffness_n / cable.mass_kg_per_m) /
-                         cable.length_m;
+    const double exact =
+        axial * kPi * std::sqrt(cable.axial_stiffness_n / cable.mass_kg_per_m) / cable.length_m;
     EXPECT_LE(relative_error(mode.omega_rad_s, exact), kRelTolAxial)
         << "axial mode " << axial << ": " << mode.omega_rad_s << " vs " << exact;
   }
@@ -162,9 +168,10 @@ class IrvineTest : public ::testing::TestWithParam<double> {};
 TEST_P(IrvineTest, HorizontalShallowCableMatchesIrvine) {
   const double lambda2 = GetParam();
   constexpr int kModes = 6;
-  const Solved solved =
-      solve(make_taut_inclined_problem(0.01, 0.0, lambda2, 1.0), modes_request(kModes, 0), {.elements = 400});
-  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.full_report();
+  const Solved solved = solve(make_taut_inclined_problem(0.01, 0.0, lambda2, 1.0),
+                              modes_request(kModes, 0), {.elements = 400});
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.full_report();
   EXPECT_EQ(solved.output.inplane->proved_count_below_top, kModes);
   std::vector<double> expected = irvine_symmetric_kl(lambda2, 8.0 * kPi * kModes);
   for (int n = 1; n <= kModes; ++n) expected.push_back(2.0 * n * kPi);
@@ -173,38 +180,46 @@ TEST_P(IrvineTest, HorizontalShallowCableMatchesIrvine) {
     const double kl = mode.k_l_over_pi * kPi;
     const double reference = expected[static_cast<std::size_t>(mode.index) - 1];
     const double error = relative_error(kl, reference);
-    EXPECT_LE(error, kRelTolIrvine) << "lambda2 = " << lambda2 << ", mode " << mode.index << ": kL = "
-                                    << kl << " vs Irvine " << reference;
+    EXPECT_LE(error, kRelTolIrvine) << "lambda2 = " << lambda2 << ", mode " << mode.index
+                                    << ": kL = " << kl << " vs Irvine " << reference;
     RecordProperty("lambda2_" + std::to_string(lambda2) + "_mode_" + std::to_string(mode.index),
                    std::to_string(error));
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Lambda2, IrvineTest,
-                         ::testing::Values(1.0, 10.0, 4.0 * kPi * kPi - 1.0, 4.0 * kPi * kPi + 1.0,
-                                           100.0, 1000.0));
+INSTANTIATE_TEST_SUITE_P(
+    Lambda2,
+    IrvineTest,
+    ::testing::Values(1.0, 10.0, 4.0 * kPi * kPi - 1.0, 4.0 * kPi * kPi + 1.0, 100.0, 1000.0));
 
 // Gale (1976) Tables B-3 and B-4, printed to 0.01.
 constexpr double kGaleRounding = 0.005;
 
-void expect_gale_row(const std::vector<Mode>& modes, const std::vector<double>& printed, const char* what) {
+void expect_gale_row(const std::vector<Mode>& modes,
+                     const std::vector<double>& printed,
+                     const char* what) {
   ASSERT_EQ(modes.size(), printed.size());
   for (std::size_t i = 0; i < printed.size(); ++i) {
     const Mode& mode = modes[i];
-    EXPECT_NEAR(*mode.gale_ratio, printed[i], kGaleRounding + mode.relative_error_estimate * mode.omega_rad_s)
+    EXPECT_NEAR(*mode.gale_ratio, printed[i],
+                kGaleRounding + mode.relative_error_estimate * mode.omega_rad_s)
         << what << " mode " << i + 1;
   }
 }
 
 TEST(FeSolver, InextensibleCatenaryMatchesGaleRowsWithinPrintedRounding) {
   // B-3: h/b = 0, xi = -0.5..0.5 (sag parameter 0.8608).
-  const Solved inplane = solve(make_gale_xi_problem(-0.5, 0.5), modes_request(6, 0), {.elements = 800});
+  const Solved inplane =
+      solve(make_gale_xi_problem(-0.5, 0.5), modes_request(6, 0), {.elements = 800});
   ASSERT_TRUE(inplane.output.summary.is_usable()) << inplane.output.summary.full_report();
-  expect_gale_row(inplane.output.inplane->modes, {2.59, 4.23, 5.87, 7.40, 8.97, 10.49}, "B-3 in-plane");
+  expect_gale_row(inplane.output.inplane->modes, {2.59, 4.23, 5.87, 7.40, 8.97, 10.49},
+                  "B-3 in-plane");
   // B-4: h/b = 0, sag parameter 0.85 (xi = -0.547..0.547).
-  const Solved solved = solve(make_gale_sag_problem(0.0, 0.85), modes_request(0, 6), {.elements = 800});
+  const Solved solved =
+      solve(make_gale_sag_problem(0.0, 0.85), modes_request(0, 6), {.elements = 800});
   ASSERT_TRUE(solved.output.summary.is_usable()) << solved.output.summary.full_report();
-  expect_gale_row(solved.output.outofplane->modes, {1.51, 2.92, 4.36, 5.80, 7.24, 8.69}, "B-4 out-of-plane");
+  expect_gale_row(solved.output.outofplane->modes, {1.51, 2.92, 4.36, 5.80, 7.24, 8.69},
+                  "B-4 out-of-plane");
   bool penalty_stated = false;
   for (const auto& warning : solved.output.summary.warnings)
     penalty_stated = penalty_stated || warning.find("kappa") != std::string::npos;
@@ -237,7 +252,8 @@ class ModeCountTest : public ::testing::TestWithParam<CountCase> {};
 TEST_P(ModeCountTest, InertiaCountEqualsTheNumberOfReturnedModes) {
   constexpr int kModes = 8;
   const Solved solved = solve(GetParam().problem, modes_request(kModes, kModes), {.elements = 200});
-  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.full_report();
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.full_report();
   for (const auto* result : {&*solved.output.inplane, &*solved.output.outofplane}) {
     ASSERT_EQ(result->modes.size(), static_cast<std::size_t>(kModes));
     EXPECT_EQ(result->proved_count_below_top, kModes) << result->summary.full_report();
@@ -246,7 +262,9 @@ TEST_P(ModeCountTest, InertiaCountEqualsTheNumberOfReturnedModes) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ModeCountTest, ::testing::ValuesIn(count_cases()),
+INSTANTIATE_TEST_SUITE_P(Scenes,
+                         ModeCountTest,
+                         ::testing::ValuesIn(count_cases()),
                          [](const auto& test_info) { return test_info.param.name; });
 
 TEST(FeSolver, NearCrossoverBothModesOfTheVeeringPairAreFound) {
@@ -272,7 +290,8 @@ TEST(FeSolver, StraightBarShapesTensionAndModalMassAreTheStandingWaves) {
   request.tension = true;
   request.points = 51;
   const Solved solved = solve(straight_bar(), request, {.elements = 400});
-  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.full_report();
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.full_report();
   const CableProperties& cable = solved.problem.cable;
   int transverse = 0, axial = 0;
   for (const Mode& mode : solved.output.inplane->modes) {
@@ -283,16 +302,18 @@ TEST(FeSolver, StraightBarShapesTensionAndModalMassAreTheStandingWaves) {
     // The exact shape sin(n pi s / L), scaled like ours: to 1 at the station of largest amplitude
     // (the peak may fall between stations).
     Vector exact(mode.s_m.size());
-    for (Index j = 0; j < mode.s_m.size(); ++j) exact[j] = std::sin(n * kPi * mode.s_m[j] / cable.length_m);
+    for (Index j = 0; j < mode.s_m.size(); ++j)
+      exact[j] = std::sin(n * kPi * mode.s_m[j] / cable.length_m);
     const double peak = exact.cwiseAbs().maxCoeff();
     double max_error = 0.0;
     for (Index j = 0; j < mode.s_m.size(); ++j)
       max_error = std::max(max_error, std::abs(std::abs(along[j]) - std::abs(exact[j]) / peak));
     EXPECT_LE(max_error, kTolShape) << (is_axial ? "axial " : "transverse ") << n;
     EXPECT_LE(across.cwiseAbs().maxCoeff(), kTolShape);
-    // Modal mass of the scaled sin(n pi s / L) by the trapezoid rule on the stations: m L / 2 / peak^2
-    // (M = m here), to O(1/points^2) = 4e-4.
-    EXPECT_NEAR(mode.modal_mass_kg, 0.5 * cable.mass_kg_per_m * cable.length_m / (peak * peak), 1e-3);
+    // Modal mass of the scaled sin(n pi s / L) by the trapezoid rule on the stations: m L / 2 /
+    // peak^2 (M = m here), to O(1/points^2) = 4e-4.
+    EXPECT_NEAR(mode.modal_mass_kg, 0.5 * cable.mass_kg_per_m * cable.length_m / (peak * peak),
+                1e-3);
     if (is_axial) {
       const double tension = cable.axial_stiffness_n * n * kPi / cable.length_m / peak;
       EXPECT_LE(relative_error(mode.max_abs_tension_n, tension), kTolShape) << "axial " << n;
@@ -333,13 +354,15 @@ TEST(FeSolverOptions, RejectsBadValuesAndTooManyModes) {
   expect_invalid(run({.elements = 9}, 5, 0), "too few for 5 in-plane modes");
   expect_invalid(run({.elements = 9}, 0, 5), "too few for 5 out-of-plane modes");
   // The largest mode count the mesh resolves is accepted (dense path for tiny problems).
-  const SolverOutput tiny = solve_fe(problem, statics, groups, modes_request(4, 4), {.elements = 8});
+  const SolverOutput tiny =
+      solve_fe(problem, statics, groups, modes_request(4, 4), {.elements = 8});
   EXPECT_EQ(tiny.inplane->modes.size(), 4u);
   EXPECT_EQ(tiny.outofplane->modes.size(), 4u);
   EXPECT_EQ(tiny.summary.termination, Termination::Converged) << tiny.summary.full_report();
   // Too coarse for the N/2 error-estimate mesh and for an observed order: still a clean answer.
-  const SolverOutput coarse = solve_fe(problem, statics, groups, modes_request(2, 0),
-                                       {.elements = 4, .richardson = false, .observed_order = true});
+  const SolverOutput coarse =
+      solve_fe(problem, statics, groups, modes_request(2, 0),
+               {.elements = 4, .richardson = false, .observed_order = true});
   ASSERT_EQ(coarse.inplane->modes.size(), 2u);
   EXPECT_TRUE(std::isfinite(coarse.inplane->modes[0].omega_rad_s));
   EXPECT_EQ(coarse.inplane->modes[0].relative_error_estimate, -1.0);  // no estimate mesh
@@ -348,7 +371,8 @@ TEST(FeSolverOptions, RejectsBadValuesAndTooManyModes) {
 TEST(FeSolverOptions, RegistryKnobsAreValidated) {
   const SolverEntry* entry = find_solver("fe");
   ASSERT_NE(entry, nullptr);
-  EXPECT_NO_THROW(entry->validate_knobs({{"elements", 100L}, {"richardson", false}, {"kappa", 1e-5}}));
+  EXPECT_NO_THROW(
+      entry->validate_knobs({{"elements", 100L}, {"richardson", false}, {"kappa", 1e-5}}));
   expect_invalid([&] { entry->validate_knobs({{"elements", 1L}}); }, "[solvers.fe].elements");
   expect_invalid([&] { entry->validate_knobs({{"kappa", 0.0}}); }, "[solvers.fe].kappa");
   expect_invalid([&] { entry->validate_knobs({{"elemnts", 10L}}); }, "elemnts");
@@ -374,14 +398,16 @@ TEST(FeSolverOptions, AToleranceItCannotMeetNamesTheModesWhoseEstimateExceedsIt)
   FeSolverOptions options;
   options.tolerance = 1e-12;
   options.max_elements = options.elements;
-  const Solved solved = catena::testing::solve_problem(solve_fe, problem, modes_request(3, 0), options);
+  const Solved solved =
+      catena::testing::solve_problem(solve_fe, problem, modes_request(3, 0), options);
   const ModalResult& plane = *solved.output.inplane;
   EXPECT_EQ(plane.summary.termination, Termination::NoConvergence);
   EXPECT_DOUBLE_EQ(plane.summary.accuracy_target, 1e-12);
   EXPECT_EQ(plane.summary.missed_modes.size(), 3u);
   for (const Mode& mode : plane.modes) EXPECT_FALSE(mode.meets_target);
   options.tolerance = 0.0;  // none asked: converged as before
-  const Solved untargeted = catena::testing::solve_problem(solve_fe, problem, modes_request(3, 0), options);
+  const Solved untargeted =
+      catena::testing::solve_problem(solve_fe, problem, modes_request(3, 0), options);
   EXPECT_EQ(untargeted.output.summary.termination, Termination::Converged);
   EXPECT_TRUE(untargeted.output.summary.missed_modes.empty());
 }
@@ -395,20 +421,27 @@ TEST(FeSolverOptions, AToleranceRefinesTheMeshUntilEveryModeMeetsIt) {
   FeSolverOptions options;
   options.tolerance = 2e-9;
   const Solved solved = catena::testing::solve_problem(solve_fe, problem, request, options);
-  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.full_report();
-  const Solved exact = catena::testing::solve_problem(solve_shooting, problem, request, ShootingSolverOptions{});
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.full_report();
+  const Solved exact =
+      catena::testing::solve_problem(solve_shooting, problem, request, ShootingSolverOptions{});
   for (const auto* plane : {&*solved.output.inplane, &*solved.output.outofplane}) {
     EXPECT_TRUE(plane->summary.missed_modes.empty());
-    for (const Mode& mode : plane->modes) EXPECT_LE(mode.relative_error_estimate, 2e-9) << mode.index;
+    for (const Mode& mode : plane->modes)
+      EXPECT_LE(mode.relative_error_estimate, 2e-9) << mode.index;
   }
   const auto& notes = solved.output.inplane->summary.notes;
-  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
-                          [](const std::string& note) { return note.find("mesh refined") != std::string::npos; }));
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& note) {
+    return note.find("mesh refined") != std::string::npos;
+  }));
   for (std::size_t i = 0; i < 6; ++i) {
-    EXPECT_LE(relative_error(solved.output.inplane->modes[i].omega_rad_s, exact.output.inplane->modes[i].omega_rad_s),
-              2e-9 + 1.1e-9) << "in-plane mode " << i + 1;
+    EXPECT_LE(relative_error(solved.output.inplane->modes[i].omega_rad_s,
+                             exact.output.inplane->modes[i].omega_rad_s),
+              2e-9 + 1.1e-9)
+        << "in-plane mode " << i + 1;
     EXPECT_LE(relative_error(solved.output.outofplane->modes[i].omega_rad_s,
-                             exact.output.outofplane->modes[i].omega_rad_s), 2e-9 + 1.1e-9)
+                             exact.output.outofplane->modes[i].omega_rad_s),
+              2e-9 + 1.1e-9)
         << "out-of-plane mode " << i + 1;
   }
 }
@@ -423,17 +456,33 @@ TEST(FeSolverOptions, KnobTableKeepsTheSceneKnobs) {
   EXPECT_EQ(entry->knobs[3].name, "observed_order");
   EXPECT_EQ(entry->knobs[4].name, "tolerance");
   EXPECT_EQ(entry->knobs[5].name, "max_elements");
-  expect_invalid([&] { entry->validate_knobs({{"max_elements", 1L}}); }, "[solvers.fe].max_elements");
+  expect_invalid(
+      [&] {
+        entry->validate_knobs({{"max_elements", 1L}});
+      },
+      "[solvers.fe].max_elements");
   expect_invalid([&] { entry->validate_knobs({{"tolerance", -1e-9}}); }, "[solvers.fe].tolerance");
-  expect_invalid([&] { entry->validate_knobs({{"elements", 50'000'001L}}); }, "[solvers.fe].elements");
+  expect_invalid(
+      [&] {
+        entry->validate_knobs({{"elements", 50'000'001L}});
+      },
+      "[solvers.fe].elements");
   expect_invalid([&] { entry->validate_knobs({{"kappa", 0.02}}); }, "[solvers.fe].kappa");
   expect_invalid([&] { entry->validate_knobs({{"richardson", 1L}}); }, "[solvers.fe].richardson");
   // Typed-API options without a knob are still checked.
   const Solved solved = catena::testing::prepare(make_taut_inclined_problem(0.1, 0.0, 10.0, 1.0));
-  expect_invalid([&] { solve_fe(solved.problem, solved.statics, solved.groups, modes_request(1, 0),
-                                {.eigen_tolerance = 0.0}); }, "eigen_tolerance");
-  expect_invalid([&] { solve_fe(solved.problem, solved.statics, solved.groups, modes_request(1, 0),
-                                {.max_restarts = 0}); }, "max_restarts");
+  expect_invalid(
+      [&] {
+        solve_fe(solved.problem, solved.statics, solved.groups, modes_request(1, 0),
+                 {.eigen_tolerance = 0.0});
+      },
+      "eigen_tolerance");
+  expect_invalid(
+      [&] {
+        solve_fe(solved.problem, solved.statics, solved.groups, modes_request(1, 0),
+                 {.max_restarts = 0});
+      },
+      "max_restarts");
 }
 
 // Too few elements for the modes asked is bad input: it must reach the caller as InvalidInput
@@ -444,7 +493,11 @@ TEST(FeSolverOptions, TooFewElementsIsInvalidInputThroughTheRegistry) {
   const Solved solved = catena::testing::prepare(make_taut_inclined_problem(0.1, 0.0, 10.0, 1.0));
   const SolveRequest request = modes_request(0, 8);
   const SolveContext context{solved.problem, solved.statics, solved.groups, request};
-  expect_invalid([&] { run_solver(*entry, context, {{"elements", 5L}}); }, "too few for 8 out-of-plane modes");
+  expect_invalid(
+      [&] {
+        run_solver(*entry, context, {{"elements", 5L}});
+      },
+      "too few for 8 out-of-plane modes");
 }
 
 // Gale's xi = -0.5..0.5 with 400 in-plane modes on 400 elements (Richardson: 400 and 800) used to
@@ -460,16 +513,20 @@ TEST(FeSolverOptions, ModesBeyondWhatTheCoarsestMeshResolvesAreRefused) {
                                        std::pair{201, SolverKnobs{{"richardson", false}}}}) {
     const SolveRequest request = modes_request(inplane, 0);
     const SolveContext context{solved.problem, solved.statics, solved.groups, request};
-    expect_invalid([&] { run_solver(*entry, context, knobs); },
-                   "[solvers.fe].elements = 400: too few for " + std::to_string(inplane) + " in-plane modes");
+    expect_invalid(
+        [&] { run_solver(*entry, context, knobs); },
+        "[solvers.fe].elements = 400: too few for " + std::to_string(inplane) + " in-plane modes");
   }
-  const Solved largest = solve(make_gale_xi_problem(-0.5, 0.5), modes_request(200, 0), {.elements = 400});
-  ASSERT_EQ(largest.output.summary.termination, Termination::Converged) << largest.output.summary.full_report();
+  const Solved largest =
+      solve(make_gale_xi_problem(-0.5, 0.5), modes_request(200, 0), {.elements = 400});
+  ASSERT_EQ(largest.output.summary.termination, Termination::Converged)
+      << largest.output.summary.full_report();
   const ModalResult& modes = *largest.output.inplane;
   ASSERT_EQ(modes.modes.size(), 200u);
   EXPECT_EQ(modes.proved_count_below_top, 200);
   for (std::size_t i = 0; i < modes.modes.size(); ++i) {
-    EXPECT_GT(modes.modes[i].omega_rad_s, i ? modes.modes[i - 1].omega_rad_s : 0.0) << "mode " << i + 1;
+    EXPECT_GT(modes.modes[i].omega_rad_s, i ? modes.modes[i - 1].omega_rad_s : 0.0)
+        << "mode " << i + 1;
     EXPECT_GE(modes.modes[i].relative_error_estimate, 0.0) << "mode " << i + 1;
   }
 }
@@ -483,12 +540,14 @@ TEST(FeSolver, DeclinesAnInextensibleCableTooCloseToTautForItsPenalty) {
   problem.supports.b_m = Vec2(1.0 - 1e-12, 0.0);
   const Solved taut = solve(problem, modes_request(2, 2), {});
   EXPECT_EQ(taut.output.summary.termination, Termination::NotApplicable);
-  EXPECT_NE(taut.output.summary.message.find("too close to taut for the penalty"), std::string::npos)
+  EXPECT_NE(taut.output.summary.message.find("too close to taut for the penalty"),
+            std::string::npos)
       << taut.output.summary.message;
   EXPECT_FALSE(taut.output.inplane.has_value());
   problem.supports.b_m = Vec2(1.0 - 1e-3, 0.0);
   const Solved slack = solve(problem, modes_request(2, 2), {});
-  EXPECT_EQ(slack.output.summary.termination, Termination::Converged) << slack.output.summary.full_report();
+  EXPECT_EQ(slack.output.summary.termination, Termination::Converged)
+      << slack.output.summary.full_report();
 }
 
 // EA/T0 = lambda^2 / eps^2 = 1e8 on 8000 elements: a rounding floor of ~0.07 relative on mode 1.
@@ -503,7 +562,8 @@ TEST(FeSolver, AChainTooStiffForDoublePrecisionIsDeclinedBeforeAnyEigenSolve) {
   // The same chain with fewer elements is solved.
   const Solved coarse = solve(make_taut_inclined_problem(1e-3, 0.0, 1e2, 1.0), modes_request(2, 2),
                               {.elements = 200});
-  EXPECT_EQ(coarse.output.summary.termination, Termination::Converged) << coarse.output.summary.full_report();
+  EXPECT_EQ(coarse.output.summary.termination, Termination::Converged)
+      << coarse.output.summary.full_report();
 }
 
 }  // namespace

@@ -10,7 +10,9 @@
 namespace catena {
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 TEST(FeSummary, SecondsInMicrosecondsOrMilliseconds) {
   EXPECT_EQ(internal::format_seconds(12.34e-6), "12.3 us");
@@ -32,7 +34,8 @@ TEST(FeSummary, ResolutionNamesMeshesAndPenalties) {
   plan.inextensible = true;
   plan.kappas = {1e-6, 2e-6};
   plan.axial_stiffness_n = {5e6, 2.5e6};
-  EXPECT_TRUE(contains(internal::fe_resolution(plan), "no Richardson; penalty kappa = 1.0e-06 and 2.0e-06"));
+  EXPECT_TRUE(contains(internal::fe_resolution(plan),
+                       "no Richardson; penalty kappa = 1.0e-06 and 2.0e-06"));
   SolverSummary inextensible;
   internal::describe_fe_run(plan, inextensible);
   ASSERT_EQ(inextensible.warnings.size(), 1u);

@@ -2,13 +2,14 @@
 // Tests of the frobenius solver's scaled boundary matrix: its shape per plane, the column
 // scaling, the agreement of the three precisions, and its determinant's zeros at the frequencies
 // of a nearly straight string.
+#include "solvers/frobenius/frobenius_boundary.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "catena/core/types.hpp"
 #include "solvers/frobenius/frobenius_test_support.hpp"
-#include "solvers/frobenius/frobenius_boundary.hpp"
 
 namespace catena::internal {
 namespace {

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Tests of the frobenius solver's conjugate-point count: the number of natural frequencies below
 // omega, whatever the root scan found.
+#include "solvers/frobenius/frobenius_conjugate_points.hpp"
+
 #include <gtest/gtest.h>
 
 #include "solvers/frobenius/frobenius_test_support.hpp"
-#include "solvers/frobenius/frobenius_conjugate_points.hpp"
 
 namespace catena::internal {
 namespace {
@@ -18,7 +19,9 @@ TEST(FrobeniusConjugatePointsTest, CountsTheFrequenciesBelowOmega) {
   EXPECT_EQ(conjugate_point_count(Precision::Double, setup, 0.5 * found.roots[0].omega, 600), 0);
   for (std::size_t n = 0; n + 1 < 4; ++n) {
     const double between = 0.5 * (found.roots[n].omega + found.roots[n + 1].omega);
-    EXPECT_EQ(conjugate_point_count(Precision::Double, setup, between, 600), static_cast<int>(n) + 1) << n;
+    EXPECT_EQ(conjugate_point_count(Precision::Double, setup, between, 600),
+              static_cast<int>(n) + 1)
+        << n;
   }
   // The same count in long double.
   const double above_all = found.roots[3].omega * 1.01;
@@ -46,7 +49,8 @@ TEST(FrobeniusConjugatePointsTest, AScanThatMissedARootIsRepeatedFiner) {
   ASSERT_EQ(found.roots.size(), 3u);
   EXPECT_NEAR(found.roots[1].omega, second, 1e-10 * second);
   bool rescanned = false;
-  for (const auto& note : found.notes) rescanned = rescanned || note.find("rescanned") != std::string::npos;
+  for (const auto& note : found.notes)
+    rescanned = rescanned || note.find("rescanned") != std::string::npos;
   EXPECT_TRUE(rescanned);
 }
 

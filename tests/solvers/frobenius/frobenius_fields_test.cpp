@@ -2,14 +2,15 @@
 // Tests of the frobenius solver's fields: the null vector meets the boundary conditions, the
 // fields of a mode vanish at both ends, V = C^2 DU, and the out-of-plane mode n has n - 1
 // interior nodes (the Sturm check of the count).
+#include "solvers/frobenius/frobenius_fields.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "solvers/frobenius/frobenius_test_support.hpp"
-#include "solvers/frobenius/frobenius_fields.hpp"
 #include "solvers/frobenius/frobenius_root_scan.hpp"
+#include "solvers/frobenius/frobenius_test_support.hpp"
 
 namespace catena::internal {
 namespace {
@@ -27,7 +28,8 @@ TEST(FrobeniusFieldsTest, ModeFieldsVanishAtBothEnds) {
   const PlaneRoots found = find_frequencies(setup, 3, RootSettings{});
   ASSERT_EQ(found.roots.size(), 3u);
   for (const FoundRoot& root : found.roots) {
-    const auto values = mode_fields(Precision::LongDouble, setup, root.omega, sigmas_between(-0.6, 1.2, 101), true);
+    const auto values =
+        mode_fields(Precision::LongDouble, setup, root.omega, sigmas_between(-0.6, 1.2, 101), true);
     ASSERT_EQ(values.size(), 101u);
     double largest = 0.0;
     for (const auto& f : values) largest = std::max({largest, std::abs(f.u), std::abs(f.v)});
@@ -71,7 +73,8 @@ TEST(FrobeniusFieldsTest, OutOfPlaneModeNHasNMinusOneInteriorNodesAndIsNormalise
   for (std::size_t n = 0; n < 3; ++n) {
     Mode mode;
     mode.index = static_cast<int>(n) + 1;
-    EXPECT_EQ(add_mode_fields(mode, setup, found.roots[n].omega, Precision::Double, request, CableUnits{}),
+    EXPECT_EQ(add_mode_fields(mode, setup, found.roots[n].omega, Precision::Double, request,
+                              CableUnits{}),
               static_cast<int>(n));
     ASSERT_EQ(mode.v.size(), 201);
     EXPECT_NEAR(mode.v.cwiseAbs().maxCoeff(), 1.0, 1e-12);
@@ -89,7 +92,9 @@ TEST(FrobeniusFieldsTest, WithoutShapesOnlyTheMaximumTensionIsKept) {
   const ModeFieldRequest request{false, true, nullptr, &dense};
   Mode mode;
   mode.index = 1;
-  EXPECT_EQ(add_mode_fields(mode, setup, found.roots[0].omega, Precision::Double, request, CableUnits{}), -1);
+  EXPECT_EQ(
+      add_mode_fields(mode, setup, found.roots[0].omega, Precision::Double, request, CableUnits{}),
+      -1);
   EXPECT_EQ(mode.s_m.size(), 0);
   EXPECT_EQ(mode.tension_n.size(), 0);
   EXPECT_GT(mode.max_abs_tension_n, 0.0);

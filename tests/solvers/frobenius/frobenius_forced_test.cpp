@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Tests of the frobenius solver's forced response: the driven end's displacement in Gale's units
 // and the response's end conditions in each direction.
+#include "solvers/frobenius/frobenius_forced.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "solvers/frobenius/frobenius_test_support.hpp"
-#include "solvers/frobenius/frobenius_forced.hpp"
 #include "solvers/frobenius/frobenius_root_scan.hpp"
+#include "solvers/frobenius/frobenius_test_support.hpp"
 
 namespace catena::internal {
 namespace {
@@ -19,7 +20,8 @@ using catena::testing::frobenius_plane;
 FieldStations stations_between(double sigma1, double sigma2, int points) {
   FieldStations out;
   out.s_m = Vector::LinSpaced(points, 0.0, 1.0);
-  for (int i = 0; i < points; ++i) out.sigma.push_back(sigma1 + (sigma2 - sigma1) * i / (points - 1));
+  for (int i = 0; i < points; ++i)
+    out.sigma.push_back(sigma1 + (sigma2 - sigma1) * i / (points - 1));
   return out;
 }
 
@@ -84,7 +86,8 @@ TEST(FrobeniusForcedTest, OutOfPlaneResponseMeetsItsEndConditions) {
   forced.amplitude_m = 0.05;
   forced.omegas_rad_s = {1.1};
   ForcedWork work;
-  const auto responses = frobenius_forced_responses(base, forced, stations_between(-0.4, 1.3, 21), CableUnits{}, work);
+  const auto responses =
+      frobenius_forced_responses(base, forced, stations_between(-0.4, 1.3, 21), CableUnits{}, work);
   ASSERT_EQ(responses.size(), 1u);
   const ForcedResponse& r = responses.front();
   ASSERT_EQ(r.v.size(), 21);
@@ -128,8 +131,8 @@ TEST(FrobeniusForcedTest, HighFrequencyResponseIsFiniteAndNotAResonance) {
   const PlaneSetup base = frobenius_plane(true, -kGaleSigma, kGaleSigma);
   FieldStations stations = stations_between(-kGaleSigma, kGaleSigma, 201);
   ForcedWork work;
-  const auto responses =
-      frobenius_forced_responses(base, gale_tangential({40.0, 100.0}), stations, CableUnits{}, work);
+  const auto responses = frobenius_forced_responses(base, gale_tangential({40.0, 100.0}), stations,
+                                                    CableUnits{}, work);
   ASSERT_EQ(responses.size(), 2u);
   const double expected[] = {35.9645157, 224.385362};
   for (std::size_t i = 0; i < 2; ++i) {
@@ -145,15 +148,17 @@ TEST(FrobeniusForcedTest, HighFrequencyResponseIsFiniteAndNotAResonance) {
 }
 
 TEST(FrobeniusForcedTest, ForcingAtItsOwnNaturalFrequencyIsAResonanceAndNearItIsFlagged) {
-  // In-plane mode 1 of the Gale C-2 catenary, Omega = 1.33593302107 (the solver's own root, to 1e-13).
+  // In-plane mode 1 of the Gale C-2 catenary, Omega = 1.33593302107 (the solver's own root, to
+  // 1e-13).
   const PlaneSetup base = frobenius_plane(true, -kGaleSigma, kGaleSigma);
   const PlaneRoots found = find_frequencies(base, 1, RootSettings{});
   ASSERT_EQ(found.roots.size(), 1u);
   const double natural = found.roots[0].omega;
   EXPECT_NEAR(natural, 1.33593302107, 1e-10);
   ForcedWork work;
-  const auto responses = frobenius_forced_responses(base, gale_tangential({natural, natural * (1.0 + 7e-9)}),
-                                                    stations_between(-kGaleSigma, kGaleSigma, 51), CableUnits{}, work);
+  const auto responses =
+      frobenius_forced_responses(base, gale_tangential({natural, natural * (1.0 + 7e-9)}),
+                                 stations_between(-kGaleSigma, kGaleSigma, 51), CableUnits{}, work);
   ASSERT_EQ(responses.size(), 2u);
   EXPECT_TRUE(responses[0].at_resonance);
   EXPECT_NE(responses[0].diagnostic.find("resonance"), std::string::npos);
@@ -169,11 +174,13 @@ TEST(FrobeniusForcedTest, AFrequencyBeyondTheSeriesIsDeclinedWithAReasonNotCalle
   // Regression: at 1e9 the tension came back null without a word.
   const PlaneSetup base = frobenius_plane(true, -kGaleSigma, kGaleSigma);
   ForcedWork work;
-  const auto responses = frobenius_forced_responses(base, gale_tangential({1e9}),
-                                                    stations_between(-kGaleSigma, kGaleSigma, 11), CableUnits{}, work);
+  const auto responses =
+      frobenius_forced_responses(base, gale_tangential({1e9}),
+                                 stations_between(-kGaleSigma, kGaleSigma, 11), CableUnits{}, work);
   ASSERT_EQ(responses.size(), 1u);
   EXPECT_FALSE(responses[0].at_resonance);
-  EXPECT_NE(responses[0].diagnostic.find("beyond the frobenius series"), std::string::npos) << responses[0].diagnostic;
+  EXPECT_NE(responses[0].diagnostic.find("beyond the frobenius series"), std::string::npos)
+      << responses[0].diagnostic;
   EXPECT_GT(forced_centres_needed(base, 1e9), kForcedMaxCentres);
 }
 

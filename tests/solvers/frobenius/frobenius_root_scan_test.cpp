@@ -2,13 +2,14 @@
 // Tests of the frobenius solver's root finding: the Illinois refinement, the WKB mode spacing
 // that sets the scan grid, and the roots of a plane (each a sign change of the determinant, close
 // to the string frequencies for a nearly straight cable, ascending, with small error estimates).
+#include "solvers/frobenius/frobenius_root_scan.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "catena/core/types.hpp"
 #include "solvers/frobenius/frobenius_test_support.hpp"
-#include "solvers/frobenius/frobenius_root_scan.hpp"
 
 namespace catena::internal {
 namespace {
@@ -35,7 +36,8 @@ TEST(FrobeniusRootScanTest, RefineRootConvergesOnAFunctionThatDefeatsPlainRegula
 
 TEST(FrobeniusRootScanTest, WkbSpacingIsTheStringSpacingForANearlyStraightCable) {
   // C = 1 to 5e-5 on sigma in [-0.01, 0.01], mu = 4: pi / (sqrt(4) 0.02).
-  EXPECT_NEAR(wkb_mode_spacing(frobenius_plane(false, -0.01, 0.01, 4.0)), kPi / 0.04, 1e-4 * kPi / 0.04);
+  EXPECT_NEAR(wkb_mode_spacing(frobenius_plane(false, -0.01, 0.01, 4.0)), kPi / 0.04,
+              1e-4 * kPi / 0.04);
   // A deep cable has a larger tension C towards the ends, hence faster waves and a wider spacing.
   EXPECT_GT(wkb_mode_spacing(frobenius_plane(false, -2.0, 2.0)), kPi / 4.0);
 }
@@ -53,8 +55,10 @@ TEST(FrobeniusRootScanTest, OutOfPlaneRootsAreTheDeterminantsZerosNearTheStringF
     const double omega = found.roots[n].omega;
     EXPECT_NEAR(omega, (n + 1.0) * kPi / 0.02, 1e-4 * omega) << n;
     EXPECT_LE(found.roots[n].relative_error, 1e-11) << n;
-    const double below = scaled_determinant(Precision::LongDouble, setup, omega * (1.0 - 1e-9), work);
-    const double above = scaled_determinant(Precision::LongDouble, setup, omega * (1.0 + 1e-9), work);
+    const double below =
+        scaled_determinant(Precision::LongDouble, setup, omega * (1.0 - 1e-9), work);
+    const double above =
+        scaled_determinant(Precision::LongDouble, setup, omega * (1.0 + 1e-9), work);
     EXPECT_LT(below * above, 0.0) << n;
     if (n > 0) {
       EXPECT_GT(omega, found.roots[n - 1].omega);

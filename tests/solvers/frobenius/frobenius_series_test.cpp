@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Tests of the general Frobenius engine on ODEs with known series: Airy (ordinary point) and
 // Bessel (regular singular point, roots differing by an integer, and the logarithmic case).
+#include "solvers/frobenius/frobenius_series.hpp"
+
 #include <gtest/gtest.h>
 
 #include <boost/math/special_functions/airy.hpp>
@@ -11,7 +13,6 @@
 #include <cmath>
 
 #include "solvers/frobenius/frobenius_catenary.hpp"
-#include "solvers/frobenius/frobenius_series.hpp"
 #include "test_utils.hpp"
 
 namespace catena::internal {
@@ -24,7 +25,8 @@ PolynomialOde<double> airy_ode() { return PolynomialOde<double>{{{0.0, -1.0}, {}
 // x^2 y'' + x y' + (x^2 - nu^2) y = 0
 template <class Real>
 PolynomialOde<Real> bessel_ode(Real nu) {
-  return PolynomialOde<Real>{{{-nu * nu, Real(0), Real(1)}, {Real(0), Real(1)}, {Real(0), Real(0), Real(1)}}};
+  return PolynomialOde<Real>{
+      {{-nu * nu, Real(0), Real(1)}, {Real(0), Real(1)}, {Real(0), Real(0), Real(1)}}};
 }
 
 TEST(FrobeniusSeriesTest, AiryOrdinaryPointRootsAreZeroAndOne) {
@@ -51,7 +53,8 @@ TEST(FrobeniusSeriesTest, AiryFunctionsFromTheGeneratedRecurrence) {
     const double aip = ai0 * fv.derivative[1] + aip0 * gv.derivative[1];
     EXPECT_LT(std::abs(ai - boost::math::airy_ai(x)), 1e-14 * std::max(1.0, std::abs(ai))) << x;
     EXPECT_LT(std::abs(bi - boost::math::airy_bi(x)), 1e-14 * std::max(1.0, std::abs(bi))) << x;
-    EXPECT_LT(std::abs(aip - boost::math::airy_ai_prime(x)), 1e-14 * std::max(1.0, std::abs(aip))) << x;
+    EXPECT_LT(std::abs(aip - boost::math::airy_ai_prime(x)), 1e-14 * std::max(1.0, std::abs(aip)))
+        << x;
   }
 }
 
@@ -84,15 +87,18 @@ TEST(FrobeniusSeriesTest, BesselIndicialRootsAndSeries) {
     const double norm = 1.0 / (std::pow(2.0, nu) * std::tgamma(nu + 1.0));
     for (double x : {0.1, 1.0, 3.0, 6.0}) {
       const auto v = evaluate_series(series, x, 1, 0.5);
-      EXPECT_LT(std::abs(norm * v.derivative[0] - boost::math::cyl_bessel_j(nu, x)), 1e-14) << nu << " " << x;
-      EXPECT_LT(std::abs(norm * v.derivative[1] - boost::math::cyl_bessel_j_prime(nu, x)), 1e-14) << nu << " " << x;
+      EXPECT_LT(std::abs(norm * v.derivative[0] - boost::math::cyl_bessel_j(nu, x)), 1e-14)
+          << nu << " " << x;
+      EXPECT_LT(std::abs(norm * v.derivative[1] - boost::math::cyl_bessel_j_prime(nu, x)), 1e-14)
+          << nu << " " << x;
     }
     // The smaller root: J_{-nu}, including nu = 1/2 and 5/2 (roots differ by an integer, no log).
     const auto minus = frobenius_series(table, -nu, 60);
     const double norm_minus = 1.0 / (std::pow(2.0, -nu) * std::tgamma(1.0 - nu));
     for (double x : {0.5, 2.0, 5.0}) {
       const double value = norm_minus * evaluate_series(minus, x, 0, 0.5).derivative[0];
-      EXPECT_LT(std::abs(value - boost::math::cyl_bessel_j(-nu, x)), 1e-13 * std::max(1.0, std::abs(value)))
+      EXPECT_LT(std::abs(value - boost::math::cyl_bessel_j(-nu, x)),
+                1e-13 * std::max(1.0, std::abs(value)))
           << nu << " " << x;
     }
   }
@@ -102,7 +108,8 @@ TEST(FrobeniusSeriesTest, BesselIntegerOrderSmallerRootIsReportedAsLogarithmic) 
   const ShiftTable<double> table(bessel_ode(1.0));
   EXPECT_THROW(frobenius_series(table, -1.0, 20), std::domain_error);
   const auto j1 = frobenius_series(table, 1.0, 60);
-  EXPECT_LT(std::abs(0.5 * evaluate_series(j1, 2.0, 0, 0.5).derivative[0] - boost::math::cyl_bessel_j(1.0, 2.0)),
+  EXPECT_LT(std::abs(0.5 * evaluate_series(j1, 2.0, 0, 0.5).derivative[0] -
+                     boost::math::cyl_bessel_j(1.0, 2.0)),
             1e-15);
 }
 
@@ -163,7 +170,8 @@ TEST(FrobeniusSeriesTest, ValuesAloneEqualTheTrackedValues) {
     const auto tracked = evaluate_series(s, x, 3, 0.5L);
     const auto values = evaluate_series(s, x, 3, 0.5L, SeriesErrors::Skipped);
     for (std::size_t k = 0; k < 4; ++k) {
-      EXPECT_EQ(values.derivative[k], tracked.derivative[k]) << "x = " << static_cast<double>(x) << ", k = " << k;
+      EXPECT_EQ(values.derivative[k], tracked.derivative[k])
+          << "x = " << static_cast<double>(x) << ", k = " << k;
       EXPECT_EQ(values.largest_term[k], 0.0L);
       EXPECT_EQ(values.truncation[k], 0.0L);
     }

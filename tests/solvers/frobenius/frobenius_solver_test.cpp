@@ -3,6 +3,8 @@
 // direct integration of the equations in sigma (Boost.Odeint, no series), deep sag beyond the
 // thesis, mode properties (orthogonality, inextensibility, dynamic tension), forced response
 // boundary values, applicability and option checks.
+#include "catena/solvers/frobenius_solver.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -14,11 +16,10 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/csv_table.hpp"
-#include "catena/statics/problem_builders.hpp"
-#include "catena/solvers/frobenius_solver.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/common/solver_test_support.hpp"
 #include "test_utils.hpp"
 
@@ -30,14 +31,19 @@ using testing::relative_error;
 
 using Solved = catena::testing::SolvedProblem;
 
-Solved run(const Problem& problem, const SolveRequest& request, const FrobeniusSolverOptions& options = {}) {
+Solved run(const Problem& problem,
+           const SolveRequest& request,
+           const FrobeniusSolverOptions& options = {}) {
   return catena::testing::solve_problem(solve_frobenius, problem, request, options);
 }
 
-SolveRequest modes(int inplane, int outofplane) { return catena::testing::modes_request(inplane, outofplane); }
+SolveRequest modes(int inplane, int outofplane) {
+  return catena::testing::modes_request(inplane, outofplane);
+}
 
 // Direct integration in sigma of the inextensible equations (units a, H; C = sqrt(1 + s^2)):
-// u' = w/C^2, w' = phi - u/C^2, tau' = phi/C - W2 u, (C phi)' = -tau/C^2 - W2 w; state (u, w, phi, tau).
+// u' = w/C^2, w' = phi - u/C^2, tau' = phi/C - W2 u, (C phi)' = -tau/C^2 - W2 w; state (u, w, phi,
+// tau).
 using State4 = std::array<double, 4>;
 State4 integrate4(State4 y, double s1, double s2, double w2) {
   namespace odeint = boost::numeric::odeint;
@@ -48,8 +54,9 @@ State4 integrate4(State4 y, double s1, double s2, double w2) {
     dx[2] = (-x[3] / (C * C) - w2 * x[1] - (s / C) * x[2]) / C;
     dx[3] = x[2] / C - w2 * x[0];
   };
-  odeint::integrate_adaptive(odeint::make_controlled(1e-14, 1e-13, odeint::runge_kutta_fehlberg78<State4>()), rhs, y,
-                             s1, s2, (s2 - s1) / 200.0);
+  odeint::integrate_adaptive(
+      odeint::make_controlled(1e-14, 1e-13, odeint::runge_kutta_fehlberg78<State4>()), rhs, y, s1,
+      s2, (s2 - s1) / 200.0);
   return y;
 }
 
@@ -68,8 +75,9 @@ double outofplane_shooting_value(double s1, double s2, double omega) {
     dx[0] = x[1] / std::sqrt(1.0 + s * s);
     dx[1] = -w2 * x[0];
   };
-  odeint::integrate_adaptive(odeint::make_controlled(1e-14, 1e-13, odeint::runge_kutta_fehlberg78<State2>()), rhs, y,
-                             s1, s2, (s2 - s1) / 200.0);
+  odeint::integrate_adaptive(
+      odeint::make_controlled(1e-14, 1e-13, odeint::runge_kutta_fehlberg78<State2>()), rhs, y, s1,
+      s2, (s2 - s1) / 200.0);
   return y[0];
 }
 
@@ -94,10 +102,12 @@ TEST(FrobeniusSolverTest, OutOfPlaneMatchesGaleTableB4RowWithinPrintedRounding) 
   // h/b = 0, sag 0.90 (xi = +-0.340): printed 1.91, 3.74, 5.59, 7.44, 9.29, 11.15.
   const Solved s = run(make_gale_sag_problem(0.0, 0.90), modes(0, 6));
   ASSERT_TRUE(s.output.outofplane);
-  EXPECT_EQ(s.output.outofplane->summary.termination, Termination::Converged) << s.output.outofplane->summary.message;
+  EXPECT_EQ(s.output.outofplane->summary.termination, Termination::Converged)
+      << s.output.outofplane->summary.message;
   const std::vector<double> printed{1.91, 3.74, 5.59, 7.44, 9.29, 11.15};
   ASSERT_EQ(s.output.outofplane->modes.size(), 6u);
-  for (int k = 0; k < 6; ++k) EXPECT_NEAR(*s.output.outofplane->modes[k].gale_ratio, printed[k], 0.005) << k;
+  for (int k = 0; k < 6; ++k)
+    EXPECT_NEAR(*s.output.outofplane->modes[k].gale_ratio, printed[k], 0.005) << k;
   EXPECT_EQ(s.output.outofplane->proved_count_below_top, 6);
 }
 
@@ -115,7 +125,8 @@ TEST(FrobeniusSolverTest, InPlaneMatchesGaleTableB3RowsWithinPrintedRounding) {
     EXPECT_EQ(s.output.inplane->summary.termination, Termination::Converged);
     ASSERT_EQ(s.output.inplane->modes.size(), 6u);
     for (int k = 0; k < 6; ++k)
-      EXPECT_NEAR(*s.output.inplane->modes[k].gale_ratio, row.printed[k], 0.005) << row.h_over_b << " " << row.sag << " " << k;
+      EXPECT_NEAR(*s.output.inplane->modes[k].gale_ratio, row.printed[k], 0.005)
+          << row.h_over_b << " " << row.sag << " " << k;
   }
 }
 
@@ -123,21 +134,25 @@ TEST(FrobeniusSolverTest, AgreesWithDirectIntegrationInSigma) {
   const Problem problem = make_gale_xi_problem(-0.524, 1.116);
   const Solved s = run(problem, modes(6, 6));
   ASSERT_TRUE(s.output.inplane && s.output.outofplane);
-  EXPECT_EQ(s.output.inplane->summary.termination, Termination::Converged) << s.output.inplane->summary.message;
-  EXPECT_EQ(s.output.outofplane->summary.termination, Termination::Converged) << s.output.outofplane->summary.message;
+  EXPECT_EQ(s.output.inplane->summary.termination, Termination::Converged)
+      << s.output.inplane->summary.message;
+  EXPECT_EQ(s.output.outofplane->summary.termination, Termination::Converged)
+      << s.output.outofplane->summary.message;
   // Six of each plane, every one of them compared below.
   ASSERT_EQ(s.output.inplane->modes.size(), 6u);
   ASSERT_EQ(s.output.outofplane->modes.size(), 6u);
   const double s1 = s.groups.sigma1, s2 = s.groups.sigma2;
   for (const auto& mode : s.output.inplane->modes) {
     const double omega = *mode.gale_ratio;
-    const double reference = independent_root([&](double w) { return inplane_shooting_det(s1, s2, w); }, omega);
+    const double reference =
+        independent_root([&](double w) { return inplane_shooting_det(s1, s2, w); }, omega);
     EXPECT_LT(relative_error(omega, reference), 1e-10) << mode.index;
     EXPECT_LT(mode.relative_error_estimate, 1e-11);
   }
   for (const auto& mode : s.output.outofplane->modes) {
     const double omega = *mode.gale_ratio;
-    const double reference = independent_root([&](double w) { return outofplane_shooting_value(s1, s2, w); }, omega);
+    const double reference =
+        independent_root([&](double w) { return outofplane_shooting_value(s1, s2, w); }, omega);
     EXPECT_LT(relative_error(omega, reference), 1e-10) << mode.index;
   }
 }
@@ -149,12 +164,13 @@ TEST(FrobeniusSolverTest, DeepSagBeyondTheThesisReachesXiEight) {
   EXPECT_EQ(s.output.summary.termination, Termination::Converged) << s.output.summary.message;
   const double s1 = s.groups.sigma1, s2 = s.groups.sigma2;
   for (const auto& mode : s.output.outofplane->modes) {
-    const double reference =
-        independent_root([&](double w) { return outofplane_shooting_value(s1, s2, w); }, *mode.gale_ratio);
+    const double reference = independent_root(
+        [&](double w) { return outofplane_shooting_value(s1, s2, w); }, *mode.gale_ratio);
     EXPECT_LT(relative_error(*mode.gale_ratio, reference), 1e-10) << mode.index;
   }
   const auto& first = s.output.inplane->modes.front();
-  const double reference = independent_root([&](double w) { return inplane_shooting_det(s1, s2, w); }, *first.gale_ratio);
+  const double reference = independent_root(
+      [&](double w) { return inplane_shooting_det(s1, s2, w); }, *first.gale_ratio);
   EXPECT_LT(relative_error(*first.gale_ratio, reference), 1e-10);
 }
 
@@ -174,10 +190,12 @@ TEST(FrobeniusSolverTest, InPlaneModesAreOrthogonalInextensibleAndCarryTheDynami
       double cross = 0.0;
       for (Index k = 1; k < m[i].s_m.size(); ++k) {
         const double ds = m[i].s_m(k) - m[i].s_m(k - 1);
-        cross += 0.5 * ds * (m[i].u(k) * m[j].u(k) + m[i].w(k) * m[j].w(k) + m[i].u(k - 1) * m[j].u(k - 1) +
-                             m[i].w(k - 1) * m[j].w(k - 1));
+        cross += 0.5 * ds *
+                 (m[i].u(k) * m[j].u(k) + m[i].w(k) * m[j].w(k) + m[i].u(k - 1) * m[j].u(k - 1) +
+                  m[i].w(k - 1) * m[j].w(k - 1));
       }
-      EXPECT_LT(std::abs(cross) / std::sqrt(m[i].modal_mass_kg * m[j].modal_mass_kg), 1e-5) << i << " " << j;
+      EXPECT_LT(std::abs(cross) / std::sqrt(m[i].modal_mass_kg * m[j].modal_mass_kg), 1e-5)
+          << i << " " << j;
     }
   for (const auto& mode : m) {
     EXPECT_EQ(mode.normalised_by, "w");
@@ -199,11 +217,13 @@ TEST(FrobeniusSolverTest, InPlaneModesAreOrthogonalInextensibleAndCarryTheDynami
     const double s1 = s.groups.sigma1, s2 = s.groups.sigma2;
     const State4 ea = integrate4({0, 0, 1, 0}, s1, s2, omega * omega);
     const State4 eb = integrate4({0, 0, 0, 1}, s1, s2, omega * omega);
-    // (alpha, beta) with alpha ea + beta eb having u = 0 at s2 (w vanishes with it at the eigenvalue).
+    // (alpha, beta) with alpha ea + beta eb having u = 0 at s2 (w vanishes with it at the
+    // eigenvalue).
     const double alpha = eb[0], beta = -ea[0];
     Index peak = 0;
     mode.w.cwiseAbs().maxCoeff(&peak);
-    const double sigma_peak = s.statics.vertical_force_n(mode.s_m(peak)) / s.statics.horizontal_force_n();
+    const double sigma_peak =
+        s.statics.vertical_force_n(mode.s_m(peak)) / s.statics.horizontal_force_n();
     const State4 ya = integrate4({0, 0, 1, 0}, s1, sigma_peak, omega * omega);
     const State4 yb = integrate4({0, 0, 0, 1}, s1, sigma_peak, omega * omega);
     const double scale = mode.w(peak) / (a * (alpha * ya[1] + beta * yb[1]));
@@ -212,7 +232,8 @@ TEST(FrobeniusSolverTest, InPlaneModesAreOrthogonalInextensibleAndCarryTheDynami
       const State4 pa = integrate4({0, 0, 1, 0}, s1, sigma, omega * omega);
       const State4 pb = integrate4({0, 0, 0, 1}, s1, sigma, omega * omega);
       const double tau = scale * s.statics.horizontal_force_n() * (alpha * pa[3] + beta * pb[3]);
-      EXPECT_NEAR(mode.tension_n(k), tau, 1e-7 * std::max(1.0, std::abs(mode.max_abs_tension_n))) << mode.index << " " << k;
+      EXPECT_NEAR(mode.tension_n(k), tau, 1e-7 * std::max(1.0, std::abs(mode.max_abs_tension_n)))
+          << mode.index << " " << k;
     }
   }
 }
@@ -248,28 +269,32 @@ TEST(FrobeniusSolverTest, ShapesAndTensionAreFiniteAtTheApexStation) {
   request.points = 101;
   const Solved s = run(make_gale_xi_problem(-0.5, 0.5), request);
   for (const auto& mode : s.output.inplane->modes) {
-    EXPECT_TRUE(mode.u.allFinite() && mode.w.allFinite() && mode.tension_n.allFinite()) << mode.index;
+    EXPECT_TRUE(mode.u.allFinite() && mode.w.allFinite() && mode.tension_n.allFinite())
+        << mode.index;
     // Smooth through the apex: the second difference there continues its neighbours' (a kink or
     // a wrong value at sigma = 0 would make it jump).
     for (const Vector* f : {&mode.w, &mode.u, &mode.tension_n}) {
       const Vector& y = *f;
       const double d2_apex = y(51) - 2.0 * y(50) + y(49), d2_left = y(50) - 2.0 * y(49) + y(48),
                    d2_right = y(52) - 2.0 * y(51) + y(50);
-      EXPECT_NEAR(d2_apex, 0.5 * (d2_left + d2_right), 0.05 * (std::abs(d2_left) + std::abs(d2_right)) + 1e-9)
+      EXPECT_NEAR(d2_apex, 0.5 * (d2_left + d2_right),
+                  0.05 * (std::abs(d2_left) + std::abs(d2_right)) + 1e-9)
           << mode.index;
     }
   }
   // Alternating antisymmetric / symmetric normal displacement (first in-plane mode antisymmetric).
   for (const auto& mode : s.output.inplane->modes) {
     const double parity = mode.index % 2 == 1 ? -1.0 : 1.0;
-    for (Index k = 0; k < 50; ++k) EXPECT_NEAR(mode.w(100 - k), parity * mode.w(k), 1e-9) << mode.index;
+    for (Index k = 0; k < 50; ++k)
+      EXPECT_NEAR(mode.w(100 - k), parity * mode.w(k), 1e-9) << mode.index;
   }
   for (const auto& mode : s.output.outofplane->modes) EXPECT_TRUE(mode.v.allFinite());
   EXPECT_EQ(s.output.inplane->proved_count_below_top, 4);
 }
 
 TEST(FrobeniusSolverTest, NormalAndOutOfPlaneForcingMeetTheirEndConditions) {
-  for (const ForcingDirection direction : {ForcingDirection::Normal, ForcingDirection::OutOfPlane}) {
+  for (const ForcingDirection direction :
+       {ForcingDirection::Normal, ForcingDirection::OutOfPlane}) {
     SolveRequest request = modes(0, 0);
     request.points = 41;
     ForcedRequest forced;
@@ -304,7 +329,8 @@ TEST(FrobeniusSolverTest, RegistryEntryReadsKnobsAndRejectsUnknownOnes) {
   const SolveRequest request = modes(3, 3);
   const SolveContext context{problem, statics, groups, request};
   EXPECT_FALSE(frobenius_not_applicable_reason(problem, groups).has_value());
-  const SolverOutput output = run_solver(*entry, context, {{"tolerance", 1e-10}, {"max_terms", 300L}});
+  const SolverOutput output =
+      run_solver(*entry, context, {{"tolerance", 1e-10}, {"max_terms", 300L}});
   EXPECT_EQ(output.solver, "frobenius");
   EXPECT_EQ(output.summary.termination, Termination::Converged) << output.summary.message;
   ASSERT_TRUE(output.inplane && output.outofplane);
@@ -321,21 +347,25 @@ TEST(FrobeniusSolverTest, RegistryEntryReadsKnobsAndRejectsUnknownOnes) {
 // the end xi2 driven tangentially by 0.01 a. Rows near resonance (wf = 5.19, 5.23) are left out:
 // there the printed 3 digits depend on the 1976 frequency to 1e-4.
 TEST(FrobeniusSolverTest, ForcedMaxTensionMatchesGaleTableC2ShallowRows) {
-  const CsvTable table = read_csv_table(published_table("gale-1976-table-C2-forced-max-tension.csv"));
+  const CsvTable table =
+      read_csv_table(published_table("gale-1976-table-C2-forced-max-tension.csv"));
   const Problem problem = make_gale_sag_problem(0.0, 0.90);
   int compared = 0;
   for (std::size_t row = 0; row < table.rows.size(); ++row) {
-    if (std::abs(*table.number(row, "sag_param") - 0.90) > 1e-9 || *table.number(row, "h_over_b") != 0.0) continue;
+    if (std::abs(*table.number(row, "sag_param") - 0.90) > 1e-9 ||
+        *table.number(row, "h_over_b") != 0.0)
+      continue;
     const double wf = *table.number(row, "wf");
     if (wf > 5.1 && wf < 5.3) continue;
     SolveRequest request = modes(0, 0);
     request.points = 801;
     ForcedRequest forced;
-    forced.amplitude_m = 0.01;  // a = 1 m
+    forced.amplitude_m = 0.01;   // a = 1 m
     forced.omegas_rad_s = {wf};  // sqrt(g/a) = 1 rad/s
     request.forced = forced;
     const Solved s = run(problem, request);
-    EXPECT_NEAR(s.output.forced.front().max_abs_tension_n, *table.number(row, "tmax"), 0.0015) << wf;
+    EXPECT_NEAR(s.output.forced.front().max_abs_tension_n, *table.number(row, "tmax"), 0.0015)
+        << wf;
     ++compared;
   }
   EXPECT_EQ(compared, 15);
@@ -345,7 +375,8 @@ TEST(FrobeniusSolverTest, ForcedMaxTensionMatchesGaleTableC2ShallowRows) {
 // V, T are consistent. The three printed points xi <= -0.880 are not reproduced (V has the opposite
 // sign and T jumps to ~5 H): see the report; the direct-integration test above confirms our T.
 TEST(FrobeniusSolverTest, ForcedDistributionMatchesGaleTableC3WherePrintedValuesAreConsistent) {
-  const CsvTable table = read_csv_table(published_table("gale-1976-table-C3-forced-distribution.csv"));
+  const CsvTable table =
+      read_csv_table(published_table("gale-1976-table-C3-forced-distribution.csv"));
   SolveRequest request = modes(0, 0);
   request.points = 20001;
   ForcedRequest forced;
@@ -357,8 +388,10 @@ TEST(FrobeniusSolverTest, ForcedDistributionMatchesGaleTableC3WherePrintedValues
   int compared = 0;
   for (std::size_t row = 0; row < table.rows.size(); ++row) {
     const double xi = *table.number(row, "xi");
-    if (std::abs(*table.number(row, "wf") - 1.32) > 1e-9 || xi < -0.7 || std::abs(xi) > 1.38) continue;
-    const double position = (gale_sigma_from_xi(xi) - s.groups.sigma1) / (s.groups.sigma2 - s.groups.sigma1) * 20000.0;
+    if (std::abs(*table.number(row, "wf") - 1.32) > 1e-9 || xi < -0.7 || std::abs(xi) > 1.38)
+      continue;
+    const double position =
+        (gale_sigma_from_xi(xi) - s.groups.sigma1) / (s.groups.sigma2 - s.groups.sigma1) * 20000.0;
     const Index k = static_cast<Index>(std::lround(position));
     EXPECT_NEAR(r.u(k), *table.number(row, "U"), 0.0012) << xi;
     EXPECT_NEAR(r.w(k), *table.number(row, "V"), 0.0012) << xi;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Regression tests of the `shooting` solver's accuracy at its defaults (docs/explanation/methods/shooting.md,
-// "Accuracy over the suite"), on the two cases that once missed it:
+// Regression tests of the `shooting` solver's accuracy at its defaults
+// (docs/explanation/methods/shooting.md, "Accuracy over the suite"), on the two cases that once
+// missed it:
 //  - the mooring line of issue 12 (L = 1000 m, b = (700, 650) m): out-of-plane mode 1 came out
 //    2.4e-7 off, returned as converged, because Brent stopped on an exact zero of the continuous
 //    count and the midpoint of the remaining bracket was taken. Compared here with fe at N = 4000
@@ -34,7 +35,8 @@ double relative_difference(double a, double b) { return std::abs(a - b) / std::a
 
 TEST(ShootingAccuracy, MooringLineOutOfPlaneModesMatchFeAtHighResolution) {
   const Problem problem = mooring_line_700_650();
-  const auto shooting = solve_problem(solve_shooting, problem, modes_request(0, 6), ShootingSolverOptions{});
+  const auto shooting =
+      solve_problem(solve_shooting, problem, modes_request(0, 6), ShootingSolverOptions{});
   FeSolverOptions fine;
   fine.elements = 4000;
   const auto fe = solve_problem(solve_fe, problem, modes_request(0, 6), fine);
@@ -54,11 +56,13 @@ TEST(ShootingAccuracy, MooringLineOutOfPlaneModesMatchFeAtHighResolution) {
 
 TEST(ShootingAccuracy, TautCableAtEps1e5FirstInPlaneModeHoldsAtDefaults) {
   const Problem problem = make_taut_inclined_problem(1e-5, 30.0, 10.0, 0.8);
-  const auto defaults = solve_problem(solve_shooting, problem, modes_request(6, 0), ShootingSolverOptions{});
+  const auto defaults =
+      solve_problem(solve_shooting, problem, modes_request(6, 0), ShootingSolverOptions{});
   ShootingSolverOptions tight;
   tight.relative_tolerance = 1e-13;
   const auto reference = solve_problem(solve_shooting, problem, modes_request(6, 0), tight);
-  const auto model = solve_problem(solve_asymptotic, problem, modes_request(6, 0), AsymptoticSolverOptions{});
+  const auto model =
+      solve_problem(solve_asymptotic, problem, modes_request(6, 0), AsymptoticSolverOptions{});
   ASSERT_EQ(defaults.output.summary.termination, Termination::Converged)
       << defaults.output.summary.message;
   ASSERT_EQ(reference.output.summary.termination, Termination::Converged);
@@ -66,7 +70,8 @@ TEST(ShootingAccuracy, TautCableAtEps1e5FirstInPlaneModeHoldsAtDefaults) {
   const auto& ours = defaults.output.inplane->modes;
   for (std::size_t i = 0; i < ours.size(); ++i) {
     const double omega = ours[i].omega_rad_s;
-    EXPECT_LE(relative_difference(omega, reference.output.inplane->modes[i].omega_rad_s), kDefaultAccuracy)
+    EXPECT_LE(relative_difference(omega, reference.output.inplane->modes[i].omega_rad_s),
+              kDefaultAccuracy)
         << "mode " << i + 1;
     EXPECT_LE(relative_difference(omega, model.output.inplane->modes[i].omega_rad_s), 1e-8)
         << "mode " << i + 1;

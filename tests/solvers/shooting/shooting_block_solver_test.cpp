@@ -5,9 +5,9 @@
 #include "solvers/shooting/shooting_block_solver.hpp"
 
 #include <gtest/gtest.h>
+#include <sunmatrix/sunmatrix_dense.h>
 
 #include <Eigen/Dense>
-#include <sunmatrix/sunmatrix_dense.h>
 
 #include "solvers/shooting/shooting_sundials_handles.hpp"
 
@@ -47,7 +47,8 @@ TEST(ShootingBlockSolver, SolvesTheBlockLowerTriangularSystemLikeTheFullOne) {
     ASSERT_EQ(SUNLinSolSolve(solver.get(), A.get(), x.get(), b.get(), 0.0), 0);
     const Eigen::VectorXd want = M.fullPivLu().solve(rhs);
     const double scale = want.cwiseAbs().maxCoeff();
-    for (int i = 0; i < n; ++i) EXPECT_NEAR(x.data()[i], want[i], 1e-13 * scale) << "block " << block << ", row " << i;
+    for (int i = 0; i < n; ++i)
+      EXPECT_NEAR(x.data()[i], want[i], 1e-13 * scale) << "block " << block << ", row " << i;
   }
 }
 

@@ -32,7 +32,8 @@ TEST(ShootingCoefficients, TensionTangentAndNormalFollowTheLinearVerticalForce) 
     EXPECT_NEAR(k.tangent(s).dot(k.normal(s)), 0.0, 1e-15);
     EXPECT_NEAR(k.tangent(s).norm(), 1.0, 1e-15);
     // The normal is the tangent turned +90 degrees.
-    EXPECT_NEAR(k.tangent(s).x() * k.normal(s).y() - k.tangent(s).y() * k.normal(s).x(), 1.0, 1e-15);
+    EXPECT_NEAR(k.tangent(s).x() * k.normal(s).y() - k.tangent(s).y() * k.normal(s).x(), 1.0,
+                1e-15);
   }
 }
 
@@ -65,7 +66,8 @@ TEST(ShootingCoefficients, FromStaticsTakesTheCableAndTheLargerEndTension) {
   EXPECT_EQ(k.M, cable.normal_mass_kg_per_m());
   EXPECT_EQ(k.m, cable.mass_kg_per_m);
   EXPECT_DOUBLE_EQ(k.compliance, 1.0 / cable.axial_stiffness_n);
-  EXPECT_DOUBLE_EQ(k.t_ref, std::max(solved.statics.tension_n(0.0), solved.statics.tension_n(cable.length_m)));
+  EXPECT_DOUBLE_EQ(
+      k.t_ref, std::max(solved.statics.tension_n(0.0), solved.statics.tension_n(cable.length_m)));
   for (double s : {0.0, 0.5 * cable.length_m, cable.length_m}) {
     EXPECT_NEAR(k.tension(s), solved.statics.tension_n(s), 1e-9 * k.t_ref) << s;
   }

@@ -99,7 +99,8 @@ TEST(ShootingForced, ResonanceIsDecidedByTheResponsesOwnErrorEstimate) {
   const ShootingCoefficients k = testing::horizontal_string(1.0, 1.0, 4.0);
   const double natural = kPi / std::sqrt(1.25);
   const ForcedOutcome out = shooting_forced_responses(
-      k, drive(ForcingDirection::OutOfPlane, {natural, natural * (1.0 + 1e-9), 2.0}), kStations, tight());
+      k, drive(ForcingDirection::OutOfPlane, {natural, natural * (1.0 + 1e-9), 2.0}), kStations,
+      tight());
   ASSERT_EQ(out.responses.size(), 3u);
   EXPECT_TRUE(out.responses[0].at_resonance);
   const ForcedResponse& near = out.responses[1];

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Tests of the grounded run of a shot (src/solvers/shooting/shooting_grounded, docs/explanation/methods/
-// shooting.md "Seabed contact: the grounded run"):
+// Tests of the grounded run of a shot (src/solvers/shooting/shooting_grounded,
+// docs/explanation/methods/ shooting.md "Seabed contact: the grounded run"):
 //  - at constant tension each direction is a constant-coefficient pair with a closed form from
 //    (phi, F) = (0, 1): b sinh(q x) / q, cosh(q x) on a stiff foundation (growth up to e^17500,
 //    beyond the range of a double), b sin(q x) / q, cos(q x) above the foundation's cut-off: the
@@ -17,8 +17,8 @@
 
 #include "catena/core/types.hpp"
 #include "catena/solvers/shooting_solver.hpp"
-#include "solvers/shooting/shooting_integrator.hpp"
 #include "solvers/common/solver_test_support.hpp"
+#include "solvers/shooting/shooting_integrator.hpp"
 #include "test_utils.hpp"
 
 namespace catena::internal {
@@ -113,7 +113,8 @@ TEST(ShootingGrounded, CountWithFrictionFromAEqualsTheGeneralShotFromB) {
   const ShootingCoefficients k = ShootingCoefficients::from_statics(statics);
   ShootingSolverOptions options;
   const DimensionlessGroups groups = compute_dimensionless_groups(p, statics);
-  const SolverOutput out = solve_shooting(p, statics, groups, testing::modes_request(6, 6), options);
+  const SolverOutput out =
+      solve_shooting(p, statics, groups, testing::modes_request(6, 6), options);
   IntegratorSettings settings;
   for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
     const ModalResult& r = plane == Plane::InPlane ? *out.inplane : *out.outofplane;

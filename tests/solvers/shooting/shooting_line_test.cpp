@@ -12,8 +12,6 @@
 // The forced response of a line: tests/solvers/common/line_forced_test.cpp.
 #include <gtest/gtest.h>
 
-#include "test_utils.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -21,12 +19,13 @@
 
 #include "catena/solvers/shooting_solver.hpp"
 #include "solvers/common/solver_test_support.hpp"
+#include "test_utils.hpp"
 
 namespace catena {
 namespace {
 
-using catena::testing::split_into_segments;
 using catena::testing::omegas;
+using catena::testing::split_into_segments;
 
 // rtol 1e-12 gives the frequencies of smooth problems to a few 1e-12 (shooting_solver_test.cpp).
 constexpr double kRelTol = 1e-9;
@@ -38,8 +37,8 @@ ShootingSolverOptions tight() {
 }
 
 testing::SolvedProblem solve(const Problem& problem, int inplane, int outofplane) {
-  return testing::solve_problem(solve_shooting, problem, testing::modes_request(inplane, outofplane),
-                                tight());
+  return testing::solve_problem(solve_shooting, problem,
+                                testing::modes_request(inplane, outofplane), tight());
 }
 
 void expect_close(const std::vector<double>& got, const std::vector<double>& want, double tol) {
@@ -101,7 +100,8 @@ TEST(ShootingLine, SplitUniformCableReproducesOneSegment) {
   const testing::SolvedProblem reference = solve(uniform, 8, 8);
   for (int pieces : {2, 7}) {
     const testing::SolvedProblem line = solve(split_into_segments(uniform, pieces), 8, 8);
-    ASSERT_EQ(line.output.summary.termination, Termination::Converged) << line.output.summary.message;
+    ASSERT_EQ(line.output.summary.termination, Termination::Converged)
+        << line.output.summary.message;
     expect_close(omegas(*line.output.inplane), omegas(*reference.output.inplane), 1e-10);
     expect_close(omegas(*line.output.outofplane), omegas(*reference.output.outofplane), 1e-10);
   }
@@ -115,7 +115,8 @@ TEST(ShootingLine, SplitUniformCableHasTheCablesModalMasses) {
   request.points = 201;
   const Problem uniform = sagging_cable();
   const auto reference = testing::solve_problem(solve_shooting, uniform, request, tight());
-  const auto line = testing::solve_problem(solve_shooting, split_into_segments(uniform, 2), request, tight());
+  const auto line =
+      testing::solve_problem(solve_shooting, split_into_segments(uniform, 2), request, tight());
   for (const auto plane : {&SolverOutput::inplane, &SolverOutput::outofplane}) {
     const auto& want = (reference.output.*plane)->modes;
     const auto& got = (line.output.*plane)->modes;
@@ -131,7 +132,8 @@ TEST(ShootingLine, TwoMassesOutOfPlaneMatchTheMatchingCondition) {
   const double L1 = 4.0, L2 = 6.3, m1 = 1.0, m2 = 3.7;
   const Problem p = taut_line({{L1, 0.0, kEA, m1, 0.0}, {L2, 0.0, kEA, m2, 0.0}});
   const testing::SolvedProblem solved = solve(p, 0, 10);
-  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.message;
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.message;
   const double T = kEA * kStrain, c = (1.0 + kStrain) / T;
   // k1 cot(k1 L1) + k2 cot(k2 L2) = 0, multiplied by sin(k1 L1) sin(k2 L2) (no poles).
   auto f = [&](double w) {
@@ -169,7 +171,8 @@ TEST(ShootingLine, HeavyMidspanMassBothPlanes) {
   p.line.points = {point_mass(0.5 * L, P)};
   const int count = 12;
   const testing::SolvedProblem solved = solve(p, count, count);
-  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.message;
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.message;
   const double T_effective = kEA * kStrain / (1.0 + kStrain);
   const std::vector<double> string = midspan_mass_modes(L, m, T_effective, P, count);
   expect_close(omegas(*solved.output.outofplane), string, kRelTol);

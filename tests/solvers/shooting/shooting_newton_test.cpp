@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "catena/core/types.hpp"
-#include "solvers/shooting/shooting_conjugate_count.hpp"
 #include "shooting_test_strings.hpp"
+#include "solvers/shooting/shooting_conjugate_count.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
 #include "solvers/shooting/shooting_root_finder.hpp"
 
@@ -28,8 +28,8 @@ using Phase = std::function<double(double)>;
 // of the normalised determinant and of the end angle (central differences of the closed form,
 // accurate to ~1e-9 relative: far beyond what Newton needs).
 template <int D>
-Shot string_shot(const Phase& p, const double (&rates)[D], double omega, bool with_slope,
-                 long& shots) {
+Shot string_shot(
+    const Phase& p, const double (&rates)[D], double omega, bool with_slope, long& shots) {
   ++shots;
   Shot shot = testing::exact_string_frame<D>(p, omega, rates);
   if (with_slope && omega > 0.0) {
@@ -108,14 +108,15 @@ TEST(ShootingNewton, OutOfPlaneStringInFewerShotsThanBrent) {
     EXPECT_NEAR(newton.roots[n - 1].omega, exact, 2e-12 * exact) << n;
     // The estimate bounds the error (up to rounding).
     EXPECT_GE(newton.roots[n - 1].relative_error + 4e-16,
-              std::abs(newton.roots[n - 1].omega / exact - 1.0)) << n;
+              std::abs(newton.roots[n - 1].omega / exact - 1.0))
+        << n;
   }
   EXPECT_EQ(newton.proved, 20);
   EXPECT_LT(newton.shots, brent.shots);
   // Brent: 144 here (7.2 per mode at the tolerance 1e-12 on a spectrum the predictor follows
   // poorly); Newton from 1e-2 away needs three slope shots.
   EXPECT_LE(newton.shots, 6 * 20) << newton.tally.bracketing << " " << newton.tally.refining << " "
-                                   << newton.tally.estimate << " brent " << brent.shots;
+                                  << newton.tally.estimate << " brent " << brent.shots;
 }
 
 TEST(ShootingNewton, InPlanePairInFewerShotsThanBrent) {

@@ -62,8 +62,9 @@ RootFinderSettings settings(double tolerance) {
 TEST(ShootingRootFinder, ScalarStringModesAreFoundInOrderToTheTolerance) {
   long shots = 0;
   const double rates[1] = {1.0};
-  ShootingRootFinder finder([&](double omega, double) { return string_shot<1>(omega, rates, shots); },
-                            settings(1e-12), 2.3, true);
+  ShootingRootFinder finder(
+      [&](double omega, double) { return string_shot<1>(omega, rates, shots); }, settings(1e-12),
+      2.3, true);
   std::vector<std::string> warnings;
   const std::vector<Root> roots = finder.find(5, warnings);
   EXPECT_TRUE(warnings.empty());
@@ -86,8 +87,9 @@ TEST(ShootingRootFinder, DoubleRootIsOneRootOfMultiplicityTwo) {
   // (1 below, 3 above) finds the pair.
   long shots = 0;
   const double rates[2] = {1.0, 2.0};
-  ShootingRootFinder finder([&](double omega, double) { return string_shot<2>(omega, rates, shots); },
-                            settings(1e-10), 1.2, false);
+  ShootingRootFinder finder(
+      [&](double omega, double) { return string_shot<2>(omega, rates, shots); }, settings(1e-10),
+      1.2, false);
   std::vector<std::string> warnings;
   const std::vector<Root> roots = finder.find(4, warnings);
   EXPECT_TRUE(warnings.empty()) << warnings.front();
@@ -137,9 +139,10 @@ TEST(ShootingRootFinder, AWrongPhaseIsReShotAtTighterTolerance) {
 TEST(ShootingRootFinder, ShotsPerModeOnASmoothSpectrumAreBounded) {
   // 30 modes of a string with slowly changing spacing, one and two components (the second, a
   // slow string standing in for a cable's axial direction, has no root among them: the
-  // determinant-based search of the in-plane problem on a regular spectrum). From the fourth mode on the next root is predicted from the roots found
-  // (shooting_root_prediction.hpp): 5.5 (one component) and 6.7 (two) shots per mode, error
-  // estimates included; without the predictions the same search took 6.2 and 9.0.
+  // determinant-based search of the in-plane problem on a regular spectrum). From the fourth mode
+  // on the next root is predicted from the roots found (shooting_root_prediction.hpp): 5.5 (one
+  // component) and 6.7 (two) shots per mode, error estimates included; without the predictions the
+  // same search took 6.2 and 9.0.
   for (const bool scalar : {true, false}) {
     long shots = 0;
     const double one[1] = {1.0};

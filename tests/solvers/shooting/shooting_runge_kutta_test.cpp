@@ -84,7 +84,10 @@ TEST(ShootingRungeKutta, ObservedOrderIsSixAndTheErrorFollowsTheTolerance) {
 
 // Begins a stepper at x = 0 from `start` (its first components; the rest stay 0) at rtol 1e-10
 // on `controlled` components, with the stop point `stop`.
-void begin_at_zero(RungeKuttaStepper& stepper, std::initializer_list<double> start, int controlled, double stop) {
+void begin_at_zero(RungeKuttaStepper& stepper,
+                   std::initializer_list<double> start,
+                   int controlled,
+                   double stop) {
   int i = 0;
   for (double value : start) stepper.state()[i++] = value;
   stepper.set_tolerances(1e-10, Eigen::VectorXd::Constant(controlled, 1e-12));

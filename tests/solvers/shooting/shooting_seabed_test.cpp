@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Tests of the `shooting` solver on a line resting on the seabed (docs/explanation/methods/shooting.md,
-// "Seabed contact"):
+// Tests of the `shooting` solver on a line resting on the seabed
+// (docs/explanation/methods/shooting.md, "Seabed contact"):
 //  - a taut line lying entirely on the seabed: out of plane a string on an elastic foundation,
 //    w^2 = (T/(1+e) (n pi/L)^2 + k_t) / M; in plane the same with k_s merged with the bar on
 //    a foundation, w^2 = (EA (n pi/L)^2 + k_t) / m (L unstretched, k per unstretched metre);
@@ -19,9 +19,9 @@
 
 #include "catena/solvers/shooting_solver.hpp"
 #include "catena/statics/seabed_statics.hpp"
+#include "solvers/common/solver_test_support.hpp"
 #include "solvers/shooting/shooting_coefficients.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
-#include "solvers/common/solver_test_support.hpp"
 #include "test_utils.hpp"
 
 namespace catena {
@@ -35,7 +35,8 @@ ShootingSolverOptions tight() {
   return options;
 }
 
-// Also prints the largest relative difference (the numbers of docs/explanation/methods/shooting.md).
+// Also prints the largest relative difference (the numbers of
+// docs/explanation/methods/shooting.md).
 void expect_close(const std::vector<double>& got, const std::vector<double>& want, double tol) {
   ASSERT_EQ(got.size(), want.size());
   double worst = 0.0;
@@ -75,8 +76,11 @@ struct GroundedString {
   }
 };
 
-SolverOutput solve_with(const Problem& problem, const StaticSolution& statics, int inplane,
-                        int outofplane, const ShootingSolverOptions& options = tight()) {
+SolverOutput solve_with(const Problem& problem,
+                        const StaticSolution& statics,
+                        int inplane,
+                        int outofplane,
+                        const ShootingSolverOptions& options = tight()) {
   const DimensionlessGroups groups = compute_dimensionless_groups(problem, statics);
   return solve_shooting(problem, statics, groups, testing::modes_request(inplane, outofplane),
                         options);
@@ -87,7 +91,8 @@ TEST(ShootingSeabed, LineEntirelyOnTheSeabedIsAStringAndABarOnAFoundation) {
   const SolverOutput out = solve_with(g.problem(), g.statics(), 12, 12);
   ASSERT_EQ(out.outofplane->summary.termination, Termination::Converged)
       << out.outofplane->summary.message;
-  ASSERT_EQ(out.inplane->summary.termination, Termination::Converged) << out.inplane->summary.message;
+  ASSERT_EQ(out.inplane->summary.termination, Termination::Converged)
+      << out.inplane->summary.message;
   std::vector<double> outofplane, inplane;
   for (int n = 1; n <= 12; ++n) outofplane.push_back(g.string(n, g.k_t));
   for (int n = 1; n <= 12; ++n) {
@@ -154,7 +159,8 @@ TEST(ShootingSeabed, ForcedResponseOfALineOnTheSeabedIsExact) {
 // roots (and from either end) the count equals the number of exact frequencies below it.
 TEST(ShootingSeabed, ConjugatePointCountIsExactWithTheFoundation) {
   const GroundedString g;
-  const internal::ShootingCoefficients k = internal::ShootingCoefficients::from_statics(g.statics());
+  const internal::ShootingCoefficients k =
+      internal::ShootingCoefficients::from_statics(g.statics());
   internal::IntegratorSettings settings;
   settings.relative_tolerance = 1e-11;
   std::vector<double> inplane, outofplane;
@@ -171,13 +177,13 @@ TEST(ShootingSeabed, ConjugatePointCountIsExactWithTheFoundation) {
       const double omega = j == 0 ? 0.5 * exact[0] : 0.5 * (exact[j - 1] + exact[j]);
       for (bool from_b : {false, true}) {
         const internal::Shot shot = integrator.shoot(omega, 1.0, nullptr, from_b);
-        EXPECT_EQ(shot.count, j) << to_string(plane) << " at " << omega << " rad/s, from b " << from_b;
+        EXPECT_EQ(shot.count, j) << to_string(plane) << " at " << omega << " rad/s, from b "
+                                 << from_b;
         EXPECT_LT(shot.phase_defect, 1e-3);
       }
     }
   }
 }
-
 
 ModalResult plane_of(const SolverOutput& out, Plane plane) {
   return plane == Plane::InPlane ? *out.inplane : *out.outofplane;
@@ -207,9 +213,10 @@ TEST(ShootingSeabed, FortyPercentGroundedChainConvergesWithAndWithoutFriction) {
     EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& note) {
       return note.find("Winkler foundation (k_s = 3e+06") != std::string::npos;
     }));
-    std::printf("C_B = %g: in plane %.12g ... %.12g, out of plane %.12g ... %.12g rad/s\n", friction,
-                out.inplane->modes.front().omega_rad_s, out.inplane->modes.back().omega_rad_s,
-                out.outofplane->modes.front().omega_rad_s, out.outofplane->modes.back().omega_rad_s);
+    std::printf("C_B = %g: in plane %.12g ... %.12g, out of plane %.12g ... %.12g rad/s\n",
+                friction, out.inplane->modes.front().omega_rad_s,
+                out.inplane->modes.back().omega_rad_s, out.outofplane->modes.front().omega_rad_s,
+                out.outofplane->modes.back().omega_rad_s);
   }
 }
 
@@ -220,7 +227,8 @@ TEST(ShootingSeabed, TouchdownExactlyAtTheAnchorReproducesTheLineWithoutSeabed) 
   p.supports.b_m = p.supports.a_m + catenary_end_offset(p.cable, H, 0.0);
   Problem free = p;
   free.seabed.reset();
-  const SolverOutput free_out = solve_with(free, StaticSolution(p.cable, p.supports.a_m, H, 0.0), 8, 8);
+  const SolverOutput free_out =
+      solve_with(free, StaticSolution(p.cable, p.supports.a_m, H, 0.0), 8, 8);
   const SolverOutput free_solved = solve_with(free, solve_statics(free), 8, 8);
   // The seabed statics with L_g = 0 exactly, and as solved (L_g within rounding of 0).
   const StaticSolution at_a(p.as_line(), p.supports.a_m, *p.seabed, H, 0.0);
@@ -253,12 +261,14 @@ TEST(ShootingSeabed, InPlaneFrequenciesConvergeAsTheSeabedStiffens) {
   ShootingSolverOptions options;
   options.relative_tolerance = 1e-11;
   std::vector<std::vector<double>> table;
-  // The grounded run's cost does not grow with k_s (docs/explanation/methods/shooting.md, "Seabed contact").
+  // The grounded run's cost does not grow with k_s (docs/explanation/methods/shooting.md, "Seabed
+  // contact").
   const std::vector<double> stiffnesses{3e3, 3e4, 3e5, 3e6, 3e7, 3e8, 3e9};
   for (double k_s : stiffnesses) {
     const Problem p = testing::forty_percent_grounded_chain(0.0, k_s);
     const SolverOutput out = solve_with(p, solve_statics(p), 10, 0, options);
-    ASSERT_EQ(out.inplane->summary.termination, Termination::Converged) << out.inplane->summary.message;
+    ASSERT_EQ(out.inplane->summary.termination, Termination::Converged)
+        << out.inplane->summary.message;
     table.push_back(omegas(*out.inplane));
     std::printf("k_s = %.0e:", k_s);
     for (double w : table.back()) std::printf(" %.12f", w);

@@ -19,8 +19,8 @@
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/shooting_solver.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/common/mode_tools.hpp"
 #include "solvers/common/solver_test_support.hpp"
 #include "test_utils.hpp"

@@ -50,8 +50,11 @@ ShootingCoefficients line_with_point() {
 
 // The slope of the shot at omega against the central difference of the plain shots at
 // omega (1 -+ 1e-5).
-void expect_slopes_match(Plane plane, const ShootingCoefficients& k, double omega,
-                         double max_condition = 1e2, bool balance = false) {
+void expect_slopes_match(Plane plane,
+                         const ShootingCoefficients& k,
+                         double omega,
+                         double max_condition = 1e2,
+                         bool balance = false) {
   ShootingIntegrator integrator(plane, k, tight(max_condition, balance));
   const Shot shot = integrator.shoot(omega, 1.0, nullptr, false, true);
   ASSERT_TRUE(shot.has_slope);

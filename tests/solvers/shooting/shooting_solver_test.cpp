@@ -19,8 +19,8 @@
 #include <cstdio>
 
 #include "catena/core/error.hpp"
-#include "catena/statics/problem_builders.hpp"
 #include "catena/solvers/solver_registry.hpp"
+#include "catena/statics/problem_builders.hpp"
 #include "solvers/common/solver_test_support.hpp"
 #include "test_utils.hpp"
 
@@ -208,14 +208,17 @@ TEST(ShootingSolver, NearlyTautInextensibleCableHasTheStringFrequencies) {
   Problem problem;
   problem.supports.b_m = Vec2(1.0 - 1e-12, 0.0);
   const Solved solved = solve(problem, catena::testing::modes_request(2, 2));
-  ASSERT_EQ(solved.output.summary.termination, Termination::Converged) << solved.output.summary.full_report();
+  ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.full_report();
   const double H = solved.statics.horizontal_force_n();
   EXPECT_LT(relative_error(H, 204126.4030577217), 1e-9);
   const double string_omega = kPi * std::sqrt(H);
   EXPECT_LT(relative_error(solved.output.outofplane->modes[0].omega_rad_s, string_omega), 1e-9);
-  EXPECT_LT(relative_error(solved.output.outofplane->modes[1].omega_rad_s, 2.0 * string_omega), 1e-9);
+  EXPECT_LT(relative_error(solved.output.outofplane->modes[1].omega_rad_s, 2.0 * string_omega),
+            1e-9);
   EXPECT_LT(relative_error(solved.output.inplane->modes[0].omega_rad_s, 2.0 * string_omega), 1e-6);
-  EXPECT_LT(relative_error(solved.output.inplane->modes[1].omega_rad_s, 2.0 * 4.493409457909064 / kPi * string_omega),
+  EXPECT_LT(relative_error(solved.output.inplane->modes[1].omega_rad_s,
+                           2.0 * 4.493409457909064 / kPi * string_omega),
             1e-6);
 }
 
@@ -293,8 +296,8 @@ TEST(ShootingSolver, ThirtyModesAreCountedWithoutGaps) {
 }
 
 TEST(ShootingSolver, IntegratorFailureIsReportedNotThrown) {
-  // 100 integration steps cannot cover ten wavelengths at rtol 1e-12: a numerical outcome, reported in
-  // the summary with the reason, never an exception or a NaN.
+  // 100 integration steps cannot cover ten wavelengths at rtol 1e-12: a numerical outcome, reported
+  // in the summary with the reason, never an exception or a NaN.
   SolveRequest request;
   request.inplane_modes = 10;
   request.outofplane_modes = 10;

@@ -15,7 +15,8 @@ namespace catena::testing {
 
 /// A weightless horizontal cable of length L under tension T (t_ref = T), mass m = M = 1 kg/m;
 /// ea = 0 means inextensible. Tangent (1, 0), normal (0, 1).
-inline internal::ShootingCoefficients horizontal_string(double tension_n, double length_m,
+inline internal::ShootingCoefficients horizontal_string(double tension_n,
+                                                        double length_m,
                                                         double ea_n = 0.0) {
   internal::ShootingCoefficients k;
   k.length_m = length_m;
@@ -41,7 +42,8 @@ inline double transverse_wavenumber(const internal::ShootingCoefficients& k, dou
 /// String j's eigenfrequencies are where rates[j] phase(omega) is an integer.
 template <int D, typename Phase>
 internal::Shot exact_string_frame(const Phase& phase, double omega, const double (&rates)[D]) {
-  internal::FrameBlock<D> Phi = internal::FrameBlock<D>::Zero(), F = internal::FrameBlock<D>::Zero();
+  internal::FrameBlock<D> Phi = internal::FrameBlock<D>::Zero(),
+                          F = internal::FrameBlock<D>::Zero();
   double theta = internal::initial_phase(D);
   for (int j = 0; j < D; ++j) {
     const double x = kPi * rates[j] * phase(omega);

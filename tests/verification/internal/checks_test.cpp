@@ -2,6 +2,8 @@
 // The verification checks on hand-made results: each verdict (PASS, FAIL, SOURCE, SKIP) is reached
 // by the case that should reach it, and a check's record names scene, solvers, values and
 // tolerance. Expected outcomes follow from the rules in verification/tolerances.toml.
+#include "verification/internal/checks.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +13,6 @@
 #include "catena/io/tolerance_reader.hpp"
 #include "catena/statics/problem_builders.hpp"
 #include "catena/verification/independence.hpp"
-#include "verification/internal/checks.hpp"
 
 namespace catena {
 namespace {
@@ -25,7 +26,9 @@ SceneResult gale_result() {
   return result;
 }
 
-SolverOutput output_with(const std::string& solver, std::vector<double> omegas, double estimate,
+SolverOutput output_with(const std::string& solver,
+                         std::vector<double> omegas,
+                         double estimate,
                          bool with_shapes = false) {
   SolverOutput out;
   out.solver = solver;
@@ -67,14 +70,17 @@ const CheckResult* find(const std::vector<CheckResult>& checks, const std::strin
 
 // The verdict of the check, or nullopt when it was not made: comparing with an expected verdict
 // therefore also asserts that the check exists.
-std::optional<Verdict> verdict_of(const std::vector<CheckResult>& checks, const std::string& kind, int mode) {
+std::optional<Verdict> verdict_of(const std::vector<CheckResult>& checks,
+                                  const std::string& kind,
+                                  int mode) {
   const CheckResult* check = find(checks, kind, mode);
   return check ? std::optional(check->verdict) : std::nullopt;
 }
 
 TEST(Checks, FrequencyAgreementWithinEstimatesPasses) {
   SceneResult r = gale_result();
-  r.outputs = {output_with("fe", {1.0, 2.0}, 1e-9), output_with("shooting", {1.0 + 1e-9, 2.0}, 1e-10)};
+  r.outputs = {output_with("fe", {1.0, 2.0}, 1e-9),
+               output_with("shooting", {1.0 + 1e-9, 2.0}, 1e-10)};
   const auto checks = run_checks(r);
   ASSERT_NE(find(checks, "frequency", 1), nullptr);
   EXPECT_EQ(verdict_of(checks, "frequency", 1), Verdict::Pass);
@@ -84,7 +90,8 @@ TEST(Checks, FrequencyAgreementWithinEstimatesPasses) {
 
 TEST(Checks, APerturbedFrequencyFailsNamingEverything) {
   SceneResult r = gale_result();
-  r.outputs = {output_with("fe", {1.0, 2.0 * (1 + 1e-3)}, 1e-9), output_with("shooting", {1.0, 2.0}, 1e-10)};
+  r.outputs = {output_with("fe", {1.0, 2.0 * (1 + 1e-3)}, 1e-9),
+               output_with("shooting", {1.0, 2.0}, 1e-10)};
   const auto checks = run_checks(r);
   const CheckResult* c = find(checks, "frequency", 2);
   ASSERT_NE(c, nullptr);
@@ -133,7 +140,8 @@ TEST(Checks, PublishedValueContradictedByTwoAgreeingSolversIsASourceDiscrepancy)
   p.values = {2.00};
   p.decimals = 2;
   r.scene.published = {p};
-  r.outputs = {output_with("frobenius", {1.9149}, 1e-12), output_with("shooting", {1.9149 + 1e-10}, 1e-10)};
+  r.outputs = {output_with("frobenius", {1.9149}, 1e-12),
+               output_with("shooting", {1.9149 + 1e-10}, 1e-10)};
   const auto checks = run_checks(r);
   // Both solvers are designated (no `solvers` list): one published check each, each confirmed by
   // the other.
@@ -149,7 +157,8 @@ TEST(Checks, PublishedValueContradictedByTwoAgreeingSolversIsASourceDiscrepancy)
 
 TEST(Checks, IdenticalShapesPassMacAndOrthogonalModesPassOrthogonality) {
   SceneResult r = gale_result();
-  r.outputs = {output_with("fe", {1.0, 2.0, 3.0}, 1e-9, true), output_with("shooting", {1.0, 2.0, 3.0}, 1e-10, true)};
+  r.outputs = {output_with("fe", {1.0, 2.0, 3.0}, 1e-9, true),
+               output_with("shooting", {1.0, 2.0, 3.0}, 1e-10, true)};
   const auto checks = run_checks(r);
   EXPECT_EQ(verdict_of(checks, "mac", 3), Verdict::Pass);
   EXPECT_EQ(verdict_of(checks, "shape", 3), Verdict::Pass);
@@ -191,7 +200,8 @@ SolverOutput forced_output(const std::string& solver, double max_tension, double
 
 SolverOutput forced_diagnostic(const std::string& solver, bool at_resonance) {
   SolverOutput out = forced_output(solver, 0.0, -1.0);
-  out.forced[0].diagnostic = at_resonance ? "at a natural frequency: resonance" : "beyond the series; declined";
+  out.forced[0].diagnostic =
+      at_resonance ? "at a natural frequency: resonance" : "beyond the series; declined";
   out.forced[0].at_resonance = at_resonance;
   return out;
 }
@@ -229,8 +239,9 @@ TEST(Checks, AResonanceClaimAgainstAFlaggedNearResonanceResponseIsSkippedWithThe
   r.outputs = {forced_diagnostic("fe", true), near};
   const auto checks = run_checks(r);
   ASSERT_EQ(forced_verdicts(checks), std::vector<Verdict>{Verdict::Skipped});
-  EXPECT_NE(find(checks, "forced", 1)->detail.find("flags its finite response near a natural frequency"),
-            std::string::npos);
+  EXPECT_NE(
+      find(checks, "forced", 1)->detail.find("flags its finite response near a natural frequency"),
+      std::string::npos);
 }
 
 TEST(Checks, ADeclinedForcingFrequencyIsSkippedNotFailed) {
@@ -262,7 +273,8 @@ TEST(Checks, TheForcedToleranceGrowsWithTheConditionNumberNotWithEstimates) {
   ASSERT_NE(check, nullptr);
   EXPECT_EQ(check->verdict, Verdict::Fail) << check->detail;
   EXPECT_NEAR(check->tolerance, 1e-4 * 2.0 * 4e4 / 3e4, 1e-12);
-  EXPECT_NE(check->detail.find("x kappa 2.67 (from shooting's natural frequencies)"), std::string::npos)
+  EXPECT_NE(check->detail.find("x kappa 2.67 (from shooting's natural frequencies)"),
+            std::string::npos)
       << check->detail;
   // A large estimate does not widen it.
   const std::vector<CheckResult> wide_estimate = run_checks(conditioned_pair(200.0, 0.5));
@@ -294,11 +306,14 @@ TEST(Checks, WithoutNaturalFrequenciesAboveTheForcingTheForcedToleranceIsTheStri
   const CheckResult* check = find(checks, "forced", 1);
   EXPECT_EQ(check->verdict, Verdict::Fail) << check->detail;
   EXPECT_DOUBLE_EQ(check->tolerance, 1e-4);
-  EXPECT_NE(check->detail.find("conditioning unknown, the strictest: 2 modes only"), std::string::npos);
+  EXPECT_NE(check->detail.find("conditioning unknown, the strictest: 2 modes only"),
+            std::string::npos);
 }
 
-const CheckResult* find_compare(const std::vector<CheckResult>& checks, const std::string& kind,
-                                const std::string& compare, int mode) {
+const CheckResult* find_compare(const std::vector<CheckResult>& checks,
+                                const std::string& kind,
+                                const std::string& compare,
+                                int mode) {
   for (const auto& c : checks) {
     if (c.check == kind && c.compare == compare && c.mode == mode) return &c;
   }
@@ -308,7 +323,8 @@ const CheckResult* find_compare(const std::vector<CheckResult>& checks, const st
 TEST(Checks, AFrequencyToleranceIsTheSameWhateverTheEstimates) {
   // The old rule max(floor, factor * (est_a + est_b)) let a solver widen its own checks.
   SceneResult r = gale_result();
-  r.outputs = {output_with("fe", {1.0, 2.0}, 1e-9), output_with("shooting", {1.0, 2.0 * (1 + 1e-4)}, 1e-10)};
+  r.outputs = {output_with("fe", {1.0, 2.0}, 1e-9),
+               output_with("shooting", {1.0, 2.0 * (1 + 1e-4)}, 1e-10)};
   const CheckResult honest = *find(run_checks(r), "frequency", 2);
   r.outputs[0].inplane->modes[1].relative_error_estimate = 1e-2;
   r.outputs[1].inplane->modes[1].relative_error_estimate = 1e-2;
@@ -321,7 +337,8 @@ TEST(Checks, AFrequencyToleranceIsTheSameWhateverTheEstimates) {
 TEST(Checks, TwoExactSolversAskedForMoreAreHeldToTheSumOfTheirTargetsNeverMore) {
   // frobenius and shooting 1e-10 apart: inside the rule (1e-9) at the defaults ...
   SceneResult r = gale_result();
-  r.outputs = {output_with("shooting", {1.0, 2.0}, 1e-11), output_with("frobenius", {1.0, 2.0 * (1 + 1e-10)}, 1e-12)};
+  r.outputs = {output_with("shooting", {1.0, 2.0}, 1e-11),
+               output_with("frobenius", {1.0, 2.0 * (1 + 1e-10)}, 1e-12)};
   EXPECT_EQ(find(run_checks(r), "frequency", 2)->verdict, Verdict::Pass);
   // ... but a scene that asked shooting for 1.1e-11 and frobenius for 1e-11 holds them to 2.1e-11.
   r.outputs[0].inplane->summary.accuracy_target = 1.1e-11;
@@ -378,8 +395,10 @@ TEST(Checks, AnEstimateAtTheAccuracyTargetTheSolverReportsIsNotUninformative) {
   // shooting floors its estimate at its target 10 rtol + root_tolerance (1.1e-9): against a more
   // accurate reference that is 1e4 x its actual error, but it is what the solver promised.
   SceneResult r = gale_result();
-  r.outputs = {output_with("shooting", {1.0 * (1 + 1e-13)}, 1.1e-9), output_with("fe", {1.0}, 1e-13)};
-  EXPECT_EQ(find_compare(run_checks(r), "estimate", "shooting vs fe", 1)->verdict, Verdict::Warn);  // rtol 1e-10
+  r.outputs = {output_with("shooting", {1.0 * (1 + 1e-13)}, 1.1e-9),
+               output_with("fe", {1.0}, 1e-13)};
+  EXPECT_EQ(find_compare(run_checks(r), "estimate", "shooting vs fe", 1)->verdict,
+            Verdict::Warn);  // rtol 1e-10
   r.outputs[0].inplane->summary.accuracy_target = 1.1e-9;
   EXPECT_EQ(find_compare(run_checks(r), "estimate", "shooting vs fe", 1)->verdict, Verdict::Pass);
   // Above the reported target it still warns.
@@ -390,12 +409,14 @@ TEST(Checks, AnEstimateAtTheAccuracyTargetTheSolverReportsIsNotUninformative) {
 TEST(Checks, TheReferenceIsTheOtherExactSolverWithTheSmallestEstimate) {
   SceneResult r = gale_result();
   r.outputs = {output_with("fe", {1.0 + 1e-8}, 1e-7), output_with("shooting", {1.0 + 1e-10}, 1e-10),
-               output_with("frobenius", {1.0}, 1e-13), output_with("asymptotic", {1.0 + 1e-4}, 1e-3)};
+               output_with("frobenius", {1.0}, 1e-13),
+               output_with("asymptotic", {1.0 + 1e-4}, 1e-3)};
   const auto checks = run_checks(r);
   EXPECT_NE(find_compare(checks, "estimate", "fe vs frobenius", 1), nullptr);
   EXPECT_NE(find_compare(checks, "estimate", "frobenius vs shooting", 1), nullptr);  // not itself
   EXPECT_NE(find_compare(checks, "estimate", "asymptotic vs frobenius", 1), nullptr);
-  EXPECT_EQ(find_compare(checks, "estimate", "fe vs asymptotic", 1), nullptr);  // a model is no reference
+  EXPECT_EQ(find_compare(checks, "estimate", "fe vs asymptotic", 1),
+            nullptr);  // a model is no reference
   // A reference that did not converge is not one.
   r.outputs[2].summary.termination = Termination::NoConvergence;
   EXPECT_NE(find_compare(run_checks(r), "estimate", "fe vs shooting", 1), nullptr);
@@ -413,7 +434,8 @@ TEST(Checks, SolversSharingAComputationAreNotComparedOnIt) {
   const auto checks = internal::run_checks(r, builtin_tolerance_table(), FindingsTable{}, solvers);
   int skips = 0;
   for (const auto& c : checks) {
-    EXPECT_FALSE(c.check == "frequency" && c.verdict != Verdict::Skipped) << c.compare << " mode " << c.mode;
+    EXPECT_FALSE(c.check == "frequency" && c.verdict != Verdict::Skipped)
+        << c.compare << " mode " << c.mode;
     EXPECT_NE(c.check, "estimate") << "a solver sharing the path is no reference";
     if (c.check == "frequency" && c.verdict == Verdict::Skipped) {
       ++skips;
@@ -430,7 +452,8 @@ TEST(Checks, SolversSharingAComputationAreNotComparedOnIt) {
 
 TEST(Checks, BitIdenticalValuesOverAModeListAreFlaggedAsAnIdentityCheck) {
   SceneResult r = gale_result();
-  r.outputs = {output_with("fe", {1.25, 2.5, 3.75}, 1e-9), output_with("shooting", {1.25, 2.5, 3.75}, 1e-10)};
+  r.outputs = {output_with("fe", {1.25, 2.5, 3.75}, 1e-9),
+               output_with("shooting", {1.25, 2.5, 3.75}, 1e-10)};
   const auto checks = run_checks(r);
   const CheckResult* flag = find(checks, kIdentityCheck, 0);
   ASSERT_NE(flag, nullptr);

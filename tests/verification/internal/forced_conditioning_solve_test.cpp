@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
-// The mode counts of the forced conditioning's solve (src/verification/internal/forced_conditioning_solve.hpp):
-// skipping counts must not change the list the doubling keeps.
+// The mode counts of the forced conditioning's solve
+// (src/verification/internal/forced_conditioning_solve.hpp): skipping counts must not change the
+// list the doubling keeps.
+#include "verification/internal/forced_conditioning_solve.hpp"
+
 #include <gtest/gtest.h>
 
 #include <vector>
-
-#include "verification/internal/forced_conditioning_solve.hpp"
 
 namespace catena::internal {
 namespace {
@@ -23,17 +24,17 @@ TEST(ForcedConditioningSolve, TheDoublingStopsAtTheFirstCountWhoseTopModeLiesAbo
   EXPECT_EQ(doubling_count(modes, 8.0), 16u);  // the top mode must lie above, not at
   EXPECT_EQ(doubling_count(modes, 20.0), 32u);
   EXPECT_EQ(doubling_count(modes, 40.0), 64u);
-  EXPECT_EQ(doubling_count(modes, 100.0), 64u);  // none above: the largest tried
+  EXPECT_EQ(doubling_count(modes, 100.0), 64u);             // none above: the largest tried
   EXPECT_EQ(doubling_count(string_modes(40), 100.0), 40u);  // a solver that returned fewer
   EXPECT_EQ(doubling_count({}, 1.0), 0u);
 }
 
 TEST(ForcedConditioningSolve, TheNextCountSkipsOnlyCountsPredictedTooLow) {
-  EXPECT_EQ(next_count(8, 8.0, 10.0), 16);    // the doubling's own next count
-  EXPECT_EQ(next_count(8, 8.0, 30.0), 32);    // 16 modes would reach about 16
-  EXPECT_EQ(next_count(8, 8.0, 105.0), 64);   // never beyond the largest count
+  EXPECT_EQ(next_count(8, 8.0, 10.0), 16);   // the doubling's own next count
+  EXPECT_EQ(next_count(8, 8.0, 30.0), 32);   // 16 modes would reach about 16
+  EXPECT_EQ(next_count(8, 8.0, 105.0), 64);  // never beyond the largest count
   EXPECT_EQ(next_count(32, 32.0, 40.0), 64);
-  EXPECT_EQ(next_count(8, 0.0, 10.0), 16);    // no modes to extrapolate from
+  EXPECT_EQ(next_count(8, 0.0, 10.0), 16);  // no modes to extrapolate from
 }
 
 TEST(ForcedConditioningSolve, SkippingAndCuttingBackKeepsTheDoublingsList) {

@@ -3,8 +3,12 @@
 
 namespace catena_tools {
 
-double clamped_end_determinant(bool inplane, double s1, double s2, double omega,
-                               const SigmaOdeSettings& settings, bool normalised) {
+double clamped_end_determinant(bool inplane,
+                               double s1,
+                               double s2,
+                               double omega,
+                               const SigmaOdeSettings& settings,
+                               bool normalised) {
   const double w2 = omega * omega;
   if (inplane) {
     const auto a = integrate_sigma_ode<4>({0, 0, 1, 0}, s1, s2, w2, settings);
@@ -19,8 +23,12 @@ double clamped_end_determinant(bool inplane, double s1, double s2, double omega,
   return normalised ? a[0] / std::hypot(a[0], a[1]) : a[0];
 }
 
-double bisect_natural_frequency(bool inplane, double s1, double s2, double guess,
-                                double half_width, int iterations,
+double bisect_natural_frequency(bool inplane,
+                                double s1,
+                                double s2,
+                                double guess,
+                                double half_width,
+                                int iterations,
                                 const SigmaOdeSettings& settings) {
   double lo = guess * (1 - half_width);
   double hi = guess * (1 + half_width);

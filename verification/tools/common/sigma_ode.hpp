@@ -10,9 +10,8 @@
 //                                      (C phi)' = -tau / C^2 - mu W2 w,  tau' = phi / C - W2 u
 //   out of plane, state (v, p):        v' = p / C,  p' = -mu W2 v
 #include <array>
-#include <cmath>
-
 #include <boost/numeric/odeint.hpp>
+#include <cmath>
 
 namespace catena_tools {
 
@@ -27,8 +26,8 @@ struct SigmaOdeSettings {
 
 /// Integrates the in-plane (N = 4) or out-of-plane (N = 2) system from s1 to s2 at Omega^2 = w2.
 template <int N>
-std::array<double, N> integrate_sigma_ode(std::array<double, N> y, double s1, double s2, double w2,
-                                          const SigmaOdeSettings& settings) {
+std::array<double, N> integrate_sigma_ode(
+    std::array<double, N> y, double s1, double s2, double w2, const SigmaOdeSettings& settings) {
   static_assert(N == 2 || N == 4, "out of plane (2) or in plane (4)");
   namespace odeint = boost::numeric::odeint;
   const double mu = settings.mu;
@@ -55,13 +54,21 @@ std::array<double, N> integrate_sigma_ode(std::array<double, N> y, double s1, do
 /// plane det[u, w](s2) of the two solutions started with phi = 1 and tau = 1; out of plane v(s2).
 /// Zero at a natural frequency. `normalised` divides by the norms of the end states, so that
 /// the value stays O(1) over a scan.
-double clamped_end_determinant(bool inplane, double s1, double s2, double omega,
-                               const SigmaOdeSettings& settings, bool normalised = false);
+double clamped_end_determinant(bool inplane,
+                               double s1,
+                               double s2,
+                               double omega,
+                               const SigmaOdeSettings& settings,
+                               bool normalised = false);
 
 /// A natural frequency by bisection of clamped_end_determinant on [guess (1 - half_width),
 /// guess (1 + half_width)]; NaN when the interval does not bracket a sign change.
-double bisect_natural_frequency(bool inplane, double s1, double s2, double guess,
-                                double half_width, int iterations,
+double bisect_natural_frequency(bool inplane,
+                                double s1,
+                                double s2,
+                                double guess,
+                                double half_width,
+                                int iterations,
                                 const SigmaOdeSettings& settings);
 
 }  // namespace catena_tools
