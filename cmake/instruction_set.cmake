@@ -4,14 +4,16 @@
 # work on two doubles at a time without fused multiply-add. With AVX2 and FMA (x86-64-v3: every
 # x86-64 processor since about 2015) fe's solve at N = 1000 runs about 1.5 times faster.
 #
-# CATENA_ARCH: AUTO uses x86-64-v3 when the compiler accepts it and the build machine runs it (the
-# binaries then need such a processor); OFF keeps the compiler's default; any other value is
-# passed to -march (e.g. native). The flag applies to every target of the build: Eigen's alignment
+# CATENA_ARCH: OFF, the default, keeps the compiler's default (baseline x86-64 on Debian), so that
+# an installed binary runs on any x86-64 processor; AUTO uses x86-64-v3 when the compiler accepts
+# it and the build machine runs it (the binaries then need such a processor: SIGILL elsewhere);
+# any other value is passed to -march (e.g. native). The cost of the portable default is measured
+# in benchmarks/README.md. The flag applies to every target of the build: Eigen's alignment
 # of fixed-size types depends on it, so all translation units must agree.
 #
 # Results depend on the instruction set in the last bits (fused multiply-add rounds once where a
 # multiply then an add rounds twice); build_info records the choice and reports print it.
-set(CATENA_ARCH AUTO CACHE STRING "Instruction set: AUTO (x86-64-v3 when available), OFF, or a -march value")
+set(CATENA_ARCH OFF CACHE STRING "Instruction set: OFF (portable, the default), AUTO (x86-64-v3 when available), or a -march value")
 
 function(catena_instruction_set out)
   if(CATENA_ARCH STREQUAL "OFF")
