@@ -13,6 +13,7 @@
 #include "catena/core/error.hpp"
 #include "catena/core/version.hpp"
 #include "catena/io/file_access.hpp"
+#include "catena/solvers/solver_registry.hpp"
 #include "io/internal/check_table.hpp"
 #include "io/internal/json_records.hpp"
 #include "io/internal/results_keys.hpp"
@@ -384,6 +385,16 @@ json scene_json(const SceneResult& result, ReasonList& reasons) {
   return out;
 }
 
+// The accuracy target of each solver that states one, at its default knobs (a scene's knobs may
+// set another: frequency_accuracy_target, catena/verification/mutation.hpp).
+json default_accuracy_targets() {
+  json out = json::object();
+  for (const SolverEntry& entry : solver_registry()) {
+    if (entry.accuracy_target) out[entry.name] = entry.accuracy_target({});
+  }
+  return out;
+}
+
 json mutation_json(const MutationRun& run) {
   json tallies = json::array();
   for (const auto& [what, tally] : run.tallies()) {
@@ -424,7 +435,7 @@ json mutation_json(const MutationRun& run) {
           {key::frequency_factor, kFrequencyMutationFactor},
           {key::shape_factor, kShapeMutationFactor},
           {key::forced_tension_relative, kForcedTensionMutation},
-          {key::fe_accuracy_target, kFeAccuracyTarget},
+          {key::default_accuracy_targets, default_accuracy_targets()},
           {key::exact_with_witness, {{key::made, exact.made}, {key::caught, exact.caught}}},
           {key::exact_beyond_estimate, {{key::made, beyond.made}, {key::caught, beyond.caught}}},
           {key::tallies, tallies},

@@ -6,12 +6,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "catena/solvers/solver_registry.hpp"
+
 namespace catena {
 namespace {
-
-// The exact solvers, in the order that breaks ties (shooting integrates the ODE to its rtol; fe
-// extrapolates a discretisation).
-constexpr const char* kReferenceSolvers[] = {"shooting", "fe"};
 
 const ModalResult* plane_result(const SolverOutput& output, Plane plane) {
   const auto& result = plane == Plane::InPlane ? output.inplane : output.outofplane;
@@ -60,7 +58,9 @@ std::optional<CertifiedReference> certified_reference(const std::vector<SolverOu
   const ModalResult* other_result = nullptr;
   double best_estimate = INFINITY;
   std::vector<std::string> reports;
-  for (const char* name : kReferenceSolvers) {
+  // The solvers that may certify a reference, most accurate at their defaults first: the order
+  // breaks ties (SolverEntry::certifies_references).
+  for (const std::string& name : reference_solvers()) {
     const auto output = std::find_if(outputs.begin(), outputs.end(),
                                      [&](const SolverOutput& o) { return o.solver == name; });
     const ModalResult* result = output == outputs.end() ? nullptr : plane_result(*output, plane);

@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <mutex>
 #include <set>
 
@@ -26,46 +25,17 @@ std::string to_string(MutatedQuantity quantity) {
   return "?";
 }
 
-bool is_exact_solver(const std::string& solver) {
-  return solver == "fe" || solver == "shooting" || solver == "frobenius";
-}
-
-namespace {
-
-// A real knob as the scene sets it, else the solver's documented default; 0 when neither.
-double real_knob(const std::string& solver, const SolverKnobs& knobs, const std::string& name) {
-  if (const auto it = knobs.find(name); it != knobs.end()) {
-    if (const double* value = std::get_if<double>(&it->second)) return *value;
-    if (const long* value = std::get_if<long>(&it->second)) return static_cast<double>(*value);
-  }
-  if (const SolverEntry* entry = find_solver(solver)) {
-    for (const auto& spec : entry->knobs) {
-      if (spec.name == name) return std::strtod(spec.default_value.c_str(), nullptr);
-    }
-  }
-  return 0.0;
-}
-
-}  // namespace
-
 double frequency_accuracy_target(const std::string& solver,
                                  const SolverKnobs& knobs,
                                  const Mode& mode) {
-  // The exact solvers' own accuracy targets (SolverSummary::accuracy_target,
-  // docs/reference/verdicts.md, "Declared misses"): what each promises on every mode it does not
-  // list as missed.
-  if (solver == "shooting") {
-    const double rtol = real_knob(solver, knobs, "rtol");
-    const double root = real_knob(solver, knobs, "root_tolerance");  // 0: the same as rtol
-    return 10.0 * rtol + (root > 0.0 ? root : rtol);
-  }
-  if (solver == "frobenius") return 10.0 * real_knob(solver, knobs, "tolerance");
-  if (solver == "fe") {
-    const double asked = real_knob(solver, knobs, "tolerance");
-    return asked > 0.0 ? asked : kFeAccuracyTarget;
-  }
-  // The analytic models: their accuracy is their model error, which their estimate states.
-  return std::max(0.0, mode.relative_error_estimate);
+  const SolverEntry* entry = find_solver(solver);
+  if (!entry) return 0.0;
+  // An exact solver's own promise (the function its summaries' accuracy_target comes from,
+  // docs/reference/verdicts.md, "Declared misses"); a model's accuracy is its model error, which
+  // its estimate states.
+  if (entry->accuracy_target) return entry->accuracy_target(knobs);
+  if (entry->kind == SolverKind::Model) return std::max(0.0, mode.relative_error_estimate);
+  return 0.0;
 }
 
 namespace {

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "catena/core/error.hpp"
+#include "catena/solvers/solver_registry.hpp"
 #include "catena/verification/certified_reference.hpp"
 #include "catena/verification/scene_runner.hpp"
 
@@ -46,7 +47,7 @@ Scene reference_scene(Scene scene, const std::vector<ExternalMode>& results) {
   request.points = static_cast<int>(
       std::min<long>(kReferenceShapePoints, kMaxShapeValues / std::max(modes, 1L)));
   std::map<std::string, SolverKnobs> solvers;
-  for (const char* name : {"shooting", "fe"})
+  for (const std::string& name : reference_solvers())  // the certified reference's candidates
     solvers[name] = scene.solvers.count(name) ? scene.solvers.at(name) : SolverKnobs{};
   scene.solvers = solvers;
   return scene;

@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: MIT
 // ToleranceTable::find: the first rule that matches check, solver pair (either order, "*"), scene
-// glob and tag wins.
+// glob and tag wins; the table's [[solver]] families and fe's default accuracy agree with the
+// solver registry.
 #include "catena/verification/tolerance_table.hpp"
 
 #include <gtest/gtest.h>
+
+#include "catena/io/tolerance_reader.hpp"
+#include "catena/solvers/solver_registry.hpp"
 
 namespace catena {
 namespace {
@@ -65,6 +69,21 @@ TEST(ToleranceTable, FindsASolverDeclarationByName) {
   ASSERT_NE(table.solver("fe"), nullptr);
   EXPECT_EQ(table.solver("fe")->accuracy, 1e-6);
   EXPECT_EQ(table.solver("shooting"), nullptr);
+}
+
+// verification/tolerances.toml declares each solver's family (exact or model) for the estimate
+// check, and the registry declares its kind for everything else: one must not drift from the
+// other. The same for the accuracy a solver asked for none is held to (fe: 1e-6).
+TEST(ToleranceTable, TheBuiltinSolverDeclarationsAgreeWithTheRegistry) {
+  const ToleranceTable table = builtin_tolerance_table();
+  for (const SolverEntry& entry : solver_registry()) {
+    SCOPED_TRACE(entry.name);
+    const SolverAccuracy* declared = table.solver(entry.name);
+    ASSERT_NE(declared, nullptr);
+    EXPECT_EQ(declared->exact, entry.kind == SolverKind::Exact);
+    if (entry.accuracy_target && declared->accuracy_knob.empty())
+      EXPECT_DOUBLE_EQ(declared->accuracy, entry.accuracy_target({}));
+  }
 }
 
 }  // namespace

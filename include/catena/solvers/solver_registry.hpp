@@ -58,7 +58,24 @@ struct KnobSpec {
   std::string valid;
 };
 
-/// One solver as the harness sees it.
+/// What a solver solves, as the verification harness needs to know it
+/// (docs/reference/verdicts.md, "Solver roles").
+enum class SolverKind {
+  /// The exact linear equations of the cable (fe, shooting, frobenius): its error is numerical,
+  /// bounded by the accuracy it was asked for (SolverEntry::accuracy_target). Two exact solvers
+  /// witness each other: the mutation score counts a mutation of one where another ran.
+  Exact,
+  /// An approximate model (asymptotic, airy): its error is the model's, which each mode's
+  /// relative_error_estimate states; it is measured against the exact solvers (the report's
+  /// "Model error" section), never used as a reference.
+  Model
+};
+
+/// One solver as the harness sees it. Its roles (kind, certifies_references,
+/// all_modes_at_once, accuracy_target) are data: the harness and the report read them here and
+/// never name a solver (tests/verification/solver_names_test.cpp checks it), so a solver added
+/// to the registry (or by register_solver()) joins every check, table and score without an edit
+/// there.
 struct SolverEntry {
   std::string name;
   std::string description;
@@ -75,15 +92,54 @@ struct SolverEntry {
   /// and the harness does not compare them on it (docs/reference/verdicts.md, "Independence"). A
   /// quantity the solver does not produce is absent.
   std::map<std::string, std::string> computations;
+
+  /// Exact method or approximate model.
+  SolverKind kind = SolverKind::Exact;
+  /// May serve as the certified reference of `catena check`
+  /// (catena/verification/certified_reference.hpp): an exact solver of every cable that command
+  /// accepts, extensible or not, at any sag (frobenius is not: it solves Gale's inextensible
+  /// catenary only). The candidates are tried most accurate first (exact_solvers_by_accuracy()).
+  bool certifies_references = false;
+  /// Its modes come from one eigenvalue problem, all at once, not from one root search each: many
+  /// modes cost little more than a few (fe gives 64 modes of a Gale C-2 catenary in 0.04 s,
+  /// shooting 2.2 s, frobenius 3.9 s). The harness asks such a solver first when it needs many
+  /// modes only to ~1e-4 (the forced check's condition number).
+  bool all_modes_at_once = false;
+  /// The relative accuracy of each frequency the solver promises with these knobs (validated
+  /// first; {} gives the defaults): the accuracy_target its plane summaries report, computed by the
+  /// same function, or, where the solver was asked for none, what its default resolution is
+  /// declared to reach (fe without `tolerance`: 1e-6, verification/tolerances.toml). Empty for a
+  /// model: its accuracy is each mode's model-error estimate. Throws InvalidInput for bad knobs.
+  std::function<double(const SolverKnobs&)> accuracy_target;
 };
 
 /// The quantities named in SolverEntry::computations.
 const std::vector<std::string>& compared_quantities();
 
-/// All solvers, in a fixed order: fe, shooting, frobenius, asymptotic, airy.
+/// All solvers, in a fixed order: fe, shooting, frobenius, asymptotic, airy, then those added by
+/// register_solver() in the order they were added.
 const std::vector<SolverEntry>& solver_registry();
 /// The entry named `name`, or nullptr.
 const SolverEntry* find_solver(const std::string& name);
+
+/// Adds a solver to the registry, after the five, for tests and plugins: from then on scenes may
+/// name it, a scene that names no solver runs it, and the harness compares it with the others and
+/// counts it in the mutation score by its roles. An entry without `computations` gets its own code
+/// path for every compared quantity (independent of every other solver). Call it before any scene
+/// is read or solved, from one thread: it invalidates the pointers find_solver() returned. Throws
+/// InvalidInput for an empty or taken name, or an entry without validate_knobs or make_numerics.
+void register_solver(SolverEntry entry);
+
+/// The names of the solvers of `kind`, in registry order.
+std::vector<std::string> solver_names(SolverKind kind);
+/// True when `name` is a registered exact solver.
+bool is_exact_solver(const std::string& name);
+/// The exact solvers, the most accurate at their default knobs first (accuracy_target({}):
+/// frobenius 1e-11, shooting 1.1e-9, fe 1e-6); ties keep registry order. The "most accurate
+/// exact solver that ran" of the harness and the report is the first of these that ran.
+std::vector<std::string> exact_solvers_by_accuracy();
+/// The solvers with certifies_references, in the order of exact_solvers_by_accuracy().
+std::vector<std::string> reference_solvers();
 
 /// Runs `entry` on the context through the driver: validates the knobs and the request, checks
 /// applicability (a NotApplicable output with the reason when the solver declines), runs each

@@ -15,10 +15,11 @@
 
 namespace catena {
 
-/// The reference for `plane` from the outputs of one run (which should include "shooting" and
-/// "fe"). A solver qualifies when its plane converged with at least one mode; among those, the
-/// smaller largest error estimate wins (shooting on a tie). nullopt, with `why` saying what each
-/// solver reported, when none qualifies.
+/// The reference for `plane` from the outputs of one run (which should include every solver of
+/// reference_solvers(): shooting and fe, the solvers with SolverEntry::certifies_references). A
+/// solver qualifies when its plane converged with at least one mode; among those, the smaller
+/// largest error estimate wins (on a tie, the first of reference_solvers(): shooting). nullopt,
+/// with `why` saying what each solver reported, when none qualifies.
 std::optional<CertifiedReference> certified_reference(const std::vector<SolverOutput>& outputs,
                                                       Plane plane,
                                                       std::string& why);

@@ -26,10 +26,6 @@ inline constexpr double kFrequencyMutationFactor = 10.0;
 inline constexpr double kShapeMutationFactor = 10.0;
 /// A forced response's max |tension| (and its tension curve) is multiplied by (1 + this).
 inline constexpr double kForcedTensionMutation = 1e-4;
-/// fe's target when a scene does not set its `tolerance` knob: the accuracy the tolerance table
-/// declares for it and holds its frequency checks to (verification/tolerances.toml,
-/// docs/explanation/mutation.md).
-inline constexpr double kFeAccuracyTarget = 1e-6;
 
 /// What a mutation changed.
 enum class MutatedQuantity { Frequency, Shape, ForcedTension };
@@ -53,7 +49,7 @@ struct MutationOutcome {
   /// The mutated value's own relative error estimate, before the mutation (-1: none, e.g. a
   /// shape). A mutation no larger than it is within what the solver itself says of its error.
   double estimate = -1.0;
-  /// Another exact solver (fe, shooting, frobenius) returned the same quantity in this scene.
+  /// Another exact solver (SolverKind::Exact) returned the same quantity in this scene.
   bool exact_witness = false;
   bool caught = false;
   /// The first check that went to FAIL ("frequency fe vs shooting in-plane mode 2"); empty when
@@ -83,14 +79,12 @@ struct MutationRun {
   MutationTally exact_beyond_estimate() const;
 };
 
-/// True for fe, shooting and frobenius (solvers of the exact linear problem; asymptotic and airy
-/// solve approximate models).
-bool is_exact_solver(const std::string& solver);
-
-/// The relative accuracy `solver` promises on `mode`: its accuracy target (shooting 10 rtol +
-/// root_tolerance, frobenius 10 tolerance, with the scene's knobs or the defaults; fe its
-/// `tolerance` knob, else kFeAccuracyTarget), asymptotic and airy the mode's own model-error
-/// estimate. 0 when there is none (no mutation is made).
+/// The relative accuracy `solver` promises on `mode` with the scene's `knobs`: an exact solver's
+/// SolverEntry::accuracy_target (the function its summaries' accuracy_target comes from: shooting
+/// 10 rtol + root_tolerance, frobenius 10 tolerance, fe its `tolerance` or else 1e-6), a model's
+/// (SolverKind::Model) the mode's own model-error estimate. 0 when there is none (no mutation is
+/// made), e.g. for a solver not in the registry. Which solvers are exact: is_exact_solver()
+/// (catena/solvers/solver_registry.hpp).
 double frequency_accuracy_target(const std::string& solver,
                                  const SolverKnobs& knobs,
                                  const Mode& mode);

@@ -4,11 +4,13 @@
 #include "catena/io/check_report.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 
 #include "catena/core/version.hpp"
 #include "catena/io/file_access.hpp"
+#include "catena/solvers/solver_registry.hpp"
 #include "io/report/document.hpp"
 #include "io/report/svg_plot.hpp"
 
@@ -47,8 +49,11 @@ void add_header(Document& out, const ExternalCheck& check, const CheckSources& s
 
 void add_references(Document& out, const ExternalCheck& check) {
   out.push_back(internal::Heading{2, "Catena's reference", "reference"});
-  internal::Table table{
-      {"plane", "solver", "modes", "largest estimate", "shooting vs fe", "why"}, {}, "reference"};
+  // The cross-check column compares the solvers that may certify a reference (shooting vs fe).
+  internal::Table table{{"plane", "solver", "modes", "largest estimate",
+                         fmt::format("{}", fmt::join(reference_solvers(), " vs ")), "why"},
+                        {},
+                        "reference"};
   for (const auto& reference : check.references) {
     double largest = 0.0;
     for (const auto& mode : reference.modes)

@@ -1,22 +1,25 @@
 // SPDX-License-Identifier: MIT
-// The analytic models' actual error (asymptotic, airy) against the most accurate exact solver
-// that ran, over the suite: by eps with lambda^2 and phi ranges, and the fitted order in eps.
+// The analytic models' actual error (the registry's models: asymptotic, airy) against the most
+// accurate exact solver that ran, over the suite: by eps with lambda^2 and phi ranges, and the
+// fitted order in eps.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "catena/io/csv_table.hpp"
+#include "catena/solvers/solver_registry.hpp"
 #include "io/report/sections.hpp"
 
 namespace catena::internal {
 namespace {
 
-// The exact solvers from the most accurate (by their default targets: frobenius 1e-12, shooting
-// 1e-10, fe ~1e-7..1e-9) to the least: the first that ran is the reference.
-const char* const kReferenceOrder[] = {"frobenius", "shooting", "fe"};
-const char* const kModels[] = {"asymptotic", "airy"};
+// The reference of a scene is the first exact solver that ran, the most accurate at their default
+// targets first (exact_solvers_by_accuracy(): frobenius 1e-11, shooting 1.1e-9, fe 1e-6); the
+// models are the registry's SolverKind::Model solvers.
+
 // The fit uses scenes with eps at most this: the models' own validity-warning threshold
 // (their eps_warning_threshold knob, docs/reference/solver-knobs.md)...
 constexpr double kAsymptoticRangeEps = 0.3;
@@ -55,20 +58,23 @@ std::map<int, std::pair<double, double>> omegas(const json& output, const char* 
   return out;
 }
 
-void collect_scene(const json& scene, std::vector<ErrorPoint>& points) {
+void collect_scene(const json& scene,
+                   const std::vector<std::string>& reference_order,
+                   const std::vector<std::string>& models,
+                   std::vector<ErrorPoint>& points) {
   if (!scene.contains(key::groups)) return;
   const json& g = scene[key::groups];
   const json& solvers = scene[key::solvers];
   for (const char* plane : {key::inplane, key::outofplane}) {
-    const char* reference = nullptr;
-    for (const char* r : kReferenceOrder) {
-      if (!reference && solvers.contains(r) && usable(solvers[r]) &&
+    std::string reference;
+    for (const std::string& r : reference_order) {
+      if (reference.empty() && solvers.contains(r) && usable(solvers[r]) &&
           !omegas(solvers[r], plane).empty())
         reference = r;
     }
-    if (!reference) continue;
+    if (reference.empty()) continue;
     const auto exact = omegas(solvers[reference], plane);
-    for (const char* model : kModels) {
+    for (const std::string& model : models) {
       if (!solvers.contains(model) || !usable(solvers[model])) continue;
       for (const auto& [index, value] : omegas(solvers[model], plane)) {
         if (!exact.count(index)) continue;
@@ -218,16 +224,18 @@ void write_points(const std::vector<ErrorPoint>& points, const std::filesystem::
 
 void add_model_error(Document& out, const json& document, const std::filesystem::path& data_dir) {
   std::vector<ErrorPoint> points;
-  for (const auto& scene : document[key::scenes]) collect_scene(scene, points);
+  const std::vector<std::string> reference_order = exact_solvers_by_accuracy();
+  const std::vector<std::string> models = solver_names(SolverKind::Model);
+  for (const auto& scene : document[key::scenes])
+    collect_scene(scene, reference_order, models, points);
   write_points(points, data_dir);
   out.push_back(Heading{2, "Model error of the analytic solvers", "model-error"});
   out.push_back(
-      Paragraph{fmt::format("asymptotic and airy against the most accurate exact solver that ran "
-                            "on the scene (frobenius, else shooting, "
-                            "else fe), relative error of each mode's frequency. Fitted order: "
-                            "least squares of ln(error) on ln(eps), "
+      Paragraph{fmt::format("{} against the most accurate exact solver that ran "
+                            "on the scene ({}), relative error of each mode's frequency. Fitted "
+                            "order: least squares of ln(error) on ln(eps), "
                             "error ~ C eps^p, one point per scene (the median over its modes) over "
-                            "the asymptotic range: eps <= {:g} "
+                            "the models' range: eps <= {:g} "
                             "(the models' validity-warning threshold) and a median error at least "
                             "{:g} x the reference's own estimate "
                             "(below, the reference's error shows). First over every scene ('all': "
@@ -235,6 +243,7 @@ void add_model_error(Document& out, const json& document, const std::filesystem:
                             "(lambda^2, phi) with at least {} distinct eps. The in-plane error "
                             "also carries the strain term T0/(2 EA), "
                             "which does not scale with eps. Every point: data/model-error.csv.",
+                            fmt::join(models, " and "), fmt::join(reference_order, ", else "),
                             kAsymptoticRangeEps, kMeasurableFactor, kMinDistinctEps)});
   PointGroup groups;
   for (const auto& p : points) groups[{p.model, p.plane}].push_back(&p);

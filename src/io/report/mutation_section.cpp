@@ -2,9 +2,11 @@
 // The mutation score of `catena verify --mutation` (docs/explanation/mutation.md): by solver and
 // scene family, by solver and quantity, and every uncaught mutation.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <map>
 
+#include "catena/solvers/solver_registry.hpp"
 #include "io/report/sections.hpp"
 
 namespace catena::internal {
@@ -62,6 +64,17 @@ void add_uncaught(Document& out, const json& uncaught) {
   add_table_or_none(out, std::move(t));
 }
 
+// "fe 1e-06, frobenius 1e-11, shooting 1.1e-09": the targets the run wrote, by solver name.
+std::string default_targets_text(const json& mutation) {
+  std::string text;
+  const json targets = mutation.value(key::default_accuracy_targets, json::object());
+  for (const auto& [solver, target] : targets.items()) {
+    if (!target.is_number()) continue;
+    text += fmt::format("{}{} {:g}", text.empty() ? "" : ", ", solver, target.get<double>());
+  }
+  return text.empty() ? "none recorded" : text;
+}
+
 }  // namespace
 
 void add_mutation(Document& out, const json& document) {
@@ -75,20 +88,20 @@ void add_mutation(Document& out, const json& document) {
   out.push_back(Paragraph{fmt::format(
       "One result at a time made wrong, then the scene's checks re-run on the mutated results "
       "(nothing re-solved): "
-      "a frequency by {:g} x its solver's accuracy target (shooting 10 rtol + root_tolerance, "
-      "frobenius 10 tolerance, "
-      "fe its scene's tolerance or else {:g}, asymptotic and airy their model-error estimate), a "
+      "a frequency by {:g} x its solver's accuracy target (the exact solvers' at their default "
+      "knobs: {}, a scene's knobs may set another; {} their model-error estimate), a "
       "mode shape by a mix with its neighbour so that 1 - MAC is {:g} x the "
       "widest MAC tolerance, a forced max |tension| by {:g} relative. Caught: some check of the "
       "scene went to FAIL "
-      "(docs/explanation/mutation.md). Exact solvers (fe, shooting, frobenius) where another exact "
+      "(docs/explanation/mutation.md). Exact solvers ({}) where another exact "
       "solver ran: {} of {} caught "
       "({}); of those, the changes larger than the mutated value's own error estimate (beyond what "
       "its solver "
       "claims): {} of {} caught ({}). {:.1f} s on {} threads.",
-      m.value(key::frequency_factor, 0.0), m.value(key::fe_accuracy_target, 0.0),
-      m.value(key::shape_factor, 0.0), m.value(key::forced_tension_relative, 0.0), target.caught,
-      target.made, percent(target), beyond.caught, beyond.made, percent(beyond),
+      m.value(key::frequency_factor, 0.0), default_targets_text(m),
+      fmt::join(solver_names(SolverKind::Model), " and "), m.value(key::shape_factor, 0.0),
+      m.value(key::forced_tension_relative, 0.0), fmt::join(solver_names(SolverKind::Exact), ", "),
+      target.caught, target.made, percent(target), beyond.caught, beyond.made, percent(beyond),
       m.value(key::wall_time_s, 0.0), m.value(key::threads, 0))});
   std::map<std::pair<std::string, std::string>, Tally> by_family, by_quantity;
   for (const auto& t : list_or_empty(m, key::tallies)) {

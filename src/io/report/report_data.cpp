@@ -110,6 +110,9 @@ TimeToAccuracy read_time_to_accuracy(const std::filesystem::path& csv) {
   TimeToAccuracy result;
   if (!std::filesystem::exists(csv)) return result;
   const CsvTable table = read_csv_table(csv);
+  if (!table.comments.empty()) result.description = table.comments.front();
+  if (!result.description.empty() && result.description.back() == '.')
+    result.description.pop_back();  // it is quoted inside a sentence
   for (std::size_t row = 0; row < table.rows.size(); ++row) {
     const std::string& name = table.text(row, "scene");
     const std::string& solver = table.text(row, "solver");

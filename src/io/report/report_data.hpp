@@ -31,6 +31,8 @@ void write_data_tables(const json& document, const std::filesystem::path& dir);
 /// Fastest wall time [s] for each case, solver and error target (1e-3, 1e-6, 1e-9), from
 /// the data dir's copy of benchmarks/results/time-vs-error.csv; cases in file order.
 struct TimeToAccuracy {
+  /// The file's first comment line: what is timed and the reference of the error.
+  std::string description;
   std::vector<std::string> cases;
   std::map<std::string, std::map<std::string, std::map<double, double>>> best_time_s;
 };

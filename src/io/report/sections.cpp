@@ -251,10 +251,11 @@ void add_stress_outcomes(Document& out, const json& document) {
 void add_time_to_accuracy(Document& out, const TimeToAccuracy& timing) {
   if (timing.cases.empty()) return;
   out.push_back(Heading{2, "Time to accuracy", "time-to-accuracy"});
-  out.push_back(Paragraph{
+  // The reference of the error is the file's to state (its first comment line).
+  out.push_back(Paragraph{fmt::format(
       "Fastest wall time for each solver to reach a relative error on the first six in-plane "
-      "frequencies (benchmarks/results/time-vs-error.csv; error against shooting at rtol "
-      "1e-13; 'cannot': no setting reached it)."});
+      "frequencies (benchmarks/results/time-vs-error.csv: {}; 'cannot': no setting reached it).",
+      timing.description)});
   Table t{{"case", "solver", "1e-3", "1e-6", "1e-9"}, {}, "timing"};
   for (const auto& name : timing.cases) {
     if (!timing.best_time_s.count(name)) continue;

@@ -6,13 +6,13 @@
 #include <algorithm>
 #include <map>
 
+#include "catena/solvers/solver_registry.hpp"
 #include "io/report/sections.hpp"
 
 namespace catena::internal {
 namespace {
 
 const char* const kVerdicts[] = {"PASS", "FAIL", "WARN", "SOURCE", "SKIP"};
-const char* const kExactSolvers[] = {"fe", "shooting", "frobenius"};
 
 using VerdictCounts = std::map<std::string, std::map<std::string, int>>;
 
@@ -125,7 +125,8 @@ std::vector<std::string> entry_row(const json& scene, const json& entry, int mod
   std::vector<std::string> row = {scene.value(key::name, ""), source,
                                   std::to_string(forced ? mode + 1 : mode),
                                   fmt::format("{:g}", printed)};
-  for (const char* solver : kExactSolvers) row.push_back(solver_value(scene, solver, entry, mode));
+  for (const std::string& solver : solver_names(SolverKind::Exact))
+    row.push_back(solver_value(scene, solver, entry, mode));
   std::string verdict_text;
   for (const auto& v : verdicts) verdict_text += (verdict_text.empty() ? "" : ", ") + v;
   row.push_back(verdict_text);
@@ -142,10 +143,11 @@ int add_discrepancies(Document& out, const json& document) {
       "solvers agree with each other and not with the printed value, or a reviewed finding "
       "(verification/findings.toml) explains the difference. Values in the table's unit; "
       "'verdicts' lists each solver compared with the entry."});
-  Table t{{"scene", "source", "mode", "printed", "fe", "shooting", "frobenius", "verdicts",
-           "diagnosis"},
-          {},
-          "discrepancies"};
+  // One column per exact solver, in registry order.
+  Table t{{"scene", "source", "mode", "printed"}, {}, "discrepancies"};
+  for (const std::string& solver : solver_names(SolverKind::Exact)) t.header.push_back(solver);
+  t.header.push_back("verdicts");
+  t.header.push_back("diagnosis");
   for (const auto& scene : document[key::scenes]) {
     for (const auto& entry : list_or_empty(scene, key::published)) {
       const json& modes = entry.at(key::modes);

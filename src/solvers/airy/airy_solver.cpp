@@ -363,13 +363,15 @@ Mode AiryNumerics::outofplane_mode(int n,
 }  // namespace
 
 SolverEntry make_airy_entry() {
-  return make_solver_entry(
+  SolverEntry entry = make_solver_entry(
       "Triantafyllou's Airy-function solution (Grinfogel 1984, eqs. 12-16): roots of the 4x4 "
       "boundary determinant with exponentially scaled Ai, Bi; the paper's 'exact' reference. Out "
       "of plane: the string of linear tension, exactly in Bessel J0, Y0",
       airy_knobs(), [](const SolveContext& context, const AirySolverOptions& options) {
         return std::make_unique<AiryNumerics>(context, options);
       });
+  entry.kind = SolverKind::Model;  // its error is the model's: each mode's estimate states it
+  return entry;
 }
 
 }  // namespace internal

@@ -375,13 +375,15 @@ ModalResult AsymptoticNumerics::outofplane_modes(int count) const {
 }  // namespace
 
 SolverEntry make_asymptotic_entry() {
-  return make_solver_entry(
+  SolverEntry entry = make_solver_entry(
       "Grinfogel (1984) perturbation solution for taut inclined cables: eq. (21) frequencies "
       "(exact root count), WKB out-of-plane, shapes eq. (34)/(28)/(37), tension eq. (38); error "
       "O(eps^2)",
       asymptotic_knobs(), [](const SolveContext& context, const AsymptoticSolverOptions& options) {
         return std::make_unique<AsymptoticNumerics>(context, options);
       });
+  entry.kind = SolverKind::Model;  // its error is the model's: each mode's estimate states it
+  return entry;
 }
 
 }  // namespace internal

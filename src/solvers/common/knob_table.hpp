@@ -246,4 +246,16 @@ SolverEntry make_solver_entry(std::string description, const KnobTable<Options>&
   return entry;
 }
 
+/// Sets entry.accuracy_target to `target(options)`, the options read from the knobs and validated:
+/// pass the function the solver's summaries take their accuracy_target from, so that the harness
+/// and the solver cannot disagree on it.
+template <class Options, class Target>
+void set_accuracy_target(SolverEntry& entry, const KnobTable<Options>& table, Target target) {
+  entry.accuracy_target = [&table, target](const SolverKnobs& knobs) {
+    Options options = table.read(knobs);
+    options.validate();
+    return target(options);
+  };
+}
+
 }  // namespace catena::internal

@@ -451,12 +451,22 @@ ModalResult FeNumerics::modes_on_plan(Plane plane, int count) {
 }  // namespace
 
 SolverEntry make_fe_entry() {
-  return make_solver_entry(
+  SolverEntry entry = make_solver_entry(
       "lumped-mass chain of N bar elements about its own exact statics; banded shift-invert "
       "Lanczos (thick restart), Sylvester-inertia mode count, Richardson N/2N extrapolation",
       fe_knobs(), [](const SolveContext& context, const FeSolverOptions& options) {
         return std::make_unique<FeNumerics>(context, options);
       });
+  entry.kind = SolverKind::Exact;
+  entry.certifies_references = true;  // any sag, inclination and EA
+  entry.all_modes_at_once = true;     // one shift-invert Lanczos per mesh level
+  // Its `tolerance` when asked (the plane summaries' accuracy_target), else what the default mesh
+  // is declared to reach: 1e-6 (verification/tolerances.toml, [[solver]] fe: the penalty floor of
+  // inextensible cables is a few 1e-7).
+  set_accuracy_target(entry, fe_knobs(), [](const FeSolverOptions& options) {
+    return options.tolerance > 0.0 ? options.tolerance : 1e-6;
+  });
+  return entry;
 }
 
 }  // namespace internal

@@ -82,6 +82,12 @@ FieldStations field_stations(const StaticSolution& statics, const Vector& s_m) {
   return stations;
 }
 
+// The accuracy each frequency is asked for: ten times `tolerance` (the estimate is the last
+// a-posteriori correction, itself conservative), and never below 1e-13 (double rounding).
+double accuracy_target(const FrobeniusSolverOptions& options) {
+  return std::max(options.tolerance, 1e-14) * 10.0;
+}
+
 // The numerics of the frobenius solver for one problem.
 class FrobeniusNumerics final : public SolverNumerics {
  public:
@@ -193,17 +199,16 @@ void FrobeniusNumerics::summarise_plane(Plane plane,
     precision = std::max(precision, root.precision);
   }
   const bool converged = static_cast<int>(found.roots.size()) == count && !found.work.truncated &&
-                         worst <= std::max(options_.tolerance, 1e-14) * 10.0;
+                         worst <= accuracy_target(options_);
   SolverSummary& summary = result.summary;
-  summary.accuracy_target =
-      std::max(options_.tolerance, 1e-14) * 10.0;  // the skeleton names misses
+  summary.accuracy_target = accuracy_target(options_);  // the skeleton names misses
   summary.termination = converged ? Termination::Converged
                                   : (found.roots.empty() ? Termination::NumericalFailure
                                                          : Termination::NoConvergence);
   summary.message = fmt::format(
       "{}: {} of {} {} modes, max relative error estimate {:g} {} {:g}{}",
       converged ? "Converged" : "Not converged", found.roots.size(), count, to_string(plane), worst,
-      converged ? "<=" : "vs", options_.tolerance * 10.0,
+      converged ? "<=" : "vs", accuracy_target(options_),
       found.work.truncated ? fmt::format("; some series hit max_terms = {}", options_.max_terms)
                            : std::string());
   summary.resolution = fmt::format(
@@ -271,13 +276,16 @@ ForcedOutcome FrobeniusNumerics::forced(const ForcedRequest& request) {
 }  // namespace
 
 SolverEntry make_frobenius_entry() {
-  return make_solver_entry(
+  SolverEntry entry = make_solver_entry(
       "Gale's power series for the inextensible catenary (Gale 1976), chained expansions to any "
       "sag, adaptive "
       "terms, extended precision when needed",
       frobenius_knobs(), [](const SolveContext& context, const FrobeniusSolverOptions& options) {
         return std::make_unique<FrobeniusNumerics>(context, options);
       });
+  entry.kind = SolverKind::Exact;  // not a certifier: the inextensible catenary only
+  set_accuracy_target(entry, frobenius_knobs(), accuracy_target);
+  return entry;
 }
 
 }  // namespace internal

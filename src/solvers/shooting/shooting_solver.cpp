@@ -320,7 +320,7 @@ void ShootingNumerics::finish_summary(const ShootingRootFinder& finder,
 }  // namespace
 
 SolverEntry make_shooting_entry() {
-  return make_solver_entry(
+  SolverEntry entry = make_solver_entry(
       "exact linear boundary-value solution: principal solutions integrated by Runge-Kutta 6(5), "
       "modes counted by conjugate points (Morse index) and refined by safeguarded Newton steps "
       "with the frequency derivative of the shot (Brent's method as fallback) on a count-aware "
@@ -328,6 +328,10 @@ SolverEntry make_shooting_entry() {
       shooting_knobs(), [](const SolveContext& context, const ShootingSolverOptions& options) {
         return std::make_unique<ShootingNumerics>(context, options);
       });
+  entry.kind = SolverKind::Exact;
+  entry.certifies_references = true;  // any sag, inclination and EA
+  set_accuracy_target(entry, shooting_knobs(), accuracy_target);
+  return entry;
 }
 
 }  // namespace internal

@@ -133,10 +133,11 @@ std::vector<double> solve_modes(const SceneResult& result,
 }  // namespace
 
 // The modes up to above the forcing: from the result of the most accurate exact solver whose
-// output holds them, else solved for. The solve uses fe first whether or not the scene ran it:
-// kappa needs the frequencies to ~1e-4 only (a relative delta moves kappa by ~kappa x delta), and
-// fe gives 64 modes of a Gale C-2 catenary in 0.04 s where frobenius took 3.9 s (and stopped at
-// 40 modes, the top ones beyond its target) and shooting 2.2 s.
+// output holds them, else solved for. The solve asks an exact solver that gives all modes at once
+// first (fe), whether or not the scene ran it: kappa needs the frequencies to ~1e-4 only (a
+// relative delta moves kappa by ~kappa x delta), and fe gives 64 modes of a Gale C-2 catenary in
+// 0.04 s where frobenius took 3.9 s (and stopped at 40 modes, the top ones beyond its target) and
+// shooting 2.2 s.
 ForcedConditioning find_forced_conditioning(const SceneResult& result,
                                             const ToleranceTable& tolerances,
                                             const RunLimits& limits) {
@@ -162,9 +163,14 @@ ForcedConditioning find_forced_conditioning(const SceneResult& result,
     if (!omegas.empty() && omegas.back() > top)
       return keep(candidate->solver, std::move(omegas), "from its result");
   }
-  std::vector<std::string> solvers{"fe"};
+  // The exact solvers that give all modes at once first (SolverEntry::all_modes_at_once), then
+  // the candidates.
+  std::vector<std::string> solvers;
+  for (const SolverEntry& entry : solver_registry())
+    if (entry.kind == SolverKind::Exact && entry.all_modes_at_once) solvers.push_back(entry.name);
   for (const SolverOutput* candidate : candidates)
-    if (candidate->solver != "fe") solvers.push_back(candidate->solver);
+    if (std::find(solvers.begin(), solvers.end(), candidate->solver) == solvers.end())
+      solvers.push_back(candidate->solver);
   const RunLimits budget = conditioning_limits(limits);
   for (const std::string& solver : solvers) {
     std::vector<double> omegas = solve_modes(result, solver, out.plane, top, budget);

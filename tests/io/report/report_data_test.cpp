@@ -117,12 +117,15 @@ TEST_F(DataTables, PublishedHasOnlyThePublishedComparisons) {
 
 TEST(ReportData, TimeToAccuracyKeepsTheFastestSettingPerTarget) {
   const fs::path csv = write_file("catena_report_timing.csv",
-                                  "# test\nscene,solver,setting,time_s,max_rel_error,status\n"
+                                  "# time vs error, against a reference.\n# machine\n"
+                                  "scene,solver,setting,time_s,max_rel_error,status\n"
                                   "\"case, one\",fe,N=10,1e-3,1e-4,converged\n"
                                   "\"case, one\",fe,N=20,2e-3,1e-7,converged\n"
                                   "\"case, one\",fe,N=5,5e-4,1e-2,converged\n"
                                   "\"case, one\",airy,-,1e-4,nan,not-applicable\n");
   const TimeToAccuracy timing = read_time_to_accuracy(csv);
+  // The first comment line says what the error is measured against; the report quotes it.
+  EXPECT_EQ(timing.description, "time vs error, against a reference");
   ASSERT_EQ(timing.cases, std::vector<std::string>{"case, one"});
   const auto& fe = timing.best_time_s.at("case, one").at("fe");
   EXPECT_EQ(fe.at(1e-3), 1e-3);  // N=10 reaches 1e-3 and is faster than N=20

@@ -72,7 +72,8 @@ TEST(HeadlineTables, CountEachVerdictByKindAndBySolverPair) {
 json mutation_block() {
   return json::parse(
       R"({"wall_time_s": 1.5, "threads": 2, "frequency_factor": 10.0, "shape_factor": 10.0,
-    "forced_tension_relative": 1e-4, "fe_accuracy_target": 1e-7,
+    "forced_tension_relative": 1e-4,
+    "default_accuracy_targets": {"fe": 1e-7, "shooting": 1.1e-9},
     "exact_with_witness": {"made": 4, "caught": 2}, "exact_beyond_estimate": {"made": 2, "caught": 2},
     "tallies": [{"solver": "fe", "family": "gale", "quantity": "frequency", "made": 3, "caught": 1},
                 {"solver": "fe", "family": "gale", "quantity": "forced-tension", "made": 1, "caught": 1}],
@@ -94,6 +95,13 @@ TEST(MutationSection, ScoresBySolverAndFamilyAndListsEveryUncaughtMutation) {
   EXPECT_EQ(
       t[2].rows,
       (Rows{{"gale-a", "fe", "frequency", "in-plane", "2, 3", "1e-06, 1e-06", "2e-06, -", "yes"}}));
+  // The prose states the run's targets and the registry's exact solvers and models.
+  std::string prose;
+  for (const Block& block : out)
+    if (const auto* p = std::get_if<Paragraph>(&block)) prose += p->text;
+  EXPECT_NE(prose.find("default knobs: fe 1e-07, shooting 1.1e-09"), std::string::npos) << prose;
+  EXPECT_NE(prose.find("asymptotic and airy their model-error estimate"), std::string::npos);
+  EXPECT_NE(prose.find("Exact solvers (fe, shooting, frobenius)"), std::string::npos);
 }
 
 TEST(MutationSection, AbsentWithoutAMutationRun) {

@@ -1,72 +1,21 @@
 // SPDX-License-Identifier: MIT
 // What adding a solver costs: a complete sixth solver, the taut string (omega_n = n pi
-// sqrt(T0/M)/L, both planes), written against the skeleton (src/solvers/common/solver_driver.hpp,
-// knob_table.hpp). Between the two markers: its numerics, its knob table and its registry entry,
-// which is all a new solver writes besides its tests (and one line in solver_registry.cpp).
-// The test runs it through the same run_solver() as the five real ones and compares it with
-// shooting on a taut string, where it is exact to the sag (eps = 1e-6).
+// sqrt(T0/M)/L, both planes), written against the skeleton in taut_string_solver.hpp (its
+// numerics, its knob table and its registry entry, with its roles). The test runs it through the
+// same run_solver() as the five real ones and compares it with shooting on a taut string, where it
+// is exact to the sag (eps = 1e-6). tests/verification/sixth_solver_harness_test.cpp registers it
+// and runs it through the harness and the mutation score.
 #include <gtest/gtest.h>
 
 #include "catena/solvers/shooting_solver.hpp"
 #include "catena/statics/problem_builders.hpp"
 #include "solver_test_support.hpp"
-#include "solvers/common/knob_table.hpp"
-#include "solvers/common/mode_tools.hpp"
-#include "solvers/common/solver_driver.hpp"
+#include "taut_string_solver.hpp"
 
 namespace catena {
 namespace {
 
-// --- begin: a minimal sixth solver ---
-struct StringOptions {
-  double max_eps = 1e-3;  // the string model ignores sag: decline above this eps
-  void validate() const;
-};
-
-const internal::KnobTable<StringOptions>& string_knobs() {
-  static const internal::KnobTable<StringOptions> table(
-      "string",
-      {internal::real_knob("max_eps", &StringOptions::max_eps, internal::Range::open_closed(0, 1),
-                           "eps above which the string model declines")});
-  return table;
-}
-void StringOptions::validate() const { string_knobs().validate(*this); }
-
-class StringNumerics final : public internal::SolverNumerics {
- public:
-  StringNumerics(const SolveContext& context, const StringOptions& options)
-      : context_(context), options_(options) {}
-  std::optional<std::string> not_applicable() const override {
-    if (context_.groups.eps > options_.max_eps)
-      return "sagging cable: the string model ignores sag";
-    return std::nullopt;
-  }
-  ModalResult modes(Plane, int count) override {
-    ModalResult result;
-    for (int n = 1; n <= count; ++n) {
-      Mode mode;
-      mode.index = n;
-      internal::set_mode_frequency(mode, context_.groups.omega_from_k_l_over_pi(n),
-                                   context_.groups);
-      result.modes.push_back(mode);
-    }
-    result.summary.termination = Termination::Converged;
-    result.summary.message = "Converged: the taut string";
-    return result;
-  }
-
- private:
-  const SolveContext& context_;
-  StringOptions options_;
-};
-
-SolverEntry make_string_entry() {
-  return internal::make_solver_entry("taut string, omega_n = n pi sqrt(T0/M) / L", string_knobs(),
-                                     [](const SolveContext& context, const StringOptions& options) {
-                                       return std::make_unique<StringNumerics>(context, options);
-                                     });
-}
-// --- end: a minimal sixth solver ---
+using testing::make_string_entry;
 
 TEST(SixthSolver, RunsThroughTheSharedDriverAndMatchesShootingOnATautString) {
   const SolverEntry entry = make_string_entry();

@@ -211,5 +211,71 @@ TEST(SolverRegistry, EverySolverNamesItselfInItsOutput) {
   }
 }
 
+// The roles the harness reads instead of naming solvers (docs/reference/verdicts.md, "Solver
+// roles"): each solver declares them in its entry.
+TEST(SolverRegistry, EachSolverDeclaresItsRoles) {
+  EXPECT_EQ(solver_names(SolverKind::Exact),
+            (std::vector<std::string>{"fe", "shooting", "frobenius"}));
+  EXPECT_EQ(solver_names(SolverKind::Model), (std::vector<std::string>{"asymptotic", "airy"}));
+  for (const char* exact : {"fe", "shooting", "frobenius"}) EXPECT_TRUE(is_exact_solver(exact));
+  for (const char* other : {"asymptotic", "airy", "galerkin"}) EXPECT_FALSE(is_exact_solver(other));
+  // Most accurate at the defaults first: frobenius 1e-11, shooting 1.1e-9, fe 1e-6.
+  EXPECT_EQ(exact_solvers_by_accuracy(), (std::vector<std::string>{"frobenius", "shooting", "fe"}));
+  // Gale's series solves the inextensible catenary only: it certifies no reference.
+  EXPECT_EQ(reference_solvers(), (std::vector<std::string>{"shooting", "fe"}));
+  EXPECT_TRUE(find_solver("fe")->all_modes_at_once);
+  EXPECT_FALSE(find_solver("shooting")->all_modes_at_once);
+  EXPECT_FALSE(find_solver("frobenius")->all_modes_at_once);
+  for (const auto& entry : solver_registry()) {
+    // An exact solver states its accuracy; a model's is each mode's estimate.
+    EXPECT_EQ(static_cast<bool>(entry.accuracy_target), entry.kind == SolverKind::Exact)
+        << entry.name;
+    // The models compute no forced response; every exact solver does.
+    EXPECT_EQ(entry.computations.count("forced") == 1, entry.kind == SolverKind::Exact)
+        << entry.name;
+  }
+}
+
+// The entry's accuracy target is the one the solver's plane summaries report, whenever the solver
+// was asked for one (one function for both: no copy to drift). fe asked for no tolerance reports
+// none; its entry then states what its default mesh is declared to reach.
+TEST(SolverRegistry, TheEntrysAccuracyTargetIsTheOneTheSummariesReport) {
+  struct Case {
+    const char* solver;
+    SolverKnobs knobs;
+    bool inextensible;
+  };
+  const std::vector<Case> cases = {{"shooting", {}, false},
+                                   {"shooting", {{"rtol", 1e-8}, {"root_tolerance", 1e-9}}, false},
+                                   {"fe", {{"tolerance", 1e-3}}, false},
+                                   {"frobenius", {}, true},
+                                   {"frobenius", {{"tolerance", 1e-15}}, true}};
+  const testing::SolvedProblem taut = taut_extensible();
+  const testing::SolvedProblem gale = testing::prepare(make_gale_sag_problem(0.0, 0.9));
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.solver);
+    const SolverOutput output =
+        run(c.solver, c.inextensible ? gale : taut, testing::modes_request(2, 0), c.knobs);
+    ASSERT_TRUE(output.inplane.has_value()) << output.summary.brief_report();
+    EXPECT_DOUBLE_EQ(output.inplane->summary.accuracy_target,
+                     find_solver(c.solver)->accuracy_target(c.knobs));
+  }
+  EXPECT_DOUBLE_EQ(run("fe", taut, testing::modes_request(2, 0)).inplane->summary.accuracy_target,
+                   -1.0);
+  EXPECT_DOUBLE_EQ(find_solver("fe")->accuracy_target({}), 1e-6);
+  EXPECT_THROW(find_solver("shooting")->accuracy_target({{"rtol", -1.0}}), InvalidInput);
+}
+
+TEST(SolverRegistry, RegisterSolverRejectsAnEntryItCannotRun) {
+  SolverEntry unnamed = *find_solver("fe");
+  unnamed.name.clear();
+  EXPECT_THROW(register_solver(unnamed), InvalidInput);
+  EXPECT_THROW(register_solver(*find_solver("fe")), InvalidInput);  // the name is taken
+  SolverEntry hollow;
+  hollow.name = "hollow";
+  EXPECT_THROW(register_solver(hollow), InvalidInput);  // no validate_knobs, no make_numerics
+  EXPECT_EQ(solver_registry().size(), 5u);
+}
+
 }  // namespace
 }  // namespace catena
