@@ -269,6 +269,7 @@ class ErkStepper final : public ShotStepper {
     check(ERKStepReInit(mem, rhs_, 0.0, y_.get()), "ERKStepReInit");
     x_ = x_start_ = 0.0;
     std::copy_n(y_.data(), size_, start_.data());
+    message_.clear();
     check(ERKStepWFtolerances(mem, slope_ ? slope_error_weights : plain_error_weights),
           "ERKStepWFtolerances");
     // The first step: the one the last shot chose after its first (the error-controlled step at
