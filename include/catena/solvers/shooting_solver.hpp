@@ -2,8 +2,8 @@
 #pragma once
 /// \file
 /// The `shooting` solver (docs/explanation/methods/shooting.md): the exact linear boundary-value
-/// solution of the cable equations, integrated along s by an explicit Runge-Kutta 6(5) pair (or
-/// SUNDIALS CVODE: knob `method`). It is the project's accuracy reference.
+/// solution of the cable equations, integrated along s by SUNDIALS ARKODE's ERKStep with Verner's
+/// 6(5) pair (or SUNDIALS CVODE: knob `method`). It is the project's accuracy reference.
 ///
 /// Model (docs/explanation/physics.md). About the static elastic catenary, harmonic motion D =
 /// Phi(s) e^{i w t} satisfies (A Phi')' + w^2 Mmat Phi = 0 with A = EA t t^T + (T/(1+e)) n n^T and
@@ -81,7 +81,7 @@ namespace catena {
 
 /// The integrator of a shot (docs/explanation/methods/shooting.md, "Integrators").
 enum class ShootingMethod {
-  RungeKutta,  ///< explicit Runge-Kutta, Verner's 6(5) pair (default)
+  RungeKutta,  ///< ARKODE's ERKStep (explicit Runge-Kutta), Verner's 6(5) pair (default; "rk")
   Adams,       ///< CVODE's Adams-Moulton, orders 1-12
   Bdf          ///< CVODE's BDF, orders 1-5 (for comparison / stiff variants)
 };

@@ -3,8 +3,8 @@
 /// \file
 /// The integration core of the `shooting` solver (docs/explanation/methods/shooting.md): one "shot"
 /// integrates the principal solutions of the linearised cable equations along s, for one frequency,
-/// with an explicit Runge-Kutta 6(5) pair (shooting_runge_kutta.hpp) or CVODE's Adams or BDF
-/// ("Integrators" in docs/explanation/methods/shooting.md).
+/// with SUNDIALS ARKODE's ERKStep and Verner's 6(5) pair (the default) or CVODE's Adams or BDF
+/// (shooting_steppers.hpp; "Integrators" in docs/explanation/methods/shooting.md).
 ///
 /// Scaled first-order system. With x = s / L, Phi^ = Phi / L and F^ = F / T_ref (T_ref = the
 /// larger end tension), the harmonic equations (A Phi')' + w^2 Mmat Phi = 0 become
@@ -94,7 +94,7 @@ struct IntegratorSettings {
   bool balance = true;         ///< rescale Phi, F by kappa^2 = max(Omega, 1) (off only for studies)
 };
 
-/// An integration failure (CVODE's flag name, or the stepper's reason, and the position) inside a
+/// An integration failure (CVODE's or ARKODE's flag name and the position) inside a
 /// shot; the solver turns it into a summary.
 class ShootingFailure : public std::runtime_error {
  public:

@@ -63,7 +63,7 @@ const KnobTable<ShootingSolverOptions>& shooting_knobs() {
                    {{"rk", ShootingMethod::RungeKutta},
                     {"adams", ShootingMethod::Adams},
                     {"bdf", ShootingMethod::Bdf}},
-                   "explicit Runge-Kutta 6(5), or CVODE's Adams or BDF"),
+                   "SUNDIALS ARKODE's ERKStep with Verner's 6(5) pair, or CVODE's Adams or BDF"),
        choice_knob("nonlinear_solver", &O::fixed_point_iteration,
                    {{"newton", false}, {"fixed_point", true}},
                    "CVODE's Newton (dense LU, analytic Jacobian) or fixed-point iteration"),
@@ -113,11 +113,19 @@ RootFinderSettings root_finder_settings(const ShootingSolverOptions& options) {
   return settings;
 }
 
+// The SUNDIALS integrator and method of the shots, e.g. "ARKODE ERKStep, Verner 8-stage 6(5)
+// table" (the knob `method`; "Integrators" in docs/explanation/methods/shooting.md).
+std::string integrator_name(const ShootingSolverOptions& options) {
+  if (options.method == ShootingMethod::RungeKutta) {
+    return "ARKODE ERKStep, Verner 8-stage 6(5) table";
+  }
+  return fmt::format(
+      "CVODE {}, {}", options.method == ShootingMethod::Adams ? "Adams" : "BDF",
+      options.fixed_point_iteration ? "fixed-point iteration" : "Newton with dense LU");
+}
+
 std::string resolution(const ShootingSolverOptions& options) {
-  const std::string method = options.method == ShootingMethod::RungeKutta
-                                 ? "Runge-Kutta 6(5)"
-                                 : "CVODE " + to_string(options.method);
-  return fmt::format("{} rtol {:.1e} atol {:.1e}, root bracket {:.1e}", method,
+  return fmt::format("{}, rtol {:.1e} atol {:.1e}, root bracket {:.1e}", integrator_name(options),
                      options.relative_tolerance, options.effective_absolute_tolerance(),
                      options.effective_root_tolerance());
 }
@@ -321,7 +329,8 @@ void ShootingNumerics::finish_summary(const ShootingRootFinder& finder,
 
 SolverEntry make_shooting_entry() {
   SolverEntry entry = make_solver_entry(
-      "exact linear boundary-value solution: principal solutions integrated by Runge-Kutta 6(5), "
+      "exact linear boundary-value solution: principal solutions integrated by SUNDIALS ARKODE "
+      "(ERKStep, Verner's 6(5) pair), "
       "modes counted by conjugate points (Morse index) and refined by safeguarded Newton steps "
       "with the frequency derivative of the shot (Brent's method as fallback) on a count-aware "
       "phase function; any sag, inclination, EA (inf exact), added mass",

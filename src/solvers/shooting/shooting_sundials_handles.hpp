@@ -2,10 +2,12 @@
 #pragma once
 /// \file
 /// RAII owners of the SUNDIALS objects the shooting solver uses (SUNContext, N_Vector,
-/// SUNMatrix, SUNLinearSolver, CVODE memory). Each owner frees its object in the destructor, in
-/// the order SUNDIALS requires when declared in the order context, vector, matrix, solver, cvode
-/// (members are destroyed in reverse order). Private to the shooting solver; never installed.
+/// SUNMatrix, SUNLinearSolver, CVODE and ARKODE memory). Each owner frees its object in the
+/// destructor, in the order SUNDIALS requires when declared in the order context, vector, matrix,
+/// solver, integrator (members are destroyed in reverse order). Private to the shooting solver;
+/// never installed.
 
+#include <arkode/arkode_erkstep.h>
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -115,6 +117,31 @@ class CvodeMemory {
  private:
   void* memory_ = nullptr;
 };
+
+/// Owns ARKODE's ERKStep memory (an explicit Runge-Kutta integrator).
+class ErkStepMemory {
+ public:
+  ErkStepMemory(ARKRhsFn rhs, N_Vector y0, SUNContext context)
+      : memory_(ERKStepCreate(rhs, 0.0, y0, context)) {}
+  ~ErkStepMemory() {
+    if (memory_) ERKStepFree(&memory_);
+  }
+  ErkStepMemory(const ErkStepMemory&) = delete;
+  ErkStepMemory& operator=(const ErkStepMemory&) = delete;
+  void* get() const { return memory_; }
+  bool ok() const { return memory_ != nullptr; }
+
+ private:
+  void* memory_ = nullptr;
+};
+
+/// ERKStep's name of a return flag, e.g. "ARK_ERR_FAILURE" (ERKStepGetReturnFlagName allocates).
+inline std::string erkstep_flag_name(int flag) {
+  char* name = ERKStepGetReturnFlagName(flag);
+  std::string result = name ? name : "ARK_UNKNOWN";
+  std::free(name);
+  return result;
+}
 
 /// CVODE's name of a return flag, e.g. "CV_CONV_FAILURE" (CVodeGetReturnFlagName allocates).
 inline std::string cvode_flag_name(int flag) {

@@ -19,7 +19,7 @@ using Basis = Eigen::Matrix<double, 2 * D, D>;
 template <int D>
 using Square = Eigen::Matrix<double, D, D>;
 
-/// Everything the right-hand sides need (CVODE's user data, the Runge-Kutta stepper's data).
+/// Everything the right-hand sides need (CVODE's and ARKODE's user data).
 struct RhsData {
   ShootingCoefficients coefficients;
   int dimension = 2;
