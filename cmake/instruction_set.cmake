@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# The instruction set everything is compiled for (README.md, "Build"; docs/explanation/methods/fe.md, "Cost").
+# The instruction set everything is compiled for (docs/how-to/build.md; docs/explanation/methods/fe.md, "Cost").
 # Without a -march flag GCC emits SSE2 only: Eigen's dense products and our Gram-Schmidt loops then
 # work on two doubles at a time without fused multiply-add. With AVX2 and FMA (x86-64-v3: every
 # x86-64 processor since about 2015) fe's solve at N = 1000 runs about 1.5 times faster.
