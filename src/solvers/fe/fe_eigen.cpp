@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "solvers/fe/fe_banded_ldlt.hpp"
-#include "solvers/fe/fe_lanczos.hpp"
+#include "solvers/fe/fe_spectra_eigs.hpp"
 
 namespace catena::internal {
 namespace {
@@ -21,6 +21,12 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
+
+// K - sigma M is singular (or nearly) at the shift: the shift is moved (solve_iteratively). A type
+// of its own, so that it is not confused with Spectra's std::invalid_argument for bad arguments.
+class SingularShift : public std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
 
 // Operator y = (K - sigma M)^{-1} x through a banded LDLT of K - sigma M, factored
 // without forming the shifted matrix (BandedLdlt::factorize(K, M, sigma)).
@@ -36,8 +42,7 @@ class ShiftInvertOperator {
     bool ok = ldlt_.factorize(stiffness_, mass_, sigma);
     factorization_time_s += seconds_since(start);
     ok = ok && ldlt_.pivot_ratio() > 1e-14;
-    if (!ok)
-      throw std::invalid_argument(fmt::format("K - sigma M is singular at sigma = {:.6e}", sigma));
+    if (!ok) throw SingularShift(fmt::format("K - sigma M is singular at sigma = {:.6e}", sigma));
   }
   /// Solves (K - sigma M) Y = X in place for a block of right-hand sides.
   void solve_in_place(Eigen::MatrixXd& X) const { ldlt_.solve_in_place(X); }
@@ -145,8 +150,9 @@ class MassFactor {
 };
 
 // The standard-form operator for the Lanczos iteration: with A = L^{-1} K L^{-T},
-// (A - sigma I)^{-1} x = L^T (K - sigma M)^{-1} L x. A standard symmetric Lanczos avoids the
-// M-inner products of the generalized solver (which cost more than the banded solves here).
+// (A - sigma I)^{-1} x = L^T (K - sigma M)^{-1} L x. Spectra's standard symmetric solver on it
+// avoids the M-inner products of its generalized one, SymGEigsShiftSolver (which cost more than
+// the banded solves here).
 class StandardFormOperator {
  public:
   using Scalar = double;
@@ -224,14 +230,25 @@ void measure_orthogonality(const MassFactor& factor, FeEigenSolution& out) {
       (gram - Eigen::MatrixXd::Identity(gram.rows(), gram.cols())).cwiseAbs().maxCoeff();
 }
 
-// The Lanczos subspace for `modes` modes of an operator with `unknowns` unknowns.
-int lanczos_subspace(Eigen::Index unknowns, int modes) {
-  return static_cast<int>(std::min<Eigen::Index>(unknowns, std::max(2 * modes + 1, modes + 20)));
+// Extra Lanczos vectors beyond the modes asked, from a pseudo-random start and from a guess.
+// Spectra tests convergence only once its subspace is full, and a subspace one vector short of
+// convergence costs a whole implicit restart: on the mooring line (10 in-plane modes, N = 1000
+// and 1e5) the first factorisation converges with 22 extra vectors from a pseudo-random start
+// (with 20: 42 operator applications and a restart instead of 33) and with 16 from the previous
+// mesh's modes (31 applications with the former 20; 14 extra needed a restart at N = 1000).
+constexpr int kExtraVectorsCold = 22;
+constexpr int kExtraVectorsWarm = 16;
+
+// The Lanczos subspace for `modes` modes of an operator with `unknowns` unknowns, started from a
+// guess (`warm`) or not.
+int lanczos_subspace(Eigen::Index unknowns, int modes, bool warm) {
+  const int extra = warm ? kExtraVectorsWarm : kExtraVectorsCold;
+  return static_cast<int>(std::min<Eigen::Index>(unknowns, std::max(2 * modes + 1, modes + extra)));
 }
 
 // Small problems, and those asking for nearly every mode, are solved densely.
 bool solved_densely(Eigen::Index unknowns, int modes) {
-  return unknowns <= 64 || lanczos_subspace(unknowns, modes) <= modes;
+  return unknowns <= 64 || lanczos_subspace(unknowns, modes, true) <= modes;
 }
 
 // Normwise backward error at which the eigenpairs are as good as double precision allows.
@@ -321,11 +338,6 @@ void polish(const FeMatrices& matrices,
   measure_orthogonality(factor, out);
 }
 
-// Our shift-invert Lanczos (fe_lanczos.hpp) on the standard form, polished. The operator's Ritz
-// values theta = 1 / (lambda - sigma) of largest magnitude are the lambda nearest sigma. Shift 0
-// targets the lowest modes (K is positive definite for a taut chain); if it is singular (a chain
-// with a zero-stiffness mode), the shift is moved below the bottom of the spectrum, and the move
-// reported.
 // A guess in the standard form's coordinates, y = L^T x (empty without a usable guess).
 Vector standard_form_guess(const Vector* guess, const MassFactor& factor, Eigen::Index rows) {
   Vector y;
@@ -335,6 +347,13 @@ Vector standard_form_guess(const Vector* guess, const MassFactor& factor, Eigen:
   return y;
 }
 
+// Spectra's Lanczos (fe_spectra_eigs.hpp) on the standard form, polished. The operator's Ritz
+// values theta = 1 / (lambda - sigma) of largest magnitude are the lambda nearest sigma. Shift 0
+// targets the lowest modes (K is positive definite for a taut chain); if it is singular (a chain
+// with a zero-stiffness mode), the shift is moved below the bottom of the spectrum, and the move
+// reported. Spectra's failure to converge (CompInfo::NotConverging) is NoConvergence, with its
+// counts; its std::invalid_argument (arguments out of range, which the callers rule out) is a
+// NumericalFailure.
 void solve_iteratively(const FeMatrices& matrices,
                        int modes,
                        int subspace,
@@ -356,7 +375,7 @@ void solve_iteratively(const FeMatrices& matrices,
       standard.set_shift(sigma);
       const auto start = Clock::now();
       LanczosResult lanczos = largest_magnitude_eigenpairs(
-          apply, standard.rows(), modes, subspace, tolerance, max_restarts, workspace.lanczos,
+          apply, standard.rows(), modes, subspace, tolerance, max_restarts,
           start_guess.size() > 0 ? start_guess.data() : nullptr);
       out.iteration_time_s += seconds_since(start);
       out.restarts += lanczos.restarts;
@@ -368,12 +387,13 @@ void solve_iteratively(const FeMatrices& matrices,
         out.iteration_time_s += seconds_since(start_polish);
       } else {
         out.termination = Termination::NoConvergence;
-        out.message = fmt::format("Lanczos did not converge: {} restarts, {} operator applications",
-                                  lanczos.restarts, lanczos.operations);
+        out.message = fmt::format(
+            "Spectra's Lanczos did not converge (CompInfo::{}): {} of {} modes after {} restarts, "
+            "{} operator applications",
+            lanczos.outcome, lanczos.converged_count, modes, lanczos.restarts, lanczos.operations);
       }
       break;
-    } catch (const std::invalid_argument& error) {
-      // A singular shift (ShiftInvertOperator says so by invalid_argument).
+    } catch (const SingularShift& error) {
       const double scale =
           (matrices.stiffness.diagonal().array() / matrices.mass.diagonal().array())
               .abs()
@@ -384,6 +404,11 @@ void solve_iteratively(const FeMatrices& matrices,
       sigma = moved;
       out.termination = Termination::NumericalFailure;
       out.message = error.what();
+    } catch (const std::invalid_argument& error) {
+      // Spectra rejected its arguments (solved_densely keeps them in range): nothing to retry.
+      out.termination = Termination::NumericalFailure;
+      out.message = fmt::format("Spectra: {}", error.what());
+      break;
     }
   }
   out.factorization_time_s += op.factorization_time_s;
@@ -416,11 +441,6 @@ void prove_mode_count(const FeMatrices& matrices,
 }
 
 }  // namespace
-
-void reserve_for_largest_solve(FeEigenWorkspace& workspace, Eigen::Index unknowns, int modes) {
-  if (!solved_densely(unknowns, modes))
-    workspace.lanczos.reserve(unknowns, lanczos_subspace(unknowns, modes));
-}
 
 Vector mode_sum_guess(const Eigen::MatrixXd& modes, int dofs_per_node, Eigen::Index rows) {
   const Vector sum = modes.rowwise().sum();
@@ -463,7 +483,7 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
     out.message = "no modes asked";
     return out;
   }
-  const int subspace = lanczos_subspace(n, modes);
+  const int subspace = lanczos_subspace(n, modes, guess != nullptr && guess->size() == n);
   const bool dense = solved_densely(n, modes);
   FeEigenWorkspace own;
   FeEigenWorkspace& work = workspace ? *workspace : own;

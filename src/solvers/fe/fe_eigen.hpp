@@ -2,7 +2,7 @@
 #pragma once
 /// \file
 /// The lowest eigenpairs of one `fe` operator pair, K phi = omega^2 M phi
-/// (docs/explanation/methods/fe.md): our thick-restart shift-invert Lanczos (fe_lanczos.hpp) on the
+/// (docs/explanation/methods/fe.md): Spectra's shift-invert Lanczos (fe_spectra_eigs.hpp) on the
 /// standard form L^{-1} K L^{-T} (M = L L^T blockwise), applied through a banded LDL^T of K - sigma
 /// M; at most two polishing steps of inverse subspace iteration with Rayleigh-Ritz until the
 /// normwise backward error is at rounding level; and the mode count proved by Sylvester's law of
@@ -14,7 +14,6 @@
 
 #include "catena/solvers/solver_summary.hpp"
 #include "solvers/fe/fe_banded_ldlt.hpp"
-#include "solvers/fe/fe_lanczos.hpp"
 #include "solvers/fe/fe_operators.hpp"
 
 namespace catena::internal {
@@ -48,17 +47,16 @@ struct FeEigenSolution {
   std::vector<std::string> warnings;
 };
 
-/// The memory of the eigen solves of one fe run, kept between its levels: the Lanczos basis and
-/// the banded factor (the shift-invert one, then reused for the inertia count). Memory a solve
-/// touches first costs a page fault per 4 KiB; reused, it costs nothing.
+/// The memory of the eigen solves of one fe run, kept between its levels: the banded factor (the
+/// shift-invert one, then reused for the inertia count). Memory a solve touches first costs a page
+/// fault per 4 KiB; reused, it costs nothing. (Spectra allocates its Lanczos basis per solve.)
 struct FeEigenWorkspace {
-  LanczosWorkspace lanczos;
   BandedLdlt factor;
 };
 
 /// Lowest `modes` eigenpairs. `modes` must be < number of unknowns (the caller validates).
 /// `workspace` (optional) holds the buffers between calls: pass the same one to the solves of one
-/// fe run (mesh and penalty levels) so that they allocate the basis and the factor once.
+/// fe run (mesh and penalty levels) so that they allocate the factor once.
 /// `guess` (optional, one value per unknown) starts the Lanczos iteration near the wanted
 /// eigenvectors (mode_sum_guess); convergence is tested as without it.
 FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
@@ -67,10 +65,6 @@ FeEigenSolution solve_lowest_modes(const FeMatrices& matrices,
                                    int max_restarts,
                                    FeEigenWorkspace* workspace = nullptr,
                                    const Vector* guess = nullptr);
-
-/// Makes `workspace` ready for the largest of several solves of `modes` modes (the largest has
-/// `unknowns` unknowns), so that the smaller ones use the same memory.
-void reserve_for_largest_solve(FeEigenWorkspace& workspace, Eigen::Index unknowns, int modes);
 
 /// A start vector for the eigen solve of a level with `rows` unknowns from the eigenvectors
 /// `modes` of another level of the same chain: their sum, on the same mesh as it is, on a mesh

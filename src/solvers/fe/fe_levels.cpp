@@ -246,12 +246,7 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
                                      WorkMeter* meter) {
   FePlaneEigenReport report;
   long solved = 0;
-  FeEigenWorkspace workspace;  // one basis and factor for every level of this plane
-  Eigen::Index largest = 0;
-  for (const auto& row : levels)
-    for (const FeLevel& level : row)
-      largest = std::max<Eigen::Index>(largest, fe_unknowns(plane, level.chain.elements));
-  reserve_for_largest_solve(workspace, largest, modes);
+  FeEigenWorkspace workspace;                 // one banded factor for every level of this plane
   const FeEigenSolution* previous = nullptr;  // the last converged level: its modes start the next
   for (auto& row : levels) {
     for (FeLevel& level : row) {

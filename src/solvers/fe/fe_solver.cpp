@@ -453,7 +453,8 @@ ModalResult FeNumerics::modes_on_plan(Plane plane, int count) {
 SolverEntry make_fe_entry() {
   SolverEntry entry = make_solver_entry(
       "lumped-mass chain of N bar elements about its own exact statics; banded shift-invert "
-      "Lanczos (thick restart), Sylvester-inertia mode count, Richardson N/2N extrapolation",
+      "Lanczos (Spectra, implicit restarts), Sylvester-inertia mode count, Richardson N/2N "
+      "extrapolation",
       fe_knobs(), [](const SolveContext& context, const FeSolverOptions& options) {
         return std::make_unique<FeNumerics>(context, options);
       });
