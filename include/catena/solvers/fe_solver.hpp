@@ -28,12 +28,12 @@
 ///
 /// Eigenpairs. With the lumped mass factored blockwise, Mmat = L L^T (2x2 blocks), the problem is
 /// the standard symmetric one A y = lambda y, A = L^{-1} K L^{-T}, phi = L^{-T} y. Spectra's
-/// SymEigsShiftSolver runs shift-invert Lanczos on it (shift 0: the lowest modes; sorted lowest
-/// first), applying (A - sigma I)^{-1} = L^T (K - sigma Mmat)^{-1} L through a banded LDL^T of
-/// K - sigma Mmat (half bandwidth 3 in plane, 1 out of plane: O(N) to factor and to solve). The
-/// standard form avoids the Mmat-inner products of Spectra's generalized solver, which cost more
-/// than the banded solves here. The Ritz pairs are then polished by at most two steps of inverse
-/// subspace iteration with Rayleigh-Ritz, until the normwise backward error
+/// SymEigsSolver (implicitly restarted Lanczos) runs on its shift-invert operator (shift 0: the
+/// lowest modes; sorted lowest first), applying (A - sigma I)^{-1} = L^T (K - sigma Mmat)^{-1} L
+/// through a banded LDL^T of K - sigma Mmat (half bandwidth 3 in plane, 1 out of plane: O(N) to
+/// factor and to solve). The standard form avoids the Mmat-inner products of Spectra's generalized
+/// solver, which cost more than the banded solves here. The Ritz pairs are then polished by at most
+/// two steps of inverse subspace iteration with Rayleigh-Ritz, until the normwise backward error
 /// ||K phi - lambda Mmat phi|| / ((||K|| + lambda ||Mmat||) ||phi||) is at rounding level (the
 /// relative residual ||K phi - lambda Mmat phi|| / ||K phi|| of a stiff chain cannot go below about
 /// eps ||K|| / ||K phi|| ~ 1e-16 (EA/T)(2N/(pi n))^2, and is reported as it is). A singular shift
