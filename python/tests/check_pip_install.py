@@ -4,8 +4,9 @@
 that environment and outside the source tree, an import, the typing files, and one solve.
 
 The library the install builds against (python/setup.py):
-- when this build tree installs a catenaConfig.cmake, it is installed (`cmake --install`) into a
-  temporary prefix and found there by find_package, the way a user with an installed catena builds;
+- when this build tree installs catena's CMake package (catenaConfig.cmake), the build is installed
+  (`cmake --install`) into a temporary prefix and found there by find_package, the way a user with
+  an installed catena builds (only the extension is compiled, in python/build/);
 - otherwise (before the library is installable) the build tree's own module is packaged
   (CATENA_BUILD_DIR).
 The other way, the library compiled from the sources, takes ~15 minutes on 2 cores and is not run
@@ -42,9 +43,11 @@ print("catena", catena.__version__, "from", package, "omega_rad_s", out.inplane.
 
 
 def installs_cmake_package(build_dir: pathlib.Path) -> bool:
-    """Whether `cmake --install` of this build tree writes a catenaConfig.cmake."""
-    return any("catenaConfig.cmake" in path.read_text(errors="replace")
-               for path in build_dir.rglob("cmake_install.cmake"))
+    """Whether `cmake --install` of this build tree writes catena's CMake package (either of the
+    names find_package looks for)."""
+    names = ("catenaConfig.cmake", "catena-config.cmake")
+    return any(name in path.read_text(errors="replace")
+               for path in build_dir.rglob("cmake_install.cmake") for name in names)
 
 
 def run(command: list[str], **kwargs: object) -> None:
