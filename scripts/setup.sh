@@ -12,6 +12,11 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-scipy
   python3-dev pybind11-dev python3-numpy python3-pytest   # the Python module and its tests (docs/reference/python.md)
+  python3-venv        # pip install ./python into a virtual environment (test python_pip_install)
+  python3-pip         # pip itself, in that environment
+  python3-setuptools  # the build backend of python/pyproject.toml (pip --no-build-isolation)
+  python3-wheel       # setuptools builds the wheel pip installs
+  python3-mypy        # the stubs and annotations checked by mypy and stubtest (python/tests/test_typing.py)
   universal-ctags     # the function-length check (scripts/check_function_length.py)
   clang-format        # the formatting check (scripts/check_format.py)
   chromium            # the HTML report is checked in headless Chromium (test skipped without it)

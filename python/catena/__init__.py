@@ -10,6 +10,10 @@ in every name. Documentation: docs/reference/python.md.
     >>> r.statics.horizontal_force_n
     >>> r["shooting"].inplane.omega_rad_s          # numpy array, lowest first
 
+Each solver also runs on its own: catena.solve_fe(problem, request, elements=800), and likewise
+solve_shooting, solve_frobenius, solve_asymptotic, solve_airy, with their knobs as typed keyword
+arguments. A missing value (no error estimate, not asked, not counted) is None, or NaN in an array.
+
 Errors: bad input raises catena.InvalidInput (a ValueError) naming the field; an unreadable or
 malformed scene raises catena.ParseError (a subclass of InvalidInput). Numerical trouble is never
 an exception: it is a status in each result's summary. Solves release the GIL.
@@ -17,8 +21,9 @@ an exception: it is a status in each result's summary. Solves release the GIL.
 
 import json
 import os
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import Any, Optional, Union
 
 from ._catena import (Cable, CertifiedReference, Check, ConvergenceStudy, dimensionless_groups,
                       ExternalCheck, ForcedRequest, ForcedResponse, Groups, InvalidInput, Line, LineSegment,
@@ -28,18 +33,25 @@ from ._catena import (Cable, CertifiedReference, Check, ConvergenceStudy, dimens
 from . import _catena
 from ._check_results import ORIGIN as _RESULTS_ORIGIN, _NotAValue, results_json_text
 from ._scene_dict import scene_toml_text
+from ._solver_functions import solve_airy, solve_asymptotic, solve_fe, solve_frobenius, solve_shooting
 
 __all__ = [
     "Cable", "CertifiedReference", "Check", "ConvergenceStudy", "ExternalCheck", "ForcedRequest",
     "ForcedResponse", "Groups", "InvalidInput", "Knob", "Line", "LineSegment", "Mode", "ModeComparison",
     "Modes", "ModeShapes", "ParseError", "PointAttachment", "Problem", "Seabed", "Request",
     "ResolutionComparison", "Result", "Scene", "SolverInfo", "SolverResult", "Statics", "Summary", "check",
-    "dimensionless_groups", "load_scene", "load_scenes", "run_solver", "solve", "solve_statics",
-    "solve_sweep", "solvers",
+    "dimensionless_groups", "load_scene", "load_scenes", "run_solver", "solve", "solve_airy",
+    "solve_asymptotic", "solve_fe", "solve_frobenius", "solve_shooting", "solve_statics", "solve_sweep",
+    "solvers", "__version__",
 ]
 
+#: What names a scene: the path of a TOML file, a dict with the file's structure, or a Scene.
+SceneSource = Union[str, os.PathLike[str], Mapping[str, Any], Scene]
+#: Solver names: one, several, or None for the scene's own list.
+SolverNames = Union[str, Iterable[str], None]
 
-def load_scenes(scene):
+
+def load_scenes(scene: SceneSource) -> list[Scene]:
     """The scenes of a TOML file (path) or of a dict with the file's structure: one, or one per
     value of a [sweep]. A dict goes through the same reader as a file (docs/reference/python.md)."""
     if isinstance(scene, Scene):
@@ -53,7 +65,7 @@ def load_scenes(scene):
     raise TypeError(f"scene: expected a path, a dict or a catena.Scene, got {type(scene).__name__}")
 
 
-def load_scene(scene):
+def load_scene(scene: SceneSource) -> Scene:
     """One scene (path, dict or Scene); a sweep raises InvalidInput (use load_scenes)."""
     scenes = load_scenes(scene)
     if len(scenes) != 1:
@@ -62,7 +74,7 @@ def load_scene(scene):
     return scenes[0]
 
 
-def _solver_list(solvers):
+def _solver_list(solvers: SolverNames) -> list[str]:
     if solvers is None:
         return []
     if isinstance(solvers, str):
@@ -70,7 +82,8 @@ def _solver_list(solvers):
     return list(solvers)
 
 
-def solve(scene, *, solvers=None, time_limit_s=None, checks=True):
+def solve(scene: SceneSource, *, solvers: SolverNames = None, time_limit_s: Optional[float] = None,
+          checks: bool = True) -> Result:
     """Solves one scene as `catena solve` does: the statics once, then every applicable solver the
     scene names (all by default), then the cross-checks. Returns a Result.
 
@@ -83,19 +96,22 @@ def solve(scene, *, solvers=None, time_limit_s=None, checks=True):
     return _catena._run_scene(load_scene(scene), _solver_list(solvers), time_limit_s, checks)
 
 
-def solve_sweep(scene, *, solvers=None, time_limit_s=None, checks=True):
+def solve_sweep(scene: SceneSource, *, solvers: SolverNames = None, time_limit_s: Optional[float] = None,
+                checks: bool = True) -> list[Result]:
     """Solves every scene of a file or dict (each value of a [sweep]); a list of Result."""
     names = _solver_list(solvers)
     return [_catena._run_scene(s, names, time_limit_s, checks) for s in load_scenes(scene)]
 
 
-def _existing_path(path, what):
+def _existing_path(path: Union[str, os.PathLike[str]], what: str) -> str:
     if not os.path.exists(path):
         raise FileNotFoundError(2, f"{what} file not found", os.fspath(path))
     return os.fspath(path)
 
 
-def check(results, scene, rtol=1e-3, shapes=None):
+def check(results: Union[str, os.PathLike[str], Sequence[Mapping[str, Any]], Mapping[str, Any]],
+          scene: SceneSource, rtol: float = 1e-3,
+          shapes: Union[str, os.PathLike[str], None] = None) -> ExternalCheck:
     """Compares another code's natural frequencies with Catena's certified reference for `scene`, as
     `catena check` does (docs/how-to/check.md, docs/reference/python.md). Returns an ExternalCheck: `.references`
     (the solver used per plane and why), `.modes` (per mode of the other code: its value, Catena's
@@ -136,7 +152,7 @@ class Knob:
     #: "integer", "real", "flag" or "choice"
     type: str
     #: the default as a Python value (int, float, bool or str)
-    default: object
+    default: Union[int, float, bool, str]
     #: the default as a scene writes it
     default_text: str
     #: the valid values in words, e.g. "[2, 5e+07]", "(0, 0.01]", '"rk" or "adams" or "bdf"'
@@ -148,24 +164,26 @@ class SolverInfo:
     """A solver of the registry: name, method and knobs."""
     name: str
     description: str
-    knobs: tuple
+    knobs: tuple[Knob, ...]
 
-    def defaults(self):
+    def defaults(self) -> dict[str, Union[int, float, bool, str]]:
         """{knob: default} as a Python dict."""
         return {knob.name: knob.default for knob in self.knobs}
 
 
-def _default_value(kind, text):
+def _default_value(kind: str, text: str) -> Union[int, float, bool, str]:
     if kind == "flag":
         return text == "true"
     if kind == "integer":
         return int(float(text)) if any(c in text for c in ".eE") else int(text)
     if kind == "real":
         return float(text)
-    return json.loads(text) if text.startswith('"') else text
+    if text.startswith('"'):
+        return str(json.loads(text))
+    return text
 
 
-def solvers():
+def solvers() -> list[SolverInfo]:
     """Every solver, in registry order (fe, shooting, frobenius, asymptotic, airy), with its knobs:
     a list of SolverInfo. The same tables as `catena solvers` and docs/reference/solver-knobs.md."""
     return [
@@ -174,22 +192,3 @@ def solvers():
                          for k, d, kind, text, valid in knobs))
         for name, description, knobs in _catena._registry()
     ]
-
-
-def _solver_function(info):
-    def solve_with(problem, request=None, *, statics=None, time_limit_s=None, **knobs):
-        return run_solver(info.name, problem, request, knobs, statics=statics, time_limit_s=time_limit_s)
-
-    knob_lines = "\n".join(f"    {k.name} ({k.type}, {k.valid or 'true, false'}; default {k.default_text}): "
-                           f"{k.description}" for k in info.knobs)
-    solve_with.__name__ = solve_with.__qualname__ = f"solve_{info.name}"
-    solve_with.__doc__ = (
-        f"Runs the {info.name} solver: {info.description}.\n\n"
-        f"Same as catena.run_solver(\"{info.name}\", problem, request, knobs). Knobs:\n{knob_lines}\n")
-    return solve_with
-
-
-for _info in solvers():
-    globals()[f"solve_{_info.name}"] = _solver_function(_info)
-    __all__.append(f"solve_{_info.name}")
-del _info

@@ -13,6 +13,7 @@ import json
 import math
 import numbers
 from collections.abc import Mapping, Sequence
+from typing import Any
 
 ORIGIN = "<results>"
 
@@ -21,7 +22,7 @@ class _NotAValue(Exception):
     pass
 
 
-def _plain(value, path):
+def _plain(value: Any, path: str) -> Any:
     """`value` as plain JSON data. A non-finite number becomes its text, so that the reader says
     which field is not a number (JSON itself has no NaN)."""
     if value is None or isinstance(value, (bool, str)):
@@ -40,7 +41,7 @@ def _plain(value, path):
     raise _NotAValue(f"{ORIGIN}: {path}: a {type(value).__name__} is not a results value")
 
 
-def _column_values(columns):
+def _column_values(columns: Mapping[str, Any]) -> dict[str, list[Any]]:
     lengths = {}
     for name, column in columns.items():
         if isinstance(column, (str, bytes)) or not (isinstance(column, Sequence) or hasattr(column, "tolist")):
@@ -56,13 +57,13 @@ def _column_values(columns):
     return lengths
 
 
-def _rows_of_columns(columns):
+def _rows_of_columns(columns: Mapping[str, Any]) -> list[dict[str, Any]]:
     values = _column_values(columns)
     count = len(next(iter(values.values()))) if values else 0
     return [{name: column[i] for name, column in values.items() if column[i] is not None} for i in range(count)]
 
 
-def results_json_text(results):
+def results_json_text(results: Any) -> str:
     """The JSON text of `results` (rows, {"results": rows} or columns); raises _NotAValue with a
     message naming the row or column for values JSON cannot carry."""
     if isinstance(results, Mapping):

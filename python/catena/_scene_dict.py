@@ -13,6 +13,7 @@ import json
 import math
 import numbers
 from collections.abc import Mapping
+from typing import Any
 
 import numpy
 
@@ -23,17 +24,17 @@ MAX_NESTING = 64
 _INT64 = (-(2**63), 2**63 - 1)
 
 
-def _where(path):
+def _where(path: tuple[Any, ...]) -> str:
     return "<dict>" + "".join(f"[{key!r}]" for key in path)
 
 
-def _key(key, path):
+def _key(key: object, path: tuple[Any, ...]) -> str:
     if not isinstance(key, str):
         raise ParseError(f"{_where(path)}: keys must be strings, got {type(key).__name__} {key!r}")
     return json.dumps(key)
 
 
-def _number(value, path):
+def _number(value: numbers.Real, path: tuple[Any, ...]) -> str:
     if isinstance(value, numbers.Integral):
         integer = int(value)
         if not _INT64[0] <= integer <= _INT64[1]:
@@ -47,7 +48,7 @@ def _number(value, path):
     return repr(real)
 
 
-def _value(value, path, depth):
+def _value(value: Any, path: tuple[Any, ...], depth: int) -> str:
     if depth > MAX_NESTING:
         raise ParseError(f"{_where(path)}: nested deeper than {MAX_NESTING} levels (the limit)")
     if isinstance(value, (bool, numpy.bool_)):
@@ -69,7 +70,7 @@ def _value(value, path, depth):
         "(number, bool, string, list or dict)")
 
 
-def scene_toml_text(scene):
+def scene_toml_text(scene: Mapping[str, Any]) -> str:
     """The TOML text of a scene dict (same structure as the file: docs/reference/scene-format.md)."""
     if not isinstance(scene, Mapping):
         raise TypeError(f"scene: expected a dict, got {type(scene).__name__}")

@@ -8,6 +8,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,5 +34,18 @@ py::array read_only(py::array array);
 py::array_t<double> owned_array(const Vector& values);
 /// A new read-only array owning a copy of `values`.
 py::array_t<double> owned_array(const std::vector<double>& values);
+
+/// The C++ structs mark a missing value (no error estimate, not counted, not asked) with -1, a
+/// number a Python caller could compare as if it were one (`estimate < tol` passes). Python gets
+/// None for a missing scalar and NaN in an array (docs/reference/python.md, "Missing values").
+template <class T>
+std::optional<T> unless_missing(T value) {
+  if (value < T(0)) return std::nullopt;
+  return value;
+}
+/// `value`, or NaN when it is missing (negative).
+inline double nan_if_missing(double value) {
+  return value < 0.0 ? std::numeric_limits<double>::quiet_NaN() : value;
+}
 
 }  // namespace catena::python

@@ -91,9 +91,7 @@ void bind_reference(py::module_& module) {
       .def_readonly("reason", &R::reason, "why this solver, with what each exact solver reported")
       .def_property_readonly(
           "shooting_vs_fe_relative",
-          [](const R& r) {
-            return r.cross_check_relative < 0.0 ? py::none() : py::cast(r.cross_check_relative);
-          },
+          [](const R& r) { return unless_missing(r.cross_check_relative); },
           "largest relative difference of shooting and fe over the modes (None: only one "
           "converged)")
       .def_property_readonly(
@@ -115,10 +113,11 @@ void bind_reference(py::module_& module) {
           "relative_error_estimate",
           [](const R& r) {
             std::vector<double> values;
-            for (const auto& m : r.modes) values.push_back(m.relative_error_estimate);
+            for (const auto& m : r.modes)
+              values.push_back(nan_if_missing(m.relative_error_estimate));
             return owned_array(values);
           },
-          "the solver's own estimate of each mode (-1: none)")
+          "the solver's own estimate of each mode [-], NaN for a mode without one")
       .def("__repr__", [](const R& r) {
         return fmt::format("CertifiedReference({}, {}, {} modes)", to_string(r.plane), r.solver,
                            r.modes.size());
@@ -191,8 +190,10 @@ void bind_mode_comparison(py::module_& module) {
       .def_readonly("reference_omega_rad_s", &M::reference_omega_rad_s, "Catena's value")
       .def_property_readonly("reference_frequency_hz",
                              [](const M& m) { return m.reference_omega_rad_s * kRadPerSecondToHz; })
-      .def_readonly("reference_relative_estimate", &M::reference_relative_estimate,
-                    "Catena's own estimate (-1: none)")
+      .def_property_readonly(
+          "reference_relative_estimate",
+          [](const M& m) { return unless_missing(m.reference_relative_estimate); },
+          "Catena's own estimate of its value [-], None when none")
       .def_property_readonly(
           "relative_error", [](const M& m) { return finest(m, &R::relative_error); },
           "(other - Catena) / Catena")

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+
 #include "bindings.hpp"
 #include "catena/solvers/modal_result.hpp"
 #include "catena/verification/check_result.hpp"
@@ -37,12 +39,24 @@ py::array_t<T> mode_column(const std::vector<Mode>& modes, T Mode::*field) {
   return column;
 }
 
-// A per-mode quantity that is -1 when not asked (tension, modal mass): None then.
-py::object optional_column(const std::vector<Mode>& modes, double Mode::*field) {
-  for (const Mode& mode : modes) {
-    if (mode.*field < 0.0) return py::none();
+// A per-mode quantity that is -1 when missing (an error estimate, a tension or modal mass not
+// asked): NaN for each mode that lacks it.
+py::array_t<double> column_nan_if_missing(const std::vector<Mode>& modes, double Mode::*field) {
+  py::array_t<double> column(static_cast<py::ssize_t>(modes.size()));
+  for (std::size_t k = 0; k < modes.size(); ++k) {
+    column.mutable_data()[k] = nan_if_missing(modes[k].*field);
   }
-  return mode_column(modes, field);
+  read_only(column);
+  return column;
+}
+
+// A per-mode quantity only some requests ask for (tension, modal mass): None when no mode has it,
+// else NaN for a mode that lacks it.
+py::object optional_column(const std::vector<Mode>& modes, double Mode::*field) {
+  const bool any =
+      std::any_of(modes.begin(), modes.end(), [&](const Mode& mode) { return mode.*field >= 0.0; });
+  if (!any) return py::none();
+  return column_nan_if_missing(modes, field);
 }
 
 /// The shapes of one plane as tables: rows are the stations s_m, columns the modes, lowest first.
@@ -75,13 +89,27 @@ void bind_summary(py::module_& module) {
       .def_readonly("message", &S::message, "why it stopped, with numbers")
       .def_readonly("solver", &S::solver)
       .def_readonly("resolution", &S::resolution, "the resolution used, in words")
-      .def_readonly("iterations", &S::iterations, "solver-specific count (-1: not counted)")
-      .def_readonly("operations", &S::operations,
-                    "mat-vecs, RHS evaluations, ... (-1: not counted)")
-      .def_readonly("max_relative_error_estimate", &S::max_error_estimate,
-                    "largest relative error estimate over the returned frequencies (-1: none)")
-      .def_readonly("max_residual", &S::max_residual, "(-1: not applicable)")
-      .def_readonly("wall_time_s", &S::wall_time_s)
+      .def_property_readonly(
+          "iterations", [](const S& s) { return unless_missing(s.iterations); },
+          "solver-specific count (restarts, Newton steps, series terms), None when not counted")
+      .def_property_readonly(
+          "operations", [](const S& s) { return unless_missing(s.operations); },
+          "mat-vecs, RHS evaluations, ..., None when not counted")
+      .def_property_readonly(
+          "max_relative_error_estimate",
+          [](const S& s) { return unless_missing(s.max_error_estimate); },
+          "largest relative error estimate over the returned frequencies [-], None when none")
+      .def_property_readonly(
+          "max_residual", [](const S& s) { return unless_missing(s.max_residual); },
+          "largest relative eigen-residual [-], None when not applicable")
+      .def_property_readonly(
+          "accuracy_target", [](const S& s) { return unless_missing(s.accuracy_target); },
+          "relative accuracy asked of each frequency [-], None when none was asked")
+      .def_readonly("missed_modes", &S::missed_modes,
+                    "the modes whose estimate exceeds accuracy_target, one line each")
+      .def_property_readonly(
+          "wall_time_s", [](const S& s) { return unless_missing(s.wall_time_s); },
+          "wall-clock time of the solve [s], None when it did not run")
       .def_readonly("warnings", &S::warnings)
       .def_readonly("notes", &S::notes)
       .def("brief_report", &S::brief_report)
@@ -97,8 +125,14 @@ void bind_mode(py::module_& module) {
       .def_readonly("frequency_hz", &Mode::frequency_hz)
       .def_readonly("k_l_over_pi", &Mode::k_l_over_pi)
       .def_readonly("gale_ratio", &Mode::gale_ratio, "omega / sqrt(g/a), None when H = 0")
-      .def_readonly("relative_error_estimate", &Mode::relative_error_estimate, "(-1: none)")
+      .def_property_readonly(
+          "relative_error_estimate",
+          [](const Mode& m) { return unless_missing(m.relative_error_estimate); },
+          "the solver's own estimate of the relative error of omega [-], None when none")
       .def_readonly("multiplicity", &Mode::multiplicity)
+      .def_readonly("meets_target", &Mode::meets_target,
+                    "False when the estimate exceeds the summary's accuracy_target (or is missing "
+                    "while one was asked)")
       .def_property_readonly(
           "s_m", [](const Mode& m) { return owned_array(m.s_m); }, "stations [m]")
       .def_property_readonly(
@@ -111,11 +145,18 @@ void bind_mode(py::module_& module) {
           "tension_n", [](const Mode& m) { return owned_array(m.tension_n); },
           "dynamic tension along the cable [N per unit normalised amplitude]")
       .def_readonly("normalised_by", &Mode::normalised_by)
-      .def_readonly("max_abs_tension_n", &Mode::max_abs_tension_n, "(-1: not asked)")
-      .def_readonly("modal_mass_kg", &Mode::modal_mass_kg, "(-1: not asked)")
+      .def_property_readonly(
+          "max_abs_tension_n", [](const Mode& m) { return unless_missing(m.max_abs_tension_n); },
+          "max |dynamic tension| [N], None unless tension was asked")
+      .def_property_readonly(
+          "modal_mass_kg", [](const Mode& m) { return unless_missing(m.modal_mass_kg); },
+          "[kg], None unless shapes were asked")
       .def("__repr__", [](const Mode& m) {
-        return fmt::format("Mode(index={}, omega_rad_s={:.12g}, relative_error_estimate={:.3g})",
-                           m.index, m.omega_rad_s, m.relative_error_estimate);
+        return fmt::format("Mode(index={}, omega_rad_s={:.12g}, relative_error_estimate={})",
+                           m.index, m.omega_rad_s,
+                           m.relative_error_estimate < 0.0
+                               ? std::string("None")
+                               : fmt::format("{:.3g}", m.relative_error_estimate));
       });
 }
 
@@ -139,8 +180,11 @@ void bind_modal_result(py::module_& module) {
       .def_property_readonly("plane", [](const R& r) { return std::string(to_string(r.plane)); })
       .def_readonly("modes", &R::modes)
       .def_readonly("summary", &R::summary)
-      .def_readonly("proved_count_below_top", &R::proved_count_below_top,
-                    "(-1: the method has no count)")
+      .def_property_readonly(
+          "proved_count_below_top",
+          [](const R& r) { return unless_missing(r.proved_count_below_top); },
+          "eigenvalues proved to lie at or below the highest returned one, None when the method "
+          "has no count")
       .def_property_readonly("omega_rad_s",
                              [](const R& r) { return mode_column(r.modes, &Mode::omega_rad_s); })
       .def_property_readonly("frequency_hz",
@@ -149,18 +193,18 @@ void bind_modal_result(py::module_& module) {
                              [](const R& r) { return mode_column(r.modes, &Mode::k_l_over_pi); })
       .def_property_readonly(
           "relative_error_estimate",
-          [](const R& r) { return mode_column(r.modes, &Mode::relative_error_estimate); },
-          "each mode's own estimate (-1: none)")
+          [](const R& r) { return column_nan_if_missing(r.modes, &Mode::relative_error_estimate); },
+          "each mode's own estimate [-], NaN for a mode without one")
       .def_property_readonly("multiplicity",
                              [](const R& r) { return mode_column(r.modes, &Mode::multiplicity); })
       .def_property_readonly(
           "max_abs_tension_n",
           [](const R& r) { return optional_column(r.modes, &Mode::max_abs_tension_n); },
-          "[N], None unless tension was asked")
+          "[N], None unless tension was asked (NaN for a mode without it)")
       .def_property_readonly(
           "modal_mass_kg",
           [](const R& r) { return optional_column(r.modes, &Mode::modal_mass_kg); },
-          "[kg], None unless shapes were asked")
+          "[kg], None unless shapes were asked (NaN for a mode without it)")
       .def_property_readonly("shapes", &shapes_of, "ModeShapes, None unless shapes were asked")
       .def("__len__", [](const R& r) { return r.modes.size(); })
       .def("__repr__", [](const R& r) {
@@ -179,7 +223,10 @@ void bind_forced(py::module_& module) {
       .def_property_readonly("v_m", [](const F& f) { return owned_array(f.v); })
       .def_property_readonly("tension_n", [](const F& f) { return owned_array(f.tension_n); })
       .def_readonly("max_abs_tension_n", &F::max_abs_tension_n)
-      .def_readonly("relative_error_estimate", &F::relative_error_estimate, "(-1: none)")
+      .def_property_readonly(
+          "relative_error_estimate",
+          [](const F& f) { return unless_missing(f.relative_error_estimate); },
+          "estimated relative error of max_abs_tension_n [-], None when none")
       .def_readonly("diagnostic", &F::diagnostic,
                     "empty when fine, else why there is no finite answer")
       .def_readonly("at_resonance", &F::at_resonance)

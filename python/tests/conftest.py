@@ -2,6 +2,7 @@
 """Shared fixtures of the Python tests (run by ctest as python_tests: python/CMakeLists.txt sets
 PYTHONPATH to <build>/python, CATENA_CLI to the build's `catena` binary and CATENA_SOURCE_DIR)."""
 
+import math
 import os
 import pathlib
 import tomllib
@@ -42,6 +43,8 @@ def modal_values(result):
         for plane in ("inplane", "outofplane"):
             modes = getattr(output, plane)
             if modes is not None:
-                values[name, plane] = (modes.omega_rad_s.tolist(), modes.relative_error_estimate.tolist(),
-                                       modes.summary.status, modes.summary.max_relative_error_estimate)
+                # NaN (no estimate) never equals itself: compared as None
+                estimates = [None if math.isnan(e) else e for e in modes.relative_error_estimate.tolist()]
+                values[name, plane] = (modes.omega_rad_s.tolist(), estimates, modes.summary.status,
+                                       modes.summary.max_relative_error_estimate)
     return values

@@ -94,7 +94,9 @@ def test_unknown_solver_and_knob_name_themselves():
     with pytest.raises(catena.InvalidInput, match='solver "magic": unknown solver'):
         catena.run_solver("magic", mooring_problem())
     with pytest.raises(catena.InvalidInput, match=r"\[solvers\.fe\]\.bogus: unknown knob"):
-        catena.solve_fe(mooring_problem(), bogus=1)
+        catena.run_solver("fe", mooring_problem(), None, {"bogus": 1})
+    with pytest.raises(TypeError, match="bogus"):  # the typed functions name their knobs
+        catena.solve_fe(mooring_problem(), bogus=1)  # type: ignore[call-arg]
     with pytest.raises(catena.InvalidInput, match=r"\[solvers\.fe\]: knobs must be a dict"):
         catena.run_solver("fe", mooring_problem(), None, [("elements", 10)])
 
