@@ -81,8 +81,9 @@ TEST(ToleranceTable, TheBuiltinSolverDeclarationsAgreeWithTheRegistry) {
     const SolverAccuracy* declared = table.solver(entry.name);
     ASSERT_NE(declared, nullptr);
     EXPECT_EQ(declared->exact, entry.kind == SolverKind::Exact);
-    if (entry.accuracy_target && declared->accuracy_knob.empty())
+    if (entry.accuracy_target && declared->accuracy_knob.empty()) {
       EXPECT_DOUBLE_EQ(declared->accuracy, entry.accuracy_target({}));
+    }
   }
 }
 
