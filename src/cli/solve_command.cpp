@@ -30,15 +30,38 @@ struct SolveArguments {
   TableArguments tables;
 };
 
-void print_modes(const ModalResult& result, const char* title) {
+// A damped line's modes: the damped frequency omega_d = Im lambda, the decay rate delta = -Re
+// lambda and the damping ratio zeta, each with the solver's estimate; overdamped roots after them.
+void print_damped_modes(const ModalResult& result) {
+  fmt::print("    {:>4} {:>20} {:>16} {:>16} {:>12} {:>10} {:>10}\n", "mode", "omega_d [rad/s]",
+             "f_d [Hz]", "delta [1/s]", "zeta", "rel.err", "delta err");
+  const auto row = [](const Mode& mode, const std::string& label) {
+    fmt::print("    {:>4} {:>20.12g} {:>16.10g} {:>16.10g} {:>12.6g} {:>10.2e} {:>10}\n", label,
+               mode.omega_rad_s, mode.frequency_hz, mode.decay_rate_1_s, mode.damping_ratio,
+               mode.relative_error_estimate,
+               mode.decay_rate_error_estimate >= 0.0
+                   ? fmt::format("{:.2e}", mode.decay_rate_error_estimate)
+                   : std::string("-"));
+  };
+  for (const auto& mode : result.modes) row(mode, std::to_string(mode.index));
+  for (const auto& mode : result.overdamped) row(mode, fmt::format("od{}", mode.index));
+  if (!result.overdamped.empty())
+    fmt::print("    (od: overdamped roots, lambda = -delta real, no oscillation)\n");
+}
+
+void print_modes(const ModalResult& result, const char* title, bool damped) {
   fmt::print("  {} ({}):\n", title, result.summary.message);
-  fmt::print("    {:>4} {:>20} {:>16} {:>14} {:>14} {:>10}\n", "mode", "omega [rad/s]", "f [Hz]",
-             "kL/pi", "w/sqrt(g/a)", "rel.err");
-  for (const auto& mode : result.modes) {
-    fmt::print("    {:>4} {:>20.12g} {:>16.10g} {:>14.9g} {:>14} {:>10.2e}\n", mode.index,
-               mode.omega_rad_s, mode.frequency_hz, mode.k_l_over_pi,
-               mode.gale_ratio ? fmt::format("{:.9g}", *mode.gale_ratio) : std::string("-"),
-               mode.relative_error_estimate);
+  if (damped) {
+    print_damped_modes(result);
+  } else {
+    fmt::print("    {:>4} {:>20} {:>16} {:>14} {:>14} {:>10}\n", "mode", "omega [rad/s]", "f [Hz]",
+               "kL/pi", "w/sqrt(g/a)", "rel.err");
+    for (const auto& mode : result.modes) {
+      fmt::print("    {:>4} {:>20.12g} {:>16.10g} {:>14.9g} {:>14} {:>10.2e}\n", mode.index,
+                 mode.omega_rad_s, mode.frequency_hz, mode.k_l_over_pi,
+                 mode.gale_ratio ? fmt::format("{:.9g}", *mode.gale_ratio) : std::string("-"),
+                 mode.relative_error_estimate);
+    }
   }
   if (result.proved_count_below_top >= 0) {
     fmt::print("    modes proved below the top frequency: {}\n", result.proved_count_below_top);
@@ -117,6 +140,10 @@ void print_result(const SceneResult& result) {
   }
   if (scene.problem.is_uniform()) {
     print_cable(scene.problem);
+    const SectionDamping& d = scene.problem.cable.damping;
+    if (!d.is_zero())
+      fmt::print("  damping: c_t = {:g} N s/m per m, c_n = {:g} N s/m per m, c_a = {:g} N s\n",
+                 d.tangential_n_s_per_m2, d.normal_n_s_per_m2, d.axial_n_s);
     fmt::print("  statics: {}\n", result.statics->brief_report());
     print_groups(*result.groups);
   } else {
@@ -125,8 +152,9 @@ void print_result(const SceneResult& result) {
   for (const auto& output : result.outputs) {
     fmt::print("  solver {}\n", output.summary.brief_report());
     for (const auto& warning : output.summary.warnings) fmt::print("    warning: {}\n", warning);
-    if (output.inplane) print_modes(*output.inplane, "in-plane");
-    if (output.outofplane) print_modes(*output.outofplane, "out-of-plane");
+    const bool damped = scene.problem.is_damped();
+    if (output.inplane) print_modes(*output.inplane, "in-plane", damped);
+    if (output.outofplane) print_modes(*output.outofplane, "out-of-plane", damped);
     for (const auto& response : output.forced) {
       fmt::print("    forced at {:.6g} rad/s: max |tau| = {:.6g} N{}\n", response.omega_rad_s,
                  response.max_abs_tension_n,

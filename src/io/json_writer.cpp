@@ -54,7 +54,11 @@ json mode_json(const Mode& mode) {
               {key::k_l_over_pi, number(mode.k_l_over_pi)},
               {key::gale_ratio, mode.gale_ratio ? number(*mode.gale_ratio) : json(nullptr)},
               {key::relative_error_estimate, number(mode.relative_error_estimate)},
-              {key::meets_target, mode.meets_target}};
+              {key::meets_target, mode.meets_target},
+              {key::decay_rate_1_s, number(mode.decay_rate_1_s)},
+              {key::damping_ratio, number(mode.damping_ratio)}};
+  if (mode.decay_rate_error_estimate >= 0.0)
+    out[key::decay_rate_error_estimate] = number(mode.decay_rate_error_estimate);
   if (mode.max_abs_tension_n >= 0.0) out[key::max_abs_tension_n] = number(mode.max_abs_tension_n);
   if (mode.modal_mass_kg >= 0.0) out[key::modal_mass_kg] = number(mode.modal_mass_kg);
   if (mode.s_m.size()) {
@@ -63,6 +67,10 @@ json mode_json(const Mode& mode) {
     if (mode.w.size()) shape[key::w] = vector_json(mode.w);
     if (mode.v.size()) shape[key::v] = vector_json(mode.v);
     if (mode.tension_n.size()) shape[key::tension_n] = vector_json(mode.tension_n);
+    if (mode.u_imag.size()) shape[key::u_imag] = vector_json(mode.u_imag);
+    if (mode.w_imag.size()) shape[key::w_imag] = vector_json(mode.w_imag);
+    if (mode.v_imag.size()) shape[key::v_imag] = vector_json(mode.v_imag);
+    if (mode.tension_imag_n.size()) shape[key::tension_imag_n] = vector_json(mode.tension_imag_n);
     out[key::shape] = shape;
   }
   return out;
@@ -71,9 +79,15 @@ json mode_json(const Mode& mode) {
 json modal_json(const ModalResult& result) {
   json modes = json::array();
   for (const auto& mode : result.modes) modes.push_back(mode_json(mode));
-  return {{key::proved_count_below_top, result.proved_count_below_top},
-          {key::summary, summary_json(result.summary)},
-          {key::modes, modes}};
+  json out = {{key::proved_count_below_top, result.proved_count_below_top},
+              {key::summary, summary_json(result.summary)},
+              {key::modes, modes}};
+  if (!result.overdamped.empty()) {
+    json overdamped = json::array();
+    for (const auto& mode : result.overdamped) overdamped.push_back(mode_json(mode));
+    out[key::overdamped] = overdamped;
+  }
+  return out;
 }
 
 // The response along the cable (s, u, w, v, tension) is written only when the request asks for
@@ -91,6 +105,11 @@ json forced_json(const ForcedResponse& response, bool along_cable) {
   if (response.w.size()) out[key::w_m] = vector_json(response.w);
   if (response.v.size()) out[key::v_m] = vector_json(response.v);
   if (response.tension_n.size()) out[key::tension_n] = vector_json(response.tension_n);
+  if (response.u_imag.size()) out[key::u_imag_m] = vector_json(response.u_imag);
+  if (response.w_imag.size()) out[key::w_imag_m] = vector_json(response.w_imag);
+  if (response.v_imag.size()) out[key::v_imag_m] = vector_json(response.v_imag);
+  if (response.tension_imag_n.size())
+    out[key::tension_imag_n] = vector_json(response.tension_imag_n);
   return out;
 }
 
@@ -106,15 +125,26 @@ json output_json(const SolverOutput& output, bool along_cable) {
   return out;
 }
 
+// A section's damping [N s/m per m, N s], written only when it is damped (undamped documents are
+// unchanged).
+void add_damping_json(json& out, const SectionDamping& damping) {
+  if (damping.is_zero()) return;
+  out[key::damping] = {{key::tangential_n_s_per_m2, damping.tangential_n_s_per_m2},
+                       {key::normal_n_s_per_m2, damping.normal_n_s_per_m2},
+                       {key::axial_n_s, damping.axial_n_s}};
+}
+
 json line_json(const Line& line) {
   json segments = json::array(), points = json::array();
   for (const LineSegment& g : line.segments) {
-    segments.push_back({{key::length_m, g.length_m},
-                        {key::weight_n_per_m, g.weight_n_per_m},
-                        {key::axial_stiffness_n, number(g.axial_stiffness_n)},
-                        {key::inextensible, g.is_inextensible()},
-                        {key::mass_kg_per_m, g.mass_kg_per_m},
-                        {key::added_mass_kg_per_m, g.added_mass_kg_per_m}});
+    json segment = {{key::length_m, g.length_m},
+                    {key::weight_n_per_m, g.weight_n_per_m},
+                    {key::axial_stiffness_n, number(g.axial_stiffness_n)},
+                    {key::inextensible, g.is_inextensible()},
+                    {key::mass_kg_per_m, g.mass_kg_per_m},
+                    {key::added_mass_kg_per_m, g.added_mass_kg_per_m}};
+    add_damping_json(segment, g.damping);
+    segments.push_back(segment);
   }
   for (const PointAttachment& p : line.points) {
     points.push_back(
@@ -136,14 +166,15 @@ json problem_form_json(const Problem& problem) {
              {{key::a_m, {problem.supports.a_m.x(), problem.supports.a_m.y()}},
               {key::b_m, {problem.supports.b_m.x(), problem.supports.b_m.y()}}}}};
   }
+  json cable = {{key::length_m, c.length_m},
+                {key::weight_n_per_m, c.weight_n_per_m},
+                {key::axial_stiffness_n, number(c.axial_stiffness_n)},
+                {key::inextensible, c.is_inextensible()},
+                {key::mass_kg_per_m, c.mass_kg_per_m},
+                {key::added_mass_kg_per_m, c.added_mass_kg_per_m}};
+  add_damping_json(cable, c.damping);
   return {{key::form, to_string(problem.form)},
-          {key::cable,
-           {{key::length_m, c.length_m},
-            {key::weight_n_per_m, c.weight_n_per_m},
-            {key::axial_stiffness_n, number(c.axial_stiffness_n)},
-            {key::inextensible, c.is_inextensible()},
-            {key::mass_kg_per_m, c.mass_kg_per_m},
-            {key::added_mass_kg_per_m, c.added_mass_kg_per_m}}},
+          {key::cable, cable},
           {key::supports,
            {{key::a_m, {problem.supports.a_m.x(), problem.supports.a_m.y()}},
             {key::b_m, {problem.supports.b_m.x(), problem.supports.b_m.y()}}}}};
@@ -158,6 +189,8 @@ json problem_json(const Problem& problem) {
                         {key::friction, bed.friction},
                         {key::stiffness_n_per_m2, bed.stiffness_n_per_m2},
                         {key::tangential_stiffness_n_per_m2, bed.tangential_stiffness_n_per_m2}};
+    if (bed.damping_n_s_per_m2 > 0.0)
+      out[key::seabed][key::damping_n_s_per_m2] = bed.damping_n_s_per_m2;
   }
   return out;
 }

@@ -43,6 +43,18 @@ double read_axial_stiffness(TableReader& cable) {
   return ea;
 }
 
+// The damping keys of [cable] and of each [[line.segments]] (docs/reference/scene-format.md,
+// "Damping"); all default to 0 (undamped).
+SectionDamping read_section_damping(TableReader& table) {
+  SectionDamping damping;
+  damping.tangential_n_s_per_m2 =
+      table.checked("damping_tangential", non_negative, "finite and >= 0", "N s/m per m", 0.0);
+  damping.normal_n_s_per_m2 =
+      table.checked("damping_normal", non_negative, "finite and >= 0", "N s/m per m", 0.0);
+  damping.axial_n_s = table.checked("axial_damping", non_negative, "finite and >= 0", "N s", 0.0);
+  return damping;
+}
+
 Problem read_physical(TableReader& root, const std::string& origin) {
   Problem problem;
   TableReader cable = root.subtable("cable");
@@ -52,6 +64,7 @@ Problem read_physical(TableReader& root, const std::string& origin) {
   problem.cable.mass_kg_per_m = cable.checked("mass", positive, "finite and > 0", "kg/m");
   problem.cable.added_mass_kg_per_m =
       cable.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
+  problem.cable.damping = read_section_damping(cable);
   problem.supports.a_m = cable.point("a");
   problem.supports.b_m = cable.point("b");
   cable.finish();
@@ -92,6 +105,7 @@ LineSegment read_segment(TableReader& table) {
   segment.mass_kg_per_m = table.checked("mass", positive, "finite and > 0", "kg/m");
   segment.added_mass_kg_per_m =
       table.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
+  segment.damping = read_section_damping(table);
   table.finish();
   return segment;
 }
@@ -136,8 +150,8 @@ Problem read_line(TableReader& root, const std::string& origin) {
   }
   if (line.segments.size() == 1 && line.points.empty() && line.segments[0].weight_n_per_m > 0.0) {
     const LineSegment& segment = line.segments[0];
-    problem.cable = {segment.length_m, segment.weight_n_per_m, segment.axial_stiffness_n,
-                     segment.mass_kg_per_m, segment.added_mass_kg_per_m};
+    problem.cable = {segment.length_m,      segment.weight_n_per_m,      segment.axial_stiffness_n,
+                     segment.mass_kg_per_m, segment.added_mass_kg_per_m, segment.damping};
     problem.line = Line{};
   }
   try {
@@ -148,15 +162,50 @@ Problem read_line(TableReader& root, const std::string& origin) {
   return problem;
 }
 
+// The physical damping of a taut_inclined problem from its nondimensional coefficients:
+// c_t = eta_t sqrt(T0 M) / L, c_n = eta_n sqrt(T0 M) / L, c_a = eta_a L sqrt(T0 M), with
+// make_taut_inclined_problem's T0 = 1 N (problem_builders.hpp), its M and its L.
+SectionDamping scaled_taut_damping(const SectionDamping& eta, const Problem& problem) {
+  const double t0_n = 1.0;
+  const double length = problem.cable.length_m;
+  const double impedance = std::sqrt(t0_n * problem.cable.normal_mass_kg_per_m());
+  SectionDamping damping;
+  damping.tangential_n_s_per_m2 = eta.tangential_n_s_per_m2 * impedance / length;
+  damping.normal_n_s_per_m2 = eta.normal_n_s_per_m2 * impedance / length;
+  damping.axial_n_s = eta.axial_n_s * impedance * length;
+  return damping;
+}
+
+// sqrt(g / a) rho of Gale's form: rho = m, g = W0 / m, a = H / W0 (from the builder's values).
+double gale_damping_scale(const Problem& problem) {
+  const CableProperties& c = problem.cable;
+  const double horizontal =
+      problem.prescribed_forces ? problem.prescribed_forces->horizontal_n : c.weight_n_per_m;
+  const double g = c.weight_n_per_m / c.mass_kg_per_m;
+  const double a = horizontal / c.weight_n_per_m;
+  return c.mass_kg_per_m * std::sqrt(g / a);
+}
+
 Problem read_taut_inclined(TableReader& root, const std::string& origin) {
   TableReader form = root.subtable("taut_inclined");
   const double eps = form.checked("eps", positive, "finite and > 0", "-");
   const double phi = form.checked("phi_deg", any_value, "finite", "deg");
   const double lambda2 = form.checked("lambda2", positive, "finite and > 0", "-");
   const double h = form.checked("mass_ratio", positive, "finite and > 0", "-", 1.0);
+  // Damping in the form's own units (L = 1 m, T0 = 1 N, M = 1 kg/m, so sqrt(T0 M) / L = 1):
+  // eta_tangential = c_t L / sqrt(T0 M), eta_normal = c_n L / sqrt(T0 M),
+  // eta_axial = c_a / (L sqrt(T0 M)) (docs/reference/scene-format.md, "Damping").
+  SectionDamping damping;
+  damping.tangential_n_s_per_m2 =
+      form.checked("eta_tangential", non_negative, "finite and >= 0", "-", 0.0);
+  damping.normal_n_s_per_m2 = form.checked("eta_normal", non_negative, "finite and >= 0", "-", 0.0);
+  damping.axial_n_s = form.checked("eta_axial", non_negative, "finite and >= 0", "-", 0.0);
   form.finish();
   try {
-    return make_taut_inclined_problem(eps, phi, lambda2, h);
+    Problem problem = make_taut_inclined_problem(eps, phi, lambda2, h);
+    problem.cable.damping = scaled_taut_damping(damping, problem);
+    problem.validate();
+    return problem;
   } catch (const InvalidInput& error) {
     throw InvalidInput(fmt::format("{}: [taut_inclined]: {}", origin, error.what()));
   }
@@ -171,17 +220,28 @@ Problem read_gale(TableReader& root, const std::string& origin) {
         fmt::format("{}: [gale] needs either (xi1, xi2) or (h_over_b, sag_param), not {}", origin,
                     by_xi ? "both" : "neither"));
   }
+  // Gale's eqs. 2.28e,f: eta = f / rho sqrt(a / g), rho the mass per length (no added mass in his
+  // form), so f = eta rho sqrt(g / a) (= eta in the form's units, rho = a = g = 1).
+  const double eta1 = form.checked("eta1", non_negative, "finite and >= 0", "-", 0.0);
+  const double eta2 = form.checked("eta2", non_negative, "finite and >= 0", "-", 0.0);
   try {
+    Problem problem;
     if (by_xi) {
       const double xi1 = form.number("xi1");
       const double xi2 = form.number("xi2");
       form.finish();
-      return make_gale_xi_problem(xi1, xi2);
+      problem = make_gale_xi_problem(xi1, xi2);
+    } else {
+      const double h_over_b = form.number("h_over_b");
+      const double sag = form.number("sag_param");
+      form.finish();
+      problem = make_gale_sag_problem(h_over_b, sag);
     }
-    const double h_over_b = form.number("h_over_b");
-    const double sag = form.number("sag_param");
-    form.finish();
-    return make_gale_sag_problem(h_over_b, sag);
+    const double scale = gale_damping_scale(problem);
+    problem.cable.damping.tangential_n_s_per_m2 = eta1 * scale;
+    problem.cable.damping.normal_n_s_per_m2 = eta2 * scale;
+    problem.validate();
+    return problem;
   } catch (const InvalidInput& error) {
     throw InvalidInput(fmt::format("{}: [gale]: {}", origin, error.what()));
   }
@@ -217,6 +277,8 @@ void read_seabed(TableReader& root, Problem& problem, const std::string& origin)
       table.checked("stiffness", non_negative, "finite and >= 0", "N/m per m", 0.0);
   seabed.tangential_stiffness_n_per_m2 =
       table.checked("tangential_stiffness", non_negative, "finite and >= 0", "N/m per m", 0.0);
+  seabed.damping_n_s_per_m2 =
+      table.checked("damping", non_negative, "finite and >= 0", "N s/m per m", 0.0);
   table.finish();
   problem.seabed = seabed;
   try {

@@ -50,6 +50,32 @@ void CableProperties::validate() const {
   }
   if (added_mass_kg_per_m > 0.0)
     require_finite_positive(added_mass_kg_per_m, "added_mass_kg_per_m", "kg/m");
+  validate_damping();
+}
+
+void CableProperties::validate_damping() const {
+  struct Coefficient {
+    double value;
+    const char* field;
+    const char* unit;
+  };
+  const Coefficient coefficients[] = {
+      {damping.tangential_n_s_per_m2, "damping_tangential", "N s/m per m"},
+      {damping.normal_n_s_per_m2, "damping_normal", "N s/m per m"},
+      {damping.axial_n_s, "axial_damping", "N s"}};
+  for (const Coefficient& c : coefficients) {
+    if (!std::isfinite(c.value) || c.value < 0.0) {
+      throw InvalidInput(fmt::format("Invalid cable.{} = {}: must be finite and >= 0 [{}]", c.field,
+                                     c.value, c.unit));
+    }
+    if (c.value > 0.0) require_finite_positive(c.value, c.field, c.unit);
+  }
+  if (is_inextensible() && damping.axial_n_s > 0.0) {
+    throw InvalidInput(fmt::format(
+        "Invalid cable.axial_damping = {}: an inextensible cable (EA = inf) has no axial strain to "
+        "damp; give a finite EA or remove axial_damping [N s]",
+        damping.axial_n_s));
+  }
 }
 
 void Supports::validate() const {
@@ -89,6 +115,11 @@ std::string to_string(ProblemForm form) {
       return "gale_sag";
   }
   return "unknown";
+}
+
+bool Problem::is_damped() const {
+  const bool line_damped = is_uniform() ? !cable.damping.is_zero() : line.is_damped();
+  return line_damped || (seabed && seabed->damping_n_s_per_m2 > 0.0);
 }
 
 Line Problem::as_line() const { return is_uniform() ? line_of_cable(cable) : line; }

@@ -46,6 +46,16 @@ void validate_segment(const LineSegment& segment, std::size_t index) {
         fmt::format("Invalid line.{}EA = {}: must be > 0 or \"inf\" (inextensible) [N]", name, ea));
   }
   if (!segment.is_inextensible()) require_value(ea, name + "EA", "N", 1, kMaxAxialStiffness);
+  require_value(segment.damping.tangential_n_s_per_m2, name + "damping_tangential", "N s/m per m",
+                0);
+  require_value(segment.damping.normal_n_s_per_m2, name + "damping_normal", "N s/m per m", 0);
+  require_value(segment.damping.axial_n_s, name + "axial_damping", "N s", 0);
+  if (segment.is_inextensible() && segment.damping.axial_n_s > 0.0) {
+    throw InvalidInput(fmt::format(
+        "Invalid line.{}axial_damping = {}: an inextensible segment (EA = inf) has no axial "
+        "strain to damp; give a finite EA or remove axial_damping [N s]",
+        name, segment.damping.axial_n_s));
+  }
 }
 
 void validate_point(const PointAttachment& point,
@@ -109,10 +119,17 @@ void Line::validate() const {
   }
 }
 
+bool Line::is_damped() const {
+  for (const LineSegment& segment : segments) {
+    if (!segment.damping.is_zero()) return true;
+  }
+  return false;
+}
+
 Line line_of_cable(const CableProperties& cable) {
   Line line;
   line.segments.push_back({cable.length_m, cable.weight_n_per_m, cable.axial_stiffness_n,
-                           cable.mass_kg_per_m, cable.added_mass_kg_per_m});
+                           cable.mass_kg_per_m, cable.added_mass_kg_per_m, cable.damping});
   return line;
 }
 

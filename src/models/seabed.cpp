@@ -25,6 +25,7 @@ void Seabed::validate() const {
   require_finite_non_negative(friction, "friction", "-");
   require_finite_non_negative(stiffness_n_per_m2, "stiffness", "N/m per m");
   require_finite_non_negative(tangential_stiffness_n_per_m2, "tangential_stiffness", "N/m per m");
+  require_finite_non_negative(damping_n_s_per_m2, "damping", "N s/m per m");
 }
 
 }  // namespace catena

@@ -38,6 +38,8 @@ struct CableProperties {
   /// Added (hydrodynamic) mass per unit unstretched length ma [kg/m], acting in the normal
   /// directions only. Must be finite and >= 0.
   double added_mass_kg_per_m = 0.0;
+  /// Linear drag and axial damping (docs/explanation/physics.md, "Damping"); zero: undamped.
+  SectionDamping damping;
 
   /// M = m + ma: the mass that resists normal motion [kg/m].
   double normal_mass_kg_per_m() const { return mass_kg_per_m + added_mass_kg_per_m; }
@@ -47,6 +49,9 @@ struct CableProperties {
   /// Throws InvalidInput naming the field, its value and the violated constraint (including the
   /// magnitude bounds kMinCableMagnitude..kMaxCableMagnitude).
   void validate() const;
+
+ private:
+  void validate_damping() const;
 };
 
 /// End points of the cable in one vertical plane: x horizontal, z up [m]. `s = 0` at `a`.
@@ -94,6 +99,10 @@ struct Problem {
   /// go below it (catena/statics/seabed_statics.hpp).
   std::optional<Seabed> seabed;
 
+  /// True when the line (or the cable) or the seabed has a non-zero damping coefficient: the
+  /// natural frequencies become complex roots lambda = -delta + i omega_d
+  /// (docs/explanation/physics.md, "Damping").
+  bool is_damped() const;
   /// True for the uniform `cable` (line.segments empty).
   bool is_uniform() const { return line.segments.empty(); }
   /// The line either way: `line`, or the one segment of `cable`.

@@ -14,6 +14,24 @@ namespace catena {
 
 struct CableProperties;
 
+/// Linear damping of a cable section, per unit *unstretched* length (docs/explanation/physics.md,
+/// "Damping"). All zero by default: then the line is undamped and every result is the undamped
+/// one, bit for bit.
+struct SectionDamping {
+  /// Tangential drag c_t (Gale's f1) [N s/m per m]: force -c_t (velocity . t) per unit length.
+  /// Finite and >= 0.
+  double tangential_n_s_per_m2 = 0.0;
+  /// Normal drag c_n (Gale's f2) [N s/m per m], in both normal directions (in plane and out of
+  /// plane). Finite and >= 0.
+  double normal_n_s_per_m2 = 0.0;
+  /// Kelvin-Voigt axial damping c_a [N s]: the dynamic tension is tau = EA eps + c_a d(eps)/dt
+  /// (MoorDyn's BA). Finite and >= 0; must be 0 for an inextensible section (no axial strain).
+  double axial_n_s = 0.0;
+  /// True when every coefficient is 0.
+  bool is_zero() const {
+    return tangential_n_s_per_m2 == 0.0 && normal_n_s_per_m2 == 0.0 && axial_n_s == 0.0;
+  }
+};
 /// One segment of a line, per unit *unstretched* length.
 struct LineSegment {
   /// Unstretched length [m]. Finite and > 0.
@@ -27,6 +45,8 @@ struct LineSegment {
   double mass_kg_per_m = 1.0;
   /// Added mass per unit unstretched length in the normal directions [kg/m]. Finite and >= 0.
   double added_mass_kg_per_m = 0.0;
+  /// Linear drag and axial damping of the segment (zero: undamped).
+  SectionDamping damping;
 
   double normal_mass_kg_per_m() const { return mass_kg_per_m + added_mass_kg_per_m; }
   bool is_inextensible() const;
@@ -69,6 +89,8 @@ struct Line {
   double segment_start_m(std::size_t index) const;
   /// True when no segment is extensible.
   bool is_inextensible() const;
+  /// True when some segment has a non-zero damping coefficient.
+  bool is_damped() const;
 
   /// Throws InvalidInput naming the field (`line.segments[2].length`, `line.points[0].s`), its
   /// value and the constraint: non-finite or out-of-range values, points outside (0, L), points

@@ -21,8 +21,12 @@ struct Seabed {
   /// (0: frictionless). Finite, >= 0.
   double tangential_stiffness_n_per_m2 = 0.0;
 
+  /// Dashpot per unit unstretched length c_s under the grounded part, in parallel with the
+  /// vertical stiffness k_s, in the linear dynamics [N s/m per m] (MoorPy's cbot). Finite, >= 0.
+  double damping_n_s_per_m2 = 0.0;
+
   /// Throws InvalidInput naming the field (`seabed.z`, `seabed.friction`, `seabed.stiffness`,
-  /// `seabed.tangential_stiffness`), its value and the constraint.
+  /// `seabed.tangential_stiffness`, `seabed.damping`), its value and the constraint.
   void validate() const;
 };
 

@@ -20,10 +20,26 @@
 namespace catena {
 
 /// One natural mode.
+///
+/// Damped lines (docs/explanation/physics.md, "Damping"): the motion is Re[phi(s) e^(lambda t)]
+/// with the characteristic root lambda = -delta + i omega_d. `omega_rad_s` is then the damped
+/// frequency omega_d = Im lambda (and Hz, kL/pi and Gale's ratio convert it), `decay_rate_1_s`
+/// is delta = -Re lambda and `damping_ratio` is zeta = delta / |lambda|. The shape is complex:
+/// u, w, v and tension_n hold its real parts and the `_imag` vectors its imaginary parts, after
+/// the normalisation of this file applied to the magnitude (the largest |w| is 1 and real
+/// positive). Undamped: delta = zeta = 0 and the `_imag` vectors are empty.
 struct Mode {
   /// 1-based, lowest first, within its plane.
   int index = 0;
+  /// Natural frequency [rad/s]; for a damped line the damped frequency omega_d = Im lambda.
   double omega_rad_s = 0.0;
+  /// delta = -Re lambda [1/s]: the amplitude decays as e^(-delta t); 0 when undamped.
+  double decay_rate_1_s = 0.0;
+  /// zeta = delta / |lambda| [-]; 0 when undamped, 1 for an overdamped (real) root.
+  double damping_ratio = 0.0;
+  /// Estimated relative error of decay_rate_1_s on its own, |delta - delta_exact| / delta (the
+  /// solver's own estimate; -1: none, or an undamped line).
+  double decay_rate_error_estimate = -1.0;
   double frequency_hz = 0.0;
   /// kL/pi with k = omega / sqrt(T0/M).
   double k_l_over_pi = 0.0;
@@ -52,6 +68,11 @@ struct Mode {
   std::string normalised_by;
   /// Dynamic tension tau(s_j) = t . A Phi' [N], present when tension and shapes were asked.
   Vector tension_n;
+  /// Imaginary parts of u, w, v and tension_n for a damped mode (same sizes); empty otherwise.
+  Vector u_imag;
+  Vector w_imag;
+  Vector v_imag;
+  Vector tension_imag_n;
   /// max_s |tau| for the normalised mode [N], when tension was asked (-1 otherwise).
   double max_abs_tension_n = -1.0;
   /// int (m u^2 + M w^2) ds (in-plane) or int M v^2 ds (out of plane) for the normalised
@@ -66,6 +87,10 @@ struct ModalResult {
   /// Number of eigenvalues proved to lie below (or at) the highest returned frequency, by a
   /// counting argument (Sylvester inertia, conjugate points, Sturm); -1 when the method has none.
   int proved_count_below_top = -1;
+  /// Damped lines: the overdamped roots (real lambda = -delta, no oscillation) among the roots of
+  /// smallest |lambda| the solver found, listed apart from `modes` (never dropped), ascending in
+  /// delta, indexed 1, 2, ...; each has omega_rad_s = 0 and damping_ratio = 1.
+  std::vector<Mode> overdamped;
   SolverSummary summary;
 };
 
@@ -89,6 +114,12 @@ struct ForcedResponse {
   Vector v;
   /// Dynamic tension amplitude [N] (signed: in phase with the forcing).
   Vector tension_n;
+  /// Damped lines: the quadrature parts (the response is Re[(x + i x_imag) e^(i omega t)] for a
+  /// forcing A cos(omega t)): same sizes as u, w, v and tension_n; empty when undamped.
+  Vector u_imag;
+  Vector w_imag;
+  Vector v_imag;
+  Vector tension_imag_n;
   double max_abs_tension_n = 0.0;
   /// Estimated relative error of max_abs_tension_n (the solver's own estimate; -1: none). Near a
   /// resonance the response is sensitive to the natural frequencies, and this estimate grows.

@@ -2,6 +2,7 @@
 #include "solvers/common/mode_tools.hpp"
 
 #include <cmath>
+#include <string>
 
 namespace catena::internal {
 namespace {
@@ -39,6 +40,44 @@ void set_mode_frequency(Mode& mode, double omega_rad_s, const DimensionlessGroup
   mode.frequency_hz = omega_rad_s / (2.0 * kPi);
   mode.k_l_over_pi = groups.k_l_over_pi(omega_rad_s);
   mode.gale_ratio = groups.gale_ratio(omega_rad_s);
+}
+
+void set_damped_root(Mode& mode, std::complex<double> lambda, const DimensionlessGroups& groups) {
+  set_mode_frequency(mode, lambda.imag(), groups);
+  mode.decay_rate_1_s = lambda.real() == 0.0 ? 0.0 : -lambda.real();
+  const double modulus = std::abs(lambda);
+  mode.damping_ratio = modulus > 0.0 ? mode.decay_rate_1_s / modulus : 0.0;
+}
+
+double normalise_complex_mode(Mode& mode, const std::string& by) {
+  using Complex = std::complex<double>;
+  const Vector& re = by == "u" ? mode.u : by == "v" ? mode.v : mode.w;
+  const Vector& im = by == "u" ? mode.u_imag : by == "v" ? mode.v_imag : mode.w_imag;
+  mode.normalised_by = by;
+  if (re.size() == 0) return 1.0;
+  const Vector modulus = im.size() ? Vector(re.cwiseAbs2() + im.cwiseAbs2()) : re.cwiseAbs2();
+  const Index at = first_argmax_abs(modulus);
+  const Complex peak(re[at], im.size() ? im[at] : 0.0);
+  if (peak == 0.0) return 1.0;
+  const Complex factor = 1.0 / peak;
+  const std::pair<Vector*, Vector*> parts[] = {{&mode.u, &mode.u_imag},
+                                               {&mode.w, &mode.w_imag},
+                                               {&mode.v, &mode.v_imag},
+                                               {&mode.tension_n, &mode.tension_imag_n}};
+  for (const auto& [real, imag] : parts) {
+    if (real->size() == 0) continue;
+    if (imag->size() == 0) *imag = Vector::Zero(real->size());
+    for (Index j = 0; j < real->size(); ++j) {
+      const Complex value = Complex((*real)[j], (*imag)[j]) * factor;
+      (*real)[j] = value.real();
+      (*imag)[j] = value.imag();
+    }
+  }
+  if (mode.tension_n.size()) {
+    mode.max_abs_tension_n =
+        (mode.tension_n.cwiseAbs2() + mode.tension_imag_n.cwiseAbs2()).cwiseSqrt().maxCoeff();
+  }
+  return std::abs(factor);
 }
 
 double normalise_inplane_mode(Mode& mode) {

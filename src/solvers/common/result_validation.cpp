@@ -22,7 +22,27 @@ bool is_finite_or_unset(double value) {
 
 bool arrays_finite(const Mode& mode) {
   return mode.s_m.allFinite() && mode.u.allFinite() && mode.w.allFinite() && mode.v.allFinite() &&
-         mode.tension_n.allFinite();
+         mode.tension_n.allFinite() && mode.u_imag.allFinite() && mode.w_imag.allFinite() &&
+         mode.v_imag.allFinite() && mode.tension_imag_n.allFinite();
+}
+
+// A damped root: delta finite and >= 0 (a passive line does not grow), zeta = delta / |lambda|
+// in [0, 1] and consistent with omega and delta, and the decay estimate finite and >= 0 or -1.
+std::optional<std::string> damping_violation(const Mode& mode) {
+  const double delta = mode.decay_rate_1_s;
+  const double zeta = mode.damping_ratio;
+  if (!std::isfinite(delta) || delta < 0.0)
+    return fmt::format("mode {}: decay rate {} 1/s is not finite and >= 0", mode.index, delta);
+  const double modulus = std::hypot(delta, mode.omega_rad_s);
+  const double expected = modulus > 0.0 ? delta / modulus : 0.0;
+  if (!std::isfinite(zeta) || zeta < 0.0 || zeta > 1.0 ||
+      std::abs(zeta - expected) > 1e-12 * std::max(1.0, expected))
+    return fmt::format("mode {}: damping ratio {} is not delta / |lambda| = {}", mode.index, zeta,
+                       expected);
+  if (!is_estimate(mode.decay_rate_error_estimate))
+    return fmt::format("mode {}: decay-rate error estimate {} is neither finite and >= 0 nor -1",
+                       mode.index, mode.decay_rate_error_estimate);
+  return std::nullopt;
 }
 
 // What is wrong with the mode at `position` (0-based), given the one before it; nullopt if
@@ -58,7 +78,7 @@ std::optional<std::string> mode_violation(const Mode& mode,
       !is_finite_or_unset(mode.modal_mass_kg))
     return fmt::format("mode {}: its shape, tension or modal mass holds a non-finite value",
                        mode.index);
-  return std::nullopt;
+  return damping_violation(mode);
 }
 
 // The first violation of the per-mode rules and of the requested count, with the length of the
@@ -93,7 +113,9 @@ bool response_finite(const ForcedResponse& response) {
   return std::isfinite(response.max_abs_tension_n) && response.max_abs_tension_n >= 0.0 &&
          is_estimate(response.relative_error_estimate) && response.s_m.allFinite() &&
          response.u.allFinite() && response.w.allFinite() && response.v.allFinite() &&
-         response.tension_n.allFinite();
+         response.tension_n.allFinite() && response.u_imag.allFinite() &&
+         response.w_imag.allFinite() && response.v_imag.allFinite() &&
+         response.tension_imag_n.allFinite();
 }
 
 // A response without a finite answer keeps its frequency and stations, and says why.
@@ -148,7 +170,9 @@ void scale_forced_outcome(ForcedOutcome& outcome, double amplitude_m) {
   for (ForcedResponse& response : outcome.responses) {
     const bool was_finite = response_finite(response);
     const double per_metre = response.max_abs_tension_n / mantissa;
-    for (Vector* values : {&response.u, &response.w, &response.v, &response.tension_n})
+    for (Vector* values :
+         {&response.u, &response.w, &response.v, &response.tension_n, &response.u_imag,
+          &response.w_imag, &response.v_imag, &response.tension_imag_n})
       *values = values->unaryExpr(scale);
     response.max_abs_tension_n = scale(response.max_abs_tension_n);
     if (!was_finite || response_finite(response)) continue;

@@ -72,6 +72,16 @@ void run_parts(const SolveContext& context,
       return;
     }
     const auto start = Clock::now();
+    if (context.problem.is_damped() && !numerics.handles_damped_forced()) {
+      forced = ForcedOutcome{};
+      forced->summary.termination = Termination::NotApplicable;
+      forced->summary.message =
+          fmt::format("damped forced response not computed ({} frequencies asked)", frequencies);
+      forced->summary.warnings.push_back(
+          "the line is damped and this method's forced response is undamped only: not computed");
+      forced->summary.solver = output.solver;
+      return;
+    }
     // The model is linear in the amplitude: solved for its mantissa, scaled exactly by a power of
     // two here, so that no amplitude overflows a solve (result_validation.hpp).
     ForcedRequest unit = *request.forced;
@@ -108,7 +118,10 @@ SolverOutput drive_solver(const std::string& solver,
   summary.solver = solver;
   std::optional<ForcedOutcome> forced;
   try {
-    if (auto reason = numerics.not_applicable()) {
+    std::optional<std::string> reason = numerics.not_applicable();
+    if (!reason && context.problem.is_damped() && !numerics.handles_damping())
+      reason = "the line is damped and this method computes undamped modes only";
+    if (reason) {
       summary.termination = Termination::NotApplicable;
       summary.message = *reason;
       summary.wall_time_s = seconds_since(start);

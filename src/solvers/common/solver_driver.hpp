@@ -6,7 +6,8 @@
 /// same way for every solver:
 ///
 ///   1. validate the request and the problem (InvalidInput propagates: bad input, exit 2);
-///   2. ask not_applicable(): a reason ends the run as NotApplicable;
+///   2. ask not_applicable(): a reason ends the run as NotApplicable; so does a damped problem
+///      for numerics that do not handle damping (handles_damping());
 ///   3. prepare(): work shared by the planes; a returned Outcome ends the run with that status;
 ///   4. modes(plane, count) for each requested plane (in-plane first), timed per plane; each
 ///      plane's result validated (result_validation.hpp: a wrong answer is never "converged");
@@ -49,6 +50,14 @@ class SolverNumerics {
 
   /// Why the solver's model does not cover the problem; nullopt when it does. Must be cheap.
   virtual std::optional<std::string> not_applicable() const { return std::nullopt; }
+
+  /// True when modes() solves the damped problem (complex roots, docs/explanation/physics.md,
+  /// "Damping"). The driver declines a damped problem for numerics that do not: an undamped
+  /// answer to a damped line is never returned.
+  virtual bool handles_damping() const { return false; }
+
+  /// Same for forced(): false makes the forced part of a damped problem NotApplicable.
+  virtual bool handles_damped_forced() const { return false; }
 
   /// Work shared by every plane and the forced response (e.g. fe's discrete statics). A returned
   /// Outcome ends the run with that status and message.
