@@ -46,6 +46,38 @@ TEST(CableProperties, RejectsEachInvalidField) {
   expect_invalid(with([](Problem& p) { p.supports.b_m.x() = -5.0; }), "left of");
 }
 
+// Damping (docs/explanation/physics.md, "Damping"): every coefficient finite and >= 0, axial
+// damping only where there is axial strain; each error names the field.
+TEST(CableProperties, RejectsBadDampingNamingTheField) {
+  const double nan = std::nan("");
+  auto with = [](auto change) {
+    Problem p = good();
+    change(p);
+    return [p] { p.validate(); };
+  };
+  expect_invalid(with([](Problem& p) { p.cable.damping.tangential_n_s_per_m2 = -1.0; }),
+                 "damping_tangential");
+  expect_invalid(with([&](Problem& p) { p.cable.damping.normal_n_s_per_m2 = nan; }),
+                 "damping_normal");
+  expect_invalid(with([](Problem& p) { p.cable.damping.axial_n_s = kInfinity; }), "axial_damping");
+  expect_invalid(with([](Problem& p) {
+                   p.cable.axial_stiffness_n = kInfinity;
+                   p.cable.damping.axial_n_s = 1.0;
+                 }),
+                 "inextensible");
+  expect_invalid(with([](Problem& p) {
+                   p.line = line_of_cable(p.cable);
+                   p.line.segments[0].damping.axial_n_s = -2.0;
+                 }),
+                 "segments[0].axial_damping");
+  Problem damped = good();
+  EXPECT_FALSE(damped.is_damped());
+  damped.cable.damping.normal_n_s_per_m2 = 3.0;
+  EXPECT_NO_THROW(damped.validate());
+  EXPECT_TRUE(damped.is_damped());
+  EXPECT_EQ(line_of_cable(damped.cable).segments[0].damping.normal_n_s_per_m2, 3.0);
+}
+
 // Huge values made the statics overflow ("closure error -nan m", no field named) and
 // b = (1e308, 0) was called coincident with a (the squared chord overflowed).
 TEST(CableProperties, RejectsMagnitudesThatOverflowTheStaticsNamingTheField) {

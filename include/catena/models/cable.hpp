@@ -39,7 +39,7 @@ struct CableProperties {
   /// directions only. Must be finite and >= 0.
   double added_mass_kg_per_m = 0.0;
   /// Linear drag and axial damping (docs/explanation/physics.md, "Damping"); zero: undamped.
-  SectionDamping damping;
+  SectionDamping damping{};
 
   /// M = m + ma: the mass that resists normal motion [kg/m].
   double normal_mass_kg_per_m() const { return mass_kg_per_m + added_mass_kg_per_m; }

@@ -46,7 +46,7 @@ struct LineSegment {
   /// Added mass per unit unstretched length in the normal directions [kg/m]. Finite and >= 0.
   double added_mass_kg_per_m = 0.0;
   /// Linear drag and axial damping of the segment (zero: undamped).
-  SectionDamping damping;
+  SectionDamping damping{};
 
   double normal_mass_kg_per_m() const { return mass_kg_per_m + added_mass_kg_per_m; }
   bool is_inextensible() const;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 
 #include "catena/statics/problem_builders.hpp"
 
@@ -135,6 +136,44 @@ TEST(NormaliseOutofplaneMode, ScalesByVWithTheSameSignRule) {
   EXPECT_EQ(mode.normalised_by, "v");
   expect_equal(mode.v, values({0.0, 0.25, 1.0, 0.5}));
   EXPECT_DOUBLE_EQ(mode.max_abs_tension_n, 1.0);
+}
+
+TEST(SetDampedRoot, SplitsLambdaIntoOmegaDecayAndRatio) {
+  const DimensionlessGroups groups;
+  Mode mode;
+  set_damped_root(mode, {-0.3, 4.0}, groups);
+  EXPECT_EQ(mode.omega_rad_s, 4.0);
+  EXPECT_DOUBLE_EQ(mode.frequency_hz, 4.0 / (2.0 * kPi));
+  EXPECT_EQ(mode.decay_rate_1_s, 0.3);
+  EXPECT_DOUBLE_EQ(mode.damping_ratio, 0.3 / std::hypot(0.3, 4.0));
+  Mode undamped, reference;
+  set_damped_root(undamped, {0.0, 2.5}, groups);
+  set_mode_frequency(reference, 2.5, groups);
+  EXPECT_EQ(undamped.omega_rad_s, reference.omega_rad_s);
+  EXPECT_EQ(undamped.k_l_over_pi, reference.k_l_over_pi);
+  EXPECT_FALSE(std::signbit(undamped.decay_rate_1_s)) << "no -0 in the JSON";
+  EXPECT_EQ(undamped.damping_ratio, 0.0);
+}
+
+// A complex shape is scaled by one complex factor: the peak of |w| becomes 1 (real), every
+// component keeps its ratio to w, and max |tau| is the modulus.
+TEST(NormaliseComplexMode, TurnsThePeakOfTheNamedComponentIntoOne) {
+  Mode mode;
+  mode.w = values({0.0, 1.0, -2.0});
+  mode.w_imag = values({0.0, 1.0, 2.0});
+  mode.u = values({1.0, 0.0, 0.0});
+  mode.tension_n = values({0.0, 4.0, 0.0});
+  const std::complex<double> peak(-2.0, 2.0);
+  const double scale = normalise_complex_mode(mode, "w");
+  EXPECT_DOUBLE_EQ(scale, 1.0 / std::abs(peak));
+  EXPECT_EQ(mode.normalised_by, "w");
+  EXPECT_DOUBLE_EQ(mode.w[2], 1.0);
+  EXPECT_NEAR(mode.w_imag[2], 0.0, 1e-16);
+  const std::complex<double> u0 = std::complex<double>(1.0, 0.0) / peak;
+  EXPECT_DOUBLE_EQ(mode.u[0], u0.real());
+  ASSERT_EQ(mode.u_imag.size(), 3);
+  EXPECT_DOUBLE_EQ(mode.u_imag[0], u0.imag());
+  EXPECT_DOUBLE_EQ(mode.max_abs_tension_n, 4.0 / std::abs(peak));
 }
 
 TEST(IntegrateOnStations, TrapezoidIsExactForLinearFunctionsOnUnequalSpacing) {

@@ -95,6 +95,20 @@ TEST(ValidateModalResult, EachViolatedPropertyIsNamedAndTheValidPrefixKept) {
        1, "mode 2: its shape"},
       {"non-finite tension", [](ModalResult& r) { r.modes[3].max_abs_tension_n = kInf; }, 3,
        "mode 4: its shape"},
+      {"non-finite imaginary shape",
+       [](ModalResult& r) { r.modes[2].w_imag = Vector::Constant(3, kInf); }, 2,
+       "mode 3: its shape"},
+      {"growing mode", [](ModalResult& r) { r.modes[1].decay_rate_1_s = -0.1; }, 1,
+       "mode 2: decay rate -0.1"},
+      {"damping ratio not delta / |lambda|",
+       [](ModalResult& r) {
+         r.modes[0].decay_rate_1_s = 0.1;
+         r.modes[0].damping_ratio = 0.2;
+       },
+       0, "mode 1: damping ratio 0.2"},
+      {"NaN decay estimate",
+       [](ModalResult& r) { r.modes[3].decay_rate_error_estimate = std::nan(""); }, 3,
+       "decay-rate error estimate"},
   };
   for (const Violation& violation : violations) expect_rejected(violation);
 }

@@ -134,7 +134,11 @@ class ScriptedNumerics final : public SolverNumerics {
   std::optional<double> unit_tension_n;
   double amplitude_seen_m = 0.0;
 
+  bool damped_modes = false, damped_forced = false;
+
   std::optional<std::string> not_applicable() const override { return reason; }
+  bool handles_damping() const override { return damped_modes; }
+  bool handles_damped_forced() const override { return damped_forced; }
   std::optional<Outcome> prepare() override { return prepared; }
   ModalResult modes(Plane plane, int count) override {
     asked.push_back(plane);
@@ -209,6 +213,33 @@ TEST_F(DriveSolver, NotApplicableStopsBeforeAnyWork) {
   EXPECT_TRUE(numerics.asked.empty());
   EXPECT_EQ(output.summary.termination, Termination::NotApplicable);
   EXPECT_EQ(output.summary.message, "vertical chord");
+}
+
+// A damped line is never answered with undamped numbers: numerics that do not handle damping are
+// declined before any work, and a forced response they cannot damp is not computed.
+TEST_F(DriveSolver, DampedLinesAreDeclinedByNumericsThatDoNotHandleDamping) {
+  solved.problem.cable.damping.normal_n_s_per_m2 = 0.01;
+  ScriptedNumerics undamped_only;
+  const SolverOutput declined = drive(undamped_only);
+  EXPECT_TRUE(undamped_only.asked.empty());
+  EXPECT_EQ(declined.summary.termination, Termination::NotApplicable);
+  EXPECT_NE(declined.summary.message.find("damped"), std::string::npos);
+
+  request.forced = ForcedRequest{};
+  request.forced->omegas_rad_s = {0.5, 1.5};
+  ScriptedNumerics modes_only;
+  modes_only.damped_modes = true;
+  modes_only.unit_tension_n = 2.0;
+  const SolverOutput partial = drive(modes_only);
+  EXPECT_EQ(modes_only.asked.size(), 2u);
+  EXPECT_TRUE(partial.forced.empty());
+  EXPECT_EQ(modes_only.amplitude_seen_m, 0.0);
+  EXPECT_NE(partial.summary.message.find("damped forced response not computed"), std::string::npos);
+
+  ScriptedNumerics both;
+  both.damped_modes = both.damped_forced = true;
+  both.unit_tension_n = 2.0;
+  EXPECT_EQ(drive(both).forced.size(), 2u);
 }
 
 TEST_F(DriveSolver, APreparedOutcomeEndsTheRunWithThatStatus) {
