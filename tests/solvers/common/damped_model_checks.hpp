@@ -71,7 +71,9 @@ inline void expect_proportional_damping_exact(const ModelSolve& solve, Problem p
       EXPECT_EQ(a.w, b.w);
       EXPECT_EQ(a.v, b.v);
       EXPECT_EQ(a.w_imag.size(), a.w.size());
-      if (a.w_imag.size()) EXPECT_EQ(a.w_imag.cwiseAbs().maxCoeff(), 0.0);
+      if (a.w_imag.size()) {
+        EXPECT_EQ(a.w_imag.cwiseAbs().maxCoeff(), 0.0);
+      }
       EXPECT_EQ(a.tension_imag_n.size(), a.tension_n.size());
     }
   }

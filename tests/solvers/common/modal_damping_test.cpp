@@ -102,7 +102,7 @@ TEST(ModalDamping, SeabedDashpotActsOnTheGroundedPartOnly) {
   const double length = 4.0, c_s = 1.5;
   DampedSection s = section(1.0, 1.0, kInfinity);
   s.seabed_damping_n_s_per_m2 = c_s;
-  const DampingQuadrature q = damping_quadrature(length, 0.0);  // 16 panels: L/2 is a panel end
+  const DampingQuadrature q = damping_quadrature(length, 0.0);  // 8 panels: L/2 is a panel end
   InplaneModeSamples mode;
   mode.u = Vector::Zero(q.s_m.size());
   mode.w = sampled(q.s_m, length, kPi);
