@@ -135,7 +135,7 @@ DampingQuadrature damping_quadrature(double length_m, double phase_rad) {
   const auto& w = Rule::weights();
   const int points = 2 * static_cast<int>(x.size());  // 10: the rule stores the half x >= 0
   const double phase = std::isfinite(phase_rad) ? std::abs(phase_rad) : 0.0;
-  const int panels = 8 + static_cast<int>(std::ceil(phase));
+  const int panels = 8 + static_cast<int>(std::ceil(0.5 * phase));
   DampingQuadrature q;
   q.s_m.resize(panels * points);
   q.weights.resize(panels * points);

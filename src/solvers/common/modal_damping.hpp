@@ -31,10 +31,10 @@ struct DampingQuadrature {
 };
 
 /// Nodes fine enough for the products of a mode whose phase runs through `phase_rad` along the
-/// cable (kL, or omega times the transverse travel time): 10-point panels of at most one radian
-/// of phase, at least 8 panels. A squared mode then turns through at most 2 rad per panel, where
-/// 10-point rule's error, (n!)^4 / ((2n+1) ((2n)!)^3) (omega h)^20 of the panel's share, is about
-/// 6e-25 (omega h = 2): far below rounding.
+/// cable (kL, or omega times the transverse travel time): 10-point panels of at most two radians
+/// of phase, at least 8 panels. A squared mode then turns through at most omega h = 4 rad per
+/// panel, where the 10-point rule's error, (n!)^4 / ((2n+1) ((2n)!)^3) (omega h)^20 = 6e-19 of
+/// the panel's share, is below rounding.
 DampingQuadrature damping_quadrature(double length_m, double phase_rad);
 
 /// A uniform section's inertia, axial stiffness and damping (per unit unstretched length).
