@@ -30,10 +30,12 @@ SolverOutput airy(const Problem& problem,
 }
 
 TEST(AiryDamping, ProportionalDampingIsExactAgainstTheUndampedRoots) {
-  testing::expect_proportional_damping_exact(airy,
-                                             make_taut_inclined_problem(0.18, 23.46, 38.0, 0.6));
-  testing::expect_proportional_damping_exact(airy,
-                                             make_taut_inclined_problem(0.05, 60.0, 400.0, 1.0));
+  for (double zeta1 : {1e-4, 0.05}) {
+    testing::expect_proportional_damping_exact(
+        airy, make_taut_inclined_problem(0.18, 23.46, 38.0, 0.6), zeta1);
+    testing::expect_proportional_damping_exact(
+        airy, make_taut_inclined_problem(0.05, 60.0, 400.0, 1.0), zeta1);
+  }
 }
 
 TEST(AiryDamping, OverdampedRootsAreListedApart) {
