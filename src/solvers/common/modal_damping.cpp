@@ -74,7 +74,8 @@ void add_overdamped(const Mode& undamped,
                     std::vector<Mode>& overdamped) {
   const double root = std::sqrt((d.delta - d.omega0) * (d.delta + d.omega0));
   const double delta_error_estimate = decay_estimate(d);
-  for (double rate : {d.delta - root, d.delta + root}) {
+  // The slow root from the product of the two, omega0^2: no cancellation when omega0 << delta.
+  for (double rate : {d.omega0 * d.omega0 / (d.delta + root), d.delta + root}) {
     Mode mode = undamped;
     set_damped_root(mode, {-rate, 0.0}, groups);
     mode.relative_error_estimate = -1.0;  // omega_d = 0: no oscillation
