@@ -19,6 +19,7 @@
 #include "solvers/airy/airy_tension_string.hpp"
 #include "solvers/common/knob_table.hpp"
 #include "solvers/common/line_applicability.hpp"
+#include "solvers/common/modal_damping.hpp"
 #include "solvers/common/mode_tools.hpp"
 #include "solvers/common/solver_driver.hpp"
 #include "solvers/common/solver_entries.hpp"
@@ -148,6 +149,9 @@ class AiryNumerics final : public SolverNumerics {
                                       options_);
   }
 
+  // Light damping by first-order perturbation of the model's own modes (modal_damping.hpp).
+  bool handles_damping() const override { return true; }
+
   void describe(SolverSummary& summary) const override;
 
   ModalResult modes(Plane plane, int count) override {
@@ -169,6 +173,8 @@ class AiryNumerics final : public SolverNumerics {
                     const Vector& stations,
                     const Vector& travel_times,
                     double& max_residual) const;
+  double inplane_mode_decay_rate(const AiryModel& model, double omega) const;
+  double outofplane_mode_decay_rate(const TensionString& string, double omega) const;
   void add_scan_notes(const AiryRootScan& scan, SolverSummary& summary) const;
   void set_inplane_outcome(int found,
                            int count,
@@ -233,6 +239,32 @@ Mode AiryNumerics::inplane_mode(int index,
   mode.modal_mass_kg = inplane_modal_mass(mode, cable.mass_kg_per_m, cable.normal_mass_kg_per_m());
   if (!request.shapes) drop_shape_fields(mode);
   return mode;
+}
+
+// delta of the in-plane mode at omega: its shape and tension on nodes fine for the quadrature of
+// modal_damping.hpp (the fast phase omega x travel time sets their spacing), whatever the
+// request's stations.
+double AiryNumerics::inplane_mode_decay_rate(const AiryModel& model, double omega) const {
+  const SolveContext& c = context_;
+  const DampingQuadrature quadrature =
+      damping_quadrature(c.problem.cable.length_m, omega * model.travel_time);
+  const Vector travel_times =
+      transverse_travel_times(c.statics, c.problem.cable.normal_mass_kg_per_m(), quadrature.s_m);
+  AiryModeShape shape =
+      airy_mode_shape(model, c.statics, omega, quadrature.s_m, travel_times * omega);
+  InplaneModeSamples samples;
+  samples.u = std::move(shape.u);
+  samples.w = std::move(shape.w);
+  samples.tension_n = std::move(shape.tension_n);
+  return inplane_decay_rate(quadrature, samples, DampedSection::of(c.problem));
+}
+
+// delta of the linear-tension string's mode at omega (its Bessel shape on the nodes).
+double AiryNumerics::outofplane_mode_decay_rate(const TensionString& string, double omega) const {
+  const DampingQuadrature quadrature =
+      damping_quadrature(string.length, omega * string_travel_time(string, string.length));
+  return outofplane_decay_rate(quadrature, string_mode_shape(string, omega, quadrature.s_m),
+                               DampedSection::of(context_.problem));
 }
 
 // How the scan went, and the warning it calls for: a first root close to the spurious-root cutoff.
@@ -300,6 +332,12 @@ ModalResult AiryNumerics::inplane_modes(int count) const {
   add_scan_notes(scan, summary);
   set_inplane_outcome(static_cast<int>(result.modes.size()), count, scan, max_residual, summary);
   mark_time_limit(meter, summary);
+  if (c.problem.is_damped()) {
+    std::vector<double> rates;
+    for (const Mode& mode : result.modes)
+      rates.push_back(inplane_mode_decay_rate(model, mode.omega_rad_s));
+    apply_perturbed_damping(Plane::InPlane, result, rates, DampedSection::of(c.problem), c.groups);
+  }
   return result;
 }
 
@@ -332,6 +370,13 @@ ModalResult AiryNumerics::outofplane_modes() const {
       "the frequencies are within "
       "1/sqrt(1 - {:.3g}) - 1 = {:.3g}, reported as relative_error_estimate (+ root tolerance)",
       string.stiffness_a, string.stiffness_b, deviation, deviation, estimate - root_error_));
+  if (c.problem.is_damped()) {
+    std::vector<double> rates;
+    for (const Mode& mode : result.modes)
+      rates.push_back(outofplane_mode_decay_rate(string, mode.omega_rad_s));
+    apply_perturbed_damping(Plane::OutOfPlane, result, rates, DampedSection::of(c.problem),
+                            c.groups);
+  }
   return result;
 }
 

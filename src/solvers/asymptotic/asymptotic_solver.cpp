@@ -15,6 +15,7 @@
 #include "solvers/asymptotic/asymptotic_wkb_string.hpp"
 #include "solvers/common/knob_table.hpp"
 #include "solvers/common/line_applicability.hpp"
+#include "solvers/common/modal_damping.hpp"
 #include "solvers/common/mode_tools.hpp"
 #include "solvers/common/solver_driver.hpp"
 #include "solvers/common/solver_entries.hpp"
@@ -226,6 +227,9 @@ class AsymptoticNumerics final : public SolverNumerics {
                                             options_);
   }
 
+  // Light damping by first-order perturbation of the model's own modes (modal_damping.hpp).
+  bool handles_damping() const override { return true; }
+
   void describe(SolverSummary& summary) const override;
   ModalResult modes(Plane plane, int count) override {
     return plane == Plane::InPlane ? inplane_modes(count) : outofplane_modes(count);
@@ -235,6 +239,9 @@ class AsymptoticNumerics final : public SolverNumerics {
   ModalResult inplane_modes(int count) const;
   ModalResult outofplane_modes(int count) const;
   Mode inplane_mode(int index, double kl, const Vector& stations) const;
+  double eq38_tension(const AsymptoticModeShape& shape, double omega) const;
+  double inplane_mode_decay_rate(double kl, double omega) const;
+  double outofplane_mode_decay_rate(int n, double omega) const;
   void add_character_notes(const std::vector<double>& roots, SolverSummary& summary) const;
 
   const SolveContext& context_;
@@ -268,6 +275,38 @@ void AsymptoticNumerics::describe(SolverSummary& summary) const {
   }
 }
 
+// Eq. (38): tau = -M omega^2 w_slow / alpha with w_slow = -(S2 + 7/4 e1) in the units of the
+// shape functions and alpha = eps cos(phi_a) / L.
+double AsymptoticNumerics::eq38_tension(const AsymptoticModeShape& shape, double omega) const {
+  const CableProperties& cable = context_.problem.cable;
+  return cable.normal_mass_kg_per_m() * omega * omega * shape.slow_amplitude * cable.length_m /
+         (context_.groups.eps * std::cos(context_.groups.chord_angle_rad));
+}
+
+// delta of the in-plane mode of root kL: its shapes (34)/(28), (37) and tension (38) on nodes
+// fine for the quadrature of modal_damping.hpp, whatever the request's stations.
+double AsymptoticNumerics::inplane_mode_decay_rate(double kl, double omega) const {
+  const CableProperties& cable = context_.problem.cable;
+  const DimensionlessGroups& groups = context_.groups;
+  const DampingQuadrature quadrature = damping_quadrature(cable.length_m, kl);
+  AsymptoticModeShape shape =
+      asymptotic_mode_shape(quadrature.s_m, cable.length_m, kl, groups.eps, groups.chord_angle_rad,
+                            groups.lambda2, options_.shape_formula);
+  InplaneModeSamples samples;
+  samples.tension_n = Vector::Constant(quadrature.s_m.size(), eq38_tension(shape, omega));
+  samples.u = std::move(shape.u);
+  samples.w = std::move(shape.w);
+  return inplane_decay_rate(quadrature, samples, DampedSection::of(context_.problem));
+}
+
+// delta of the n-th out-of-plane WKB mode (its phase runs through n pi along the cable).
+double AsymptoticNumerics::outofplane_mode_decay_rate(int n, double omega) const {
+  const DampingQuadrature quadrature = damping_quadrature(context_.problem.cable.length_m, n * kPi);
+  return outofplane_decay_rate(quadrature,
+                               wkb_outofplane_shape(context_.statics, quadrature.s_m, omega),
+                               DampedSection::of(context_.problem));
+}
+
 // One in-plane mode of root kL: frequency, and on request the shapes (34)/(28)/(37) and the
 // tension (38), normalised like every solver's.
 Mode AsymptoticNumerics::inplane_mode(int index, double kl, const Vector& stations) const {
@@ -287,11 +326,7 @@ Mode AsymptoticNumerics::inplane_mode(int index, double kl, const Vector& statio
   mode.u = shape.u;
   const double M = cable.normal_mass_kg_per_m();
   if (request.tension) {
-    // Eq. (38): tau = -M omega^2 w_slow / alpha with w_slow = -(S2 + 7/4 e1) in the units of the
-    // shape functions and alpha = eps cos(phi_a) / L.
-    const double tau = M * mode.omega_rad_s * mode.omega_rad_s * shape.slow_amplitude *
-                       cable.length_m / (eps * std::cos(phi));
-    mode.tension_n = Vector::Constant(stations.size(), tau);
+    mode.tension_n = Vector::Constant(stations.size(), eq38_tension(shape, mode.omega_rad_s));
   }
   normalise_inplane_mode(mode);
   mode.modal_mass_kg = inplane_modal_mass(mode, cable.mass_kg_per_m, M);
@@ -357,6 +392,13 @@ ModalResult AsymptoticNumerics::inplane_modes(int count) const {
         "assumes quasi-static stretching and has no axial modes",
         roots.back() / kPi, axial_kl / kPi));
   }
+  if (context_.problem.is_damped()) {
+    std::vector<double> rates;
+    for (std::size_t i = 0; i < roots.size(); ++i)
+      rates.push_back(inplane_mode_decay_rate(roots[i], result.modes[i].omega_rad_s));
+    apply_perturbed_damping(Plane::InPlane, result, rates, DampedSection::of(context_.problem),
+                            groups);
+  }
   return result;
 }
 
@@ -369,6 +411,13 @@ ModalResult AsymptoticNumerics::outofplane_modes(int count) const {
       "Converged: {} of {} out-of-plane WKB string modes omega_n = n pi / int sqrt(M(1+e)/T) ds",
       result.modes.size(), count);
   result.summary.max_error_estimate = error_estimate_;
+  if (context_.problem.is_damped()) {
+    std::vector<double> rates;
+    for (const Mode& mode : result.modes)
+      rates.push_back(outofplane_mode_decay_rate(mode.index, mode.omega_rad_s));
+    apply_perturbed_damping(Plane::OutOfPlane, result, rates, DampedSection::of(context_.problem),
+                            context_.groups);
+  }
   return result;
 }
 
