@@ -131,6 +131,24 @@ void print_line_statics(const Problem& problem, const StaticSolution& statics) {
              statics.position_m(low).x(), statics.position_m(low).y());
 }
 
+// The damping of a damped problem (docs/reference/scene-format.md, "Damping"): the cable's, each
+// damped segment's and the seabed dashpot; nothing for an undamped one, whose output is unchanged.
+void print_damping(const Problem& problem) {
+  const auto section = [](const std::string& what, const SectionDamping& d) {
+    if (d.is_zero()) return;
+    fmt::print("  {}: c_t = {:g} N s/m per m, c_n = {:g} N s/m per m, c_a = {:g} N s\n", what,
+               d.tangential_n_s_per_m2, d.normal_n_s_per_m2, d.axial_n_s);
+  };
+  if (problem.is_uniform()) {
+    section("damping", problem.cable.damping);
+  } else {
+    for (std::size_t k = 0; k < problem.line.segments.size(); ++k)
+      section(fmt::format("damping of segment {}", k), problem.line.segments[k].damping);
+  }
+  if (problem.seabed && problem.seabed->damping_n_s_per_m2 > 0.0)
+    fmt::print("  seabed damping: c_s = {:g} N s/m per m\n", problem.seabed->damping_n_s_per_m2);
+}
+
 void print_result(const SceneResult& result) {
   const Scene& scene = result.scene;
   fmt::print("scene {} ({})\n", scene.name, path_text(scene.file));
@@ -140,14 +158,12 @@ void print_result(const SceneResult& result) {
   }
   if (scene.problem.is_uniform()) {
     print_cable(scene.problem);
-    const SectionDamping& d = scene.problem.cable.damping;
-    if (!d.is_zero())
-      fmt::print("  damping: c_t = {:g} N s/m per m, c_n = {:g} N s/m per m, c_a = {:g} N s\n",
-                 d.tangential_n_s_per_m2, d.normal_n_s_per_m2, d.axial_n_s);
+    print_damping(scene.problem);
     fmt::print("  statics: {}\n", result.statics->brief_report());
     print_groups(*result.groups);
   } else {
     print_line_statics(scene.problem, *result.statics);
+    print_damping(scene.problem);
   }
   for (const auto& output : result.outputs) {
     fmt::print("  solver {}\n", output.summary.brief_report());
