@@ -142,14 +142,23 @@ def test_bad_form_damping_names_the_eta(value):
         catena.load_scene(form_scene("taut_inclined", {**TAUT, "eta_normal": value}))
 
 
-def test_statics_of_the_undamped_problem_serve_the_damped_one():
-    # Damping acts in the dynamics only: the statics are the same, and given statics are accepted.
+def test_given_statics_must_hold_the_problems_damping():
+    # Damping does not change the statics, but a solver may read the line's dynamic coefficients
+    # from the statics' copy of the line (shooting does): statics of another damping are refused.
     undamped = catena.Problem(catena.Cable(**CABLE), b_m=B)
     damped = catena.Problem(catena.Cable(**CABLE, **DAMPING), b_m=B)
-    statics = catena.solve_statics(undamped)
-    assert catena.solve_statics(damped).horizontal_force_n == statics.horizontal_force_n
-    out = catena.run_solver("shooting", damped, catena.Request(inplane_modes=1), statics=statics)
-    assert out.summary.status in ("converged", "not-applicable", "no-convergence")
+    statics = catena.solve_statics(damped)
+    assert statics.horizontal_force_n == catena.solve_statics(undamped).horizontal_force_n
+    with pytest.raises(ValueError, match=r"statics: solved for another cable"):
+        catena.run_solver("shooting", damped, statics=catena.solve_statics(undamped))
+    with pytest.raises(ValueError, match=r"statics: solved for another cable"):
+        catena.run_solver("shooting", undamped, statics=statics)
+    catena.run_solver("shooting", damped, catena.Request(inplane_modes=1), statics=statics)  # accepted
+    bed = dict(z_m=0.0, stiffness_n_per_m2=1e5)
+    on_bed = catena.Problem(catena.Cable(**CABLE), b_m=B, seabed=catena.Seabed(**bed, damping_n_s_per_m2=5.0))
+    other_bed = catena.Problem(catena.Cable(**CABLE), b_m=B, seabed=catena.Seabed(**bed))
+    with pytest.raises(ValueError, match=r"statics: solved for another seabed"):
+        catena.run_solver("shooting", on_bed, statics=catena.solve_statics(other_bed))
 
 
 # --- results of an undamped scene: the damped fields say "no damping" ---
