@@ -35,13 +35,14 @@ struct SolveArguments {
 void print_damped_modes(const ModalResult& result) {
   fmt::print("    {:>4} {:>20} {:>16} {:>16} {:>12} {:>10} {:>10}\n", "mode", "omega_d [rad/s]",
              "f_d [Hz]", "delta [1/s]", "zeta", "rel.err", "delta err");
-  const auto row = [](const Mode& mode, const std::string& label) {
-    fmt::print("    {:>4} {:>20.12g} {:>16.10g} {:>16.10g} {:>12.6g} {:>10.2e} {:>10}\n", label,
+  // A missing estimate (-1; e.g. omega_d of an overdamped root, which is exactly 0) prints "-".
+  const auto estimate = [](double value) {
+    return value >= 0.0 ? fmt::format("{:.2e}", value) : std::string("-");
+  };
+  const auto row = [&](const Mode& mode, const std::string& label) {
+    fmt::print("    {:>4} {:>20.12g} {:>16.10g} {:>16.10g} {:>12.6g} {:>10} {:>10}\n", label,
                mode.omega_rad_s, mode.frequency_hz, mode.decay_rate_1_s, mode.damping_ratio,
-               mode.relative_error_estimate,
-               mode.decay_rate_error_estimate >= 0.0
-                   ? fmt::format("{:.2e}", mode.decay_rate_error_estimate)
-                   : std::string("-"));
+               estimate(mode.relative_error_estimate), estimate(mode.decay_rate_error_estimate));
   };
   for (const auto& mode : result.modes) row(mode, std::to_string(mode.index));
   for (const auto& mode : result.overdamped) row(mode, fmt::format("od{}", mode.index));
