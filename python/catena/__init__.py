@@ -9,6 +9,7 @@ in every name. Documentation: docs/reference/python.md.
     >>> r = catena.solve("verification/scenes/physical/mooring-line-900m.toml")
     >>> r.statics.horizontal_force_n
     >>> r["shooting"].inplane.omega_rad_s          # numpy array, lowest first
+    >>> r["shooting"].inplane.eigenvalue           # complex roots -delta + i omega_d (damping)
 
 Each solver also runs on its own: catena.solve_fe(problem, request, elements=800), and likewise
 solve_shooting, solve_frobenius, solve_asymptotic, solve_airy, with their knobs as typed keyword

@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "damping.hpp"
 
 namespace catena::python {
 namespace {
@@ -15,22 +16,28 @@ LineSegment make_segment(double length_m,
                          double weight_n_per_m,
                          double mass_kg_per_m,
                          double axial_stiffness_n,
-                         double added_mass_kg_per_m) {
-  LineSegment segment{length_m, weight_n_per_m, axial_stiffness_n, mass_kg_per_m,
-                      added_mass_kg_per_m};
+                         double added_mass_kg_per_m,
+                         double damping_tangential,
+                         double damping_normal,
+                         double axial_damping) {
+  LineSegment segment{
+      length_m,      weight_n_per_m,      axial_stiffness_n,
+      mass_kg_per_m, added_mass_kg_per_m, {damping_tangential, damping_normal, axial_damping}};
   // A one-segment line validates the segment with the same messages as the scene reader.
   Line{{segment}, {}}.validate();
   return segment;
 }
 
 void bind_segment(py::module_& module) {
-  py::class_<LineSegment>(
-      module, "LineSegment",
-      "One segment of a line, per unit unstretched length, in SI units. Validated on "
-      "construction (catena.InvalidInput names the field).")
+  py::class_<LineSegment> segment(module, "LineSegment",
+                                  "One segment of a line, per unit unstretched length, in SI "
+                                  "units. Validated on construction (catena.InvalidInput names "
+                                  "the field).");
+  segment
       .def(py::init(&make_segment), py::kw_only(), py::arg("length_m"), py::arg("weight_n_per_m"),
            py::arg("mass_kg_per_m"), py::arg("axial_stiffness_n") = kInfinity,
-           py::arg("added_mass_kg_per_m") = 0.0)
+           py::arg("added_mass_kg_per_m") = 0.0, py::arg("damping_tangential_n_s_per_m2") = 0.0,
+           py::arg("damping_normal_n_s_per_m2") = 0.0, py::arg("axial_damping_n_s") = 0.0)
       .def_readwrite("length_m", &LineSegment::length_m, "unstretched length [m], > 0")
       .def_readwrite(
           "weight_n_per_m", &LineSegment::weight_n_per_m,
@@ -40,14 +47,15 @@ void bind_segment(py::module_& module) {
       .def_readwrite("mass_kg_per_m", &LineSegment::mass_kg_per_m, "structural mass [kg/m], > 0")
       .def_readwrite("added_mass_kg_per_m", &LineSegment::added_mass_kg_per_m,
                      "added mass in the normal directions [kg/m], >= 0")
-      .def_property_readonly("inextensible", &LineSegment::is_inextensible, "EA = inf")
-      .def("__repr__", [](const LineSegment& s) {
-        return fmt::format(
-            "LineSegment(length_m={}, weight_n_per_m={}, mass_kg_per_m={}, axial_stiffness_n={}, "
-            "added_mass_kg_per_m={})",
-            s.length_m, s.weight_n_per_m, s.mass_kg_per_m, s.axial_stiffness_n,
-            s.added_mass_kg_per_m);
-      });
+      .def_property_readonly("inextensible", &LineSegment::is_inextensible, "EA = inf");
+  bind_section_damping(segment);
+  segment.def("__repr__", [](const LineSegment& s) {
+    return fmt::format(
+        "LineSegment(length_m={}, weight_n_per_m={}, mass_kg_per_m={}, axial_stiffness_n={}, "
+        "added_mass_kg_per_m={}{})",
+        s.length_m, s.weight_n_per_m, s.mass_kg_per_m, s.axial_stiffness_n, s.added_mass_kg_per_m,
+        damping_repr(s.damping));
+  });
 }
 
 PointAttachment make_point(double s_m,
@@ -105,6 +113,7 @@ void bind_line_class(py::module_& module) {
       .def("segment_start_m", &Line::segment_start_m, py::arg("index"),
            "unstretched arc length of the start of segment `index` (len(segments): the total) [m]")
       .def_property_readonly("inextensible", &Line::is_inextensible, "no segment is extensible")
+      .def_property_readonly("damped", &Line::is_damped, "some segment has non-zero damping")
       .def("validate", &Line::validate, "Raises catena.InvalidInput naming the bad field.")
       .def("__repr__", [](const Line& line) {
         return fmt::format("Line({} segments, {} points, L={} m)", line.segments.size(),

@@ -11,6 +11,7 @@
 #include "catena/models/seabed.hpp"
 #include "catena/solvers/solve_request.hpp"
 #include "catena/statics/problem_builders.hpp"
+#include "damping.hpp"
 
 namespace catena::python {
 namespace {
@@ -21,19 +22,24 @@ Vec2 to_vec2(const Point& point) { return Vec2(point.first, point.second); }
 Point to_point(const Vec2& vector) { return {vector.x(), vector.y()}; }
 
 void bind_cable(py::module_& module) {
-  py::class_<CableProperties>(
-      module, "Cable",
-      "A uniform cable, per unit unstretched length, in SI units. Validated on "
-      "construction (catena.InvalidInput names the field).")
+  py::class_<CableProperties> cable(module, "Cable",
+                                    "A uniform cable, per unit unstretched length, in SI units. "
+                                    "Validated on construction (catena.InvalidInput names the "
+                                    "field).");
+  cable
       .def(py::init([](double length_m, double weight_n_per_m, double mass_kg_per_m,
-                       double axial_stiffness_n, double added_mass_kg_per_m) {
-             CableProperties cable{length_m, weight_n_per_m, axial_stiffness_n, mass_kg_per_m,
-                                   added_mass_kg_per_m};
-             cable.validate();
-             return cable;
+                       double axial_stiffness_n, double added_mass_kg_per_m,
+                       double damping_tangential, double damping_normal, double axial_damping) {
+             CableProperties properties{length_m,      weight_n_per_m,      axial_stiffness_n,
+                                        mass_kg_per_m, added_mass_kg_per_m, {}};
+             properties.damping = {damping_tangential, damping_normal, axial_damping};
+             properties.validate();
+             return properties;
            }),
            py::kw_only(), py::arg("length_m"), py::arg("weight_n_per_m"), py::arg("mass_kg_per_m"),
-           py::arg("axial_stiffness_n") = kInfinity, py::arg("added_mass_kg_per_m") = 0.0)
+           py::arg("axial_stiffness_n") = kInfinity, py::arg("added_mass_kg_per_m") = 0.0,
+           py::arg("damping_tangential_n_s_per_m2") = 0.0,
+           py::arg("damping_normal_n_s_per_m2") = 0.0, py::arg("axial_damping_n_s") = 0.0)
       .def_readwrite("length_m", &CableProperties::length_m, "unstretched length L [m], > 0")
       .def_readwrite("weight_n_per_m", &CableProperties::weight_n_per_m,
                      "submerged weight per unit unstretched length W0 [N/m], > 0")
@@ -45,15 +51,17 @@ void bind_cable(py::module_& module) {
                      "added (hydrodynamic) mass ma [kg/m], >= 0, normal directions only")
       .def_property_readonly("normal_mass_kg_per_m", &CableProperties::normal_mass_kg_per_m,
                              "M = m + ma [kg/m]")
-      .def_property_readonly("inextensible", &CableProperties::is_inextensible, "EA = inf")
+      .def_property_readonly("inextensible", &CableProperties::is_inextensible, "EA = inf");
+  bind_section_damping(cable);
+  cable
       .def("validate", &CableProperties::validate,
            "Raises catena.InvalidInput naming the bad field.")
       .def("__repr__", [](const CableProperties& c) {
         return fmt::format(
             "Cable(length_m={}, weight_n_per_m={}, mass_kg_per_m={}, axial_stiffness_n={}, "
-            "added_mass_kg_per_m={})",
+            "added_mass_kg_per_m={}{})",
             c.length_m, c.weight_n_per_m, c.mass_kg_per_m, c.axial_stiffness_n,
-            c.added_mass_kg_per_m);
+            c.added_mass_kg_per_m, damping_repr(c.damping));
       });
 }
 
@@ -87,8 +95,9 @@ Problem make_line_problem(const Line& line,
   return with_supports(problem, b_m, a_m, seabed);
 }
 
-Seabed make_seabed(double z_m, double friction, double stiffness, double tangential_stiffness) {
-  Seabed seabed{z_m, friction, stiffness, tangential_stiffness};
+Seabed make_seabed(
+    double z_m, double friction, double stiffness, double tangential_stiffness, double damping) {
+  Seabed seabed{z_m, friction, stiffness, tangential_stiffness, damping};
   seabed.validate();
   return seabed;
 }
@@ -99,17 +108,24 @@ void bind_seabed(py::module_& module) {
                      "\"Seabed contact\"). Validated "
                      "on construction (catena.InvalidInput names the field).")
       .def(py::init(&make_seabed), py::arg("z_m"), py::kw_only(), py::arg("friction") = 0.0,
-           py::arg("stiffness_n_per_m2") = 0.0, py::arg("tangential_stiffness_n_per_m2") = 0.0)
+           py::arg("stiffness_n_per_m2") = 0.0, py::arg("tangential_stiffness_n_per_m2") = 0.0,
+           py::arg("damping_n_s_per_m2") = 0.0)
       .def_readonly("z_m", &Seabed::z_m, "seabed height [m]")
       .def_readonly("friction", &Seabed::friction, "Coulomb coefficient C_B of the statics [-]")
       .def_readonly("stiffness_n_per_m2", &Seabed::stiffness_n_per_m2,
                     "vertical foundation stiffness per unit length k_s [N/m per m]")
       .def_readonly("tangential_stiffness_n_per_m2", &Seabed::tangential_stiffness_n_per_m2,
                     "foundation stiffness along and across the seabed [N/m per m]")
+      .def_readonly("damping_n_s_per_m2", &Seabed::damping_n_s_per_m2,
+                    "dashpot c_s under the grounded part, in parallel with k_s [N s/m per m]")
       .def("__repr__", [](const Seabed& b) {
         return fmt::format(
-            "Seabed(z_m={}, friction={}, stiffness_n_per_m2={}, tangential_stiffness_n_per_m2={})",
-            b.z_m, b.friction, b.stiffness_n_per_m2, b.tangential_stiffness_n_per_m2);
+            "Seabed(z_m={}, friction={}, stiffness_n_per_m2={}, "
+            "tangential_stiffness_n_per_m2={}{})",
+            b.z_m, b.friction, b.stiffness_n_per_m2, b.tangential_stiffness_n_per_m2,
+            b.damping_n_s_per_m2 > 0.0
+                ? fmt::format(", damping_n_s_per_m2={}", b.damping_n_s_per_m2)
+                : std::string());
       });
 }
 
@@ -154,16 +170,42 @@ void bind_problem(py::module_& module) {
           },
           "(H, V_A) [N] when the static state is given by its end forces (builders of taut "
           "cables), else None")
-      .def_static("taut_inclined", &make_taut_inclined_problem, py::arg("eps"), py::arg("phi_deg"),
-                  py::arg("lambda2"), py::arg("mass_ratio") = 1.0,
-                  "Grinfogel's taut inclined cable from its dimensionless groups "
-                  "(docs/explanation/physics.md).")
-      .def_static("gale_xi", &make_gale_xi_problem, py::arg("xi1"), py::arg("xi2"),
-                  "Gale's inextensible catenary between apex coordinates xi1 < xi2 "
-                  "(docs/explanation/physics.md).")
-      .def_static("gale_sag", &make_gale_sag_problem, py::arg("h_over_b"), py::arg("sag_param"),
-                  "Gale's inextensible catenary from height/span and sag parameter "
-                  "(docs/explanation/physics.md).")
+      .def_static(
+          "taut_inclined",
+          [](double eps, double phi_deg, double lambda2, double mass_ratio, double eta_tangential,
+             double eta_normal, double eta_axial) {
+            return damped_taut_inclined_problem(eps, phi_deg, lambda2, mass_ratio,
+                                                {eta_tangential, eta_normal, eta_axial});
+          },
+          py::arg("eps"), py::arg("phi_deg"), py::arg("lambda2"), py::arg("mass_ratio") = 1.0,
+          py::kw_only(), py::arg("eta_tangential") = 0.0, py::arg("eta_normal") = 0.0,
+          py::arg("eta_axial") = 0.0,
+          "Grinfogel's taut inclined cable from its dimensionless groups "
+          "(docs/explanation/physics.md); damping in the form's units (L = 1 m, T0 = 1 N, "
+          "M = 1 kg/m): c_t = eta_tangential, c_n = eta_normal, c_a = eta_axial "
+          "(docs/reference/scene-format.md, \"Damping\").")
+      .def_static(
+          "gale_xi",
+          [](double xi1, double xi2, double eta1, double eta2) {
+            return with_gale_damping(make_gale_xi_problem(xi1, xi2), eta1, eta2);
+          },
+          py::arg("xi1"), py::arg("xi2"), py::kw_only(), py::arg("eta1") = 0.0,
+          py::arg("eta2") = 0.0,
+          "Gale's inextensible catenary between apex coordinates xi1 < xi2 "
+          "(docs/explanation/physics.md); eta1, eta2: his tangential and normal drag, "
+          "eqs. 2.28e,f.")
+      .def_static(
+          "gale_sag",
+          [](double h_over_b, double sag_param, double eta1, double eta2) {
+            return with_gale_damping(make_gale_sag_problem(h_over_b, sag_param), eta1, eta2);
+          },
+          py::arg("h_over_b"), py::arg("sag_param"), py::kw_only(), py::arg("eta1") = 0.0,
+          py::arg("eta2") = 0.0,
+          "Gale's inextensible catenary from height/span and sag parameter "
+          "(docs/explanation/physics.md); eta1, eta2 as gale_xi.")
+      .def_property_readonly("damped", &Problem::is_damped,
+                             "True when the line or the seabed has a non-zero damping "
+                             "coefficient (complex roots lambda = -delta + i omega_d)")
       .def("validate", &Problem::validate, "Raises catena.InvalidInput naming the bad field.")
       .def("__repr__", [](const Problem& p) {
         return fmt::format(

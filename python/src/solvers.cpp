@@ -11,6 +11,7 @@
 #include "bindings.hpp"
 #include "catena/core/error.hpp"
 #include "catena/models/line.hpp"
+#include "catena/models/seabed.hpp"
 #include "catena/solvers/solver_registry.hpp"
 
 namespace catena::python {
@@ -66,10 +67,25 @@ const SolverEntry& solver_named(const std::string& name) {
   throw InvalidInput(fmt::format("solver \"{}\": unknown solver (known: {})", name, known));
 }
 
+// Damping does not change the statics, but a solver may take the line's dynamic coefficients
+// (damping, the seabed's foundation) from the copy the statics holds (shooting does): given
+// statics must therefore hold the problem's, or the solve would use another line's.
+bool same_damping(const SectionDamping& a, const SectionDamping& b) {
+  return a.tangential_n_s_per_m2 == b.tangential_n_s_per_m2 &&
+         a.normal_n_s_per_m2 == b.normal_n_s_per_m2 && a.axial_n_s == b.axial_n_s;
+}
+
 bool same_segment(const LineSegment& a, const LineSegment& b) {
   return a.length_m == b.length_m && a.weight_n_per_m == b.weight_n_per_m &&
          a.axial_stiffness_n == b.axial_stiffness_n && a.mass_kg_per_m == b.mass_kg_per_m &&
-         a.added_mass_kg_per_m == b.added_mass_kg_per_m;
+         a.added_mass_kg_per_m == b.added_mass_kg_per_m && same_damping(a.damping, b.damping);
+}
+
+bool same_seabed(const Seabed& a, const Seabed& b) {
+  return a.z_m == b.z_m && a.friction == b.friction &&
+         a.stiffness_n_per_m2 == b.stiffness_n_per_m2 &&
+         a.tangential_stiffness_n_per_m2 == b.tangential_stiffness_n_per_m2 &&
+         a.damping_n_s_per_m2 == b.damping_n_s_per_m2;
 }
 
 bool same_point(const PointAttachment& a, const PointAttachment& b) {
@@ -88,11 +104,9 @@ bool same_line(const Line& a, const Line& b) {
 
 // Given statics must belong to the problem's cable (or line) and be usable for dynamics.
 void check_given_statics(const Problem& problem, const StaticSolution& statics) {
-  const bool same_seabed =
-      problem.seabed.has_value() == statics.has_seabed() &&
-      (!problem.seabed || (problem.seabed->z_m == statics.seabed().z_m &&
-                           problem.seabed->friction == statics.seabed().friction));
-  if (!same_seabed) throw InvalidInput("statics: solved for another seabed than problem.seabed");
+  const bool seabed_matches = problem.seabed.has_value() == statics.has_seabed() &&
+                              (!problem.seabed || same_seabed(*problem.seabed, statics.seabed()));
+  if (!seabed_matches) throw InvalidInput("statics: solved for another seabed than problem.seabed");
   if (!same_line(problem.as_line(), statics.line())) {
     throw InvalidInput(fmt::format(
         "statics: solved for another {} than problem.{} (use catena.solve_statics(problem))",

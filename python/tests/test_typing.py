@@ -55,7 +55,7 @@ def test_py_typed_and_stubs_sit_next_to_the_package():
 
 
 # The stubs' own type aliases.
-ALIASES = {"_Array", "_ArrayLike", "_Point", "_KnobValue"}
+ALIASES = {"_Array", "_ComplexArray", "_Field", "_ArrayLike", "_Point", "_KnobValue"}
 
 
 def test_module_names_match_the_stubs():

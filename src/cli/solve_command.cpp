@@ -35,13 +35,14 @@ struct SolveArguments {
 void print_damped_modes(const ModalResult& result) {
   fmt::print("    {:>4} {:>20} {:>16} {:>16} {:>12} {:>10} {:>10}\n", "mode", "omega_d [rad/s]",
              "f_d [Hz]", "delta [1/s]", "zeta", "rel.err", "delta err");
-  const auto row = [](const Mode& mode, const std::string& label) {
-    fmt::print("    {:>4} {:>20.12g} {:>16.10g} {:>16.10g} {:>12.6g} {:>10.2e} {:>10}\n", label,
+  // A missing estimate (-1; e.g. omega_d of an overdamped root, which is exactly 0) prints "-".
+  const auto estimate = [](double value) {
+    return value >= 0.0 ? fmt::format("{:.2e}", value) : std::string("-");
+  };
+  const auto row = [&](const Mode& mode, const std::string& label) {
+    fmt::print("    {:>4} {:>20.12g} {:>16.10g} {:>16.10g} {:>12.6g} {:>10} {:>10}\n", label,
                mode.omega_rad_s, mode.frequency_hz, mode.decay_rate_1_s, mode.damping_ratio,
-               mode.relative_error_estimate,
-               mode.decay_rate_error_estimate >= 0.0
-                   ? fmt::format("{:.2e}", mode.decay_rate_error_estimate)
-                   : std::string("-"));
+               estimate(mode.relative_error_estimate), estimate(mode.decay_rate_error_estimate));
   };
   for (const auto& mode : result.modes) row(mode, std::to_string(mode.index));
   for (const auto& mode : result.overdamped) row(mode, fmt::format("od{}", mode.index));
@@ -131,6 +132,24 @@ void print_line_statics(const Problem& problem, const StaticSolution& statics) {
              statics.position_m(low).x(), statics.position_m(low).y());
 }
 
+// The damping of a damped problem (docs/reference/scene-format.md, "Damping"): the cable's, each
+// damped segment's and the seabed dashpot; nothing for an undamped one, whose output is unchanged.
+void print_damping(const Problem& problem) {
+  const auto section = [](const std::string& what, const SectionDamping& d) {
+    if (d.is_zero()) return;
+    fmt::print("  {}: c_t = {:g} N s/m per m, c_n = {:g} N s/m per m, c_a = {:g} N s\n", what,
+               d.tangential_n_s_per_m2, d.normal_n_s_per_m2, d.axial_n_s);
+  };
+  if (problem.is_uniform()) {
+    section("damping", problem.cable.damping);
+  } else {
+    for (std::size_t k = 0; k < problem.line.segments.size(); ++k)
+      section(fmt::format("damping of segment {}", k), problem.line.segments[k].damping);
+  }
+  if (problem.seabed && problem.seabed->damping_n_s_per_m2 > 0.0)
+    fmt::print("  seabed damping: c_s = {:g} N s/m per m\n", problem.seabed->damping_n_s_per_m2);
+}
+
 void print_result(const SceneResult& result) {
   const Scene& scene = result.scene;
   fmt::print("scene {} ({})\n", scene.name, path_text(scene.file));
@@ -140,14 +159,12 @@ void print_result(const SceneResult& result) {
   }
   if (scene.problem.is_uniform()) {
     print_cable(scene.problem);
-    const SectionDamping& d = scene.problem.cable.damping;
-    if (!d.is_zero())
-      fmt::print("  damping: c_t = {:g} N s/m per m, c_n = {:g} N s/m per m, c_a = {:g} N s\n",
-                 d.tangential_n_s_per_m2, d.normal_n_s_per_m2, d.axial_n_s);
+    print_damping(scene.problem);
     fmt::print("  statics: {}\n", result.statics->brief_report());
     print_groups(*result.groups);
   } else {
     print_line_statics(scene.problem, *result.statics);
+    print_damping(scene.problem);
   }
   for (const auto& output : result.outputs) {
     fmt::print("  solver {}\n", output.summary.brief_report());
