@@ -162,39 +162,13 @@ Problem read_line(TableReader& root, const std::string& origin) {
   return problem;
 }
 
-// The physical damping of a taut_inclined problem from its nondimensional coefficients:
-// c_t = eta_t sqrt(T0 M) / L, c_n = eta_n sqrt(T0 M) / L, c_a = eta_a L sqrt(T0 M), with
-// make_taut_inclined_problem's T0 = 1 N (problem_builders.hpp), its M and its L.
-SectionDamping scaled_taut_damping(const SectionDamping& eta, const Problem& problem) {
-  const double t0_n = 1.0;
-  const double length = problem.cable.length_m;
-  const double impedance = std::sqrt(t0_n * problem.cable.normal_mass_kg_per_m());
-  SectionDamping damping;
-  damping.tangential_n_s_per_m2 = eta.tangential_n_s_per_m2 * impedance / length;
-  damping.normal_n_s_per_m2 = eta.normal_n_s_per_m2 * impedance / length;
-  damping.axial_n_s = eta.axial_n_s * impedance * length;
-  return damping;
-}
-
-// sqrt(g / a) rho of Gale's form: rho = m, g = W0 / m, a = H / W0 (from the builder's values).
-double gale_damping_scale(const Problem& problem) {
-  const CableProperties& c = problem.cable;
-  const double horizontal =
-      problem.prescribed_forces ? problem.prescribed_forces->horizontal_n : c.weight_n_per_m;
-  const double g = c.weight_n_per_m / c.mass_kg_per_m;
-  const double a = horizontal / c.weight_n_per_m;
-  return c.mass_kg_per_m * std::sqrt(g / a);
-}
-
 Problem read_taut_inclined(TableReader& root, const std::string& origin) {
   TableReader form = root.subtable("taut_inclined");
   const double eps = form.checked("eps", positive, "finite and > 0", "-");
   const double phi = form.checked("phi_deg", any_value, "finite", "deg");
   const double lambda2 = form.checked("lambda2", positive, "finite and > 0", "-");
   const double h = form.checked("mass_ratio", positive, "finite and > 0", "-", 1.0);
-  // Damping in the form's own units (L = 1 m, T0 = 1 N, M = 1 kg/m, so sqrt(T0 M) / L = 1):
-  // eta_tangential = c_t L / sqrt(T0 M), eta_normal = c_n L / sqrt(T0 M),
-  // eta_axial = c_a / (L sqrt(T0 M)) (docs/reference/scene-format.md, "Damping").
+  // Nondimensional damping (set_taut_inclined_damping; docs/reference/scene-format.md, "Damping").
   SectionDamping damping;
   damping.tangential_n_s_per_m2 =
       form.checked("eta_tangential", non_negative, "finite and >= 0", "-", 0.0);
@@ -203,8 +177,7 @@ Problem read_taut_inclined(TableReader& root, const std::string& origin) {
   form.finish();
   try {
     Problem problem = make_taut_inclined_problem(eps, phi, lambda2, h);
-    problem.cable.damping = scaled_taut_damping(damping, problem);
-    problem.validate();
+    set_taut_inclined_damping(problem, damping);
     return problem;
   } catch (const InvalidInput& error) {
     throw InvalidInput(fmt::format("{}: [taut_inclined]: {}", origin, error.what()));
@@ -237,10 +210,7 @@ Problem read_gale(TableReader& root, const std::string& origin) {
       form.finish();
       problem = make_gale_sag_problem(h_over_b, sag);
     }
-    const double scale = gale_damping_scale(problem);
-    problem.cable.damping.tangential_n_s_per_m2 = eta1 * scale;
-    problem.cable.damping.normal_n_s_per_m2 = eta2 * scale;
-    problem.validate();
+    set_gale_damping(problem, eta1, eta2);
     return problem;
   } catch (const InvalidInput& error) {
     throw InvalidInput(fmt::format("{}: [gale]: {}", origin, error.what()));

@@ -145,4 +145,27 @@ Problem make_gale_sag_problem(double height_over_span, double sag_parameter) {
   return problem;
 }
 
+void set_taut_inclined_damping(Problem& problem, const SectionDamping& eta) {
+  const double t0_n = 1.0;  // the builder's tension at s_a
+  const double length = problem.cable.length_m;
+  const double impedance = std::sqrt(t0_n * problem.cable.normal_mass_kg_per_m());
+  problem.cable.damping.tangential_n_s_per_m2 = eta.tangential_n_s_per_m2 * impedance / length;
+  problem.cable.damping.normal_n_s_per_m2 = eta.normal_n_s_per_m2 * impedance / length;
+  problem.cable.damping.axial_n_s = eta.axial_n_s * impedance * length;
+  problem.validate();
+}
+
+void set_gale_damping(Problem& problem, double eta1, double eta2) {
+  // rho sqrt(g / a) with rho = m, g = W0 / m, a = H / W0 from the builder's values.
+  const CableProperties& c = problem.cable;
+  const double horizontal =
+      problem.prescribed_forces ? problem.prescribed_forces->horizontal_n : c.weight_n_per_m;
+  const double g = c.weight_n_per_m / c.mass_kg_per_m;
+  const double a = horizontal / c.weight_n_per_m;
+  const double scale = c.mass_kg_per_m * std::sqrt(g / a);
+  problem.cable.damping.tangential_n_s_per_m2 = eta1 * scale;
+  problem.cable.damping.normal_n_s_per_m2 = eta2 * scale;
+  problem.validate();
+}
+
 }  // namespace catena

@@ -27,6 +27,16 @@ Problem make_gale_xi_problem(double xi1, double xi2);
 /// and the sag parameter b / sqrt(l^2 - h^2) in (0, 1). Same units as make_gale_xi_problem.
 Problem make_gale_sag_problem(double height_over_span, double sag_parameter);
 
+/// Damping of a make_taut_inclined_problem() problem from nondimensional coefficients (held in the
+/// fields of `eta`): c_t = eta_t sqrt(T0 M) / L, c_n = eta_n sqrt(T0 M) / L, c_a = eta_a L sqrt(T0
+/// M) with the builder's T0 = 1 N, M and L (docs/reference/scene-format.md, "Damping"). The scene
+/// keys are eta_tangential, eta_normal, eta_axial. Validates the problem afterwards.
+void set_taut_inclined_damping(Problem& problem, const SectionDamping& eta);
+/// Damping of a Gale-form problem (make_gale_xi_problem, make_gale_sag_problem) from Gale's
+/// nondimensional drag coefficients (eqs. 2.28e,f): eta = f / rho sqrt(a / g) with rho the mass per
+/// length, so f = eta rho sqrt(g / a) (= eta in the form's units). Validates the problem
+/// afterwards.
+void set_gale_damping(Problem& problem, double eta1, double eta2);
 /// Gale's eq. 3.5: a/b from the sag parameter, i.e. the root u of u / sinh(u) = sag_parameter,
 /// a/b = 1 / (2u). sag_parameter in (0, 1); returns 0 for sag_parameter = 0.
 double gale_a_over_b(double sag_parameter);
