@@ -17,8 +17,10 @@ using Basis = CatenaryBasis<DampedReal, DampedComplex>;
 Basis damped_basis(const DampedSetup& setup, const DampedComplex& lambda, double term_scale) {
   const DampedInertia in = damped_inertia(setup, lambda);
   CatenarySeriesSettings settings = setup.plane.settings;
-  // Terms below long double's epsilon of the largest change nothing: the finest cut.
-  settings.term_tolerance = std::max(settings.term_tolerance * term_scale, 1e-19);
+  // Terms below long double's epsilon of the largest change nothing: the finest cut. A coarser
+  // cut (term_scale > 1, the argument count's phase) stops at 1e-9.
+  settings.term_tolerance = std::clamp(settings.term_tolerance * term_scale, 1e-19,
+                                       std::max(settings.term_tolerance, 1e-9));
   // The undamped parameters Omega^2 -> -mu1, mu Omega^2 -> -mu2.
   const auto ode = catenary_ode_inertia<DampedComplex>(setup.plane.inplane, -in.mu1, -in.mu2);
   return Basis(setup.plane.inplane, ode, static_cast<double>(std::abs(lambda)), setup.plane.mu,

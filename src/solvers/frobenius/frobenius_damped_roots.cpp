@@ -14,6 +14,7 @@ namespace {
 using Complex = DampedComplex;
 using R = DampedReal;
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kPhaseTermScale = 1e6;
 
 // The scaled determinant with the drag scaled by s (the homotopy parameter), series cut
 // `term_scale` finer; records the work in `out`.
@@ -109,7 +110,8 @@ Track continue_root(DampedDeterminant& det, double omega0, double spacing, Compl
     const double s_new = std::min(1.0, s + ds);
     const Complex predicted =
         s > 0.0 ? lambda + (lambda - previous) * R((s_new - s) / (s - s_previous)) : lambda;
-    const auto f = [&](const Complex& z) { return det(z, s_new); };
+    // On the way (s < 1) the root is needed to 1e-9 only: series cut 1e3 coarser.
+    const auto f = [&](const Complex& z) { return det(z, s_new, s_new < 1.0 ? 1e3 : 1.0); };
     const double stop = s_new < 1.0 ? 1e-9 : 1e-10;
     MullerResult r = muller(f, predicted, R(1e-3 * spacing), stop);
     if (r.ok && r.root.imag() < 0) r.root = std::conj(r.root);  // the conjugate is a root too
@@ -150,7 +152,9 @@ DampedRoot polish(
     term_scale *= 1e-3;
     const MullerResult b = level(a.root, term_scale);
     root.lambda = b.root;
-    const R step = R(std::max(a.last_step, b.last_step)) * std::abs(b.root);
+    // Not below the rounding of the determinant's arguments: 1e-18 |lambda| (long double's
+    // epsilon is 1.1e-19).
+    const R step = R(std::max({a.last_step, b.last_step, 1e-18})) * std::abs(b.root);
     const Complex d = b.root - a.root;
     if (std::abs(d) > R(1e-6) * std::abs(a.root)) {  // not a truncation: keep the coarser root
       root.lambda = a.root;
@@ -194,16 +198,18 @@ std::vector<double> real_axis_roots(DampedDeterminant& det, double left, double 
 
 // Change of arg det along the segment a -> b, in steps of at most h that turn the phase by less
 // than pi/4 (halved until they do). False when a step below 1e-7 of the segment still turns
-// more: a root on (or within rounding of) the segment.
+// more: a root on (or within rounding of) the segment. The phase needs few digits: the series are
+// cut at kPhaseTermScale times the solver's term tolerance (1e-9 at the default), which halves
+// their terms.
 bool phase_change(DampedDeterminant& det, Complex a, Complex b, double h, double& total) {
   const R length = std::abs(b - a);
   const Complex unit = (b - a) / length;
   R t = 0;
-  Complex fa = det(a, 1.0);
+  Complex fa = det(a, 1.0, kPhaseTermScale);
   R step = std::min(R(h), length);
   while (t < length) {
     const R t_new = std::min(length, t + step);
-    const Complex fb = det(a + unit * t_new, 1.0);
+    const Complex fb = det(a + unit * t_new, 1.0, kPhaseTermScale);
     const R turn = std::arg(fb / fa);
     if (std::abs(turn) > R(kPi / 4)) {
       step *= R(0.5);
@@ -299,7 +305,7 @@ DampedRoots find_damped_roots(const DampedSetup& setup, int count, const RootSet
   // Overdamped roots: where a pair left the complex plane, or the count asks for more roots.
   const int complex_pairs = 2 * static_cast<int>(out.modes.size());
   out.counted =
-      out.count_top > 0.0 ? argument_count(det, left, right, out.count_top, 0.3 * spacing) : -1;
+      out.count_top > 0.0 ? argument_count(det, left, right, out.count_top, 0.5 * spacing) : -1;
   if (became_real > 0 || out.counted > complex_pairs) {
     for (int points : {128, 512}) {
       const auto real = real_axis_roots(det, left, -1e-9 * spacing, points);

@@ -11,6 +11,7 @@
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <complex>
+#include <utility>
 #include <vector>
 
 #include "catena/solvers/frobenius_solver.hpp"
@@ -115,6 +116,28 @@ TEST(FrobeniusDampedTest, HeavyDragMakesTheFirstModeOverdamped) {
     EXPECT_LT(rel(-l.real(), eta / 2), 1e-10) << i;
   }
   EXPECT_EQ(r.proved_count_below_top, 3) << r.summary.notes.back();
+}
+
+TEST(FrobeniusDampedTest, ProportionalDragWithAddedMassUsesTheNormalMass) {
+  // c_t = alpha m, c_n = alpha (m + ma): lambda = -alpha/2 + i sqrt(w0^2 - alpha^2/4) [rad/s].
+  Problem problem = make_gale_xi_problem(-0.7, 1.2);
+  problem.cable.added_mass_kg_per_m = 0.6 * problem.cable.mass_kg_per_m;
+  const Solved undamped = run(problem, modes(3, 3));
+  const double alpha = 0.2 * undamped.output.inplane->modes[0].omega_rad_s;
+  problem.cable.damping.tangential_n_s_per_m2 = alpha * problem.cable.mass_kg_per_m;
+  problem.cable.damping.normal_n_s_per_m2 = alpha * problem.cable.normal_mass_kg_per_m();
+  const Solved damped = run(problem, modes(3, 3));
+  for (const auto& [d, u] : {std::pair{damped.output.inplane, undamped.output.inplane},
+                             std::pair{damped.output.outofplane, undamped.output.outofplane}}) {
+    ASSERT_EQ(d->summary.termination, Termination::Converged) << d->summary.message;
+    ASSERT_EQ(d->modes.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double w0 = u->modes[i].omega_rad_s;
+      EXPECT_LT(rel(d->modes[i].omega_rad_s, std::sqrt(w0 * w0 - alpha * alpha / 4)), 1e-10) << i;
+      EXPECT_LT(rel(d->modes[i].decay_rate_1_s, alpha / 2), 1e-10) << i;
+    }
+    EXPECT_EQ(d->proved_count_below_top, 3);
+  }
 }
 
 // Gale's first-order system in sigma (eqs. 2.33, units a and H, C = sqrt(1 + s^2)) with complex
