@@ -119,6 +119,12 @@ class FrobeniusNumerics final : public SolverNumerics {
   void summarise_plane(Plane plane, int count, const PlaneRoots& found, ModalResult& result) const;
   ModalResult damped_modes(Plane plane, int count);
   DampedSetup damped_setup(bool inplane) const;
+  // Drag on the cable itself. A damped problem without it (a seabed dashpot under a cable that
+  // does not touch the seabed: this solver declines contact) has the undamped modes.
+  bool has_drag() const {
+    const SectionDamping& d = context_.problem.cable.damping;
+    return d.tangential_n_s_per_m2 > 0.0 || d.normal_n_s_per_m2 > 0.0;
+  }
 
   const SolveContext& context_;
   FrobeniusSolverOptions options_;
@@ -181,7 +187,7 @@ ModalResult FrobeniusNumerics::damped_modes(Plane plane, int count) {
 }
 
 ModalResult FrobeniusNumerics::modes(Plane plane, int count) {
-  if (context_.problem.is_damped()) return damped_modes(plane, count);
+  if (context_.problem.is_damped() && has_drag()) return damped_modes(plane, count);
   const bool inplane = plane == Plane::InPlane;
   PlaneSetup setup = base_;
   setup.inplane = inplane;
@@ -270,7 +276,7 @@ ForcedOutcome FrobeniusNumerics::forced(const ForcedRequest& request) {
   WorkMeter meter(context_, "frobenius", "forced frequencies",
                   static_cast<long>(request.omegas_rad_s.size()));
   outcome.responses =
-      context_.problem.is_damped()
+      context_.problem.is_damped() && has_drag()
           ? frobenius_damped_forced_responses(damped_setup(true), request, stations_, units_, work,
                                               &meter)
           : frobenius_forced_responses(base_, request, stations_, units_, work, &meter);
