@@ -143,7 +143,7 @@ TEST(FrobeniusDampedTest, ProportionalDragWithAddedMassUsesTheNormalMass) {
 // Gale's first-order system in sigma (eqs. 2.33, units a and H, C = sqrt(1 + s^2)) with complex
 // lambda: u' = w/C^2, w' = phi - u/C^2, tau' = phi/C + mu1 u, (C phi)' = -tau/C^2 + mu2 w, as 8
 // real unknowns (real and imaginary parts of u, w, phi, tau).
-using State8 = std::array<double, 8>;
+using State8 = std::vector<double>;  // (a std::array state trips a GCC false positive in odeint)
 std::array<Complex, 4> integrate(
     std::array<Complex, 4> y0, double s1, double s2, Complex mu1, Complex mu2) {
   namespace odeint = boost::numeric::odeint;
@@ -158,7 +158,7 @@ std::array<Complex, 4> integrate(
       dx[2 * k + 1] = d[order[k]].imag();
     }
   };
-  State8 y{};
+  State8 y(8, 0.0);
   for (int k = 0; k < 4; ++k) {
     y[2 * k] = y0[static_cast<std::size_t>(k)].real();
     y[2 * k + 1] = y0[static_cast<std::size_t>(k)].imag();
@@ -205,6 +205,31 @@ TEST(FrobeniusDampedTest, DistinctDragAgreesWithDirectIntegrationOfGalesSystem) 
     // Energy bound: delta lies between the two drags' halves.
     EXPECT_GT(-l.real(), eta1 / 2) << mode.index;
     EXPECT_LT(-l.real(), eta2 / 2) << mode.index;
+  }
+}
+
+TEST(FrobeniusDampedTest, HeavyDistinctDragOverdampedRootsAgreeWithDirectIntegration) {
+  const Problem problem = make_gale_xi_problem(-0.524, 1.116);
+  const double eta1 = 1.0, eta2 = 6.0;
+  const Solved damped = run(with_drag(problem, eta1, eta2), modes(3, 0));
+  const ModalResult& r = *damped.output.inplane;
+  ASSERT_EQ(r.summary.termination, Termination::Converged) << r.summary.message;
+  ASSERT_FALSE(r.overdamped.empty());
+  EXPECT_EQ(r.proved_count_below_top, 3) << r.summary.notes.back();
+  const double s1 = damped.groups.sigma1, s2 = damped.groups.sigma2;
+  for (const Mode& mode : r.overdamped) {
+    const Complex l = gale_lambda(mode, damped);
+    EXPECT_EQ(l.imag(), 0.0);
+    const Complex ref = shooting_root(s1, s2, l, eta1, eta2);
+    EXPECT_LT(std::abs(ref.imag()), 1e-9 * std::abs(ref)) << mode.index;
+    EXPECT_LT(rel(l.real(), ref.real()), 1e-9) << mode.index;
+    EXPECT_LE(-l.real(), eta2) << mode.index;  // real roots lie in [-max drag, 0]
+  }
+  for (const Mode& mode : r.modes) {
+    const Complex l = gale_lambda(mode, damped);
+    const Complex ref = shooting_root(s1, s2, l, eta1, eta2);
+    EXPECT_LT(rel(l.imag(), ref.imag()), 1e-9) << mode.index;
+    EXPECT_LT(rel(l.real(), ref.real()), 1e-9) << mode.index;
   }
 }
 
