@@ -197,10 +197,10 @@ std::vector<double> real_axis_roots(DampedDeterminant& det, double left, double 
 }
 
 // Change of arg det along the segment a -> b, in steps of at most h that turn the phase by less
-// than pi/4 (halved until they do). False when a step below 1e-7 of the segment still turns
-// more: a root on (or within rounding of) the segment. The phase needs few digits: the series are
-// cut at kPhaseTermScale times the solver's term tolerance (1e-9 at the default), which halves
-// their terms.
+// than pi/3 (halved until they do; a true turn must exceed pi to alias). False when a step below
+// 1e-7 of the segment still turns more: a root on (or within rounding of) the segment. The phase
+// needs few digits: the series are cut at kPhaseTermScale times the solver's term tolerance (1e-9
+// at the default), which halves their terms.
 bool phase_change(DampedDeterminant& det, Complex a, Complex b, double h, double& total) {
   const R length = std::abs(b - a);
   const Complex unit = (b - a) / length;
@@ -211,7 +211,7 @@ bool phase_change(DampedDeterminant& det, Complex a, Complex b, double h, double
     const R t_new = std::min(length, t + step);
     const Complex fb = det(a + unit * t_new, 1.0, kPhaseTermScale);
     const R turn = std::arg(fb / fa);
-    if (std::abs(turn) > R(kPi / 4)) {
+    if (std::abs(turn) > R(kPi / 3)) {
       step *= R(0.5);
       if (step < R(1e-7) * length) return false;
       continue;
@@ -219,7 +219,7 @@ bool phase_change(DampedDeterminant& det, Complex a, Complex b, double h, double
     total += static_cast<double>(turn);
     t = t_new;
     fa = fb;
-    if (std::abs(turn) < R(kPi / 16)) step = std::min(R(h), step * R(1.5));
+    if (std::abs(turn) < R(kPi / 6)) step = std::min(R(h), step * R(1.5));
   }
   return true;
 }
@@ -304,8 +304,10 @@ DampedRoots find_damped_roots(const DampedSetup& setup, int count, const RootSet
   }
   // Overdamped roots: where a pair left the complex plane, or the count asks for more roots.
   const int complex_pairs = 2 * static_cast<int>(out.modes.size());
+  const long before_count = out.evaluations;
   out.counted =
       out.count_top > 0.0 ? argument_count(det, left, right, out.count_top, 0.5 * spacing) : -1;
+  const long count_evaluations = out.evaluations - before_count;
   if (became_real > 0 || out.counted > complex_pairs) {
     for (int points : {128, 512}) {
       const auto real = real_axis_roots(det, left, -1e-9 * spacing, points);
@@ -323,9 +325,9 @@ DampedRoots find_damped_roots(const DampedSetup& setup, int count, const RootSet
   out.expected = complex_pairs + static_cast<int>(out.overdamped.size());
   out.notes.push_back(fmt::format(
       "argument principle on Re lambda in [{:.6g}, {:.6g}], |Im lambda| < {:.6g} (Gale units): "
-      "{} roots, {} accounted for ({} complex modes, {} overdamped); {} undamped roots became "
-      "overdamped",
-      left, right, out.count_top, out.counted, out.expected, out.modes.size(),
+      "{} roots ({} determinant evaluations), {} accounted for ({} complex modes, {} "
+      "overdamped); {} undamped roots became overdamped",
+      left, right, out.count_top, out.counted, count_evaluations, out.expected, out.modes.size(),
       out.overdamped.size(), became_real));
   return out;
 }
