@@ -70,11 +70,13 @@ inline double eta_at_apex_phase(double omega, double mu, double phase) {
   return sigma * sigma / (std::sqrt(1.0 + sigma * sigma) + 1.0);
 }
 
-/// The ODE in eta of one plane (coefficients of y, y', ...).
+/// The ODE in eta of one plane (coefficients of y, y', ...), with the tangential inertia w2 =
+/// Omega^2 and the normal inertia mw = mu Omega^2 as separate parameters: in a viscous medium
+/// (Gale's eqs. 2.33a,b, 2.34 with motion ~ e^(lambda t)) w2 = -(lambda^2 + eta1 lambda) and
+/// mw = -(mu lambda^2 + eta2 lambda), complex (verification/tools/frobenius_derive_damped_odes.py).
 template <class Real>
-PolynomialOde<Real> catenary_ode(bool inplane, const Real& w2, const Real& mu) {
+PolynomialOde<Real> catenary_ode_inertia(bool inplane, const Real& w2, const Real& mw) {
   PolynomialOde<Real> ode;
-  const Real mw = mu * w2;
   if (inplane) {
     ode.p = {
         {-w2},
@@ -86,6 +88,13 @@ PolynomialOde<Real> catenary_ode(bool inplane, const Real& w2, const Real& mu) {
     ode.p = {{mw, mw}, {Real(1), Real(1)}, {Real(0), Real(2), Real(1)}};
   }
   return ode;
+}
+
+/// The undamped ODE in eta of one plane at Omega^2 = w2.
+template <class Real>
+PolynomialOde<Real> catenary_ode(bool inplane, const Real& w2, const Real& mu) {
+  const Real mw = mu * w2;
+  return catenary_ode_inertia<Real>(inplane, w2, mw);
 }
 
 /// Solves the small dense system A x = b (Gaussian elimination, partial pivoting).
@@ -153,17 +162,19 @@ inline std::vector<std::complex<double>> leading_roots(const PolynomialOde<doubl
 }
 
 /// D^k U_j (k = 0..3) of each basis function at one sigma, with absolute error estimates.
-template <class Real>
+template <class Scalar>
 struct BasisValues {
+  using Real = RealOfT<Scalar>;
   int size = 0;
-  std::array<std::array<Real, 4>, 4> value{};  // [j][k]
-  std::array<std::array<Real, 4>, 4> error{};  // truncation + rounding estimate
+  std::array<std::array<Scalar, 4>, 4> value{};  // [j][k]
+  std::array<std::array<Real, 4>, 4> error{};    // truncation + rounding estimate
   /// Largest single term of the series sums behind basis function j (for max term / |sum|).
   std::array<Real, 4> largest_term{};
 };
 
-/// The series basis of one plane at one frequency, valid for 0 <= eta <= eta_max.
-template <class Real>
+/// The series basis of one plane at one frequency, valid for 0 <= eta <= eta_max. Scalar is Real
+/// (undamped) or std::complex<Real> (damped: complex coefficients, real sigma and eta).
+template <class Real, class Scalar = Real>
 class CatenaryBasis {
  public:
   CatenaryBasis(bool inplane,
@@ -171,11 +182,22 @@ class CatenaryBasis {
                 const Real& mu,
                 double eta_max,
                 const CatenarySeriesSettings& settings)
-      : inplane_(inplane),
-        n_(inplane ? 4 : 2),
-        omega_(static_cast<double>(omega)),
-        mu_(static_cast<double>(mu)) {
-    const PolynomialOde<Real> ode = catenary_ode<Real>(inplane, omega * omega, mu);
+      : CatenaryBasis(inplane,
+                      catenary_ode<Scalar>(inplane, Scalar(omega * omega), Scalar(mu)),
+                      static_cast<double>(omega),
+                      static_cast<double>(mu),
+                      eta_max,
+                      settings) {}
+
+  /// The basis of the ODE `ode` (catenary_ode_inertia); omega and mu set the wave phase rate
+  /// that CatenarySeriesSettings::max_phase_per_expansion limits (|lambda| for a damped ODE).
+  CatenaryBasis(bool inplane,
+                const PolynomialOde<Scalar>& ode,
+                double omega,
+                double mu,
+                double eta_max,
+                const CatenarySeriesSettings& settings)
+      : inplane_(inplane), n_(inplane ? 4 : 2), omega_(omega), mu_(mu) {
     // Indicial roots (0, 1/2, 1, 3/2 in plane; 0, 1/2 out of plane) and singular points (roots of
     // the leading coefficient: 0, -1, -2 in plane; 0, -2 out of plane), both from the polynomials.
     // Neither depends on the frequency: computed once per plane.
@@ -211,11 +233,11 @@ class CatenaryBasis {
 
   /// D^k U_j(sigma), k = 0..max_derivative (<= 3); with `errors` Skipped the error and
   /// largest_term entries stay 0 (for callers that use the values alone).
-  BasisValues<Real> evaluate(const Real& sigma,
-                             int max_derivative,
-                             SeriesErrors errors = SeriesErrors::Tracked) const {
+  BasisValues<Scalar> evaluate(const Real& sigma,
+                               int max_derivative,
+                               SeriesErrors errors = SeriesErrors::Tracked) const {
     using std::sqrt;
-    BasisValues<Real> out;
+    BasisValues<Scalar> out;
     out.size = n_;
     const Real q = sigma * sigma;
     const Real eta = q / (sqrt(Real(1) + q) + Real(1));
@@ -232,14 +254,15 @@ class CatenaryBasis {
 
  private:
   // Centre 0: the singular point (the apex), where the Frobenius series are built.
-  void add_apex_expansion(const PolynomialOde<Real>& ode, const CatenarySeriesSettings& settings) {
+  void add_apex_expansion(const PolynomialOde<Scalar>& ode,
+                          const CatenarySeriesSettings& settings) {
     const double r0 = radius(0.0);
     double rho = settings.step_ratio;
     if (settings.max_phase_per_expansion > 0.0)
       rho = std::min(rho, eta_at_apex_phase(omega_, mu_, settings.max_phase_per_expansion) / r0);
     centres_.push_back(0.0);
     reach_.push_back(rho * r0);
-    const ShiftTable<Real> table0(ode);
+    const ShiftTable<Scalar> table0(ode);
     for (int j = 0; j < n_; ++j) {
       bool ok = false;
       singular_series_.push_back(adaptive_series(table0, Real(roots_[static_cast<std::size_t>(j)]),
@@ -267,7 +290,7 @@ class CatenaryBasis {
 
   // A Taylor expansion about the next ordinary centre, continuing every basis function: the
   // unit solutions there are combined to match the previous expansion's derivatives at x_m.
-  void add_ordinary_expansion(const PolynomialOde<Real>& ode,
+  void add_ordinary_expansion(const PolynomialOde<Scalar>& ode,
                               const CatenarySeriesSettings& settings) {
     double rho = settings.step_ratio;
     const double x_m = centres_.back() + reach_.back();
@@ -283,8 +306,8 @@ class CatenaryBasis {
       step = wave_step;
       rho = step / radius(c);
     }
-    const ShiftTable<Real> table(ode.shifted(Real(c)));
-    std::vector<FrobeniusSeries<Real>> unit;
+    const ShiftTable<Scalar> table(ode.shifted(Scalar(c)));
+    std::vector<FrobeniusSeries<Scalar>> unit;
     std::size_t longest = 0;
     for (int m = 0; m < n_; ++m) {
       bool ok = false;
@@ -296,19 +319,19 @@ class CatenaryBasis {
     const std::size_t n = static_cast<std::size_t>(n_);
     // Matching at x_m: B[d][m] = b_m^(d)(x_m - c); solve B coef_j = F_j^(d)(x_m).
     const Real t_m = Real(x_m) - Real(c);
-    std::vector<std::vector<Real>> B(n, std::vector<Real>(n));
+    std::vector<std::vector<Scalar>> B(n, std::vector<Scalar>(n));
     for (std::size_t m = 0; m < n; ++m) {
       const auto v = evaluate_series(unit[m], t_m, n_ - 1, Real(rho));
       for (std::size_t d = 0; d < n; ++d) B[d][m] = v.derivative[d];
     }
-    std::vector<FrobeniusSeries<Real>> combined(n);
+    std::vector<FrobeniusSeries<Scalar>> combined(n);
     for (std::size_t j = 0; j < n; ++j) {
       const auto d = raw_derivatives(static_cast<int>(centres_.size()) - 1, static_cast<int>(j),
                                      Real(x_m), n_ - 1);
-      const std::vector<Real> coef = solve_dense(B, d.derivative);
+      const std::vector<Scalar> coef = solve_dense(B, d.derivative);
       auto& s = combined[j];
       s.r = Real(0);
-      s.a.assign(longest, Real(0));
+      s.a.assign(longest, Scalar(0));
       for (std::size_t m = 0; m < n; ++m)
         for (std::size_t i = 0; i < unit[m].a.size(); ++i) s.a[i + m] += coef[m] * unit[m].a[i];
       total_terms_ += static_cast<long>(longest);
@@ -328,16 +351,18 @@ class CatenaryBasis {
                      const Real& eta,
                      int max_derivative,
                      SeriesErrors errors,
-                     BasisValues<Real>& out) const {
+                     BasisValues<Scalar>& out) const {
     using std::abs;
     using std::sqrt;
     const Real eps = std::numeric_limits<Real>::epsilon();
-    const FrobeniusSeries<Real>& s = singular_series_[j];  // g: its coefficients, exponent r - 1/2
+    const FrobeniusSeries<Scalar>& s =
+        singular_series_[j];  // g: its coefficients, exponent r - 1/2
     const auto gv =
         evaluate_series(s.a, Real(s.r - Real(0.5)), eta, max_derivative, Real(ratio_[0]), errors);
     for (const auto& x : gv.largest_term) out.largest_term[j] = std::max(out.largest_term[j], x);
     // Derivatives in eta of h by Leibniz's rule with w = (2+eta)^(-1/2).
-    std::array<Real, 4> w{}, h{}, he{};
+    std::array<Real, 4> w{}, he{};
+    std::array<Scalar, 4> h{};
     const Real root = sqrt(Real(2) + eta);
     w[0] = Real(1) / root;
     for (std::size_t i = 1; i < 4; ++i)
@@ -355,10 +380,10 @@ class CatenaryBasis {
   void sigma_derivatives_of_odd(std::size_t j,
                                 const Real& sigma,
                                 const Real& eta,
-                                const std::array<Real, 4>& h,
+                                const std::array<Scalar, 4>& h,
                                 const std::array<Real, 4>& he,
                                 int max_derivative,
-                                BasisValues<Real>& out) const {
+                                BasisValues<Scalar>& out) const {
     using std::abs;
     const Real q = sigma * sigma;
     const Real C = Real(1) + eta;
@@ -371,14 +396,14 @@ class CatenaryBasis {
       f[1] = h[0] + qc * h[1];
       fe[1] = he[0] + qc * he[1];
     }
-    const Real e1p = (Real(2) + iC2) * h[1] + qc * h[2];
+    const Scalar e1p = (Real(2) + iC2) * h[1] + qc * h[2];
     const Real e1pe = (Real(2) + iC2) * he[1] + qc * he[2];
     if (max_derivative >= 2) {
       f[2] = sigma / C * e1p;
       fe[2] = abs(sigma) / C * e1pe;
     }
     if (max_derivative >= 3) {
-      const Real e1pp = Real(-2) * iC3 * h[1] + (Real(3) + Real(2) * iC2) * h[2] + qc * h[3];
+      const Scalar e1pp = Real(-2) * iC3 * h[1] + (Real(3) + Real(2) * iC2) * h[2] + qc * h[3];
       const Real e1ppe = Real(2) * iC3 * he[1] + (Real(3) + Real(2) * iC2) * he[2] + qc * he[3];
       f[3] = iC3 * e1p + q * iC2 * e1pp;
       fe[3] = iC3 * e1pe + q * iC2 * e1ppe;
@@ -394,12 +419,13 @@ class CatenaryBasis {
                           const Real& eta,
                           int max_derivative,
                           SeriesErrors errors,
-                          BasisValues<Real>& out) const {
+                          BasisValues<Scalar>& out) const {
     using std::abs;
     const Real eps = std::numeric_limits<Real>::epsilon();
-    const SeriesValue<Real> v =
+    const SeriesValue<Scalar> v =
         raw_derivatives(k, static_cast<int>(j), eta, max_derivative, errors);
-    std::array<Real, 4> F{}, Fe{};
+    std::array<Scalar, 4> F{};
+    std::array<Real, 4> Fe{};
     for (const auto& x : v.largest_term) out.largest_term[j] = std::max(out.largest_term[j], x);
     for (std::size_t d = 0; d <= static_cast<std::size_t>(max_derivative); ++d) {
       F[d] = v.derivative[d];
@@ -445,11 +471,11 @@ class CatenaryBasis {
   }
 
   /// F_j^(m)(eta), m = 0..max_derivative, from expansion k (eta > 0).
-  SeriesValue<Real> raw_derivatives(int k,
-                                    int j,
-                                    const Real& eta,
-                                    int max_derivative,
-                                    SeriesErrors errors = SeriesErrors::Tracked) const {
+  SeriesValue<Scalar> raw_derivatives(int k,
+                                      int j,
+                                      const Real& eta,
+                                      int max_derivative,
+                                      SeriesErrors errors = SeriesErrors::Tracked) const {
     if (k == 0)
       return evaluate_series(singular_series_[static_cast<std::size_t>(j)], eta, max_derivative,
                              Real(ratio_[0]), errors);
@@ -470,8 +496,8 @@ class CatenaryBasis {
   std::vector<double> reach_;
   std::vector<double> lower_;
   std::vector<double> ratio_;
-  std::vector<FrobeniusSeries<Real>> singular_series_;
-  std::vector<std::vector<FrobeniusSeries<Real>>> ordinary_series_;
+  std::vector<FrobeniusSeries<Scalar>> singular_series_;
+  std::vector<std::vector<FrobeniusSeries<Scalar>>> ordinary_series_;
   bool converged_ = true;
   long total_terms_ = 0;
 };

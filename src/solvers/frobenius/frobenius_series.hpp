@@ -24,7 +24,9 @@
 /// a logarithm, which this engine reports instead of computing.
 ///
 /// Everything is templated on the real type (double, long double, Boost.Multiprecision) so that a
-/// caller can re-run in extended precision when it detects cancellation.
+/// caller can re-run in extended precision when it detects cancellation. The coefficients (and so
+/// the series and their values) may also be complex, Scalar = std::complex<Real> (the damped
+/// catenary, lambda complex); exponents, the variable x and every magnitude stay Real.
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -38,6 +40,18 @@
 #include <vector>
 
 namespace catena::internal {
+
+/// The real type behind a scalar: Real itself, or T for std::complex<T>.
+template <class Scalar>
+struct RealOf {
+  using type = Scalar;
+};
+template <class T>
+struct RealOf<std::complex<T>> {
+  using type = T;
+};
+template <class Scalar>
+using RealOfT = typename RealOf<Scalar>::type;
 
 /// A polynomial sum_j c[j] x^j with coefficients of type Real.
 template <class Real>
@@ -188,22 +202,22 @@ std::vector<double> indicial_roots(const PolynomialOde<Real>& ode) {
   return roots;
 }
 
-/// A series solution y = sum_m a[m] x^(m + r) about x = 0.
-template <class Real>
+/// A series solution y = sum_m a[m] x^(m + r) about x = 0 (the exponent r is real).
+template <class Scalar>
 struct FrobeniusSeries {
-  Real r = Real(0);
-  std::vector<Real> a;
+  RealOfT<Scalar> r = RealOfT<Scalar>(0);
+  std::vector<Scalar> a;
 };
 
 /// Result of evaluating a series (and derivatives) at one point.
-template <class Real>
+template <class Scalar>
 struct SeriesValue {
   /// derivative[k] = y^(k)(x).
-  std::vector<Real> derivative;
+  std::vector<Scalar> derivative;
   /// Largest |term| of each derivative's sum (for the cancellation ratio max|term| / |sum|).
-  std::vector<Real> largest_term;
+  std::vector<RealOfT<Scalar>> largest_term;
   /// Estimate of the truncation error of each derivative (last terms, geometric tail).
-  std::vector<Real> truncation;
+  std::vector<RealOfT<Scalar>> truncation;
 };
 
 /// Whether Q_{d_min}(nu) = `lead` vanishes at nu (a resonant index of the recurrence): |lead| at
@@ -211,45 +225,49 @@ struct SeriesValue {
 /// (the polynomial's scale there, never all zero: it has at most `order` roots), or 1 when that is
 /// larger. The scale is relative so that an ordinary point very close to a singular one, where the
 /// whole indicial polynomial is small, is not mistaken for a resonance.
-template <class Real>
-bool is_resonant_index(const ShiftTable<Real>& table, const Real& lead, const Real& nu) {
+template <class Scalar>
+bool is_resonant_index(const ShiftTable<Scalar>& table, const Scalar& lead, const Scalar& nu) {
   using std::abs;
-  Real scale = abs(table.q(0, nu + Real(1)));
+  using Real = RealOfT<Scalar>;
+  Real scale = abs(table.q(0, nu + Scalar(1)));
   const bool tiny_polynomial = scale < Real(1);
   if (tiny_polynomial)
     for (int k = 2; k <= table.order(); ++k)
-      scale = std::max(scale, Real(abs(table.q(0, nu + Real(k)))));
+      scale = std::max(scale, Real(abs(table.q(0, nu + Scalar(k)))));
   return abs(lead) <= Real(1e-9) * (tiny_polynomial ? std::min(scale, Real(1)) : scale + Real(1));
 }
 
 /// Generates coefficients of the solution with indicial root `r` (a[0] = 1 and, at resonant
 /// indices N where Q_{d_min}(N + r) = 0, a[N] = `resonant_value(N)`, default 0), up to index
 /// `num_terms - 1`. Throws std::domain_error when a resonance carries a logarithm.
-template <class Real>
-FrobeniusSeries<Real> frobenius_series(const ShiftTable<Real>& table,
-                                       const Real& r,
-                                       int num_terms,
-                                       const std::vector<Real>& initial = {Real(1)}) {
+template <class Scalar>
+FrobeniusSeries<Scalar> frobenius_series(const ShiftTable<Scalar>& table,
+                                         const RealOfT<Scalar>& r,
+                                         int num_terms,
+                                         const std::vector<Scalar>& initial = {Scalar(1)}) {
   using std::abs;
-  FrobeniusSeries<Real> series;
+  using Real = RealOfT<Scalar>;
+  FrobeniusSeries<Scalar> series;
   series.r = r;
-  series.a.assign(static_cast<std::size_t>(num_terms), Real(0));
+  series.a.assign(static_cast<std::size_t>(num_terms), Scalar(0));
   for (int N = 0; N < num_terms; ++N) {
-    Real rhs(0), scale(0);
+    Scalar rhs(0);
+    Real scale(0);
     for (const int e : table.active_shifts()) {
       if (e > N) break;
-      const Real term = table.q(e, Real(N - e) + r) * series.a[static_cast<std::size_t>(N - e)];
+      const Scalar term =
+          table.q(e, Scalar(Real(N - e) + r)) * series.a[static_cast<std::size_t>(N - e)];
       rhs -= term;
       scale += abs(term);
     }
-    const Real lead = table.q(0, Real(N) + r);
-    if (is_resonant_index(table, lead, Real(N) + r)) {
+    const Scalar lead = table.q(0, Scalar(Real(N) + r));
+    if (is_resonant_index(table, lead, Scalar(Real(N) + r))) {
       // Resonance: free coefficient if the right side vanishes.
       if (abs(rhs) > Real(1e-8) * (scale + Real(1e-300)) && abs(rhs) > Real(1e-12))
         throw std::domain_error("logarithmic solution at resonant index " + std::to_string(N));
       series.a[static_cast<std::size_t>(N)] = static_cast<std::size_t>(N) < initial.size()
                                                   ? initial[static_cast<std::size_t>(N)]
-                                                  : Real(0);
+                                                  : Scalar(0);
     } else {
       series.a[static_cast<std::size_t>(N)] = rhs / lead;
     }
@@ -266,21 +284,22 @@ enum class SeriesErrors { Tracked, Skipped };
 /// exponent `r`, for x > 0 (or any x when r is a non-negative integer), term by term, with the
 /// truncation estimate from the last `tail` terms assuming a geometric tail of ratio `ratio` =
 /// |x| / radius (< 1) unless `errors` is Skipped (largest_term and truncation then stay 0).
-template <class Real>
-SeriesValue<Real> evaluate_series(const std::vector<Real>& a,
-                                  const Real& r,
-                                  const Real& x,
-                                  int max_derivative,
-                                  const Real& ratio,
-                                  SeriesErrors errors = SeriesErrors::Tracked) {
+template <class Scalar>
+SeriesValue<Scalar> evaluate_series(const std::vector<Scalar>& a,
+                                    const RealOfT<Scalar>& r,
+                                    const RealOfT<Scalar>& x,
+                                    int max_derivative,
+                                    const RealOfT<Scalar>& ratio,
+                                    SeriesErrors errors = SeriesErrors::Tracked) {
   using std::abs;
   using std::pow;
+  using Real = RealOfT<Scalar>;
   if (max_derivative < 0 || max_derivative > 3)
     throw std::domain_error("evaluate_series: derivatives 0..3 only");
-  SeriesValue<Real> value;
+  SeriesValue<Scalar> value;
   const bool tracked = errors == SeriesErrors::Tracked;
   const std::size_t K1 = static_cast<std::size_t>(max_derivative + 1);
-  value.derivative.assign(K1, Real(0));
+  value.derivative.assign(K1, Scalar(0));
   value.largest_term.assign(K1, Real(0));
   value.truncation.assign(K1, Real(0));
   const int n = static_cast<int>(a.size());
@@ -311,19 +330,19 @@ SeriesValue<Real> evaluate_series(const std::vector<Real>& a,
   if (at_origin) scale.fill(Real(1));
   Real xm(1);
   for (int m = 0; m < n; ++m, xm *= x) {
-    const Real& c = a[static_cast<std::size_t>(m)];
-    if (c == Real(0)) continue;
+    const Scalar& c = a[static_cast<std::size_t>(m)];
+    if (c == Scalar(0)) continue;
     const Real nu = Real(m) + r;
-    Real product = at_origin ? c : Real(c * xm);  // a_m ff_k(nu) x^m, k = 0 first
+    Scalar product = at_origin ? c : Scalar(c * xm);  // a_m ff_k(nu) x^m, k = 0 first
     for (int k = 0; k <= K; ++k) {
       if (k > 0) product *= (nu - Real(k - 1));
-      if (product == Real(0)) continue;
-      Real term = product;
+      if (product == Scalar(0)) continue;
+      Scalar term = product;
       if (at_origin) {
         const Real power = nu - Real(k);
         term = power == Real(0)
                    ? product
-                   : (power > Real(0) ? Real(0) : std::numeric_limits<Real>::infinity());
+                   : (power > Real(0) ? Scalar(0) : Scalar(std::numeric_limits<Real>::infinity()));
       }
       const std::size_t kk = static_cast<std::size_t>(k);
       value.derivative[kk] += term;
@@ -348,12 +367,12 @@ SeriesValue<Real> evaluate_series(const std::vector<Real>& a,
 }
 
 /// evaluate_series for a FrobeniusSeries (its coefficients and exponent).
-template <class Real>
-SeriesValue<Real> evaluate_series(const FrobeniusSeries<Real>& series,
-                                  const Real& x,
-                                  int max_derivative,
-                                  const Real& ratio,
-                                  SeriesErrors errors = SeriesErrors::Tracked) {
+template <class Scalar>
+SeriesValue<Scalar> evaluate_series(const FrobeniusSeries<Scalar>& series,
+                                    const RealOfT<Scalar>& x,
+                                    int max_derivative,
+                                    const RealOfT<Scalar>& ratio,
+                                    SeriesErrors errors = SeriesErrors::Tracked) {
   return evaluate_series(series.a, series.r, x, max_derivative, ratio, errors);
 }
 
@@ -361,16 +380,17 @@ SeriesValue<Real> evaluate_series(const FrobeniusSeries<Real>& series,
 /// last `window` terms, with rho the largest distance at which the series will be evaluated; the
 /// coefficients are generated one at a time (the recurrence of frobenius_series) up to
 /// `max_terms`. Returns the series and sets `converged`.
-template <class Real>
-FrobeniusSeries<Real> adaptive_series(const ShiftTable<Real>& table,
-                                      const Real& r,
-                                      const Real& rho,
-                                      double tolerance,
-                                      int max_terms,
-                                      bool& converged,
-                                      const std::vector<Real>& initial = {Real(1)}) {
+template <class Scalar>
+FrobeniusSeries<Scalar> adaptive_series(const ShiftTable<Scalar>& table,
+                                        const RealOfT<Scalar>& r,
+                                        const RealOfT<Scalar>& rho,
+                                        double tolerance,
+                                        int max_terms,
+                                        bool& converged,
+                                        const std::vector<Scalar>& initial = {Scalar(1)}) {
   using std::abs;
-  FrobeniusSeries<Real> series;
+  using Real = RealOfT<Scalar>;
+  FrobeniusSeries<Scalar> series;
   series.r = r;
   series.a.reserve(static_cast<std::size_t>(std::min(max_terms, 256)));
   const int window = 6;
@@ -379,20 +399,22 @@ FrobeniusSeries<Real> adaptive_series(const ShiftTable<Real>& table,
   std::vector<Real> recent(static_cast<std::size_t>(window), Real(0));
   converged = false;
   for (int N = 0; N < max_terms; ++N) {
-    Real rhs(0), scale(0);
+    Scalar rhs(0);
+    Real scale(0);
     for (const int e : table.active_shifts()) {
       if (e > N) break;
-      const Real term = table.q(e, Real(N - e) + r) * series.a[static_cast<std::size_t>(N - e)];
+      const Scalar term =
+          table.q(e, Scalar(Real(N - e) + r)) * series.a[static_cast<std::size_t>(N - e)];
       rhs -= term;
       scale += abs(term);
     }
-    const Real lead = table.q(0, Real(N) + r);
-    Real value;
-    if (is_resonant_index(table, lead, Real(N) + r)) {
+    const Scalar lead = table.q(0, Scalar(Real(N) + r));
+    Scalar value;
+    if (is_resonant_index(table, lead, Scalar(Real(N) + r))) {
       if (abs(rhs) > Real(1e-8) * (scale + Real(1e-300)) && abs(rhs) > Real(1e-12))
         throw std::domain_error("logarithmic solution at resonant index " + std::to_string(N));
       value = static_cast<std::size_t>(N) < initial.size() ? initial[static_cast<std::size_t>(N)]
-                                                           : Real(0);
+                                                           : Scalar(0);
     } else {
       value = rhs / lead;
     }

@@ -8,6 +8,7 @@
 //   frobenius_conjugate_points.*                  the independent in-plane root count
 //   frobenius_fields.*                            null vector, U, V, T along the cable, mode shapes
 //   frobenius_forced.*                            the forced response
+//   frobenius_damped_*                            the damped (viscous medium) modes and response
 #include "catena/solvers/frobenius_solver.hpp"
 
 #include <fmt/format.h>
@@ -24,6 +25,8 @@
 #include "solvers/common/solver_entries.hpp"
 #include "solvers/common/work_meter.hpp"
 #include "solvers/frobenius/frobenius_conjugate_points.hpp"
+#include "solvers/frobenius/frobenius_damped_forced.hpp"
+#include "solvers/frobenius/frobenius_damped_modes.hpp"
 #include "solvers/frobenius/frobenius_fields.hpp"
 #include "solvers/frobenius/frobenius_forced.hpp"
 #include "solvers/frobenius/frobenius_root_scan.hpp"
@@ -101,6 +104,9 @@ class FrobeniusNumerics final : public SolverNumerics {
       return reason;
     return frobenius_not_applicable_reason(context_.problem, context_.groups);
   }
+  // Gale's viscous medium (c_t, c_n; c_a = 0 for EA = inf, a seabed is declined above).
+  bool handles_damping() const override { return true; }
+  bool handles_damped_forced() const override { return true; }
   void describe(SolverSummary& summary) const override;
   std::optional<Outcome> prepare() override;
   ModalResult modes(Plane plane, int count) override;
@@ -111,6 +117,14 @@ class FrobeniusNumerics final : public SolverNumerics {
     return {options_.tolerance, options_.scan_fraction, options_.extended_precision};
   }
   void summarise_plane(Plane plane, int count, const PlaneRoots& found, ModalResult& result) const;
+  ModalResult damped_modes(Plane plane, int count);
+  DampedSetup damped_setup(bool inplane) const;
+  // Drag on the cable itself. A damped problem without it (a seabed dashpot under a cable that
+  // does not touch the seabed: this solver declines contact) has the undamped modes.
+  bool has_drag() const {
+    const SectionDamping& d = context_.problem.cable.damping;
+    return d.tangential_n_s_per_m2 > 0.0 || d.normal_n_s_per_m2 > 0.0;
+  }
 
   const SolveContext& context_;
   FrobeniusSolverOptions options_;
@@ -151,7 +165,29 @@ std::optional<Outcome> FrobeniusNumerics::prepare() {
   return std::nullopt;
 }
 
+DampedSetup FrobeniusNumerics::damped_setup(bool inplane) const {
+  DampedSetup setup;
+  setup.plane = base_;
+  setup.plane.inplane = inplane;
+  const SectionDamping& damping = context_.problem.cable.damping;
+  setup.eta1 = gale_drag(damping.tangential_n_s_per_m2, units_);
+  setup.eta2 = gale_drag(damping.normal_n_s_per_m2, units_);
+  return setup;
+}
+
+ModalResult FrobeniusNumerics::damped_modes(Plane plane, int count) {
+  WorkMeter meter(context_, "frobenius", std::string(to_string(plane)) + " damped modes", count);
+  const SolveRequest& request = context_.request;
+  const ModeFieldRequest fields{request.shapes, request.tension, &stations_, &dense_};
+  ModalResult result =
+      damped_modal_result(damped_setup(plane == Plane::InPlane), count, root_settings(), fields,
+                          units_, context_.groups, accuracy_target(options_));
+  mark_time_limit(meter, result.summary);
+  return result;
+}
+
 ModalResult FrobeniusNumerics::modes(Plane plane, int count) {
+  if (context_.problem.is_damped() && has_drag()) return damped_modes(plane, count);
   const bool inplane = plane == Plane::InPlane;
   PlaneSetup setup = base_;
   setup.inplane = inplane;
@@ -239,7 +275,11 @@ ForcedOutcome FrobeniusNumerics::forced(const ForcedRequest& request) {
   ForcedWork work;
   WorkMeter meter(context_, "frobenius", "forced frequencies",
                   static_cast<long>(request.omegas_rad_s.size()));
-  outcome.responses = frobenius_forced_responses(base_, request, stations_, units_, work, &meter);
+  outcome.responses =
+      context_.problem.is_damped() && has_drag()
+          ? frobenius_damped_forced_responses(damped_setup(true), request, stations_, units_, work,
+                                              &meter)
+          : frobenius_forced_responses(base_, request, stations_, units_, work, &meter);
   std::size_t at_resonance = 0, declined = 0;
   double worst = 0.0;
   for (const ForcedResponse& r : outcome.responses) {
