@@ -20,6 +20,7 @@
 #include "solvers/common/solver_entries.hpp"
 #include "solvers/common/work_meter.hpp"
 #include "solvers/shooting/shooting_coefficients.hpp"
+#include "solvers/shooting/shooting_damped_modes.hpp"
 #include "solvers/shooting/shooting_forced.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
 #include "solvers/shooting/shooting_modes.hpp"
@@ -155,6 +156,9 @@ class ShootingNumerics final : public SolverNumerics {
       : context_(context), options_(options) {}
 
   std::optional<std::string> not_applicable() const override;
+  // Damped modes (shooting_damped_modes.hpp); lines on the seabed are declined in
+  // not_applicable(); the damped forced response is not computed.
+  bool handles_damping() const override { return true; }
   std::optional<Outcome> prepare() override {
     k_ = ShootingCoefficients::from_statics(context_.statics);
     return std::nullopt;
@@ -172,6 +176,7 @@ class ShootingNumerics final : public SolverNumerics {
   }
 
  private:
+  ModalResult damped_modes(Plane plane, int count);
   void add_modes(ShootingIntegrator& integrator,
                  const std::vector<Root>& roots,
                  Plane plane,
@@ -193,6 +198,11 @@ class ShootingNumerics final : public SolverNumerics {
 std::optional<std::string> ShootingNumerics::not_applicable() const {
   const StaticSolution& statics = context_.statics;
   if (auto reason = slack_on_seabed(statics)) return reason;
+  if (context_.problem.is_damped() && statics.has_contact()) {
+    return std::string(
+        "the line is damped and rests on the seabed: the damped shot does not cover the grounded "
+        "part (its grounded run is undamped only)");
+  }
   const double L = statics.cable().length_m;
   const double V_A = statics.vertical_force_a_n();
   const double V_B = statics.vertical_force_n(L);
@@ -217,6 +227,7 @@ void ShootingNumerics::describe(SolverSummary& summary) const {
 // cable: the axial direction is rigid, det Phi(L) vanishes identically, and the in-plane problem
 // is the transverse string alone, which is the out-of-plane equation for the normal displacement.
 ModalResult ShootingNumerics::modes(Plane plane, int count) {
+  if (context_.problem.is_damped()) return damped_modes(plane, count);
   ModalResult result;
   SolverSummary& summary = result.summary;
   summary.resolution = resolution(options_);
@@ -262,6 +273,29 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
   }
   finish_summary(finder, *integrator, plane, count, result);
   mark_time_limit(meter, summary);
+  return result;
+}
+
+// The damped modes of one plane (shooting_damped_modes.hpp); an integration failure makes the
+// plane a NumericalFailure with its reason.
+ModalResult ShootingNumerics::damped_modes(Plane plane, int count) {
+  DampedPlaneSettings settings;
+  settings.integrator = integrator_settings(options_);
+  settings.undamped = root_finder_settings(options_);
+  settings.root_tolerance = options_.effective_root_tolerance();
+  settings.error_estimate = options_.error_estimate;
+  settings.estimate_floor = accuracy_target(options_);
+  settings.first_guess_rad_s = (count + 2.37) * kPi / transverse_travel_time(k_);
+  ModalResult result;
+  WorkMeter meter(context_, "shooting", std::string(to_string(plane)) + " damped modes", count);
+  try {
+    result = damped_plane_modes(k_, context_, plane, count, settings, &meter);
+  } catch (const ShootingFailure& failure) {
+    result = ModalResult();
+    mark_failed(plane, failure, result.summary);
+  }
+  result.summary.resolution = resolution(options_);
+  result.summary.accuracy_target = accuracy_target(options_);
   return result;
 }
 
