@@ -22,7 +22,11 @@ using Complex = std::complex<double>;
 // Tighter tolerances of the error-estimate refinements, and the loose ones of the count (its
 // phase has to be right to well within pi/4 only).
 constexpr double kEstimateFactor = 0.01;
-constexpr double kCountRelativeTolerance = 1e-6;
+constexpr double kCountRelativeTolerance = 1e-5;
+// The undamped starting roots' integration tolerance.
+constexpr double kStartRelativeTolerance = 1e-6;
+// The homotopy's shots (before the root is polished at the solver's tolerances).
+constexpr double kStepRelativeTolerance = 1e-8;
 // The count's region above the top root: this fraction of omega_top, or half the gap to the next
 // root when that is smaller; and its right edge at Re lambda = this fraction of omega_top.
 constexpr double kTopMargin = 0.05;
@@ -62,7 +66,7 @@ class DampedPlane {
  private:
   std::vector<double> undamped_roots(int n);
   bool continue_roots(const std::vector<double>& omegas, std::size_t from);
-  DampedRoot estimate(Complex lambda);
+  DampedRoot estimate(const ContinuedRoot& continued);
   void add_mode(const DampedRoot& root, std::vector<Mode>& modes) const;
   void set_shape(Mode& mode, Complex lambda) const;
   void count_region(double omega_top, double next_omega);
@@ -78,9 +82,11 @@ class DampedPlane {
   mutable DampedShootingIntegrator integrator_;
   DampedFunction f_;
   long undamped_shots_ = 0;
+  long undamped_steps_ = 0;
+  long count_steps_ = 0;  // integration steps of the count's shots
   std::vector<std::string> warnings_;
   std::vector<std::string> lost_;      // reasons of lost continuations
-  std::vector<Complex> complex_;       // continued roots with Im lambda > 0
+  std::vector<ContinuedRoot> complex_;  // continued roots with Im lambda > 0
   int went_real_ = 0;                  // continuations that ended on the real axis
   std::vector<double> real_;           // real roots found in the region
   RootCount region_count_;
@@ -91,9 +97,15 @@ class DampedPlane {
 // The n lowest undamped roots (multiplicities expanded) of the line without its damping: the
 // undamped shot reads no damping coefficient. The bracket is loose: they only start the homotopy.
 std::vector<double> DampedPlane::undamped_roots(int n) {
-  ShootingIntegrator integrator(integration_plane_, k_, settings_.integrator);
+  // Loose tolerances: the roots only start the homotopy, whose last step refines them.
+  IntegratorSettings loose = settings_.integrator;
+  const double factor = std::max(1.0, kStartRelativeTolerance / loose.relative_tolerance);
+  loose.relative_tolerance *= factor;
+  loose.absolute_tolerance *= factor;
+  ShootingIntegrator integrator(integration_plane_, k_, loose);
   RootFinderSettings rs = settings_.undamped;
-  rs.root_tolerance = std::max(rs.root_tolerance, 1e-7);
+  rs.relative_tolerance = loose.relative_tolerance;
+  rs.root_tolerance = std::max(rs.root_tolerance, 1e-4);
   rs.error_estimate = false;
   rs.target = 1.0;
   ShootingRootFinder finder([&integrator](double w, double f) { return integrator.shoot(w, f); },
@@ -101,6 +113,7 @@ std::vector<double> DampedPlane::undamped_roots(int n) {
                             integration_plane_ == Plane::OutOfPlane);
   const std::vector<Root> roots = finder.find(n, warnings_);
   undamped_shots_ += finder.shots();
+  undamped_steps_ += integrator.total_steps();
   std::vector<double> omegas;
   for (const Root& r : roots) {
     for (int j = 0; j < r.multiplicity; ++j) omegas.push_back(r.omega);
@@ -112,8 +125,11 @@ std::vector<double> DampedPlane::undamped_roots(int n) {
 bool DampedPlane::continue_roots(const std::vector<double>& omegas, std::size_t from) {
   ContinuationSettings cs;
   cs.tolerance = settings_.root_tolerance;
+  cs.loose_factor = std::max(1.0, kStepRelativeTolerance / settings_.integrator.relative_tolerance);
   const auto set_scale = [this](double t) { integrator_.set_damping_scale(t); };
   for (std::size_t j = from; j < omegas.size(); ++j) {
+    // The roots above the count are polished only if they turn out among the lowest (run()).
+    cs.polish = j < std::size_t(count_);
     double gap = omegas[j];
     if (j > 0) gap = std::min(gap, omegas[j] - omegas[j - 1]);
     if (j + 1 < omegas.size()) gap = std::min(gap, omegas[j + 1] - omegas[j]);
@@ -123,41 +139,38 @@ bool DampedPlane::continue_roots(const std::vector<double>& omegas, std::size_t 
       lost_.push_back(c.reason);
       continue;
     }
-    if (std::abs(c.root.imag()) <= 1e-8 * std::abs(c.root)) {
+    // Loose roots carry an imaginary part of the loose tolerance: a real one is found again on
+    // the real axis (count_region).
+    if (std::abs(c.root.imag()) <= 1e-5 * std::abs(c.root)) {
       ++went_real_;
     } else {
-      complex_.push_back(Complex(c.root.real(), std::abs(c.root.imag())));
+      ContinuedRoot upper = c;
+      if (c.root.imag() < 0.0) upper.root = std::conj(c.root), upper.slope = std::conj(c.slope);
+      complex_.push_back(upper);
     }
   }
   integrator_.set_damping_scale(1.0);
   return lost_.empty();
 }
 
-// The root found again at 100x tighter tolerances: the estimates are the changes of omega_d and
-// of delta, each relative to itself, with the solver's floor (of |lambda| for delta).
-DampedRoot DampedPlane::estimate(Complex lambda) {
+// The error estimates from one shot at 100x tighter tolerances at the root: the Newton step
+// -D_tight(lambda) / D'(lambda) (D' from the last Muller parabola) is the root's move, and its
+// real and imaginary parts, each relative to its own quantity (with the solver's floor, of |lambda|
+// for delta), are the estimates of delta and omega_d. The root is moved by it.
+DampedRoot DampedPlane::estimate(const ContinuedRoot& continued) {
   DampedRoot root;
-  root.lambda = lambda;
-  if (!settings_.error_estimate) return root;
-  const double radius = 1e-3 * std::abs(lambda);
-  const MullerResult tight = muller_root(f_, lambda, 1e-6 * std::abs(lambda),
-                                         settings_.root_tolerance, kEstimateFactor, radius);
-  if (!tight.converged) {
-    warnings_.push_back(fmt::format(
-        "root {:.10g}{:+.10g}i 1/s: no estimate (the refinement at tighter tolerances did not "
-        "converge)",
-        lambda.real(), lambda.imag()));
-    return root;
-  }
-  root.lambda = tight.root;
+  root.lambda = continued.root;
+  if (!settings_.error_estimate || !(std::abs(continued.slope) > 0.0)) return root;
+  const DampedValue tight = f_(continued.root, kEstimateFactor);
+  const Complex move = -tight.determinant * std::exp(tight.log_scale - continued.slope_log_scale) /
+                       continued.slope;
+  root.lambda = continued.root + move;
   const double floor = settings_.estimate_floor;
-  const double omega = std::abs(tight.root.imag()), delta = -tight.root.real();
-  if (omega > 0.0) {
-    root.omega_error = std::max(std::abs(tight.root.imag() - lambda.imag()) / omega, floor);
-  }
+  const double omega = std::abs(root.lambda.imag()), delta = -root.lambda.real();
+  if (omega > 0.0) root.omega_error = std::max(std::abs(move.imag()) / omega, floor);
   if (delta > 0.0) {
-    root.delta_error = std::max(std::abs(tight.root.real() - lambda.real()) / delta,
-                                floor * std::abs(tight.root) / delta);
+    root.delta_error =
+        std::max(std::abs(move.real()) / delta, floor * std::abs(root.lambda) / delta);
   }
   return root;
 }
@@ -227,16 +240,18 @@ void DampedPlane::count_region(double omega_top, double next_omega) {
     gamma = std::max({gamma, p.damping_tangential / p.m, p.damping_normal / p.M});
   }
   double delta_max = std::max(1.25 * gamma, 0.1 * omega_top);
-  for (const Complex& root : complex_) delta_max = std::max(delta_max, -1.25 * root.real());
+  for (const ContinuedRoot& c : complex_) delta_max = std::max(delta_max, -1.25 * c.root.real());
   double margin = kTopMargin;
   if (next_omega > omega_top) margin = std::min(margin, 0.5 * (next_omega - omega_top) / omega_top);
   const double top = omega_top * (1.0 + margin), sigma = kRightEdge * omega_top;
   const double factor =
       std::max(1.0, kCountRelativeTolerance / settings_.integrator.relative_tolerance);
+  const long steps_before = integrator_.total_steps();
   region_count_ = count_roots(f_, sigma, delta_max, top, factor);
+  count_steps_ = integrator_.total_steps() - steps_before;
   complex_in_region_ = static_cast<int>(std::count_if(
       complex_.begin(), complex_.end(),
-      [&](const Complex& r) { return r.imag() <= top && -r.real() <= delta_max; }));
+      [&](const ContinuedRoot& c) { return c.root.imag() <= top && -c.root.real() <= delta_max; }));
   if (region_count_.ok && (region_count_.roots > 2 * complex_in_region_ || went_real_ > 0)) {
     real_ = real_roots(f_, delta_max, kRealSamples, settings_.root_tolerance, factor);
   }
@@ -256,12 +271,14 @@ ModalResult DampedPlane::run() {
     if (omegas.size() <= done) break;
     continue_roots(omegas, done);
   }
-  std::sort(complex_.begin(), complex_.end(),
-            [](const Complex& a, const Complex& b) { return a.imag() < b.imag(); });
+  std::sort(complex_.begin(), complex_.end(), [](const ContinuedRoot& a, const ContinuedRoot& b) {
+    return a.root.imag() < b.root.imag();
+  });
   for (std::size_t j = 1; j < complex_.size(); ++j) {
-    if (std::abs(complex_[j] - complex_[j - 1]) <= 1e-6 * std::abs(complex_[j])) {
+    const Complex root = complex_[j].root;
+    if (std::abs(root - complex_[j - 1].root) <= 1e-6 * std::abs(root)) {
       lost_.push_back(fmt::format("two continuations reached the same root {:.10g}{:+.10g}i 1/s",
-                                  complex_[j].real(), complex_[j].imag()));
+                                  root.real(), root.imag()));
     }
   }
   if (!lost_.empty()) {
@@ -272,7 +289,22 @@ ModalResult DampedPlane::run() {
   }
   std::vector<DampedRoot> roots;
   for (std::size_t j = 0; j < complex_.size() && j < std::size_t(count_); ++j) {
-    roots.push_back(estimate(complex_[j]));
+    ContinuedRoot& c = complex_[j];
+    if (!c.polished) {
+      const MullerResult polished = secant_polish(f_, c.root, c.slope, c.slope_log_scale,
+                                                  settings_.root_tolerance, 1.0);
+      if (!polished.converged) {
+        result.summary.termination = Termination::NoConvergence;
+        result.summary.message = fmt::format(
+            "No convergence ({} damped modes): the root near {:.10g}{:+.10g}i 1/s did not "
+            "converge at the solver's tolerances",
+            to_string(plane_), c.root.real(), c.root.imag());
+        return result;
+      }
+      c.root = polished.root, c.slope = polished.slope;
+      c.slope_log_scale = polished.slope_log_scale, c.polished = true;
+    }
+    roots.push_back(estimate(c));
   }
   std::sort(roots.begin(), roots.end(), [](const DampedRoot& a, const DampedRoot& b) {
     return a.lambda.imag() < b.lambda.imag();
@@ -280,10 +312,17 @@ ModalResult DampedPlane::run() {
   for (const DampedRoot& root : roots) add_mode(root, result.modes);
   const double top = result.modes.empty() ? 0.0 : result.modes.back().omega_rad_s;
   if (top > 0.0) {
-    count_region(top, complex_.size() > roots.size() ? complex_[roots.size()].imag() : 0.0);
+    count_region(top, complex_.size() > roots.size() ? complex_[roots.size()].root.imag() : 0.0);
   }
   for (double r : real_) {
-    DampedRoot root = estimate(Complex(r, 0.0));
+    // The slope of D on the real axis by a forward difference (Brent gives none).
+    ContinuedRoot real;
+    real.root = r;
+    const double h = 1e-6 * std::abs(r);
+    const DampedValue at = f_(r, 1.0), beside = f_(r + h, 1.0);
+    real.slope_log_scale = at.log_scale;
+    real.slope = (beside.determinant * std::exp(beside.log_scale - at.log_scale) - at.determinant) / h;
+    DampedRoot root = estimate(real);
     root.lambda = Complex(root.lambda.real(), 0.0);
     root.omega_error = -1.0;
     add_mode(root, result.overdamped);
@@ -329,10 +368,11 @@ void DampedPlane::finish(ModalResult& result) const {
   summary.iterations = integrator_.total_shots() + undamped_shots_;
   summary.operations = integrator_.total_rhs_evaluations();
   summary.notes.push_back(fmt::format(
-      "damped: {} undamped shots (starting roots), {} damped shots ({} for the count), {} "
-      "integration steps; roots continued from the undamped ones along the damping scale (Muller)",
-      undamped_shots_, integrator_.total_shots(), region_count_.evaluations,
-      integrator_.total_steps()));
+      "damped: {} undamped shots ({} steps) for the starting roots; {} damped shots ({} steps), "
+      "of which {} ({} steps) for the count; roots continued from the undamped ones along the "
+      "damping scale (Muller)",
+      undamped_shots_, undamped_steps_, integrator_.total_shots(), integrator_.total_steps(),
+      region_count_.evaluations, count_steps_));
   if (went_real_ > 0) {
     summary.notes.push_back(
         fmt::format("{} continued roots became real (overdamped)", went_real_));

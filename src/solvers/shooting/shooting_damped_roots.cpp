@@ -54,12 +54,47 @@ MullerResult muller_root(const DampedFunction& f,
     if (std::abs(step) <= tolerance * std::abs(next) || f2 == 0.0) {
       result.converged = true;
       result.root = f2 == 0.0 ? x[2] : next;
+      result.slope = b + 2.0 * a * (result.root - x[2]);
+      result.slope_log_scale = reference;
       return result;
     }
     x[0] = x[1], x[1] = x[2], x[2] = next;
     v[0] = v[1], v[1] = v[2], v[2] = f(next, factor);
   }
   result.root = x[2];
+  return result;
+}
+
+MullerResult secant_polish(const DampedFunction& f,
+                           Complex start,
+                           Complex slope,
+                           double slope_log_scale,
+                           double tolerance,
+                           double factor,
+                           int max_iterations) {
+  MullerResult result;
+  Complex x0 = start;
+  DampedValue v0 = f(x0, factor);
+  const double reference = v0.log_scale;
+  Complex f0 = v0.determinant;
+  Complex d = slope * std::exp(slope_log_scale - reference);
+  for (int iteration = 1; iteration <= max_iterations; ++iteration) {
+    if (!(std::abs(d) > 0.0) || !std::isfinite(std::abs(f0))) break;
+    const Complex step = -f0 / d;
+    const Complex x1 = x0 + step;
+    result.iterations = iteration;
+    if (std::abs(step) <= tolerance * std::abs(x1) || f0 == 0.0) {
+      result.converged = true;
+      result.root = f0 == 0.0 ? x0 : x1;
+      result.slope = d;
+      result.slope_log_scale = reference;
+      return result;
+    }
+    const Complex f1 = on_scale(f(x1, factor), reference);
+    d = (f1 - f0) / step;
+    x0 = x1, f0 = f1;
+  }
+  result.root = x0;
   return result;
 }
 
@@ -78,12 +113,16 @@ ContinuedRoot continue_root(const DampedFunction& f,
         has_previous ? lambda + (lambda - previous) * ((t_next - t) / (t - t_previous)) : lambda;
     const double radius = settings.radius_fraction * gap;
     set_scale(t_next);
-    const double tolerance = t_next >= 1.0 ? settings.tolerance : settings.loose_tolerance;
-    const MullerResult step =
-        muller_root(f, predicted, 1e-3 * radius, tolerance, 1.0, radius, t_next >= 1.0 ? 40 : 15);
+    MullerResult step = muller_root(f, predicted, 1e-3 * radius, settings.loose_tolerance,
+                                    settings.loose_factor, radius, t_next >= 1.0 ? 40 : 15);
+    if (step.converged && t_next >= 1.0 && settings.polish) {
+      step = secant_polish(f, step.root, step.slope, step.slope_log_scale, settings.tolerance, 1.0);
+      out.polished = step.converged;
+    }
     if (step.converged && std::abs(step.root - lambda) <= 2.0 * radius) {
       previous = lambda, t_previous = t, has_previous = true;
       lambda = step.root, t = t_next;
+      out.slope = step.slope, out.slope_log_scale = step.slope_log_scale;
       ++out.steps;
       if (step.iterations <= 6) h = std::min(2.0 * h, 1.0);
       continue;

@@ -41,6 +41,9 @@ struct MullerResult {
   bool converged = false;
   std::complex<double> root = 0.0;
   int iterations = 0;
+  /// dD/dlambda at the root from the last interpolating parabola, as slope * exp(slope_log_scale).
+  std::complex<double> slope = 0.0;
+  double slope_log_scale = 0.0;
 };
 
 /// Muller's method from `guess`, with the first two points at guess + spread and guess + i spread;
@@ -54,17 +57,37 @@ MullerResult muller_root(const DampedFunction& f,
                          double radius,
                          int max_iterations = 40);
 
+/// Secant steps at the tolerance factor `factor` from `start` (a root found at looser tolerances)
+/// with the first step -D/slope (`slope` * exp(`slope_log_scale`) = dD/dlambda there): each step
+/// uses the last two values; converged when a step is at most `tolerance` |root|. The result's
+/// slope is the last secant's.
+MullerResult secant_polish(const DampedFunction& f,
+                           std::complex<double> start,
+                           std::complex<double> slope,
+                           double slope_log_scale,
+                           double tolerance,
+                           double factor,
+                           int max_iterations = 8);
+
 /// Settings of the homotopy.
 struct ContinuationSettings {
   double tolerance = 1e-10;        ///< relative, for the root at t = 1
   double loose_tolerance = 1e-6;   ///< relative, for the roots at t < 1
   double radius_fraction = 0.3;    ///< largest move of a step / the gap to the neighbours
   double min_step = 1.0 / 4096.0;  ///< smallest step in t before the root is declared lost
+  /// Tolerance factor of the shots of the steps and of the first Muller iterations at t = 1 (the
+  /// root is then polished by secant steps at the factor 1).
+  double loose_factor = 1.0;
+  /// Polish the root at t = 1 (false: it stays at loose_tolerance; ContinuedRoot::polished).
+  bool polish = true;
 };
 
 struct ContinuedRoot {
   bool ok = false;
   std::complex<double> root = 0.0;
+  std::complex<double> slope = 0.0;  ///< MullerResult's, at t = 1
+  double slope_log_scale = 0.0;
+  bool polished = false;  ///< refined to `tolerance` at the factor 1
   int steps = 0;
   std::string reason;  ///< why the root was lost
 };
