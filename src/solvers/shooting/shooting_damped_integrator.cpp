@@ -18,14 +18,14 @@ namespace {
 
 using Complex = std::complex<double>;
 
-// [Phi^; F^] of the carried complex basis [Phi~; F~] (shot from a): undoes the balancing and the
-// axial frame, as to_physical does for the undamped shot.
+// [Phi^; F^] of the carried complex basis [Phi~; F~]: undoes the balancing and the axial frame,
+// as to_physical does for the undamped shot (from b the force was carried as -F^).
 template <int D>
 ComplexBasis<D> damped_to_physical(const ComplexBasis<D>& carried, const RhsData& data) {
   const double kappa = std::sqrt(data.kappa2);
   ComplexBasis<D> out = carried;
   out.template topRows<D>() /= kappa;
-  out.template bottomRows<D>() *= kappa;
+  out.template bottomRows<D>() *= data.from_b ? -kappa : kappa;
   if constexpr (D == 2) {
     out.template topRows<D>() =
         data.to_axial_force.transpose().cast<Complex>() * out.template topRows<D>();
@@ -88,7 +88,10 @@ struct DampedShootingIntegrator::Impl {
   }
 
   template <int D>
-  DampedShot shoot(Complex lambda, double factor, const std::vector<double>* stations);
+  DampedShot shoot(Complex lambda,
+                   double factor,
+                   const std::vector<double>* stations,
+                   bool from_b);
   template <int D>
   void record(DampedShot& shot, const double* state) const {
     const Eigen::Map<const ComplexBasis<D>> Y(reinterpret_cast<const Complex*>(state));
@@ -143,7 +146,8 @@ void DampedShootingIntegrator::Impl::cross_break(const Break& b, double x) {
 template <int D>
 DampedShot DampedShootingIntegrator::Impl::shoot(Complex lambda,
                                                  double factor,
-                                                 const std::vector<double>* stations) {
+                                                 const std::vector<double>* stations,
+                                                 bool from_b) {
   DampedShot shot;
   shot.lambda = lambda;
   const ShootingCoefficients& k = data.coefficients;
@@ -151,14 +155,15 @@ DampedShot DampedShootingIntegrator::Impl::shoot(Complex lambda,
   // The balancing of the undamped shot with Omega = |lambda| L sqrt(M / T_ref).
   const double omega_scaled = std::abs(lambda) * k.length_m * std::sqrt(k.M / k.t_ref);
   data.kappa2 = settings.balance ? std::max(omega_scaled, 1.0) : 1.0;
-  data.from_b = false;
-  data.piece = 0;
-  breaks = breaks_of(k, false);
+  data.from_b = from_b;
+  data.piece = from_b ? k.pieces.size() - 1 : 0;
+  breaks = breaks_of(k, from_b);
   next_break = 0;
   double* state = stepper->state();
   Eigen::Map<ComplexBasis<D>> Y(reinterpret_cast<Complex*>(state));
   // Phi^ = 0, F^ = I in the carried variables (F~ = P^{-T} / kappa), so that D(lambda) = det Phi^
-  // is analytic (a start F~ = I would multiply it by det(kappa P^T), which is not).
+  // is analytic (a start F~ = I would multiply it by det(kappa P^T), which is not). From b the
+  // carried force is -F^: the sign of the start does not move the roots.
   Y.setZero();
   Eigen::Matrix<double, D, D> start = Eigen::Matrix<double, D, D>::Identity();
   if constexpr (D == 2) start = data.to_axial_force;
@@ -227,9 +232,10 @@ void DampedShootingIntegrator::set_damping_scale(double scale) {
 
 DampedShot DampedShootingIntegrator::shoot(Complex lambda,
                                            double tolerance_factor,
-                                           const std::vector<double>* stations_x) {
-  if (impl_->dimension == 2) return impl_->shoot<2>(lambda, tolerance_factor, stations_x);
-  return impl_->shoot<1>(lambda, tolerance_factor, stations_x);
+                                           const std::vector<double>* stations_x,
+                                           bool from_b) {
+  if (impl_->dimension == 2) return impl_->shoot<2>(lambda, tolerance_factor, stations_x, from_b);
+  return impl_->shoot<1>(lambda, tolerance_factor, stations_x, from_b);
 }
 
 long DampedShootingIntegrator::total_shots() const { return impl_->shots; }

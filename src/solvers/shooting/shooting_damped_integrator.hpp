@@ -61,10 +61,13 @@ class DampedShootingIntegrator {
   void set_damping_scale(double scale);
 
   /// Shoots at `lambda` [1/s] with the tolerances scaled by `tolerance_factor`, recording the
-  /// stations `stations_x` (x = s/L, ascending) when given. Throws ShootingFailure.
+  /// stations `stations_x` (x = s/L, in the order of integration) when given. `from_b` starts at
+  /// s = L (Phi^ = 0, F^ = I there) and integrates toward s = 0; F is returned with its physical
+  /// sign. Throws ShootingFailure.
   DampedShot shoot(std::complex<double> lambda,
                    double tolerance_factor = 1.0,
-                   const std::vector<double>* stations_x = nullptr);
+                   const std::vector<double>* stations_x = nullptr,
+                   bool from_b = false);
 
   long total_shots() const;
   long total_steps() const;

@@ -185,18 +185,9 @@ void DampedPlane::set_shape(Mode& mode, Complex lambda) const {
   const int D = integration_plane_ == Plane::InPlane ? 2 : 1;
   const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(shot.y_end.topRows(D), Eigen::ComputeFullV);
   const Eigen::VectorXcd c = svd.matrixV().col(D - 1);
-  // The real and imaginary parts as one-column shots for evaluate_profile (linear in y).
-  Shot parts[2];
-  for (std::size_t j = 0; j < shot.station_y.size(); ++j) {
-    const Eigen::VectorXcd y = combine_damped_at_station(shot, j, c);
-    parts[0].station_y.emplace_back(y.real());
-    parts[1].station_y.emplace_back(y.imag());
-    parts[0].station_segment.push_back(0);
-    parts[1].station_segment.push_back(0);
-  }
-  const Eigen::VectorXd one = Eigen::VectorXd::Ones(1);
-  Profile re = evaluate_profile(parts[0], one, k_, stations, false, integration_plane_);
-  Profile im = evaluate_profile(parts[1], one, k_, stations, false, integration_plane_);
+  const ComplexProfile profile =
+      evaluate_damped_profile(shot, c, k_, stations, false, integration_plane_);
+  Profile re = profile.real, im = profile.imag;
   if (string_only_) re = string_as_inplane(re), im = string_as_inplane(im);
   mode.s_m = stations;
   if (plane_ == Plane::InPlane) {

@@ -20,6 +20,7 @@
 #include "solvers/common/solver_entries.hpp"
 #include "solvers/common/work_meter.hpp"
 #include "solvers/shooting/shooting_coefficients.hpp"
+#include "solvers/shooting/shooting_damped_forced.hpp"
 #include "solvers/shooting/shooting_damped_modes.hpp"
 #include "solvers/shooting/shooting_forced.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
@@ -156,9 +157,10 @@ class ShootingNumerics final : public SolverNumerics {
       : context_(context), options_(options) {}
 
   std::optional<std::string> not_applicable() const override;
-  // Damped modes (shooting_damped_modes.hpp); lines on the seabed are declined in
-  // not_applicable(); the damped forced response is not computed.
+  // Damped modes (shooting_damped_modes.hpp) and forced response (shooting_damped_forced.hpp);
+  // lines on the seabed are declined in not_applicable().
   bool handles_damping() const override { return true; }
+  bool handles_damped_forced() const override { return true; }
   std::optional<Outcome> prepare() override {
     k_ = ShootingCoefficients::from_statics(context_.statics);
     return std::nullopt;
@@ -168,9 +170,13 @@ class ShootingNumerics final : public SolverNumerics {
   ForcedOutcome forced(const ForcedRequest& request) override {
     WorkMeter meter(context_, "shooting", "forced frequencies",
                     static_cast<long>(request.omegas_rad_s.size()));
+    const Vector stations = context_.request.stations_m(k_.length_m);
     ForcedOutcome outcome =
-        shooting_forced_responses(k_, request, context_.request.stations_m(k_.length_m),
-                                  integrator_settings(options_), &meter);
+        context_.problem.is_damped()
+            ? shooting_damped_forced_responses(k_, request, stations,
+                                               integrator_settings(options_), &meter)
+            : shooting_forced_responses(k_, request, stations, integrator_settings(options_),
+                                        &meter);
     mark_time_limit(meter, outcome.summary);
     return outcome;
   }

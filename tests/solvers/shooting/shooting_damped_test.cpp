@@ -12,6 +12,9 @@
 //  - the argument-principle count equals the number of modes returned;
 //  - zero damping coefficients: the undamped path, bit for bit;
 //  - complex shapes: normalised, the string's shape a sine times one complex factor;
+//  - the damped forced response of a string driven at one end out of plane against its closed
+//    form A sin(kappa s) / sin(kappa L), kappa^2 = (1+e)/T (M w^2 - i w c_n), at resonance;
+//    its peak ~ A / (pi zeta) and half-power bandwidth ~ 2 zeta w1 (to O(zeta));
 //  - a damped line on the seabed is declined with the reason.
 #include <gtest/gtest.h>
 
@@ -282,6 +285,77 @@ TEST(ShootingDamped, DampedLineOnTheSeabedIsDeclined) {
   EXPECT_EQ(damped.output.summary.termination, Termination::NotApplicable);
   EXPECT_NE(damped.output.summary.message.find("seabed"), std::string::npos)
       << damped.output.summary.message;
+}
+
+// The string of damped_straight_cable(T, EA, 0, c_n, 0) driven out of plane at b with amplitude
+// A at the frequencies `omegas`, responses at 21 stations.
+Solved forced_string(double c_n, const std::vector<double>& omegas, double amplitude) {
+  SolveRequest request = modes_request(0, 1);
+  request.points = 21;
+  ForcedRequest forced;
+  forced.end = CableEnd::B;
+  forced.direction = ForcingDirection::OutOfPlane;
+  forced.amplitude_m = amplitude;
+  forced.omegas_rad_s = omegas;
+  request.forced = forced;
+  return solve(damped_straight_cable(2000.0, 2e4, 0.0, c_n, 0.0), request);
+}
+
+TEST(ShootingDamped, ForcedStringAtResonanceMatchesTheClosedForm) {
+  const double L = 10.0, M = 1.5, c_n = 0.3, A = 0.01;
+  const Solved probe = solve(damped_straight_cable(2000.0, 2e4, 0.0, c_n, 0.0), modes_request(0, 1));
+  const double T = probe.statics.tension_n(0.5 * L), e = T / 2e4;
+  const double w1 = kPi / L * std::sqrt(T / (M * (1.0 + e)));  // undamped resonance
+  const Solved solved = forced_string(c_n, {w1}, A);
+  ASSERT_EQ(solved.output.forced.size(), 1u) << solved.output.summary.full_report();
+  const ForcedResponse& r = solved.output.forced[0];
+  ASSERT_TRUE(r.diagnostic.empty()) << r.diagnostic;
+  const Complex kappa = std::sqrt((1.0 + e) / T * Complex(M * w1 * w1, -w1 * c_n));
+  double peak = 0.0;
+  for (Index j = 0; j < r.s_m.size(); ++j) {
+    const Complex expected = A * std::sin(kappa * r.s_m[j]) / std::sin(kappa * L);
+    peak = std::max(peak, std::abs(expected));
+    EXPECT_NEAR(r.v[j], expected.real(), 1e-7 * std::abs(A / std::sin(kappa * L)));
+    EXPECT_NEAR(r.v_imag[j], expected.imag(), 1e-7 * std::abs(A / std::sin(kappa * L)));
+  }
+  EXPECT_GT(peak, 10.0 * A);  // resonant amplification, finite
+  EXPECT_LT(r.relative_error_estimate, 1e-6);
+}
+
+TEST(ShootingDamped, ForcedStringPeakAndBandwidthFollowZeta) {
+  const double L = 10.0, M = 1.5, c_n = 0.05, A = 0.01;
+  const Solved probe = solve(damped_straight_cable(2000.0, 2e4, 0.0, c_n, 0.0), modes_request(0, 1));
+  const Mode& mode = probe.output.outofplane->modes[0];
+  const double zeta = mode.damping_ratio, w1 = std::hypot(mode.omega_rad_s, mode.decay_rate_1_s);
+  ASSERT_NEAR(zeta, c_n / (2.0 * M * w1), 1e-9);
+  std::vector<double> omegas;
+  for (int j = -60; j <= 60; ++j) omegas.push_back(w1 * (1.0 + 0.05 * zeta * j));
+  const Solved solved = forced_string(c_n, omegas, A);
+  ASSERT_EQ(solved.output.forced.size(), omegas.size());
+  std::vector<double> midpoint;  // |v(L/2)| (station 10 of 21)
+  for (const ForcedResponse& r : solved.output.forced) {
+    ASSERT_TRUE(r.diagnostic.empty()) << r.diagnostic;
+    midpoint.push_back(std::hypot(r.v[10], r.v_imag[10]));
+  }
+  const auto top = std::max_element(midpoint.begin(), midpoint.end());
+  const double peak = *top;
+  // Peak A / (pi zeta) and half-power width 2 zeta w1 of the first mode, to O(zeta) = 1e-3 and
+  // the sampling (0.05 zeta w1).
+  EXPECT_NEAR(peak * kPi * zeta / A, 1.0, 0.01);
+  const double half = peak / std::sqrt(2.0);
+  auto crossing = [&](int step) {
+    for (long j = top - midpoint.begin(); j + step >= 0 && j + step < long(midpoint.size());
+         j += step) {
+      const double a = midpoint[std::size_t(j)], b = midpoint[std::size_t(j + step)];
+      if (b < half) {
+        return omegas[std::size_t(j)] +
+               (omegas[std::size_t(j + step)] - omegas[std::size_t(j)]) * (a - half) / (a - b);
+      }
+    }
+    return 0.0;
+  };
+  const double bandwidth = crossing(1) - crossing(-1);
+  EXPECT_NEAR(bandwidth / (2.0 * zeta * w1), 1.0, 0.01);
 }
 
 }  // namespace
