@@ -52,7 +52,8 @@ double complex_change(const ComplexProfile& a, const ComplexProfile& b) {
     if (x.first->size() == 0 || x.first->size() != y.first->size()) continue;
     const double scale = (y.first->cwiseAbs2() + y.second->cwiseAbs2()).cwiseSqrt().maxCoeff();
     const Vector re = *x.first - *y.first, im = *x.second - *y.second;
-    if (scale > 0.0) change = std::max(change, (re.cwiseAbs2() + im.cwiseAbs2()).cwiseSqrt().maxCoeff() / scale);
+    if (scale > 0.0)
+      change = std::max(change, (re.cwiseAbs2() + im.cwiseAbs2()).cwiseSqrt().maxCoeff() / scale);
   }
   return change;
 }

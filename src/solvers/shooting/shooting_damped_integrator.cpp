@@ -88,10 +88,7 @@ struct DampedShootingIntegrator::Impl {
   }
 
   template <int D>
-  DampedShot shoot(Complex lambda,
-                   double factor,
-                   const std::vector<double>* stations,
-                   bool from_b);
+  DampedShot shoot(Complex lambda, double factor, const std::vector<double>* stations, bool from_b);
   template <int D>
   void record(DampedShot& shot, const double* state) const {
     const Eigen::Map<const ComplexBasis<D>> Y(reinterpret_cast<const Complex*>(state));

@@ -85,12 +85,12 @@ class DampedPlane {
   long undamped_steps_ = 0;
   long count_steps_ = 0;  // integration steps of the count's shots
   std::vector<std::string> warnings_;
-  std::vector<std::string> lost_;      // reasons of lost continuations
+  std::vector<std::string> lost_;       // reasons of lost continuations
   std::vector<ContinuedRoot> complex_;  // continued roots with Im lambda > 0
-  int went_real_ = 0;                  // continuations that ended on the real axis
-  std::vector<double> real_;           // real roots found in the region
+  int went_real_ = 0;                   // continuations that ended on the real axis
+  std::vector<double> real_;            // real roots found in the region
   RootCount region_count_;
-  std::string region_;                 // the counted region, for the message
+  std::string region_;  // the counted region, for the message
   int complex_in_region_ = 0;
 };
 
@@ -139,9 +139,8 @@ bool DampedPlane::continue_roots(const std::vector<double>& omegas, std::size_t 
       lost_.push_back(c.reason);
       continue;
     }
-    // Loose roots carry an imaginary part of the loose tolerance: a real one is found again on
-    // the real axis (count_region).
-    if (std::abs(c.root.imag()) <= 1e-5 * std::abs(c.root)) {
+    // A root that became real is found again on the real axis (count_region).
+    if (c.went_real) {
       ++went_real_;
     } else {
       ContinuedRoot upper = c;
@@ -162,8 +161,8 @@ DampedRoot DampedPlane::estimate(const ContinuedRoot& continued) {
   root.lambda = continued.root;
   if (!settings_.error_estimate || !(std::abs(continued.slope) > 0.0)) return root;
   const DampedValue tight = f_(continued.root, kEstimateFactor);
-  const Complex move = -tight.determinant * std::exp(tight.log_scale - continued.slope_log_scale) /
-                       continued.slope;
+  const Complex move =
+      -tight.determinant * std::exp(tight.log_scale - continued.slope_log_scale) / continued.slope;
   root.lambda = continued.root + move;
   const double floor = settings_.estimate_floor;
   const double omega = std::abs(root.lambda.imag()), delta = -root.lambda.real();
@@ -226,7 +225,8 @@ void DampedPlane::add_mode(const DampedRoot& root, std::vector<Mode>& modes) con
 // The argument-principle count of the region below omega_top (1 + margin), margin at most half
 // the gap to the next continued root, and the real roots in it when the count says there are.
 void DampedPlane::count_region(double omega_top, double next_omega) {
-  double gamma = 0.0;  // the largest drag per mass: real roots of a line without c_a lie above -gamma
+  double gamma =
+      0.0;  // the largest drag per mass: real roots of a line without c_a lie above -gamma
   for (const ShootingPiece& p : k_.all_pieces()) {
     gamma = std::max({gamma, p.damping_tangential / p.m, p.damping_normal / p.M});
   }
@@ -240,9 +240,10 @@ void DampedPlane::count_region(double omega_top, double next_omega) {
   const long steps_before = integrator_.total_steps();
   region_count_ = count_roots(f_, sigma, delta_max, top, factor);
   count_steps_ = integrator_.total_steps() - steps_before;
-  complex_in_region_ = static_cast<int>(std::count_if(
-      complex_.begin(), complex_.end(),
-      [&](const ContinuedRoot& c) { return c.root.imag() <= top && -c.root.real() <= delta_max; }));
+  complex_in_region_ =
+      static_cast<int>(std::count_if(complex_.begin(), complex_.end(), [&](const ContinuedRoot& c) {
+        return c.root.imag() <= top && -c.root.real() <= delta_max;
+      }));
   if (region_count_.ok && (region_count_.roots > 2 * complex_in_region_ || went_real_ > 0)) {
     real_ = real_roots(f_, delta_max, kRealSamples, settings_.root_tolerance, factor);
   }
@@ -282,8 +283,8 @@ ModalResult DampedPlane::run() {
   for (std::size_t j = 0; j < complex_.size() && j < std::size_t(count_); ++j) {
     ContinuedRoot& c = complex_[j];
     if (!c.polished) {
-      const MullerResult polished = secant_polish(f_, c.root, c.slope, c.slope_log_scale,
-                                                  settings_.root_tolerance, 1.0);
+      const MullerResult polished =
+          secant_polish(f_, c.root, c.slope, c.slope_log_scale, settings_.root_tolerance, 1.0);
       if (!polished.converged) {
         result.summary.termination = Termination::NoConvergence;
         result.summary.message = fmt::format(
@@ -312,7 +313,8 @@ ModalResult DampedPlane::run() {
     const double h = 1e-6 * std::abs(r);
     const DampedValue at = f_(r, 1.0), beside = f_(r + h, 1.0);
     real.slope_log_scale = at.log_scale;
-    real.slope = (beside.determinant * std::exp(beside.log_scale - at.log_scale) - at.determinant) / h;
+    real.slope =
+        (beside.determinant * std::exp(beside.log_scale - at.log_scale) - at.determinant) / h;
     DampedRoot root = estimate(real);
     root.lambda = Complex(root.lambda.real(), 0.0);
     root.omega_error = -1.0;
@@ -326,8 +328,8 @@ void DampedPlane::finish(ModalResult& result) const {
   SolverSummary& summary = result.summary;
   const int found = static_cast<int>(result.modes.size());
   const int reals = static_cast<int>(real_.size());
-  const bool proved = region_count_.ok && complex_in_region_ == found &&
-                      region_count_.roots == 2 * found + reals;
+  const bool proved =
+      region_count_.ok && complex_in_region_ == found && region_count_.roots == 2 * found + reals;
   result.proved_count_below_top = proved ? found : -1;
   summary.termination =
       found == count_ && proved ? Termination::Converged : Termination::NoConvergence;
@@ -339,9 +341,10 @@ void DampedPlane::finish(ModalResult& result) const {
   summary.max_error_estimate = std::max(max_omega_error, max_delta_error);
   std::string count_text;
   if (!region_count_.ok) {
-    count_text = fmt::format("the argument-principle count failed ({}): the number of roots is "
-                             "not proved",
-                             region_count_.reason);
+    count_text = fmt::format(
+        "the argument-principle count failed ({}): the number of roots is "
+        "not proved",
+        region_count_.reason);
   } else {
     count_text = fmt::format(
         "the argument principle counts {} roots in {} ({} complex pairs and {} real roots "
@@ -354,8 +357,8 @@ void DampedPlane::finish(ModalResult& result) const {
   summary.message = fmt::format(
       "{}: {} of {} {} damped modes (omega_d = Im lambda), {} overdamped roots; {}; max relative "
       "error estimate {:.2e} (omega_d), {:.2e} (delta)",
-      summary.termination == Termination::Converged ? "Converged" : "No convergence", found,
-      count_, to_string(plane_), reals, count_text, max_omega_error, max_delta_error);
+      summary.termination == Termination::Converged ? "Converged" : "No convergence", found, count_,
+      to_string(plane_), reals, count_text, max_omega_error, max_delta_error);
   summary.iterations = integrator_.total_shots() + undamped_shots_;
   summary.operations = integrator_.total_rhs_evaluations();
   summary.notes.push_back(fmt::format(
@@ -365,8 +368,7 @@ void DampedPlane::finish(ModalResult& result) const {
       undamped_shots_, undamped_steps_, integrator_.total_shots(), integrator_.total_steps(),
       region_count_.evaluations, count_steps_));
   if (went_real_ > 0) {
-    summary.notes.push_back(
-        fmt::format("{} continued roots became real (overdamped)", went_real_));
+    summary.notes.push_back(fmt::format("{} continued roots became real (overdamped)", went_real_));
   }
   for (const std::string& w : warnings_) summary.warnings.push_back(w);
 }

@@ -21,6 +21,11 @@ Complex on_scale(const DampedValue& value, double reference) {
   return value.determinant * std::exp(value.log_scale - reference);
 }
 
+// A root with |Im| below this fraction of |lambda| is real (the homotopy's loose tolerance leaves
+// an imaginary part of its size); a root lost within kNearRealAxis of the axis met its conjugate.
+constexpr double kRealAxis = 1e-5;
+constexpr double kNearRealAxis = 0.1;
+
 // The principal change of argument from a to b, in (-pi, pi].
 double arg_change(Complex a, Complex b) { return std::arg(b / a); }
 
@@ -113,21 +118,39 @@ ContinuedRoot continue_root(const DampedFunction& f,
         has_previous ? lambda + (lambda - previous) * ((t_next - t) / (t - t_previous)) : lambda;
     const double radius = settings.radius_fraction * gap;
     set_scale(t_next);
-    MullerResult step = muller_root(f, predicted, 1e-3 * radius, settings.loose_tolerance,
-                                    settings.loose_factor, radius, t_next >= 1.0 ? 40 : 15);
+    // Secant steps from the prediction with the last root's slope (one shot a step); Muller's
+    // method from three points when they fail or leave the radius.
+    MullerResult step;
+    if (has_previous) {
+      step = secant_polish(f, predicted, out.slope, out.slope_log_scale, settings.loose_tolerance,
+                           settings.loose_factor);
+      step.converged = step.converged && std::abs(step.root - predicted) <= radius;
+    }
+    if (!step.converged) {
+      step = muller_root(f, predicted, 1e-3 * radius, settings.loose_tolerance,
+                         settings.loose_factor, radius, t_next >= 1.0 ? 40 : 15);
+    }
     if (step.converged && t_next >= 1.0 && settings.polish) {
       step = secant_polish(f, step.root, step.slope, step.slope_log_scale, settings.tolerance, 1.0);
       out.polished = step.converged;
     }
-    if (step.converged && std::abs(step.root - lambda) <= 2.0 * radius) {
+    if (step.converged) {  // within the radius of the prediction (muller_root)
       previous = lambda, t_previous = t, has_previous = true;
       lambda = step.root, t = t_next;
       out.slope = step.slope, out.slope_log_scale = step.slope_log_scale;
       ++out.steps;
       if (step.iterations <= 6) h = std::min(2.0 * h, 1.0);
+      if (std::abs(lambda.imag()) <= kRealAxis * std::abs(lambda)) break;
       continue;
     }
     h /= 4.0;
+    if (h < settings.min_step && std::abs(lambda.imag()) <= kNearRealAxis * std::abs(lambda)) {
+      // Near the real axis the root meets its conjugate (a double root, where Muller slows down
+      // and the path turns by 90 degrees): what it becomes is found on the real axis.
+      out.ok = out.went_real = true;
+      out.root = lambda;
+      return out;
+    }
     if (h < settings.min_step) {
       out.reason = fmt::format(
           "the root continued from {:.10g}i 1/s was lost at damping scale {:.6g} (near {:.10g} "
@@ -139,6 +162,7 @@ ContinuedRoot continue_root(const DampedFunction& f,
   }
   out.ok = true;
   out.root = lambda;
+  out.went_real = std::abs(lambda.imag()) <= kRealAxis * std::abs(lambda);
   return out;
 }
 

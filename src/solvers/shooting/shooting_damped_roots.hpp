@@ -88,12 +88,16 @@ struct ContinuedRoot {
   std::complex<double> slope = 0.0;  ///< MullerResult's, at t = 1
   double slope_log_scale = 0.0;
   bool polished = false;  ///< refined to `tolerance` at the factor 1
+  /// The root reached the real axis before t = 1 (or was lost close to it, where two roots
+  /// collide): the caller finds the real roots on the real axis, and the count checks them.
+  bool went_real = false;
   int steps = 0;
   std::string reason;  ///< why the root was lost
 };
 
-/// Follows the root from `start` (t = 0) to t = 1; `set_scale(t)` sets the damping scale that `f`
-/// evaluates at; `gap` [1/s] is the distance from `start` to the nearest other root at t = 0.
+/// Follows the root from `start` (t = 0) to t = 1 (or until it becomes real: went_real);
+/// `set_scale(t)` sets the damping scale that `f` evaluates at; `gap` [1/s] is the distance from
+/// `start` to the nearest other root at t = 0.
 ContinuedRoot continue_root(const DampedFunction& f,
                             const std::function<void(double)>& set_scale,
                             std::complex<double> start,
@@ -104,9 +108,9 @@ ContinuedRoot continue_root(const DampedFunction& f,
 /// |Im| <= top [1/s], D evaluated with the tolerance factor `factor`.
 struct RootCount {
   bool ok = false;
-  int roots = 0;        ///< N in the whole rectangle (complex pairs count twice)
+  int roots = 0;  ///< N in the whole rectangle (complex pairs count twice)
   long evaluations = 0;
-  std::string reason;   ///< why the count failed
+  std::string reason;  ///< why the count failed
 };
 RootCount count_roots(
     const DampedFunction& f, double sigma, double delta_max, double top, double factor);

@@ -171,12 +171,11 @@ class ShootingNumerics final : public SolverNumerics {
     WorkMeter meter(context_, "shooting", "forced frequencies",
                     static_cast<long>(request.omegas_rad_s.size()));
     const Vector stations = context_.request.stations_m(k_.length_m);
-    ForcedOutcome outcome =
-        context_.problem.is_damped()
-            ? shooting_damped_forced_responses(k_, request, stations,
-                                               integrator_settings(options_), &meter)
-            : shooting_forced_responses(k_, request, stations, integrator_settings(options_),
-                                        &meter);
+    ForcedOutcome outcome = context_.problem.is_damped()
+                                ? shooting_damped_forced_responses(
+                                      k_, request, stations, integrator_settings(options_), &meter)
+                                : shooting_forced_responses(k_, request, stations,
+                                                            integrator_settings(options_), &meter);
     mark_time_limit(meter, outcome.summary);
     return outcome;
   }

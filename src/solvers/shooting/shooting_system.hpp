@@ -181,9 +181,8 @@ void damped_coefficients_at(const RhsData& data,
     const Vec2 tp = data.to_axial * t, np = data.to_axial * n;
     const Vec2 tq = data.to_axial_force * t, nq = data.to_axial_force * n;
     const Complex tangential = lambda * lambda * p.m + lambda * p.damping_tangential + k_t;
-    const Complex normal = normal_load + (p.grounded ? p.foundation_normal +
-                                                          p.foundation_damping * lambda
-                                                    : 0.0);
+    const Complex normal =
+        normal_load + (p.grounded ? p.foundation_normal + p.foundation_damping * lambda : 0.0);
     B = data.kappa2 * (b_tangent * (tp * tp.transpose()).template cast<Complex>() +
                        b_normal * (np * np.transpose()).template cast<Complex>());
     C = c_scale * (tangential * (tq * tq.transpose()).template cast<Complex>() +

@@ -159,8 +159,8 @@ TEST(ShootingDamped, HeavyDampingOverdampsTheFirstMode) {
   ASSERT_EQ(result.modes.size(), 6u);
   for (std::size_t j = 0; j < 6; ++j) {
     const double w0 = modes0[j + 1].omega_rad_s;
-    EXPECT_NEAR(result.modes[j].omega_rad_s / std::sqrt(w0 * w0 - 0.25 * alpha * alpha) - 1.0,
-                0.0, 1e-9);
+    EXPECT_NEAR(result.modes[j].omega_rad_s / std::sqrt(w0 * w0 - 0.25 * alpha * alpha) - 1.0, 0.0,
+                1e-9);
     EXPECT_NEAR(result.modes[j].decay_rate_1_s / (0.5 * alpha) - 1.0, 0.0, 1e-8);
   }
 }
@@ -212,8 +212,7 @@ TEST(ShootingDamped, StraightCableStringAndKelvinVoigtBar) {
     const Complex expected = inplane[j];
     has_bar = has_bar || -expected.real() > 0.5 * c_n / M * 1.5;
     EXPECT_NEAR(in.modes[j].omega_rad_s / expected.imag() - 1.0, 0.0, 1e-9) << "mode " << j + 1;
-    EXPECT_NEAR(in.modes[j].decay_rate_1_s / -expected.real() - 1.0, 0.0, 1e-6)
-        << "mode " << j + 1;
+    EXPECT_NEAR(in.modes[j].decay_rate_1_s / -expected.real() - 1.0, 0.0, 1e-6) << "mode " << j + 1;
   }
   EXPECT_TRUE(has_bar) << "the six lowest in-plane modes should include a bar mode";
   const ModalResult& out = *damped.output.outofplane;
@@ -303,7 +302,8 @@ Solved forced_string(double c_n, const std::vector<double>& omegas, double ampli
 
 TEST(ShootingDamped, ForcedStringAtResonanceMatchesTheClosedForm) {
   const double L = 10.0, M = 1.5, c_n = 0.3, A = 0.01;
-  const Solved probe = solve(damped_straight_cable(2000.0, 2e4, 0.0, c_n, 0.0), modes_request(0, 1));
+  const Solved probe =
+      solve(damped_straight_cable(2000.0, 2e4, 0.0, c_n, 0.0), modes_request(0, 1));
   const double T = probe.statics.tension_n(0.5 * L), e = T / 2e4;
   const double w1 = kPi / L * std::sqrt(T / (M * (1.0 + e)));  // undamped resonance
   const Solved solved = forced_string(c_n, {w1}, A);
@@ -324,7 +324,8 @@ TEST(ShootingDamped, ForcedStringAtResonanceMatchesTheClosedForm) {
 
 TEST(ShootingDamped, ForcedStringPeakAndBandwidthFollowZeta) {
   const double L = 10.0, M = 1.5, c_n = 0.05, A = 0.01;
-  const Solved probe = solve(damped_straight_cable(2000.0, 2e4, 0.0, c_n, 0.0), modes_request(0, 1));
+  const Solved probe =
+      solve(damped_straight_cable(2000.0, 2e4, 0.0, c_n, 0.0), modes_request(0, 1));
   const Mode& mode = probe.output.outofplane->modes[0];
   const double zeta = mode.damping_ratio, w1 = std::hypot(mode.omega_rad_s, mode.decay_rate_1_s);
   ASSERT_NEAR(zeta, c_n / (2.0 * M * w1), 1e-9);
