@@ -379,9 +379,7 @@ ModalResult damped_plane_modes(const ShootingCoefficients& k,
                                const SolveContext& context,
                                Plane plane,
                                int count,
-                               const DampedPlaneSettings& settings,
-                               WorkMeter* meter) {
-  (void)meter;
+                               const DampedPlaneSettings& settings) {
   DampedPlane solver(k, context, plane, count, settings);
   return solver.run();
 }

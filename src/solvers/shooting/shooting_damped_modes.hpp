@@ -18,7 +18,6 @@
 
 #include "catena/solvers/modal_result.hpp"
 #include "catena/solvers/solver_registry.hpp"
-#include "solvers/common/work_meter.hpp"
 #include "solvers/shooting/shooting_coefficients.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
 #include "solvers/shooting/shooting_root_finder.hpp"
@@ -48,7 +47,6 @@ ModalResult damped_plane_modes(const ShootingCoefficients& k,
                                const SolveContext& context,
                                Plane plane,
                                int count,
-                               const DampedPlaneSettings& settings,
-                               WorkMeter* meter);
+                               const DampedPlaneSettings& settings);
 
 }  // namespace catena::internal

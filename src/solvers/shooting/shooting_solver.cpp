@@ -292,9 +292,8 @@ ModalResult ShootingNumerics::damped_modes(Plane plane, int count) {
   settings.estimate_floor = accuracy_target(options_);
   settings.first_guess_rad_s = (count + 2.37) * kPi / transverse_travel_time(k_);
   ModalResult result;
-  WorkMeter meter(context_, "shooting", std::string(to_string(plane)) + " damped modes", count);
   try {
-    result = damped_plane_modes(k_, context_, plane, count, settings, &meter);
+    result = damped_plane_modes(k_, context_, plane, count, settings);
   } catch (const ShootingFailure& failure) {
     result = ModalResult();
     mark_failed(plane, failure, result.summary);
