@@ -15,6 +15,8 @@
 //  - the damped forced response of a string driven at one end out of plane against its closed
 //    form A sin(kappa s) / sin(kappa L), kappa^2 = (1+e)/T (M w^2 - i w c_n), at resonance;
 //    its peak ~ A / (pi zeta) and half-power bandwidth ~ 2 zeta w1 (to O(zeta));
+//  - the in-plane damped forced response of the mooring line with vanishing damping tends to the
+//    undamped one (u, w and the tension), away from resonance;
 //  - a damped line on the seabed is declined with the reason.
 #include <gtest/gtest.h>
 
@@ -357,6 +359,37 @@ TEST(ShootingDamped, ForcedStringPeakAndBandwidthFollowZeta) {
   };
   const double bandwidth = crossing(1) - crossing(-1);
   EXPECT_NEAR(bandwidth / (2.0 * zeta * w1), 1.0, 0.01);
+}
+
+TEST(ShootingDamped, ForcedResponseWithVanishingDampingIsTheUndampedOne) {
+  const Problem problem = catena::testing::mooring_line(Vec2(900.0, 300.0));
+  SolveRequest request = modes_request(1, 0);
+  request.points = 51;
+  request.tension = true;
+  ForcedRequest forced;
+  forced.end = CableEnd::B;
+  forced.direction = ForcingDirection::Tangential;
+  forced.amplitude_m = 0.5;
+  forced.omegas_rad_s = {0.2, 0.47, 0.9};  // below, between and above the first modes
+  request.forced = forced;
+  const Solved undamped = solve(problem, request);
+  // delta ~ 5e-9 1/s: the response differs from the undamped one by O(delta / distance to the
+  // nearest resonance) ~ 1e-7.
+  const Solved damped = solve(with_proportional_damping(problem, 1e-8), request);
+  ASSERT_EQ(damped.output.forced.size(), 3u) << damped.output.summary.full_report();
+  for (std::size_t j = 0; j < 3; ++j) {
+    const ForcedResponse& a = undamped.output.forced[j];
+    const ForcedResponse& b = damped.output.forced[j];
+    ASSERT_TRUE(b.diagnostic.empty()) << b.diagnostic;
+    ASSERT_EQ(b.tension_imag_n.size(), b.tension_n.size());
+    const double scale_w = a.w.cwiseAbs().maxCoeff(), scale_t = a.tension_n.cwiseAbs().maxCoeff();
+    EXPECT_LT((a.u - b.u).cwiseAbs().maxCoeff(), 1e-6 * a.u.cwiseAbs().maxCoeff());
+    EXPECT_LT((a.w - b.w).cwiseAbs().maxCoeff(), 1e-6 * scale_w);
+    EXPECT_LT((a.tension_n - b.tension_n).cwiseAbs().maxCoeff(), 1e-6 * scale_t);
+    EXPECT_LT(b.w_imag.cwiseAbs().maxCoeff(), 1e-6 * scale_w);
+    EXPECT_LT(b.tension_imag_n.cwiseAbs().maxCoeff(), 1e-6 * scale_t);
+    EXPECT_NEAR(b.max_abs_tension_n / a.max_abs_tension_n, 1.0, 1e-6);
+  }
 }
 
 }  // namespace
