@@ -160,16 +160,27 @@ DampedRoot DampedPlane::estimate(const ContinuedRoot& continued) {
   DampedRoot root;
   root.lambda = continued.root;
   if (!settings_.error_estimate || !(std::abs(continued.slope) > 0.0)) return root;
-  const DampedValue tight = f_(continued.root, kEstimateFactor);
-  const Complex move =
-      -tight.determinant * std::exp(tight.log_scale - continued.slope_log_scale) / continued.slope;
-  root.lambda = continued.root + move;
   const double floor = settings_.estimate_floor;
-  const double omega = std::abs(root.lambda.imag()), delta = -root.lambda.real();
-  if (omega > 0.0) root.omega_error = std::max(std::abs(move.imag()) / omega, floor);
-  if (delta > 0.0) {
+  ContinuedRoot at = continued;
+  // As the undamped finder: an estimate of omega_d above the target finds the root again at 10x,
+  // then 100x tighter tolerances (each with its own estimate at 100x tighter still).
+  for (double factor = 1.0; factor >= 0.01; factor *= 0.1) {
+    if (factor < 1.0) {
+      const MullerResult again = secant_polish(f_, at.root, at.slope, at.slope_log_scale,
+                                               settings_.root_tolerance, factor);
+      if (!again.converged) break;
+      at.root = again.root, at.slope = again.slope, at.slope_log_scale = again.slope_log_scale;
+    }
+    const DampedValue tight = f_(at.root, factor * kEstimateFactor);
+    const Complex move =
+        -tight.determinant * std::exp(tight.log_scale - at.slope_log_scale) / at.slope;
+    root.lambda = at.root + move;
+    const double omega = std::abs(root.lambda.imag()), delta = -root.lambda.real();
+    root.omega_error = omega > 0.0 ? std::max(std::abs(move.imag()) / omega, floor) : -1.0;
     root.delta_error =
-        std::max(std::abs(move.real()) / delta, floor * std::abs(root.lambda) / delta);
+        delta > 0.0 ? std::max(std::abs(move.real()) / delta, floor * std::abs(root.lambda) / delta)
+                    : -1.0;
+    if (root.omega_error <= floor) break;
   }
   return root;
 }
