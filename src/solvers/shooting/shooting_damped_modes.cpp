@@ -26,7 +26,7 @@ constexpr double kCountRelativeTolerance = 1e-5;
 // The undamped starting roots' integration tolerance.
 constexpr double kStartRelativeTolerance = 1e-6;
 // The homotopy's shots (before the root is polished at the solver's tolerances).
-constexpr double kStepRelativeTolerance = 1e-8;
+constexpr double kStepRelativeTolerance = 1e-6;
 // The count's region above the top root: this fraction of omega_top, or half the gap to the next
 // root when that is smaller; and its right edge at Re lambda = this fraction of omega_top.
 constexpr double kTopMargin = 0.05;
