@@ -18,6 +18,9 @@ ShootingPiece piece_of(const CableProperties& section, double s_begin, double V_
   p.compliance = section.is_inextensible() ? 0.0 : 1.0 / section.axial_stiffness_n;
   p.m = section.mass_kg_per_m;
   p.M = section.normal_mass_kg_per_m();
+  p.damping_tangential = section.damping.tangential_n_s_per_m2;
+  p.damping_normal = section.damping.normal_n_s_per_m2;
+  p.damping_axial = section.damping.axial_n_s;
   return p;
 }
 
@@ -44,6 +47,7 @@ ShootingPiece grounded_piece_of(const StaticPiece& piece, const Seabed& seabed) 
   p.tension_slope = seabed.friction * piece.section.weight_n_per_m;
   p.foundation_normal = seabed.stiffness_n_per_m2;
   p.foundation_tangential = seabed.tangential_stiffness_n_per_m2;
+  p.foundation_damping = seabed.damping_n_s_per_m2;
   return p;
 }
 
@@ -72,6 +76,11 @@ ShootingCoefficients ShootingCoefficients::from_statics(const StaticSolution& st
       c.pieces.push_back(piece.grounded
                              ? grounded_piece_of(piece, statics.seabed())
                              : piece_of(piece.section, piece.s_begin_m, piece.vertical_begin_n));
+      // The statics' sections carry no damping (it does not enter the statics): the segment's.
+      const SectionDamping& damping = statics.line().segments[piece.segment].damping;
+      c.pieces.back().damping_tangential = damping.tangential_n_s_per_m2;
+      c.pieces.back().damping_normal = damping.normal_n_s_per_m2;
+      c.pieces.back().damping_axial = damping.axial_n_s;
     }
     c.pieces.back().s_end = cable.length_m;
     for (const PointAttachment& point : statics.line().points) {
@@ -143,6 +152,13 @@ bool ShootingCoefficients::is_inextensible() const {
 bool ShootingCoefficients::has_grounded_piece() const {
   return std::any_of(pieces.begin(), pieces.end(),
                      [](const ShootingPiece& p) { return p.grounded; });
+}
+
+bool ShootingCoefficients::is_damped() const {
+  return std::any_of(pieces.begin(), pieces.end(), [](const ShootingPiece& p) {
+    return p.damping_tangential != 0.0 || p.damping_normal != 0.0 || p.damping_axial != 0.0 ||
+           p.foundation_damping != 0.0;
+  });
 }
 
 bool is_straight_inextensible(const ShootingCoefficients& k) {

@@ -33,6 +33,10 @@ struct ShootingPiece {
   double tension_slope = 0.0;          ///< grounded: C_B w [N/m]
   double foundation_normal = 0.0;      ///< grounded: k_s, vertical [N/m per unstretched m]
   double foundation_tangential = 0.0;  ///< grounded: k_t, along and across [N/m per unstretched m]
+  double damping_tangential = 0.0;     ///< c_t [N s/m per m] (docs/explanation/physics.md)
+  double damping_normal = 0.0;         ///< c_n [N s/m per m], in plane and out of plane
+  double damping_axial = 0.0;          ///< c_a [N s] (Kelvin-Voigt), 0 when inextensible
+  double foundation_damping = 0.0;     ///< grounded: c_s, vertical [N s/m per m]
 
   /// T(s) [N] for the horizontal force H of the suspended part.
   double tension(double H, double s) const;
@@ -85,6 +89,8 @@ struct ShootingCoefficients {
   bool is_inextensible() const;
   /// True when a piece rests on the seabed.
   bool has_grounded_piece() const;
+  /// True when a piece carries damping (drag, axial or the seabed dashpot).
+  bool is_damped() const;
 };
 
 /// A straight (vertical, H = 0) inextensible cable: its axial direction is rigid, det Phi(L)

@@ -27,15 +27,6 @@ constexpr double kResonanceEstimate = 0.1;
 constexpr double kEstimateFactor = 0.01;
 constexpr double kTightErrorRatio = 0.1;
 
-// The prescribed end displacement in the integration variables: which plane is integrated, the
-// scaled drive d (a D-vector), and why there is no response, if there is none.
-struct Drive {
-  Plane plane = Plane::InPlane;
-  Eigen::VectorXd d;
-  bool string_only = false;
-  std::optional<std::string> diagnostic;
-};
-
 Vec2 drive_direction(const ShootingCoefficients& k, const ForcedRequest& forced, double s_driven) {
   switch (forced.direction) {
     case ForcingDirection::Tangential:
@@ -46,6 +37,8 @@ Vec2 drive_direction(const ShootingCoefficients& k, const ForcedRequest& forced,
       return forced.unit_vector();
   }
 }
+
+}  // namespace
 
 Drive make_drive(const ShootingCoefficients& k, const ForcedRequest& forced) {
   Drive drive;
@@ -72,6 +65,8 @@ Drive make_drive(const ShootingCoefficients& k, const ForcedRequest& forced) {
   drive.d = Eigen::VectorXd::Constant(1, forced.amplitude_m * direction.dot(k.normal(s_driven)));
   return drive;
 }
+
+namespace {
 
 void set_profiles(ForcedResponse& response,
                   const Profile& p,

@@ -10,6 +10,10 @@
 /// response); one with |det| < 1e-3 is flagged near_resonance with a warning. A straight
 /// inextensible cable responds only to the normal part of the drive.
 
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+
 #include "catena/solvers/solve_request.hpp"
 #include "solvers/common/solver_driver.hpp"
 #include "solvers/common/work_meter.hpp"
@@ -17,6 +21,17 @@
 #include "solvers/shooting/shooting_integrator.hpp"
 
 namespace catena::internal {
+
+/// The prescribed end displacement in the integration variables: which plane is integrated, the
+/// drive d [m] (a D-vector; a straight inextensible cable: its normal part, integrated as the
+/// string), and why there is no response, if there is none. Shared with the damped response.
+struct Drive {
+  Plane plane = Plane::InPlane;
+  Eigen::VectorXd d;
+  bool string_only = false;
+  std::optional<std::string> diagnostic;
+};
+Drive make_drive(const ShootingCoefficients& k, const ForcedRequest& forced);
 
 /// The response at one frequency; `near_resonance` is set when |det Phi(L)| < 1e-3. A response
 /// with a diagnostic (resonance, an axial drive of a rigid cable) has no profiles. Throws

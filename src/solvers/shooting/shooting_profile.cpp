@@ -38,6 +38,26 @@ Profile evaluate_profile(const Shot& shot,
   return p;
 }
 
+ComplexProfile evaluate_damped_profile(const DampedShot& shot,
+                                       const Eigen::VectorXcd& c,
+                                       const ShootingCoefficients& k,
+                                       const Vector& stations_m,
+                                       bool reversed,
+                                       Plane plane) {
+  // The parts of the combination at each station as one-column shots of evaluate_profile.
+  Shot parts[2];
+  for (std::size_t j = 0; j < shot.station_y.size(); ++j) {
+    const Eigen::VectorXcd y = combine_damped_at_station(shot, j, c);
+    parts[0].station_y.emplace_back(y.real());
+    parts[1].station_y.emplace_back(y.imag());
+    parts[0].station_segment.push_back(0);
+    parts[1].station_segment.push_back(0);
+  }
+  const Eigen::VectorXd one = Eigen::VectorXd::Ones(1);
+  return {evaluate_profile(parts[0], one, k, stations_m, reversed, plane),
+          evaluate_profile(parts[1], one, k, stations_m, reversed, plane)};
+}
+
 Profile string_as_inplane(const Profile& string) {
   Profile p;
   p.w = string.v;

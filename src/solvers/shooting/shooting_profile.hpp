@@ -11,6 +11,7 @@
 
 #include "catena/core/types.hpp"
 #include "solvers/shooting/shooting_coefficients.hpp"
+#include "solvers/shooting/shooting_damped_integrator.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
 
 namespace catena::internal {
@@ -29,6 +30,18 @@ Profile evaluate_profile(const Shot& shot,
                          const Vector& stations_m,
                          bool reversed,
                          Plane plane);
+
+/// The real and imaginary parts of the profile of the complex combination `c` of the final basis
+/// of a damped shot (evaluate_profile is linear in the basis).
+struct ComplexProfile {
+  Profile real, imag;
+};
+ComplexProfile evaluate_damped_profile(const DampedShot& shot,
+                                       const Eigen::VectorXcd& c,
+                                       const ShootingCoefficients& k,
+                                       const Vector& stations_m,
+                                       bool reversed,
+                                       Plane plane);
 
 /// The out-of-plane profile of the transverse string re-labelled as the in-plane normal motion
 /// (a straight inextensible cable): w = v, u = 0, tension 0.

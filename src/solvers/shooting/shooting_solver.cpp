@@ -20,6 +20,8 @@
 #include "solvers/common/solver_entries.hpp"
 #include "solvers/common/work_meter.hpp"
 #include "solvers/shooting/shooting_coefficients.hpp"
+#include "solvers/shooting/shooting_damped_forced.hpp"
+#include "solvers/shooting/shooting_damped_modes.hpp"
 #include "solvers/shooting/shooting_forced.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
 #include "solvers/shooting/shooting_modes.hpp"
@@ -155,6 +157,10 @@ class ShootingNumerics final : public SolverNumerics {
       : context_(context), options_(options) {}
 
   std::optional<std::string> not_applicable() const override;
+  // Damped modes (shooting_damped_modes.hpp) and forced response (shooting_damped_forced.hpp);
+  // lines on the seabed are declined in not_applicable().
+  bool handles_damping() const override { return true; }
+  bool handles_damped_forced() const override { return true; }
   std::optional<Outcome> prepare() override {
     k_ = ShootingCoefficients::from_statics(context_.statics);
     return std::nullopt;
@@ -164,14 +170,18 @@ class ShootingNumerics final : public SolverNumerics {
   ForcedOutcome forced(const ForcedRequest& request) override {
     WorkMeter meter(context_, "shooting", "forced frequencies",
                     static_cast<long>(request.omegas_rad_s.size()));
-    ForcedOutcome outcome =
-        shooting_forced_responses(k_, request, context_.request.stations_m(k_.length_m),
-                                  integrator_settings(options_), &meter);
+    const Vector stations = context_.request.stations_m(k_.length_m);
+    ForcedOutcome outcome = context_.problem.is_damped()
+                                ? shooting_damped_forced_responses(
+                                      k_, request, stations, integrator_settings(options_), &meter)
+                                : shooting_forced_responses(k_, request, stations,
+                                                            integrator_settings(options_), &meter);
     mark_time_limit(meter, outcome.summary);
     return outcome;
   }
 
  private:
+  ModalResult damped_modes(Plane plane, int count);
   void add_modes(ShootingIntegrator& integrator,
                  const std::vector<Root>& roots,
                  Plane plane,
@@ -193,6 +203,11 @@ class ShootingNumerics final : public SolverNumerics {
 std::optional<std::string> ShootingNumerics::not_applicable() const {
   const StaticSolution& statics = context_.statics;
   if (auto reason = slack_on_seabed(statics)) return reason;
+  if (context_.problem.is_damped() && statics.has_contact()) {
+    return std::string(
+        "the line is damped and rests on the seabed: the damped shot does not cover the grounded "
+        "part (its grounded run is undamped only)");
+  }
   const double L = statics.cable().length_m;
   const double V_A = statics.vertical_force_a_n();
   const double V_B = statics.vertical_force_n(L);
@@ -217,6 +232,7 @@ void ShootingNumerics::describe(SolverSummary& summary) const {
 // cable: the axial direction is rigid, det Phi(L) vanishes identically, and the in-plane problem
 // is the transverse string alone, which is the out-of-plane equation for the normal displacement.
 ModalResult ShootingNumerics::modes(Plane plane, int count) {
+  if (context_.problem.is_damped()) return damped_modes(plane, count);
   ModalResult result;
   SolverSummary& summary = result.summary;
   summary.resolution = resolution(options_);
@@ -262,6 +278,28 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
   }
   finish_summary(finder, *integrator, plane, count, result);
   mark_time_limit(meter, summary);
+  return result;
+}
+
+// The damped modes of one plane (shooting_damped_modes.hpp); an integration failure makes the
+// plane a NumericalFailure with its reason.
+ModalResult ShootingNumerics::damped_modes(Plane plane, int count) {
+  DampedPlaneSettings settings;
+  settings.integrator = integrator_settings(options_);
+  settings.undamped = root_finder_settings(options_);
+  settings.root_tolerance = options_.effective_root_tolerance();
+  settings.error_estimate = options_.error_estimate;
+  settings.estimate_floor = accuracy_target(options_);
+  settings.first_guess_rad_s = (count + 2.37) * kPi / transverse_travel_time(k_);
+  ModalResult result;
+  try {
+    result = damped_plane_modes(k_, context_, plane, count, settings);
+  } catch (const ShootingFailure& failure) {
+    result = ModalResult();
+    mark_failed(plane, failure, result.summary);
+  }
+  result.summary.resolution = resolution(options_);
+  result.summary.accuracy_target = accuracy_target(options_);
   return result;
 }
 
@@ -333,7 +371,9 @@ SolverEntry make_shooting_entry() {
       "(ERKStep, Verner's 6(5) pair), "
       "modes counted by conjugate points (Morse index) and refined by safeguarded Newton steps "
       "with the frequency derivative of the shot (Brent's method as fallback) on a count-aware "
-      "phase function; any sag, inclination, EA (inf exact), added mass",
+      "phase function; any sag, inclination, EA (inf exact), added mass; damped lines off the "
+      "seabed "
+      "by complex roots continued from the undamped ones, counted by the argument principle",
       shooting_knobs(), [](const SolveContext& context, const ShootingSolverOptions& options) {
         return std::make_unique<ShootingNumerics>(context, options);
       });

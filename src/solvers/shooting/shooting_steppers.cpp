@@ -90,20 +90,83 @@ int jacobian(
   return 0;
 }
 
-// CVODE (Adams or BDF) with its vectors and linear algebra, for the plain state [Y, phase] or the
-// state with the slope [Y, phase, S] (the latter solved by blocks: shooting_block_solver.hpp).
+// The error weights of a damped shot (complex Y, interleaved real and imaginary parts, no phase):
+// 1 / (rtol |z| + atol) with the modulus |z| of each complex component, for both its parts (the
+// split into real and imaginary parts is arbitrary: the rotation e^{i phi} of a column must not
+// change the control).
+int damped_error_weights(N_Vector y, N_Vector weights, void* user_data) {
+  const auto& data = *static_cast<const RhsData*>(user_data);
+  const double* state = NV_DATA_S(y);
+  double* w = NV_DATA_S(weights);
+  const int block = 2 * data.dimension * data.dimension;
+  for (int i = 0; i < block; ++i) {
+    const double weight =
+        1.0 / (data.rtol * std::hypot(state[2 * i], state[2 * i + 1]) + data.atol);
+    w[2 * i] = w[2 * i + 1] = weight;
+  }
+  return 0;
+}
+
+template <int D>
+int damped_rhs(double x, N_Vector y, N_Vector ydot, void* user_data) {
+  damped_rhs_values<D>(*static_cast<const RhsData*>(user_data), x, NV_DATA_S(y), NV_DATA_S(ydot));
+  return 0;
+}
+
+// What a stepper integrates: the state's size, its right-hand side and error weights, and for
+// CVODE the Jacobian (null: CVODE's difference quotients) and linear solver.
+struct StateSystem {
+  int block = 0;               // components of Y (the phase follows it in the undamped states)
+  sunindextype size = 0;       // the whole state
+  ARKRhsFn rhs = nullptr;      // also CVODE's (same signature)
+  ARKEwtFn weights = nullptr;  // ERKStep's, and CVODE's unless vector_tolerances
+  CVLsJacFn jacobian = nullptr;
+  bool vector_tolerances = false;  // CVODE: CVodeSVtolerances (atol, the phase's atol_phase)
+  bool block_solver = false;       // CVODE: shooting_block_solver.hpp instead of dense LU
+};
+
+// The plain state [Y, phase] or the state with the slope [Y, phase, S].
+StateSystem undamped_system(int dimension, bool slope) {
+  StateSystem system;
+  system.block = 2 * dimension * dimension;
+  system.size = slope ? 2 * system.block + 1 : system.block + 1;
+  system.rhs = dimension == 2 ? (slope ? sundials_rhs<2, true> : sundials_rhs<2, false>)
+                              : (slope ? sundials_rhs<1, true> : sundials_rhs<1, false>);
+  system.weights = slope ? slope_error_weights : plain_error_weights;
+  system.jacobian = dimension == 2 ? (slope ? jacobian<2, true> : jacobian<2, false>)
+                                   : (slope ? jacobian<1, true> : jacobian<1, false>);
+  system.vector_tolerances = !slope;
+  system.block_solver = slope;
+  return system;
+}
+
+// The damped state: the complex Y as 2 x 2 D^2 reals.
+StateSystem damped_system(int dimension) {
+  StateSystem system;
+  system.block = 4 * dimension * dimension;
+  system.size = system.block;
+  system.rhs = dimension == 2 ? damped_rhs<2> : damped_rhs<1>;
+  system.weights = damped_error_weights;
+  return system;
+}
+
+// CVODE (Adams or BDF) with its vectors and linear algebra, for the plain state [Y, phase], the
+// state with the slope [Y, phase, S] (the latter solved by blocks: shooting_block_solver.hpp) or
+// the damped state.
 class CvodeStepper final : public ShotStepper {
  public:
-  CvodeStepper(
-      SUNContext context, int dimension, bool slope, const IntegratorSettings& s, RhsData& data)
-      : block_(2 * dimension * dimension),
-        slope_(slope),
-        size_(slope ? 2 * block_ + 1 : block_ + 1),
+  CvodeStepper(SUNContext context,
+               const StateSystem& system,
+               const IntegratorSettings& s,
+               RhsData& data)
+      : system_(system),
+        block_(system.block),
+        size_(system.size),
         y_(size_, context),
         scratch_(size_, context),
         matrix_(SUNDenseMatrix(size_, size_, context)),
-        linear_solver_(slope ? make_block_linear_solver(context, block_)
-                             : SUNLinSol_Dense(y_.get(), matrix_.get(), context)),
+        linear_solver_(system.block_solver ? make_block_linear_solver(context, block_)
+                                           : SUNLinSol_Dense(y_.get(), matrix_.get(), context)),
         nonlinear_solver_(s.fixed_point ? SUNNonlinSol_FixedPoint(y_.get(), 0, context) : nullptr),
         cvode_(s.method == ShootingMethod::Bdf ? CV_BDF : CV_ADAMS, context) {
     if (!(y_.ok() && scratch_.ok() && matrix_.ok() && linear_solver_.ok() && cvode_.ok())) {
@@ -111,11 +174,7 @@ class CvodeStepper final : public ShotStepper {
     }
     void* mem = cvode_.get();
     N_VConst(0.0, y_.get());
-    CVRhsFn f = dimension == 2 ? (slope ? sundials_rhs<2, true> : sundials_rhs<2, false>)
-                               : (slope ? sundials_rhs<1, true> : sundials_rhs<1, false>);
-    CVLsJacFn jac = dimension == 2 ? (slope ? jacobian<2, true> : jacobian<2, false>)
-                                   : (slope ? jacobian<1, true> : jacobian<1, false>);
-    check(CVodeInit(mem, f, 0.0, y_.get()), "CVodeInit");
+    check(CVodeInit(mem, system.rhs, 0.0, y_.get()), "CVodeInit");
     check(CVodeSetUserData(mem, &data), "CVodeSetUserData");
     if (s.fixed_point) {
       // Functional iteration (no Jacobian, no linear solve): the system is not stiff.
@@ -125,7 +184,7 @@ class CvodeStepper final : public ShotStepper {
       check(CVodeSetNonlinearSolver(mem, nonlinear_solver_.get()), "CVodeSetNonlinearSolver");
     } else {
       check(CVodeSetLinearSolver(mem, linear_solver_.get(), matrix_.get()), "CVodeSetLinearSolver");
-      check(CVodeSetJacFn(mem, jac), "CVodeSetJacFn");
+      if (system.jacobian) check(CVodeSetJacFn(mem, system.jacobian), "CVodeSetJacFn");
     }
     check(CVodeSetMaxNumSteps(mem, s.max_steps), "CVodeSetMaxNumSteps");
   }
@@ -136,8 +195,8 @@ class CvodeStepper final : public ShotStepper {
     finished_steps_ = finished_rhs_ = 0;
     void* mem = cvode_.get();
     check(CVodeReInit(mem, 0.0, y_.get()), "CVodeReInit");
-    if (slope_) {
-      check(CVodeWFtolerances(mem, slope_error_weights), "CVodeWFtolerances");
+    if (!system_.vector_tolerances) {
+      check(CVodeWFtolerances(mem, system_.weights), "CVodeWFtolerances");
     } else {
       N_VConst(atol, scratch_.get());
       scratch_.data()[block_] = atol_phase;
@@ -184,8 +243,8 @@ class CvodeStepper final : public ShotStepper {
     }
   }
 
+  StateSystem system_;
   int block_;
-  bool slope_;
   sunindextype size_;
   // Declaration order = construction order; destruction runs in reverse.
   SerialVector y_;
@@ -240,13 +299,13 @@ void keep_message(int, const char*, const char* function, char* message, void* u
 // (shooting_vector_kernels.hpp).
 class ErkStepper final : public ShotStepper {
  public:
-  ErkStepper(
-      SUNContext context, int dimension, bool slope, const IntegratorSettings& s, RhsData& data)
-      : block_(2 * dimension * dimension),
-        slope_(slope),
-        size_(slope ? 2 * block_ + 1 : block_ + 1),
-        rhs_(dimension == 2 ? (slope ? sundials_rhs<2, true> : sundials_rhs<2, false>)
-                            : (slope ? sundials_rhs<1, true> : sundials_rhs<1, false>)),
+  ErkStepper(SUNContext context,
+             const StateSystem& system,
+             const IntegratorSettings& s,
+             RhsData& data)
+      : weights_(system.weights),
+        size_(system.size),
+        rhs_(system.rhs),
         y_(size_, context),
         scratch_(size_, context),
         start_(size_, context),
@@ -270,8 +329,7 @@ class ErkStepper final : public ShotStepper {
     x_ = x_start_ = 0.0;
     std::copy_n(y_.data(), size_, start_.data());
     message_.clear();
-    check(ERKStepWFtolerances(mem, slope_ ? slope_error_weights : plain_error_weights),
-          "ERKStepWFtolerances");
+    check(ERKStepWFtolerances(mem, weights_), "ERKStepWFtolerances");
     // The first step: the one the last shot chose after its first (the error-controlled step at
     // x = 0 of a shot at a nearby frequency); ARKODE's own estimate for the first shot, whose
     // step, of order sqrt(rtol) (a first-order guess), then took ~15 steps to grow.
@@ -339,8 +397,7 @@ class ErkStepper final : public ShotStepper {
     ARKodeButcherTable_Free(table);
     check(flag, "ERKStepSetTable");
     check(ERKStepSetUserData(mem, data_), "ERKStepSetUserData");
-    check(ERKStepWFtolerances(mem, slope_ ? slope_error_weights : plain_error_weights),
-          "ERKStepWFtolerances");
+    check(ERKStepWFtolerances(mem, weights_), "ERKStepWFtolerances");
   }
 
   // ERKStep's step-size controller set to the classical one: h_new = 0.9 h err^(-1/6) (the
@@ -374,8 +431,7 @@ class ErkStepper final : public ShotStepper {
     }
   }
 
-  int block_;
-  bool slope_;
+  ARKEwtFn weights_;
   sunindextype size_;
   ARKRhsFn rhs_;
   std::string message_;
@@ -400,10 +456,22 @@ std::unique_ptr<ShotStepper> make_shot_stepper(const IntegratorSettings& setting
                                                int dimension,
                                                bool slope,
                                                RhsData& data) {
+  const StateSystem system = undamped_system(dimension, slope);
   if (settings.method == ShootingMethod::RungeKutta) {
-    return std::make_unique<ErkStepper>(context, dimension, slope, settings, data);
+    return std::make_unique<ErkStepper>(context, system, settings, data);
   }
-  return std::make_unique<CvodeStepper>(context, dimension, slope, settings, data);
+  return std::make_unique<CvodeStepper>(context, system, settings, data);
+}
+
+std::unique_ptr<ShotStepper> make_damped_stepper(const IntegratorSettings& settings,
+                                                 SUNContext context,
+                                                 int dimension,
+                                                 RhsData& data) {
+  const StateSystem system = damped_system(dimension);
+  if (settings.method == ShootingMethod::RungeKutta) {
+    return std::make_unique<ErkStepper>(context, system, settings, data);
+  }
+  return std::make_unique<CvodeStepper>(context, system, settings, data);
 }
 
 }  // namespace catena::internal

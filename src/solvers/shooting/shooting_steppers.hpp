@@ -60,4 +60,13 @@ std::unique_ptr<ShotStepper> make_shot_stepper(const IntegratorSettings& setting
                                                bool slope,
                                                RhsData& data);
 
+/// The stepper of `settings.method` for a damped shot: the complex basis Y (2D x D) as 4 D^2
+/// reals, interleaved real and imaginary parts, on damped_rhs_values (shooting_system.hpp) at
+/// data.lambda; error weights 1 / (rtol |z| + atol) per complex component; CVODE's Newton uses
+/// difference-quotient Jacobians.
+std::unique_ptr<ShotStepper> make_damped_stepper(const IntegratorSettings& settings,
+                                                 SUNContext context,
+                                                 int dimension,
+                                                 RhsData& data);
+
 }  // namespace catena::internal

@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 
 #include "solvers/shooting/shooting_coefficients.hpp"
@@ -18,6 +19,10 @@ template <int D>
 using Basis = Eigen::Matrix<double, 2 * D, D>;
 template <int D>
 using Square = Eigen::Matrix<double, D, D>;
+template <int D>
+using ComplexBasis = Eigen::Matrix<std::complex<double>, 2 * D, D>;
+template <int D>
+using ComplexSquare = Eigen::Matrix<std::complex<double>, D, D>;
 
 /// Everything the right-hand sides need (CVODE's and ARKODE's user data).
 struct RhsData {
@@ -42,7 +47,33 @@ struct RhsData {
   double rtol = 1e-10;
   double atol = 1e-12;
   double atol_phase = 1e-6;
+  // A damped shot (shooting_damped_integrator.hpp): the characteristic root lambda [1/s] at which
+  // the complex system is integrated; unused by the undamped shots.
+  std::complex<double> lambda = 0.0;
 };
+
+// The static state at x on the current piece: s [m], the tension along the chord direction
+// (H, V), the tension T (the friction profile on the seabed) and the strain e = T / EA.
+struct StaticState {
+  double s = 0.0;
+  double V = 0.0;
+  double T_direction = 0.0;
+  double T = 0.0;
+  double e = 0.0;
+};
+
+inline StaticState static_state_at(const RhsData& data, const ShootingPiece& p, double x) {
+  const ShootingCoefficients& k = data.coefficients;
+  StaticState state;
+  state.s = k.length_m * (data.from_b ? 1.0 - x : x);
+  state.V = p.V_begin + p.W0 * (state.s - p.s_begin);
+  // sqrt, not hypot (a tenth of a shot's time): forces are far from overflow.
+  state.T_direction = std::sqrt(k.H * k.H + state.V * state.V);
+  // On the seabed the tension is the friction profile and the tangent +x (V = 0).
+  state.T = p.grounded ? p.tension(k.H, state.s) : state.T_direction;
+  state.e = state.T * p.compliance;
+  return state;
+}
 
 // The Winkler foundation under a grounded piece (docs/explanation/methods/shooting.md, "Seabed
 // contact"): springs k per unstretched metre (like m, M and W0: docs/explanation/physics.md,
@@ -69,20 +100,14 @@ void coefficients_at(
     const RhsData& data, double x, Square<D>& B, Square<D>& C, Square<D>* inertia = nullptr) {
   const ShootingCoefficients& k = data.coefficients;
   const ShootingPiece& p = k.pieces[data.piece];
-  const double s = k.length_m * (data.from_b ? 1.0 - x : x);
-  const double V = p.V_begin + p.W0 * (s - p.s_begin);
-  // sqrt, not hypot (a tenth of a shot's time): forces are far from overflow.
-  const double T_direction = std::sqrt(k.H * k.H + V * V);
-  // On the seabed the tension is the friction profile and the tangent +x (V = 0).
-  const double T = p.grounded ? p.tension(k.H, s) : T_direction;
-  const double e = T * p.compliance;
-  const double b_normal = k.t_ref * (1.0 + e) / T;
+  const StaticState st = static_state_at(data, p, x);
+  const double b_normal = k.t_ref * (1.0 + st.e) / st.T;
   if constexpr (D == 1) {
     B(0, 0) = data.kappa2 * b_normal;
     C(0, 0) = (data.omega2 / data.kappa2) * (p.M / k.M);
   } else {
     const double b_tangent = k.t_ref * p.compliance;
-    const Vec2 t(k.H / T_direction, V / T_direction);
+    const Vec2 t(k.H / st.T_direction, st.V / st.T_direction);
     const Vec2 n(-t.y(), t.x());
     const double mass_ratio = p.m / k.M;
     const Vec2 tp = data.to_axial * t, np = data.to_axial * n;
@@ -120,6 +145,63 @@ void rhs_values(const RhsData& data, double x, const double* state, double* deri
     dS.template bottomRows<D>() =
         -C * S.template topRows<D>() - (2.0 * data.slope_scale) * inertia * Phi;
   }
+}
+
+// The damped coefficients at x for the root lambda = data.lambda (docs/explanation/physics.md,
+// "Damping"): the undamped B and C with -w^2 m -> lambda^2 m + lambda c_t, -w^2 M -> lambda^2 M +
+// lambda c_n, EA -> EA + c_a lambda and, on the seabed, k_s -> k_s + c_s lambda, in the same
+// scaled, balanced, axial-frame variables:
+//   B = kappa^2 [T_ref/(EA + c_a lambda) tp tp^T + T_ref (1+e)/T np np^T],
+//   C = -(L^2 / (T_ref kappa^2)) [(lambda^2 m + lambda c_t + k_t) tq tq^T
+//                                 + (lambda^2 M + lambda c_n + k_s + c_s lambda) nq nq^T],
+// (k_t, k_s, c_s on grounded pieces only; out of plane C = -(L^2/(T_ref kappa^2)) (lambda^2 M +
+// lambda c_n + k_t)). With lambda = i w and no damping they are coefficients_at's.
+template <int D>
+void damped_coefficients_at(const RhsData& data,
+                            double x,
+                            ComplexSquare<D>& B,
+                            ComplexSquare<D>& C) {
+  using Complex = std::complex<double>;
+  const ShootingCoefficients& k = data.coefficients;
+  const ShootingPiece& p = k.pieces[data.piece];
+  const StaticState st = static_state_at(data, p, x);
+  const Complex lambda = data.lambda;
+  const double b_normal = k.t_ref * (1.0 + st.e) / st.T;
+  const double c_scale = -k.length_m * k.length_m / (k.t_ref * data.kappa2);
+  const double k_t = p.grounded ? p.foundation_tangential : 0.0;
+  const Complex normal_load = lambda * lambda * p.M + lambda * p.damping_normal;
+  if constexpr (D == 1) {
+    B(0, 0) = data.kappa2 * b_normal;
+    C(0, 0) = c_scale * (normal_load + k_t);
+  } else {
+    const Complex b_tangent =
+        k.t_ref * p.compliance / (1.0 + p.compliance * p.damping_axial * lambda);
+    const Vec2 t(k.H / st.T_direction, st.V / st.T_direction);
+    const Vec2 n(-t.y(), t.x());
+    const Vec2 tp = data.to_axial * t, np = data.to_axial * n;
+    const Vec2 tq = data.to_axial_force * t, nq = data.to_axial_force * n;
+    const Complex tangential = lambda * lambda * p.m + lambda * p.damping_tangential + k_t;
+    const Complex normal =
+        normal_load + (p.grounded ? p.foundation_normal + p.foundation_damping * lambda : 0.0);
+    B = data.kappa2 * (b_tangent * (tp * tp.transpose()).template cast<Complex>() +
+                       b_normal * (np * np.transpose()).template cast<Complex>());
+    C = c_scale * (tangential * (tq * tq.transpose()).template cast<Complex>() +
+                   normal * (nq * nq.transpose()).template cast<Complex>());
+  }
+}
+
+// Y' = A(lambda) Y for the complex basis Y = [Phi; F] stored as interleaved real and imaginary
+// parts (std::complex's layout): the damped shot carries no phase (the count is the argument
+// principle's, shooting_damped_roots.hpp).
+template <int D>
+void damped_rhs_values(const RhsData& data, double x, const double* state, double* derivative) {
+  using Complex = std::complex<double>;
+  Eigen::Map<const ComplexBasis<D>> Y(reinterpret_cast<const Complex*>(state));
+  Eigen::Map<ComplexBasis<D>> dY(reinterpret_cast<Complex*>(derivative));
+  ComplexSquare<D> B, C;
+  damped_coefficients_at<D>(data, x, B, C);
+  dY.template topRows<D>() = B * Y.template bottomRows<D>();
+  dY.template bottomRows<D>() = -C * Y.template topRows<D>();
 }
 
 }  // namespace catena::internal

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// Breaks and axial frame of a shot: see shooting_shot_setup.hpp.
+#include "solvers/shooting/shooting_shot_setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "solvers/shooting/shooting_integrator.hpp"
+
+namespace catena::internal {
+
+// The breaks of the line in the order of integration (none for a uniform cable).
+std::vector<Break> breaks_of(const ShootingCoefficients& k, bool from_b) {
+  std::vector<Break> breaks;
+  const std::size_t n = k.pieces.size();
+  for (std::size_t j = 1; j < n; ++j) {
+    const std::size_t piece = from_b ? n - j : j;
+    const double s = k.pieces[piece].s_begin;
+    Break b;
+    b.x = from_b ? 1.0 - s / k.length_m : s / k.length_m;
+    b.next_piece = from_b ? piece - 1 : piece;
+    for (std::size_t p = 0; p < k.points.size(); ++p) {
+      if (std::abs(k.points[p].s - s) <= 1e-10 * k.length_m) b.point = static_cast<int>(p);
+    }
+    breaks.push_back(b);
+  }
+  return breaks;
+}
+
+// The axial frame of the header: a constant rotation to the mean tangent (the bisector of the
+// end tangents) and the axial stretch sigma.
+void set_axial_frame(const ShootingCoefficients& k, RhsData& data) {
+  // The tangent angle is monotone on each piece: its extremes are at the piece ends.
+  double theta_a = std::atan2(k.V_A, k.H);
+  double theta_b = std::atan2(k.vertical_force(k.length_m), k.H);
+  double max_compliance = 0.0;
+  for (const ShootingPiece& p : k.pieces) {
+    const double ends[2] = {std::atan2(p.V_begin, k.H),
+                            std::atan2(p.V_begin + p.W0 * (p.s_end - p.s_begin), k.H)};
+    for (double theta : ends) {
+      theta_a = std::min(theta_a, theta);
+      theta_b = std::max(theta_b, theta);
+    }
+    max_compliance = std::max(max_compliance, p.compliance);
+  }
+  const double theta_c = 0.5 * (theta_a + theta_b);
+  const double sigma = axial_stretch(k.t_ref * max_compliance, 0.5 * std::abs(theta_b - theta_a));
+  // A cable whose axial component is within kMinAxialStretch of the normal one keeps its digits in
+  // x and y: it is shot as before, in the physical frame (data's identity default).
+  if (sigma < kMinAxialStretch) return;
+  Eigen::Matrix2d rotation_t;  // R^T, R = [t_c n_c]
+  rotation_t << std::cos(theta_c), std::sin(theta_c), -std::sin(theta_c), std::cos(theta_c);
+  data.to_axial = Eigen::Vector2d(sigma, 1.0).asDiagonal() * rotation_t;
+  data.to_axial_force = Eigen::Vector2d(1.0 / sigma, 1.0).asDiagonal() * rotation_t;
+}
+
+}  // namespace catena::internal

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// \file
+/// The set-up shared by the undamped shot (shooting_integrator.hpp) and the damped one
+/// (shooting_damped_integrator.hpp): the breaks of a general line in the order of integration and
+/// the constant axial frame of the carried variables. Private to the shooting solver.
+
+#include <cstddef>
+#include <vector>
+
+#include "solvers/shooting/shooting_coefficients.hpp"
+#include "solvers/shooting/shooting_system.hpp"
+
+namespace catena::internal {
+
+/// A break of a general line in the order of integration: a joint or a point attachment, where
+/// the stepper is restarted on the next piece (and the internal force jumps at a point).
+struct Break {
+  double x = 1.0;
+  std::size_t next_piece = 0;
+  int point = -1;  ///< index in ShootingCoefficients::points, -1 at a joint
+};
+
+/// The breaks of the line in the order of integration (none for a uniform cable).
+std::vector<Break> breaks_of(const ShootingCoefficients& k, bool from_b);
+
+/// The axial frame (shooting_integrator.hpp, "Axial frame"): a constant rotation to the mean
+/// tangent (the bisector of the end tangents) and the axial stretch sigma, set in `data` (left
+/// the identity when sigma < kMinAxialStretch).
+void set_axial_frame(const ShootingCoefficients& k, RhsData& data);
+
+}  // namespace catena::internal
