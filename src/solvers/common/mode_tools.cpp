@@ -119,6 +119,10 @@ void drop_shape_fields(Mode& mode) {
   mode.w = Vector();
   mode.v = Vector();
   mode.tension_n = Vector();
+  mode.u_imag = Vector();
+  mode.w_imag = Vector();
+  mode.v_imag = Vector();
+  mode.tension_imag_n = Vector();
   mode.modal_mass_kg = -1.0;
 }
 

@@ -34,8 +34,8 @@ double normalise_inplane_mode(Mode& mode);
 double normalise_outofplane_mode(Mode& mode);
 
 /// Clears the shape fields of a mode computed only for its summary (shapes not asked): stations,
-/// u, w, v, tension along the cable and modal mass (-1). Keeps the frequency, the estimate,
-/// normalised_by and max_abs_tension_n.
+/// u, w, v (and their imaginary parts), tension along the cable and modal mass (-1). Keeps the
+/// frequency, the estimate, normalised_by and max_abs_tension_n.
 void drop_shape_fields(Mode& mode);
 
 /// Integral of f over the stations s (trapezoid on equally or unequally spaced points).

@@ -13,6 +13,7 @@ CableProperties section_of(const LineSegment& segment, double length_m) {
   section.axial_stiffness_n = segment.axial_stiffness_n;
   section.mass_kg_per_m = segment.mass_kg_per_m;
   section.added_mass_kg_per_m = segment.added_mass_kg_per_m;
+  section.damping = segment.damping;
   return section;
 }
 
