@@ -199,7 +199,9 @@ class Figures:
                 continue
             rows = read_table(path)
             for hb in sorted({r["h_over_b"] for r in rows}, key=float):
-                scenes = [s for s in self.scenes if s[K.name].startswith(f"gale-{label}-hb{float(hb):.2f}-sag")]
+                # Gale's undamped figures: a damped variant of a table scene is not one of his points.
+                scenes = [s for s in self.scenes if s[K.name].startswith(f"gale-{label}-hb{float(hb):.2f}-sag")
+                          and "damped" not in s.get(K.tags, [])]
                 if not scenes:
                     continue
                 scenes.sort(key=lambda s: s[K.groups][K.gale][K.sag_param] or 0)
