@@ -32,12 +32,21 @@ std::optional<CheckBuilder::Tolerance> decay_tolerance(const SolverOutput& a,
                               builder, a, b, ma, mb);
 }
 
+// The resolution of lambda a solver promises, relative to |lambda|: its plane's accuracy target,
+// else the accuracy its [[solver]] declaration states (a model's is rounding: its delta is a
+// formula on its own modes), else 0.
+double resolution(const SolverOutput& output, double target, const CheckBuilder& builder) {
+  if (target > 0.0) return target;
+  const SolverAccuracy* declared = builder.tolerances().solver(output.solver);
+  return declared ? declared->accuracy : 0.0;
+}
+
 // delta of x against delta of y, relative to delta itself: the point of a decay-rate check (a
-// damping ratio of 1e-4 whose delta is 10% off moves |lambda| by 1e-5 only). Where the damping
-// ratio is below the tolerance, delta is below the resolution of lambda the solvers promise
-// (their targets are relative to |lambda|) and cannot be held on its own: it is compared relative
-// to |lambda| then, and the detail says so. Two exact zeros (an undamped plane of a damped line)
-// agree.
+// damping ratio of 1e-4 whose delta is 10% off moves |lambda| by 1e-5 only). Where both damping
+// ratios are at or below the coarser of the two solvers' resolutions of lambda (`resolved`, their
+// targets relative to |lambda|), delta cannot be held on its own: it is compared relative to
+// |lambda| then, and the detail says so (an undamped plane of a damped line, delta 0 against
+// rounding). Two exact zeros agree.
 void compare_decay(const std::string& check_kind,
                    const std::string& compare,
                    Plane plane,
@@ -45,6 +54,7 @@ void compare_decay(const std::string& check_kind,
                    const Mode& y,
                    double target_x,
                    double target_y,
+                   double resolved,
                    CheckBuilder::Tolerance tol,
                    CheckBuilder& builder) {
   CheckResult check = builder.base(check_kind, compare, plane_name(plane), x.index);
@@ -56,10 +66,13 @@ void compare_decay(const std::string& check_kind,
       x.decay_rate_1_s, y.decay_rate_1_s, x.damping_ratio, y.damping_ratio,
       x.decay_rate_error_estimate, y.decay_rate_error_estimate);
   double measured = relative_difference(x.decay_rate_1_s, y.decay_rate_1_s);
-  if (std::max(x.damping_ratio, y.damping_ratio) <= tol.value) {
+  if (std::max(x.damping_ratio, y.damping_ratio) <= resolved) {
     const double scale = std::max(modulus(x), modulus(y));
     measured = scale > 0.0 ? std::abs(x.decay_rate_1_s - y.decay_rate_1_s) / scale : 0.0;
-    check.detail += "; damping ratio below the tolerance: delta compared relative to |lambda|";
+    check.detail += fmt::format(
+        "; damping ratio below the solvers' resolution of lambda {:.1e}: delta compared relative "
+        "to |lambda|",
+        resolved);
   } else {
     check.detail += "; relative error of delta on its own";
   }
@@ -78,10 +91,12 @@ void decay_rate_pair(const SolverOutput& a,
                      CheckBuilder& builder) {
   const auto tol = decay_tolerance(a, b, ma, mb, builder);
   if (!tol) return;
+  const double resolved = std::max(resolution(a, ma.summary.accuracy_target, builder),
+                                   resolution(b, mb.summary.accuracy_target, builder));
   const std::size_t n = std::min(ma.modes.size(), mb.modes.size());
   for (std::size_t i = 0; i < n; ++i) {
     compare_decay("decay-rate", a.solver + " vs " + b.solver, plane, ma.modes[i], mb.modes[i],
-                  ma.summary.accuracy_target, mb.summary.accuracy_target, *tol, builder);
+                  ma.summary.accuracy_target, mb.summary.accuracy_target, resolved, *tol, builder);
   }
 }
 
@@ -97,10 +112,11 @@ void overdamped_pair(const SolverOutput& a,
   if (n == 0) return;
   const auto tol = decay_tolerance(a, b, ma, mb, builder);
   if (!tol) return;
+  // An overdamped root's damping ratio is 1: its delta is always held on its own.
   for (std::size_t i = 0; i < n; ++i) {
     compare_decay("overdamped", a.solver + " vs " + b.solver, plane, ma.overdamped[i],
-                  mb.overdamped[i], ma.summary.accuracy_target, mb.summary.accuracy_target, *tol,
-                  builder);
+                  mb.overdamped[i], ma.summary.accuracy_target, mb.summary.accuracy_target, 0.0,
+                  *tol, builder);
   }
 }
 

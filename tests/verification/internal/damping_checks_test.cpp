@@ -131,7 +131,8 @@ TEST(DampingChecks, LightDampingDeltaIsCheckedOnItsOwnNotThroughLambda) {
 }
 
 // A plane the damping does not reach (delta 0 exactly in one solver, rounding in the other):
-// below the tolerance's damping ratio delta is compared relative to |lambda|, and passes.
+// below the solvers' resolution of lambda (their declared accuracies here, 1e-12 and 1e-10) delta
+// is compared relative to |lambda|, and passes.
 TEST(DampingChecks, AnUndampedModeOfADampedLineComparesDeltaRelativeToLambda) {
   SceneResult r = gale_result(0.1);
   r.outputs = {output_with("frobenius", {{2.0, 0.0}}), output_with("shooting", {{2.0, 1e-15}})};
@@ -140,6 +141,20 @@ TEST(DampingChecks, AnUndampedModeOfADampedLineComparesDeltaRelativeToLambda) {
   ASSERT_NE(c, nullptr);
   EXPECT_EQ(c->verdict, Verdict::Pass);
   EXPECT_NE(c->detail.find("relative to |lambda|"), std::string::npos) << c->detail;
+}
+
+// A model's tolerance is wide (1e-4 + eps^2, 8.1 here at Gale's eps = 2.85, as a WARN limit): the
+// threshold below which delta is compared relative to |lambda| is the solvers' resolution of
+// lambda, not that tolerance, so a model's delta 5% off at zeta = 1e-4 is still measured on its
+// own.
+TEST(DampingChecks, AModelsDeltaIsMeasuredOnItsOwnAtLightDamping) {
+  SceneResult r = gale_result(4e-4);
+  r.outputs = {output_with("shooting", {{1.86, 1.86e-4}}),
+               output_with("asymptotic", {{1.86, 1.86e-4 * 1.05}})};
+  const CheckResult* c = find(run_checks(r), "decay-rate", 1);
+  ASSERT_NE(c, nullptr);
+  EXPECT_NEAR(c->measured, 0.05 / 1.05, 1e-9);
+  EXPECT_NE(c->detail.find("on its own"), std::string::npos) << c->detail;
 }
 
 TEST(DampingChecks, ADeltaItsSolverDoesNotClaimIsADeclaredMissWarn) {
