@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 #include <mutex>
 #include <set>
 
@@ -21,6 +22,8 @@ std::string to_string(MutatedQuantity quantity) {
       return "shape";
     case MutatedQuantity::ForcedTension:
       return "forced-tension";
+    case MutatedQuantity::DecayRate:
+      return "decay-rate";
   }
   return "?";
 }
@@ -35,6 +38,16 @@ double frequency_accuracy_target(const std::string& solver,
   // its estimate states.
   if (entry->accuracy_target) return entry->accuracy_target(knobs);
   if (entry->kind == SolverKind::Model) return std::max(0.0, mode.relative_error_estimate);
+  return 0.0;
+}
+
+double decay_rate_accuracy_target(const std::string& solver,
+                                  const SolverKnobs& knobs,
+                                  const Mode& mode) {
+  const SolverEntry* entry = find_solver(solver);
+  if (!entry) return 0.0;
+  if (entry->accuracy_target) return entry->accuracy_target(knobs);
+  if (entry->kind == SolverKind::Model) return std::max(0.0, mode.decay_rate_error_estimate);
   return 0.0;
 }
 
@@ -150,6 +163,53 @@ void mutate_frequencies(SceneMutator& mutator, SolverOutput& output, Plane plane
   }
 }
 
+bool has_decay(const SolverOutput& output, Plane plane, int index, bool overdamped) {
+  const auto& modal = plane == Plane::InPlane ? output.inplane : output.outofplane;
+  if (!modal) return false;
+  for (const auto& mode : overdamped ? modal->overdamped : modal->modes) {
+    if (mode.index == index) return mode.decay_rate_1_s > 0.0;
+  }
+  return false;
+}
+
+// A damped mode's delta (or an overdamped root's), made wrong by 10 x its solver's target where
+// delta is a claim on its own: its damping ratio above that target (below it the decay-rate check
+// of src/verification/internal/damping_checks.cpp compares delta relative to |lambda|, and no
+// mutation of delta is made).
+void mutate_decay_list(SceneMutator& mutator,
+                       const std::string& solver,
+                       std::vector<Mode>& modes,
+                       Plane plane,
+                       bool overdamped) {
+  const Scene& scene = mutator.work().scene;
+  const SolverKnobs knobs = scene.solvers.count(solver) ? scene.solvers.at(solver) : SolverKnobs{};
+  for (Mode& mode : modes) {
+    const double target = decay_rate_accuracy_target(solver, knobs, mode);
+    if (!(target > 0.0) || !(mode.decay_rate_1_s > 0.0) || !(mode.damping_ratio > target) ||
+        !std::isfinite(mode.decay_rate_1_s))
+      continue;
+    const double change = kFrequencyMutationFactor * target;
+    const Mode saved = mode;
+    mode.decay_rate_1_s *= 1.0 + change;
+    mode.damping_ratio =
+        overdamped ? 1.0 : mode.decay_rate_1_s / std::hypot(mode.decay_rate_1_s, mode.omega_rad_s);
+    const bool witness = mutator.exact_witness(solver, [&](const SolverOutput& other) {
+      return has_decay(other, plane, mode.index, overdamped);
+    });
+    mutator.record(solver, MutatedQuantity::DecayRate,
+                   std::string(plane_name(plane)) + (overdamped ? " overdamped" : ""), mode.index,
+                   change, saved.decay_rate_error_estimate, witness);
+    mode = saved;
+  }
+}
+
+void mutate_decay_rates(SceneMutator& mutator, SolverOutput& output, Plane plane) {
+  auto& modal = modal_of(output, plane);
+  if (!modal || !mutator.work().scene.problem.is_damped()) return;
+  mutate_decay_list(mutator, output.solver, modal->modes, plane, false);
+  mutate_decay_list(mutator, output.solver, modal->overdamped, plane, true);
+}
+
 // The widest 1 - MAC tolerance `solver` is held to in this scene (the scene's override, else the
 // table's rule against each other solver with shapes in `plane`); 0 when none applies.
 double widest_mac_tolerance(const SceneMutator& mutator, const std::string& solver, Plane plane) {
@@ -227,6 +287,7 @@ std::vector<MutationOutcome> mutate_scene(const SceneResult& result,
     for (Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
       mutate_frequencies(mutator, output, plane);
       mutate_shapes(mutator, output, plane);
+      mutate_decay_rates(mutator, output, plane);
     }
     mutate_forced(mutator, output);
   }

@@ -27,9 +27,11 @@ inline constexpr double kShapeMutationFactor = 10.0;
 /// A forced response's max |tension| (and its tension curve) is multiplied by (1 + this).
 inline constexpr double kForcedTensionMutation = 1e-4;
 
-/// What a mutation changed.
-enum class MutatedQuantity { Frequency, Shape, ForcedTension };
-/// "frequency", "shape", "forced-tension".
+/// What a mutation changed. DecayRate: on a damped line, a mode's decay rate delta (or an
+/// overdamped root's) multiplied by (1 + kFrequencyMutationFactor x its solver's accuracy target,
+/// decay_rate_accuracy_target()), its damping ratio with it.
+enum class MutatedQuantity { Frequency, Shape, ForcedTension, DecayRate };
+/// "frequency", "shape", "forced-tension", "decay-rate".
 std::string to_string(MutatedQuantity quantity);
 
 /// One mutation and whether the checks caught it.
@@ -88,6 +90,12 @@ struct MutationRun {
 double frequency_accuracy_target(const std::string& solver,
                                  const SolverKnobs& knobs,
                                  const Mode& mode);
+/// The relative accuracy of the decay rate delta on its own that `solver` promises on `mode`: an
+/// exact solver's accuracy target (as for the frequency: the decay-rate check holds the pair to the
+/// sum of their targets), a model's its mode's decay_rate_error_estimate. 0 when there is none.
+double decay_rate_accuracy_target(const std::string& solver,
+                                  const SolverKnobs& knobs,
+                                  const Mode& mode);
 
 /// Every mutation of one solved scene, each checked with `options`' tables. A scene without
 /// statics (an error) gives none.

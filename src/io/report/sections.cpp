@@ -123,7 +123,9 @@ void add_forced_table(Document& out, const json& scene) {
   }
   if (solvers.empty()) return;
   Table t{{"forcing [rad/s]"}, {}, "forced"};
-  for (const auto& s : solvers) t.header.push_back(s + " max|tau|/H");
+  // A damped response is complex: its max |tau| is the largest modulus along the line.
+  const char* column = is_damped_scene(scene) ? " max|tau|/H (modulus)" : " max|tau|/H";
+  for (const auto& s : solvers) t.header.push_back(s + column);
   const json& first = scene[key::solvers][solvers[0]][key::forced];
   const double H = scene[key::statics].value(key::horizontal_force_n, 1.0);
   for (std::size_t i = 0; i < first.size(); ++i) {
@@ -280,6 +282,7 @@ void add_scenes(Document& out, const json& document) {
     const std::string unit = display_unit(scene);
     for (const char* plane : {key::inplane, key::outofplane})
       add_frequency_table(out, scene, plane, unit);
+    add_damping_tables(out, scene);
     add_forced_table(out, scene);
   }
 }

@@ -27,7 +27,14 @@ void add_failures(Document& out, const json& document);
 void add_stress_outcomes(Document& out, const json& document);
 /// Fastest time to each accuracy target (nothing when there is no baseline).
 void add_time_to_accuracy(Document& out, const TimeToAccuracy& timing);
-/// Per scene: groups, every solver's frequencies beside the published ones, forced maxima.
+/// Per scene: groups, every solver's frequencies beside the published ones, the damping of a
+/// damped scene (add_damping_tables), forced maxima.
 void add_scenes(Document& out, const json& document);
+/// True when the scene's problem has damping (a section's damping, a seabed dashpot) or a solver
+/// returned a decaying mode.
+bool is_damped_scene(const json& scene);
+/// A damped scene's damping ratio zeta and decay rate delta per mode and solver, per plane, and its
+/// overdamped roots; nothing for an undamped scene.
+void add_damping_tables(Document& out, const json& scene);
 
 }  // namespace catena::internal

@@ -150,4 +150,27 @@ void CheckBuilder::add_measured(CheckResult check,
   add(std::move(check));
 }
 
+// Two exact solvers that were both asked for an accuracy (their planes' accuracy_target, set by
+// the scene's knobs, never by an estimate) are held to the sum of those targets where it is below
+// the table's rule: a scene that asks shooting for 1e-12 sees a 1e-10 change of frobenius. The
+// rule stays the ceiling, so no tolerance ever widens (docs/reference/verdicts.md, "Tolerances").
+std::optional<CheckBuilder::Tolerance> tightened_by_targets(
+    std::optional<CheckBuilder::Tolerance> tol,
+    const CheckBuilder& builder,
+    const SolverOutput& a,
+    const SolverOutput& b,
+    const ModalResult& ma,
+    const ModalResult& mb) {
+  const SolverAccuracy* da = builder.tolerances().solver(a.solver);
+  const SolverAccuracy* db = builder.tolerances().solver(b.solver);
+  const double ta = ma.summary.accuracy_target, tb = mb.summary.accuracy_target;
+  if (!tol || !da || !db || !da->exact || !db->exact || !(ta > 0.0) || !(tb > 0.0)) return tol;
+  if (!(ta + tb < tol->value)) return tol;
+  tol->value = ta + tb;
+  tol->reason = fmt::format(
+      "the sum of the accuracy targets the scene asked ({} {:.2g} + {} {:.2g}), below the rule: {}",
+      a.solver, ta, b.solver, tb, tol->reason);
+  return tol;
+}
+
 }  // namespace catena::internal

@@ -102,4 +102,16 @@ class CheckBuilder {
   std::vector<CheckResult> checks_;
 };
 
+/// `tol` tightened to the sum of the accuracy targets the scene asked of two exact solvers (their
+/// planes' SolverSummary::accuracy_target, ma and mb) where that sum is below the rule; the rule
+/// stays the ceiling (docs/reference/verdicts.md, "Tolerances"). Shared by the frequency and
+/// decay-rate checks.
+std::optional<CheckBuilder::Tolerance> tightened_by_targets(
+    std::optional<CheckBuilder::Tolerance> tol,
+    const CheckBuilder& builder,
+    const SolverOutput& a,
+    const SolverOutput& b,
+    const ModalResult& ma,
+    const ModalResult& mb);
+
 }  // namespace catena::internal

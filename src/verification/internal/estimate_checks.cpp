@@ -23,6 +23,8 @@ struct Place {
   std::string quantity;
   std::string plane;
   int mode = 0;
+  /// The check's kind: "estimate", or "decay-estimate" for a decay rate's estimate.
+  std::string check = "estimate";
 };
 
 using ClaimOf = std::function<std::optional<Claim>(const SolverOutput&, bool as_reference)>;
@@ -113,7 +115,7 @@ void check_claim(const SolverOutput& claimant,
   const SolverOutput* ref = reference_for(claimant, usable, place, claim_of, builder, reference);
   if (!ref) return;
   CheckResult check =
-      builder.base("estimate", claimant.solver + " vs " + ref->solver, place.plane, place.mode);
+      builder.base(place.check, claimant.solver + " vs " + ref->solver, place.plane, place.mode);
   check.detail = fmt::format(
       "{} {:.12g} with estimate {:.2e} against the reference {} {:.12g} (estimate {:.2e}): "
       "actual relative error {:.2e}",
@@ -132,6 +134,23 @@ ClaimOf frequency_claim(Plane plane, int index) {
     for (const Mode& mode : modal->modes) {
       if (mode.index == index)
         return usable_claim(mode.omega_rad_s, mode.relative_error_estimate,
+                            modal->summary.accuracy_target);
+    }
+    return std::nullopt;
+  };
+}
+
+// The decay rate delta of mode `index` in `plane` with its estimate of the relative error of
+// delta on its own (Mode::decay_rate_error_estimate: -1, no claim, on an undamped line), held to
+// the plane's accuracy target as the frequency is.
+ClaimOf decay_claim(Plane plane, int index) {
+  return [plane, index](const SolverOutput& output, bool as_reference) -> std::optional<Claim> {
+    const auto& modal = plane == Plane::InPlane ? output.inplane : output.outofplane;
+    if (!modal || (as_reference && modal->summary.termination != Termination::Converged))
+      return std::nullopt;
+    for (const Mode& mode : modal->modes) {
+      if (mode.index == index)
+        return usable_claim(mode.decay_rate_1_s, mode.decay_rate_error_estimate,
                             modal->summary.accuracy_target);
     }
     return std::nullopt;
@@ -159,6 +178,9 @@ void estimate_checks(const std::vector<const SolverOutput*>& usable, CheckBuilde
       for (const Mode& mode : modal->modes) {
         check_claim(*output, usable, {quantity, plane_name(plane), mode.index},
                     frequency_claim(plane, mode.index), builder);
+        if (mode.decay_rate_error_estimate >= 0.0)
+          check_claim(*output, usable, {quantity, plane_name(plane), mode.index, "decay-estimate"},
+                      decay_claim(plane, mode.index), builder);
       }
     }
     for (std::size_t i = 0; i < output->forced.size(); ++i) {

@@ -20,7 +20,17 @@ bool ForcedConditioning::covers(double omega) const {
 double ForcedConditioning::condition(double omega) const {
   if (!covers(omega)) return 1.0;
   double kappa = 1.0;
-  for (double wn : omegas_rad_s) {
+  for (std::size_t n = 0; n < omegas_rad_s.size(); ++n) {
+    const double wn = omegas_rad_s[n];
+    if (n < decay_rates_1_s.size() && decay_rates_1_s[n] > 0.0) {
+      // Damped: |lambda_n|^2 - Omega^2 + 2 i delta_n Omega, finite at resonance.
+      const double delta = decay_rates_1_s[n];
+      const double modulus2 = wn * wn + delta * delta;
+      const double distance = std::hypot(modulus2 - omega * omega, 2.0 * delta * omega);
+      if (distance == 0.0) return std::numeric_limits<double>::infinity();
+      kappa = std::max(kappa, 2.0 * modulus2 / distance);
+      continue;
+    }
     const double distance = std::abs(wn * wn - omega * omega);
     if (distance == 0.0) return std::numeric_limits<double>::infinity();
     kappa = std::max(kappa, 2.0 * wn * wn / distance);
@@ -85,6 +95,19 @@ std::vector<double> frequencies(const std::optional<ModalResult>& modal) {
   return out;
 }
 
+// The decay rates of the same modes; empty when none is positive (an undamped line).
+std::vector<double> decay_rates(const std::optional<ModalResult>& modal) {
+  std::vector<double> out;
+  bool damped = false;
+  if (modal) {
+    for (const Mode& mode : modal->modes) {
+      out.push_back(mode.decay_rate_1_s);
+      damped = damped || mode.decay_rate_1_s > 0.0;
+    }
+  }
+  return damped ? out : std::vector<double>{};
+}
+
 // The forced plane's modes of `solver`, solved for: the lowest kFirstConditioningModes, then more
 // (next_count) until the top one lies above `top`, cut back to the count the doubling from
 // kFirstConditioningModes would stop at. Empty when the solver gives none (or throws on the
@@ -93,7 +116,8 @@ std::vector<double> solve_modes(const SceneResult& result,
                                 const std::string& solver,
                                 Plane plane,
                                 double top,
-                                const RunLimits& limits) {
+                                const RunLimits& limits,
+                                std::vector<double>& deltas) {
   const SolverEntry* entry = find_solver(solver);
   if (!entry) return {};
   SolveRequest request = result.request;
@@ -113,6 +137,7 @@ std::vector<double> solve_modes(const SceneResult& result,
       const SolverOutput output = run_solver(*entry, context, knobs);
       if (!output.summary.is_usable()) return {};
       omegas = frequencies(plane == Plane::InPlane ? output.inplane : output.outofplane);
+      deltas = decay_rates(plane == Plane::InPlane ? output.inplane : output.outofplane);
       solved = count;
     } catch (const InvalidInput&) {
       // More modes than the solver resolves: keep the last list, after trying the doubling's
@@ -127,6 +152,7 @@ std::vector<double> solve_modes(const SceneResult& result,
     count = next_count(count, omegas.empty() ? 0.0 : omegas.back(), top);
   }
   omegas.resize(doubling_count(omegas, top));
+  if (!deltas.empty()) deltas.resize(omegas.size());
   return omegas;
 }
 
@@ -148,9 +174,11 @@ ForcedConditioning find_forced_conditioning(const SceneResult& result,
   out.plane = forced.direction == ForcingDirection::OutOfPlane ? Plane::OutOfPlane : Plane::InPlane;
   const double top =
       kAboveForcing * *std::max_element(forced.omegas_rad_s.begin(), forced.omegas_rad_s.end());
-  const auto keep = [&](const std::string& solver, std::vector<double> omegas, const char* how) {
+  const auto keep = [&](const std::string& solver, std::vector<double> omegas,
+                        std::vector<double> deltas, const char* how) {
     out.solver = solver;
     out.omegas_rad_s = std::move(omegas);
+    out.decay_rates_1_s = std::move(deltas);
     out.note = fmt::format("{} lowest {} natural frequencies of {} ({}), up to {:.6g} rad/s",
                            out.omegas_rad_s.size(), to_string(out.plane), out.solver, how,
                            out.omegas_rad_s.back());
@@ -158,10 +186,10 @@ ForcedConditioning find_forced_conditioning(const SceneResult& result,
   };
   const std::vector<const SolverOutput*> candidates = exact_candidates(result, tolerances);
   for (const SolverOutput* candidate : candidates) {
-    std::vector<double> omegas =
-        frequencies(out.plane == Plane::InPlane ? candidate->inplane : candidate->outofplane);
+    const auto& modal = out.plane == Plane::InPlane ? candidate->inplane : candidate->outofplane;
+    std::vector<double> omegas = frequencies(modal);
     if (!omegas.empty() && omegas.back() > top)
-      return keep(candidate->solver, std::move(omegas), "from its result");
+      return keep(candidate->solver, std::move(omegas), decay_rates(modal), "from its result");
   }
   // The exact solvers that give all modes at once first (SolverEntry::all_modes_at_once), then
   // the candidates.
@@ -173,8 +201,10 @@ ForcedConditioning find_forced_conditioning(const SceneResult& result,
       solvers.push_back(candidate->solver);
   const RunLimits budget = conditioning_limits(limits);
   for (const std::string& solver : solvers) {
-    std::vector<double> omegas = solve_modes(result, solver, out.plane, top, budget);
-    if (!omegas.empty()) return keep(solver, std::move(omegas), "solved for the condition number");
+    std::vector<double> deltas;
+    std::vector<double> omegas = solve_modes(result, solver, out.plane, top, budget, deltas);
+    if (!omegas.empty())
+      return keep(solver, std::move(omegas), std::move(deltas), "solved for the condition number");
   }
   out.note = "no exact solver gave the natural frequencies of the forced plane";
   return out;
