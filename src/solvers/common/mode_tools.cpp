@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <string>
+#include <limits>
 
 namespace catena::internal {
 namespace {
@@ -44,8 +45,11 @@ void set_mode_frequency(Mode& mode, double omega_rad_s, const DimensionlessGroup
 
 void set_damped_root(Mode& mode, std::complex<double> lambda, const DimensionlessGroups& groups) {
   set_mode_frequency(mode, lambda.imag(), groups);
-  mode.decay_rate_1_s = lambda.real() == 0.0 ? 0.0 : -lambda.real();
   const double modulus = std::abs(lambda);
+  // A decay rate at the rounding level of |lambda| is zero (an undamped plane of a damped line,
+  // e.g. out of plane with axial damping only): rounding must not make a passive mode grow.
+  const bool rounding = std::abs(lambda.real()) <= 64.0 * std::numeric_limits<double>::epsilon() * modulus;
+  mode.decay_rate_1_s = rounding ? 0.0 : -lambda.real();
   mode.damping_ratio = modulus > 0.0 ? mode.decay_rate_1_s / modulus : 0.0;
 }
 

@@ -16,7 +16,8 @@ void set_mode_frequency(Mode& mode, double omega_rad_s, const DimensionlessGroup
 
 /// Sets a damped root lambda = -delta + i omega_d (docs/explanation/physics.md, "Damping"):
 /// omega_rad_s = omega_d (and its units), decay_rate_1_s = delta, damping_ratio = delta / |lambda|.
-/// lambda = i omega gives exactly set_mode_frequency(mode, omega) with delta = zeta = 0.
+/// lambda = i omega gives exactly set_mode_frequency(mode, omega) with delta = zeta = 0; so does a
+/// |Re lambda| within 64 ulp of |lambda| (rounding, not damping).
 void set_damped_root(Mode& mode, std::complex<double> lambda, const DimensionlessGroups& groups);
 /// Normalises a complex (damped) shape held as real parts (u, w, v, tension_n) and imaginary parts
 /// (the `_imag` vectors, empty or of the same size): multiplies every component by one complex

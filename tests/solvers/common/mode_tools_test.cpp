@@ -153,6 +153,12 @@ TEST(SetDampedRoot, SplitsLambdaIntoOmegaDecayAndRatio) {
   EXPECT_EQ(undamped.k_l_over_pi, reference.k_l_over_pi);
   EXPECT_FALSE(std::signbit(undamped.decay_rate_1_s)) << "no -0 in the JSON";
   EXPECT_EQ(undamped.damping_ratio, 0.0);
+  Mode rounding;
+  set_damped_root(rounding, {1.5e-25, 2.5}, groups);
+  EXPECT_EQ(rounding.decay_rate_1_s, 0.0) << "rounding does not make a mode grow";
+  Mode growing;
+  set_damped_root(growing, {1e-6, 2.5}, groups);
+  EXPECT_EQ(growing.decay_rate_1_s, -1e-6) << "a real growth is kept, for validation to refuse";
 }
 
 // A complex shape is scaled by one complex factor: the peak of |w| becomes 1 (real), every
