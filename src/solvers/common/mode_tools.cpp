@@ -2,8 +2,8 @@
 #include "solvers/common/mode_tools.hpp"
 
 #include <cmath>
-#include <string>
 #include <limits>
+#include <string>
 
 namespace catena::internal {
 namespace {
@@ -48,7 +48,8 @@ void set_damped_root(Mode& mode, std::complex<double> lambda, const Dimensionles
   const double modulus = std::abs(lambda);
   // A decay rate at the rounding level of |lambda| is zero (an undamped plane of a damped line,
   // e.g. out of plane with axial damping only): rounding must not make a passive mode grow.
-  const bool rounding = std::abs(lambda.real()) <= 64.0 * std::numeric_limits<double>::epsilon() * modulus;
+  const bool rounding =
+      std::abs(lambda.real()) <= 64.0 * std::numeric_limits<double>::epsilon() * modulus;
   mode.decay_rate_1_s = rounding ? 0.0 : -lambda.real();
   mode.damping_ratio = modulus > 0.0 ? mode.decay_rate_1_s / modulus : 0.0;
 }
