@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// \file
+/// Complex symmetric (not Hermitian) banded LDL^T without pivoting, for the damped fe chain's
+/// dynamic matrix Q(lambda) = K + lambda C + lambda^2 M (docs/explanation/methods/fe.md,
+/// "Damping"). Q is complex symmetric (K, C, M real symmetric), so A = L D L^T with a unit lower
+/// banded L and complex pivots D: det Q = prod D_i, whose phase the argument-principle count reads
+/// (fe_argument_count.hpp), and the same factor solves the damped forced response and polishes the
+/// damped eigenpairs. Written by hand as the real BandedLdlt beside it (fe_banded_ldlt.hpp): Eigen
+/// has no banded complex symmetric factorisation, and its SparseLU (pivoting, a symbolic analysis
+/// per matrix) costs tens of times more on a half bandwidth of 3. Without pivoting the
+/// factorisation fails (returns false) on a zero or non-finite pivot; the callers check the
+/// smallest pivot against the largest.
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <complex>
+#include <vector>
+
+namespace catena::internal {
+
+class ComplexBandedLdlt {
+ public:
+  using Complex = std::complex<double>;
+  /// Factors K + lambda C + lambda^2 M (the lower triangles are read; the band is the widest of
+  /// the three).
+  bool factorize(const Eigen::SparseMatrix<double>& K,
+                 const Eigen::SparseMatrix<double>& C,
+                 const Eigen::SparseMatrix<double>& M,
+                 Complex lambda);
+  /// Solves A x = b in place.
+  void solve_in_place(Complex* x) const;
+  const Eigen::VectorXcd& pivots() const { return pivots_; }
+  /// min |D_i| / max |D_i|.
+  double pivot_ratio() const;
+  /// arg det A = sum arg D_i, reduced to (-pi, pi] (as a unit complex product, no overflow).
+  double determinant_phase() const;
+  Eigen::Index rows() const { return n_; }
+
+ private:
+  void scatter(const Eigen::SparseMatrix<double>& A, Complex scale);
+  Eigen::Index n_ = 0;
+  int bandwidth_ = 0;
+  // Row i holds L(i, i - b .. i - 1) at [i * b + (j - i + b)], j = column (as BandedLdlt).
+  std::vector<Complex> lower_;
+  Eigen::VectorXcd pivots_;
+};
+
+}  // namespace catena::internal
