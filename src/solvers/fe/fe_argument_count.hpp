@@ -7,20 +7,24 @@
 /// the boundary counter-clockwise. Sylvester's inertia, which counts the undamped modes, has no
 /// counterpart for this non-Hermitian problem.
 ///
-/// The step is also kept below half the distance to the nearest root already known (`known`, the
+/// The step is also kept below the distance to the nearest root already known (`known`, the
 /// roots the eigensolver found, with their conjugates): along a straight step each root turns the
 /// phase by the angle the step subtends at it (less than pi), so a step may not sweep past a
 /// cluster of roots whose turns add up to a whole turn and alias. A root that is not known turns
 /// the phase by up to pi as the walk passes it, which the pi/4 rule then resolves.
 ///
 /// The phase at a point is the sum of the phases of the pivots of the complex symmetric banded
-/// LDL^T of Q(lambda) (fe_complex_banded_ldlt.hpp): det Q = prod D_i. Along each edge the step
-/// adapts so that the phase changes by less than pi/4 between consecutive points (halved while
-/// it does not, doubled after a change below pi/16), and the changes, each reduced to (-pi, pi],
-/// add up to the winding. The step rule is what the count rests on: a pair of roots closer to the
-/// edge than the step, whose phase contributions cancel within one step, could be missed, as in
-/// any sampled argument-principle count; the pi/4 bound keeps each step well inside the region
-/// where the phase is monotone near a root at the step's distance.
+/// LDL^T of Q(lambda) (fe_complex_banded_ldlt.hpp): det Q = prod D_i, and its derivative
+/// d log det Q / dlambda = tr(Q^{-1} Q') from the same factors. Along each edge the step adapts so
+/// that the phase changes by less than pi/4 between consecutive points (halved while it does not,
+/// doubled after a change below pi/16). A change measured modulo 2 pi is unwrapped to the branch
+/// nearest the trapezoid rule on the derivative, and the step is accepted only when the two
+/// agree within pi/8: many roots at a moderate distance (a chain with Kelvin-Voigt damping has
+/// hundreds of overdamped axial roots near -EA/c_a) turn the phase fast but smoothly, and a
+/// sampled phase alone would alias whole turns. What the count rests on is this step rule: a pair
+/// of roots closer to the edge than the step, whose contributions cancel within one step in both
+/// the phase and its derivative, could still be missed, as in any sampled argument-principle
+/// count.
 
 #include <complex>
 #include <string>

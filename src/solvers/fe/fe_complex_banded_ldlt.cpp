@@ -44,7 +44,12 @@ bool ComplexBandedLdlt::factorize(const Eigen::SparseMatrix<double>& K,
   scatter(K, 1.0);
   scatter(C, lambda);
   scatter(M, lambda * lambda);
-  // Row-oriented LDL^T, as BandedLdlt::factor_rows (transpose, not conjugate: A is symmetric).
+  return factor_in_place();
+}
+
+// Row-oriented LDL^T, as BandedLdlt::factor_rows (transpose, not conjugate: A is symmetric).
+bool ComplexBandedLdlt::factor_in_place() {
+  const Eigen::Index b = bandwidth_;
   for (Eigen::Index i = 0; i < n_; ++i) {
     const Eigen::Index first = std::max<Eigen::Index>(0, i - b);
     Complex* row_i = lower_.data() + i * b + b - i;
@@ -61,6 +66,85 @@ bool ComplexBandedLdlt::factorize(const Eigen::SparseMatrix<double>& K,
     pivots_[i] = d;
   }
   return true;
+}
+
+namespace {
+
+// The lower band of A with half bandwidth b: row i's entries L(i, i - b .. i - 1) then A(i, i).
+std::vector<double> band_of(const Eigen::SparseMatrix<double>& A, int b) {
+  std::vector<double> band(static_cast<std::size_t>(A.rows() * (b + 1)), 0.0);
+  for (Eigen::Index c = 0; c < A.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, c); it; ++it)
+      if (it.row() >= c)
+        band[static_cast<std::size_t>(it.row() * (b + 1) + (c - it.row() + b))] += it.value();
+  return band;
+}
+
+}  // namespace
+
+void ComplexBandedLdlt::set_pencil(const Eigen::SparseMatrix<double>& K,
+                                   const Eigen::SparseMatrix<double>& C,
+                                   const Eigen::SparseMatrix<double>& M) {
+  n_ = K.rows();
+  pencil_bandwidth_ = std::max({half_bandwidth(K), half_bandwidth(C), half_bandwidth(M), 1});
+  band_K_ = band_of(K, pencil_bandwidth_);
+  band_C_ = band_of(C, pencil_bandwidth_);
+  band_M_ = band_of(M, pencil_bandwidth_);
+}
+
+bool ComplexBandedLdlt::factorize(Complex lambda) {
+  bandwidth_ = pencil_bandwidth_;
+  const Eigen::Index b = bandwidth_;
+  lower_.resize(static_cast<std::size_t>(n_ * b));
+  pivots_.resize(n_);
+  const Complex lambda2 = lambda * lambda;
+  for (Eigen::Index i = 0; i < n_; ++i) {
+    const auto row = static_cast<std::size_t>(i * (b + 1));
+    for (Eigen::Index t = 0; t < b; ++t)
+      lower_[static_cast<std::size_t>(i * b + t)] =
+          band_K_[row + t] + lambda * band_C_[row + t] + lambda2 * band_M_[row + t];
+    pivots_[i] = band_K_[row + b] + lambda * band_C_[row + b] + lambda2 * band_M_[row + b];
+  }
+  return factor_in_place();
+}
+
+ComplexBandedLdlt::Complex ComplexBandedLdlt::log_derivative(Complex lambda) const {
+  const Eigen::Index b = bandwidth_, n = n_;
+  // Z = Q^{-1} = D^{-1} L^{-1} + (I - L^T) Z, from the last row up, inside the band only:
+  // Z(i, j) = -sum_{k = i+1}^{i+b} L(k, i) Z(k, j) for i < j <= i + b, and
+  // Z(i, i) = 1 / D(i) - sum_k L(k, i) Z(k, i). z[i * (b + 1) + d] holds Z(i, i + d).
+  std::vector<Complex> z(static_cast<std::size_t>(n * (b + 1)), Complex(0.0));
+  auto L = [&](Eigen::Index k, Eigen::Index i) {  // L(k, i), k > i within the band
+    return lower_[static_cast<std::size_t>(k * b + (i - k + b))];
+  };
+  auto Z = [&](Eigen::Index r, Eigen::Index c) -> Complex {  // symmetric, |r - c| <= b
+    return r <= c ? z[static_cast<std::size_t>(r * (b + 1) + (c - r))]
+                  : z[static_cast<std::size_t>(c * (b + 1) + (r - c))];
+  };
+  for (Eigen::Index i = n - 1; i >= 0; --i) {
+    const Eigen::Index last = std::min(n - 1, i + b);
+    for (Eigen::Index j = last; j > i; --j) {
+      Complex sum(0.0);
+      for (Eigen::Index k = i + 1; k <= last; ++k) sum -= L(k, i) * Z(k, j);
+      z[static_cast<std::size_t>(i * (b + 1) + (j - i))] = sum;
+    }
+    Complex diagonal = 1.0 / pivots_[i];
+    for (Eigen::Index k = i + 1; k <= last; ++k) diagonal -= L(k, i) * Z(k, i);
+    z[static_cast<std::size_t>(i * (b + 1))] = diagonal;
+  }
+  // tr(Z Q') with Q' = C + 2 lambda M from the pencil's bands (row r: L-part, then diagonal).
+  const Eigen::Index pb = pencil_bandwidth_;
+  Complex trace(0.0);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    const auto row = static_cast<std::size_t>(r * (pb + 1));
+    for (Eigen::Index t = 0; t <= pb; ++t) {
+      const Eigen::Index c = r - pb + t;
+      if (c < 0) continue;
+      const Complex derivative = band_C_[row + t] + 2.0 * lambda * band_M_[row + t];
+      trace += (c == r ? 1.0 : 2.0) * Z(r, c) * derivative;
+    }
+  }
+  return trace;
 }
 
 void ComplexBandedLdlt::solve_in_place(Complex* x) const {

@@ -28,6 +28,18 @@ class ComplexBandedLdlt {
                  const Eigen::SparseMatrix<double>& C,
                  const Eigen::SparseMatrix<double>& M,
                  Complex lambda);
+  /// Keeps the bands of K, C and M (lower triangles) for factorize(lambda): a run of
+  /// factorisations of one pencil (the count's boundary walk, the polishing steps) then forms
+  /// each Q(lambda) from three band arrays, not from the sparse matrices.
+  void set_pencil(const Eigen::SparseMatrix<double>& K,
+                  const Eigen::SparseMatrix<double>& C,
+                  const Eigen::SparseMatrix<double>& M);
+  /// Factors K + lambda C + lambda^2 M of the pencil set last.
+  bool factorize(Complex lambda);
+  /// After factorize(lambda): d/dlambda log det Q = tr(Q^{-1} (C + 2 lambda M)) (Jacobi's formula),
+  /// with the entries of Q^{-1} inside the band from the factors by Takahashi's recurrence
+  /// (O(n b^2), the cost of the factorisation).
+  Complex log_derivative(Complex lambda) const;
   /// Solves A x = b in place.
   void solve_in_place(Complex* x) const;
   const Eigen::VectorXcd& pivots() const { return pivots_; }
@@ -39,6 +51,10 @@ class ComplexBandedLdlt {
 
  private:
   void scatter(const Eigen::SparseMatrix<double>& A, Complex scale);
+  bool factor_in_place();
+  // The pencil's bands: per matrix, n * (b + 1) values, row i's L-part then its diagonal.
+  std::vector<double> band_K_, band_C_, band_M_;
+  int pencil_bandwidth_ = 0;
   Eigen::Index n_ = 0;
   int bandwidth_ = 0;
   // Row i holds L(i, i - b .. i - 1) at [i * b + (j - i + b)], j = column (as BandedLdlt).

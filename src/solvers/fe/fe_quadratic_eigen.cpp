@@ -169,21 +169,34 @@ ArnoldiRun arnoldi_roots(const LinearisedOperator& op,
   return run;
 }
 
+// The pencil's products for complex vectors, on the real and imaginary parts (no complex copy of
+// the sparse matrices).
+Eigen::VectorXcd times(const SparseMatrix& A, const Eigen::VectorXcd& x) {
+  Eigen::VectorXcd y(x.size());
+  y.real() = A * Vector(x.real());
+  y.imag() = A * Vector(x.imag());
+  return y;
+}
+
 // ||Q(lambda) phi|| / ((||K|| + |lambda| ||C|| + |lambda|^2 ||M||) ||phi||).
 double backward_error(const FeMatrices& matrices,
                       const SparseMatrix& C,
                       Complex lambda,
                       const Eigen::VectorXcd& phi,
                       const std::array<double, 3>& norms) {
-  const Eigen::VectorXcd r = matrices.stiffness.cast<Complex>() * phi +
-                             lambda * (C.cast<Complex>() * phi) +
-                             (lambda * lambda) * (matrices.mass.cast<Complex>() * phi);
+  const Eigen::VectorXcd r = times(matrices.stiffness, phi) + lambda * times(C, phi) +
+                             (lambda * lambda) * times(matrices.mass, phi);
   const double a = std::abs(lambda);
   return r.norm() / ((norms[0] + a * norms[1] + a * a * norms[2]) * phi.norm());
 }
 
+// How far a polishing step may move a root from the Arnoldi value, relative: Spectra's tolerance
+// leaves the roots far closer; a step that moves one farther has jumped to a neighbouring root
+// (whose own Ritz value is polished separately) and is rejected.
+constexpr double kMaxPolishMove = 1e-6;
+
 // Inverse iteration phi <- Q(lambda)^{-1} Q'(lambda) phi with the Rayleigh functional's root,
-// while the backward error is above rounding (at most three steps).
+// while the backward error is above rounding (at most three steps). `factor` holds the pencil.
 void polish_root(const FeChain& chain,
                  Plane plane,
                  const FeMatrices& matrices,
@@ -192,18 +205,24 @@ void polish_root(const FeChain& chain,
                  ComplexBandedLdlt& factor,
                  RawRoot& root,
                  double& error) {
-  root.lambda = damped_rayleigh_root(chain, plane, root.phi, matrices.mass, C, root.lambda);
+  const Complex arnoldi = root.lambda;
+  auto close = [&](Complex lambda) {
+    return std::abs(lambda - arnoldi) <= kMaxPolishMove * std::abs(arnoldi);
+  };
+  const Complex functional =
+      damped_rayleigh_root(chain, plane, root.phi, matrices.mass, C, root.lambda);
+  if (close(functional)) root.lambda = functional;
   error = backward_error(matrices, C, root.lambda, root.phi, norms);
   for (int step = 0; step < 3 && error > 1e-15; ++step) {
-    if (!factor.factorize(matrices.stiffness, C, matrices.mass, root.lambda)) return;
-    Eigen::VectorXcd next = (C.cast<Complex>() * root.phi) +
-                            (2.0 * root.lambda) * (matrices.mass.cast<Complex>() * root.phi);
+    if (!factor.factorize(root.lambda)) return;
+    Eigen::VectorXcd next =
+        times(C, root.phi) + (2.0 * root.lambda) * times(matrices.mass, root.phi);
     factor.solve_in_place(next.data());
     if (!next.allFinite() || next.norm() == 0.0) return;
     next /= next.norm();
     const Complex lambda = damped_rayleigh_root(chain, plane, next, matrices.mass, C, root.lambda);
     const double next_error = backward_error(matrices, C, lambda, next, norms);
-    if (!(next_error < error)) return;
+    if (!(next_error < error) || !close(lambda)) return;
     root.phi = std::move(next);
     root.lambda = lambda;
     error = next_error;
@@ -295,9 +314,10 @@ void sort_roots(std::vector<RawRoot>& roots, int modes, FeDampedEigenSolution& o
   }
 }
 
-// The counted region for the roots found: Im lambda from 1e-3 of the lowest underdamped root to
-// midway between the last one kept and the next (5 % above the last when there is no next); Re
-// lambda from a tenth of the top right of the imaginary axis (no root has Re lambda > 0: C is
+// The counted region for the roots found: Im lambda from half the lowest underdamped root (the
+// overdamped roots on the real axis stay as far from the boundary) to midway between the last one
+// kept and the next (5 % above the last when there is no next); Re lambda from a quarter of the
+// top right of the imaginary axis (no root has Re lambda > 0: C is
 // positive semi-definite) leftwards to beyond the decay bound (every non-real root lies right of
 // it), but no farther than keeps the rectangle inside 0.9 of the disk |lambda - sigma| < radius
 // that Spectra searched: there every root is known, and the steps of the count keep clear of them
@@ -310,13 +330,19 @@ FeCountRegion count_region(
   std::sort(imag.begin(), imag.end());
   const auto kept = std::min<std::size_t>(imag.size(), static_cast<std::size_t>(modes));
   FeCountRegion region;
-  region.im_min = 1e-3 * imag.front();
+  region.im_min = 0.5 * imag.front();
   region.im_max = kept < imag.size() ? 0.5 * (imag[kept - 1] + imag[kept]) : 1.05 * imag.back();
-  region.re_max = 0.1 * region.im_max;
-  region.re_min = -(1.01 * decay_bound + 0.1 * region.im_max);
+  region.re_max = 0.25 * region.im_max;
+  region.re_min = -(1.01 * decay_bound + 0.25 * region.im_max);
   const double reach = 0.9 * radius, top = region.im_max;
   if (std::hypot(region.re_max - sigma, top) >= reach) return FeCountRegion{};
-  region.re_min = std::max(region.re_min, sigma - std::sqrt(reach * reach - top * top));
+  const double disk_edge = sigma - std::sqrt(reach * reach - top * top);
+  // Clipped by the disk only when the decay bound reaches beyond it; then the region must still
+  // reach half the top to the left (else the caller searches a larger disk).
+  if (disk_edge > region.re_min) {
+    region.re_min = disk_edge;
+    if (region.re_min > -0.5 * top) return FeCountRegion{};
+  }
   return region;
 }
 
@@ -383,6 +409,7 @@ FeDampedEigenSolution solve_damped_modes(const FeChain& chain,
       return out;
     }
     out.max_backward_error = 0.0;
+    complex_factor.set_pencil(matrices.stiffness, damping, matrices.mass);
     for (RawRoot& root : run.roots) {
       double error = 0.0;
       polish_root(chain, plane, matrices, damping, norms, complex_factor, root, error);
@@ -407,9 +434,8 @@ FeDampedEigenSolution solve_damped_modes(const FeChain& chain,
       return out;
     }
     const FeCountRegion region = count_region(run.roots, modes, out.decay_bound, sigma, run.radius);
-    // The disk searched must hold the region, and reach left of the top by half of it at least.
-    const bool roomy = region.im_max > 0.0 && region.re_min <= -0.5 * region.im_max;
-    if (!roomy && can_grow) {
+    // The disk searched must hold the region (count_region).
+    if (!(region.im_max > 0.0) && can_grow) {
       wanted = std::min(limit, 2 * wanted);
       continue;
     }
