@@ -288,13 +288,14 @@ void respond(ForcedResponse& response,
   }
 }
 
-// The resonance-amplified band of a damped mode: within its half-power band |omega - omega_d| <=
-// delta, or within 1e-3 of omega_d (the undamped response's rule) for a lighter one.
+// The resonance-amplified band of a damped mode: within three half-power half-widths,
+// |omega - omega_d| <= 3 delta (the amplitude above 1/sqrt(10) of the peak), or within 1e-3 of
+// omega_d (the undamped response's rule) for a lighter one.
 constexpr double kNearResonance = 1e-3;
 bool near_damped_natural(double omega, const std::vector<FeNaturalFrequency>& naturals) {
   return std::any_of(naturals.begin(), naturals.end(), [&](const FeNaturalFrequency& mode) {
     return std::abs(omega - mode.omega_rad_s) <=
-           std::max(kNearResonance * mode.omega_rad_s, mode.decay_rate_1_s);
+           std::max(kNearResonance * mode.omega_rad_s, 3.0 * mode.decay_rate_1_s);
   });
 }
 
