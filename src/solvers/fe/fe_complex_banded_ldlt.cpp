@@ -50,6 +50,7 @@ bool ComplexBandedLdlt::factorize(const Eigen::SparseMatrix<double>& K,
 // Row-oriented LDL^T, as BandedLdlt::factor_rows (transpose, not conjugate: A is symmetric).
 bool ComplexBandedLdlt::factor_in_place() {
   const Eigen::Index b = bandwidth_;
+  inverse_pivots_.resize(n_);
   for (Eigen::Index i = 0; i < n_; ++i) {
     const Eigen::Index first = std::max<Eigen::Index>(0, i - b);
     Complex* row_i = lower_.data() + i * b + b - i;
@@ -58,12 +59,15 @@ bool ComplexBandedLdlt::factor_in_place() {
       Complex sum = row_i[j];
       for (Eigen::Index k = std::max(first, j - b); k < j; ++k)
         sum -= row_i[k] * pivots_[k] * row_j[k];
-      row_i[j] = sum / pivots_[j];
+      row_i[j] = sum * inverse_pivots_[j];
     }
     Complex d = pivots_[i];
     for (Eigen::Index k = first; k < i; ++k) d -= row_i[k] * row_i[k] * pivots_[k];
-    if (!(std::abs(d) > 0.0) || !std::isfinite(std::abs(d))) return false;
+    // |d|^2 rather than |d|: hypot's care for overflow costs more than the factorisation here.
+    const double modulus2 = std::norm(d);
+    if (!(modulus2 > 0.0) || !std::isfinite(modulus2)) return false;
     pivots_[i] = d;
+    inverse_pivots_[i] = std::conj(d) / modulus2;
   }
   return true;
 }
@@ -113,7 +117,8 @@ ComplexBandedLdlt::Complex ComplexBandedLdlt::log_derivative(Complex lambda) con
   // Z = Q^{-1} = D^{-1} L^{-1} + (I - L^T) Z, from the last row up, inside the band only:
   // Z(i, j) = -sum_{k = i+1}^{i+b} L(k, i) Z(k, j) for i < j <= i + b, and
   // Z(i, i) = 1 / D(i) - sum_k L(k, i) Z(k, i). z[i * (b + 1) + d] holds Z(i, i + d).
-  std::vector<Complex> z(static_cast<std::size_t>(n * (b + 1)), Complex(0.0));
+  std::vector<Complex>& z = inverse_band_;
+  z.resize(static_cast<std::size_t>(n * (b + 1)));
   auto L = [&](Eigen::Index k, Eigen::Index i) {  // L(k, i), k > i within the band
     return lower_[static_cast<std::size_t>(k * b + (i - k + b))];
   };
@@ -128,7 +133,7 @@ ComplexBandedLdlt::Complex ComplexBandedLdlt::log_derivative(Complex lambda) con
       for (Eigen::Index k = i + 1; k <= last; ++k) sum -= L(k, i) * Z(k, j);
       z[static_cast<std::size_t>(i * (b + 1) + (j - i))] = sum;
     }
-    Complex diagonal = 1.0 / pivots_[i];
+    Complex diagonal = inverse_pivots_[i];
     for (Eigen::Index k = i + 1; k <= last; ++k) diagonal -= L(k, i) * Z(k, i);
     z[static_cast<std::size_t>(i * (b + 1))] = diagonal;
   }
@@ -155,7 +160,7 @@ void ComplexBandedLdlt::solve_in_place(Complex* x) const {
     for (Eigen::Index k = std::max<Eigen::Index>(0, i - b); k < i; ++k) sum -= row_i[k] * x[k];
     x[i] = sum;
   }
-  for (Eigen::Index i = 0; i < n_; ++i) x[i] /= pivots_[i];
+  for (Eigen::Index i = 0; i < n_; ++i) x[i] *= inverse_pivots_[i];
   for (Eigen::Index i = n_ - 1; i >= 0; --i) {
     const Complex* row_i = lower_.data() + i * b + b - i;
     const Complex xi = x[i];
@@ -164,19 +169,23 @@ void ComplexBandedLdlt::solve_in_place(Complex* x) const {
 }
 
 double ComplexBandedLdlt::pivot_ratio() const {
-  const double largest = pivots_.cwiseAbs().maxCoeff();
-  return largest > 0.0 ? pivots_.cwiseAbs().minCoeff() / largest : 0.0;
+  const double largest = pivots_.cwiseAbs2().maxCoeff();
+  return largest > 0.0 ? std::sqrt(pivots_.cwiseAbs2().minCoeff() / largest) : 0.0;
 }
 
 double ComplexBandedLdlt::determinant_phase() const {
-  // The product of the unit phases, renormalised as it goes: the determinant itself over- or
-  // underflows for a few hundred unknowns.
-  Complex phase(1.0, 0.0);
+  // The product of the pivots, rescaled by a power of two (exact, no change of phase) whenever
+  // it leaves [2^-256, 2^256]: the determinant itself over- or underflows for a few hundred
+  // unknowns.
+  Complex product(1.0, 0.0);
   for (Eigen::Index i = 0; i < n_; ++i) {
-    phase *= pivots_[i] / std::abs(pivots_[i]);
-    phase /= std::abs(phase);
+    product *= pivots_[i];
+    const double size = std::max(std::abs(product.real()), std::abs(product.imag()));
+    int exponent = 0;
+    std::frexp(size, &exponent);
+    if (exponent > 256 || exponent < -256) product = std::ldexp(1.0, -exponent) * product;
   }
-  return std::arg(phase);
+  return std::arg(product);
 }
 
 }  // namespace catena::internal

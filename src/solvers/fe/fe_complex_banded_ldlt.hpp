@@ -60,6 +60,9 @@ class ComplexBandedLdlt {
   // Row i holds L(i, i - b .. i - 1) at [i * b + (j - i + b)], j = column (as BandedLdlt).
   std::vector<Complex> lower_;
   Eigen::VectorXcd pivots_;
+  Eigen::VectorXcd inverse_pivots_;
+  // Takahashi's band of the inverse (log_derivative), kept between calls.
+  mutable std::vector<Complex> inverse_band_;
 };
 
 }  // namespace catena::internal
