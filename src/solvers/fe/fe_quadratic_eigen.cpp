@@ -1,6 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The damped eigenpairs of one fe level: see fe_quadratic_eigen.hpp and
 // docs/explanation/methods/fe.md, "Damping".
+// GCC 12 at -O3 reports a use-after-free inside Spectra's UpperHessenbergEigen (an Eigen vector
+// freed on resize, then reassigned): a false positive of its inliner in library code. Set before
+// any include: the warning is placed at Eigen's Memory.h.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
+#pragma GCC diagnostic ignored "-Wuse-after-free"
+#endif
 #include "solvers/fe/fe_quadratic_eigen.hpp"
 
 #include <Spectra/GenEigsSolver.h>
