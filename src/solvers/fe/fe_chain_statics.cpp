@@ -58,6 +58,7 @@ void lay_out_contact(FeChain& chain, const FeLineMesh& mesh, double continuous_h
   if (!mesh.seabed) return;
   chain.foundation_vertical_n_per_m2 = mesh.seabed->stiffness_n_per_m2;
   chain.foundation_tangential_n_per_m2 = mesh.seabed->tangential_stiffness_n_per_m2;
+  chain.foundation_damping_n_s_per_m2 = mesh.seabed->damping_n_s_per_m2;
   std::vector<double> offsets;
   for (const FeMeshPiece& piece : mesh.pieces) {
     if (!piece.grounded) break;
@@ -84,6 +85,9 @@ void lay_out_chain(FeChain& chain,
   chain.axial_stiffness_n.resize(N);
   chain.mass_kg_per_m.resize(N);
   chain.normal_mass_kg_per_m.resize(N);
+  chain.tangential_damping_n_s_per_m2.resize(N);
+  chain.normal_damping_n_s_per_m2.resize(N);
+  chain.axial_damping_n_s.resize(N);
   chain.node_s_m.resize(N + 1);
   chain.node_inertia.assign(static_cast<std::size_t>(N) + 1, FeNodeInertia{});
   int j = 0;
@@ -106,6 +110,9 @@ void lay_out_chain(FeChain& chain,
           section.is_inextensible() ? penalty_axial_stiffness_n : section.axial_stiffness_n;
       chain.mass_kg_per_m[j] = section.mass_kg_per_m;
       chain.normal_mass_kg_per_m[j] = section.normal_mass_kg_per_m();
+      chain.tangential_damping_n_s_per_m2[j] = section.damping.tangential_n_s_per_m2;
+      chain.normal_damping_n_s_per_m2[j] = section.damping.normal_n_s_per_m2;
+      chain.axial_damping_n_s[j] = section.damping.axial_n_s;
       chain.node_s_m[j] = s + k * l0;
     }
     s += section.length_m;

@@ -39,6 +39,12 @@ struct FeChain {
   Vector axial_stiffness_n;
   Vector mass_kg_per_m;
   Vector normal_mass_kg_per_m;
+  /// Per element: the section's damping (docs/explanation/physics.md, "Damping"): tangential and
+  /// normal drag c_t, c_n [N s/m per m] and Kelvin-Voigt axial damping c_a [N s]; all zero on an
+  /// undamped line (only the damped path reads them: fe_damping_operator.hpp).
+  Vector tangential_damping_n_s_per_m2;
+  Vector normal_damping_n_s_per_m2;
+  Vector axial_damping_n_s;
   Vector vertical_offset_n;
   /// Seabed contact (docs/explanation/methods/fe.md, "Seabed contact"): the first
   /// `grounded_elements` elements lie on the seabed, horizontal, with tension max(H +
@@ -51,6 +57,8 @@ struct FeChain {
   Vector grounded_tension_offset_n;
   double foundation_vertical_n_per_m2 = 0.0;
   double foundation_tangential_n_per_m2 = 0.0;
+  /// The seabed dashpot c_s under the grounded elements, vertical only [N s/m per m].
+  double foundation_damping_n_s_per_m2 = 0.0;
   /// The first element of each mesh piece (fe_line_mesh.hpp), ascending from 0: within a piece the
   /// elements are equal and the response smooth; joints, points and the touchdown point are
   /// piece boundaries.

@@ -17,12 +17,6 @@
 #include "solvers/fe/fe_summary.hpp"
 
 namespace catena::internal {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // The imposed end displacements (d at the forced end, 0 at the other). Out of plane the amplitude
 // is carried in x.
@@ -49,18 +43,6 @@ std::pair<Vec2, Vec2> end_displacements(const ForcedRequest& request,
           request.end == CableEnd::B ? d : Vec2::Zero()};
 }
 
-// What one forcing frequency needs besides omega.
-struct Forcing {
-  Plane plane;
-  Vec2 end_a, end_b;
-  const Vector& stations;
-  const StaticSolution& statics;
-
-  FeLevelResponse on(const FeLevel& level, double omega) const {
-    return respond_on_level(plane, level.chain, level.matrices.at(plane), omega, end_a, end_b);
-  }
-};
-
 // The chain's pieces of equal elements, where the response is smooth (fe_forced_richardson.hpp).
 std::vector<FeFieldPiece> field_pieces(const FeChain& chain) {
   std::vector<FeFieldPiece> pieces;
@@ -72,6 +54,25 @@ std::vector<FeFieldPiece> field_pieces(const FeChain& chain) {
   }
   return pieces;
 }
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// What one forcing frequency needs besides omega.
+struct Forcing {
+  Plane plane;
+  Vec2 end_a, end_b;
+  const Vector& stations;
+  const StaticSolution& statics;
+
+  FeLevelResponse on(const FeLevel& level, double omega) const {
+    return respond_on_level(plane, level.chain, level.matrices.at(plane), omega, end_a, end_b);
+  }
+};
 
 double max_abs(const Vector& x) { return x.size() ? x.cwiseAbs().maxCoeff() : 0.0; }
 

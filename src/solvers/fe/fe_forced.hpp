@@ -9,6 +9,7 @@
 /// errors near a resonance. A forcing frequency at a natural frequency (within the frequency's own
 /// error estimate) or at a singular K - omega^2 M gets a diagnostic instead of a response.
 
+#include <utility>
 #include <vector>
 
 #include "catena/solvers/modal_result.hpp"
@@ -29,7 +30,19 @@ struct FeNaturalFrequency {
   /// of a solve with K - w^2 M, which a stiff chain's normwise floor would bound, is not part of
   /// it: each in-plane solve is refined against the unrounded chain (fe_structured_residual.hpp).
   double relative_error_estimate = -1.0;
+  /// Damped lines: the mode's decay rate delta [1/s] and its relative error estimate (-1: none).
+  double decay_rate_1_s = 0.0;
+  double decay_rate_error_estimate = -1.0;
 };
+
+/// The imposed end displacements (end A, end B): the amplitude along the forcing direction at the
+/// forced end, zero at the other; out of plane carried in x.
+std::pair<Vec2, Vec2> end_displacements(const ForcedRequest& request,
+                                        const StaticSolution& statics,
+                                        double length_m);
+
+/// The chain's pieces of equal elements, where the response is smooth (fe_forced_richardson.hpp).
+std::vector<FeFieldPiece> field_pieces(const FeChain& chain);
 
 /// The plane a forcing moves: out of plane only for a displacement normal to the supports' plane.
 Plane forced_plane(const ForcedRequest& request);

@@ -17,6 +17,7 @@
 #include "solvers/fe/fe_eigen.hpp"
 #include "solvers/fe/fe_line_mesh.hpp"
 #include "solvers/fe/fe_operators.hpp"
+#include "solvers/fe/fe_quadratic_eigen.hpp"
 
 namespace catena {
 struct FeSolverOptions;
@@ -123,6 +124,9 @@ struct FeLevel {
   FeChain chain;
   std::map<Plane, FeMatrices> matrices;
   std::map<Plane, FeEigenSolution> eigen;
+  /// Damped lines only (fe_damped_modes.hpp): the damping matrix and the damped eigenpairs.
+  std::map<Plane, FeDampingMatrix> damping;
+  std::map<Plane, FeDampedEigenSolution> damped;
 };
 
 /// levels[mesh][penalty], in the plan's order.

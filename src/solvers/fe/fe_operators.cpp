@@ -201,6 +201,82 @@ FeMatrices assemble(Plane plane, const FeChain& chain) {
   return plane == Plane::InPlane ? assemble_inplane(chain) : assemble_outofplane(chain);
 }
 
+namespace {
+
+// In-plane drag of half of element j on one of its nodes, in the element's own frame [N s/m].
+Eigen::Matrix2d half_element_drag(const FeChain& chain, int j) {
+  const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
+  const Eigen::Matrix2d ttT = t * t.transpose();
+  return 0.5 * chain.element_length_m[j] *
+         (chain.tangential_damping_n_s_per_m2[j] * ttT +
+          chain.normal_damping_n_s_per_m2[j] * (Eigen::Matrix2d::Identity() - ttT));
+}
+
+bool same_damping(const FeChain& chain, int i) {
+  return chain.element_length_m[i - 1] == chain.element_length_m[i] &&
+         chain.tangential_damping_n_s_per_m2[i - 1] == chain.tangential_damping_n_s_per_m2[i] &&
+         chain.normal_damping_n_s_per_m2[i - 1] == chain.normal_damping_n_s_per_m2[i];
+}
+
+// The in-plane node drag (the mass's lumping, assemble_inplane) plus the seabed dashpot on z.
+std::vector<Eigen::Matrix2d> inplane_node_damping(const FeChain& chain) {
+  const int N = chain.elements;
+  std::vector<Eigen::Matrix2d> node(static_cast<std::size_t>(N) + 1, Eigen::Matrix2d::Zero());
+  for (int i = 1; i < N; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (same_damping(chain, i)) {
+      const Vec2 t = (chain.direction[k - 1] + chain.direction[k]).normalized();
+      const Vec2 nrm(-t.y(), t.x());
+      node[k] =
+          chain.element_length_m[i] * (chain.tangential_damping_n_s_per_m2[i] * t * t.transpose() +
+                                       chain.normal_damping_n_s_per_m2[i] * nrm * nrm.transpose());
+    } else {
+      node[k] = half_element_drag(chain, i - 1) + half_element_drag(chain, i);
+    }
+    if (chain.has_contact())
+      node[k](1, 1) += chain.foundation_damping_n_s_per_m2 * chain.grounded_share_m(i);
+  }
+  return node;
+}
+
+}  // namespace
+
+FeDampingMatrix assemble_damping(Plane plane, const FeChain& chain) {
+  const int N = chain.elements;
+  FeDampingMatrix out;
+  std::vector<Eigen::Triplet<double>> b_entries;
+  if (plane == Plane::InPlane) {
+    std::vector<Eigen::Matrix2d> element(static_cast<std::size_t>(N));
+    for (int j = 0; j < N; ++j) {
+      const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
+      element[static_cast<std::size_t>(j)] =
+          (chain.axial_damping_n_s[j] / chain.element_length_m[j]) * (t * t.transpose());
+    }
+    const std::vector<Eigen::Matrix2d> node = inplane_node_damping(chain);
+    fill_block_tridiagonal<2>(out.damping, element, node, N, false, &node);
+    const Eigen::Index n = out.damping.rows();
+    for (int r = 0; r < 2; ++r) {
+      for (int c = 0; c < 2; ++c) {
+        b_entries.emplace_back(r, c, -element.front()(r, c));
+        b_entries.emplace_back(n - 2 + r, 2 + c, -element.back()(r, c));
+      }
+    }
+    out.boundary_coupling.resize(n, 4);
+  } else {
+    using Block = Eigen::Matrix<double, 1, 1>;
+    std::vector<Block> element(static_cast<std::size_t>(N), Block::Zero()),
+        node(static_cast<std::size_t>(N) + 1, Block::Zero());
+    for (int i = 1; i < N; ++i)
+      node[static_cast<std::size_t>(i)](0, 0) =
+          same_damping(chain, i) ? chain.element_length_m[i] * chain.normal_damping_n_s_per_m2[i]
+                                 : half_sum(chain, chain.normal_damping_n_s_per_m2, i);
+    fill_block_tridiagonal<1>(out.damping, element, node, N, false, &node);
+    out.boundary_coupling.resize(out.damping.rows(), 2);
+  }
+  out.boundary_coupling.setFromTriplets(b_entries.begin(), b_entries.end());
+  return out;
+}
+
 int fe_unknowns(Plane plane, int elements) {
   return (plane == Plane::InPlane ? 2 : 1) * (elements - 1);
 }

@@ -58,6 +58,19 @@ FeMatrices assemble(Plane plane, const FeChain& chain);
 /// k_t on x (along the seabed) and k_s on z; the end nodes carry none. Empty without contact.
 std::vector<Eigen::Matrix2d> inplane_foundation(const FeChain& chain);
 
+/// The damping matrix C of one plane on the free nodes (docs/explanation/methods/fe.md, "Damping"),
+/// assembled like the operators beside it: the drag lumped per node like the mass, l0 (c_t t t^T
+/// + c_n n n^T) about the node tangent in plane (each half element in its own frame at a joint) and
+/// c_n l0 out of plane; the Kelvin-Voigt axial damping per element like the axial stiffness,
+/// (c_a / l0) t t^T (in plane only); the seabed dashpot c_s on the grounded nodes' z, lumped like
+/// k_s. Point attachments carry no damping. Same block-tridiagonal pattern as the stiffness.
+struct FeDampingMatrix {
+  SparseMatrix damping;
+  /// Coupling C_ib of the free unknowns to the end nodes (as FeMatrices::boundary_coupling).
+  SparseMatrix boundary_coupling;
+};
+FeDampingMatrix assemble_damping(Plane plane, const FeChain& chain);
+
 /// Number of free unknowns of a chain of `elements` elements in `plane`: 2 (N - 1) or N - 1.
 int fe_unknowns(Plane plane, int elements);
 

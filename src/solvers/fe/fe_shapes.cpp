@@ -172,4 +172,61 @@ Mode mode_on_stations(Plane plane,
   return mode;
 }
 
+Mode damped_mode_on_stations(Plane plane,
+                             const FeChain& chain,
+                             const Eigen::VectorXcd& eigenvector,
+                             std::complex<double> lambda,
+                             const Vector& stations,
+                             const StaticSolution& statics,
+                             bool with_tension) {
+  const Vector re = eigenvector.real(), im = eigenvector.imag();
+  const std::vector<Vec2> D_re = node_displacements(plane, chain.elements, re);
+  const std::vector<Vec2> D_im = node_displacements(plane, chain.elements, im);
+  Vector tau_re, tau_im;
+  const bool tension = with_tension && plane == Plane::InPlane;
+  if (tension) {
+    tau_re.resize(chain.elements);
+    tau_im.resize(chain.elements);
+    for (int j = 0; j < chain.elements; ++j) {
+      const auto k = static_cast<std::size_t>(j);
+      const Vec2& t = chain.direction[k];
+      const std::complex<double> strain(t.dot(D_re[k + 1] - D_re[k]), t.dot(D_im[k + 1] - D_im[k]));
+      const std::complex<double> tau =
+          (chain.axial_stiffness_n[j] + chain.axial_damping_n_s[j] * lambda) * strain /
+          chain.element_length_m[j];
+      tau_re[j] = tau.real();
+      tau_im[j] = tau.imag();
+    }
+  }
+  const FeSampled a =
+      sample_on_stations(plane, chain, D_re, tension ? &tau_re : nullptr, stations, statics);
+  const FeSampled b =
+      sample_on_stations(plane, chain, D_im, tension ? &tau_im : nullptr, stations, statics);
+  Mode mode;
+  mode.s_m = stations;
+  std::string by = "v";
+  if (plane == Plane::InPlane) {
+    mode.u = a.u;
+    mode.w = a.w;
+    mode.u_imag = b.u;
+    mode.w_imag = b.w;
+    const double w_max = std::sqrt((a.w.array().square() + b.w.array().square()).maxCoeff());
+    const double u_max = std::sqrt((a.u.array().square() + b.u.array().square()).maxCoeff());
+    by = w_max <= 1e-6 * u_max ? "u" : "w";
+    if (with_tension) {
+      mode.tension_n = a.tension;
+      mode.tension_imag_n = b.tension;
+    }
+  } else {
+    mode.v = a.v;
+    mode.v_imag = b.v;
+    if (with_tension) {
+      mode.tension_n = Vector::Zero(stations.size());
+      mode.tension_imag_n = Vector::Zero(stations.size());
+    }
+  }
+  normalise_complex_mode(mode, by);
+  return mode;
+}
+
 }  // namespace catena::internal

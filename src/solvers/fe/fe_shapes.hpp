@@ -7,6 +7,7 @@
 /// each element, tau_j = EA t_j . (D_{j+1} - D_j) / l0, interpolated linearly between element
 /// midpoints.
 
+#include <complex>
 #include <vector>
 
 #include "catena/solvers/modal_result.hpp"
@@ -49,5 +50,17 @@ Mode mode_on_stations(Plane plane,
                       const Vector& stations,
                       const StaticSolution& statics,
                       bool with_tension);
+
+/// A damped (complex) eigenvector as a mode on the stations: real parts in u, w (v), imaginary
+/// parts in u_imag, w_imag (v_imag); with tension when asked, tau_j = (EA_j + c_a,j lambda)
+/// t_j . (D_{j+1} - D_j) / l0 (Kelvin-Voigt), zero out of plane; normalised by
+/// normalise_complex_mode on w (on u when max|w| <= 1e-6 max|u|, as the real normalisation) or v.
+Mode damped_mode_on_stations(Plane plane,
+                             const FeChain& chain,
+                             const Eigen::VectorXcd& eigenvector,
+                             std::complex<double> lambda,
+                             const Vector& stations,
+                             const StaticSolution& statics,
+                             bool with_tension);
 
 }  // namespace catena::internal

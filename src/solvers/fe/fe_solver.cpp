@@ -20,6 +20,8 @@
 #include "solvers/common/solver_driver.hpp"
 #include "solvers/common/solver_entries.hpp"
 #include "solvers/common/work_meter.hpp"
+#include "solvers/fe/fe_damped_forced.hpp"
+#include "solvers/fe/fe_damped_modes.hpp"
 #include "solvers/fe/fe_extrapolation.hpp"
 #include "solvers/fe/fe_forced.hpp"
 #include "solvers/fe/fe_levels.hpp"
@@ -101,6 +103,9 @@ class FeNumerics final : public SolverNumerics {
                               "is a node, the layer sqrt(T/k_s) beyond it a piece of its own"))
       summary.notes.push_back(*note);
   }
+  // Damped lines: the quadratic eigenproblem (fe_damped_modes.hpp).
+  bool handles_damping() const override { return true; }
+  bool handles_damped_forced() const override { return true; }
   std::optional<Outcome> prepare() override;
   ModalResult modes(Plane plane, int count) override;
   ForcedOutcome forced(const ForcedRequest& request) override {
@@ -114,7 +119,10 @@ class FeNumerics final : public SolverNumerics {
     std::string note;
     if (naturals_[plane].empty()) note = compute_naturals_for(plane, request);
     ForcedOutcome outcome =
-        fe_forced_response(request, context_, plan_, levels_, naturals_[plane], timings_);
+        context_.problem.is_damped()
+            ? fe_damped_forced_response(request, context_, plan_, levels_, naturals_[plane],
+                                        timings_)
+            : fe_forced_response(request, context_, plan_, levels_, naturals_[plane], timings_);
     if (!note.empty()) outcome.summary.notes.push_back(note);
     return outcome;
   }
@@ -122,6 +130,7 @@ class FeNumerics final : public SolverNumerics {
  private:
   void require_modes_fit() const;
   ModalResult modes_on_plan(Plane plane, int count);
+  void damped_modes_on_plan(Plane plane, int count, ModalResult& result);
   std::string refine_plan(Plane plane, int elements);
   // What a refinement replaces, kept to go back to when the finer mesh does worse.
   struct FeRun {
@@ -402,6 +411,10 @@ ModalResult FeNumerics::modes_on_plan(Plane plane, int count) {
     summary.message = *singular;
     return result;
   }
+  if (context_.problem.is_damped()) {
+    damped_modes_on_plan(plane, count, result);
+    return result;
+  }
   WorkMeter meter(context_, "fe", std::string(to_string(plane)) + " eigen solves (mesh levels)",
                   level_count(levels_));
   const FePlaneEigenReport eigen =
@@ -446,6 +459,41 @@ ModalResult FeNumerics::modes_on_plan(Plane plane, int count) {
   facts.timings = &timings_;
   describe_fe_plane(facts, result);
   return result;
+}
+
+// The damped counterpart of modes_on_plan's eigen part: the damped roots on every level, then
+// the plane's result (fe_damped_modes.hpp).
+void FeNumerics::damped_modes_on_plan(Plane plane, int count, ModalResult& result) {
+  SolverSummary& summary = result.summary;
+  WorkMeter meter(context_, "fe",
+                  std::string(to_string(plane)) + " damped eigen solves (mesh levels)",
+                  level_count(levels_));
+  const FePlaneEigenReport eigen =
+      solve_level_damped_modes(levels_, plane, count, options_, timings_, &meter);
+  summary.termination = eigen.termination;
+  summary.iterations = eigen.restarts;
+  summary.operations = eigen.operations;
+  summary.max_residual = eigen.max_residual;
+  summary.warnings = eigen.warnings;
+  if (eigen.termination == Termination::NumericalFailure) {
+    summary.message = fe_eigen_failure_message(plane, eigen);
+    return;
+  }
+  if (meter.stopped()) {
+    summary.message = fmt::format("0 of {} {} modes", count, to_string(plane));
+    mark_time_limit(meter, summary);
+    return;
+  }
+  const auto start = Clock::now();
+  damped_modal_result(context_, plan_, levels_, plane, count, result);
+  for (const Mode& mode : result.modes)
+    naturals_[plane].push_back({mode.index, mode.omega_rad_s, mode.relative_error_estimate,
+                                mode.decay_rate_1_s, mode.decay_rate_error_estimate});
+  timings_.postprocessing_s += std::chrono::duration<double>(Clock::now() - start).count();
+  const FeLevel& finest = levels_[static_cast<std::size_t>(plan_.main_fine)][0];
+  summary.notes.push_back(
+      fe_statics_note(finest.chain, context_.problem.prescribed_forces.has_value()));
+  summary.notes.push_back(fe_time_note(timings_));
 }
 
 }  // namespace

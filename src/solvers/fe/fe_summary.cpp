@@ -52,6 +52,12 @@ std::string time_note(const FeTimings& timings) {
 
 }  // namespace
 
+std::string fe_statics_note(const FeChain& chain, bool prescribed_forces) {
+  return statics_note(chain, prescribed_forces);
+}
+
+std::string fe_time_note(const FeTimings& timings) { return time_note(timings); }
+
 std::string format_seconds(double seconds) {
   return seconds < 1e-3 ? fmt::format("{:.1f} us", seconds * 1e6)
                         : fmt::format("{:.3f} ms", seconds * 1e3);

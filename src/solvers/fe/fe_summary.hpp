@@ -53,6 +53,11 @@ struct FePlaneFacts {
 /// termination must be final).
 void describe_fe_plane(const FePlaneFacts& facts, ModalResult& result);
 
+/// The notes on the discrete statics of `chain` and on the stage times so far (the damped planes
+/// add them as describe_fe_plane does).
+std::string fe_statics_note(const FeChain& chain, bool prescribed_forces);
+std::string fe_time_note(const FeTimings& timings);
+
 /// The message of a plane whose eigen solve failed numerically on some level.
 std::string fe_eigen_failure_message(Plane plane, const FePlaneEigenReport& eigen);
 
