@@ -325,7 +325,7 @@ TEST(ShootingDamped, ForcedStringAtResonanceMatchesTheClosedForm) {
 }
 
 TEST(ShootingDamped, ForcedStringPeakAndBandwidthFollowZeta) {
-  const double L = 10.0, M = 1.5, c_n = 0.05, A = 0.01;
+  const double M = 1.5, c_n = 0.05, A = 0.01;  // the cable of damped_straight_cable (L = 10 m)
   const Solved probe =
       solve(damped_straight_cable(2000.0, 2e4, 0.0, c_n, 0.0), modes_request(0, 1));
   const Mode& mode = probe.output.outofplane->modes[0];
