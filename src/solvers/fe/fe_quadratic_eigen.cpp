@@ -369,6 +369,38 @@ bool inside(const FeCountRegion& region, Complex z) {
 
 }  // namespace
 
+namespace {
+
+// The plane's status from the argument-principle count: proved when it counts exactly the roots
+// found in the region and the region holds every root returned.
+void set_count_outcome(const FeArgumentCount& count,
+                       int expected,
+                       int outside,
+                       FeDampedEigenSolution& out) {
+  const bool covers = outside == 0;
+  out.counted = count.ok && count.count == expected && covers ? count.count : -1;
+  out.termination = Termination::Converged;
+  if (count.ok && count.count == expected && !covers) {
+    out.termination = Termination::NoConvergence;
+    out.message = fmt::format(
+        "root count not proved for every root returned: {} lie outside the counted region {}",
+        outside, out.count_region);
+  } else if (!count.ok) {
+    out.termination = Termination::NoConvergence;
+    out.message = "root count not proved: " + count.failure;
+  } else if (count.count != expected) {
+    out.termination = Termination::NoConvergence;
+    out.message = fmt::format(
+        "root count not proved: the argument principle counts {} roots in {}, {} were found",
+        count.count, out.count_region, expected);
+  } else {
+    out.message = fmt::format("{} underdamped roots, argument-principle count {} in {}", expected,
+                              count.count, out.count_region);
+  }
+}
+
+}  // namespace
+
 FeDampedEigenSolution solve_damped_modes(const FeChain& chain,
                                          Plane plane,
                                          const FeMatrices& matrices,
@@ -463,30 +495,11 @@ FeDampedEigenSolution solve_damped_modes(const FeChain& chain,
     int outside = 0;
     for (Eigen::Index i = 0; i < out.roots.size(); ++i)
       outside += inside(region, out.roots[i]) ? 0 : 1;
-    const bool covers = outside == 0;
     if (count.ok && count.count > expected && can_grow) {
       wanted = std::min(limit, 2 * wanted);
       continue;
     }
-    out.counted = count.ok && count.count == expected && covers ? count.count : -1;
-    out.termination = Termination::Converged;
-    if (count.ok && count.count == expected && !covers) {
-      out.termination = Termination::NoConvergence;
-      out.message = fmt::format(
-          "root count not proved for every root returned: {} lie outside the counted region {}",
-          outside, out.count_region);
-    } else if (!count.ok) {
-      out.termination = Termination::NoConvergence;
-      out.message = "root count not proved: " + count.failure;
-    } else if (count.count != expected) {
-      out.termination = Termination::NoConvergence;
-      out.message = fmt::format(
-          "root count not proved: the argument principle counts {} roots in {}, {} were found",
-          count.count, out.count_region, expected);
-    } else {
-      out.message = fmt::format("{} underdamped roots, argument-principle count {} in {}", expected,
-                                count.count, out.count_region);
-    }
+    set_count_outcome(count, expected, outside, out);
     return out;
   }
 }
