@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Compares the numbers of two verification reports: every natural frequency (omega_rad_s),
-forced max |tension| and statics H, keyed by scene, solver, plane and mode.
+"""Compares the numbers of two verification reports: every natural frequency (omega_rad_s), the
+decay rate of every damped mode (decay_rate_1_s, when not 0), forced max |tension| and statics H,
+keyed by scene, solver, plane and mode.
 
 Each side is a report.json from `catena verify`, or a values file written by --write-values
 (verification/baseline/values.json: the committed baseline, compared with the suite by the
@@ -18,12 +19,15 @@ import json
 import sys
 
 KEYS = ("omega_rad_s", "max_abs_tension_n", "horizontal_force_n")
+# Zero on every undamped mode: kept only where a line is damped, so that undamped scenes add none.
+NONZERO_KEYS = ("decay_rate_1_s",)
 
 
 def walk(node, path, out):
     if isinstance(node, dict):
         for k, v in node.items():
-            if k in KEYS and isinstance(v, (int, float)):
+            number = isinstance(v, (int, float)) and not isinstance(v, bool)
+            if number and (k in KEYS or (k in NONZERO_KEYS and v != 0)):
                 out[path + "/" + k] = float(v)
             else:
                 walk(v, path + "/" + k, out)
