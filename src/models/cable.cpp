@@ -51,6 +51,31 @@ void CableProperties::validate() const {
   if (added_mass_kg_per_m > 0.0)
     require_finite_positive(added_mass_kg_per_m, "added_mass_kg_per_m", "kg/m");
   validate_damping();
+  validate_hydrodynamics();
+}
+
+void CableProperties::validate_hydrodynamics() const {
+  if (!std::isfinite(added_mass_tangential_kg_per_m) || added_mass_tangential_kg_per_m < 0.0 ||
+      added_mass_tangential_kg_per_m > kMaxCableMagnitude) {
+    throw InvalidInput(
+        fmt::format("Invalid cable.added_mass_tangential = {}: must be finite and >= 0 [kg/m]",
+                    added_mass_tangential_kg_per_m));
+  }
+  validate_drag(drag, "cable.");
+}
+
+void Environment::validate() const {
+  if (!std::isfinite(water_density_kg_per_m3) || !(water_density_kg_per_m3 > 0.0) ||
+      water_density_kg_per_m3 > 1e5) {
+    throw InvalidInput(fmt::format(
+        "Invalid environment.water_density = {}: must be finite and in (0, 1e5] [kg/m^3]",
+        water_density_kg_per_m3));
+  }
+  if (!std::isfinite(gravity_m_per_s2) || !(gravity_m_per_s2 > 0.0) || gravity_m_per_s2 > 1e3) {
+    throw InvalidInput(
+        fmt::format("Invalid environment.gravity = {}: must be finite and in (0, 1e3] [m/s^2]",
+                    gravity_m_per_s2));
+  }
 }
 
 void CableProperties::validate_damping() const {
@@ -122,6 +147,13 @@ bool Problem::is_damped() const {
   return line_damped || (seabed && seabed->damping_n_s_per_m2 > 0.0);
 }
 
+bool Problem::has_drag() const { return is_uniform() ? !cable.drag.is_zero() : line.has_drag(); }
+
+bool Problem::has_tangential_added_mass() const {
+  return is_uniform() ? cable.added_mass_tangential_kg_per_m != 0.0
+                      : line.has_tangential_added_mass();
+}
+
 Line Problem::as_line() const { return is_uniform() ? line_of_cable(cable) : line; }
 
 void Problem::validate() const {
@@ -135,6 +167,7 @@ void Problem::validate() const {
     }
   }
   supports.validate();
+  environment.validate();
   if (seabed) validate_seabed();
 }
 

@@ -34,6 +34,33 @@ void require_value(double value,
   }
 }
 
+}  // namespace
+
+void validate_drag(const MorisonDrag& drag, const std::string& prefix) {
+  const double d = drag.diameter_m;
+  if (!std::isfinite(d) || d < 0.0 || (d > 0.0 && d < kMinCableMagnitude) ||
+      d > kMaxCableMagnitude) {
+    throw InvalidInput(
+        fmt::format("Invalid {}diameter = {}: must be finite and > 0 [m]", prefix, d));
+  }
+  const std::pair<double, const char*> coefficients[] = {{drag.normal, "drag_normal"},
+                                                         {drag.tangential, "drag_tangential"}};
+  for (const auto& [value, key] : coefficients) {
+    if (!std::isfinite(value) || value < 0.0 || value > 1e6) {
+      throw InvalidInput(
+          fmt::format("Invalid {}{} = {}: must be finite and in [0, 1e6] [-]", prefix, key, value));
+    }
+    if (value > 0.0 && d == 0.0) {
+      throw InvalidInput(
+          fmt::format("Invalid {}{} = {}: a drag coefficient needs the hydrodynamic diameter; give "
+                      "{}diameter [m]",
+                      prefix, key, value, prefix));
+    }
+  }
+}
+
+namespace {
+
 void validate_segment(const LineSegment& segment, std::size_t index) {
   const std::string name = fmt::format("segments[{}].", index);
   require_value(segment.length_m, name + "length", "m", 1);
@@ -50,6 +77,8 @@ void validate_segment(const LineSegment& segment, std::size_t index) {
                 0);
   require_value(segment.damping.normal_n_s_per_m2, name + "damping_normal", "N s/m per m", 0);
   require_value(segment.damping.axial_n_s, name + "axial_damping", "N s", 0);
+  require_value(segment.added_mass_tangential_kg_per_m, name + "added_mass_tangential", "kg/m", 0);
+  validate_drag(segment.drag, "line." + name);
   if (segment.is_inextensible() && segment.damping.axial_n_s > 0.0) {
     throw InvalidInput(fmt::format(
         "Invalid line.{}axial_damping = {}: an inextensible segment (EA = inf) has no axial "
@@ -126,10 +155,25 @@ bool Line::is_damped() const {
   return false;
 }
 
+bool Line::has_drag() const {
+  for (const LineSegment& segment : segments) {
+    if (!segment.drag.is_zero()) return true;
+  }
+  return false;
+}
+
+bool Line::has_tangential_added_mass() const {
+  for (const LineSegment& segment : segments) {
+    if (segment.added_mass_tangential_kg_per_m != 0.0) return true;
+  }
+  return false;
+}
+
 Line line_of_cable(const CableProperties& cable) {
   Line line;
   line.segments.push_back({cable.length_m, cable.weight_n_per_m, cable.axial_stiffness_n,
-                           cable.mass_kg_per_m, cable.added_mass_kg_per_m, cable.damping});
+                           cable.mass_kg_per_m, cable.added_mass_kg_per_m, cable.damping,
+                           cable.added_mass_tangential_kg_per_m, cable.drag});
   return line;
 }
 

@@ -40,9 +40,15 @@ struct CableProperties {
   double added_mass_kg_per_m = 0.0;
   /// Linear drag and axial damping (docs/explanation/physics.md, "Damping"); zero: undamped.
   SectionDamping damping{};
+  /// Added mass per unit unstretched length along the cable [kg/m] (MoorDyn's CaAx). Finite, >= 0.
+  double added_mass_tangential_kg_per_m = 0.0;
+  /// Morison drag (docs/explanation/dynamic-tension.md); zero: none.
+  MorisonDrag drag{};
 
   /// M = m + ma: the mass that resists normal motion [kg/m].
   double normal_mass_kg_per_m() const { return mass_kg_per_m + added_mass_kg_per_m; }
+  /// m + ma_t: the mass that resists tangential motion [kg/m].
+  double tangential_mass_kg_per_m() const { return mass_kg_per_m + added_mass_tangential_kg_per_m; }
   /// True for EA = inf.
   bool is_inextensible() const;
 
@@ -52,6 +58,18 @@ struct CableProperties {
 
  private:
   void validate_damping() const;
+  void validate_hydrodynamics() const;
+};
+
+/// The water the line hangs in (docs/reference/scene-format.md, `[environment]`).
+struct Environment {
+  /// Water density rho [kg/m^3]: the Morison drag's. Finite and > 0.
+  double water_density_kg_per_m3 = 1025.0;
+  /// Gravitational acceleration g [m/s^2] (the weights are given directly; g is kept with the
+  /// problem for the importer and the reports). Finite and > 0.
+  double gravity_m_per_s2 = 9.80665;
+  /// Throws InvalidInput naming `environment.water_density` or `environment.gravity`.
+  void validate() const;
 };
 
 /// End points of the cable in one vertical plane: x horizontal, z up [m]. `s = 0` at `a`.
@@ -98,11 +116,17 @@ struct Problem {
   /// it, end B above it. The statics then lays a grounded length from A on it where the line would
   /// go below it (catena/statics/seabed_statics.hpp).
   std::optional<Seabed> seabed;
+  /// The water (Morison drag's density).
+  Environment environment{};
 
   /// True when the line (or the cable) or the seabed has a non-zero damping coefficient: the
   /// natural frequencies become complex roots lambda = -delta + i omega_d
   /// (docs/explanation/physics.md, "Damping").
   bool is_damped() const;
+  /// True when some section has Morison drag (docs/explanation/dynamic-tension.md).
+  bool has_drag() const;
+  /// True when some section has a tangential added mass.
+  bool has_tangential_added_mass() const;
   /// True for the uniform `cable` (line.segments empty).
   bool is_uniform() const { return line.segments.empty(); }
   /// The line either way: `line`, or the one segment of `cable`.

@@ -6,6 +6,7 @@
 /// heads) at given unstretched arc lengths from A.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "catena/core/types.hpp"
@@ -32,6 +33,22 @@ struct SectionDamping {
     return tangential_n_s_per_m2 == 0.0 && normal_n_s_per_m2 == 0.0 && axial_n_s == 0.0;
   }
 };
+/// Morison drag of a cable section (docs/explanation/dynamic-tension.md, "Drag"): the quadratic
+/// force per unit unstretched length -1/2 rho Cd d |v_n| v_n across the line and
+/// -1/2 rho CdAx (pi d) |v_t| v_t along it (MoorDyn's and MoorPy's convention: the tangential
+/// force acts on the wetted perimeter pi d), linearised about the response to a motion request.
+/// It enters only the dynamic tension in waves, never the natural modes. Zero by default: no drag.
+struct MorisonDrag {
+  /// Hydrodynamic diameter d [m]; 0 when no drag is given. Finite and > 0 when given.
+  double diameter_m = 0.0;
+  /// Normal drag coefficient Cd [-] (MoorDyn's Cd). Finite and >= 0.
+  double normal = 0.0;
+  /// Tangential drag coefficient CdAx [-] (MoorDyn's CdAx). Finite and >= 0.
+  double tangential = 0.0;
+  /// True when the section has no drag.
+  bool is_zero() const { return diameter_m == 0.0 || (normal == 0.0 && tangential == 0.0); }
+};
+
 /// One segment of a line, per unit *unstretched* length.
 struct LineSegment {
   /// Unstretched length [m]. Finite and > 0.
@@ -47,8 +64,14 @@ struct LineSegment {
   double added_mass_kg_per_m = 0.0;
   /// Linear drag and axial damping of the segment (zero: undamped).
   SectionDamping damping{};
+  /// Added mass per unit unstretched length along the line [kg/m] (MoorDyn's CaAx). Finite, >= 0.
+  double added_mass_tangential_kg_per_m = 0.0;
+  /// Morison drag (zero: none).
+  MorisonDrag drag{};
 
   double normal_mass_kg_per_m() const { return mass_kg_per_m + added_mass_kg_per_m; }
+  /// m + ma_t: the mass that resists tangential motion [kg/m].
+  double tangential_mass_kg_per_m() const { return mass_kg_per_m + added_mass_tangential_kg_per_m; }
   bool is_inextensible() const;
 };
 
@@ -91,12 +114,22 @@ struct Line {
   bool is_inextensible() const;
   /// True when some segment has a non-zero damping coefficient.
   bool is_damped() const;
+  /// True when some segment has Morison drag.
+  bool has_drag() const;
+  /// True when some segment has a tangential added mass.
+  bool has_tangential_added_mass() const;
 
   /// Throws InvalidInput naming the field (`line.segments[2].length`, `line.points[0].s`), its
   /// value and the constraint: non-finite or out-of-range values, points outside (0, L), points
   /// not in increasing order of s or closer than 1e-9 L to each other.
   void validate() const;
 };
+
+/// Throws InvalidInput naming `<prefix>diameter`, `<prefix>drag_normal` or
+/// `<prefix>drag_tangential` (prefix e.g. "cable." or "line.segments[1].") unless the diameter is
+/// 0 (no drag) or finite and > 0, the coefficients are finite and >= 0, and a non-zero coefficient
+/// has a diameter.
+void validate_drag(const MorisonDrag& drag, const std::string& prefix);
 
 /// The line of one uniform cable (one segment, no points).
 Line line_of_cable(const CableProperties& cable);

@@ -134,12 +134,73 @@ struct ForcedResponse {
   bool near_resonance = false;
 };
 
+/// Tension and motion at one end of the line under a motion request.
+struct DynamicTensionEnd {
+  double s_m = 0.0;
+  /// Static (mean) tension [N].
+  double mean_n = 0.0;
+  /// Regular motion: dynamic tension amplitude |tau| [N] and its phase [deg] relative to the
+  /// motion of end b (tau = amplitude cos(omega t + phase)); -1 and 0 when irregular.
+  double amplitude_n = -1.0;
+  double phase_deg = 0.0;
+  /// Irregular motion: standard deviation of the dynamic tension [N], the mean zero up-crossing
+  /// period of the tension, 2 pi sqrt(m0 / m2) [s], and the most probable maximum tension in the
+  /// request's duration D, mean + sigma sqrt(2 ln N) with N = D / Tz [N] (mean + sigma when N < e);
+  /// -1 when regular.
+  double std_n = -1.0;
+  double zero_upcrossing_period_s = -1.0;
+  double most_probable_max_n = -1.0;
+};
+
+/// The dynamic tension of one excitation (one period of a regular motion, or the irregular
+/// motion), with the Morison drag linearised about the response and iterated to its fixed point
+/// (docs/explanation/dynamic-tension.md). Vectors are over the request's stations s_m.
+struct DynamicTension {
+  bool irregular = false;
+  /// Regular: the period [s] and omega = 2 pi / T [rad/s]; 0 when irregular.
+  double period_s = 0.0;
+  double omega_rad_s = 0.0;
+  Vector s_m;
+  /// Static tension T0(s) [N].
+  Vector mean_n;
+  /// Regular: |tau(s)| [N] and its phase [deg]; empty when irregular.
+  Vector amplitude_n;
+  Vector phase_deg;
+  /// Irregular: sigma_tau(s) [N]; empty when regular.
+  Vector std_n;
+  /// Displacement amplitude |x(s)| (regular) or its standard deviation (irregular) [m].
+  Vector motion_m;
+  /// The linearised drag at the stations [N s/m per m]: normal c_n(s) and tangential c_t(s) (on
+  /// top of the sections' own linear damping).
+  Vector normal_damping_n_s_per_m2;
+  Vector tangential_damping_n_s_per_m2;
+  DynamicTensionEnd fairlead;
+  DynamicTensionEnd anchor;
+  /// Irregular: the frequency grid [rad/s] and the tension spectra at the ends [N^2 s/rad].
+  Vector spectrum_omega_rad_s;
+  Vector fairlead_spectrum_n2_s_per_rad;
+  Vector anchor_spectrum_n2_s_per_rad;
+  /// The fixed point: iterations (linear solves of every frequency), the relative residual
+  /// max_s |V(x) - V| / max_s |V(x)| of the velocity scales V (recomputed from the final
+  /// response), and whether it reached the request's tolerance.
+  int iterations = 0;
+  double residual = -1.0;
+  bool converged = false;
+  /// Estimated relative error of the tension (the linear solves' estimate plus the residual).
+  double relative_error_estimate = -1.0;
+  /// Empty when converged; otherwise why not (no fixed point within the iterations, a linear
+  /// solve that failed, ...).
+  std::string diagnostic;
+};
+
 /// Everything one solver produced for one problem and request.
 struct SolverOutput {
   std::string solver;
   std::optional<ModalResult> inplane;
   std::optional<ModalResult> outofplane;
   std::vector<ForcedResponse> forced;
+  /// One per period of a regular motion request, or one for an irregular one.
+  std::vector<DynamicTension> dynamic_tension;
   /// Overall summary (NotApplicable with the reason when the solver declined).
   SolverSummary summary;
 };

@@ -44,6 +44,66 @@ struct ForcedRequest {
   Vec2 unit_vector() const;
 };
 
+/// A table of a one-sided spectral density over circular frequency (docs/reference/scene-format.md,
+/// `[request.motion]`): omega [rad/s] strictly increasing, finite and >= 0; density >= 0, finite.
+struct SpectrumTable {
+  std::vector<double> omega_rad_s;
+  /// Motion spectrum of end b along the motion direction [m^2 s/rad].
+  std::vector<double> density_m2_s_per_rad;
+};
+
+/// JONSWAP wave spectrum (DNV-RP-C205 3.5.5, with the Goda normalisation A_gamma = 1 - 0.287 ln
+/// gamma): significant wave height, peak period, peak enhancement.
+struct JonswapSpectrum {
+  double hs_m = 0.0;   ///< > 0 [m]
+  double tp_s = 0.0;   ///< > 0 [s]
+  double gamma = 3.3;  ///< in [1, 7] [-] (DNV's range)
+};
+
+/// The fairlead's motion response amplitude operator along the motion direction: at each wave
+/// frequency, the motion amplitude per unit wave amplitude [m/m] (or per unit wave height when
+/// `per_wave_height`) and its phase [deg] (the phase does not enter a single-direction spectrum;
+/// it is validated and kept for reports).
+struct RaoTable {
+  std::vector<double> omega_rad_s;
+  std::vector<double> amplitude;
+  std::vector<double> phase_deg;
+  /// True: amplitude per unit wave *height* H = 2 a (the motion spectrum then gains a factor 4).
+  bool per_wave_height = false;
+};
+
+/// The motion of end b (the fairlead) whose dynamic tension is asked, with Morison drag linearised
+/// about the response (docs/explanation/dynamic-tension.md). Regular: `periods_s` and
+/// `amplitude_m`. Irregular: `spectrum`, or `jonswap` with `rao`.
+struct MotionRequest {
+  /// In-plane vector (x, z) (GivenVector) or OutOfPlane.
+  ForcingDirection direction = ForcingDirection::GivenVector;
+  Vec2 vector = Vec2(1.0, 0.0);
+  /// Regular motion: amplitude [m] (> 0) and periods [s] (> 0), one fixed point per period.
+  double amplitude_m = 0.0;
+  std::vector<double> periods_s;
+  /// Irregular motion: a motion spectrum table, or a JONSWAP sea times an RAO table.
+  std::optional<SpectrumTable> spectrum;
+  std::optional<JonswapSpectrum> jonswap;
+  std::optional<RaoTable> rao;
+  /// Frequencies of the grid on which JONSWAP x |RAO|^2 is integrated (equally spaced over the
+  /// RAO table's range), in [8, 100000].
+  int frequencies = 200;
+  /// Duration of the sea state for the most probable maximum [s], > 0.
+  double duration_s = 10800.0;
+  /// Fixed point: relative residual max_s |V_new - V| / max_s |V_new| to reach, in [1e-14, 0.1],
+  /// and the most iterations, in [1, 10000].
+  double tolerance = 1e-8;
+  int max_iterations = 200;
+
+  bool is_irregular() const { return spectrum.has_value() || jonswap.has_value(); }
+  /// `vector` / |vector| (as ForcedRequest::unit_vector).
+  Vec2 unit_vector() const;
+  /// Throws InvalidInput naming the field (`request.motion.periods`, `request.motion.rao.omega`,
+  /// ...) and the constraint.
+  void validate() const;
+};
+
 /// Most modes a request may ask for in each plane (docs/reference/scene-format.md, "Limits on
 /// work"): at the measured cost the largest request takes minutes, not days. Use a time limit
 /// (catena/solvers/run_limits.hpp) for less.
@@ -71,6 +131,8 @@ struct SolveRequest {
   bool tension = false;
   /// Forced response, when asked.
   std::optional<ForcedRequest> forced;
+  /// Dynamic tension under a motion of end b with linearised drag, when asked.
+  std::optional<MotionRequest> motion;
 
   /// Throws InvalidInput naming the field and the constraint.
   void validate() const;

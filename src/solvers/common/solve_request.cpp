@@ -69,6 +69,7 @@ void SolveRequest::validate() const {
       throw InvalidInput("Invalid ForcedRequest::vector: must be finite and non-zero");
     }
   }
+  if (motion) motion->validate();
 }
 
 Vec2 ForcedRequest::unit_vector() const {

@@ -8,6 +8,7 @@
 #include <exception>
 
 #include "catena/core/error.hpp"
+#include "solvers/common/dynamic_tension.hpp"
 #include "solvers/common/result_validation.hpp"
 #include "solvers/common/work_meter.hpp"
 
@@ -42,7 +43,8 @@ std::optional<SolverSummary> skipped_for_time(const SolveContext& context,
 void run_parts(const SolveContext& context,
                SolverNumerics& numerics,
                SolverOutput& output,
-               std::optional<ForcedOutcome>& forced) {
+               std::optional<ForcedOutcome>& forced,
+               std::optional<SolverSummary>& dynamic) {
   const SolveRequest& request = context.request;
   const std::pair<Plane, int> planes[] = {{Plane::InPlane, request.inplane_modes},
                                           {Plane::OutOfPlane, request.outofplane_modes}};
@@ -93,9 +95,25 @@ void run_parts(const SolveContext& context,
     forced->summary.wall_time_s = seconds_since(start);
     output.forced = std::move(forced->responses);
   }
+  if (request.motion) {
+    const auto start = Clock::now();
+    dynamic = solve_dynamic_tension(context, numerics, output.dynamic_tension);
+    dynamic->solver = output.solver;
+    dynamic->wall_time_s = seconds_since(start);
+  }
 }
 
 }  // namespace
+
+ForcedOutcome SolverNumerics::forced_with_drag(const ForcedRequest& request,
+                                               const DragProfile& drag) {
+  (void)drag;
+  ForcedOutcome outcome;
+  outcome.summary.termination = Termination::NotApplicable;
+  outcome.summary.message = fmt::format("dynamic tension not computed ({} frequencies asked)",
+                                        request.omegas_rad_s.size());
+  return outcome;
+}
 
 ForcedOutcome SolverNumerics::forced(const ForcedRequest& request) {
   ForcedOutcome outcome;
@@ -117,10 +135,16 @@ SolverOutput drive_solver(const std::string& solver,
   SolverSummary& summary = output.summary;
   summary.solver = solver;
   std::optional<ForcedOutcome> forced;
+  std::optional<SolverSummary> dynamic;
   try {
     std::optional<std::string> reason = numerics.not_applicable();
     if (!reason && context.problem.is_damped() && !numerics.handles_damping())
       reason = "the line is damped and this method computes undamped modes only";
+    if (!reason && context.problem.has_tangential_added_mass() &&
+        !numerics.handles_tangential_added_mass())
+      reason =
+          "the line has a tangential added mass (added_mass_tangential), which this method's "
+          "model does not carry";
     if (reason) {
       summary.termination = Termination::NotApplicable;
       summary.message = *reason;
@@ -134,7 +158,7 @@ SolverOutput drive_solver(const std::string& solver,
       summary.wall_time_s = seconds_since(start);
       return output;
     }
-    run_parts(context, numerics, output, forced);
+    run_parts(context, numerics, output, forced, dynamic);
     numerics.describe(summary);
   } catch (const InvalidInput&) {
     throw;
@@ -152,6 +176,7 @@ SolverOutput drive_solver(const std::string& solver,
   if (output.inplane) parts.emplace_back("in-plane", &output.inplane->summary);
   if (output.outofplane) parts.emplace_back("out-of-plane", &output.outofplane->summary);
   if (forced) parts.emplace_back("forced", &forced->summary);
+  if (dynamic) parts.emplace_back("dynamic tension", &*dynamic);
   combine_summaries(parts, summary);
   summary.wall_time_s = seconds_since(start);
   return output;
@@ -202,7 +227,7 @@ void combine_summaries(const std::vector<std::pair<std::string, const SolverSumm
     for (const auto& missed : part->missed_modes)
       overall.missed_modes.push_back(name + " " + missed);
     overall.accuracy_target = std::max(overall.accuracy_target, part->accuracy_target);
-    if (name == "forced") {
+    if (name == "forced" || name == "dynamic tension") {
       // A plane's notes stay in its own summary; the forced part has no other place for them.
       for (const auto& note : part->notes) overall.notes.push_back(name + ": " + note);
     }

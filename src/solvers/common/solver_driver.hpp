@@ -14,6 +14,8 @@
 ///   5. forced(request) when a forced response is asked, for the amplitude's mantissa in
 ///      [0.5, 1) (the model is linear in it), then scaled exactly to the requested amplitude and
 ///      validated;
+///   5b. the dynamic tension of a motion request (dynamic_tension.hpp): the drag linearisation's
+///      fixed point, each iterate one forced_with_drag() call;
 ///   6. describe(): the overall resolution, notes and warnings (also after a prepare() Outcome);
 ///   7. combine the parts' summaries by combine_summaries() and time the whole.
 ///
@@ -27,6 +29,7 @@
 
 #include "catena/solvers/modal_result.hpp"
 #include "catena/solvers/solver_registry.hpp"
+#include "solvers/common/drag_profile.hpp"
 
 namespace catena::internal {
 
@@ -59,6 +62,14 @@ class SolverNumerics {
   /// Same for forced(): false makes the forced part of a damped problem NotApplicable.
   virtual bool handles_damped_forced() const { return false; }
 
+  /// True when forced_with_drag() is implemented (the dynamic tension in waves,
+  /// docs/explanation/dynamic-tension.md). False: that part is NotApplicable.
+  virtual bool handles_drag() const { return false; }
+
+  /// True when the numerics model a tangential added mass (ma_t: m + ma_t resists tangential
+  /// motion). The driver declines a problem with one for numerics that do not.
+  virtual bool handles_tangential_added_mass() const { return false; }
+
   /// Work shared by every plane and the forced response (e.g. fe's discrete statics). A returned
   /// Outcome ends the run with that status and message.
   virtual std::optional<Outcome> prepare() { return std::nullopt; }
@@ -70,6 +81,14 @@ class SolverNumerics {
   /// The forced response at every requested frequency. The default: not computed (a NotApplicable
   /// part with a warning).
   virtual ForcedOutcome forced(const ForcedRequest& request);
+
+  /// The damped forced response at request.omegas_rad_s of the line with the linearised drag
+  /// `drag` added to its sections' own linear damping (DragProfile::normal_at, tangential_at):
+  /// the same contract as forced() on a damped line (a response per frequency, with its
+  /// quadrature parts, its tension and its relative error estimate, at the request's stations
+  /// `drag.stations()`; amplitude as given, no scaling by the driver). Called once per iterate of
+  /// the fixed point with the same request and a new profile. The default: not computed.
+  virtual ForcedOutcome forced_with_drag(const ForcedRequest& request, const DragProfile& drag);
 
   /// Facts for the overall summary: resolution, notes, warnings that concern the whole run. Called
   /// after the parts (or after prepare() ended the run), so it may report what they learned.

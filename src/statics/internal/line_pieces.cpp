@@ -14,6 +14,8 @@ CableProperties section_of(const LineSegment& segment, double length_m) {
   section.mass_kg_per_m = segment.mass_kg_per_m;
   section.added_mass_kg_per_m = segment.added_mass_kg_per_m;
   section.damping = segment.damping;
+  section.added_mass_tangential_kg_per_m = segment.added_mass_tangential_kg_per_m;
+  section.drag = segment.drag;
   return section;
 }
 
