@@ -24,10 +24,11 @@ using catena::testing::write_temp_file;
 
 constexpr const char* kFolder = "catena_drag_cli_test";
 
-const std::string kCable =
+const std::string kPlainCable =
     "[cable]\nlength = 1000.0\nweight = 1000.0\nEA = 5.0e8\nmass = 120.0\nadded_mass = 80.0\n"
-    "a = [0.0, 0.0]\nb = [900.0, 300.0]\ndiameter = 0.12\ndrag_normal = 2.4\n"
-    "drag_tangential = 1.15\n";
+    "a = [0.0, 0.0]\nb = [900.0, 300.0]\n";
+const std::string kCable =
+    kPlainCable + "diameter = 0.12\ndrag_normal = 2.4\ndrag_tangential = 1.15\n";
 const std::string kModes = "[request]\ninplane_modes = 2\n";
 const std::string kRao = "rao = { omega = [0.2, 0.6, 1.2], amplitude = [1.0, 0.8, 0.1] }\n";
 
@@ -72,7 +73,7 @@ TEST(DragCli, BadValuesExitTwoNamingTheFieldAndWriteNothing) {
        "[request.motion.rao].amplitude"},
       {jonswap + "amplitude = 1.0\nperiods = [10.0, -8.0]\n", "[request.motion].periods"},
       {jonswap + "amplitude = 1.0\nperiods = [0.0]\n", "[request.motion].periods"},
-      {kCable + "drag_normal = -1.0\n", "[cable].drag_normal"},
+      {kPlainCable + "diameter = 0.12\ndrag_normal = -1.0\n", "[cable].drag_normal"},
       {"[cable]\nlength = 10.0\nweight = 1.0\nEA = 1e6\nmass = 1.0\na = [0.0, 0.0]\n"
        "b = [8.0, 1.0]\ndiameter = 0.0\n",
        "[cable].diameter"},

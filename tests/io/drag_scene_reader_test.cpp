@@ -171,15 +171,16 @@ rao = { omega = [0.2, 0.6, 1.2], amplitude = [1.0, 0.8, 0.1], phase_deg = [0.0, 
   EXPECT_EQ(amplitude.frequencies, 300);
   EXPECT_EQ(amplitude.rao->phase_deg, (std::vector<double>{0.0, -30.0, -90.0}));
   EXPECT_FALSE(amplitude.rao->per_wave_height) << "an RAO is per unit wave amplitude by default";
-  const MotionRequest height = *read_one(jonswap + ", per = \"wave_height\" }\n").request.motion;
-  EXPECT_TRUE(height.rao->per_wave_height);
+  const Scene height = read_one(jonswap + ", per = \"wave_height\" }\n");
+  ASSERT_TRUE(height.request.motion && height.request.motion->rao);
+  EXPECT_TRUE(height.request.motion->rao->per_wave_height);
 }
 
 // Each bad value: the message names the table and key (the reader's) or the request field
 // (MotionRequest::validate()'s), and the rule.
 TEST(MotionScene, BadValuesAreRefusedNamingTheField) {
   const std::string regular = "[request.motion]\namplitude = 1.0\n";
-  const std::string rao = ", rao = { omega = [0.2, 0.6], amplitude = [1.0, 0.5] }";
+  const std::string rao = "\nrao = { omega = [0.2, 0.6], amplitude = [1.0, 0.5] }";
   const std::pair<std::string, std::string> cases[] = {
       {kCable + "diameter = 0.0\n", "[cable].diameter = 0: must be finite and > 0"},
       {kCable + "diameter = -0.1\n", "[cable].diameter = -0.1"},
@@ -205,20 +206,20 @@ TEST(MotionScene, BadValuesAreRefusedNamingTheField) {
        "[request.motion.jonswap].hs = 0: must be finite and > 0"},
       {kCable + "[request.motion]\njonswap = { hs = -2.0, tp = 10.0 }" + rao + "\n",
        "[request.motion.jonswap].hs = -2"},
-      {kCable + "[request.motion]\njonswap = { hs = 2.0, tp = 10.0 }, rao = { omega = [0.6, 0.2], "
+      {kCable + "[request.motion]\njonswap = { hs = 2.0, tp = 10.0 }\nrao = { omega = [0.6, 0.2], "
                 "amplitude = [1.0, 0.5] }\n",
        "request.motion.rao.omega[1] = 0.2: the frequencies must be strictly increasing"},
-      {kCable + "[request.motion]\njonswap = { hs = 2.0, tp = 10.0 }, rao = { omega = [0.2, nan], "
+      {kCable + "[request.motion]\njonswap = { hs = 2.0, tp = 10.0 }\nrao = { omega = [0.2, nan], "
                 "amplitude = [1.0, 0.5] }\n",
        "[request.motion.rao].omega: entry nan is not finite"},
-      {kCable + "[request.motion]\njonswap = { hs = 2.0, tp = 10.0 }, rao = { omega = [0.2, 0.6], "
+      {kCable + "[request.motion]\njonswap = { hs = 2.0, tp = 10.0 }\nrao = { omega = [0.2, 0.6], "
                 "amplitude = [1.0, 0.5], phase_deg = [0.0] }\n",
        "request.motion.rao.phase_deg: 1 values, but the frequency column has 2"},
       {kCable + "[request.motion]\njonswap = { hs = 2.0, tp = 10.0 }" + rao +
            "\nspectrum = { omega = [0.2, 0.5], density = [1.0, 0.5] }\n",
        "give either spectrum or jonswap (with rao), not both"},
       {kCable + "[request.motion]\njonswap = { hs = 2.0, tp = 10.0 }" +
-           ", rao = { omega = [0.2, 0.6], amplitude = [1.0, 0.5], per = \"metre\" }\n",
+           "\nrao = { omega = [0.2, 0.6], amplitude = [1.0, 0.5], per = \"metre\" }\n",
        "[request.motion.rao].per = \"metre\""},
       {kCable + "[request.motion]\njonswap = { hs = 2.0, tp = 10.0 }\n",
        "a wave spectrum needs the fairlead's motion RAO"},
