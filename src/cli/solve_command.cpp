@@ -16,6 +16,7 @@
 #include "catena/verification/scene_runner.hpp"
 #include "cli/commands.hpp"
 #include "cli/terminal_progress.hpp"
+#include "io/internal/dynamic_tension_text.hpp"
 
 namespace catena::cli {
 namespace {
@@ -150,6 +151,28 @@ void print_damping(const Problem& problem) {
     fmt::print("  seabed damping: c_s = {:g} N s/m per m\n", problem.seabed->damping_n_s_per_m2);
 }
 
+// The Morison drag and tangential added mass of each section that has them, and the water
+// (docs/reference/scene-format.md, "Drag and dynamic tension in waves"); nothing without drag.
+void print_hydrodynamics(const Problem& problem) {
+  const auto section = [](const std::string& what, const MorisonDrag& drag, double ma_t) {
+    if (drag.is_zero() && ma_t == 0.0) return;
+    fmt::print("  {}: d = {:g} m, Cd = {:g}, CdAx = {:g}, ma_t = {:g} kg/m\n", what,
+               drag.diameter_m, drag.normal, drag.tangential, ma_t);
+  };
+  if (problem.is_uniform()) {
+    section("drag", problem.cable.drag, problem.cable.added_mass_tangential_kg_per_m);
+  } else {
+    for (std::size_t k = 0; k < problem.line.segments.size(); ++k) {
+      const LineSegment& segment = problem.line.segments[k];
+      section(fmt::format("drag of segment {}", k), segment.drag,
+              segment.added_mass_tangential_kg_per_m);
+    }
+  }
+  if (problem.has_drag())
+    fmt::print("  water: rho = {:g} kg/m^3, g = {:g} m/s^2\n",
+               problem.environment.water_density_kg_per_m3, problem.environment.gravity_m_per_s2);
+}
+
 void print_result(const SceneResult& result) {
   const Scene& scene = result.scene;
   fmt::print("scene {} ({})\n", scene.name, path_text(scene.file));
@@ -160,11 +183,13 @@ void print_result(const SceneResult& result) {
   if (scene.problem.is_uniform()) {
     print_cable(scene.problem);
     print_damping(scene.problem);
+    print_hydrodynamics(scene.problem);
     fmt::print("  statics: {}\n", result.statics->brief_report());
     print_groups(*result.groups);
   } else {
     print_line_statics(scene.problem, *result.statics);
     print_damping(scene.problem);
+    print_hydrodynamics(scene.problem);
   }
   for (const auto& output : result.outputs) {
     fmt::print("  solver {}\n", output.summary.brief_report());
@@ -176,6 +201,10 @@ void print_result(const SceneResult& result) {
       fmt::print("    forced at {:.6g} rad/s: max |tau| = {:.6g} N{}\n", response.omega_rad_s,
                  response.max_abs_tension_n,
                  response.diagnostic.empty() ? std::string() : " (" + response.diagnostic + ")");
+    }
+    if (result.request.motion) {
+      fmt::print("{}", internal::dynamic_tension_text(output.dynamic_tension,
+                                                      result.request.motion->duration_s, "    "));
     }
   }
   for (const auto& check : result.checks) {
@@ -193,8 +222,10 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
   CLI::App* command = app.add_subcommand(
       "solve",
       "Solve one scene file: statics, dimensionless groups and every applicable solver.\n"
-      "Prints a summary; --json writes the full results (layout in "
-      "docs/reference/json-layout.md).\n"
+      "Prints a summary (with [request.motion], each solver's dynamic tension at the fairlead\n"
+      "and the anchor: per period mean, amplitude, phase and max = mean + amplitude, or mean,\n"
+      "std, Tz and the most probable max in the duration; and the fixed point's iterations and\n"
+      "residual); --json writes the full results (layout in docs/reference/json-layout.md).\n"
       "On a terminal, long solves show their progress on stderr (\"shooting: in-plane modes "
       "37/600\").");
   command

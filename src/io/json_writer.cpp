@@ -15,6 +15,7 @@
 #include "catena/io/file_access.hpp"
 #include "catena/solvers/solver_registry.hpp"
 #include "io/internal/check_table.hpp"
+#include "io/internal/dynamic_tension_json.hpp"
 #include "io/internal/json_records.hpp"
 #include "io/internal/results_keys.hpp"
 
@@ -122,6 +123,9 @@ json output_json(const SolverOutput& output, bool along_cable) {
     for (const auto& response : output.forced) forced.push_back(forced_json(response, along_cable));
     out[key::forced] = forced;
   }
+  // Absent when empty: no motion asked, or the solver declined it (its summary says why).
+  if (!output.dynamic_tension.empty())
+    out[key::dynamic_tension] = internal::dynamic_tension_list_json(output.dynamic_tension);
   return out;
 }
 
@@ -134,6 +138,18 @@ void add_damping_json(json& out, const SectionDamping& damping) {
                        {key::axial_n_s, damping.axial_n_s}};
 }
 
+// A section's Morison drag and tangential added mass, like its damping written only when non-zero
+// (a scene without them is written as before).
+void add_hydrodynamics_json(json& out, const MorisonDrag& drag, double added_mass_tangential) {
+  if (drag.diameter_m != 0.0 || drag.normal != 0.0 || drag.tangential != 0.0) {
+    out[key::drag] = {{key::diameter_m, drag.diameter_m},
+                      {key::drag_normal, drag.normal},
+                      {key::drag_tangential, drag.tangential}};
+  }
+  if (added_mass_tangential != 0.0)
+    out[key::added_mass_tangential_kg_per_m] = added_mass_tangential;
+}
+
 json line_json(const Line& line) {
   json segments = json::array(), points = json::array();
   for (const LineSegment& g : line.segments) {
@@ -144,6 +160,7 @@ json line_json(const Line& line) {
                     {key::mass_kg_per_m, g.mass_kg_per_m},
                     {key::added_mass_kg_per_m, g.added_mass_kg_per_m}};
     add_damping_json(segment, g.damping);
+    add_hydrodynamics_json(segment, g.drag, g.added_mass_tangential_kg_per_m);
     segments.push_back(segment);
   }
   for (const PointAttachment& p : line.points) {
@@ -173,6 +190,7 @@ json problem_form_json(const Problem& problem) {
                 {key::mass_kg_per_m, c.mass_kg_per_m},
                 {key::added_mass_kg_per_m, c.added_mass_kg_per_m}};
   add_damping_json(cable, c.damping);
+  add_hydrodynamics_json(cable, c.drag, c.added_mass_tangential_kg_per_m);
   return {{key::form, to_string(problem.form)},
           {key::cable, cable},
           {key::supports,
@@ -180,9 +198,17 @@ json problem_form_json(const Problem& problem) {
             {key::b_m, {problem.supports.b_m.x(), problem.supports.b_m.y()}}}}};
 }
 
-// The problem, with its seabed when it has one.
+// The problem, with its seabed when it has one, and its water when the line has drag or the water
+// is not the default one (as the damping: a scene without drag is written as before).
 json problem_json(const Problem& problem) {
   json out = problem_form_json(problem);
+  const Environment& water = problem.environment;
+  const Environment defaults;
+  if (problem.has_drag() || water.water_density_kg_per_m3 != defaults.water_density_kg_per_m3 ||
+      water.gravity_m_per_s2 != defaults.gravity_m_per_s2) {
+    out[key::environment] = {{key::water_density_kg_per_m3, water.water_density_kg_per_m3},
+                             {key::gravity_m_per_s2, water.gravity_m_per_s2}};
+  }
   if (problem.seabed) {
     const Seabed& bed = *problem.seabed;
     out[key::seabed] = {{key::z_m, bed.z_m},
@@ -209,6 +235,7 @@ json request_json(const SolveRequest& request) {
                         {key::amplitude_m, f.amplitude_m},
                         {key::omegas_rad_s, f.omegas_rad_s}};
   }
+  if (request.motion) out[key::motion] = internal::motion_request_json(*request.motion);
   return out;
 }
 

@@ -195,16 +195,31 @@ void read_lines_of_file(Reader& reader, const std::string& text) {
 void convert_types(Reader& r) {
   const Table& t = r.tables[Section::LineTypes];
   if (t.rows.empty()) return;
-  const bool v1 = t.columns.size() <= 9;  // v1: Name Diam MassDen EA BA Can Cat Cdn Cdt; v2 adds EI
+  // v1: Name Diam MassDen EA BA Can Cat Cdn Cdt; v2: Name Diam MassDen EA BA EI Cd Ca CdAx CaAx
+  // (the unnamed fallbacks are where MoorDyn-C's readLineProps reads them, source/MoorDyn2.cpp).
+  const bool v1 = t.columns.size() <= 9;
   const auto diam = r.column(t, {"diam", "d"}, 1, "Diam");
   const auto mass = r.column(t, {"massden", "mass/m", "massdeninair", "mass", "m"}, 2, "MassDen");
   const auto ea = r.column(t, {"ea"}, 3, "EA");
+  const auto ba = r.column(t, {"ba/-zeta", "ba", "ba/zeta", "ba/-zeta/-"}, 4, "BA");
   const auto ca = r.column(t, {"can", "ca"}, v1 ? 5 : 7, "Ca");
+  const auto cd = r.column(t, {"cdn", "cd"}, v1 ? 7 : 6, "Cd");
+  const auto cd_axial = r.column(t, {"cdt", "cdax"}, 8, "CdAx");
+  const auto ca_axial = r.column(t, {"cat", "caax"}, v1 ? 6 : 9, "CaAx");
   for (const auto& row : t.rows) {
-    MoorDynLineType type{row.second[0], r.value(row, diam, "Diam"), r.value(row, mass, "MassDen"),
-                         std::nullopt,  r.cell(row, ea, "EA"),      r.value(row, ca, "Ca"),
-                         row.first};
+    MoorDynLineType type;
+    type.name = row.second[0];
+    type.diameter_m = r.value(row, diam, "Diam");
+    type.mass_kg_per_m = r.value(row, mass, "MassDen");
+    type.axial_stiffness_text = r.cell(row, ea, "EA");
+    type.normal_added_mass_coefficient = r.value(row, ca, "Ca");
+    type.file_line = row.first;
     type.axial_stiffness_n = number(type.axial_stiffness_text);
+    type.axial_damping_text = r.cell(row, ba, "BA");
+    type.axial_damping = number(type.axial_damping_text);
+    type.normal_drag_coefficient = r.value(row, cd, "Cd");
+    type.tangential_drag_coefficient = r.value(row, cd_axial, "CdAx");
+    type.tangential_added_mass_coefficient = r.value(row, ca_axial, "CaAx");
     r.deck.types.push_back(type);
   }
 }

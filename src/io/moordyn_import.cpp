@@ -73,6 +73,16 @@ void find_reasons(Topology& t) {
     if (why.empty() && !type->axial_stiffness_n)
       why = fmt::format("EA '{}' is not a constant (nonlinear or Syrope)",
                         type->axial_stiffness_text);
+    // Catena's axial damping is one Kelvin-Voigt coefficient; a BA curve or a viscoelastic
+    // "BA|BA_D" pair is not one.
+    if (why.empty() && !type->axial_damping)
+      why = fmt::format("BA '{}' is not a constant (a curve or viscoelastic)",
+                        type->axial_damping_text);
+    if (why.empty() && *type->axial_damping < 0.0 && line.segments < 1)
+      why = fmt::format(
+          "BA = {} is a damping ratio, which MoorDyn applies per segment, but "
+          "NumSegs = {}",
+          type->axial_damping_text, line.segments);
     if (std::count(t.deck.failing_lines.begin(), t.deck.failing_lines.end(), line.id))
       why = "may fail (FAILURE section)";
     if (!why.empty()) t.reasons[line.id] = why;

@@ -13,6 +13,7 @@
 #include "catena/core/error.hpp"
 #include "catena/io/file_access.hpp"
 #include "catena/statics/problem_builders.hpp"
+#include "io/internal/hydrodynamics_reader.hpp"
 #include "io/internal/toml_table_reader.hpp"
 
 namespace catena {
@@ -65,6 +66,8 @@ Problem read_physical(TableReader& root, const std::string& origin) {
   problem.cable.added_mass_kg_per_m =
       cable.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
   problem.cable.damping = read_section_damping(cable);
+  problem.cable.added_mass_tangential_kg_per_m = internal::read_added_mass_tangential(cable);
+  problem.cable.drag = internal::read_drag(cable);
   problem.supports.a_m = cable.point("a");
   problem.supports.b_m = cable.point("b");
   cable.finish();
@@ -106,6 +109,8 @@ LineSegment read_segment(TableReader& table) {
   segment.added_mass_kg_per_m =
       table.checked("added_mass", non_negative, "finite and >= 0", "kg/m", 0.0);
   segment.damping = read_section_damping(table);
+  segment.added_mass_tangential_kg_per_m = internal::read_added_mass_tangential(table);
+  segment.drag = internal::read_drag(table);
   table.finish();
   return segment;
 }
@@ -150,8 +155,14 @@ Problem read_line(TableReader& root, const std::string& origin) {
   }
   if (line.segments.size() == 1 && line.points.empty() && line.segments[0].weight_n_per_m > 0.0) {
     const LineSegment& segment = line.segments[0];
-    problem.cable = {segment.length_m,      segment.weight_n_per_m,      segment.axial_stiffness_n,
-                     segment.mass_kg_per_m, segment.added_mass_kg_per_m, segment.damping};
+    problem.cable = {segment.length_m,
+                     segment.weight_n_per_m,
+                     segment.axial_stiffness_n,
+                     segment.mass_kg_per_m,
+                     segment.added_mass_kg_per_m,
+                     segment.damping,
+                     segment.added_mass_tangential_kg_per_m,
+                     segment.drag};
     problem.line = Line{};
   }
   try {
@@ -268,6 +279,15 @@ Problem read_problem(TableReader& root, const std::string& origin) {
     }
     read_seabed(root, problem, origin);
   }
+  if (root.has("environment")) {
+    TableReader table = root.subtable("environment");
+    problem.environment = internal::read_environment(table);
+    try {
+      problem.environment.validate();
+    } catch (const InvalidInput& error) {
+      throw InvalidInput(fmt::format("{}: [environment]: {}", origin, error.what()));
+    }
+  }
   return problem;
 }
 
@@ -364,6 +384,10 @@ void read_request(TableReader& root, Scene& scene) {
   if (request.has("forced")) {
     TableReader forced = request.subtable("forced");
     scene.request.forced = read_forced(forced, scene);
+  }
+  if (request.has("motion")) {
+    TableReader motion = request.subtable("motion");
+    scene.request.motion = internal::read_motion(motion);
   }
   request.finish();
   try {

@@ -85,6 +85,17 @@ TEST(ImportCommand, V2DeckConvertsEachLineOrSaysWhyNot) {
   EXPECT_NE(text.find("b = [800.0, -20.0]"), std::string::npos) << text;
   const double weight = (35.0 - 1025.0 * kPi / 4.0 * 0.04) * 9.80665;  // (MassDen - rho pi/4 d^2) g
   EXPECT_NEAR(value_of(text, "weight"), weight, kRelTolConversion * weight) << text;
+  // Diam, Cd, CdAx, CaAx of type poly; BA = -1: zeta = 1 of MoorDyn's segment critical damping,
+  // 1 (840 m / 40 segments) sqrt(EA MassDen) N s.
+  EXPECT_EQ(value_of(text, "diameter"), 0.2) << text;
+  EXPECT_EQ(value_of(text, "drag_normal"), 2.0) << text;
+  EXPECT_EQ(value_of(text, "drag_tangential"), 0.4) << text;
+  EXPECT_EQ(value_of(text, "added_mass_tangential"), 0.0) << text;
+  const double ba = 840.0 / 40.0 * std::sqrt(1.5e8 * 35.0);
+  EXPECT_NEAR(value_of(text, "axial_damping"), ba, kRelTolConversion * ba) << text;
+  EXPECT_NE(text.find("BA = -1 is a damping ratio"), std::string::npos) << text;
+  EXPECT_EQ(value_of(text, "water_density"), 1025.0) << text;
+  EXPECT_EQ(value_of(text, "gravity"), 9.80665) << text;
   const CliRun solved = run_cli("solve " + single.string() + " --solver shooting --solver fe");
   EXPECT_EQ(solved.exit_code, 0) << solved.output;
   // Lines 2 and 3: chain and wire in series through a free point with a clump: one [line].
@@ -96,6 +107,10 @@ TEST(ImportCommand, V2DeckConvertsEachLineOrSaysWhyNot) {
               kRelTolConversion * clump)
       << chain;
   EXPECT_NE(chain.find("Needs: [line]"), std::string::npos) << chain;
+  // The chain type's CaAx = 0.5 on the first segment: rho_w CaAx pi/4 Diam^2.
+  const double chain_ma_t = 0.5 * 1025.0 * kPi / 4.0 * 0.15 * 0.15;
+  EXPECT_NEAR(value_of(chain, "added_mass_tangential"), chain_ma_t, kRelTolConversion * chain_ma_t)
+      << chain;
   // Line 4 hangs from a body.
   EXPECT_NE(run.output.find("not converted: attached to a body at point 7"), std::string::npos)
       << run.output;
@@ -113,6 +128,19 @@ TEST(ImportCommand, V1DeckUsesItsOptionsAndRefusesABridle) {
   const double added_mass = 0.8 * 1020.0 * kPi / 4.0 * 0.01;
   EXPECT_NEAR(value_of(text, "weight"), weight, kRelTolConversion * weight) << text;
   EXPECT_NEAR(value_of(text, "added_mass"), added_mass, kRelTolConversion * added_mass) << text;
+  // v1 columns: Cdn = 2.0, Cdt = 0.4, Cat = 0.25; BA = -0.8 with NumSegs = 20 over 700 m; the
+  // options' water into [environment].
+  EXPECT_EQ(value_of(text, "diameter"), 0.1) << text;
+  EXPECT_EQ(value_of(text, "drag_normal"), 2.0) << text;
+  EXPECT_EQ(value_of(text, "drag_tangential"), 0.4) << text;
+  const double added_mass_tangential = 0.25 * 1020.0 * kPi / 4.0 * 0.01;
+  EXPECT_NEAR(value_of(text, "added_mass_tangential"), added_mass_tangential,
+              kRelTolConversion * added_mass_tangential)
+      << text;
+  const double ba = 0.8 * 700.0 / 20.0 * std::sqrt(8.0e8 * 100.0);
+  EXPECT_NEAR(value_of(text, "axial_damping"), ba, kRelTolConversion * ba) << text;
+  EXPECT_EQ(value_of(text, "water_density"), 1020.0) << text;
+  EXPECT_EQ(value_of(text, "gravity"), 9.81) << text;
   // 700 m of chain over 600 m x 190 m rests on the seabed at z = -200: [cable] with [seabed].
   EXPECT_NE(text.find("[seabed]"), std::string::npos) << text;
   EXPECT_NE(text.find("stiffness = 200000.0"), std::string::npos) << text;  // kBot 2e6 Pa/m x 0.1 m
@@ -127,6 +155,29 @@ TEST(ImportCommand, V1DeckUsesItsOptionsAndRefusesABridle) {
         std::string::npos)
         << run.output;
   }
+}
+
+// A positive BA is the Kelvin-Voigt coefficient itself; a BA that is not one number (a curve file,
+// a viscoelastic pair) cannot be one coefficient: that line is not converted, with the reason.
+TEST(ImportCommand, PositiveBaIsKeptAndANonConstantBaIsRefusedWithItsReason) {
+  std::string text = kV1Deck;
+  text.replace(text.find("-0.8      0.8"), 4, "3.5e5");
+  const fs::path deck = write_temp_file(kFolder, "ba.dat", text);
+  const fs::path out = deck.parent_path() / "ba";
+  fs::remove_all(out);
+  CliRun run = run_cli("import moordyn " + deck.string() + " --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::string scene = read_text(out / "ba-line-1.toml");
+  EXPECT_EQ(value_of(scene, "axial_damping"), 3.5e5) << scene;
+  EXPECT_EQ(scene.find("is a damping ratio"), std::string::npos) << scene;
+
+  text.replace(text.find("3.5e5"), 5, "ba.csv");
+  const fs::path curve = write_temp_file(kFolder, "ba-curve.dat", text);
+  run = run_cli("import moordyn " + curve.string() + " --out " +
+                (curve.parent_path() / "ba-curve").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("not converted: BA 'ba.csv' is not a constant"), std::string::npos)
+      << run.output;
 }
 
 TEST(ImportCommand, UnknownSectionExitsTwoNamingTheLineAndWritesNothing) {

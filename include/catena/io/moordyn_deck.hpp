@@ -28,6 +28,14 @@ struct MoorDynLineType {
   std::string axial_stiffness_text;            ///< EA as written
   double normal_added_mass_coefficient = 0.0;  ///< Can (v1) or Ca (v2)
   int file_line = 0;
+  double normal_drag_coefficient = 0.0;            ///< Cdn (v1) or Cd (v2)
+  double tangential_drag_coefficient = 0.0;        ///< Cdt (v1) or CdAx (v2), on pi Diam
+  double tangential_added_mass_coefficient = 0.0;  ///< Cat (v1) or CaAx (v2)
+  /// BA as written: > 0 the Kelvin-Voigt coefficient [N s]; < 0 minus a damping ratio (MoorDyn
+  /// converts it per line with the line's segment length); absent when not a number (a curve, or
+  /// a viscoelastic "BA|BA_D" pair).
+  std::optional<double> axial_damping;
+  std::string axial_damping_text;
 };
 
 /// How a point is held (MoorDyn's type or attachment column).

@@ -9,6 +9,11 @@
 ///   added_mass = Ca rho_w pi/4 Diam^2                     [kg/m]
 ///   point weight = (M - rho_w V) g, point added mass = Ca rho_w V
 ///   seabed: z = -WtrDpth, stiffness = kBot Diam           [N/m per m]
+///   diameter = Diam, drag_normal = Cd, drag_tangential = CdAx
+///   added_mass_tangential = CaAx rho_w pi/4 Diam^2         [kg/m]
+///   axial_damping = BA, or for BA = -zeta < 0 MoorDyn's zeta (UnstrLen / NumSegs) sqrt(EA MassDen)
+///                                                         [N s]
+///   [environment] water_density = rho_w, gravity = g (the deck's options, or MoorDyn's defaults)
 /// A single uniform line with positive weight that stays off the seabed is a `[cable]` scene,
 /// which Catena solves today; chains, buoyant lines and lines on the seabed use the `[line]` and
 /// `[seabed]` tables of the general-line and seabed capabilities, and each such scene says in its

@@ -12,6 +12,9 @@
 ///     description = "..."              # optional
 ///     tags = ["mooring"]               # optional
 ///     [cable]  length, weight, EA (number or "inf"), mass, added_mass = 0, a = [x, z], b = [x, z]
+///              (also in each [[line.segments]]: diameter, drag_normal = 0, drag_tangential = 0,
+///              added_mass_tangential = 0; and the damping keys)
+///     [environment]  water_density = 1025, gravity = 9.80665
 ///     [taut_inclined]  eps, phi_deg, lambda2, mass_ratio = 1
 ///     [gale]   xi1, xi2   |   h_over_b, sag_param            (exactly one of the three forms)
 ///     [request]  inplane_modes = 6, outofplane_modes = 0, shapes = false, points = 101,
@@ -19,6 +22,10 @@
 ///     [request.forced]  end = "b", direction = "tangential" | "normal" | "out_of_plane" | [x, z],
 ///                amplitude, amplitude_unit = "m" | "a", frequencies = [...],
 ///                frequency_unit = "rad/s" | "Hz" | "kL/pi" | "gale"
+///     [request.motion]  direction = [x, z] | "out_of_plane", amplitude, periods (regular), or
+///                spectrum = {omega, density} | jonswap = {hs, tp, gamma} with rao = {omega,
+///                amplitude, phase_deg, per} (irregular); frequencies, duration, tolerance,
+///                max_iterations
 ///     [solvers]  fe = { elements = 400 }, shooting = {}   (only these run; default: all)
 ///     [checks]   frequency_rel, mac_min, shape_max_diff, tension_rel, orthogonality
 ///     [[published]]  source, quantity, unit, modes, values, decimals

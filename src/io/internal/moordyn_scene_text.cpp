@@ -29,14 +29,39 @@ SegmentProperties segment_of(const MoorDynDeck& deck, int line_id) {
                                    [&](const MoorDynLineType& t) { return t.name == line.type; });
   const double area = kPi / 4.0 * type.diameter_m * type.diameter_m;
   const double rho = deck.water_density();
-  return {line.id,
-          type.name,
-          line.length_m,
-          (type.mass_kg_per_m - rho * area) * deck.gravity(),
-          *type.axial_stiffness_n,
-          type.mass_kg_per_m,
-          type.normal_added_mass_coefficient * rho * area,
-          type.diameter_m};
+  SegmentProperties segment;
+  segment.line = line.id;
+  segment.type = type.name;
+  segment.length_m = line.length_m;
+  segment.weight_n_per_m = (type.mass_kg_per_m - rho * area) * deck.gravity();
+  segment.axial_stiffness_n = *type.axial_stiffness_n;
+  segment.mass_kg_per_m = type.mass_kg_per_m;
+  segment.added_mass_kg_per_m = type.normal_added_mass_coefficient * rho * area;
+  segment.diameter_m = type.diameter_m;
+  // MoorDyn's drag acts on Diam (normal) and on the perimeter pi Diam (tangential), as Catena's
+  // MorisonDrag does (Line.cpp: Dp = 1/2 rho Cdn d l |vp| vp, Dq = 1/2 rho Cdt pi d l |vq| vq);
+  // its tangential added mass is rho_w Cat times the volume (Line.cpp: M = m + rho_w V (Can (I -
+  // Q) + Cat Q)).
+  segment.drag_normal = type.normal_drag_coefficient;
+  segment.drag_tangential = type.tangential_drag_coefficient;
+  segment.added_mass_tangential_kg_per_m = type.tangential_added_mass_coefficient * rho * area;
+  segment.deck_segments = line.segments;
+  // BA is the coefficient of MoorDyn's segment strain rate, Td = BA d(eps)/dt [N s]: Catena's
+  // Kelvin-Voigt c_a, tau = EA eps + c_a d(eps)/dt. A negative BA is minus a damping ratio zeta,
+  // which MoorDyn-C turns into BA = zeta (UnstrLen / N) sqrt(EA rho A) with rho A = MassDen (its
+  // Line::initialize, source/Line.cpp, FloatingArrayDesign/MoorDyn): zeta of the critical damping
+  // of ONE of its N segments' axial mode. The coefficient therefore depends on the deck's segment
+  // count; converting with that count gives the damping MoorDyn actually applies (a continuum
+  // line has no segment, so it cannot keep "zeta" itself).
+  const double ba = *type.axial_damping;
+  if (ba < 0.0) {
+    segment.damping_ratio = -ba;
+    segment.axial_damping_n_s = -ba * line.length_m / line.segments *
+                                std::sqrt(*type.axial_stiffness_n * type.mass_kg_per_m);
+  } else {
+    segment.axial_damping_n_s = ba;
+  }
+  return segment;
 }
 
 std::optional<double> seabed_height(const MoorDynDeck& deck) {
@@ -77,6 +102,17 @@ std::string header(const ChainDescription& d,
       "m/s^2, "
       "rho_w = {} kg/m^3.\n",
       d.gravity, d.water_density);
+  out += fmt::format(
+      "# diameter = Diam, drag_normal = Cd, drag_tangential = CdAx (on pi Diam), "
+      "added_mass_tangential = CaAx rho_w pi/4 Diam^2, axial_damping = BA [N s].\n");
+  for (const auto& s : d.segments) {
+    if (s.damping_ratio < 0.0) continue;
+    out += fmt::format(
+        "# Line {}: BA = -{} is a damping ratio: axial_damping = {} (UnstrLen / NumSegs) "
+        "sqrt(EA MassDen) = {:.6g} N s with the deck's NumSegs = {} (MoorDyn's rule; it depends on "
+        "the deck's segment count).\n",
+        s.line, s.damping_ratio, s.damping_ratio, s.axial_damping_n_s, s.deck_segments);
+  }
   if (needs.empty()) {
     out += "# Needs: nothing beyond the one-segment [cable] (Catena solves it today).\n";
   } else {
@@ -90,14 +126,27 @@ std::string header(const ChainDescription& d,
                    name, lines, d.deck_file);
 }
 
+// The hydrodynamic and damping keys of a section (docs/reference/scene-format.md); a deck's zero
+// diameter gives no drag keys (a diameter in a scene must be > 0).
+std::string hydrodynamic_keys(const SegmentProperties& s) {
+  std::string out;
+  if (s.diameter_m > 0.0) {
+    out += fmt::format("diameter = {}\ndrag_normal = {}\ndrag_tangential = {}\n",
+                       number(s.diameter_m), number(s.drag_normal), number(s.drag_tangential));
+  }
+  return out + fmt::format("added_mass_tangential = {}\naxial_damping = {}\n",
+                           number(s.added_mass_tangential_kg_per_m), number(s.axial_damping_n_s));
+}
+
 std::string cable_table(const ChainDescription& d) {
   const SegmentProperties& s = d.segments.front();
   return fmt::format(
-      "[cable]\nlength = {}\nweight = {}\nEA = {}\nmass = {}\nadded_mass = {}\na = [{}, {}]\nb = "
-      "[{}, {}]\n\n",
+      "[cable]\nlength = {}\nweight = {}\nEA = {}\nmass = {}\nadded_mass = {}\n{}a = [{}, {}]\n"
+      "b = [{}, {}]\n\n",
       number(s.length_m), number(s.weight_n_per_m), number(s.axial_stiffness_n),
-      number(s.mass_kg_per_m), number(s.added_mass_kg_per_m), number(d.geometry.a_m.x()),
-      number(d.geometry.a_m.y()), number(d.geometry.b_m.x()), number(d.geometry.b_m.y()));
+      number(s.mass_kg_per_m), number(s.added_mass_kg_per_m), hydrodynamic_keys(s),
+      number(d.geometry.a_m.x()), number(d.geometry.a_m.y()), number(d.geometry.b_m.x()),
+      number(d.geometry.b_m.y()));
 }
 
 std::string line_table(const ChainDescription& d) {
@@ -108,9 +157,9 @@ std::string line_table(const ChainDescription& d) {
     out += fmt::format(
         "[[line.segments]]                 # MoorDyn line {}\nlength = {}\nweight = {}\nEA = "
         "{}\nmass = {}\n"
-        "added_mass = {}\n",
+        "added_mass = {}\n{}",
         s.line, number(s.length_m), number(s.weight_n_per_m), number(s.axial_stiffness_n),
-        number(s.mass_kg_per_m), number(s.added_mass_kg_per_m));
+        number(s.mass_kg_per_m), number(s.added_mass_kg_per_m), hydrodynamic_keys(s));
   }
   for (const auto& p : d.points) {
     out += fmt::format(
@@ -167,6 +216,10 @@ std::string scene_text(const ChainDescription& d,
                        bool seabed,
                        bool as_line) {
   std::string out = header(d, name, needs) + (as_line ? line_table(d) : cable_table(d));
+  // The deck's water (WtrDnsty/rho, g/gravity; MoorDyn's defaults when silent): the Morison drag's
+  // density; the weights above were computed with both.
+  out += fmt::format("[environment]\nwater_density = {}\ngravity = {}\n\n", number(d.water_density),
+                     number(d.gravity));
   if (seabed) {
     out += fmt::format(
         "[seabed]                          # kBot {} Pa/m times Diam {} m at end A\nz = "

@@ -29,6 +29,15 @@ struct SegmentProperties {
   double mass_kg_per_m = 0.0;
   double added_mass_kg_per_m = 0.0;  ///< Ca rho_w pi/4 Diam^2
   double diameter_m = 0.0;
+  double drag_normal = 0.0;                     ///< Cd
+  double drag_tangential = 0.0;                 ///< CdAx
+  double added_mass_tangential_kg_per_m = 0.0;  ///< CaAx rho_w pi/4 Diam^2
+  /// BA [N s], or for BA = -zeta < 0 what MoorDyn makes of it: zeta (UnstrLen / NumSegs)
+  /// sqrt(EA MassDen) (moordyn_scene_text.cpp).
+  double axial_damping_n_s = 0.0;
+  /// zeta when BA was a damping ratio, else -1; and the line's NumSegs.
+  double damping_ratio = -1.0;
+  int deck_segments = 0;
 };
 
 struct PointAttachment {
