@@ -100,10 +100,12 @@ TEST(FeDrag, ZeroDragProfileGivesExactlyTheDampedForcedResponse) {
   ASSERT_TRUE(t.converged) << t.diagnostic;
   ASSERT_EQ(t.s_m.size(), r.s_m.size());
   for (Index j = 0; j < r.s_m.size(); ++j) {
-    EXPECT_EQ(t.amplitude_n[j], std::hypot(r.tension_n[j], r.tension_imag_n[j])) << j;
+    // The driver's modulus, sqrt(re^2 + im^2), of the same complex tension.
+    const double re = r.tension_n[j], im = r.tension_imag_n[j];
+    EXPECT_EQ(t.amplitude_n[j], std::sqrt(re * re + im * im)) << j;
     EXPECT_EQ(t.phase_deg[j], std::atan2(r.tension_imag_n[j], r.tension_n[j]) * 180.0 / kPi);
-    const double motion2 = r.u[j] * r.u[j] + r.u_imag[j] * r.u_imag[j] + r.w[j] * r.w[j] +
-                           r.w_imag[j] * r.w_imag[j];
+    const double motion2 =
+        r.u[j] * r.u[j] + r.u_imag[j] * r.u_imag[j] + r.w[j] * r.w[j] + r.w_imag[j] * r.w_imag[j];
     EXPECT_NEAR(t.motion_m[j], std::sqrt(motion2), 1e-15 * std::sqrt(motion2) + 1e-300);
   }
   EXPECT_EQ(t.relative_error_estimate, r.relative_error_estimate);
@@ -156,7 +158,7 @@ TEST(FeDrag, UniformNormalDragOutOfPlaneMatchesTheDampedString) {
                              .amplitude_m = d,
                              .omegas_rad_s = {0.5 * w1, w1, 2.5 * w1}};
   const SolveContext context{problem, bar.prepared.statics, bar.prepared.groups, request};
-  const ForcedOutcome outcome = internal::fe_drag_forced_response(
+  const internal::ForcedOutcome outcome = internal::fe_drag_forced_response(
       forced, drag, context, bar.plan, bar.levels, {}, bar.timings);
   ASSERT_EQ(outcome.responses.size(), 3u);
   for (const ForcedResponse& r : outcome.responses) {
@@ -192,7 +194,7 @@ TEST(FeDrag, UniformTangentialDragAlongTheBarMatchesTheDampedRodWithinItsEstimat
                              .amplitude_m = d,
                              .omegas_rad_s = {0.5 * w1, w1, 1.7 * w1}};
   const SolveContext context{problem, bar.prepared.statics, bar.prepared.groups, request};
-  const ForcedOutcome outcome = internal::fe_drag_forced_response(
+  const internal::ForcedOutcome outcome = internal::fe_drag_forced_response(
       forced, drag, context, bar.plan, bar.levels, {}, bar.timings);
   ASSERT_EQ(outcome.responses.size(), 3u);
   for (const ForcedResponse& r : outcome.responses) {
@@ -244,7 +246,9 @@ Problem chain_wire_chain_on_seabed() {
   p.line.segments = {chain, wire, top};
   p.supports.a_m = Vec2(0.0, -150.0);
   p.supports.b_m = Vec2(820.0, 0.0);
-  p.seabed = Seabed{.z_m = -150.0, .friction = 0.3, .stiffness_n_per_m2 = 1e5,
+  p.seabed = Seabed{.z_m = -150.0,
+                    .friction = 0.3,
+                    .stiffness_n_per_m2 = 1e5,
                     .tangential_stiffness_n_per_m2 = 1e3};
   return p;
 }
