@@ -280,7 +280,6 @@ TEST(FeDrag, DynamicTensionOfAChainWireChainLineOnTheSeabedReachesItsFixedPoint)
       "chain-wire-chain on the seabed, 200 frequencies: %.3f s (statics included), %d iterations, "
       "residual %.2g, estimate %.2g, fairlead sigma_T %.6g N\n",
       seconds, t.iterations, t.residual, t.relative_error_estimate, t.fairlead.std_n);
-  std::printf("%s\n", solved.output.summary.full_report().c_str());
   EXPECT_EQ(solved.output.summary.termination, Termination::Converged)
       << solved.output.summary.full_report();
   EXPECT_TRUE(t.converged) << t.diagnostic;
