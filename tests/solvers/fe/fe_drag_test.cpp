@@ -290,5 +290,28 @@ TEST(FeDrag, DynamicTensionOfAChainWireChainLineOnTheSeabedReachesItsFixedPoint)
   EXPECT_GT(t.normal_damping_n_s_per_m2[t.s_m.size() - 1], 0.0);
 }
 
+TEST(FeDrag, RegularOutOfPlaneMotionOfTheSeabedLineReachesItsFixedPoint) {
+  // Out of plane: c_n from |v|, no first-order dynamic tension; one fixed point per period.
+  const Problem problem = chain_wire_chain_on_seabed();
+  SolveRequest request = modes_request(0, 0);
+  MotionRequest motion;
+  motion.direction = ForcingDirection::OutOfPlane;
+  motion.amplitude_m = 3.0;
+  motion.periods_s = {8.0, 14.0};
+  request.motion = motion;
+  const Solved solved = solve(problem, request, {});
+  EXPECT_EQ(solved.output.summary.termination, Termination::Converged)
+      << solved.output.summary.full_report();
+  ASSERT_EQ(solved.output.dynamic_tension.size(), 2u);
+  for (const DynamicTension& t : solved.output.dynamic_tension) {
+    EXPECT_TRUE(t.converged) << t.diagnostic;
+    EXPECT_LE(t.residual, motion.tolerance);
+    const Index last = t.s_m.size() - 1;
+    EXPECT_NEAR(t.motion_m[last], motion.amplitude_m, 1e-12 * motion.amplitude_m);
+    EXPECT_GT(t.normal_damping_n_s_per_m2[last], 0.0);
+    EXPECT_EQ(t.tangential_damping_n_s_per_m2.cwiseAbs().maxCoeff(), 0.0);
+  }
+}
+
 }  // namespace
 }  // namespace catena
