@@ -32,9 +32,9 @@ double line_modal_mass(Plane plane,
   if (mode.s_m.size() < 2) return -1.0;
   auto density = [&](double s, const Vec2& motion) {
     const LineSegment segment = statics.segment_at(s);
-    return plane == Plane::InPlane
-               ? segment.mass_kg_per_m * motion.x() + segment.normal_mass_kg_per_m() * motion.y()
-               : segment.normal_mass_kg_per_m() * motion.x();
+    return plane == Plane::InPlane ? segment.tangential_mass_kg_per_m() * motion.x() +
+                                         segment.normal_mass_kg_per_m() * motion.y()
+                                   : segment.normal_mass_kg_per_m() * motion.x();
   };
   double sum = 0.0;
   for (Index k = 1; k < mode.s_m.size(); ++k) {

@@ -83,7 +83,7 @@ void lay_out_chain(FeChain& chain,
   chain.equal_elements = mesh.is_one_piece();
   chain.element_length_m.resize(N);
   chain.axial_stiffness_n.resize(N);
-  chain.mass_kg_per_m.resize(N);
+  chain.tangential_mass_kg_per_m.resize(N);
   chain.normal_mass_kg_per_m.resize(N);
   chain.tangential_damping_n_s_per_m2.resize(N);
   chain.normal_damping_n_s_per_m2.resize(N);
@@ -108,7 +108,7 @@ void lay_out_chain(FeChain& chain,
       chain.element_length_m[j] = l0;
       chain.axial_stiffness_n[j] =
           section.is_inextensible() ? penalty_axial_stiffness_n : section.axial_stiffness_n;
-      chain.mass_kg_per_m[j] = section.mass_kg_per_m;
+      chain.tangential_mass_kg_per_m[j] = section.tangential_mass_kg_per_m();
       chain.normal_mass_kg_per_m[j] = section.normal_mass_kg_per_m();
       chain.tangential_damping_n_s_per_m2[j] = section.damping.tangential_n_s_per_m2;
       chain.normal_damping_n_s_per_m2[j] = section.damping.normal_n_s_per_m2;

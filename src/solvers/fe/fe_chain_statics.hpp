@@ -33,11 +33,12 @@ struct FeChain {
   /// positions along the line are then s_i = i l0.
   bool equal_elements = true;
   /// Per element j = 0..N-1: unstretched length l0_j [m], axial stiffness used (the penalty
-  /// H/kappa where the segment is inextensible) [N], mass and normal mass per unstretched length
-  /// [kg/m], and the support-a-relative vertical force at its midpoint minus V_A [N].
+  /// H/kappa where the segment is inextensible) [N], the inertia per unstretched length along the
+  /// line m + ma_t (tangential added mass, 0 unless given) and across it M = m + ma [kg/m], and
+  /// the support-a-relative vertical force at its midpoint minus V_A [N].
   Vector element_length_m;
   Vector axial_stiffness_n;
-  Vector mass_kg_per_m;
+  Vector tangential_mass_kg_per_m;
   Vector normal_mass_kg_per_m;
   /// Per element: the section's damping (docs/explanation/physics.md, "Damping"): tangential and
   /// normal drag c_t, c_n [N s/m per m] and Kelvin-Voigt axial damping c_a [N s]; all zero on an

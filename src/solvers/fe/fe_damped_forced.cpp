@@ -90,7 +90,8 @@ FeDampedLevelResponse respond_damped_on_level(Plane plane,
                                               const FeDampingMatrix& damping,
                                               double omega,
                                               const Vec2& end_a,
-                                              const Vec2& end_b) {
+                                              const Vec2& end_b,
+                                              ComplexBandedLdlt* pencil) {
   FeDampedLevelResponse out;
   Vector boundary(plane == Plane::InPlane ? 4 : 2);
   if (plane == Plane::InPlane) {
@@ -101,10 +102,12 @@ FeDampedLevelResponse respond_damped_on_level(Plane plane,
   Eigen::VectorXcd rhs(matrices.stiffness.rows());
   rhs.real() = -(matrices.boundary_coupling * boundary);
   rhs.imag() = -omega * (damping.boundary_coupling * boundary);
-  ComplexBandedLdlt factor;
-  bool singular =
-      !factor.factorize(matrices.stiffness, damping.damping, matrices.mass, Complex(0.0, omega)) ||
-      factor.pivot_ratio() <= 1e-13;
+  ComplexBandedLdlt own;
+  ComplexBandedLdlt& factor = pencil ? *pencil : own;
+  const bool factored = pencil ? factor.factorize(Complex(0.0, omega))
+                               : factor.factorize(matrices.stiffness, damping.damping,
+                                                  matrices.mass, Complex(0.0, omega));
+  bool singular = !factored || factor.pivot_ratio() <= 1e-13;
   Eigen::VectorXcd x = rhs;
   if (!singular) {
     factor.solve_in_place(x.data());
@@ -182,13 +185,15 @@ struct DampedMeshResponse {
 
 DampedMeshResponse respond_on_mesh(const DampedForcing& forcing,
                                    const std::vector<FeLevel>& mesh,
+                                   std::vector<ComplexBandedLdlt>& pencils,
                                    double omega) {
   DampedMeshResponse out;
   std::vector<FeResponseField> real, imag;
-  for (const FeLevel& level : mesh) {
+  for (std::size_t k = 0; k < mesh.size(); ++k) {
+    const FeLevel& level = mesh[k];
     FeDampedLevelResponse response = respond_damped_on_level(
         forcing.plane, level.chain, level.matrices.at(forcing.plane),
-        level.damping.at(forcing.plane), omega, forcing.end_a, forcing.end_b);
+        level.damping.at(forcing.plane), omega, forcing.end_a, forcing.end_b, &pencils[k]);
     if (!response.ok) {
       out.diagnostic = response.diagnostic;
       return out;
@@ -224,17 +229,23 @@ double complex_difference(const FeSampled& a_re,
                                    max_station_difference(a_im, b_im, tension));
 }
 
+// The pencils (K, C, M) of the forced meshes' levels, set once for a run of frequencies:
+// [0] the main fine mesh's levels, [1] the main coarse mesh's.
+using MeshPencils = std::vector<std::vector<ComplexBandedLdlt>>;
+
 void respond(ForcedResponse& response,
              const DampedForcing& forcing,
              const FePlan& plan,
              const FeLevels& levels,
-             const std::vector<FeNaturalFrequency>& naturals) {
+             const std::vector<FeNaturalFrequency>& naturals,
+             MeshPencils& pencils) {
   const double omega = response.omega_rad_s;
   const DampedMeshResponse fine =
-      respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.main_fine)], omega);
+      respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.main_fine)], pencils[0], omega);
   DampedMeshResponse coarse;
   if (plan.has_coarse() && fine.diagnostic.empty())
-    coarse = respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.main_coarse)], omega);
+    coarse = respond_on_mesh(forcing, levels[static_cast<std::size_t>(plan.main_coarse)],
+                             pencils[1], omega);
   response.diagnostic = fine.diagnostic.empty() ? coarse.diagnostic : fine.diagnostic;
   if (!response.diagnostic.empty()) return;
   auto sampled = [&](const FeResponseField& field) {
@@ -315,10 +326,18 @@ ForcedOutcome fe_damped_forced_response(const ForcedRequest& request,
   std::vector<std::size_t> meshes = {static_cast<std::size_t>(plan.main_fine)};
   if (plan.has_coarse()) meshes.push_back(static_cast<std::size_t>(plan.main_coarse));
   assemble_missing(levels, forcing.plane, meshes);
-  for (std::size_t m : meshes)
-    for (FeLevel& level : levels[m])
+  MeshPencils pencils;
+  for (std::size_t m : meshes) {
+    pencils.emplace_back(levels[m].size());
+    for (std::size_t k = 0; k < levels[m].size(); ++k) {
+      FeLevel& level = levels[m][k];
       if (!level.damping.count(forcing.plane))
         level.damping[forcing.plane] = assemble_damping(forcing.plane, level.chain);
+      const FeMatrices& matrices = level.matrices.at(forcing.plane);
+      pencils.back()[k].set_pencil(matrices.stiffness, level.damping.at(forcing.plane).damping,
+                                   matrices.mass);
+    }
+  }
   // Only a mode the damping does not reach (delta = 0) has a singular resonance.
   std::vector<FeNaturalFrequency> undamped;
   for (const FeNaturalFrequency& mode : naturals)
@@ -331,7 +350,7 @@ ForcedOutcome fe_damped_forced_response(const ForcedRequest& request,
     response.omega_rad_s = omega;
     response.s_m = stations;
     response.diagnostic = resonance_diagnostic(omega, forcing.plane, undamped);
-    if (response.diagnostic.empty()) respond(response, forcing, plan, levels, naturals);
+    if (response.diagnostic.empty()) respond(response, forcing, plan, levels, naturals, pencils);
     response.at_resonance = !response.diagnostic.empty();
     response.near_resonance = response.diagnostic.empty() && near_damped_natural(omega, naturals);
     if (!response.diagnostic.empty()) outcome.summary.warnings.push_back(response.diagnostic);

@@ -16,12 +16,15 @@
 
 #include <vector>
 
+#include "solvers/fe/fe_complex_banded_ldlt.hpp"
 #include "solvers/fe/fe_forced.hpp"
 
 namespace catena::internal {
 
 /// The response of one level with its damping matrix; as respond_on_level, with the imaginary
-/// (quadrature) parts in `imag`.
+/// (quadrature) parts in `imag`. `pencil`, when given, holds the level's K, C, M
+/// (ComplexBandedLdlt::set_pencil) and is refactored at omega: a run of frequencies then skips
+/// the sparse matrices' scans.
 struct FeDampedLevelResponse {
   bool ok = false;
   std::string diagnostic;
@@ -35,7 +38,8 @@ FeDampedLevelResponse respond_damped_on_level(Plane plane,
                                               const FeDampingMatrix& damping,
                                               double omega,
                                               const Vec2& end_a,
-                                              const Vec2& end_b);
+                                              const Vec2& end_b,
+                                              ComplexBandedLdlt* pencil = nullptr);
 
 /// The propagated error of the damped natural roots into the response at `omega` (header).
 double damped_frequency_error_amplification(double omega,

@@ -65,7 +65,7 @@ void fill_block_tridiagonal(
 // carries l0 times the line density, as on a uniform cable.
 bool same_section(const FeChain& chain, int i) {
   return chain.element_length_m[i - 1] == chain.element_length_m[i] &&
-         chain.mass_kg_per_m[i - 1] == chain.mass_kg_per_m[i] &&
+         chain.tangential_mass_kg_per_m[i - 1] == chain.tangential_mass_kg_per_m[i] &&
          chain.normal_mass_kg_per_m[i - 1] == chain.normal_mass_kg_per_m[i];
 }
 
@@ -87,7 +87,7 @@ Eigen::Matrix2d half_element_mass(const FeChain& chain, int j) {
   const Eigen::Matrix2d ttT = t * t.transpose();
   const double M = chain.normal_mass_kg_per_m[j];
   return 0.5 * chain.element_length_m[j] *
-         (chain.mass_kg_per_m[j] * ttT + M * (Eigen::Matrix2d::Identity() - ttT));
+         (chain.tangential_mass_kg_per_m[j] * ttT + M * (Eigen::Matrix2d::Identity() - ttT));
 }
 
 // The seabed foundation out of plane, lumped as inplane_foundation (fe_operators.hpp): node i
@@ -138,7 +138,7 @@ FeMatrices assemble_inplane(const FeChain& chain) {
     if (same_section(chain, i) && !has_point(chain, i)) {
       // The uniform cable's expression, kept term for term so its results stay bit-identical.
       node[static_cast<std::size_t>(i)] =
-          chain.element_length_m[i] * (chain.mass_kg_per_m[i] * t * t.transpose() +
+          chain.element_length_m[i] * (chain.tangential_mass_kg_per_m[i] * t * t.transpose() +
                                        chain.normal_mass_kg_per_m[i] * nrm * nrm.transpose());
     } else {
       // A joint or a point: each half element keeps its own frame. At a point weight the static

@@ -22,6 +22,7 @@
 #include "solvers/common/work_meter.hpp"
 #include "solvers/fe/fe_damped_forced.hpp"
 #include "solvers/fe/fe_damped_modes.hpp"
+#include "solvers/fe/fe_drag_forced.hpp"
 #include "solvers/fe/fe_extrapolation.hpp"
 #include "solvers/fe/fe_forced.hpp"
 #include "solvers/fe/fe_levels.hpp"
@@ -126,6 +127,10 @@ class FeNumerics final : public SolverNumerics {
     if (!note.empty()) outcome.summary.notes.push_back(note);
     return outcome;
   }
+  // The tangential inertia m + ma_t is in the chain's lumped mass (fe_operators.hpp).
+  bool handles_tangential_added_mass() const override { return true; }
+  bool handles_drag() const override { return true; }
+  ForcedOutcome forced_with_drag(const ForcedRequest& request, const DragProfile& drag) override;
 
  private:
   void require_modes_fit() const;
@@ -165,6 +170,9 @@ class FeNumerics final : public SolverNumerics {
   FeTimings timings_;
   // The natural frequencies computed per plane, for the forced response's resonance check.
   std::map<Plane, std::vector<FeNaturalFrequency>> naturals_;
+  // How the dynamic tension's natural frequencies were found (compute_naturals_for), when fe
+  // computed them itself.
+  std::string drag_naturals_note_;
 };
 
 // Bad input: every requested mode must be resolved by the coarsest mesh that feeds the result
@@ -190,8 +198,10 @@ void FeNumerics::require_modes_fit() const {
 std::optional<Outcome> FeNumerics::prepare() {
   require_modes_fit();
   const SolveRequest& request = context_.request;
-  const bool inplane_asked = request.inplane_modes > 0 ||
-                             (request.forced && forced_plane(*request.forced) == Plane::InPlane);
+  const bool inplane_asked =
+      request.inplane_modes > 0 ||
+      (request.forced && forced_plane(*request.forced) == Plane::InPlane) ||
+      (request.motion && request.motion->direction != ForcingDirection::OutOfPlane);
   const double t0_n = context_.groups.t0_n;
   if (inplane_asked && plan_.rounding_floor(t0_n, 1) > kMaxRoundingFloor)
     return Outcome{Termination::NoConvergence,
@@ -228,6 +238,24 @@ std::string FeNumerics::compute_naturals_for(Plane plane, const ForcedRequest& r
       own.modes.size(), to_string(plane), own.summary.max_error_estimate);
 }
 
+// The damped forced response with the drag profile added (fe_drag_forced.hpp). The levels, their
+// operators and the natural frequencies of the forced plane are computed on the first iterate and
+// reused by the next ones: an iterate costs the damping assembly and the complex banded solves.
+ForcedOutcome FeNumerics::forced_with_drag(const ForcedRequest& request, const DragProfile& drag) {
+  const Plane plane = forced_plane(request);
+  if (auto singular = seabed_plane_singular(plane, context_.statics)) {
+    ForcedOutcome declined;
+    declined.summary.termination = Termination::NotApplicable;
+    declined.summary.message = *singular;
+    return declined;
+  }
+  if (naturals_[plane].empty()) drag_naturals_note_ = compute_naturals_for(plane, request);
+  ForcedOutcome outcome =
+      fe_drag_forced_response(request, drag, context_, plan_, levels_, naturals_[plane], timings_);
+  if (!drag_naturals_note_.empty()) outcome.summary.notes.push_back(drag_naturals_note_);
+  return outcome;
+}
+
 // Shapes and tension from the finest main mesh (extrapolated in kappa when penalised).
 void FeNumerics::attach_shape(
     Plane plane, int i, const FeModeMatches& matches, const Vector& stations, Mode& mode) const {
@@ -258,7 +286,7 @@ void FeNumerics::attach_shape(
   const CableProperties& cable = problem.cable;
   mode.modal_mass_kg =
       plane == Plane::InPlane
-          ? inplane_modal_mass(mode, cable.mass_kg_per_m, cable.normal_mass_kg_per_m())
+          ? inplane_modal_mass(mode, cable.tangential_mass_kg_per_m(), cable.normal_mass_kg_per_m())
           : outofplane_modal_mass(mode, cable.normal_mass_kg_per_m());
 }
 

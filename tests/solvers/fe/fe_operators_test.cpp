@@ -31,9 +31,10 @@ TEST(FeOperators, SizesSymmetryAndLumpedMass) {
     EXPECT_LE((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff());
     // Each node's mass: l0 (m t t^T + M n n^T), whose trace is l0 (m + M) in plane, l0 M out.
     const double l0 = chain.element_length_m[0];
-    const double trace = plane == Plane::InPlane
-                             ? l0 * (chain.mass_kg_per_m[0] + chain.normal_mass_kg_per_m[0])
-                             : l0 * chain.normal_mass_kg_per_m[0];
+    const double trace =
+        plane == Plane::InPlane
+            ? l0 * (chain.tangential_mass_kg_per_m[0] + chain.normal_mass_kg_per_m[0])
+            : l0 * chain.normal_mass_kg_per_m[0];
     for (int i = 0; i < 19; ++i) {
       EXPECT_NEAR(M.block(per_node * i, per_node * i, per_node, per_node).trace(), trace,
                   1e-12 * trace);
