@@ -163,16 +163,24 @@ void set_fields(DynamicTension& t,
   t.motion_m = var_x.cwiseSqrt();
 }
 
-// The largest error estimate of the responses that carry weight (-1 when one has none).
+// The estimated relative error of the tension: regular, the response's own; irregular, the
+// responses' estimates weighted by their share of the tension variance, sum q S tau^2 e /
+// sum q S tau^2 (the relative error of sigma^2 is twice that, of sigma the same), so that a
+// frequency where the spectrum carries no energy does not set it. -1 when a response with weight
+// has none.
 double response_estimate(const std::vector<ForcedResponse>& responses, const Excitation& e) {
-  double largest = 0.0;
+  double weighted = 0.0, total = 0.0, largest = 0.0;
   for (std::size_t k = 0; k < responses.size(); ++k) {
-    if (weight_of(e, Eigen::Index(k)) == 0.0) continue;
+    const double q = weight_of(e, Eigen::Index(k));
+    if (q == 0.0) continue;
     const double estimate = responses[k].relative_error_estimate;
     if (estimate < 0.0) return -1.0;
+    const double share = q * responses[k].max_abs_tension_n * responses[k].max_abs_tension_n;
+    weighted += share * estimate;
+    total += share;
     largest = std::max(largest, estimate);
   }
-  return largest;
+  return total > 0.0 ? weighted / total : largest;
 }
 
 // The relative residual max |G(V) - V| / max |G(V)|.
