@@ -442,9 +442,9 @@ SolverEntry make_shooting_entry() {
       "(ERKStep, Verner's 6(5) pair), "
       "modes counted by conjugate points (Morse index) and refined by safeguarded Newton steps "
       "with the frequency derivative of the shot (Brent's method as fallback) on a count-aware "
-      "phase function; any sag, inclination, EA (inf exact), added mass; damped lines off the "
-      "seabed "
-      "by complex roots continued from the undamped ones, counted by the argument principle",
+      "phase function; any sag, inclination, EA (inf exact), added mass; damped lines (on the "
+      "seabed too) by complex roots continued from the undamped ones, counted by the argument "
+      "principle",
       shooting_knobs(), [](const SolveContext& context, const ShootingSolverOptions& options) {
         return std::make_unique<ShootingNumerics>(context, options);
       });
