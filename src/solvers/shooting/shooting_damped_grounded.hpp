@@ -20,16 +20,15 @@
 /// stay diagonal. The undamped run's Pruefer angle does not carry over: with complex coefficients
 /// the angle is complex and its cosine overflows along a damped wave. Instead each column is
 /// carried normalised in balanced variables z = (beta phi, F / beta), beta^2 = sqrt(|c_d| / |b_d|)
-/// at the run's start, as z = exp(g) y with
-///
-///     y' = A y - (y^H A y) y,   g' = y^H A y,   A = [0, beta^2 b_d; -c_d / beta^2, 0],
-///
-/// which is exact for any scalar g (z' = A z) and keeps |y| = 1 (d|y|^2/dx = 0 on |y| = 1). Where
-/// the foundation dominates, A is nearly constant and y sits at its growing eigenvector (y' = 0):
-/// the pair is smooth on the scale of the coefficients, so CVODE's BDF (the transient toward the
-/// eigenvector is stiff, with rate 2 sqrt(-b c)) takes a few dozen steps however many e-folds the
-/// growth spans, and the complex log scale g keeps both the growth and the turning of the phase
-/// (exp(i Im g)) out of y. Where the wave dominates, y turns at the wave's rate as the undamped
+/// at the run's start, as z = exp(g) y, |y| = 1, g complex, z' = A z with
+/// A = [0, beta^2 b_d; -c_d / beta^2, 0]. Each step propagates y by Magnus' fourth-order
+/// exponential method (two Gauss points, the exponential of the traceless 2 x 2 in closed form,
+/// its growth e^mu put into g) and renormalises it (the norm into g); step-doubling control at
+/// rtol (written by hand: no SUNDIALS integrator is exponential), stopping at every piece
+/// end and every station of the drag profile (kinks of c(s)): exact for frozen coefficients, so
+/// the steps follow only the variation of T(s) and c(s), however stiff the foundation (where it
+/// dominates, y sits at the growing eigenvector and g takes the growth and the turning of the
+/// phase, exp(i Im g)). Where the wave dominates, y turns at the wave's rate as the undamped
 /// columns do. Nothing is counted (the damped roots are counted by the argument principle).
 
 #include <Eigen/Core>
@@ -54,9 +53,9 @@ void damped_grounded_coefficients(const RhsData& data,
                                   std::complex<double>* b,
                                   std::complex<double>* c);
 
-/// Integrates the grounded run of one damped shot (from A) with CVODE's BDF on the normalised
-/// columns. Reads the coefficients, lambda, the damping and the drag from `data` at every call, so
-/// the owner may change them between shots; data.piece is moved along the run.
+/// Integrates the grounded run of one damped shot (from A) on the normalised columns (header).
+/// Reads the coefficients, lambda, the damping and the drag from `data` at every call, so the owner
+/// may change them between shots; data.piece is moved along the run.
 class DampedGroundedRun {
  public:
   /// `data` outlives the run; `pieces` the run length (grounded_run_length).
@@ -69,12 +68,13 @@ class DampedGroundedRun {
   double end_x() const;
   /// The run's pieces (the next piece is the first the general shot takes).
   std::size_t pieces() const;
-  /// Starts a shot at x = 0 (phi = 0, F = I) at data.lambda with the tolerances.
+  /// Starts a shot at x = 0 (phi = 0, F = I) at data.lambda with the relative tolerance (the
+  /// columns are unit vectors: the absolute one is not used).
   void begin(double relative_tolerance, double absolute_tolerance);
   /// Integrates on to x (non-decreasing, at most end_x()) and returns the frame there.
-  /// Throws ShootingFailure when CVODE fails.
+  /// Throws ShootingFailure beyond max_steps or on a non-finite step.
   DampedGroundedFrame advance_to(double x);
-  /// CVODE steps and RHS evaluations of the current shot.
+  /// Accepted and rejected steps and coefficient evaluations of the current shot.
   long steps() const;
   long rhs_evaluations() const;
 
