@@ -16,7 +16,9 @@ ShootingPiece piece_of(const CableProperties& section, double s_begin, double V_
   p.V_begin = V_begin;
   p.W0 = section.weight_n_per_m;
   p.compliance = section.is_inextensible() ? 0.0 : 1.0 / section.axial_stiffness_n;
-  p.m = section.mass_kg_per_m;
+  // The tangential inertia: the mass and the tangential added mass (0 unless given, so that a
+  // line without it is unchanged to the bit).
+  p.m = section.tangential_mass_kg_per_m();
   p.M = section.normal_mass_kg_per_m();
   p.damping_tangential = section.damping.tangential_n_s_per_m2;
   p.damping_normal = section.damping.normal_n_s_per_m2;

@@ -26,7 +26,7 @@ struct ShootingPiece {
   double V_begin = 0.0;                ///< vertical force just after the start [N]
   double W0 = 0.0;                     ///< weight per unstretched length [N/m]
   double compliance = 0.0;             ///< 1/EA [1/N], 0 when inextensible
-  double m = 1.0;                      ///< mass [kg/m]
+  double m = 1.0;                      ///< tangential mass m + ma_t [kg/m]
   double M = 1.0;                      ///< normal mass m + ma [kg/m]
   bool grounded = false;               ///< resting on the seabed
   double tension_begin = 0.0;          ///< grounded: tension at the start before clipping [N]
@@ -61,7 +61,7 @@ struct ShootingCoefficients {
   double V_A = 0.0;         ///< vertical force at s = 0 [N]
   double W0 = 0.0;          ///< weight per unstretched length [N/m] (first piece)
   double compliance = 0.0;  ///< 1/EA [1/N], 0 when inextensible (first piece)
-  double m = 1.0;           ///< mass [kg/m] (tangential inertia; first piece)
+  double m = 1.0;           ///< tangential mass m + ma_t [kg/m] (first piece)
   double M = 1.0;           ///< normal mass m + ma [kg/m] (first piece; the mass scale)
   double t_ref = 1.0;       ///< tension scale [N]: max(T_A, T_B)
   /// Pieces from a to b (one for a uniform cable) and point attachments in order of s. Empty

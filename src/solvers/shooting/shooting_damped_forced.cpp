@@ -82,7 +82,8 @@ ForcedResponse damped_forced_response(DampedShootingIntegrator& integrator,
                                       const Drive& drive,
                                       double omega,
                                       const Vector& stations,
-                                      double relative_tolerance) {
+                                      double relative_tolerance,
+                                      bool estimate) {
   ForcedResponse response;
   response.omega_rad_s = omega;
   if (drive.diagnostic) {
@@ -95,6 +96,10 @@ ForcedResponse damped_forced_response(DampedShootingIntegrator& integrator,
   const ComplexProfile p =
       damped_response(integrator.shoot(lambda, 1.0, &x, from_b), drive, k, stations, from_b);
   set_response(response, p, stations, drive.plane == Plane::InPlane || drive.string_only);
+  if (!estimate) {
+    response.relative_error_estimate = -1.0;
+    return response;
+  }
   const ComplexProfile q = damped_response(integrator.shoot(lambda, kEstimateFactor, &x, from_b),
                                            drive, k, stations, from_b);
   response.relative_error_estimate =
@@ -104,20 +109,22 @@ ForcedResponse damped_forced_response(DampedShootingIntegrator& integrator,
 
 }  // namespace
 
-ForcedOutcome shooting_damped_forced_responses(const ShootingCoefficients& k,
+ForcedOutcome shooting_damped_forced_responses(DampedShootingIntegrator& integrator,
+                                               const ShootingCoefficients& k,
                                                const ForcedRequest& forced,
                                                const Vector& stations,
                                                const IntegratorSettings& settings,
+                                               bool estimate,
                                                WorkMeter* meter) {
   ForcedOutcome outcome;
   SolverSummary& summary = outcome.summary;
   const std::size_t asked = forced.omegas_rad_s.size();
+  const long rhs_before = integrator.total_rhs_evaluations();
   try {
     const Drive drive = make_drive(k, forced);
-    DampedShootingIntegrator integrator(drive.plane, k, settings);
     for (double omega : forced.omegas_rad_s) {
-      outcome.responses.push_back(damped_forced_response(integrator, k, forced, drive, omega,
-                                                         stations, settings.relative_tolerance));
+      outcome.responses.push_back(damped_forced_response(
+          integrator, k, forced, drive, omega, stations, settings.relative_tolerance, estimate));
       if (!outcome.responses.back().diagnostic.empty()) {
         summary.warnings.push_back(fmt::format("forced response at {:.10g} rad/s: {}", omega,
                                                outcome.responses.back().diagnostic));
@@ -128,7 +135,7 @@ ForcedOutcome shooting_damped_forced_responses(const ShootingCoefficients& k,
     summary.message =
         fmt::format("{} of {} forced frequencies (damped)", outcome.responses.size(), asked);
     summary.iterations = static_cast<long>(asked);
-    summary.operations = integrator.total_rhs_evaluations();
+    summary.operations = integrator.total_rhs_evaluations() - rhs_before;
   } catch (const ShootingFailure& failure) {
     summary.termination =
         outcome.responses.empty() ? Termination::NumericalFailure : Termination::NoConvergence;
@@ -137,6 +144,28 @@ ForcedOutcome shooting_damped_forced_responses(const ShootingCoefficients& k,
     summary.warnings.push_back(fmt::format("forced response: {}", failure.what()));
   }
   return outcome;
+}
+
+ForcedOutcome shooting_damped_forced_responses(const ShootingCoefficients& k,
+                                               const ForcedRequest& forced,
+                                               const Vector& stations,
+                                               const IntegratorSettings& settings,
+                                               WorkMeter* meter) {
+  try {
+    DampedShootingIntegrator integrator(damped_forced_plane(k, forced), k, settings);
+    return shooting_damped_forced_responses(integrator, k, forced, stations, settings, true, meter);
+  } catch (const ShootingFailure& failure) {
+    ForcedOutcome outcome;
+    outcome.summary.termination = Termination::NumericalFailure;
+    outcome.summary.message =
+        fmt::format("0 of {} forced frequencies ({})", forced.omegas_rad_s.size(), failure.what());
+    outcome.summary.warnings.push_back(fmt::format("forced response: {}", failure.what()));
+    return outcome;
+  }
+}
+
+Plane damped_forced_plane(const ShootingCoefficients& k, const ForcedRequest& forced) {
+  return make_drive(k, forced).plane;
 }
 
 }  // namespace catena::internal

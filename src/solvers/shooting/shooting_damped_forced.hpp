@@ -17,6 +17,24 @@
 
 namespace catena::internal {
 
+class DampedShootingIntegrator;
+
+/// The plane the damped response to `forced` integrates (the string's for a straight
+/// inextensible cable driven in plane).
+Plane damped_forced_plane(const ShootingCoefficients& k, const ForcedRequest& forced);
+
+/// The damped response at every frequency of `forced` with `integrator` (made for
+/// damped_forced_plane, reused across calls: the fixed point of the drag linearisation calls this
+/// once per iterate). `estimate` false skips the re-solve at tighter tolerances (the responses'
+/// relative_error_estimate is then -1). Never throws ShootingFailure.
+ForcedOutcome shooting_damped_forced_responses(DampedShootingIntegrator& integrator,
+                                               const ShootingCoefficients& k,
+                                               const ForcedRequest& forced,
+                                               const Vector& stations,
+                                               const IntegratorSettings& settings,
+                                               bool estimate,
+                                               WorkMeter* meter = nullptr);
+
 /// The damped response at every frequency of `forced`, with the summary of that part (as
 /// shooting_forced_responses). Never throws ShootingFailure.
 ForcedOutcome shooting_damped_forced_responses(const ShootingCoefficients& k,

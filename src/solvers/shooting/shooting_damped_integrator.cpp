@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solvers/shooting/shooting_damped_grounded.hpp"
+#include "solvers/shooting/shooting_grounded.hpp"
 #include "solvers/shooting/shooting_shot_setup.hpp"
 #include "solvers/shooting/shooting_steppers.hpp"
 #include "solvers/shooting/shooting_sundials_handles.hpp"
@@ -32,6 +34,21 @@ ComplexBasis<D> damped_to_physical(const ComplexBasis<D>& carried, const RhsData
     out.template bottomRows<D>() =
         data.to_axial.transpose().cast<Complex>() * out.template bottomRows<D>();
   }
+  return out;
+}
+
+// The carried basis [Phi~; F~] of a physical one (the inverse of damped_to_physical, from a).
+template <int D>
+ComplexBasis<D> damped_to_carried(const ComplexBasis<D>& physical, const RhsData& data) {
+  const double kappa = std::sqrt(data.kappa2);
+  ComplexBasis<D> out = physical;
+  if constexpr (D == 2) {
+    out.template topRows<D>() = data.to_axial.cast<Complex>() * physical.template topRows<D>();
+    out.template bottomRows<D>() =
+        data.to_axial_force.cast<Complex>() * physical.template bottomRows<D>();
+  }
+  out.template topRows<D>() *= kappa;
+  out.template bottomRows<D>() /= kappa;
   return out;
 }
 
@@ -77,14 +94,16 @@ struct DampedShootingIntegrator::Impl {
       : settings(s), dimension(plane == Plane::InPlane ? 2 : 1) {
     data.coefficients = coefficients;
     data.coefficients.pieces = coefficients.all_pieces();
-    if (data.coefficients.has_grounded_piece()) {
-      throw ShootingFailure("the damped shot does not cover a line resting on the seabed");
-    }
     original = data.coefficients.pieces;
     data.dimension = dimension;
     if (dimension == 2) set_axial_frame(data.coefficients, data);
     if (!context.ok()) throw ShootingFailure("could not allocate the SUNDIALS objects");
     stepper = make_damped_stepper(settings, context.get(), dimension, data);
+    // A shot from A of a line on the seabed starts with the grounded run
+    // (shooting_damped_grounded.hpp); from b the general stepper crosses the grounded pieces
+    // (correct, but its cost grows with the foundation's stiffness).
+    const std::size_t run = grounded_run_length(data.coefficients, dimension);
+    if (run > 0) grounded = std::make_unique<DampedGroundedRun>(data, run, settings.max_steps);
   }
 
   template <int D>
@@ -97,6 +116,10 @@ struct DampedShootingIntegrator::Impl {
   }
   template <int D>
   void cross_break(const Break& b, double x);
+  template <int D>
+  void set_grounded_state(const DampedGroundedFrame& frame,
+                          DampedShot& shot,
+                          Eigen::VectorXd& pushed);
   double stop_time() const { return next_break < breaks.size() ? breaks[next_break].x : 1.0; }
 
   IntegratorSettings settings;
@@ -106,6 +129,8 @@ struct DampedShootingIntegrator::Impl {
   SundialsContext context;
   RhsData data;
   std::unique_ptr<ShotStepper> stepper;
+  // The seabed part of a shot from A; null when the line starts off the seabed.
+  std::unique_ptr<DampedGroundedRun> grounded;
   std::vector<Break> breaks;
   std::size_t next_break = 0;
   long shots = 0;
@@ -138,6 +163,33 @@ void DampedShootingIntegrator::Impl::cross_break(const Break& b, double x) {
     Y.template bottomRows<D>() -= K * Phi;
   }
   stepper->restart(x, stop_time());
+}
+
+// The grounded run's frame as the carried state: the growth since the last R factor goes into new
+// diagonal R factors (real, each at most e^600 so that they stay finite), the phase of the complex
+// log scale stays in the column (R keeps its real positive diagonal: arg D = arg determinant).
+template <int D>
+void DampedShootingIntegrator::Impl::set_grounded_state(const DampedGroundedFrame& frame,
+                                                        DampedShot& shot,
+                                                        Eigen::VectorXd& pushed) {
+  constexpr double kLargestLogFactor = 600.0;
+  Eigen::VectorXd growth = frame.log_scale.real() - pushed;
+  pushed = frame.log_scale.real();
+  shot.log_scale += growth.sum();
+  do {
+    const Eigen::VectorXd step = growth.cwiseMax(-kLargestLogFactor).cwiseMin(kLargestLogFactor);
+    shot.segment_r.emplace_back(
+        step.array().exp().matrix().asDiagonal().toDenseMatrix().cast<Complex>());
+    growth -= step;
+  } while (growth.cwiseAbs().maxCoeff() > 0.0);
+  ComplexBasis<D> physical = ComplexBasis<D>::Zero();
+  for (int j = 0; j < D; ++j) {
+    const Complex phase = std::polar(1.0, frame.log_scale(j).imag());
+    physical(j, j) = frame.phi(j) * phase;
+    physical(D + j, j) = frame.force(j) * phase;
+  }
+  Eigen::Map<ComplexBasis<D>>(reinterpret_cast<Complex*>(stepper->state())) =
+      damped_to_carried<D>(physical, data);
 }
 
 template <int D>
@@ -175,6 +227,23 @@ DampedShot DampedShootingIntegrator::Impl::shoot(Complex lambda,
   while (station_due(0.0)) record<D>(shot, state), ++next_station;
   Eigen::Matrix<double, 4 * D * D, 1> buffer;
   double x = 0.0;
+  const bool grounded_shot = grounded && !from_b;
+  if (grounded_shot) {
+    grounded->begin(data.rtol, data.atol);
+    Eigen::VectorXd pushed = Eigen::VectorXd::Zero(D);
+    const double end = grounded->end_x();
+    while (station_due(end)) {
+      set_grounded_state<D>(grounded->advance_to((*stations)[next_station]), shot, pushed);
+      record<D>(shot, state), ++next_station;
+    }
+    set_grounded_state<D>(grounded->advance_to(end), shot, pushed);
+    next_break = grounded->pieces();
+    x = end;
+    if (x < 1.0) {
+      data.piece = next_break;
+      stepper->restart(x, stop_time());
+    }
+  }
   long steps = 0;
   while (x < 1.0) {
     x = stepper->step(stop_time());
@@ -203,6 +272,10 @@ DampedShot DampedShootingIntegrator::Impl::shoot(Complex lambda,
   shot.determinant = shot.y_end.topRows(D).determinant();
   shot.steps = stepper->steps();
   shot.rhs_evaluations = stepper->rhs_evaluations();
+  if (grounded_shot) {
+    shot.steps += grounded->steps();
+    shot.rhs_evaluations += grounded->rhs_evaluations();
+  }
   ++shots;
   total_steps += shot.steps;
   total_rhs += shot.rhs_evaluations;
@@ -224,6 +297,16 @@ void DampedShootingIntegrator::set_damping_scale(double scale) {
     pieces[j].damping_normal = scale * given.damping_normal;
     pieces[j].damping_axial = scale * given.damping_axial;
     pieces[j].foundation_damping = scale * given.foundation_damping;
+  }
+}
+
+void DampedShootingIntegrator::set_drag(const DragProfile* drag) {
+  RhsData& data = impl_->data;
+  data.drag = drag;
+  data.drag_segment.clear();
+  if (!drag) return;
+  for (const ShootingPiece& p : data.coefficients.pieces) {
+    data.drag_segment.push_back(drag->segment_of(0.5 * (p.s_begin + p.s_end)));
   }
 }
 

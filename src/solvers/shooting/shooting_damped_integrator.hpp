@@ -16,7 +16,10 @@
 /// [1e-6, 1e6]), with a complex QR whose R has a real positive diagonal: the factors det R > 0
 /// are kept as log_scale, so D = determinant * exp(log_scale) with arg D = arg determinant.
 /// General lines: pieces and point attachments (whose jump of the internal force carries lambda^2
-/// and no damping). Lines on the seabed are not shot (the grounded run is undamped only).
+/// and no damping). A line resting on the seabed, shot from A, starts with the damped grounded run
+/// (shooting_damped_grounded.hpp), whose cost does not grow with the foundation's stiffness; shot
+/// from b, the general stepper crosses the grounded pieces. A shot may carry linearised drag
+/// (set_drag), added to the pieces' damping.
 
 #include <Eigen/Core>
 #include <complex>
@@ -24,6 +27,7 @@
 #include <vector>
 
 #include "catena/solvers/shooting_solver.hpp"
+#include "solvers/common/drag_profile.hpp"
 #include "solvers/shooting/shooting_coefficients.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
 
@@ -48,7 +52,7 @@ struct DampedShot {
 /// Integrates damped principal solutions for one plane; holds the stepper between shots.
 class DampedShootingIntegrator {
  public:
-  /// Throws ShootingFailure for a line with a grounded piece (not supported).
+  /// Throws ShootingFailure when the SUNDIALS objects cannot be made.
   DampedShootingIntegrator(Plane plane,
                            const ShootingCoefficients& coefficients,
                            const IntegratorSettings& settings);
@@ -59,6 +63,10 @@ class DampedShootingIntegrator {
   /// Multiplies every damping coefficient of the line by `scale` (the homotopy of
   /// shooting_damped_roots.hpp: 0 is the undamped line, 1 the line as given).
   void set_damping_scale(double scale);
+
+  /// Adds the linearised drag `drag` (outliving the shots that use it) to the damping of the
+  /// following shots; null removes it. Each piece takes the segment of its midpoint.
+  void set_drag(const DragProfile* drag);
 
   /// Shoots at `lambda` [1/s] with the tolerances scaled by `tolerance_factor`, recording the
   /// stations `stations_x` (x = s/L, in the order of integration) when given. `from_b` starts at

@@ -21,6 +21,7 @@
 #include "solvers/common/work_meter.hpp"
 #include "solvers/shooting/shooting_coefficients.hpp"
 #include "solvers/shooting/shooting_damped_forced.hpp"
+#include "solvers/shooting/shooting_damped_integrator.hpp"
 #include "solvers/shooting/shooting_damped_modes.hpp"
 #include "solvers/shooting/shooting_forced.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
@@ -157,10 +158,15 @@ class ShootingNumerics final : public SolverNumerics {
       : context_(context), options_(options) {}
 
   std::optional<std::string> not_applicable() const override;
-  // Damped modes (shooting_damped_modes.hpp) and forced response (shooting_damped_forced.hpp);
-  // lines on the seabed are declined in not_applicable().
+  // Damped modes (shooting_damped_modes.hpp) and forced response (shooting_damped_forced.hpp),
+  // on the seabed too (the damped grounded run, shooting_damped_grounded.hpp).
   bool handles_damping() const override { return true; }
   bool handles_damped_forced() const override { return true; }
+  // The dynamic tension: the damped forced response with the linearised drag added
+  // (forced_with_drag), and the tangential added mass in ShootingPiece::m.
+  bool handles_drag() const override { return true; }
+  bool handles_tangential_added_mass() const override { return true; }
+  ForcedOutcome forced_with_drag(const ForcedRequest& request, const DragProfile& drag) override;
   std::optional<Outcome> prepare() override {
     k_ = ShootingCoefficients::from_statics(context_.statics);
     return std::nullopt;
@@ -196,18 +202,83 @@ class ShootingNumerics final : public SolverNumerics {
   const SolveContext& context_;
   ShootingSolverOptions options_;
   ShootingCoefficients k_;
+  // The integrator of forced_with_drag, kept across the fixed point's iterates (its SUNDIALS
+  // objects are made once), and the plane it was made for.
+  std::unique_ptr<DampedShootingIntegrator> drag_integrator_;
+  Plane drag_plane_ = Plane::InPlane;
+  // The previous call's request and profile (drag_signature): a repeat is the final call.
+  std::optional<ForcedRequest> last_drag_request_;
+  std::vector<double> last_drag_signature_;
 };
+
+// What determines a drag profile for the shots: c_n and c_t at every piece's ends and at the
+// stations inside it, on the piece's segment (the profile is linear between these points).
+std::vector<double> drag_signature(const ShootingCoefficients& k, const DragProfile& drag) {
+  std::vector<double> out;
+  const Vector& stations = drag.stations();
+  for (const ShootingPiece& p : k.all_pieces()) {
+    const std::size_t segment = drag.segment_of(0.5 * (p.s_begin + p.s_end));
+    auto add = [&](double s) {
+      out.push_back(drag.normal_at(s, segment));
+      out.push_back(drag.tangential_at(s, segment));
+    };
+    add(p.s_begin);
+    for (double s : stations) {
+      if (s > p.s_begin && s < p.s_end) add(s);
+    }
+    add(p.s_end);
+  }
+  return out;
+}
+
+bool same_request(const ForcedRequest& a, const ForcedRequest& b) {
+  return a.end == b.end && a.direction == b.direction && a.vector == b.vector &&
+         a.amplitude_m == b.amplitude_m && a.omegas_rad_s == b.omegas_rad_s;
+}
+
+// One iterate of the drag linearisation's fixed point (solver_driver.hpp): the damped forced
+// response with the profile's damping added to the pieces' (damping_at, shooting_system.hpp).
+// The error estimate (a re-solve at 100x tighter tolerances, 2-3x the cost of the response) is
+// computed only where it is read: for a profile without drag (the driver's only call), and when
+// the profile repeats the previous call's (the driver's final call recomputes its last iterate);
+// the intermediate iterates return relative_error_estimate = -1 (none), which the driver never
+// reports.
+ForcedOutcome ShootingNumerics::forced_with_drag(const ForcedRequest& request,
+                                                 const DragProfile& drag) {
+  WorkMeter meter(context_, "shooting", "dynamic tension frequencies",
+                  static_cast<long>(request.omegas_rad_s.size()));
+  const IntegratorSettings settings = integrator_settings(options_);
+  const Plane plane = damped_forced_plane(k_, request);
+  try {
+    if (!drag_integrator_ || drag_plane_ != plane) {
+      drag_integrator_ = std::make_unique<DampedShootingIntegrator>(plane, k_, settings);
+      drag_plane_ = plane;
+    }
+  } catch (const ShootingFailure& failure) {
+    ForcedOutcome outcome;
+    outcome.summary.termination = Termination::NumericalFailure;
+    outcome.summary.message = failure.what();
+    return outcome;
+  }
+  std::vector<double> signature = drag_signature(k_, drag);
+  const bool repeat = last_drag_request_ && same_request(*last_drag_request_, request) &&
+                      signature == last_drag_signature_;
+  last_drag_signature_ = std::move(signature);
+  last_drag_request_ = request;
+  drag_integrator_->set_drag(&drag);
+  ForcedOutcome outcome =
+      shooting_damped_forced_responses(*drag_integrator_, k_, request, drag.stations(), settings,
+                                       repeat || !drag.has_drag(), &meter);
+  drag_integrator_->set_drag(nullptr);
+  mark_time_limit(meter, outcome.summary);
+  return outcome;
+}
 
 // The equations divide by the static tension: where it vanishes inside the cable (a slack
 // vertical cable), the principal solutions are not defined.
 std::optional<std::string> ShootingNumerics::not_applicable() const {
   const StaticSolution& statics = context_.statics;
   if (auto reason = slack_on_seabed(statics)) return reason;
-  if (context_.problem.is_damped() && statics.has_contact()) {
-    return std::string(
-        "the line is damped and rests on the seabed: the damped shot does not cover the grounded "
-        "part (its grounded run is undamped only)");
-  }
   const double L = statics.cable().length_m;
   const double V_A = statics.vertical_force_a_n();
   const double V_B = statics.vertical_force_n(L);
@@ -371,9 +442,9 @@ SolverEntry make_shooting_entry() {
       "(ERKStep, Verner's 6(5) pair), "
       "modes counted by conjugate points (Morse index) and refined by safeguarded Newton steps "
       "with the frequency derivative of the shot (Brent's method as fallback) on a count-aware "
-      "phase function; any sag, inclination, EA (inf exact), added mass; damped lines off the "
-      "seabed "
-      "by complex roots continued from the undamped ones, counted by the argument principle",
+      "phase function; any sag, inclination, EA (inf exact), added mass; damped lines (on the "
+      "seabed too) by complex roots continued from the undamped ones, counted by the argument "
+      "principle",
       shooting_knobs(), [](const SolveContext& context, const ShootingSolverOptions& options) {
         return std::make_unique<ShootingNumerics>(context, options);
       });

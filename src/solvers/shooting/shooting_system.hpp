@@ -10,7 +10,9 @@
 #include <cmath>
 #include <complex>
 #include <cstddef>
+#include <vector>
 
+#include "solvers/common/drag_profile.hpp"
 #include "solvers/shooting/shooting_coefficients.hpp"
 
 namespace catena::internal {
@@ -50,7 +52,27 @@ struct RhsData {
   // A damped shot (shooting_damped_integrator.hpp): the characteristic root lambda [1/s] at which
   // the complex system is integrated; unused by the undamped shots.
   std::complex<double> lambda = 0.0;
+  // A damped shot with linearised drag (forced_with_drag): the profile added to the pieces' own
+  // damping, and the segment of each piece (the profile's factors jump there); null without.
+  const DragProfile* drag = nullptr;
+  std::vector<std::size_t> drag_segment;
 };
+
+// The tangential and normal damping [N s/m per m] of piece p at s [m] (unstretched, from a): the
+// section's own, plus the linearised drag of a damped shot that carries one.
+struct PieceDamping {
+  double tangential = 0.0;
+  double normal = 0.0;
+};
+inline PieceDamping damping_at(const RhsData& data, const ShootingPiece& p, double s) {
+  PieceDamping c{p.damping_tangential, p.damping_normal};
+  if (data.drag) {
+    const std::size_t segment = data.drag_segment[data.piece];
+    c.tangential += data.drag->tangential_at(s, segment);
+    c.normal += data.drag->normal_at(s, segment);
+  }
+  return c;
+}
 
 // The static state at x on the current piece: s [m], the tension along the chord direction
 // (H, V), the tension T (the friction profile on the seabed) and the strain e = T / EA.
@@ -155,7 +177,9 @@ void rhs_values(const RhsData& data, double x, const double* state, double* deri
 //   C = -(L^2 / (T_ref kappa^2)) [(lambda^2 m + lambda c_t + k_t) tq tq^T
 //                                 + (lambda^2 M + lambda c_n + k_s + c_s lambda) nq nq^T],
 // (k_t, k_s, c_s on grounded pieces only; out of plane C = -(L^2/(T_ref kappa^2)) (lambda^2 M +
-// lambda c_n + k_t)). With lambda = i w and no damping they are coefficients_at's.
+// lambda c_n + k_t)). With lambda = i w and no damping they are coefficients_at's. c_t and c_n are
+// damping_at's: the section's and the shot's linearised drag at s (the unstretched arc length of
+// x, which runs from b on a shot from b).
 template <int D>
 void damped_coefficients_at(const RhsData& data,
                             double x,
@@ -169,7 +193,8 @@ void damped_coefficients_at(const RhsData& data,
   const double b_normal = k.t_ref * (1.0 + st.e) / st.T;
   const double c_scale = -k.length_m * k.length_m / (k.t_ref * data.kappa2);
   const double k_t = p.grounded ? p.foundation_tangential : 0.0;
-  const Complex normal_load = lambda * lambda * p.M + lambda * p.damping_normal;
+  const PieceDamping damping = damping_at(data, p, st.s);
+  const Complex normal_load = lambda * lambda * p.M + lambda * damping.normal;
   if constexpr (D == 1) {
     B(0, 0) = data.kappa2 * b_normal;
     C(0, 0) = c_scale * (normal_load + k_t);
@@ -180,7 +205,7 @@ void damped_coefficients_at(const RhsData& data,
     const Vec2 n(-t.y(), t.x());
     const Vec2 tp = data.to_axial * t, np = data.to_axial * n;
     const Vec2 tq = data.to_axial_force * t, nq = data.to_axial_force * n;
-    const Complex tangential = lambda * lambda * p.m + lambda * p.damping_tangential + k_t;
+    const Complex tangential = lambda * lambda * p.m + lambda * damping.tangential + k_t;
     const Complex normal =
         normal_load + (p.grounded ? p.foundation_normal + p.foundation_damping * lambda : 0.0);
     B = data.kappa2 * (b_tangent * (tp * tp.transpose()).template cast<Complex>() +
