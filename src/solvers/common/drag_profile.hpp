@@ -50,6 +50,12 @@ class DragProfile {
   /// True when every section has zero drag (the profile adds nothing).
   bool has_drag() const;
 
+  /// True for the driver's last call, at the final iterate, whose responses and error estimates
+  /// are reported; false inside the iteration, where a solver may skip work that only the error
+  /// estimate needs (relative_error_estimate -1 there: the driver never reports it).
+  bool is_final() const { return final_; }
+  void set_final(bool final) { final_ = final; }
+
  private:
   double mean_of(const Vector& values, double s0, double s1) const;
   double value_of(const Vector& values, double s) const;
@@ -60,6 +66,7 @@ class DragProfile {
   std::vector<double> tangential_factor_;
   Vector normal_scale_;
   Vector tangential_scale_;
+  bool final_ = false;
 };
 
 }  // namespace catena::internal

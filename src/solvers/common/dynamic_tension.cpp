@@ -255,6 +255,7 @@ DynamicTension solve_excitation(const SolveContext& context,
     const FixedPoint fp = iterate(numerics, e, profile, motion, plane);
     const Eigen::Index n = t.s_m.size();
     profile.set_velocity_scales(fp.scales.head(n), fp.scales.tail(n));
+    profile.set_final(true);
     const std::vector<ForcedResponse> responses = linear_responses(numerics, e, profile);
     t.iterations = fp.evaluations + 1;
     t.residual = profile.has_drag()

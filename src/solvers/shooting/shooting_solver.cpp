@@ -206,43 +206,14 @@ class ShootingNumerics final : public SolverNumerics {
   // objects are made once), and the plane it was made for.
   std::unique_ptr<DampedShootingIntegrator> drag_integrator_;
   Plane drag_plane_ = Plane::InPlane;
-  // The previous call's request and profile (drag_signature): a repeat is the final call.
-  std::optional<ForcedRequest> last_drag_request_;
-  std::vector<double> last_drag_signature_;
 };
-
-// What determines a drag profile for the shots: c_n and c_t at every piece's ends and at the
-// stations inside it, on the piece's segment (the profile is linear between these points).
-std::vector<double> drag_signature(const ShootingCoefficients& k, const DragProfile& drag) {
-  std::vector<double> out;
-  const Vector& stations = drag.stations();
-  for (const ShootingPiece& p : k.all_pieces()) {
-    const std::size_t segment = drag.segment_of(0.5 * (p.s_begin + p.s_end));
-    auto add = [&](double s) {
-      out.push_back(drag.normal_at(s, segment));
-      out.push_back(drag.tangential_at(s, segment));
-    };
-    add(p.s_begin);
-    for (double s : stations) {
-      if (s > p.s_begin && s < p.s_end) add(s);
-    }
-    add(p.s_end);
-  }
-  return out;
-}
-
-bool same_request(const ForcedRequest& a, const ForcedRequest& b) {
-  return a.end == b.end && a.direction == b.direction && a.vector == b.vector &&
-         a.amplitude_m == b.amplitude_m && a.omegas_rad_s == b.omegas_rad_s;
-}
 
 // One iterate of the drag linearisation's fixed point (solver_driver.hpp): the damped forced
 // response with the profile's damping added to the pieces' (damping_at, shooting_system.hpp).
 // The error estimate (a re-solve at 100x tighter tolerances, 2-3x the cost of the response) is
-// computed only where it is read: for a profile without drag (the driver's only call), and when
-// the profile repeats the previous call's (the driver's final call recomputes its last iterate);
-// the intermediate iterates return relative_error_estimate = -1 (none), which the driver never
-// reports.
+// computed only where it is read: for a profile without drag (the driver's only call) and at the
+// driver's final call (DragProfile::is_final); the intermediate iterates return
+// relative_error_estimate = -1 (none), which the driver never reports.
 ForcedOutcome ShootingNumerics::forced_with_drag(const ForcedRequest& request,
                                                  const DragProfile& drag) {
   WorkMeter meter(context_, "shooting", "dynamic tension frequencies",
@@ -260,15 +231,10 @@ ForcedOutcome ShootingNumerics::forced_with_drag(const ForcedRequest& request,
     outcome.summary.message = failure.what();
     return outcome;
   }
-  std::vector<double> signature = drag_signature(k_, drag);
-  const bool repeat = last_drag_request_ && same_request(*last_drag_request_, request) &&
-                      signature == last_drag_signature_;
-  last_drag_signature_ = std::move(signature);
-  last_drag_request_ = request;
   drag_integrator_->set_drag(&drag);
   ForcedOutcome outcome =
       shooting_damped_forced_responses(*drag_integrator_, k_, request, drag.stations(), settings,
-                                       repeat || !drag.has_drag(), &meter);
+                                       drag.is_final() || !drag.has_drag(), &meter);
   drag_integrator_->set_drag(nullptr);
   mark_time_limit(meter, outcome.summary);
   return outcome;
