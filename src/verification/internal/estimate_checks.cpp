@@ -176,7 +176,8 @@ ClaimOf dynamic_claim(std::size_t k, bool fairlead) {
     if (k >= output.dynamic_tension.size()) return std::nullopt;
     const DynamicTension& t = output.dynamic_tension[k];
     const double value = dynamic_end_value(t, fairlead ? t.fairlead : t.anchor);
-    if (t.s_m.size() == 0 || !(value >= 0.0) || (as_reference && !t.converged)) return std::nullopt;
+    // An exact zero (the first-order tension of an out-of-plane motion) has no relative error.
+    if (t.s_m.size() == 0 || !(value > 0.0) || (as_reference && !t.converged)) return std::nullopt;
     return usable_claim(value, t.relative_error_estimate);
   };
 }
