@@ -165,7 +165,8 @@ void fixed_point(const SolverOutput& output,
 
 // The drag factors a 1/2 rho Cd d (normal) and a 1/2 rho CdAx pi d (tangential) of each segment
 // [kg/m^2], a = 8 / (3 pi) (harmonic linearisation), and the segments' starts [m]: the model's
-// definition (issue 30, docs/explanation/dynamic-tension.md), recomputed here from the problem.
+// definition (issue 30; MorisonDrag in include/catena/models/line.hpp), recomputed here from the
+// problem, not taken from the solvers' shared code.
 struct DragFactors {
   std::vector<double> start, normal, tangential;
   // The segment of station s: the one that contains it, on a joint the one that begins there.
