@@ -11,7 +11,8 @@ namespace catena {
 namespace {
 
 bool is_value_check(const CheckResult& check) {
-  return check.check == "frequency" || check.check == "tension" || check.check == "forced";
+  return check.check == "frequency" || check.check == "tension" || check.check == "forced" ||
+         check.check == "dynamic-tension";
 }
 
 // Per group: the number of values compared and whether every pair so far was bit-identical.

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "verification/internal/checks.hpp"
+#include "verification/internal/dynamic_tension_checks.hpp"
 #include "verification/internal/mode_mix.hpp"
 #include "verification/internal/parallel_for.hpp"
 
@@ -24,6 +25,8 @@ std::string to_string(MutatedQuantity quantity) {
       return "forced-tension";
     case MutatedQuantity::DecayRate:
       return "decay-rate";
+    case MutatedQuantity::DynamicTension:
+      return "dynamic-tension";
   }
   return "?";
 }
@@ -276,6 +279,36 @@ void mutate_forced(SceneMutator& mutator, SolverOutput& output) {
   }
 }
 
+bool has_dynamic_tension(const SolverOutput& output, std::size_t k) {
+  return k < output.dynamic_tension.size() &&
+         internal::dynamic_station_values(output.dynamic_tension[k]).size() > 0;
+}
+
+// Scales one excitation's dynamic tension: along the line and at both ends.
+void scale_dynamic_tension(DynamicTension& t, double factor) {
+  (t.irregular ? t.std_n : t.amplitude_n) *= factor;
+  for (DynamicTensionEnd* end : {&t.fairlead, &t.anchor})
+    (t.irregular ? end->std_n : end->amplitude_n) *= factor;
+}
+
+// Each excitation's dynamic tension made wrong by kDynamicTensionMutation: what a solver with a
+// wrong linear solve or a wrong fixed point would return.
+void mutate_dynamic_tension(SceneMutator& mutator, SolverOutput& output) {
+  for (std::size_t k = 0; k < output.dynamic_tension.size(); ++k) {
+    DynamicTension& t = output.dynamic_tension[k];
+    const double fairlead = internal::dynamic_end_value(t, t.fairlead);
+    if (!has_dynamic_tension(output, k) || !std::isfinite(fairlead) || !(fairlead > 0.0)) continue;
+    const DynamicTension saved = t;
+    scale_dynamic_tension(t, 1.0 + kDynamicTensionMutation);
+    const bool witness = mutator.exact_witness(
+        output.solver, [&](const SolverOutput& other) { return has_dynamic_tension(other, k); });
+    mutator.record(output.solver, MutatedQuantity::DynamicTension, "dynamic",
+                   static_cast<int>(k + 1), kDynamicTensionMutation, saved.relative_error_estimate,
+                   witness);
+    t = saved;
+  }
+}
+
 }  // namespace
 
 std::vector<MutationOutcome> mutate_scene(const SceneResult& result,
@@ -290,6 +323,7 @@ std::vector<MutationOutcome> mutate_scene(const SceneResult& result,
       mutate_decay_rates(mutator, output, plane);
     }
     mutate_forced(mutator, output);
+    mutate_dynamic_tension(mutator, output);
   }
   return std::move(mutator.outcomes());
 }

@@ -29,9 +29,10 @@ struct CheckResult {
   std::string check;
   /// What is compared: "fe vs shooting", "shooting vs Gale (1976) Table B-3", ...
   std::string compare;
-  /// "in-plane", "out-of-plane", "forced", "" (whole scene).
+  /// "in-plane", "out-of-plane", "forced", "" (whole scene); for a dynamic tension where on the
+  /// line ("fairlead", "anchor", "stations", "motion") or "dynamic" (a solver's own fixed point).
   std::string plane;
-  /// 1-based mode (or forcing index) the check is about; 0 for none.
+  /// 1-based mode (or forcing index, or excitation index) the check is about; 0 for none.
   int mode = 0;
   /// The two values compared, when the check compares values (NaN otherwise).
   double value_a = 0.0;

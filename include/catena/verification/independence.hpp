@@ -30,8 +30,9 @@ std::optional<std::string> shared_computation(const SolverEntry& a,
                                               const std::string& quantity);
 
 /// An identity flag (kIdentityCheck, verdict FAIL) for every group of cross-solver value checks
-/// ("frequency", "tension", "forced"; same compare and plane; skipped checks and pairs of exact
-/// zeros left out) with at least two values, all finite and bit-identical between the two solvers.
+/// ("frequency", "tension", "forced", "dynamic-tension"; same compare and plane; skipped checks and
+/// pairs of exact zeros left out) with at least two values, all finite and bit-identical between
+/// the two solvers.
 std::vector<CheckResult> identity_checks(const std::vector<CheckResult>& checks);
 
 /// What a run's summary reports about independence.

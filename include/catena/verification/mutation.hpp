@@ -27,11 +27,17 @@ inline constexpr double kShapeMutationFactor = 10.0;
 /// A forced response's max |tension| (and its tension curve) is multiplied by (1 + this).
 inline constexpr double kForcedTensionMutation = 1e-4;
 
+/// A dynamic tension under a motion request (its values along the line and at both ends: the
+/// amplitude, or the standard deviation when irregular) is multiplied by (1 + this): 10 x the
+/// dynamic-tension rule of fe against an exact solver (verification/tolerances.toml).
+inline constexpr double kDynamicTensionMutation = 1e-3;
+
 /// What a mutation changed. DecayRate: on a damped line, a mode's decay rate delta (or an
 /// overdamped root's) multiplied by (1 + kFrequencyMutationFactor x its solver's accuracy target,
-/// decay_rate_accuracy_target()), its damping ratio with it.
-enum class MutatedQuantity { Frequency, Shape, ForcedTension, DecayRate };
-/// "frequency", "shape", "forced-tension", "decay-rate".
+/// decay_rate_accuracy_target()), its damping ratio with it. DynamicTension: one excitation's
+/// dynamic tension multiplied by (1 + kDynamicTensionMutation).
+enum class MutatedQuantity { Frequency, Shape, ForcedTension, DecayRate, DynamicTension };
+/// "frequency", "shape", "forced-tension", "decay-rate", "dynamic-tension".
 std::string to_string(MutatedQuantity quantity);
 
 /// One mutation and whether the checks caught it.
@@ -41,9 +47,9 @@ struct MutationOutcome {
   std::string family;
   std::string solver;
   MutatedQuantity quantity = MutatedQuantity::Frequency;
-  /// "in-plane", "out-of-plane" or "forced".
+  /// "in-plane", "out-of-plane", "forced" or "dynamic".
   std::string plane;
-  /// 1-based mode, or 1-based forcing index.
+  /// 1-based mode, or 1-based forcing (or excitation) index.
   int mode = 0;
   /// The size of the mutation: relative change of omega, 1 - MAC against the unmutated shape, or
   /// relative change of the tension.

@@ -9,7 +9,8 @@
 ///
 ///     [[tolerance]]
 ///     check = "frequency"               # frequency, published, mac, shape, tension, forced,
-///                                       # orthogonality
+///                                       # orthogonality, decay-rate, dynamic-tension,
+///                                       # drag-anchor
 ///     compare = ["fe", "*"]             # solver names, "*" (any solver) or "published"
 ///     scene = "*"                       # optional glob on the scene name
 ///     tag = "gale"                      # optional: only scenes with this tag

@@ -284,6 +284,7 @@ void add_scenes(Document& out, const json& document) {
       add_frequency_table(out, scene, plane, unit);
     add_damping_tables(out, scene);
     add_forced_table(out, scene);
+    add_dynamic_tension_table(out, scene);
   }
 }
 

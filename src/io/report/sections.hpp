@@ -28,7 +28,8 @@ void add_stress_outcomes(Document& out, const json& document);
 /// Fastest time to each accuracy target (nothing when there is no baseline).
 void add_time_to_accuracy(Document& out, const TimeToAccuracy& timing);
 /// Per scene: groups, every solver's frequencies beside the published ones, the damping of a
-/// damped scene (add_damping_tables), forced maxima.
+/// damped scene (add_damping_tables), forced maxima, the dynamic tension
+/// (add_dynamic_tension_table).
 void add_scenes(Document& out, const json& document);
 /// True when the scene's problem has damping (a section's damping, a seabed dashpot) or a solver
 /// returned a decaying mode.
@@ -36,5 +37,9 @@ bool is_damped_scene(const json& scene);
 /// A damped scene's damping ratio zeta and decay rate delta per mode and solver, per plane, and its
 /// overdamped roots; nothing for an undamped scene.
 void add_damping_tables(Document& out, const json& scene);
+/// A scene with a motion request: per excitation and solver, the dynamic tension at the fairlead
+/// and the anchor, the fixed point's iterations and residual, and the dynamic-tension check's
+/// agreement at the fairlead; nothing for a scene without one.
+void add_dynamic_tension_table(Document& out, const json& scene);
 
 }  // namespace catena::internal

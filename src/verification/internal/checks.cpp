@@ -13,6 +13,7 @@
 #include "catena/verification/tolerance_table.hpp"
 #include "verification/internal/check_builder.hpp"
 #include "verification/internal/damping_checks.hpp"
+#include "verification/internal/dynamic_tension_checks.hpp"
 #include "verification/internal/estimate_checks.hpp"
 #include "verification/internal/mode_mix.hpp"
 #include "verification/internal/published_checks.hpp"
@@ -403,6 +404,7 @@ std::vector<CheckResult> run_checks(const SceneResult& result,
       if (damped) declined_forced_pair(*usable[i], *usable[j], builder);
     }
   }
+  dynamic_tension_checks(usable, builder);
   estimate_checks(usable, builder);
   published_checks(builder);
   std::vector<CheckResult> checks = builder.checks();

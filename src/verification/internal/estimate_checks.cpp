@@ -7,6 +7,8 @@
 #include <functional>
 #include <optional>
 
+#include "verification/internal/dynamic_tension_checks.hpp"
+
 namespace catena::internal {
 namespace {
 
@@ -166,6 +168,20 @@ ClaimOf forced_claim(std::size_t i) {
   };
 }
 
+// The dynamic tension of excitation `k` at the fairlead or the anchor (amplitude, or standard
+// deviation when irregular) with its estimate (the linear solves' plus the fixed point's
+// residual); a reference must have reached its fixed point.
+ClaimOf dynamic_claim(std::size_t k, bool fairlead) {
+  return [k, fairlead](const SolverOutput& output, bool as_reference) -> std::optional<Claim> {
+    if (k >= output.dynamic_tension.size()) return std::nullopt;
+    const DynamicTension& t = output.dynamic_tension[k];
+    const double value = dynamic_end_value(t, fairlead ? t.fairlead : t.anchor);
+    // An exact zero (the first-order tension of an out-of-plane motion) has no relative error.
+    if (t.s_m.size() == 0 || !(value > 0.0) || (as_reference && !t.converged)) return std::nullopt;
+    return usable_claim(value, t.relative_error_estimate);
+  };
+}
+
 }  // namespace
 
 void estimate_checks(const std::vector<const SolverOutput*>& usable, CheckBuilder& builder) {
@@ -186,6 +202,13 @@ void estimate_checks(const std::vector<const SolverOutput*>& usable, CheckBuilde
     for (std::size_t i = 0; i < output->forced.size(); ++i) {
       check_claim(*output, usable, {"forced", "forced", static_cast<int>(i + 1)}, forced_claim(i),
                   builder);
+    }
+    for (std::size_t k = 0; k < output->dynamic_tension.size(); ++k) {
+      for (const bool fairlead : {true, false})
+        check_claim(
+            *output, usable,
+            {"dynamic-tension", fairlead ? kFairleadPlace : kAnchorPlace, static_cast<int>(k + 1)},
+            dynamic_claim(k, fairlead), builder);
     }
   }
 }

@@ -2,8 +2,9 @@
 #pragma once
 /// \file
 /// The error estimate as a checked claim (docs/reference/verdicts.md, "The estimate as a claim"):
-/// each frequency and forced response a solver returns with an error estimate is compared with the
-/// reference, the most accurate other exact solver that converged on the same scene and plane.
+/// each frequency, forced response and dynamic tension (at the fairlead and the anchor) a solver
+/// returns with an error estimate is compared with the reference, the most accurate other exact
+/// solver that converged on the same scene and plane.
 
 #include <vector>
 
