@@ -27,8 +27,9 @@ from dataclasses import dataclass
 from typing import Any, Optional, Union
 
 from ._catena import (Cable, CertifiedReference, Check, ConvergenceStudy, dimensionless_groups,
-                      ExternalCheck, ForcedRequest, ForcedResponse, Groups, InvalidInput, Line, LineSegment,
-                      Mode, ModeComparison, Modes, ModeShapes, ParseError, PointAttachment, Problem, Request,
+                      DynamicTension, DynamicTensionEnd, Environment, ExternalCheck, ForcedRequest,
+                      ForcedResponse, Groups, InvalidInput, Line, LineSegment, Mode, ModeComparison,
+                      Modes, ModeShapes, MotionRequest, ParseError, PointAttachment, Problem, Request,
                       ResolutionComparison, Result, run_solver, Scene, Seabed, solve_statics, SolverResult,
                       Statics, Summary, __version__)
 from . import _catena
@@ -37,13 +38,13 @@ from ._scene_dict import scene_toml_text
 from ._solver_functions import solve_airy, solve_asymptotic, solve_fe, solve_frobenius, solve_shooting
 
 __all__ = [
-    "Cable", "CertifiedReference", "Check", "ConvergenceStudy", "ExternalCheck", "ForcedRequest",
-    "ForcedResponse", "Groups", "InvalidInput", "Knob", "Line", "LineSegment", "Mode", "ModeComparison",
-    "Modes", "ModeShapes", "ParseError", "PointAttachment", "Problem", "Seabed", "Request",
-    "ResolutionComparison", "Result", "Scene", "SolverInfo", "SolverResult", "Statics", "Summary", "check",
-    "dimensionless_groups", "load_scene", "load_scenes", "run_solver", "solve", "solve_airy",
-    "solve_asymptotic", "solve_fe", "solve_frobenius", "solve_shooting", "solve_statics", "solve_sweep",
-    "solvers", "__version__",
+    "Cable", "CertifiedReference", "Check", "ConvergenceStudy", "DynamicTension", "DynamicTensionEnd",
+    "Environment", "ExternalCheck", "ForcedRequest", "ForcedResponse", "Groups", "InvalidInput", "Knob",
+    "Line", "LineSegment", "Mode", "ModeComparison", "Modes", "ModeShapes", "MotionRequest", "ParseError",
+    "PointAttachment", "Problem", "Seabed", "Request", "ResolutionComparison", "Result", "Scene",
+    "SolverInfo", "SolverResult", "Statics", "Summary", "check", "dimensionless_groups", "load_scene",
+    "load_scenes", "run_solver", "solve", "solve_airy", "solve_asymptotic", "solve_fe", "solve_frobenius",
+    "solve_shooting", "solve_statics", "solve_sweep", "solvers", "__version__",
 ]
 
 #: What names a scene: the path of a TOML file, a dict with the file's structure, or a Scene.

@@ -24,6 +24,8 @@ void bind_line(py::module_& module);
 void bind_model(py::module_& module);
 void bind_statics(py::module_& module);
 void bind_results(py::module_& module);
+void bind_motion(py::module_& module);
+void bind_dynamic_tension(py::module_& module);
 void bind_solvers(py::module_& module);
 void bind_scene(py::module_& module);
 void bind_external_check(py::module_& module);
