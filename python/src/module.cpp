@@ -45,5 +45,6 @@ PYBIND11_MODULE(_catena, module) {
   bind_solvers(module);
   bind_scene(module);
   bind_external_check(module);
+  bind_tension_check(module);
   bind_synthetic_output(module);
 }
