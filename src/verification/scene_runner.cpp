@@ -135,9 +135,10 @@ SceneResult run_scene(const Scene& scene, const SceneRunOptions& options) {
     result.wall_time_s = seconds_since(start);
     return result;
   }
-  // A request for no modes and no forcing is a statics-only scene: no solver runs.
+  // A request for no modes, no forcing and no motion is a statics-only scene: no solver runs.
   const SolveRequest& request = result.request;
-  if (request.inplane_modes == 0 && request.outofplane_modes == 0 && !request.forced) {
+  if (request.inplane_modes == 0 && request.outofplane_modes == 0 && !request.forced &&
+      !request.motion) {
     result.wall_time_s = seconds_since(start);
     return result;
   }
