@@ -147,7 +147,10 @@ std::optional<TensionReference> tension_reference(const std::vector<SolverOutput
   }
   TensionReference reference;
   reference.solver = best->solver;
-  reference.reason = fmt::format("{} (smaller estimate): {}", best->solver, all);
+  reference.reason = other ? fmt::format("{} reached its fixed point with the smaller estimate: {}",
+                                         best->solver, all)
+                           : fmt::format("{} is the only reference solver at its fixed point: {}",
+                                         best->solver, all);
   reference.tension = best->dynamic_tension.front();
   if (other) {
     reference.cross_check_relative = largest_disagreement(best->dynamic_tension.front(),
