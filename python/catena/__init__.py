@@ -27,20 +27,22 @@ from dataclasses import dataclass
 from typing import Any, Optional, Union
 
 from ._catena import (Cable, CertifiedReference, Check, ConvergenceStudy, dimensionless_groups,
-                      ExternalCheck, ForcedRequest, ForcedResponse, Groups, InvalidInput, Line, LineSegment,
-                      Mode, ModeComparison, Modes, ModeShapes, ParseError, PointAttachment, Problem, Request,
+                      DynamicTension, DynamicTensionEnd, Environment, ExternalCheck, ForcedRequest,
+                      ForcedResponse, Groups, InvalidInput, Line, LineSegment, Mode, ModeComparison,
+                      Modes, ModeShapes, MotionRequest, ParseError, PointAttachment, Problem, Request,
                       ResolutionComparison, Result, run_solver, Scene, Seabed, solve_statics, SolverResult,
-                      Statics, Summary, __version__)
+                      Statics, Summary, TensionCheck, __version__)
 from . import _catena
 from ._check_results import ORIGIN as _RESULTS_ORIGIN, _NotAValue, results_json_text
 from ._scene_dict import scene_toml_text
 from ._solver_functions import solve_airy, solve_asymptotic, solve_fe, solve_frobenius, solve_shooting
 
 __all__ = [
-    "Cable", "CertifiedReference", "Check", "ConvergenceStudy", "ExternalCheck", "ForcedRequest",
-    "ForcedResponse", "Groups", "InvalidInput", "Knob", "Line", "LineSegment", "Mode", "ModeComparison",
-    "Modes", "ModeShapes", "ParseError", "PointAttachment", "Problem", "Seabed", "Request",
-    "ResolutionComparison", "Result", "Scene", "SolverInfo", "SolverResult", "Statics", "Summary", "check",
+    "Cable", "CertifiedReference", "Check", "ConvergenceStudy", "DynamicTension", "DynamicTensionEnd",
+    "Environment", "ExternalCheck", "ForcedRequest", "ForcedResponse", "Groups", "InvalidInput", "Knob",
+    "Line", "LineSegment", "Mode", "ModeComparison", "Modes", "ModeShapes", "MotionRequest", "ParseError",
+    "PointAttachment", "Problem", "Seabed", "Request", "ResolutionComparison", "Result", "Scene",
+    "SolverInfo", "SolverResult", "Statics", "Summary", "TensionCheck", "check", "check_tension",
     "dimensionless_groups", "load_scene", "load_scenes", "run_solver", "solve", "solve_airy",
     "solve_asymptotic", "solve_fe", "solve_frobenius", "solve_shooting", "solve_statics", "solve_sweep",
     "solvers", "__version__",
@@ -143,6 +145,32 @@ def check(results: Union[str, os.PathLike[str], Sequence[Mapping[str, Any]], Map
     except _NotAValue as error:
         raise InvalidInput(str(error)) from None
     return _catena._check_json(text, _RESULTS_ORIGIN, scene, rtol)
+
+
+def check_tension(results: Union[str, os.PathLike[str], Mapping[str, Any]], scene: SceneSource,
+                  rtol: float = 1e-3) -> TensionCheck:
+    """Compares another code's dynamic tension along a line with Catena's for the scene's
+    [request.motion], as `catena check` does for a tension file (docs/how-to/check-dynamic-tension.md).
+    Returns a TensionCheck: `.verdict`, `.failed`, `.error` (Catena could not compute the
+    reference: no solver computed the dynamic tension, or the statics failed), the finest
+    stations' `.s_m`, `.other_n`, `.catena_n`, `.difference_n`, `.allowed_n`, `.fairlead`,
+    `.studies` (observed order, limit, bias), `.to_json()`.
+
+    results: the path of a CSV file (the CLI's format); or a dict of columns of equal length (lists
+        or numpy arrays) with the CSV's names ("s_m" or "node" and "nodes", "tension_std_n" or
+        "tension_amplitude_n", optional "period_s", "resolution", "tension_uncertainty_n"), None
+        meaning an empty cell.
+    scene: a path, a dict with the TOML's structure, or a Scene (as catena.solve).
+    rtol: relative agreement asked beyond both uncertainties, in (0, 1).
+
+    Bad input raises InvalidInput naming the row and the column, with the CLI's messages.
+    """
+    scene = load_scene(scene)
+    if isinstance(results, (str, os.PathLike)):
+        return _catena._check_tension_file(_existing_path(results, "results"), scene, rtol)
+    if not isinstance(results, Mapping):
+        raise InvalidInput("results: a CSV path or a dict of columns")
+    return _catena._check_tension_columns(dict(results), scene, rtol)
 
 
 @dataclass(frozen=True)

@@ -24,9 +24,12 @@ void bind_line(py::module_& module);
 void bind_model(py::module_& module);
 void bind_statics(py::module_& module);
 void bind_results(py::module_& module);
+void bind_motion(py::module_& module);
+void bind_dynamic_tension(py::module_& module);
 void bind_solvers(py::module_& module);
 void bind_scene(py::module_& module);
 void bind_external_check(py::module_& module);
+void bind_tension_check(py::module_& module);
 void bind_synthetic_output(py::module_& module);
 
 /// Marks `array` read-only: result arrays are copies, and writing into one would change nothing.

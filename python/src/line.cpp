@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "damping.hpp"
+#include "hydrodynamics.hpp"
 
 namespace catena::python {
 namespace {
@@ -19,10 +20,16 @@ LineSegment make_segment(double length_m,
                          double added_mass_kg_per_m,
                          double damping_tangential,
                          double damping_normal,
-                         double axial_damping) {
+                         double axial_damping,
+                         double diameter_m,
+                         double drag_normal,
+                         double drag_tangential,
+                         double added_mass_tangential_kg_per_m) {
   LineSegment segment{
       length_m,      weight_n_per_m,      axial_stiffness_n,
       mass_kg_per_m, added_mass_kg_per_m, {damping_tangential, damping_normal, axial_damping}};
+  segment.drag = {diameter_m, drag_normal, drag_tangential};
+  segment.added_mass_tangential_kg_per_m = added_mass_tangential_kg_per_m;
   // A one-segment line validates the segment with the same messages as the scene reader.
   Line{{segment}, {}}.validate();
   return segment;
@@ -37,7 +44,9 @@ void bind_segment(py::module_& module) {
       .def(py::init(&make_segment), py::kw_only(), py::arg("length_m"), py::arg("weight_n_per_m"),
            py::arg("mass_kg_per_m"), py::arg("axial_stiffness_n") = kInfinity,
            py::arg("added_mass_kg_per_m") = 0.0, py::arg("damping_tangential_n_s_per_m2") = 0.0,
-           py::arg("damping_normal_n_s_per_m2") = 0.0, py::arg("axial_damping_n_s") = 0.0)
+           py::arg("damping_normal_n_s_per_m2") = 0.0, py::arg("axial_damping_n_s") = 0.0,
+           py::arg("diameter_m") = 0.0, py::arg("drag_normal") = 0.0,
+           py::arg("drag_tangential") = 0.0, py::arg("added_mass_tangential_kg_per_m") = 0.0)
       .def_readwrite("length_m", &LineSegment::length_m, "unstretched length [m], > 0")
       .def_readwrite(
           "weight_n_per_m", &LineSegment::weight_n_per_m,
@@ -49,12 +58,13 @@ void bind_segment(py::module_& module) {
                      "added mass in the normal directions [kg/m], >= 0")
       .def_property_readonly("inextensible", &LineSegment::is_inextensible, "EA = inf");
   bind_section_damping(segment);
+  bind_section_hydrodynamics(segment);
   segment.def("__repr__", [](const LineSegment& s) {
     return fmt::format(
         "LineSegment(length_m={}, weight_n_per_m={}, mass_kg_per_m={}, axial_stiffness_n={}, "
-        "added_mass_kg_per_m={}{})",
+        "added_mass_kg_per_m={}{}{})",
         s.length_m, s.weight_n_per_m, s.mass_kg_per_m, s.axial_stiffness_n, s.added_mass_kg_per_m,
-        damping_repr(s.damping));
+        damping_repr(s.damping), hydrodynamics_repr(s));
   });
 }
 

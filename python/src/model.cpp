@@ -12,6 +12,7 @@
 #include "catena/solvers/solve_request.hpp"
 #include "catena/statics/problem_builders.hpp"
 #include "damping.hpp"
+#include "hydrodynamics.hpp"
 
 namespace catena::python {
 namespace {
@@ -29,17 +30,23 @@ void bind_cable(py::module_& module) {
   cable
       .def(py::init([](double length_m, double weight_n_per_m, double mass_kg_per_m,
                        double axial_stiffness_n, double added_mass_kg_per_m,
-                       double damping_tangential, double damping_normal, double axial_damping) {
+                       double damping_tangential, double damping_normal, double axial_damping,
+                       double diameter_m, double drag_normal, double drag_tangential,
+                       double added_mass_tangential_kg_per_m) {
              CableProperties properties{length_m,      weight_n_per_m,      axial_stiffness_n,
                                         mass_kg_per_m, added_mass_kg_per_m, {}};
              properties.damping = {damping_tangential, damping_normal, axial_damping};
+             properties.drag = {diameter_m, drag_normal, drag_tangential};
+             properties.added_mass_tangential_kg_per_m = added_mass_tangential_kg_per_m;
              properties.validate();
              return properties;
            }),
            py::kw_only(), py::arg("length_m"), py::arg("weight_n_per_m"), py::arg("mass_kg_per_m"),
            py::arg("axial_stiffness_n") = kInfinity, py::arg("added_mass_kg_per_m") = 0.0,
            py::arg("damping_tangential_n_s_per_m2") = 0.0,
-           py::arg("damping_normal_n_s_per_m2") = 0.0, py::arg("axial_damping_n_s") = 0.0)
+           py::arg("damping_normal_n_s_per_m2") = 0.0, py::arg("axial_damping_n_s") = 0.0,
+           py::arg("diameter_m") = 0.0, py::arg("drag_normal") = 0.0,
+           py::arg("drag_tangential") = 0.0, py::arg("added_mass_tangential_kg_per_m") = 0.0)
       .def_readwrite("length_m", &CableProperties::length_m, "unstretched length L [m], > 0")
       .def_readwrite("weight_n_per_m", &CableProperties::weight_n_per_m,
                      "submerged weight per unit unstretched length W0 [N/m], > 0")
@@ -53,15 +60,16 @@ void bind_cable(py::module_& module) {
                              "M = m + ma [kg/m]")
       .def_property_readonly("inextensible", &CableProperties::is_inextensible, "EA = inf");
   bind_section_damping(cable);
+  bind_section_hydrodynamics(cable);
   cable
       .def("validate", &CableProperties::validate,
            "Raises catena.InvalidInput naming the bad field.")
       .def("__repr__", [](const CableProperties& c) {
         return fmt::format(
             "Cable(length_m={}, weight_n_per_m={}, mass_kg_per_m={}, axial_stiffness_n={}, "
-            "added_mass_kg_per_m={}{})",
+            "added_mass_kg_per_m={}{}{})",
             c.length_m, c.weight_n_per_m, c.mass_kg_per_m, c.axial_stiffness_n,
-            c.added_mass_kg_per_m, damping_repr(c.damping));
+            c.added_mass_kg_per_m, damping_repr(c.damping), hydrodynamics_repr(c));
       });
 }
 
@@ -69,10 +77,12 @@ void bind_cable(py::module_& module) {
 Problem with_supports(Problem problem,
                       const Point& b_m,
                       const Point& a_m,
-                      const std::optional<Seabed>& seabed) {
+                      const std::optional<Seabed>& seabed,
+                      const std::optional<Environment>& environment) {
   problem.supports.a_m = to_vec2(a_m);
   problem.supports.b_m = to_vec2(b_m);
   problem.seabed = seabed;
+  if (environment) problem.environment = *environment;
   problem.validate();
   return problem;
 }
@@ -80,19 +90,21 @@ Problem with_supports(Problem problem,
 Problem make_problem(const CableProperties& cable,
                      const Point& b_m,
                      const Point& a_m,
-                     const std::optional<Seabed>& seabed) {
+                     const std::optional<Seabed>& seabed,
+                     const std::optional<Environment>& environment) {
   Problem problem;
   problem.cable = cable;
-  return with_supports(problem, b_m, a_m, seabed);
+  return with_supports(problem, b_m, a_m, seabed, environment);
 }
 
 Problem make_line_problem(const Line& line,
                           const Point& b_m,
                           const Point& a_m,
-                          const std::optional<Seabed>& seabed) {
+                          const std::optional<Seabed>& seabed,
+                          const std::optional<Environment>& environment) {
   Problem problem;
   problem.line = line;
-  return with_supports(problem, b_m, a_m, seabed);
+  return with_supports(problem, b_m, a_m, seabed, environment);
 }
 
 Seabed make_seabed(
@@ -135,9 +147,11 @@ void bind_problem(py::module_& module) {
       "A cable between two fixed supports a and b in one vertical plane (x horizontal, "
       "z up) [m]: the input of solve_statics and of every solver.")
       .def(py::init(&make_problem), py::arg("cable"), py::kw_only(), py::arg("b_m"),
-           py::arg("a_m") = Point{0.0, 0.0}, py::arg("seabed") = py::none())
+           py::arg("a_m") = Point{0.0, 0.0}, py::arg("seabed") = py::none(),
+           py::arg("environment") = py::none())
       .def_static("from_line", &make_line_problem, py::arg("line"), py::kw_only(), py::arg("b_m"),
                   py::arg("a_m") = Point{0.0, 0.0}, py::arg("seabed") = py::none(),
+                  py::arg("environment") = py::none(),
                   "A general line (catena.Line) between supports a and b [m] "
                   "(docs/explanation/physics.md, \"General lines\").")
       .def_readwrite("cable", &Problem::cable,
@@ -150,6 +164,15 @@ void bind_problem(py::module_& module) {
           },
           "the general line (a copy), or None for a uniform cable")
       .def_readonly("seabed", &Problem::seabed, "the seabed (catena.Seabed), or None")
+      .def_property(
+          "environment", [](const Problem& p) { return p.environment; },
+          [](Problem& p, const Environment& e) {
+            e.validate();
+            p.environment = e;
+          },
+          "the water (catena.Environment: density of the Morison drag, gravity); a copy")
+      .def_property_readonly("has_drag", &Problem::has_drag,
+                             "True when some section has Morison drag")
       .def_property_readonly("is_uniform", &Problem::is_uniform,
                              "True for a uniform cable, False for a general line")
       .def_property_readonly("length_m", &Problem::length_m, "total unstretched length [m]")
@@ -272,8 +295,10 @@ SolveRequest make_request(int inplane_modes,
                           bool shapes,
                           int points,
                           bool tension,
-                          std::optional<ForcedRequest> forced) {
+                          std::optional<ForcedRequest> forced,
+                          std::optional<MotionRequest> motion) {
   SolveRequest request;
+  request.motion = std::move(motion);
   request.inplane_modes = inplane_modes;
   request.outofplane_modes = outofplane_modes;
   request.shapes = shapes;
@@ -289,7 +314,8 @@ void bind_request(py::module_& module) {
                            "What to compute (docs/reference/scene-format.md, [request]).")
       .def(py::init(&make_request), py::kw_only(), py::arg("inplane_modes") = 6,
            py::arg("outofplane_modes") = 0, py::arg("shapes") = false, py::arg("points") = 101,
-           py::arg("tension") = false, py::arg("forced") = py::none())
+           py::arg("tension") = false, py::arg("forced") = py::none(),
+           py::arg("motion") = py::none())
       .def_readwrite("inplane_modes", &SolveRequest::inplane_modes,
                      "lowest in-plane modes to compute")
       .def_readwrite("outofplane_modes", &SolveRequest::outofplane_modes,
@@ -300,6 +326,8 @@ void bind_request(py::module_& module) {
                      "stations for shapes, tension and forced response")
       .def_readwrite("tension", &SolveRequest::tension, "dynamic tension of each mode")
       .def_readwrite("forced", &SolveRequest::forced, "a ForcedRequest or None")
+      .def_readwrite("motion", &SolveRequest::motion,
+                     "a MotionRequest (dynamic tension under a motion of end b) or None")
       .def(
           "stations_m",
           [](const SolveRequest& r, double length_m) {
@@ -310,9 +338,10 @@ void bind_request(py::module_& module) {
       .def("__repr__", [](const SolveRequest& r) {
         return fmt::format(
             "Request(inplane_modes={}, outofplane_modes={}, shapes={}, points={}, tension={}, "
-            "forced={})",
+            "forced={}, motion={})",
             r.inplane_modes, r.outofplane_modes, r.shapes ? "True" : "False", r.points,
-            r.tension ? "True" : "False", r.forced ? "ForcedRequest(...)" : "None");
+            r.tension ? "True" : "False", r.forced ? "ForcedRequest(...)" : "None",
+            r.motion ? "MotionRequest(...)" : "None");
       });
 }
 

@@ -37,11 +37,14 @@ PYBIND11_MODULE(_catena, module) {
   module.attr("__version__") = catena::version();
   bind_errors(module);
   bind_line(module);
+  bind_motion(module);
   bind_model(module);
   bind_statics(module);
   bind_results(module);
+  bind_dynamic_tension(module);
   bind_solvers(module);
   bind_scene(module);
   bind_external_check(module);
+  bind_tension_check(module);
   bind_synthetic_output(module);
 }

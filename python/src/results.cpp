@@ -341,6 +341,10 @@ void bind_solver_output(py::module_& module) {
       .def_readonly("inplane", &O::inplane, "Modes, or None when not asked")
       .def_readonly("outofplane", &O::outofplane, "Modes, or None when not asked")
       .def_readonly("forced", &O::forced, "list of ForcedResponse")
+      .def_readonly("dynamic_tension", &O::dynamic_tension,
+                    "list of DynamicTension: one per period of a regular motion request, one for "
+                    "an irregular one; empty when no motion was asked or the solver declined it "
+                    "(the summary says why)")
       .def_readonly("summary", &O::summary, "the overall Summary")
       .def("__repr__", [](const O& o) { return "SolverResult(" + o.summary.brief_report() + ")"; });
 }

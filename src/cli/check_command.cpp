@@ -9,9 +9,12 @@
 #include "catena/core/error.hpp"
 #include "catena/io/check_report.hpp"
 #include "catena/io/external_results_reader.hpp"
+#include "catena/io/external_tension_reader.hpp"
 #include "catena/io/file_access.hpp"
 #include "catena/io/scene_reader.hpp"
+#include "catena/io/tension_check_json.hpp"
 #include "catena/verification/scene_check.hpp"
+#include "catena/verification/scene_tension_check.hpp"
 #include "cli/commands.hpp"
 
 namespace catena::cli {
@@ -65,11 +68,80 @@ void print_check(const ExternalCheck& check) {
   }
 }
 
-int run_check(const CheckArguments& arguments) {
+void print_tension_check(const TensionCheck& check) {
+  const TensionReference& reference = check.reference;
+  fmt::print("reference {}: {}\n", reference.solver, reference.reason);
+  if (reference.cross_check_relative >= 0.0) {
+    fmt::print("  shooting and fe agree to {:.2e} (largest difference / largest tension)\n",
+               reference.cross_check_relative);
+  }
+  fmt::print("{}{}{}\n", to_string(check.quantity),
+             check.period_s > 0.0 ? fmt::format(", period {:g} s", check.period_s) : "",
+             check.resolution ? fmt::format(", finest resolution {:g}", *check.resolution) : "");
+  fmt::print("{:>12} {:>14} {:>14} {:>10} {:>10} {:>11} {:>10} {:>10}  {}\n", "s [m]", "other [N]",
+             "catena [N]", "catena +-", "other +-", "difference", "relative", "allowed", "status");
+  for (const auto& c : check.stations) {
+    fmt::print("{:>12.6g} {:>14.8g} {:>14.8g} {:>10.2e} {:>10.2e} {:>11.3e} {:>10} {:>10.2e}  {}\n",
+               c.s_m, c.other_n, c.catena_n, c.catena_uncertainty_n, c.other_uncertainty_n,
+               c.difference_n, c.relative_error ? fmt::format("{:.3e}", *c.relative_error) : "-",
+               c.allowed_n, c.within ? "within" : "DISAGREES");
+  }
+  if (check.fairlead) {
+    fmt::print("fairlead: other {:.8g} N, catena {:.8g} N, difference {:.3e} N ({})\n",
+               check.fairlead->other_n, check.fairlead->catena_n, check.fairlead->difference_n,
+               check.fairlead->within ? "within" : "disagrees");
+  } else {
+    fmt::print("fairlead: the file has no station at s = L\n");
+  }
+  for (const auto& s : check.studies) {
+    fmt::print("study at {}: order {}, limit {} N, bias {}: {} ({})\n", s.label,
+               s.study.observed_order ? fmt::format("{:.3f}", *s.study.observed_order) : "-",
+               s.study.limit_omega_rad_s ? fmt::format("{:.8g}", *s.study.limit_omega_rad_s) : "-",
+               s.study.bias_relative ? fmt::format("{:.3e}", *s.study.bias_relative) : "-",
+               to_string(s.verdict), s.study.note);
+  }
+  fmt::print("largest difference / largest tension {:.3e}; verdict: {}\n",
+             check.max_relative_difference, to_string(check.verdict));
+}
+
+ExternalCheckOptions check_options(const CheckArguments& arguments) {
   ExternalCheckOptions options;
   options.rtol = arguments.rtol;
   if (!(options.rtol > 0.0 && options.rtol < 1.0))
     throw InvalidInput(fmt::format("--rtol {}: must be in (0, 1)", options.rtol));
+  return options;
+}
+
+// Another program's dynamic tension (docs/how-to/check-dynamic-tension.md).
+int run_tension_check(const CheckArguments& arguments) {
+  const ExternalCheckOptions options = check_options(arguments);
+  if (!arguments.shapes.empty())
+    throw InvalidInput("--shapes is for mode shapes; a tension file carries no shapes");
+  if (!arguments.out.empty()) {
+    throw InvalidInput(
+        "--out writes the modal check report; for a tension file use --json (the report pages "
+        "for tensions are not written yet)");
+  }
+  if (!arguments.json.empty()) check_output_file(arguments.json);
+  const ExternalTension tension = read_external_tension(arguments.results);
+  const Scene scene = read_one_scene(arguments.scene);
+  const SceneTensionCheck checked = check_scene_tension(tension, scene, options);
+  if (!checked.check) {
+    fmt::print(stderr, "error: {}: {}\n", arguments.scene, checked.error);
+    return 3;
+  }
+  if (!arguments.quiet) print_tension_check(*checked.check);
+  if (!arguments.json.empty()) {
+    write_tension_check_json(
+        arguments.json, *checked.check,
+        {scene.name, path_text(arguments.scene), path_text(arguments.results), ""});
+  }
+  return checked.check->any_failure() ? 1 : 0;
+}
+
+int run_check(const CheckArguments& arguments) {
+  if (is_tension_results_file(arguments.results)) return run_tension_check(arguments);
+  const ExternalCheckOptions options = check_options(arguments);
   if (!arguments.json.empty()) check_output_file(arguments.json);
   if (!arguments.out.empty()) check_output_directory(arguments.out);
   const std::vector<ExternalMode> results =
@@ -110,7 +182,10 @@ void add_check_command(CLI::App& app, std::function<int()>& run) {
       "tolerance\",\n"
       "\"converges to a wrong limit\").\n"
       "Exit 0 every mode within tolerance, 1 a mode beyond it (or converging to a wrong limit),\n"
-      "2 bad input (the message names file, row and column), 3 no reference could be computed.");
+      "2 bad input (the message names file, row and column), 3 no reference could be computed.\n"
+      "A CSV with a tension_std_n or tension_amplitude_n column is another program's dynamic\n"
+      "tension along the line for the scene's [request.motion]: per station the difference to\n"
+      "Catena's, against rtol + both uncertainties (docs/how-to/check-dynamic-tension.md).");
   command
       ->add_option(
           "results", arguments->results,
@@ -118,7 +193,9 @@ void add_check_command(CLI::App& app, std::function<int()>& run) {
           "inplane, out-of-plane, outofplane; any case), mode (1-based within its plane),\n"
           "frequency_hz [Hz] or omega_rad_s [rad/s], optional resolution (mesh count, e.g.\n"
           "number of segments: larger = finer); or a .json file with the same fields and\n"
-          "optional shapes (docs/how-to/check.md)")
+          "optional shapes (docs/how-to/check.md); or a CSV of dynamic tension along the\n"
+          "line: s_m (or node with nodes), tension_std_n or tension_amplitude_n, optional\n"
+          "period_s, resolution, tension_uncertainty_n (docs/how-to/check-dynamic-tension.md)")
       ->required();
   command
       ->add_option("--scene", arguments->scene,
