@@ -35,9 +35,10 @@ struct SectionDamping {
 };
 /// Morison drag of a cable section (docs/explanation/dynamic-tension.md, "Drag"): the quadratic
 /// force per unit unstretched length -1/2 rho Cd d |v_n| v_n across the line and
-/// -1/2 rho CdAx (pi d) |v_t| v_t along it (MoorDyn's and MoorPy's convention: the tangential
-/// force acts on the wetted perimeter pi d), linearised about the response to a motion request.
-/// It enters only the dynamic tension in waves, never the natural modes. Zero by default: no drag.
+/// -1/2 rho CdAx (pi d) |v_t| v_t along it (MoorDyn's convention: the tangential force acts on
+/// the wetted perimeter pi d; MoorPy's dynamicSolve uses d, so give CdAx / pi), linearised about
+/// the response to a motion request. It enters only the dynamic tension in waves, never the natural
+/// modes. Zero by default: no drag.
 struct MorisonDrag {
   /// Hydrodynamic diameter d [m]; 0 when no drag is given. Finite and > 0 when given.
   double diameter_m = 0.0;
