@@ -32,7 +32,7 @@ class LocalNumerics final : public internal::SolverNumerics {
   bool handles_damping() const override { return true; }
   ModalResult modes(Plane, int) override { return {}; }
   internal::ForcedOutcome forced_with_drag(const ForcedRequest& request,
-                                 const internal::DragProfile& drag) override {
+                                           const internal::DragProfile& drag) override {
     ++calls;
     internal::ForcedOutcome out;
     const Vector& s = drag.stations();
