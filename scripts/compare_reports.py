@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """Compares the numbers of two verification reports: every natural frequency (omega_rad_s), the
-decay rate of every damped mode (decay_rate_1_s, when not 0), forced max |tension| and statics H,
-keyed by scene, solver, plane and mode.
+decay rate of every damped mode (decay_rate_1_s, when not 0), forced max |tension|, statics H and
+the fairlead's dynamic tension in waves (amplitude_n or std_n of each dynamic_tension entry), keyed
+by scene, solver, plane and mode.
 
 Each side is a report.json from `catena verify`, or a values file written by --write-values
 (verification/baseline/values.json: the committed baseline, compared with the suite by the
@@ -21,6 +22,8 @@ import sys
 KEYS = ("omega_rad_s", "max_abs_tension_n", "horizontal_force_n")
 # Zero on every undamped mode: kept only where a line is damped, so that undamped scenes add none.
 NONZERO_KEYS = ("decay_rate_1_s",)
+# Inside a dynamic_tension entry's "fairlead" only (the stations hold many more, kept out).
+FAIRLEAD_KEYS = ("amplitude_n", "std_n")
 
 
 def walk(node, path, out):
@@ -29,6 +32,10 @@ def walk(node, path, out):
             number = isinstance(v, (int, float)) and not isinstance(v, bool)
             if number and (k in KEYS or (k in NONZERO_KEYS and v != 0)):
                 out[path + "/" + k] = float(v)
+            elif k == "fairlead" and isinstance(v, dict):
+                for key in FAIRLEAD_KEYS:
+                    if isinstance(v.get(key), (int, float)) and v[key] >= 0:
+                        out[f"{path}/fairlead/{key}"] = float(v[key])
             else:
                 walk(v, path + "/" + k, out)
     elif isinstance(node, list):
