@@ -14,6 +14,7 @@
 #include "catena/core/error.hpp"
 #include "catena/io/csv_table.hpp"
 #include "catena/io/file_access.hpp"
+#include "io/internal/csv_cells.hpp"
 #include "io/internal/external_results_json.hpp"
 
 namespace catena {
@@ -31,44 +32,8 @@ std::string joined(const std::vector<std::string>& words) {
   return out;
 }
 
-// A finite number, or nullopt for text that is not one (NaN and infinities included).
-std::optional<double> finite_number(const std::string& text) {
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
-    return std::nullopt;
-  return value;
-}
-
-// Cells of one CSV table, located for messages.
-struct CsvCells {
-  const CsvTable& table;
-  std::string file;
-
-  std::string row_name(std::size_t row) const {
-    return fmt::format("{} row {} (line {})", file, row + 1, table.row_lines.at(row));
-  }
-  std::string where(std::size_t row, const std::string& column) const {
-    return fmt::format("{}, column '{}'", row_name(row), column);
-  }
-  bool has(const std::string& column) const {
-    return std::find(table.columns.begin(), table.columns.end(), column) != table.columns.end();
-  }
-  // nullopt for an empty cell; InvalidInput for anything but a finite number.
-  std::optional<double> number(std::size_t row, const std::string& column) const {
-    if (!has(column)) return std::nullopt;
-    const std::string& cell = table.text(row, column);
-    if (cell.empty()) return std::nullopt;
-    const auto value = finite_number(cell);
-    if (!value)
-      throw InvalidInput(fmt::format("{}: '{}' is not a finite number", where(row, column), cell));
-    return value;
-  }
-  double required(std::size_t row, const std::string& column) const {
-    const auto value = number(row, column);
-    if (!value) throw InvalidInput(fmt::format("{}: empty", where(row, column)));
-    return *value;
-  }
+// The frequency tables' cells: the shared ones, the plane and the mode number.
+struct CsvCells : internal::CsvCells {
   Plane plane(std::size_t row) const {
     const std::string& cell = table.text(row, "plane");
     const auto plane = parse_plane(cell);
@@ -102,7 +67,7 @@ void check_columns(const CsvCells& cells,
 
 std::vector<ExternalMode> read_results_csv(const std::filesystem::path& path) {
   const CsvTable table = read_csv_table(path);
-  const CsvCells cells{table, path_text(path)};
+  const CsvCells cells{{table, path_text(path)}};
   check_columns(cells, kResultColumns, {"plane", "mode"});
   const bool hz = cells.has("frequency_hz");
   if (hz == cells.has("omega_rad_s")) {
@@ -155,7 +120,7 @@ void read_component(const CsvCells& cells,
 
 void attach_shapes_csv(const std::filesystem::path& path, std::vector<ExternalMode>& modes) {
   const CsvTable table = read_csv_table(path);
-  const CsvCells cells{table, path_text(path)};
+  const CsvCells cells{{table, path_text(path)}};
   check_columns(cells, kShapeColumns, {"plane", "mode", "station_s_m"});
   std::map<ModeKey, std::vector<std::size_t>> groups;
   for (std::size_t row = 0; row < table.rows.size(); ++row) {

@@ -12,6 +12,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/file_access.hpp"
+#include "io/internal/csv_cells.hpp"
 
 namespace catena {
 namespace {
@@ -27,38 +28,8 @@ const std::vector<std::string> kColumns = {"s_m",
 // The largest node count taken as a whole number: no line has a billion segments.
 constexpr double kMostNodes = 1e9;
 
-struct Cells {
-  const CsvTable& table;
-  std::string file;
-
-  std::string row_name(std::size_t row) const {
-    return table.row_lines.empty()
-               ? fmt::format("{} row {}", file, row + 1)
-               : fmt::format("{} row {} (line {})", file, row + 1, table.row_lines.at(row));
-  }
-  std::string where(std::size_t row, const std::string& column) const {
-    return fmt::format("{}, column '{}'", row_name(row), column);
-  }
-  bool has(const std::string& column) const {
-    return std::find(table.columns.begin(), table.columns.end(), column) != table.columns.end();
-  }
-  // nullopt for an absent column or an empty cell; InvalidInput for anything but a finite number
-  // (NaN and infinities included).
-  std::optional<double> number(std::size_t row, const std::string& column) const {
-    if (!has(column)) return std::nullopt;
-    const std::string& cell = table.text(row, column);
-    if (cell.empty()) return std::nullopt;
-    double value = 0.0;
-    const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
-    if (error != std::errc() || end != cell.data() + cell.size() || !std::isfinite(value))
-      throw InvalidInput(fmt::format("{}: '{}' is not a finite number", where(row, column), cell));
-    return value;
-  }
-  double required(std::size_t row, const std::string& column) const {
-    const auto value = number(row, column);
-    if (!value) throw InvalidInput(fmt::format("{}: empty", where(row, column)));
-    return *value;
-  }
+// The tension table's cells: the shared ones and whole numbers (node, nodes).
+struct Cells : internal::CsvCells {
   int whole(std::size_t row, const std::string& column) const {
     const double value = required(row, column);
     if (value != std::floor(value) || std::abs(value) > kMostNodes)
@@ -131,7 +102,7 @@ bool is_tension_results_file(const std::filesystem::path& path) {
 }
 
 ExternalTension external_tension_from_table(const CsvTable& table, const std::string& file) {
-  const Cells cells{table, file};
+  const Cells cells{{table, file}};
   check_header(cells);
   ExternalTension tension;
   tension.origin = file;
