@@ -249,7 +249,7 @@ json node_json(const StaticSolution& statics,
   const Vec2 r = statics.position_m(s);
   const double before = statics.vertical_force_before_n(s);
   const double after = statics.vertical_force_n(s);
-  const bool grounded = statics.has_contact() && s < statics.grounded_length_m();
+  const bool grounded = statics.grounded_at(s);
   const double H = grounded ? statics.tension_n(s) : statics.horizontal_force_n();
   const double tension_before =
       grounded ? statics.tension_n(std::nextafter(s, 0.0)) : std::hypot(H, before);

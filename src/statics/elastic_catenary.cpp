@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "catena/core/error.hpp"
 #include "catena/statics/line_statics.hpp"
@@ -190,9 +191,34 @@ StaticSolution::StaticSolution(
   cable_.length_m = line.length_m();
 }
 
+StaticSolution::StaticSolution(const Line& line,
+                               const Vec2& a_m,
+                               const Seabed& seabed,
+                               double H,
+                               std::vector<StaticPiece> pieces)
+    : line_(line), pieces_(std::move(pieces)), a_m_(a_m), H_(H), seabed_(seabed) {
+  cable_ = pieces_.front().section;
+  cable_.length_m = line.length_m();
+  V_A_ = pieces_.front().grounded ? 0.0 : pieces_.front().vertical_begin_n;
+  for (const StaticPiece& piece : pieces_)
+    if (piece.grounded) grounded_length_m_ += piece.section.length_m;
+}
+
+std::vector<ContactInterval> StaticSolution::contact_intervals() const {
+  std::vector<ContactInterval> intervals;
+  bool previous_grounded = false;
+  for (const StaticPiece& piece : pieces_) {
+    const double end = piece.s_begin_m + piece.section.length_m;
+    if (piece.grounded && previous_grounded) intervals.back().s_end_m = end;
+    if (piece.grounded && !previous_grounded) intervals.push_back({piece.s_begin_m, end});
+    previous_grounded = piece.grounded;
+  }
+  return intervals;
+}
+
 double StaticSolution::anchor_horizontal_force_n() const {
-  if (!has_contact()) return H_;
-  return internal::grounded_tension(pieces_.front(), seabed_->friction, 0.0);
+  if (!anchor_grounded()) return H_;
+  return internal::grounded_tension(pieces_.front(), 0.0);
 }
 
 const StaticPiece& StaticSolution::piece_at(double s) const {
@@ -246,10 +272,9 @@ double StaticSolution::lowest_point_s_m() const {
 }
 
 double StaticSolution::tension_n(double s) const {
-  if (has_contact() && s < grounded_length_m_) {
+  if (has_contact()) {
     const StaticPiece& piece = piece_at(s);
-    if (piece.grounded)
-      return internal::grounded_tension(piece, seabed_->friction, s - piece.s_begin_m);
+    if (piece.grounded) return internal::grounded_tension(piece, s - piece.s_begin_m);
   }
   return std::hypot(H_, vertical_force_n(s));
 }
@@ -277,8 +302,7 @@ Vec2 StaticSolution::offset_m(double s) const {
   const StaticPiece& piece = piece_at(s);
   if (piece.grounded) {
     const double ds = s - piece.s_begin_m;
-    return piece.offset_begin_m +
-           Vec2(internal::grounded_stretched_increment(piece, seabed_->friction, ds), 0.0);
+    return piece.offset_begin_m + Vec2(internal::grounded_stretched_increment(piece, ds), 0.0);
   }
   return piece.offset_begin_m +
          offset(piece.section, H_, piece.vertical_begin_n, s - piece.s_begin_m);
@@ -289,7 +313,7 @@ double StaticSolution::stretched_length_m(double s) const {
   const StaticPiece& piece = piece_at(s);
   if (piece.grounded) {
     return piece.stretched_begin_m +
-           internal::grounded_stretched_increment(piece, seabed_->friction, s - piece.s_begin_m);
+           internal::grounded_stretched_increment(piece, s - piece.s_begin_m);
   }
   return piece.stretched_begin_m + internal::stretched_increment(piece.section, H_,
                                                                  piece.vertical_begin_n,

@@ -53,10 +53,22 @@ struct StaticPiece {
   /// True for a piece resting on the seabed (docs/explanation/physics.md, "Seabed contact"):
   /// straight and horizontal, V = 0, tension set by friction (grounded_tension_begin_n).
   bool grounded = false;
-  /// Grounded pieces: H - C_B (weight resting on the seabed between the start and the touchdown
-  /// point) [N], before clipping at 0; the tension along the piece is
-  /// max(this + C_B w (s - s_begin), 0). Unused (0) on suspended pieces.
+  /// Grounded pieces: the tension at the start before clipping at 0 [N]; the tension along the
+  /// piece is max(this + grounded_tension_slope_n_per_m (s - s_begin), 0). On the stretch from an
+  /// anchor lying on the seabed: H - C_B (weight resting on the seabed between the start and the
+  /// touchdown point). Unused (0) on suspended pieces.
   double grounded_tension_begin_n = 0.0;
+  /// Grounded pieces: d(tension)/ds [N/m]: C_B w on the stretch from an anchor lying on the seabed
+  /// (friction holds it toward the anchor); 0 on a stretch between two suspended parts, where the
+  /// friction is not mobilised and the tension is the suspended parts' H
+  /// (docs/explanation/physics.md, "Seabed contact"). Unused (0) on suspended pieces.
+  double grounded_tension_slope_n_per_m = 0.0;
+};
+
+/// One stretch of a line resting on the seabed: unstretched arc lengths [m], s_begin < s_end.
+struct ContactInterval {
+  double s_begin_m = 0.0;
+  double s_end_m = 0.0;
 };
 
 /// The static state of the cable: the two end-force unknowns plus closed forms at any s.
@@ -79,6 +91,15 @@ class StaticSolution {
   /// reaches 0.
   StaticSolution(
       const Line& line, const Vec2& a_m, const Seabed& seabed, double H, double grounded_length_m);
+  /// The equilibrium of a line (validated) on `seabed` given as its pieces in order from A
+  /// (offsets relative to `a_m`), with any number of grounded stretches anywhere along it (general
+  /// seabed contact: both ends may be above the seabed). `H` is the suspended parts' horizontal
+  /// force [N]. The pieces must chain (each starts where the previous ends) and cover [0, L].
+  StaticSolution(const Line& line,
+                 const Vec2& a_m,
+                 const Seabed& seabed,
+                 double H,
+                 std::vector<StaticPiece> pieces);
 
   /// Records the seabed under a solution that does not touch it (L_g = 0; nothing else changes).
   void set_seabed_without_contact(const Seabed& seabed) { seabed_ = seabed; }
@@ -86,14 +107,20 @@ class StaticSolution {
   bool has_seabed() const { return seabed_.has_value(); }
   /// The seabed (requires has_seabed()).
   const Seabed& seabed() const { return *seabed_; }
-  /// True when a grounded length rests on the seabed (L_g > 0).
+  /// True when some length rests on the seabed (L_g > 0).
   bool has_contact() const { return grounded_length_m_ > 0.0; }
-  /// Unstretched grounded length L_g from A [m]; 0 without contact.
+  /// Total unstretched length L_g resting on the seabed [m] (all contact intervals); 0 without
+  /// contact. With the anchor on the seabed and one touchdown, the grounded length from A.
   double grounded_length_m() const { return grounded_length_m_; }
-  /// Unstretched arc length of the touchdown point [m] (= L_g).
-  double touchdown_s_m() const { return grounded_length_m_; }
-  /// Horizontal force on the anchor (end A) [N]: H reduced by the seabed friction along the
-  /// grounded part, max(H - C_B (grounded weight), 0); H without contact.
+  /// The stretches resting on the seabed, in order of s (merged across piece cuts); empty without
+  /// contact.
+  std::vector<ContactInterval> contact_intervals() const;
+  /// True when s lies on a stretch resting on the seabed (at a cut: the piece toward B).
+  bool grounded_at(double s) const { return is_line() && piece_at(s).grounded; }
+  /// True when end A rests on the seabed (the first piece is grounded).
+  bool anchor_grounded() const { return !pieces_.empty() && pieces_.front().grounded; }
+  /// Horizontal force on end A [N]: with A on the seabed, H reduced by the seabed friction along
+  /// the grounded part, max(H - C_B (grounded weight), 0); H otherwise.
   double anchor_horizontal_force_n() const;
 
   /// The uniform cable. For a general line only length_m (the total) is meaningful: use

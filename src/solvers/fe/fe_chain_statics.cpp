@@ -63,7 +63,7 @@ void lay_out_contact(FeChain& chain, const FeLineMesh& mesh, double continuous_h
   for (const FeMeshPiece& piece : mesh.pieces) {
     if (!piece.grounded) break;
     const double l0 = piece.section.length_m / piece.elements;
-    const double slope = mesh.seabed->friction * piece.section.weight_n_per_m;
+    const double slope = piece.grounded_tension_slope_n_per_m;
     for (int k = 0; k < piece.elements; ++k)
       offsets.push_back(piece.grounded_tension_begin_n + slope * l0 * (k + 0.5) -
                         continuous_horizontal_force_n);

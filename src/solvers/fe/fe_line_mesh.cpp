@@ -55,7 +55,7 @@ void refine_touchdown_layer(FeLineMesh& mesh) {
   const double k =
       std::max(mesh.seabed->stiffness_n_per_m2, mesh.seabed->tangential_stiffness_n_per_m2);
   const double length = piece.section.length_m;
-  const double slope = mesh.seabed->friction * piece.section.weight_n_per_m;
+  const double slope = piece.grounded_tension_slope_n_per_m;
   const double touchdown_tension = piece.grounded_tension_begin_n + slope * length;
   if (!(k > 0.0) || !(touchdown_tension > 0.0) || !piece.grounded) return;
   const double delta = std::sqrt(touchdown_tension / k);
@@ -139,6 +139,7 @@ FeLineMesh make_line_mesh(const Problem& problem, const StaticSolution& statics,
     piece.point_at_start = p == 0 ? -1 : point_at(line, source.s_begin_m);
     piece.grounded = source.grounded;
     piece.grounded_tension_begin_n = source.grounded_tension_begin_n;
+    piece.grounded_tension_slope_n_per_m = source.grounded_tension_slope_n_per_m;
     mesh.pieces.push_back(piece);
     lengths.push_back(piece.section.length_m);
   }

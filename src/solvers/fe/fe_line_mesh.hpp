@@ -25,10 +25,11 @@ struct FeMeshPiece {
   /// Index in Line::points of the point attachment at the piece's start (-1: none).
   int point_at_start = -1;
   /// True for a piece resting on the seabed (StaticPiece::grounded); its static tension is
-  /// max(grounded_tension_begin_n + C_B w (s - s_begin), 0) (docs/explanation/physics.md, "Seabed
-  /// contact").
+  /// max(grounded_tension_begin_n + grounded_tension_slope_n_per_m (s - s_begin), 0)
+  /// (docs/explanation/physics.md, "Seabed contact").
   bool grounded = false;
   double grounded_tension_begin_n = 0.0;
+  double grounded_tension_slope_n_per_m = 0.0;
 };
 
 /// The pieces of one mesh, in order from A, and the line's point attachments.

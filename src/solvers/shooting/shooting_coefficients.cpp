@@ -46,7 +46,7 @@ ShootingPiece grounded_piece_of(const StaticPiece& piece, const Seabed& seabed) 
   p.grounded = true;
   p.W0 = 0.0;
   p.tension_begin = piece.grounded_tension_begin_n;
-  p.tension_slope = seabed.friction * piece.section.weight_n_per_m;
+  p.tension_slope = piece.grounded_tension_slope_n_per_m;
   p.foundation_normal = seabed.stiffness_n_per_m2;
   p.foundation_tangential = seabed.tangential_stiffness_n_per_m2;
   p.foundation_damping = seabed.damping_n_s_per_m2;

@@ -92,15 +92,14 @@ Line line_beyond(const Line& line, double s_m, std::size_t& first_segment) {
   return part;
 }
 
-double grounded_tension(const StaticPiece& piece, double friction, double ds) {
-  return std::max(piece.grounded_tension_begin_n + friction * piece.section.weight_n_per_m * ds,
-                  0.0);
+double grounded_tension(const StaticPiece& piece, double ds) {
+  return std::max(piece.grounded_tension_begin_n + piece.grounded_tension_slope_n_per_m * ds, 0.0);
 }
 
-double grounded_stretched_increment(const StaticPiece& piece, double friction, double ds) {
+double grounded_stretched_increment(const StaticPiece& piece, double ds) {
   // int_0^ds max(T0 + k t, 0) dt with k = C_B w >= 0: the positive part starts at t0.
   const double T0 = piece.grounded_tension_begin_n;
-  const double k = friction * piece.section.weight_n_per_m;
+  const double k = piece.grounded_tension_slope_n_per_m;
   double integral;
   if (k == 0.0) {
     integral = std::max(T0, 0.0) * ds;
@@ -128,7 +127,8 @@ std::vector<StaticPiece> build_seabed_pieces(const Line& line,
     piece.grounded = true;
     piece.grounded_tension_begin_n =
         H - friction * grounded_weight_beyond(line, cuts[i], grounded_length_m);
-    x += grounded_stretched_increment(piece, friction, length);
+    piece.grounded_tension_slope_n_per_m = friction * piece.section.weight_n_per_m;
+    x += grounded_stretched_increment(piece, length);
     pieces.push_back(piece);
   }
   std::size_t first_segment = 0;

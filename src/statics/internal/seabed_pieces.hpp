@@ -26,10 +26,10 @@ std::vector<StaticPiece> build_seabed_pieces(const Line& line,
                                              double H,
                                              double grounded_length_m);
 
-/// Tension of a grounded piece at `ds` from its start [N]: max(T_begin + C_B w ds, 0).
-double grounded_tension(const StaticPiece& piece, double friction, double ds);
+/// Tension of a grounded piece at `ds` from its start [N]: max(T_begin + slope ds, 0).
+double grounded_tension(const StaticPiece& piece, double ds);
 
 /// Stretched length of [0, ds] of a grounded piece, ds + int_0^ds T/EA [m].
-double grounded_stretched_increment(const StaticPiece& piece, double friction, double ds);
+double grounded_stretched_increment(const StaticPiece& piece, double ds);
 
 }  // namespace catena::internal
