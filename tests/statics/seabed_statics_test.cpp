@@ -95,7 +95,10 @@ TEST_P(FortyPercentGrounded, MatchesTheIndependentSolveToOneIn1e9) {
   std::printf("C_B = %g: H %.3e, L_g %.3e, V_B %.3e, anchor %.3e (relative errors)\n", friction,
               errors[0], errors[1], errors[2], errors[3]);
   EXPECT_EQ(s.vertical_force_a_n(), 0.0);
-  EXPECT_DOUBLE_EQ(s.touchdown_s_m(), s.grounded_length_m());
+  ASSERT_EQ(s.contact_intervals().size(), 1u);
+  EXPECT_EQ(s.contact_intervals().front().s_begin_m, 0.0);
+  EXPECT_DOUBLE_EQ(s.contact_intervals().front().s_end_m, s.grounded_length_m());
+  EXPECT_TRUE(s.anchor_grounded());
 }
 
 INSTANTIATE_TEST_SUITE_P(Friction, FortyPercentGrounded, ::testing::Values(0.0, 0.1, 1.0));
