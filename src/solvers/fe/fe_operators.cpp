@@ -75,9 +75,13 @@ double half_sum(const FeChain& chain, const Vector& density, int i) {
          (chain.element_length_m[i - 1] * density[i - 1] + chain.element_length_m[i] * density[i]);
 }
 
+// A point attachment at node i, with or without inertia: a massless buoy's weight kinks the line
+// as much as a clump's (until 2026-12 only a point with inertia counted, and a buoy given by its
+// volume alone left fe first order: docs/explanation/methods/fe.md, "Lines").
 bool has_point(const FeChain& chain, int i) {
   const FeNodeInertia& point = chain.node_inertia[static_cast<std::size_t>(i)];
-  return point.tangential_kg > 0.0 || point.normal_kg > 0.0 || point.outofplane_kg > 0.0;
+  return point.attached || point.tangential_kg > 0.0 || point.normal_kg > 0.0 ||
+         point.outofplane_kg > 0.0;
 }
 
 // In-plane lumped mass of half of element j on one of its nodes, in the element's own frame
@@ -224,7 +228,9 @@ std::vector<Eigen::Matrix2d> inplane_node_damping(const FeChain& chain) {
   std::vector<Eigen::Matrix2d> node(static_cast<std::size_t>(N) + 1, Eigen::Matrix2d::Zero());
   for (int i = 1; i < N; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    if (same_damping(chain, i)) {
+    if (same_damping(chain, i) && !has_point(chain, i)) {
+      // As the mass (assemble_inplane): at a point the line kinks, and drag with c_t != c_n
+      // lumped in the bisector frame would be off by O(1) on that node.
       const Vec2 t = (chain.direction[k - 1] + chain.direction[k]).normalized();
       const Vec2 nrm(-t.y(), t.x());
       node[k] =
