@@ -3,6 +3,7 @@
 // docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_operators.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <vector>
 
@@ -84,10 +85,37 @@ bool has_point(const FeChain& chain, int i) {
          point.outofplane_kg > 0.0;
 }
 
-// In-plane lumped mass of half of element j on one of its nodes, in the element's own frame
-// (m along t_j, M across it) [kg].
-Eigen::Matrix2d half_element_mass(const FeChain& chain, int j) {
+// True when elements j and k lie in the same mesh piece (FeChain::piece_first_element).
+bool same_piece(const FeChain& chain, int j, int k) {
+  const std::vector<int>& first = chain.piece_first_element;
+  auto piece = [&first](int e) { return std::upper_bound(first.begin(), first.end(), e); };
+  return piece(j) == piece(k);
+}
+
+// The frame of node i's half cell on the side of element j (j = i toward b, j = i - 1 toward a),
+// at a node where the line kinks or changes section. An interior node of a piece takes the bisector
+// of its two elements' directions, which differs from the line's tangent at the node by O(h^2);
+// the half cell takes the bisector that node would have if the piece went on beyond it: of t_j and
+// the direction of the force 2 F_j - F_k of the element before it (the element force is linear in
+// s within a piece; k is j's neighbour away from the node). In t_j alone (the element's own frame)
+// the half cell's mass differs from the piece's interior scheme by O(h^2) on one node, an O(h^3)
+// error in the frequencies that Richardson's even expansion leaves (third order after it, where the
+// line's m and M differ). Falls back to t_j where the piece has one element on that side.
+Vec2 half_cell_tangent(const FeChain& chain, int i, int j) {
   const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
+  const int k = j == i ? j + 1 : j - 1;
+  if (k < 0 || k >= chain.elements || !same_piece(chain, j, k)) return t;
+  const Vec2 before = 2.0 * chain.tension_n[j] * t -
+                      chain.tension_n[k] * chain.direction[static_cast<std::size_t>(k)];
+  if (!(before.norm() > 0.0)) return t;
+  const Vec2 sum = t + before.normalized();
+  return sum.norm() > 1.0 ? Vec2(sum.normalized()) : t;
+}
+
+// In-plane lumped mass of the half of element j on node i, in the half cell's frame
+// (half_cell_tangent: m along it, M across it) [kg].
+Eigen::Matrix2d half_element_mass(const FeChain& chain, int i, int j) {
+  const Vec2 t = half_cell_tangent(chain, i, j);
   const Eigen::Matrix2d ttT = t * t.transpose();
   const double M = chain.normal_mass_kg_per_m[j];
   return 0.5 * chain.element_length_m[j] *
@@ -145,12 +173,13 @@ FeMatrices assemble_inplane(const FeChain& chain) {
           chain.element_length_m[i] * (chain.tangential_mass_kg_per_m[i] * t * t.transpose() +
                                        chain.normal_mass_kg_per_m[i] * nrm * nrm.transpose());
     } else {
-      // A joint or a point: each half element keeps its own frame. At a point weight the static
-      // line has a kink (an O(1) angle between the elements); lumped in the bisector frame, the
-      // half elements' masses would be off by O(1) on one node, an O(h) error in every frequency
-      // that Richardson's h^2 model cannot remove (docs/explanation/methods/fe.md, "Lines").
+      // A joint or a point: each half cell keeps the frame of its own side (half_cell_tangent).
+      // At a point weight the static line has a kink (an O(1) angle between the elements); lumped
+      // in the bisector frame, the half elements' masses would be off by O(1) on one node, an O(h)
+      // error in every frequency that Richardson's h^2 model cannot remove
+      // (docs/explanation/methods/fe.md, "Lines").
       node[static_cast<std::size_t>(i)] =
-          half_element_mass(chain, i - 1) + half_element_mass(chain, i);
+          half_element_mass(chain, i, i - 1) + half_element_mass(chain, i, i);
     }
     const FeNodeInertia& point = chain.node_inertia[static_cast<std::size_t>(i)];
     if (point.tangential_kg > 0.0 || point.normal_kg > 0.0)
@@ -207,9 +236,9 @@ FeMatrices assemble(Plane plane, const FeChain& chain) {
 
 namespace {
 
-// In-plane drag of half of element j on one of its nodes, in the element's own frame [N s/m].
-Eigen::Matrix2d half_element_drag(const FeChain& chain, int j) {
-  const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
+// In-plane drag of the half of element j on node i, in the half cell's frame [N s/m].
+Eigen::Matrix2d half_element_drag(const FeChain& chain, int i, int j) {
+  const Vec2 t = half_cell_tangent(chain, i, j);
   const Eigen::Matrix2d ttT = t * t.transpose();
   return 0.5 * chain.element_length_m[j] *
          (chain.tangential_damping_n_s_per_m2[j] * ttT +
@@ -237,7 +266,7 @@ std::vector<Eigen::Matrix2d> inplane_node_damping(const FeChain& chain) {
           chain.element_length_m[i] * (chain.tangential_damping_n_s_per_m2[i] * t * t.transpose() +
                                        chain.normal_damping_n_s_per_m2[i] * nrm * nrm.transpose());
     } else {
-      node[k] = half_element_drag(chain, i - 1) + half_element_drag(chain, i);
+      node[k] = half_element_drag(chain, i, i - 1) + half_element_drag(chain, i, i);
     }
     if (chain.has_contact())
       node[k](1, 1) += chain.foundation_damping_n_s_per_m2 * chain.grounded_share_m(i);
