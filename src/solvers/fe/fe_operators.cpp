@@ -100,11 +100,18 @@ bool same_piece(const FeChain& chain, int j, int k) {
 // s within a piece; k is j's neighbour away from the node). In t_j alone (the element's own frame)
 // the half cell's mass differs from the piece's interior scheme by O(h^2) on one node, an O(h^3)
 // error in the frequencies that Richardson's even expansion leaves (third order after it, where the
-// line's m and M differ). Falls back to t_j where the piece has one element on that side.
-Vec2 half_cell_tangent(const FeChain& chain, int i, int j) {
+// line's m and M differ). Falls back to t_j where the piece has one element on that side, or where
+// `alike` says that element k is lumped differently from j (the drag of a profile that varies
+// element by element is lumped in the element frames at every node, so that is the scheme to
+// continue).
+Vec2 half_cell_tangent(const FeChain& chain,
+                       int i,
+                       int j,
+                       bool (*alike)(const FeChain&, int, int) = nullptr) {
   const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
   const int k = j == i ? j + 1 : j - 1;
   if (k < 0 || k >= chain.elements || !same_piece(chain, j, k)) return t;
+  if (alike && !alike(chain, j, k)) return t;
   const Vec2 before = 2.0 * chain.tension_n[j] * t -
                       chain.tension_n[k] * chain.direction[static_cast<std::size_t>(k)];
   if (!(before.norm() > 0.0)) return t;
@@ -236,9 +243,18 @@ FeMatrices assemble(Plane plane, const FeChain& chain) {
 
 namespace {
 
-// In-plane drag of the half of element j on node i, in the half cell's frame [N s/m].
+// True when elements j and k have the same length and drag (lumped alike: inplane_node_damping).
+bool same_drag(const FeChain& chain, int j, int k) {
+  return chain.element_length_m[j] == chain.element_length_m[k] &&
+         chain.tangential_damping_n_s_per_m2[j] == chain.tangential_damping_n_s_per_m2[k] &&
+         chain.normal_damping_n_s_per_m2[j] == chain.normal_damping_n_s_per_m2[k];
+}
+
+// In-plane drag of the half of element j on node i, in the half cell's frame [N s/m]: the
+// bisector its side's interior nodes would give it where they lump the drag in the bisector frame
+// (uniform drag), else the element's own frame (a drag profile that varies element by element).
 Eigen::Matrix2d half_element_drag(const FeChain& chain, int i, int j) {
-  const Vec2 t = half_cell_tangent(chain, i, j);
+  const Vec2 t = half_cell_tangent(chain, i, j, &same_drag);
   const Eigen::Matrix2d ttT = t * t.transpose();
   return 0.5 * chain.element_length_m[j] *
          (chain.tangential_damping_n_s_per_m2[j] * ttT +
