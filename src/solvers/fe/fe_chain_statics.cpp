@@ -100,7 +100,7 @@ void lay_out_chain(FeChain& chain,
       chain.node_inertia[static_cast<std::size_t>(j)] = {
           point.mass_kg + point.tangential_added_mass_kg(),
           point.mass_kg + point.normal_added_mass_kg(),
-          point.mass_kg + point.outofplane_added_mass_kg()};
+          point.mass_kg + point.outofplane_added_mass_kg(), true};
     }
     const LineSegment& section = piece.section;
     const double l0 = section.length_m / piece.elements;

@@ -24,6 +24,10 @@ struct FeNodeInertia {
   double tangential_kg = 0.0;
   double normal_kg = 0.0;
   double outofplane_kg = 0.0;
+  /// True where a point attachment sits, even one without inertia (a buoy given by its volume
+  /// alone): its weight kinks the static line there (fe_operators.cpp lumps the line's own mass
+  /// in each half element's frame at such a node).
+  bool attached = false;
 };
 
 /// The discrete chain in equilibrium.

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "solvers/common/mode_tools.hpp"
 
@@ -141,26 +140,50 @@ namespace {
 // Richardson value of a frequency on meshes N and 2N (order 2, mesh ratio 2).
 double richardson(double coarse, double fine) { return fine + (fine - coarse) / 3.0; }
 
-// The error estimate of the Richardson value on N, 2N from the estimate mesh N/2: |R(N, 2N) -
-// R(N/2, N)|, which bounds the error of R(N, 2N) whenever the extrapolated values converge at
-// least by a factor 2 per halving (order 4: by 16, and the bound is about 15x the error). Used
-// only where the unextrapolated frequencies show their order 2 (observed order within
-// kOrderSlack of 2), the regime in which Richardson's leading term is the error; elsewhere
-// nullopt, and the Richardson correction stays the (conservative) estimate.
-std::optional<double> extrapolated_difference(double half, double coarse, double fine) {
+}  // namespace
+
+// The error estimate of the Richardson value R(N, 2N) from the three meshes N/2, N, 2N, by the
+// observed order p of the unextrapolated frequencies (docs/explanation/methods/fe.md, "Error
+// behaviour and its estimate"), d = omega_2N - omega_N:
+// - p within kOrderSlack of 2 (Richardson's regime): |R(N, 2N) - R(N/2, N)|, which bounds the
+//   error of R(N, 2N) whenever the extrapolated values converge at least by a factor 2 per halving
+//   (at order 4 by 16: the bound is then about 15x the error);
+// - p above it: the Richardson correction |d| / 3, the fine mesh's own error, which R(N, 2N)
+//   overshoots by less;
+// - 0 < p below it (a term of lower order than Richardson assumes: a kink the mesh does not
+//   follow, too few elements per wavelength): the fine mesh's error at the observed order,
+//   |d| / (2^p - 1), plus the correction Richardson added, |d| / 3; this bounds R(N, 2N)'s error
+//   when the frequencies converge at order p, and grows without bound as p -> 0;
+// - differences that change sign (p not defined: a first-order term against the second, or
+//   rounding): 4/3 (|omega_N/2 - omega_N| + |d|), which bounds R(N, 2N)'s error for any mix
+//   a h + b h^2 (equality where omega_2N = omega_N).
+FeMeshEstimate mesh_estimate(double half, double coarse, double fine) {
   constexpr double kOrderSlack = 0.25;
   const double order = observed_order(half, coarse, fine);
-  if (!(std::abs(order - 2.0) <= kOrderSlack)) return std::nullopt;
-  return std::abs(richardson(coarse, fine) - richardson(half, coarse));
+  const double d = std::abs(fine - coarse), d_half = std::abs(coarse - half);
+  FeMeshEstimate out;
+  out.observed_order = order;
+  if (std::abs(order - 2.0) <= kOrderSlack) {
+    out.error = std::abs(richardson(coarse, fine) - richardson(half, coarse));
+  } else if (order > 2.0) {
+    out.error = d / 3.0;
+  } else if (order > 0.0) {
+    out.error = d / std::expm1(order * std::log(2.0)) + d / 3.0;
+    out.below_assumed_order = true;
+  } else {
+    out.error = 4.0 / 3.0 * (d_half + d);
+    out.below_assumed_order = d_half + d > 0.0;
+  }
+  return out;
 }
-
-}  // namespace
 
 FeExtrapolatedFrequency extrapolate_frequency(const FePlan& plan,
                                               const std::vector<std::vector<double>>& omega) {
   const auto fine = static_cast<std::size_t>(plan.main_fine);
   const auto coarse = static_cast<std::size_t>(std::max(0, plan.main_coarse));
   std::vector<double> per_penalty, per_penalty_error;
+  double observed = -1.0;
+  bool below = false;
   for (std::size_t k = 0; k < plan.penalties(); ++k) {
     const double w_fine = omega[fine][k];
     double value = w_fine, estimate = -1.0;
@@ -170,13 +193,18 @@ FeExtrapolatedFrequency extrapolate_frequency(const FePlan& plan,
       if (plan.richardson) value = w_fine + correction;
       if (plan.richardson && plan.has_estimate_mesh()) {
         const double w_half = omega[static_cast<std::size_t>(plan.estimate_coarse)][k];
-        estimate = extrapolated_difference(w_half, omega[coarse][k], w_fine).value_or(estimate);
+        const FeMeshEstimate mesh = mesh_estimate(w_half, omega[coarse][k], w_fine);
+        estimate = mesh.error;
+        if (k == 0) {
+          observed = mesh.observed_order;
+          below = mesh.below_assumed_order;
+        }
       }
     }
     per_penalty.push_back(value);
     per_penalty_error.push_back(estimate);
   }
-  if (!plan.inextensible) return {per_penalty[0], per_penalty_error[0]};
+  if (!plan.inextensible) return {per_penalty[0], per_penalty_error[0], observed, below};
   // Linear in kappa (Irvine's 1/lambda^2 is linear in the extensibility): 2 w(kappa) - w(2 kappa).
   const double linear = 2.0 * per_penalty[0] - per_penalty[1];
   const double kappa_error =
@@ -184,7 +212,7 @@ FeExtrapolatedFrequency extrapolate_frequency(const FePlan& plan,
           ? kappa_extrapolation_error(per_penalty[0], per_penalty[1], per_penalty[2])
           : std::abs(per_penalty[0] - per_penalty[1]);
   const double error = per_penalty_error[0] < 0.0 ? -1.0 : per_penalty_error[0] + kappa_error;
-  return {linear, error};
+  return {linear, error, observed, below};
 }
 
 double kappa_extrapolation_error(double at_kappa, double at_2kappa, double at_4kappa) {

@@ -3,11 +3,10 @@
 /// \file
 /// The `fe` solver's extrapolation (docs/explanation/methods/fe.md): modes paired across levels by
 /// their shapes (largest MAC on the common nodes), Richardson in the mesh (order 2, mesh ratio 2:
-/// omega = omega_2N + (omega_2N - omega_N) / 3; the error estimate is the difference from the
-/// Richardson value on N/2, N where that mesh was solved and the frequencies show their order 2,
-/// else the correction itself), linear extrapolation in the penalty kappa to 0 for an
-/// inextensible cable (2 omega_kappa - omega_2kappa, its error from 4 kappa), and the observed
-/// convergence order of the unextrapolated frequencies.
+/// omega = omega_2N + (omega_2N - omega_N) / 3; the error estimate from the three meshes N/2, N,
+/// 2N by the observed order of the unextrapolated frequencies, else the correction itself), linear
+/// extrapolation in the penalty kappa to 0 for an inextensible cable (2 omega_kappa - omega_2kappa,
+/// its error from 4 kappa), and the observed convergence order of the unextrapolated frequencies.
 
 #include <Eigen/Dense>
 #include <vector>
@@ -48,14 +47,34 @@ std::vector<std::vector<double>> level_omegas(const FeLevels& levels,
 double rounding_estimate(
     const FePlan& plan, const FeLevels& levels, const FeModeMatches& matches, Plane plane, int i);
 
+/// The error estimate of a Richardson value R(N, 2N) from the frequencies on N/2, N and 2N.
+struct FeMeshEstimate {
+  /// Absolute [rad/s]: |R(N, 2N) - R(N/2, N)| where the observed order p of the unextrapolated
+  /// frequencies is within 0.25 of 2; the Richardson correction |omega_2N - omega_N| / 3 above;
+  /// the fine mesh's error at the observed order plus that correction below
+  /// (|omega_2N - omega_N| (1 / (2^p - 1) + 1 / 3)); 4/3 of the two differences' sum where they
+  /// change sign (fe_extrapolation.cpp says why each bounds the error).
+  double error = 0.0;
+  /// p (0: the differences do not shrink monotonically).
+  double observed_order = 0.0;
+  /// True when p is below Richardson's 2 - 0.25 (or undefined): a term of lower order than the
+  /// extrapolation assumes, which the estimate accounts for by the observed order.
+  bool below_assumed_order = false;
+};
+
+/// The estimate from the three meshes (omega on N/2, N and 2N).
+FeMeshEstimate mesh_estimate(double half, double coarse, double fine);
+
 /// A frequency extrapolated in the mesh (Richardson, when planned) and in kappa (inextensible).
 struct FeExtrapolatedFrequency {
   double omega_rad_s = 0.0;
-  /// Absolute error estimate [rad/s]: |R(N, 2N) - R(N/2, N)| with the estimate mesh N/2 where the
-  /// unextrapolated frequencies converge at order 2 (within 0.25), else the Richardson correction;
-  /// plus, when penalised, kappa_extrapolation_error (the kappa correction |w_kappa - w_2kappa| on
-  /// a plan of two penalties); -1 without a coarse mesh.
+  /// Absolute error estimate [rad/s]: mesh_estimate's with the estimate mesh N/2, else the
+  /// Richardson correction; plus, when penalised, kappa_extrapolation_error (the kappa correction
+  /// |w_kappa - w_2kappa| on a plan of two penalties); -1 without a coarse mesh.
   double error_rad_s = -1.0;
+  /// mesh_estimate's observed order and flag at the first penalty (-1, false: no estimate mesh).
+  double observed_order = -1.0;
+  bool below_assumed_order = false;
 };
 
 /// Extrapolates one mode from its frequencies on every level, omega[mesh][penalty].

@@ -3,6 +3,7 @@
 // docs/explanation/methods/fe.md.
 #include "solvers/fe/fe_operators.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <vector>
 
@@ -75,15 +76,53 @@ double half_sum(const FeChain& chain, const Vector& density, int i) {
          (chain.element_length_m[i - 1] * density[i - 1] + chain.element_length_m[i] * density[i]);
 }
 
+// A point attachment at node i, with or without inertia: a massless buoy's weight kinks the line
+// as much as a clump's (until 2026-12 only a point with inertia counted, and a buoy given by its
+// volume alone left fe first order: docs/explanation/methods/fe.md, "Lines").
 bool has_point(const FeChain& chain, int i) {
   const FeNodeInertia& point = chain.node_inertia[static_cast<std::size_t>(i)];
-  return point.tangential_kg > 0.0 || point.normal_kg > 0.0 || point.outofplane_kg > 0.0;
+  return point.attached || point.tangential_kg > 0.0 || point.normal_kg > 0.0 ||
+         point.outofplane_kg > 0.0;
 }
 
-// In-plane lumped mass of half of element j on one of its nodes, in the element's own frame
-// (m along t_j, M across it) [kg].
-Eigen::Matrix2d half_element_mass(const FeChain& chain, int j) {
+// True when elements j and k lie in the same mesh piece (FeChain::piece_first_element).
+bool same_piece(const FeChain& chain, int j, int k) {
+  const std::vector<int>& first = chain.piece_first_element;
+  auto piece = [&first](int e) { return std::upper_bound(first.begin(), first.end(), e); };
+  return piece(j) == piece(k);
+}
+
+// The frame of node i's half cell on the side of element j (j = i toward b, j = i - 1 toward a),
+// at a node where the line kinks or changes section. An interior node of a piece takes the bisector
+// of its two elements' directions, which differs from the line's tangent at the node by O(h^2);
+// the half cell takes the bisector that node would have if the piece went on beyond it: of t_j and
+// the direction of the force 2 F_j - F_k of the element before it (the element force is linear in
+// s within a piece; k is j's neighbour away from the node). In t_j alone (the element's own frame)
+// the half cell's mass differs from the piece's interior scheme by O(h^2) on one node, an O(h^3)
+// error in the frequencies that Richardson's even expansion leaves (third order after it, where the
+// line's m and M differ). Falls back to t_j where the piece has one element on that side, or where
+// `alike` says that element k is lumped differently from j (the drag of a profile that varies
+// element by element is lumped in the element frames at every node, so that is the scheme to
+// continue).
+Vec2 half_cell_tangent(const FeChain& chain,
+                       int i,
+                       int j,
+                       bool (*alike)(const FeChain&, int, int) = nullptr) {
   const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
+  const int k = j == i ? j + 1 : j - 1;
+  if (k < 0 || k >= chain.elements || !same_piece(chain, j, k)) return t;
+  if (alike && !alike(chain, j, k)) return t;
+  const Vec2 before = 2.0 * chain.tension_n[j] * t -
+                      chain.tension_n[k] * chain.direction[static_cast<std::size_t>(k)];
+  if (!(before.norm() > 0.0)) return t;
+  const Vec2 sum = t + before.normalized();
+  return sum.norm() > 1.0 ? Vec2(sum.normalized()) : t;
+}
+
+// In-plane lumped mass of the half of element j on node i, in the half cell's frame
+// (half_cell_tangent: m along it, M across it) [kg].
+Eigen::Matrix2d half_element_mass(const FeChain& chain, int i, int j) {
+  const Vec2 t = half_cell_tangent(chain, i, j);
   const Eigen::Matrix2d ttT = t * t.transpose();
   const double M = chain.normal_mass_kg_per_m[j];
   return 0.5 * chain.element_length_m[j] *
@@ -141,12 +180,13 @@ FeMatrices assemble_inplane(const FeChain& chain) {
           chain.element_length_m[i] * (chain.tangential_mass_kg_per_m[i] * t * t.transpose() +
                                        chain.normal_mass_kg_per_m[i] * nrm * nrm.transpose());
     } else {
-      // A joint or a point: each half element keeps its own frame. At a point weight the static
-      // line has a kink (an O(1) angle between the elements); lumped in the bisector frame, the
-      // half elements' masses would be off by O(1) on one node, an O(h) error in every frequency
-      // that Richardson's h^2 model cannot remove (docs/explanation/methods/fe.md, "Lines").
+      // A joint or a point: each half cell keeps the frame of its own side (half_cell_tangent).
+      // At a point weight the static line has a kink (an O(1) angle between the elements); lumped
+      // in the bisector frame, the half elements' masses would be off by O(1) on one node, an O(h)
+      // error in every frequency that Richardson's h^2 model cannot remove
+      // (docs/explanation/methods/fe.md, "Lines").
       node[static_cast<std::size_t>(i)] =
-          half_element_mass(chain, i - 1) + half_element_mass(chain, i);
+          half_element_mass(chain, i, i - 1) + half_element_mass(chain, i, i);
     }
     const FeNodeInertia& point = chain.node_inertia[static_cast<std::size_t>(i)];
     if (point.tangential_kg > 0.0 || point.normal_kg > 0.0)
@@ -203,9 +243,18 @@ FeMatrices assemble(Plane plane, const FeChain& chain) {
 
 namespace {
 
-// In-plane drag of half of element j on one of its nodes, in the element's own frame [N s/m].
-Eigen::Matrix2d half_element_drag(const FeChain& chain, int j) {
-  const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
+// True when elements j and k have the same length and drag (lumped alike: inplane_node_damping).
+bool same_drag(const FeChain& chain, int j, int k) {
+  return chain.element_length_m[j] == chain.element_length_m[k] &&
+         chain.tangential_damping_n_s_per_m2[j] == chain.tangential_damping_n_s_per_m2[k] &&
+         chain.normal_damping_n_s_per_m2[j] == chain.normal_damping_n_s_per_m2[k];
+}
+
+// In-plane drag of the half of element j on node i, in the half cell's frame [N s/m]: the
+// bisector its side's interior nodes would give it where they lump the drag in the bisector frame
+// (uniform drag), else the element's own frame (a drag profile that varies element by element).
+Eigen::Matrix2d half_element_drag(const FeChain& chain, int i, int j) {
+  const Vec2 t = half_cell_tangent(chain, i, j, &same_drag);
   const Eigen::Matrix2d ttT = t * t.transpose();
   return 0.5 * chain.element_length_m[j] *
          (chain.tangential_damping_n_s_per_m2[j] * ttT +
@@ -224,14 +273,16 @@ std::vector<Eigen::Matrix2d> inplane_node_damping(const FeChain& chain) {
   std::vector<Eigen::Matrix2d> node(static_cast<std::size_t>(N) + 1, Eigen::Matrix2d::Zero());
   for (int i = 1; i < N; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    if (same_damping(chain, i)) {
+    if (same_damping(chain, i) && !has_point(chain, i)) {
+      // As the mass (assemble_inplane): at a point the line kinks, and drag with c_t != c_n
+      // lumped in the bisector frame would be off by O(1) on that node.
       const Vec2 t = (chain.direction[k - 1] + chain.direction[k]).normalized();
       const Vec2 nrm(-t.y(), t.x());
       node[k] =
           chain.element_length_m[i] * (chain.tangential_damping_n_s_per_m2[i] * t * t.transpose() +
                                        chain.normal_damping_n_s_per_m2[i] * nrm * nrm.transpose());
     } else {
-      node[k] = half_element_drag(chain, i - 1) + half_element_drag(chain, i);
+      node[k] = half_element_drag(chain, i, i - 1) + half_element_drag(chain, i, i);
     }
     if (chain.has_contact())
       node[k](1, 1) += chain.foundation_damping_n_s_per_m2 * chain.grounded_share_m(i);

@@ -50,9 +50,10 @@ const KnobTable<FeSolverOptions>& fe_knobs() {
        flag_knob("observed_order", &O::observed_order,
                  "also solve 4N and report the observed convergence order"),
        real_knob("tolerance", &O::tolerance, Range::closed(0.0, 1.0),
-                 "accuracy target of each frequency [-]: while a mode's error estimate exceeds it, "
-                 "fe solves again on a finer mesh (up to max_elements); a mode that still exceeds "
-                 "it is named and the plane not converged (0: none)"),
+                 "accuracy target of each frequency [-] (default 1e-6, fe's declared accuracy): "
+                 "while a mode's error estimate exceeds it, fe solves again on a finer mesh (up "
+                 "to max_elements); a mode that still exceeds it is named and the plane not "
+                 "converged (0: none)"),
        integer_knob(
            "max_elements", &O::max_elements, Range::closed(2, 5e7),
            "the largest N a tolerance may refine to (at or below elements: no refinement)")});
@@ -231,7 +232,9 @@ std::string FeNumerics::compute_naturals_for(Plane plane, const ForcedRequest& r
         "resonance check of the forced response by the pivots of K - omega^2 M only: {} {} modes "
         "lie below the forcing frequencies, more than the {} the meshes resolve",
         below, to_string(plane), cap);
-  const ModalResult own = modes(plane, below + 1);
+  // On the plan as it is: the accuracy target refines for the modes a request asks, not for
+  // these (a refinement here would move every drag iterate to the finer mesh).
+  const ModalResult own = modes_on_plan(plane, below + 1);
   return fmt::format(
       "resonance check of the forced response against the {} lowest {} natural frequencies, "
       "computed for it (relative error estimates up to {:.1e})",
@@ -323,11 +326,15 @@ void FeNumerics::extrapolate_modes(Plane plane,
   const Vector stations = context_.request.stations_m(context_.problem.length_m());
   const FeModeMatches matches = match_level_modes(levels_, plan_, plane, available);
   const std::size_t last = plan_.meshes.size() - 1;
+  std::vector<std::pair<double, double>> low_orders;  // (omega, observed order)
   for (int i = 0; i < available; ++i) {
     const std::vector<std::vector<double>> omega = level_omegas(levels_, matches, plane, i);
     if (options_.observed_order && plan_.meshes.size() >= 3)
       orders.push_back(observed_order(omega[last - 2][0], omega[last - 1][0], omega[last][0]));
-    Mode mode = extrapolated_mode(plane, i, matches, extrapolate_frequency(plan_, omega), stations);
+    const FeExtrapolatedFrequency frequency = extrapolate_frequency(plan_, omega);
+    Mode mode = extrapolated_mode(plane, i, matches, frequency, stations);
+    if (frequency.below_assumed_order)
+      low_orders.emplace_back(mode.omega_rad_s, frequency.observed_order);
     result.summary.max_error_estimate =
         std::max(result.summary.max_error_estimate, mode.relative_error_estimate);
     result.modes.push_back(std::move(mode));
@@ -338,6 +345,8 @@ void FeNumerics::extrapolate_modes(Plane plane,
                    [](const Mode& a, const Mode& b) { return a.omega_rad_s < b.omega_rad_s; });
   for (std::size_t i = 0; i < result.modes.size(); ++i)
     result.modes[i].index = static_cast<int>(i) + 1;
+  if (!low_orders.empty())
+    result.summary.notes.push_back(low_order_note(plan_, result.modes, low_orders));
   timings_.postprocessing_s += std::chrono::duration<double>(Clock::now() - start).count();
 }
 
@@ -537,9 +546,9 @@ SolverEntry make_fe_entry() {
   entry.kind = SolverKind::Exact;
   entry.certifies_references = true;  // any sag, inclination and EA
   entry.all_modes_at_once = true;     // one shift-invert Lanczos per mesh level
-  // Its `tolerance` when asked (the plane summaries' accuracy_target), else what the default mesh
-  // is declared to reach: 1e-6 (verification/tolerances.toml, [[solver]] fe: the penalty floor of
-  // inextensible cables is a few 1e-7).
+  // Its `tolerance` (the plane summaries' accuracy_target; default 1e-6, verification/
+  // tolerances.toml, [[solver]] fe: the penalty floor of inextensible cables is a few 1e-7), and
+  // 1e-6 where a scene switched the target off (tolerance = 0).
   set_accuracy_target(entry, fe_knobs(), [](const FeSolverOptions& options) {
     return options.tolerance > 0.0 ? options.tolerance : 1e-6;
   });

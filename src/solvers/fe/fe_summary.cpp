@@ -33,6 +33,29 @@ std::string observed_order_note(const FePlan& plan, const std::vector<double>& o
                      plan.meshes[last - 2], plan.meshes[last - 1], plan.meshes[last], list);
 }
 
+}  // namespace
+
+std::string low_order_note(const FePlan& plan,
+                           const std::vector<Mode>& modes,
+                           const std::vector<std::pair<double, double>>& low_orders) {
+  std::string list;
+  for (const auto& [omega, order] : low_orders) {
+    int index = 0;
+    for (const Mode& mode : modes)
+      if (mode.omega_rad_s == omega) index = mode.index;
+    list += fmt::format("{}mode {} ({})", list.empty() ? "" : ", ", index,
+                        order > 0.0 ? fmt::format("p = {:.2f}", order) : "not monotone");
+  }
+  const auto half = static_cast<std::size_t>(plan.estimate_coarse);
+  return fmt::format(
+      "observed order of the unextrapolated frequencies on N = {}, {}, {} below the 2 Richardson "
+      "assumes: {}; their error estimates are taken at the observed order",
+      plan.meshes[half], plan.meshes[static_cast<std::size_t>(plan.main_coarse)],
+      plan.meshes[static_cast<std::size_t>(plan.main_fine)], list);
+}
+
+namespace {
+
 std::string statics_note(const FeChain& chain, bool prescribed_forces) {
   return fmt::format(
       "discrete statics (N = {}): H = {:.12g} N, V_A = {:.12g} N, {} Newton iterations, closure "

@@ -53,6 +53,14 @@ struct FePlaneFacts {
 /// termination must be final).
 void describe_fe_plane(const FePlaneFacts& facts, ModalResult& result);
 
+/// The note naming the modes whose unextrapolated frequencies on N/2, N, 2N converge below
+/// Richardson's assumed order 2 (`low_orders`: each one's extrapolated omega and observed order, 0
+/// where the differences change sign), whose estimates therefore come from the observed order
+/// (fe_extrapolation.hpp, mesh_estimate).
+std::string low_order_note(const FePlan& plan,
+                           const std::vector<Mode>& modes,
+                           const std::vector<std::pair<double, double>>& low_orders);
+
 /// The notes on the discrete statics of `chain` and on the stage times so far (the damped planes
 /// add them as describe_fe_plane does).
 std::string fe_statics_note(const FeChain& chain, bool prescribed_forces);

@@ -260,7 +260,11 @@ TEST(SolverRegistry, TheEntrysAccuracyTargetIsTheOneTheSummariesReport) {
     EXPECT_DOUBLE_EQ(output.inplane->summary.accuracy_target,
                      find_solver(c.solver)->accuracy_target(c.knobs));
   }
+  // fe's default tolerance is its declared accuracy: the summaries report it (0 asks for none).
   EXPECT_DOUBLE_EQ(run("fe", taut, testing::modes_request(2, 0)).inplane->summary.accuracy_target,
+                   1e-6);
+  EXPECT_DOUBLE_EQ(run("fe", taut, testing::modes_request(2, 0), {{"tolerance", 0.0}})
+                       .inplane->summary.accuracy_target,
                    -1.0);
   EXPECT_DOUBLE_EQ(find_solver("fe")->accuracy_target({}), 1e-6);
   EXPECT_THROW(find_solver("shooting")->accuracy_target({{"rtol", -1.0}}), InvalidInput);

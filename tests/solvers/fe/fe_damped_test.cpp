@@ -65,7 +65,7 @@ constexpr double kRelTolProportional = 1e-12;
 TEST(FeDamped, ProportionalDampingShiftsEveryRootOfTheUndampedChain) {
   const Problem problem = make_taut_inclined_problem(0.1, 30.0, 10.0, 0.5);
   const double alpha = 0.4;
-  const FeSolverOptions options{.elements = 200, .richardson = false};
+  const FeSolverOptions options{.elements = 200, .richardson = false, .tolerance = 0.0};
   const Solved undamped = solve(problem, modes_request(6, 4), options);
   const Solved damped = solve(proportional(problem, alpha), modes_request(6, 4), options);
   expect_converged(undamped);
@@ -121,7 +121,7 @@ TEST(FeDamped, DampingRatioOf1e4HasItsDecayRateToRounding) {
 TEST(FeDamped, HeavyDampingListsTheOverdampedRootsApart) {
   const Problem problem = make_taut_inclined_problem(1e-6, 0.0, 1e-6, 1.0);
   const double alpha = 2.4 * kPi;
-  const FeSolverOptions options{.elements = 200, .richardson = false};
+  const FeSolverOptions options{.elements = 200, .richardson = false, .tolerance = 0.0};
   const Solved undamped = solve(problem, modes_request(0, 4), options);
   const Solved damped = solve(proportional(problem, alpha), modes_request(0, 3), options);
   expect_converged(undamped);

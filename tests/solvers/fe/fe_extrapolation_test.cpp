@@ -97,14 +97,45 @@ TEST(FeExtrapolation, TheEstimateMeshBoundsTheExtrapolatedErrorTightly) {
   EXPECT_LT(result.error_rad_s, 1e-2 * std::abs(correction));
 }
 
-TEST(FeExtrapolation, WithoutOrderTwoTheCorrectionStaysTheEstimate) {
-  // omega(h) = 5 + 3 h (first order: a kink the mesh does not follow): observed order 1, so the
-  // extrapolated difference is not trusted and the Richardson correction is the estimate.
-  auto omega = [](double h) { return 5.0 + 3.0 * h; };
-  const double fine = omega(1.0 / 200), coarse = omega(1.0 / 100);
-  const auto result =
-      internal::extrapolate_frequency(three_mesh_plan(), {{omega(1.0 / 50)}, {coarse}, {fine}});
-  EXPECT_NEAR(result.error_rad_s, std::abs(fine - coarse) / 3.0, 1e-15);
+TEST(FeExtrapolation, BelowOrderTwoTheEstimateFollowsTheObservedOrder) {
+  // omega(h) = 5 + 3 h^p (a kink the mesh does not follow: p = 1; too few elements per wavelength):
+  // Richardson's 1/3 leaves (4 - 2^p) / 3 of the fine mesh's error, which the correction |d| / 3
+  // (the estimate until 2026-12) missed by 2x at p = 1. The estimate at the observed order bounds
+  // it, and the result says the order was below 2.
+  for (const double p : {1.0, 1.3, 1.6}) {
+    auto omega = [p](double h) { return 5.0 + 3.0 * std::pow(h, p); };
+    const double fine = omega(1.0 / 200), coarse = omega(1.0 / 100);
+    const auto result =
+        internal::extrapolate_frequency(three_mesh_plan(), {{omega(1.0 / 50)}, {coarse}, {fine}});
+    const double error = std::abs(result.omega_rad_s - 5.0);
+    EXPECT_GE(result.error_rad_s, error) << "p = " << p;
+    // (2 + 2^p) / (4 - 2^p) times the error: 2 at p = 1, 5.2 at p = 1.6.
+    EXPECT_LE(result.error_rad_s, 6.0 * error) << "p = " << p;
+    EXPECT_NEAR(result.observed_order, p, 1e-9);
+    EXPECT_TRUE(result.below_assumed_order);
+  }
+}
+
+TEST(FeExtrapolation, DifferencesOfChangingSignGetAnEstimateThatBoundsAnyFirstAndSecondOrderMix) {
+  // omega(h) = 5 + a h + b h^2 with a h between -3 b h^2 and -1.5 b h^2 on the middle mesh: the
+  // differences change sign (no observed order), and R(N, 2N) errs by a h / 3.
+  for (const double a : {-1.6, -2.25, -2.9}) {
+    auto omega = [a](double h) { return 5.0 + a * h + 100.0 * h * h; };  // b h = 1 at h = 1/100
+    const double fine = omega(1.0 / 200), coarse = omega(1.0 / 100), half = omega(1.0 / 50);
+    ASSERT_LT((half - coarse) * (coarse - fine), 0.0) << a;
+    const auto result =
+        internal::extrapolate_frequency(three_mesh_plan(), {{half}, {coarse}, {fine}});
+    EXPECT_GE(result.error_rad_s, std::abs(result.omega_rad_s - 5.0)) << "a = " << a;
+    EXPECT_TRUE(result.below_assumed_order);
+  }
+}
+
+TEST(FeExtrapolation, InRichardsonsRegimeTheOrderIsNotFlagged) {
+  auto omega = [](double h) { return 5.0 + 3.0 * h * h + 4.0 * std::pow(h, 4); };
+  const auto result = internal::extrapolate_frequency(
+      three_mesh_plan(), {{omega(1.0 / 50)}, {omega(1.0 / 100)}, {omega(1.0 / 200)}});
+  EXPECT_NEAR(result.observed_order, 2.0, 0.01);
+  EXPECT_FALSE(result.below_assumed_order);
 }
 
 TEST(FeExtrapolation, TheThirdPenaltyBoundsTheLinearExtrapolationsError) {

@@ -201,14 +201,11 @@ TEST(FeLine, ForcedResponseOfASplitLineEqualsTheCables) {
 // both planes; with the kink node's distributed mass lumped in the bisector frame (m along the
 // bisector, M across it, although the two half elements meet at an O(1) angle) the in-plane order
 // fell towards 1, and Richardson left an O(h) error (docs/explanation/methods/fe.md, "Lines").
-TEST(FeLine, KinkAtAPointWeightKeepsSecondOrderInPlane) {
-  Problem p;
-  p.line.segments = {{40.0, 100.0, 1e8, 10.0, 10.0}, {60.0, 150.0, 5e7, 6.0, 4.0}};
-  p.line.points = {point(20.0, 500.0, 5000.0)};
-  p.supports.b_m = Vec2(80.0, 30.0);
+void expect_second_order_in_both_planes(const Problem& p, int coarsest = 50) {
   std::vector<Solved> runs;
-  for (int elements : {50, 100, 200})
-    runs.push_back(solve(p, modes_request(4, 4), {.elements = elements, .richardson = false}));
+  for (int elements : {coarsest, 2 * coarsest, 4 * coarsest})
+    runs.push_back(solve(p, modes_request(4, 4),
+                         {.elements = elements, .richardson = false, .tolerance = 0.0}));
   for (const Solved& run : runs)
     ASSERT_EQ(run.output.summary.termination, Termination::Converged)
         << run.output.summary.full_report();
@@ -222,6 +219,27 @@ TEST(FeLine, KinkAtAPointWeightKeepsSecondOrderInPlane) {
           << (plane == &SolverOutput::inplane ? "in plane" : "out of plane") << " mode " << i + 1;
     }
   }
+}
+
+TEST(FeLine, KinkAtAPointWeightKeepsSecondOrderInPlane) {
+  Problem p;
+  p.line.segments = {{40.0, 100.0, 1e8, 10.0, 10.0}, {60.0, 150.0, 5e7, 6.0, 4.0}};
+  p.line.points = {point(20.0, 500.0, 5000.0)};
+  p.supports.b_m = Vec2(80.0, 30.0);
+  expect_second_order_in_both_planes(p);
+}
+
+// The same at a point without inertia on a joint of one section (a buoy given by its volume alone,
+// as in MoorDyn decks): only the point marks the node, and until 2026-12 the node's mass was then
+// lumped in the bisector frame (in plane on N = 100, 200, 400: orders 1.06, 0.76, 1.52 and a
+// sign change). N = 50 is not yet in the asymptotic range of this kink (1.95 to 2.06).
+TEST(FeLine, KinkAtAMasslessBuoyOnAJointOfOneSectionKeepsSecondOrderInPlane) {
+  Problem p;
+  const LineSegment section{50.0, 120.0, 1e8, 10.0, 10.0};
+  p.line.segments = {section, section};
+  p.line.points = {point(50.0, 0.0, -4000.0)};
+  p.supports.b_m = Vec2(80.0, 10.0);
+  expect_second_order_in_both_planes(p, 100);
 }
 
 TEST(FeLine, MeshHasNodesAtJointsAndPointsAndDoublesEveryPieceBetweenLevels) {

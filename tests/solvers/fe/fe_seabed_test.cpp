@@ -229,6 +229,7 @@ SolverOutput solve_forty(double friction,
   FeSolverOptions options;
   options.elements = elements;
   options.richardson = richardson;
+  options.tolerance = 0.0;  // these meshes (the tests compare meshes and orders)
   return solve_grounded(problem, statics, modes_request(10, 10), options);
 }
 

@@ -89,8 +89,8 @@ TEST(FeSolver, UnextrapolatedTautStringConvergesAtSecondOrder) {
   const Problem problem = make_taut_inclined_problem(1e-6, 0.0, 1e-6, 1.0);
   std::vector<std::vector<double>> omegas;
   for (int N : {1000, 2000, 4000}) {
-    const Solved solved =
-        solve(problem, modes_request(10, 10), {.elements = N, .richardson = false});
+    const Solved solved = solve(problem, modes_request(10, 10),
+                                {.elements = N, .richardson = false, .tolerance = 0.0});
     std::vector<double> row;
     for (const Mode& mode : solved.output.inplane->modes) row.push_back(mode.omega_rad_s);
     for (const Mode& mode : solved.output.outofplane->modes) row.push_back(mode.omega_rad_s);
@@ -105,7 +105,7 @@ TEST(FeSolver, UnextrapolatedTautStringConvergesAtSecondOrder) {
 
 TEST(FeSolver, ObservedOrderIsReportedWhenAsked) {
   const Solved solved = solve(make_taut_inclined_problem(1e-6, 0.0, 1e-6, 1.0), modes_request(3, 0),
-                              {.elements = 200, .observed_order = true});
+                              {.elements = 200, .observed_order = true, .tolerance = 0.0});
   // The orders concern the plane's frequencies, so the note is in that plane's summary.
   ASSERT_TRUE(solved.output.inplane.has_value());
   bool found = false;
@@ -412,6 +412,31 @@ TEST(FeSolverOptions, AToleranceItCannotMeetNamesTheModesWhoseEstimateExceedsIt)
   EXPECT_TRUE(untargeted.output.summary.missed_modes.empty());
 }
 
+TEST(FeSolverOptions, ByDefaultFeWorksToTheAccuracyItIsDeclaredToReach) {
+  // The registry declares fe's accuracy at its defaults (what the harness holds its frequencies
+  // to); the default options ask for the same target, so a default solve refines to it rather than
+  // returning "converged" modes beyond it (issue 31: 3.1e-5 on MoorDyn's MHK_RM1_Floating).
+  const SolverEntry* entry = find_solver("fe");
+  ASSERT_NE(entry, nullptr);
+  EXPECT_DOUBLE_EQ(FeSolverOptions{}.tolerance, entry->accuracy_target({}));
+  // Forty modes of a taut cable: at N = 400 the top ones' estimates exceed 1e-6.
+  const Problem problem = make_taut_inclined_problem(0.1, 30.0, 10.0, 1.0);
+  FeSolverOptions fixed;
+  fixed.tolerance = 0.0;
+  const Solved coarse =
+      catena::testing::solve_problem(solve_fe, problem, modes_request(40, 0), fixed);
+  ASSERT_GT(coarse.output.inplane->summary.max_error_estimate, 1e-6);
+  const Solved solved =
+      catena::testing::solve_problem(solve_fe, problem, modes_request(40, 0), FeSolverOptions{});
+  const ModalResult& plane = *solved.output.inplane;
+  EXPECT_EQ(plane.summary.termination, Termination::Converged) << plane.summary.full_report();
+  EXPECT_DOUBLE_EQ(plane.summary.accuracy_target, 1e-6);
+  for (const Mode& mode : plane.modes) {
+    EXPECT_LE(mode.relative_error_estimate, 1e-6) << mode.index;
+    EXPECT_TRUE(mode.meets_target) << mode.index;
+  }
+}
+
 TEST(FeSolverOptions, AToleranceRefinesTheMeshUntilEveryModeMeetsIt) {
   // The mooring line at N = 400: estimates up to ~1e-8 for six modes per plane. Asked for 2e-9, fe
   // refines (fe_refinement.hpp), meets the target on every mode, says so in a note, and the
@@ -518,7 +543,8 @@ TEST(FeSolverOptions, ModesBeyondWhatTheCoarsestMeshResolvesAreRefused) {
         "[solvers.fe].elements = 400: too few for " + std::to_string(inplane) + " in-plane modes");
   }
   const Solved largest =
-      solve(make_gale_xi_problem(-0.5, 0.5), modes_request(200, 0), {.elements = 400});
+      solve(make_gale_xi_problem(-0.5, 0.5), modes_request(200, 0),
+            {.elements = 400, .tolerance = 0.0});  // this mesh: its limit is the subject
   ASSERT_EQ(largest.output.summary.termination, Termination::Converged)
       << largest.output.summary.full_report();
   const ModalResult& modes = *largest.output.inplane;
@@ -546,8 +572,11 @@ TEST(FeSolver, DeclinesAnInextensibleCableTooCloseToTautForItsPenalty) {
   EXPECT_FALSE(taut.output.inplane.has_value());
   problem.supports.b_m = Vec2(1.0 - 1e-3, 0.0);
   const Solved slack = solve(problem, modes_request(2, 2), {});
-  EXPECT_EQ(slack.output.summary.termination, Termination::Converged)
-      << slack.output.summary.full_report();
+  // Solved; its penalty floor (about 1.2e-6 here) may leave modes declared beyond the default
+  // target 1e-6 (no-convergence with missed_modes), which is not a decline.
+  EXPECT_TRUE(slack.output.summary.is_usable()) << slack.output.summary.full_report();
+  ASSERT_TRUE(slack.output.inplane.has_value());
+  EXPECT_EQ(slack.output.inplane->modes.size(), 2u);
 }
 
 // EA/T0 = lambda^2 / eps^2 = 1e8 on 8000 elements: a rounding floor of ~0.07 relative on mode 1.
