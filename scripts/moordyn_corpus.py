@@ -1,0 +1,317 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Published MoorDyn decks imported and solved with defaults (docs/how-to/moordyn-import.md,
+"Decks tried").
+
+For each deck of the list (`owner/name:path` rows): the deck is read from a local git mirror of its
+repository (`git show HEAD:path`; no network, nothing copied into this repository), imported with
+`catena import moordyn` into a temporary directory (exit code, rows converted or refused with their
+reasons), and each scene it writes is solved twice:
+
+1. `catena solve SCENE --json` with the defaults (exit code and wall time);
+2. shooting alone at rtol 1e-13 (the scene with `[solvers] shooting = { rtol = 1e-13 }`), the
+   reference for fe: per mode, fe's relative difference from it and the ratio of that difference to
+   fe's own estimate (actual / estimate; an honest estimate keeps it below 1).
+
+Writes DIR/corpus.md (a markdown table per deck and per scene, and the fe-vs-shooting summary)
+and DIR/corpus.json (every number). Usage:
+
+    scripts/moordyn_corpus.py --catena build/catena --out /tmp/corpus [-j 2] [--time-limit 120]
+
+Mirrors: DIR/<owner>+<name>/repo (a git directory) under each --mirror (default /work/.mirror).
+"""
+import argparse
+import concurrent.futures
+import datetime
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+REPO_ROOT = Path(__file__).resolve().parent.parent
+DEFAULT_DECKS = REPO_ROOT / "verification" / "corpus" / "moordyn-decks.txt"
+REFERENCE_RTOL = 1e-13
+
+
+def read_deck_list(path):
+    """The `owner/name:path` rows of the list (blank lines and # comments skipped)."""
+    decks = []
+    for number, line in enumerate(Path(path).read_text().splitlines(), 1):
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        repo, sep, deck = line.partition(":")
+        if not sep or "/" not in repo or not deck:
+            sys.exit(f"{path}:{number}: expected owner/name:path, got '{line}'")
+        decks.append((repo, deck))
+    return decks
+
+
+def git_dir(mirrors, repo):
+    for mirror in mirrors:
+        candidate = Path(mirror) / repo.replace("/", "+") / "repo"
+        if candidate.exists():
+            return candidate
+    return None
+
+
+def materialise(mirrors, repo, deck, into):
+    """Writes the deck into `into` and returns (path, commit), or (None, why)."""
+    directory = git_dir(mirrors, repo)
+    if directory is None:
+        return None, f"no mirror of {repo} under {', '.join(mirrors)}"
+    git = ["git", f"--git-dir={directory}"]
+    shown = subprocess.run(git + ["show", f"HEAD:{deck}"], capture_output=True)
+    if shown.returncode != 0:
+        return None, shown.stderr.decode(errors="replace").strip()
+    commit = subprocess.run(git + ["rev-parse", "HEAD"], capture_output=True, text=True)
+    into.mkdir(parents=True, exist_ok=True)
+    path = into / Path(deck).name
+    path.write_bytes(shown.stdout)
+    return path, commit.stdout.strip()
+
+
+def run(command, timeout):
+    start = time.monotonic()
+    try:
+        done = subprocess.run(command, capture_output=True, text=True, timeout=timeout)
+        code, output = done.returncode, done.stdout + done.stderr
+    except subprocess.TimeoutExpired as expired:
+        code = "timeout"
+        output = (expired.stdout or b"").decode(errors="replace") if isinstance(
+            expired.stdout, bytes) else (expired.stdout or "")
+    return code, output, time.monotonic() - start
+
+
+# "1+2+3      not converted: reason" (the summary row of `catena import moordyn`).
+REFUSED = re.compile(r"^(\d+(?:\+\d+)*)\s+not converted: (.*)$")
+
+
+def import_deck(catena, deck_path, out, timeout):
+    code, output, seconds = run([catena, "import", "moordyn", str(deck_path), "--out", str(out)],
+                                timeout)
+    refused = []
+    for line in output.splitlines():
+        match = REFUSED.match(line.strip())
+        if match:
+            refused.append({"lines": match.group(1), "reason": match.group(2).strip()})
+    scenes = sorted(out.glob("*.toml")) if out.exists() else []
+    return {"exit": code, "seconds": round(seconds, 3), "refused": refused,
+            "scenes": [s.name for s in scenes], "output": output[-4000:]}
+
+
+def modes_of(report, solver):
+    """{plane: [(omega, estimate)]} of `solver` in a `catena solve --json` report."""
+    try:
+        record = report["scenes"][0]["solvers"][solver]
+    except (KeyError, IndexError, TypeError):
+        return {}
+    out = {}
+    for plane in ("inplane", "outofplane"):
+        modes = (record.get(plane) or {}).get("modes") or []
+        out[plane] = [(m.get("omega_rad_s"), m.get("relative_error_estimate")) for m in modes]
+    return out
+
+
+def load_json(path):
+    try:
+        return json.loads(Path(path).read_text())
+    except (OSError, ValueError):
+        return None
+
+
+def fe_against_shooting(default_report, reference_report):
+    """Per mode: fe's relative difference from shooting at rtol 1e-13 and actual / estimate."""
+    fe = modes_of(default_report, "fe") if default_report else {}
+    shooting = modes_of(reference_report, "shooting") if reference_report else {}
+    rows = []
+    for plane in ("inplane", "outofplane"):
+        for index, ((omega_fe, estimate), (omega_ref, _)) in enumerate(
+                zip(fe.get(plane, []), shooting.get(plane, [])), 1):
+            if not omega_fe or not omega_ref:
+                continue
+            difference = abs(omega_fe - omega_ref) / abs(omega_ref)
+            ratio = difference / estimate if estimate and estimate > 0 else None
+            rows.append({"plane": plane, "mode": index, "fe_omega": omega_fe,
+                         "shooting_omega": omega_ref, "relative_difference": difference,
+                         "fe_estimate": estimate, "ratio": ratio})
+    return rows
+
+
+def first_error(output):
+    for line in output.splitlines():
+        if "error" in line.lower() or "declin" in line.lower() or "refus" in line.lower():
+            return line.strip()[:300]
+    return ""
+
+
+def solve_scene(catena, scene, work, time_limit):
+    """The default solve and the shooting reference of one scene."""
+    timeout = time_limit * 3 + 60 if time_limit else None
+    limit = ["--time-limit", str(time_limit)] if time_limit else []
+    default_json = work / (scene.stem + ".default.json")
+    code, output, seconds = run([catena, "solve", str(scene), "--json", str(default_json), "-q"]
+                                + limit, timeout)
+    record = {"scene": scene.name, "exit": code, "seconds": round(seconds, 2)}
+    if code not in (0, 1):
+        record["error"] = first_error(output) or output.strip()[-300:]
+    reference = work / (scene.stem + ".reference.toml")
+    reference.write_text(scene.read_text() +
+                         f"\n[solvers]\nshooting = {{ rtol = {REFERENCE_RTOL:g} }}\n")
+    reference_json = work / (scene.stem + ".reference.json")
+    ref_code, ref_output, ref_seconds = run(
+        [catena, "solve", str(reference), "--json", str(reference_json), "-q"] + limit, timeout)
+    record["reference_exit"] = ref_code
+    record["reference_seconds"] = round(ref_seconds, 2)
+    default_report = load_json(default_json)
+    record["checks_failed"] = failed_checks(default_report)
+    record["fe_vs_shooting"] = fe_against_shooting(default_report, load_json(reference_json))
+    if not record["fe_vs_shooting"]:
+        record["fe_vs_shooting_missing"] = why_no_comparison(default_report,
+                                                             load_json(reference_json))
+    return record
+
+
+def failed_checks(report):
+    """The checks of a default solve whose verdict is FAIL or SOURCE."""
+    try:
+        table = report["scenes"][0]["checks"]
+    except (KeyError, IndexError, TypeError):
+        return []
+    rows = [dict(zip(table["fields"], row)) for row in table.get("rows", [])]
+    return [f"{r['check']} {r['compare']} {r.get('plane', '')} {r.get('mode', '')}: {r['verdict']}"
+            for r in rows if r.get("verdict") in ("FAIL", "SOURCE")]
+
+
+def why_no_comparison(default_report, reference_report):
+    """Why fe and shooting were not compared: a solver's termination and message."""
+    reasons = []
+    for label, report, solver in (("fe", default_report, "fe"),
+                                  ("shooting 1e-13", reference_report, "shooting")):
+        try:
+            scene = report["scenes"][0]
+        except (KeyError, IndexError, TypeError):
+            reasons.append(f"{label}: no report")
+            continue
+        if scene.get("error"):
+            reasons.append(f"{label}: {scene['error']}"[:240])
+            continue
+        summary = ((scene.get("solvers") or {}).get(solver) or {}).get("summary")
+        if not summary:
+            reasons.append(f"{label}: did not run")
+        else:
+            reasons.append(f"{label}: {summary.get('termination')} "
+                           f"{summary.get('message', '')}"[:240])
+    return "; ".join(reasons)
+
+
+def corpus_deck(catena, mirrors, repo, deck, root, time_limit):
+    slug = (repo + "/" + deck).replace("/", "_")
+    work = root / slug
+    path, commit = materialise(mirrors, repo, deck, work / "deck")
+    record = {"repo": repo, "deck": deck}
+    if path is None:
+        record["unavailable"] = commit
+        return record
+    record["commit"] = commit
+    imported = import_deck(catena, path, work / "scenes", 120)
+    record["import"] = imported
+    record["solves"] = [solve_scene(catena, work / "scenes" / name, work, time_limit)
+                        for name in imported["scenes"]]
+    return record
+
+
+def fmt(value, spec):
+    return format(value, spec) if isinstance(value, (int, float)) else "-"
+
+
+def markdown(records, meta):
+    out = [f"Corpus of {len(records)} published MoorDyn decks, {meta['date']}, catena "
+           f"{meta['version']}; per-solve time limit {meta['time_limit']} s.", ""]
+    out += ["| deck | import | converted scenes: solve exit (s) | refused (reason) |",
+            "|---|---|---|---|"]
+    for r in records:
+        name = f"{r['repo']} `{r['deck']}`"
+        if "unavailable" in r:
+            out.append(f"| {name} | not available | - | {r['unavailable']} |")
+            continue
+        imp = r["import"]
+        solves = ", ".join(f"{s['scene'].rsplit('-line-', 1)[-1][:-5]}: {s['exit']} "
+                           f"({s['seconds']:.1f})" for s in r["solves"]) or "-"
+        refused = "; ".join(f"{x['lines']}: {x['reason']}" for x in imp["refused"]) or "-"
+        out.append(f"| {name} | {imp['exit']} | {solves} | {refused.replace('|', '/')} |")
+    out += ["", "fe against shooting at rtol 1e-13 (every mode of every scene where both ran):", "",
+            "| scene | modes | max rel. difference | max actual / estimate | default checks FAIL |",
+            "|---|---|---|---|---|"]
+    for r in records:
+        for s in r.get("solves", []):
+            rows = s["fe_vs_shooting"]
+            worst = max((x["relative_difference"] for x in rows), default=None)
+            ratios = [x["ratio"] for x in rows if x["ratio"] is not None]
+            ratio = max(ratios, default=None)
+            note = "" if rows else " (" + s.get("fe_vs_shooting_missing", "") + ")"
+            out.append(f"| {s['scene']} | {len(rows)}{note.replace('|', '/')} | "
+                       f"{fmt(worst, '.2e')} | {fmt(ratio, '.3g')} | "
+                       f"{len(s['checks_failed'])} |")
+    return "\n".join(out) + "\n"
+
+
+def totals(records):
+    scenes = [s for r in records for s in r.get("solves", [])]
+    ratios = [x["ratio"] for s in scenes for x in s["fe_vs_shooting"] if x["ratio"] is not None]
+    exits = {}
+    for s in scenes:
+        exits[str(s["exit"])] = exits.get(str(s["exit"]), 0) + 1
+    return {"decks": len(records),
+            "decks_read": sum(1 for r in records if r.get("import", {}).get("exit") == 0),
+            "scenes": len(scenes),
+            "refused_rows": sum(len(r.get("import", {}).get("refused", [])) for r in records),
+            "solve_exit_codes": exits,
+            "modes_compared": len(ratios),
+            "modes_over_estimate": sum(1 for x in ratios if x >= 1.0),
+            "max_ratio": max(ratios, default=None)}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--catena", default=str(REPO_ROOT / "build" / "catena"))
+    parser.add_argument("--decks", default=str(DEFAULT_DECKS))
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--mirror", action="append",
+                        help="directory holding <owner>+<name>/repo git dirs (repeatable; "
+                             "default /work/.mirror and /work/corpus-mirror)")
+    parser.add_argument("-j", type=int, default=1, help="decks solved in parallel")
+    parser.add_argument("--time-limit", type=float, default=120.0,
+                        help="catena solve --time-limit for each solve [s] (0: none)")
+    args = parser.parse_args()
+    mirrors = args.mirror or ["/work/.mirror", "/work/corpus-mirror"]
+    catena = str(Path(args.catena).resolve())
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    version = subprocess.run([catena, "--version"], capture_output=True, text=True).stdout.strip()
+    decks = read_deck_list(args.decks)
+    root = Path(tempfile.mkdtemp(prefix="moordyn-corpus-"))
+    start = time.monotonic()
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.j)) as pool:
+        futures = [pool.submit(corpus_deck, catena, mirrors, repo, deck, root, args.time_limit)
+                   for repo, deck in decks]
+        records = []
+        for future, (repo, deck) in zip(futures, decks):
+            records.append(future.result())
+            print(f"{repo}:{deck} done ({time.monotonic() - start:.0f} s)", flush=True)
+    meta = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+            "version": version, "time_limit": args.time_limit, "work": str(root),
+            "seconds": round(time.monotonic() - start, 1), "totals": totals(records)}
+    (out / "corpus.json").write_text(json.dumps({"meta": meta, "decks": records}, indent=1))
+    (out / "corpus.md").write_text(markdown(records, meta))
+    print(json.dumps(meta["totals"], indent=1))
+    print(f"wrote {out / 'corpus.md'} and {out / 'corpus.json'} in {meta['seconds']} s; "
+          f"scenes and reports kept in {root}")
+
+
+if __name__ == "__main__":
+    main()
