@@ -34,10 +34,10 @@ void print_summary(const MoorDynDeck& deck,
                    const std::vector<ImportedScene>& scenes,
                    const std::filesystem::path& out) {
   fmt::print("{:<10} {}\n", "line(s)",
-             "scene file [tables]: statics with its seabed, or why not converted");
+             "scene file  tables: statics with the seabed, or why not converted");
   for (const auto& scene : scenes) {
     if (scene.reason.empty()) {
-      fmt::print("{:<10} {} [{}]: {}\n", line_list(scene.lines), path_text(out / scene.file_name),
+      fmt::print("{:<10} {}  {}: {}\n", line_list(scene.lines), path_text(out / scene.file_name),
                  scene.tables, scene.statics);
     } else {
       fmt::print("{:<10} not converted: {}\n", line_list(scene.lines), scene.reason);
@@ -53,7 +53,7 @@ void print_summary(const MoorDynDeck& deck,
   }
   const std::vector<MoorDynNote> notes = moordyn_deck_notes(deck);
   if (!notes.empty()) fmt::print("\nWhat became of the rest of the deck:\n");
-  for (const auto& note : notes) fmt::print("  {}: {} ({})\n", note.item, note.fate, note.detail);
+  for (const auto& note : notes) fmt::print("  {}: {} - {}\n", note.item, note.fate, note.detail);
 }
 
 int run_import(const ImportArguments& arguments) {

@@ -225,8 +225,8 @@ void report_statics(const internal::ChainDescription& d,
     problem = parse_scene_text(internal::scene_tables(d, as_line), origin).front().problem;
     const StaticSolution statics = solve_statics(problem);
     if (!statics.converged) {
-      scene.statics = "did not converge: " + statics.message;
-      scene.notes.push_back("Statics: did not converge: " + statics.message);
+      scene.statics = "did not converge (see the notes)";
+      scene.notes.push_back("The statics did not converge: " + statics.message);
       return;
     }
     scene.statics_solved = true;
@@ -259,7 +259,7 @@ void report_statics(const internal::ChainDescription& d,
   } catch (const Error& error) {
     // InvalidInput from the scene reader's or the statics' checks (e.g. a case the seabed model
     // does not support): reported, not thrown, so the other lines are still imported.
-    scene.statics = std::string("refused: ") + error.what();
+    scene.statics = "refused (see the notes)";
     scene.notes.push_back(std::string("Statics refused: ") + error.what());
     if (d.seabed.z_m) report_without_seabed(d, as_line, origin, scene);
   }

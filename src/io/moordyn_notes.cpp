@@ -37,7 +37,7 @@ struct OptionRule {
 const std::vector<OptionRule> kOptionRules = {
     {{"g", "gravity"}, "used", "[environment] gravity and the weights"},
     {{"rho", "rhow", "wtrdnsty"}, "used", "[environment] water_density, buoyancy, added mass"},
-    {{"wtrdpth", "depth", "waterdepth"}, "used", "the seabed (see 'seabed' below)"},
+    {{"wtrdpth", "depth", "waterdepth"}, "used", "the seabed's z (see 'seabed')"},
     {{"kbot", "kb"}, "used", "[seabed] stiffness = kBot Diam"},
     {{"cbot", "cb"}, "used", "[seabed] damping = cBot Diam"},
     {{"dtm", "dt", "cfl", "tscheme"},
@@ -167,8 +167,8 @@ void line_notes(const MoorDynDeck& deck, std::vector<MoorDynNote>& notes) {
     notes.push_back({"line output flags (" + flags + ")", "ignored", "output setting"});
   if (!deck.lines.empty()) {
     notes.push_back({"NumSegs", "not used",
-                     "Catena's solvers choose their own meshes (NumSegs enters only a BA given "
-                     "as -zeta, see the scene's header)"});
+                     "Catena's solvers choose their own meshes; NumSegs enters only a BA given "
+                     "as -zeta (see the scene's header)"});
   }
 }
 
@@ -178,14 +178,14 @@ void structure_notes(const MoorDynDeck& deck, std::vector<MoorDynNote>& notes) {
     for (std::size_t i = 0; i < deck.outputs.size() && i < 6; ++i)
       channels += (i ? ", " : "") + deck.outputs[i];
     if (deck.outputs.size() > 6) channels += ", ...";
-    notes.push_back({fmt::format("{} output channels ({})", deck.outputs.size(), channels),
+    notes.push_back({fmt::format("output channels: {} ({})", deck.outputs.size(), channels),
                      "ignored", "Catena writes its own results"});
   }
   if (deck.body_rows > 0 || deck.has_bodies)
-    notes.push_back({fmt::format("{} bodies", deck.body_rows), "not converted",
+    notes.push_back({fmt::format("bodies: {}", deck.body_rows), "not converted",
                      "Catena has no bodies; lines attached to one are listed with the reason"});
   if (deck.rod_rows > 0 || deck.rod_type_rows > 0)
-    notes.push_back({fmt::format("{} rods ({} rod types)", deck.rod_rows, deck.rod_type_rows),
+    notes.push_back({fmt::format("rods: {} ({} rod types)", deck.rod_rows, deck.rod_type_rows),
                      "not converted",
                      "Catena has no rods; lines attached to one are listed with the reason"});
   if (deck.syrope_rows > 0)

@@ -40,7 +40,7 @@ struct ImportedScene {
   /// The tables the scene uses, e.g. "[line] 3 segments, 1 point + [seabed]".
   std::string tables;
   /// The statics with the scene's seabed in a few words: "grounded 113.2 m of 850 m", "off the
-  /// seabed", "refused: ...", "did not converge: ...".
+  /// seabed", "refused (see the notes)", "did not converge (see the notes)"; the notes say why.
   std::string statics;
   /// True when the statics was solved (converged).
   bool statics_solved = false;

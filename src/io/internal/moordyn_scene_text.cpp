@@ -111,7 +111,7 @@ std::string scene_header(const ChainDescription& d,
   for (const auto& note : notes) out += "# " + note + "\n";
   out += "# What became of the rest of the deck:\n";
   for (const auto& note : deck_notes)
-    out += fmt::format("#   {}: {} ({})\n", note.item, note.fate, note.detail);
+    out += fmt::format("#   {}: {} - {}\n", note.item, note.fate, note.detail);
   return out + fmt::format(
                    "name = \"{}\"\ndescription = \"MoorDyn line(s) {} of {}\"\ntags = "
                    "[\"moordyn-import\"]\n\n",
