@@ -89,19 +89,26 @@ def run(command, timeout):
 
 # "1+2+3      not converted: reason" (the summary row of `catena import moordyn`).
 REFUSED = re.compile(r"^(\d+(?:\+\d+)*)\s+not converted: (.*)$")
+# "1+2+3      DIR/x.toml  [line] 3 segments + [seabed]: grounded 113 m of 850 m" (the converted
+# row since the importer reports the statics; older importers print the file alone).
+CONVERTED = re.compile(r"^(\d+(?:\+\d+)*)\s+(\S+\.toml)\s+(.*?): (.*)$")
 
 
 def import_deck(catena, deck_path, out, timeout):
     code, output, seconds = run([catena, "import", "moordyn", str(deck_path), "--out", str(out)],
                                 timeout)
-    refused = []
+    refused, statics = [], {}
     for line in output.splitlines():
         match = REFUSED.match(line.strip())
         if match:
             refused.append({"lines": match.group(1), "reason": match.group(2).strip()})
+        match = CONVERTED.match(line.strip())
+        if match:
+            statics[Path(match.group(2)).name] = {"tables": match.group(3),
+                                                  "statics": match.group(4)}
     scenes = sorted(out.glob("*.toml")) if out.exists() else []
     return {"exit": code, "seconds": round(seconds, 3), "refused": refused,
-            "scenes": [s.name for s in scenes], "output": output[-4000:]}
+            "scenes": [s.name for s in scenes], "statics": statics, "output": output[-6000:]}
 
 
 def modes_of(report, solver):
@@ -125,21 +132,40 @@ def load_json(path):
 
 
 def fe_against_shooting(default_report, reference_report):
-    """Per mode: fe's relative difference from shooting at rtol 1e-13 and actual / estimate."""
+    """Per mode: fe's relative difference from shooting at rtol 1e-13 and actual / estimate.
+
+    Modes are paired within a plane by mutual nearest frequency, not by index, so that a mode one
+    solver finds and the other does not shows up as unpaired instead of shifting every pair after
+    it. Returns (pairs, unpaired) where unpaired lists the modes of either solver left over.
+    """
     fe = modes_of(default_report, "fe") if default_report else {}
     shooting = modes_of(reference_report, "shooting") if reference_report else {}
-    rows = []
+    rows, unpaired = [], []
     for plane in ("inplane", "outofplane"):
-        for index, ((omega_fe, estimate), (omega_ref, _)) in enumerate(
-                zip(fe.get(plane, []), shooting.get(plane, [])), 1):
-            if not omega_fe or not omega_ref:
+        a = [(i, w, e) for i, (w, e) in enumerate(fe.get(plane, []), 1) if w]
+        b = [(j, w) for j, (w, _) in enumerate(shooting.get(plane, []), 1) if w]
+        if not a or not b:
+            continue
+        nearest_b = {i: min(b, key=lambda m: abs(m[1] - w)) for i, w, _ in a}
+        nearest_a = {j: min(a, key=lambda m: abs(m[1] - w)) for j, w in b}
+        paired_b = set()
+        for i, omega_fe, estimate in a:
+            j, omega_ref = nearest_b[i]
+            if nearest_a[j][0] != i:
+                unpaired.append({"solver": "fe", "plane": plane, "mode": i, "omega": omega_fe,
+                                 "estimate": estimate})
                 continue
+            paired_b.add(j)
             difference = abs(omega_fe - omega_ref) / abs(omega_ref)
             ratio = difference / estimate if estimate and estimate > 0 else None
-            rows.append({"plane": plane, "mode": index, "fe_omega": omega_fe,
+            rows.append({"plane": plane, "mode": i, "shooting_mode": j, "fe_omega": omega_fe,
                          "shooting_omega": omega_ref, "relative_difference": difference,
                          "fe_estimate": estimate, "ratio": ratio})
-    return rows
+        # Shooting's modes above fe's highest are beyond fe's request, not missing from fe.
+        top = max(w for _, w, _ in a)
+        unpaired += [{"solver": "shooting", "plane": plane, "mode": j, "omega": w}
+                     for j, w in b if j not in paired_b and w <= top]
+    return rows, unpaired
 
 
 def first_error(output):
@@ -169,7 +195,8 @@ def solve_scene(catena, scene, work, time_limit):
     record["reference_seconds"] = round(ref_seconds, 2)
     default_report = load_json(default_json)
     record["checks_failed"] = failed_checks(default_report)
-    record["fe_vs_shooting"] = fe_against_shooting(default_report, load_json(reference_json))
+    record["fe_vs_shooting"], record["unpaired_modes"] = fe_against_shooting(
+        default_report, load_json(reference_json))
     if not record["fe_vs_shooting"]:
         record["fe_vs_shooting_missing"] = why_no_comparison(default_report,
                                                              load_json(reference_json))
@@ -229,10 +256,21 @@ def fmt(value, spec):
     return format(value, spec) if isinstance(value, (int, float)) else "-"
 
 
+def short(deck):
+    return deck.rsplit("/", 1)[-1] if deck.count("/") < 2 else "/".join(deck.split("/")[-2:])
+
+
 def markdown(records, meta):
-    out = [f"Corpus of {len(records)} published MoorDyn decks, {meta['date']}, catena "
-           f"{meta['version']}; per-solve time limit {meta['time_limit']} s.", ""]
-    out += ["| deck | import | converted scenes: solve exit (s) | refused (reason) |",
+    t = meta["totals"]
+    out = [f"Corpus of {len(records)} published MoorDyn decks, {meta['date']}, "
+           f"{meta['version']}; per-solve time limit {meta['time_limit']} s. "
+           f"{t['decks_read']} decks read, {t['scenes']} scenes written, {t['refused_rows']} "
+           f"summary rows not converted; `catena solve` exit codes {t['solve_exit_codes']}; fe "
+           f"against shooting at rtol 1e-13 on {t['modes_compared']} modes: actual / estimate "
+           f"at most {fmt(t['max_ratio'], '.3g')}, {t['modes_over_estimate']} modes at or over 1; "
+           f"{t['unpaired_modes']} modes one solver found and the other did not.",
+           ""]
+    out += ["| deck | import | converted (statics at import): solve exit (s) | refused (reason) |",
             "|---|---|---|---|"]
     for r in records:
         name = f"{r['repo']} `{r['deck']}`"
@@ -240,13 +278,17 @@ def markdown(records, meta):
             out.append(f"| {name} | not available | - | {r['unavailable']} |")
             continue
         imp = r["import"]
-        solves = ", ".join(f"{s['scene'].rsplit('-line-', 1)[-1][:-5]}: {s['exit']} "
-                           f"({s['seconds']:.1f})" for s in r["solves"]) or "-"
+        words = imp.get("statics", {})
+        solves = ", ".join(
+            f"{s['scene'].rsplit('-line-', 1)[-1][:-5]}"
+            + (f" ({words[s['scene']]['statics']})" if s["scene"] in words else "")
+            + f": {s['exit']} ({s['seconds']:.1f})" for s in r["solves"]) or "-"
         refused = "; ".join(f"{x['lines']}: {x['reason']}" for x in imp["refused"]) or "-"
         out.append(f"| {name} | {imp['exit']} | {solves} | {refused.replace('|', '/')} |")
     out += ["", "fe against shooting at rtol 1e-13 (every mode of every scene where both ran):", "",
-            "| scene | modes | max rel. difference | max actual / estimate | default checks FAIL |",
-            "|---|---|---|---|---|"]
+            "| scene | modes paired | max rel. difference | max actual / estimate | unpaired modes "
+            "(solver plane mode: rad/s) | default checks FAIL |",
+            "|---|---|---|---|---|---|"]
     for r in records:
         for s in r.get("solves", []):
             rows = s["fe_vs_shooting"]
@@ -254,8 +296,10 @@ def markdown(records, meta):
             ratios = [x["ratio"] for x in rows if x["ratio"] is not None]
             ratio = max(ratios, default=None)
             note = "" if rows else " (" + s.get("fe_vs_shooting_missing", "") + ")"
-            out.append(f"| {s['scene']} | {len(rows)}{note.replace('|', '/')} | "
-                       f"{fmt(worst, '.2e')} | {fmt(ratio, '.3g')} | "
+            unpaired = ", ".join(f"{u['solver']} {u['plane']} {u['mode']}: {u['omega']:.6g}"
+                                 for u in s.get("unpaired_modes", [])) or "-"
+            out.append(f"| {short(r['deck'])}: {s['scene']} | {len(rows)}{note.replace('|', '/')} | "
+                       f"{fmt(worst, '.2e')} | {fmt(ratio, '.3g')} | {unpaired} | "
                        f"{len(s['checks_failed'])} |")
     return "\n".join(out) + "\n"
 
@@ -273,7 +317,10 @@ def totals(records):
             "solve_exit_codes": exits,
             "modes_compared": len(ratios),
             "modes_over_estimate": sum(1 for x in ratios if x >= 1.0),
-            "max_ratio": max(ratios, default=None)}
+            "unpaired_modes": sum(len(s.get("unpaired_modes", [])) for s in scenes),
+            "max_ratio": max(ratios, default=None),
+            "max_relative_difference": max((x["relative_difference"] for s in scenes
+                                            for x in s["fe_vs_shooting"]), default=None)}
 
 
 def main():
@@ -308,6 +355,7 @@ def main():
             "seconds": round(time.monotonic() - start, 1), "totals": totals(records)}
     (out / "corpus.json").write_text(json.dumps({"meta": meta, "decks": records}, indent=1))
     (out / "corpus.md").write_text(markdown(records, meta))
+    print(f"deck list: {args.decks}; mirrors: {', '.join(mirrors)}")
     print(json.dumps(meta["totals"], indent=1))
     print(f"wrote {out / 'corpus.md'} and {out / 'corpus.json'} in {meta['seconds']} s; "
           f"scenes and reports kept in {root}")
