@@ -168,10 +168,15 @@ def fe_against_shooting(default_report, reference_report):
     return rows, unpaired
 
 
+def without_path(message):
+    """A message without the temporary scene path it starts with ("error: /tmp/.../x.toml: ")."""
+    return re.sub(r"(error: )?\S*\.toml: ", "", message)
+
+
 def first_error(output):
     for line in output.splitlines():
         if "error" in line.lower() or "declin" in line.lower() or "refus" in line.lower():
-            return line.strip()[:300]
+            return without_path(line.strip())[:300]
     return ""
 
 
@@ -225,7 +230,7 @@ def why_no_comparison(default_report, reference_report):
             reasons.append(f"{label}: no report")
             continue
         if scene.get("error"):
-            reasons.append(f"{label}: {scene['error']}"[:240])
+            reasons.append(f"{label}: {without_path(scene['error'])}"[:240])
             continue
         summary = ((scene.get("solvers") or {}).get(solver) or {}).get("summary")
         if not summary:
@@ -285,7 +290,10 @@ def markdown(records, meta):
             + f": {s['exit']} ({s['seconds']:.1f})" for s in r["solves"]) or "-"
         refused = "; ".join(f"{x['lines']}: {x['reason']}" for x in imp["refused"]) or "-"
         out.append(f"| {name} | {imp['exit']} | {solves} | {refused.replace('|', '/')} |")
-    out += ["", "fe against shooting at rtol 1e-13 (every mode of every scene where both ran):", "",
+    out += ["", "fe against shooting at rtol 1e-13, the scenes with anything to say (actual / estimate "
+            "above 0.1, a mode one solver did not find, a failed default check, or no comparison); "
+            "every other scene: all modes paired, actual / estimate <= 0.1 (corpus.json has "
+            "every mode):", "",
             "| scene | modes paired | max rel. difference | max actual / estimate | unpaired modes "
             "(solver plane mode: rad/s) | default checks FAIL |",
             "|---|---|---|---|---|---|"]
@@ -295,6 +303,9 @@ def markdown(records, meta):
             worst = max((x["relative_difference"] for x in rows), default=None)
             ratios = [x["ratio"] for x in rows if x["ratio"] is not None]
             ratio = max(ratios, default=None)
+            if (rows and (ratio is None or ratio <= 0.1) and not s.get("unpaired_modes")
+                    and not s["checks_failed"]):
+                continue
             note = "" if rows else " (" + s.get("fe_vs_shooting_missing", "") + ")"
             unpaired = ", ".join(f"{u['solver']} {u['plane']} {u['mode']}: {u['omega']:.6g}"
                                  for u in s.get("unpaired_modes", [])) or "-"
@@ -302,6 +313,34 @@ def markdown(records, meta):
                        f"{fmt(worst, '.2e')} | {fmt(ratio, '.3g')} | {unpaired} | "
                        f"{len(s['checks_failed'])} |")
     return "\n".join(out) + "\n"
+
+
+def changes(records, before):
+    """Markdown rows for each scene whose solve exit code or statics words differ from `before`
+    (a corpus.json of an earlier run), and scenes written by one run only."""
+    def scenes_of(recs):
+        out = {}
+        for r in recs:
+            words = r.get("import", {}).get("statics", {})
+            for s in r.get("solves", []):
+                ratios = [x["ratio"] for x in s["fe_vs_shooting"] if x["ratio"] is not None]
+                out[(r["repo"], r["deck"], s["scene"])] = (
+                    s["exit"], words.get(s["scene"], {}).get("statics", "-"),
+                    max(ratios, default=None))
+        return out
+    old, new = scenes_of(before["decks"]), scenes_of(records)
+    rows = ["| deck: scene | before: exit, max actual/estimate | now: exit (statics at import), "
+            "max actual/estimate |", "|---|---|---|"]
+    for key in sorted(set(old) | set(new)):
+        a, b = old.get(key), new.get(key)
+        over = [x is not None and x >= 1.0 for x in (a[2] if a else None, b[2] if b else None)]
+        if a and b and a[0] == b[0] and over[0] == over[1]:
+            continue
+        label = f"{short(key[1])}: {key[2]}"
+        before_text = f"{a[0]}, {fmt(a[2], '.3g')}" if a else "not written"
+        now_text = f"{b[0]} ({b[1]}), {fmt(b[2], '.3g')}" if b else "not written"
+        rows.append(f"| {label} | {before_text} | {now_text.replace('|', '/')} |")
+    return rows
 
 
 def totals(records):
@@ -332,6 +371,8 @@ def main():
                         help="directory holding <owner>+<name>/repo git dirs (repeatable; "
                              "default /work/.mirror and /work/corpus-mirror)")
     parser.add_argument("-j", type=int, default=1, help="decks solved in parallel")
+    parser.add_argument("--before", help="corpus.json of an earlier run: list the scenes whose "
+                                         "solve exit code or fe-vs-shooting ratio changed")
     parser.add_argument("--time-limit", type=float, default=120.0,
                         help="catena solve --time-limit for each solve [s] (0: none)")
     args = parser.parse_args()
@@ -354,7 +395,12 @@ def main():
             "version": version, "time_limit": args.time_limit, "work": str(root),
             "seconds": round(time.monotonic() - start, 1), "totals": totals(records)}
     (out / "corpus.json").write_text(json.dumps({"meta": meta, "decks": records}, indent=1))
-    (out / "corpus.md").write_text(markdown(records, meta))
+    text = markdown(records, meta)
+    if args.before:
+        before = json.loads(Path(args.before).read_text())
+        text += (f"\nChanged against {args.before} ({before['meta']['version']}, "
+                 f"{before['meta']['date']}):\n\n" + "\n".join(changes(records, before)) + "\n")
+    (out / "corpus.md").write_text(text)
     print(f"deck list: {args.decks}; mirrors: {', '.join(mirrors)}")
     print(json.dumps(meta["totals"], indent=1))
     print(f"wrote {out / 'corpus.md'} and {out / 'corpus.json'} in {meta['seconds']} s; "
