@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 
@@ -212,6 +213,25 @@ void seabed_diameter_note(const internal::ChainDescription& d, ImportedScene& sc
   }
 }
 
+// What this line's types hold that its scene cannot: a bending stiffness (Catena's lines are
+// cables). Also among the deck's notes; repeated per line so each scene's summary row has it.
+void dropped_type_notes(const MoorDynDeck& deck,
+                        const internal::ChainDescription& d,
+                        ImportedScene& scene) {
+  for (const auto& segment : d.segments) {
+    const auto type =
+        std::find_if(deck.types.begin(), deck.types.end(),
+                     [&](const MoorDynLineType& t) { return t.name == segment.type; });
+    const std::string& ei = type->bending_stiffness_text;
+    char* end = nullptr;
+    const double value = std::strtod(ei.c_str(), &end);
+    if (ei.empty() || (end == ei.c_str() + ei.size() && value == 0.0)) continue;
+    scene.notes.push_back(fmt::format(
+        "Line {} (type {}): EI = {} N m^2 dropped: Catena's lines have no bending stiffness.",
+        segment.line, segment.type, ei));
+  }
+}
+
 // The statics of the scene's tables (what `catena solve` will solve), with its seabed when it has
 // one: the summary's words and the notes, including whether the line would pass below the deck's
 // water depth. A refusal (InvalidInput) is reported with its message, never thrown.
@@ -278,6 +298,7 @@ ImportedScene convert_chain(const Topology& t,
   if (!d.points.empty())
     scene.tables += fmt::format(", {} point{}", d.points.size(), d.points.size() > 1 ? "s" : "");
   if (d.seabed.z_m) scene.tables += " + [seabed]";
+  dropped_type_notes(t.deck, d, scene);
   seabed_diameter_note(d, scene);
   std::string ids;
   for (int id : scene.lines) ids += (ids.empty() ? "" : "-") + std::to_string(id);

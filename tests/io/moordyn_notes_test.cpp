@@ -136,6 +136,11 @@ TEST(MoorDynImport, LineWithBothEndsAboveTheSeabedGetsTheSeabed) {
     EXPECT_NEAR(printed, lowest, 1e-5 * std::abs(lowest)) << *note;  // 6 digits printed
     EXPECT_NE(note->find("below the deck's water depth"), std::string::npos) << *note;
   }
+  // The line's own notes say what its type loses: EI = 2.5e3 N m^2.
+  EXPECT_NE(std::find(scene.notes.begin(), scene.notes.end(),
+                      "Line 1 (type chain): EI = 2.5e3 N m^2 dropped: Catena's lines have no "
+                      "bending stiffness."),
+            scene.notes.end());
   // The scene's header carries the notes; no stale "Needs" promise.
   for (const auto& note : scene.notes) EXPECT_NE(text.find("# " + note), std::string::npos);
   EXPECT_EQ(text.find("Needs:"), std::string::npos) << text;
