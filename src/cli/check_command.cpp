@@ -39,6 +39,17 @@ Scene read_one_scene(const std::string& path) {
   return scenes.front();
 }
 
+// A study's order or bias, marked "?" when the study was judged untrustworthy (its note, printed
+// under the table, says why): the number is what the fit gave, not a result to rely on.
+std::string study_number(const std::optional<ConvergenceStudy>& study,
+                         std::optional<double> ConvergenceStudy::*field,
+                         bool scientific) {
+  if (!study || !((*study).*field)) return "-";
+  const double value = *((*study).*field);
+  return (scientific ? fmt::format("{:.3e}", value) : fmt::format("{:.3f}", value)) +
+         (study->trustworthy ? "" : "?");
+}
+
 void print_check(const ExternalCheck& check) {
   for (const auto& reference : check.references) {
     fmt::print("reference {}: {}\n", to_string(reference.plane), reference.reason);
@@ -50,22 +61,29 @@ void print_check(const ExternalCheck& check) {
   fmt::print("{:>12} {:>4} {:>6} {:>16} {:>16} {:>10} {:>10} {:>8} {:>8} {:>10}  {}\n", "plane",
              "mode", "catena", "other f [Hz]", "catena f [Hz]", "estimate", "error", "MAC", "order",
              "bias", "verdict");
+  std::vector<std::string> untrusted;
   for (const auto& mode : check.modes) {
     const bool any = !mode.resolutions.empty();
     const auto& study = mode.study;
-    fmt::print("{:>12} {:>4} {:>6} {:>16} {:>16.10g} {:>10.2e} {:>10} {:>8} {:>8} {:>10}  {}\n",
-               to_string(mode.plane), mode.mode, mode.reference_index,
-               any ? fmt::format("{:.10g}", mode.resolutions.back().omega_rad_s / (2 * kPi)) : "-",
-               mode.reference_omega_rad_s / (2 * kPi), mode.reference_relative_estimate,
-               any ? fmt::format("{:.3e}", mode.resolutions.back().relative_error) : "-",
-               any && mode.resolutions.back().mac
-                   ? fmt::format("{:.6f}", *mode.resolutions.back().mac)
-                   : "-",
-               study && study->observed_order ? fmt::format("{:.3f}", *study->observed_order) : "-",
-               study && study->bias_relative ? fmt::format("{:.3e}", *study->bias_relative) : "-",
-               to_string(mode.verdict));
+    fmt::print(
+        "{:>12} {:>4} {:>6} {:>16} {:>16.10g} {:>10.2e} {:>10} {:>8} {:>8} {:>10}  {}\n",
+        to_string(mode.plane), mode.mode, mode.reference_index,
+        any ? fmt::format("{:.10g}", mode.resolutions.back().omega_rad_s / (2 * kPi)) : "-",
+        mode.reference_omega_rad_s / (2 * kPi), mode.reference_relative_estimate,
+        any ? fmt::format("{:.3e}", mode.resolutions.back().relative_error) : "-",
+        any && mode.resolutions.back().mac ? fmt::format("{:.6f}", *mode.resolutions.back().mac)
+                                           : "-",
+        study_number(study, &ConvergenceStudy::observed_order, false),
+        study_number(study, &ConvergenceStudy::bias_relative, true), to_string(mode.verdict));
     if (mode.pairing.find(';') != std::string::npos) fmt::print("{:>12} {}\n", "", mode.pairing);
+    if (study && !study->trustworthy && (study->observed_order || study->bias_relative)) {
+      untrusted.push_back(
+          fmt::format("{} mode {}: {}", to_string(mode.plane), mode.mode, study->note));
+    }
   }
+  if (!untrusted.empty())
+    fmt::print("? not trusted (the convergence study does not support it):\n");
+  for (const auto& line : untrusted) fmt::print("  {}\n", line);
 }
 
 void print_tension_check(const TensionCheck& check) {

@@ -9,6 +9,7 @@
 #include "catena/io/file_access.hpp"
 #include "catena/io/moordyn_deck.hpp"
 #include "catena/io/moordyn_import.hpp"
+#include "catena/io/moordyn_notes.hpp"
 #include "cli/commands.hpp"
 
 namespace catena::cli {
@@ -26,18 +27,33 @@ std::string line_list(const std::vector<int>& lines) {
   return out;
 }
 
-void print_summary(const std::vector<ImportedScene>& scenes, const std::filesystem::path& out) {
-  fmt::print("{:<10} {}\n", "line(s)", "scene file, or why not converted");
+// The summary: a short table (one row per line or chain: its scene and tables, and the statics
+// with its seabed, or why it was not converted), then the notes per line, then what became of the
+// rest of the deck. Refused rows keep the form "<ids> not converted: <reason>" (scripts read it).
+void print_summary(const MoorDynDeck& deck,
+                   const std::vector<ImportedScene>& scenes,
+                   const std::filesystem::path& out) {
+  fmt::print("{:<10} {}\n", "line(s)",
+             "scene file  tables: statics with the seabed, or why not converted");
   for (const auto& scene : scenes) {
     if (scene.reason.empty()) {
-      std::string needs;
-      for (const auto& need : scene.needs) needs += (needs.empty() ? " (needs " : "; ") + need;
-      fmt::print("{:<10} {}{}\n", line_list(scene.lines), path_text(out / scene.file_name),
-                 needs.empty() ? "" : needs + ")");
+      fmt::print("{:<10} {}  {}: {}\n", line_list(scene.lines), path_text(out / scene.file_name),
+                 scene.tables, scene.statics);
     } else {
       fmt::print("{:<10} not converted: {}\n", line_list(scene.lines), scene.reason);
     }
   }
+  bool any = false;
+  for (const auto& scene : scenes) {
+    for (const auto& note : scene.notes) {
+      if (!any) fmt::print("\nNotes (also in each scene's header):\n");
+      any = true;
+      fmt::print("  {}: {}\n", line_list(scene.lines), note);
+    }
+  }
+  const std::vector<MoorDynNote> notes = moordyn_deck_notes(deck);
+  if (!notes.empty()) fmt::print("\nWhat became of the rest of the deck:\n");
+  for (const auto& note : notes) fmt::print("  {}: {} - {}\n", note.item, note.fate, note.detail);
 }
 
 int run_import(const ImportArguments& arguments) {
@@ -51,7 +67,7 @@ int run_import(const ImportArguments& arguments) {
   }
   if (!arguments.quiet && deck.lines.empty())
     fmt::print("{}: the deck has no lines\n", arguments.deck);
-  if (!arguments.quiet) print_summary(scenes, arguments.out);
+  if (!arguments.quiet) print_summary(deck, scenes, arguments.out);
   return 0;
 }
 
@@ -70,17 +86,21 @@ void add_import_command(CLI::App& app, std::function<int()>& run) {
       "the line's\n"
       "two held ends (Fixed/Anchor and Vessel/Coupled points), end A the lower. Conversions:\n"
       "weight = (MassDen - rho_w pi/4 Diam^2) g [N/m], added_mass = Ca rho_w pi/4 Diam^2 [kg/m],\n"
-      "point weight = (M - rho_w V) g [N], seabed z = -WtrDpth, stiffness = kBot Diam [N/m/m];\n"
+      "point weight = (M - rho_w V) g [N], seabed z = -WtrDpth, stiffness = kBot Diam [N/m/m],\n"
+      "damping = cBot Diam, friction 0, under every line when the deck has a depth (else the\n"
+      "deepest point, MoorDyn-C's rule);\n"
       "diameter = Diam, drag_normal = Cd, drag_tangential = CdAx, added_mass_tangential =\n"
       "CaAx rho_w pi/4 Diam^2, axial_damping = BA [N s] (BA = -zeta < 0: zeta (UnstrLen/NumSegs)\n"
       "sqrt(EA MassDen), as MoorDyn computes it); [environment] water_density = rho_w, gravity = "
       "g;\n"
       "g = 9.80665 m/s^2 and rho_w = 1025 kg/m^3 unless the OPTIONS give g and rho/WtrDnsty.\n"
-      "A single uniform line off the seabed becomes a [cable] scene (solvable today); chains,\n"
-      "buoyant lines and lines on the seabed use [line]/[seabed] and say so in their header.\n"
+      "A single uniform line becomes a [cable] scene, chains and buoyant lines [line] scenes.\n"
+      "Each scene's statics is solved with its seabed and reported (or the statics' refusal,\n"
+      "and whether the line would pass below the water depth without it).\n"
       "Lines attached to bodies or rods, meeting three at a point, with a free end or that may "
       "fail\n"
-      "are listed with the reason; the rest still convert. Prints a summary table.\n"
+      "are listed with the reason; the rest still convert. Prints a summary table, notes per line\n"
+      "and what became of everything else in the deck (each option, EI, outputs, free points).\n"
       "Exit 0 when the deck was read (whatever could be converted), 2 for a deck that cannot be\n"
       "read (unknown section, missing column, non-numeric value: the line is named).");
   moordyn->add_option("deck", arguments->deck, "MoorDyn input file")->required();

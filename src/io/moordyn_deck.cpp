@@ -63,6 +63,7 @@ const std::vector<std::string> kGravityNames = {"g", "gravity"};
 const std::vector<std::string> kDensityNames = {"rho", "rhow", "wtrdnsty"};
 const std::vector<std::string> kDepthNames = {"wtrdpth", "depth", "waterdepth"};
 const std::vector<std::string> kBottomStiffnessNames = {"kbot", "kb"};
+const std::vector<std::string> kBottomDampingNames = {"cbot", "cb"};
 
 std::string upper(std::string text) {
   for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -91,6 +92,7 @@ std::optional<double> number(const std::string& text) {
 // A table section: its column names (lower case) and data rows with their file lines.
 struct Table {
   std::vector<std::string> columns;
+  std::vector<std::string> names;  // the column names as written
   bool units_seen = false;
   std::vector<std::pair<int, std::vector<std::string>>> rows;
   int header_line = 0;
@@ -132,6 +134,21 @@ struct Reader {
   }
 };
 
+// The cells of `row` in columns not in `used`, with the column's name as written (a cell beyond
+// the header's names is named by its position).
+std::vector<std::pair<std::string, std::string>> other_columns(
+    const Table& table,
+    const std::pair<int, std::vector<std::string>>& row,
+    std::initializer_list<std::size_t> used) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (std::size_t i = 0; i < row.second.size(); ++i) {
+    if (std::find(used.begin(), used.end(), i) != used.end()) continue;
+    out.emplace_back(i < table.names.size() ? table.names[i] : fmt::format("column {}", i + 1),
+                     row.second[i]);
+  }
+  return out;
+}
+
 Section section_of(const std::string& header, int line, const std::string& file) {
   const std::string text = upper(header);
   for (const auto& [name, section] : kSectionNames) {
@@ -148,6 +165,7 @@ void add_table_line(Table& table, const std::vector<std::string>& words, int lin
         std::toupper(static_cast<unsigned char>(words[1][0])) == 'N')
       return;
     for (const auto& word : words) table.columns.push_back(lower(word));
+    table.names = words;
     table.header_line = line;
   } else if (!table.units_seen && table.rows.empty() && words[0].front() == '(') {
     table.units_seen = true;
@@ -159,12 +177,16 @@ void add_table_line(Table& table, const std::vector<std::string>& words, int lin
 void add_option(Reader& reader, const std::vector<std::string>& words, int line) {
   if (words.size() < 2) return;  // MoorDyn ignores such lines too
   const std::string name = lower(words[1]);
-  for (const auto* names : {&kGravityNames, &kDensityNames, &kDepthNames, &kBottomStiffnessNames}) {
+  // WtrDpth may be MoorDyn-F's "DEFAULT" (OpenFAST's depth) or a bathymetry file: kept as written
+  // and reported, not used (moordyn_notes.cpp).
+  for (const auto* names :
+       {&kGravityNames, &kDensityNames, &kBottomStiffnessNames, &kBottomDampingNames}) {
     if (std::find(names->begin(), names->end(), name) != names->end() && !number(words[0])) {
       reader.fail(line, fmt::format("option {}: '{}' is not a number", words[1], words[0]));
     }
   }
   reader.deck.options[name] = words[0];
+  reader.deck.option_rows.push_back({words[1], words[0], line});
 }
 
 void read_lines_of_file(Reader& reader, const std::string& text) {
@@ -187,7 +209,9 @@ void read_lines_of_file(Reader& reader, const std::string& text) {
     }
     if (section == Section::Options)
       add_option(reader, words, line_number);
-    else if (section != Section::Preamble && section != Section::Outputs)
+    else if (section == Section::Outputs)
+      reader.deck.outputs.push_back(words[0]);
+    else if (section != Section::Preamble)
       add_table_line(reader.tables[section], words, line_number);
   }
 }
@@ -206,6 +230,8 @@ void convert_types(Reader& r) {
   const auto cd = r.column(t, {"cdn", "cd"}, v1 ? 7 : 6, "Cd");
   const auto cd_axial = r.column(t, {"cdt", "cdax"}, 8, "CdAx");
   const auto ca_axial = r.column(t, {"cat", "caax"}, v1 ? 6 : 9, "CaAx");
+  // v1 has no EI column; v2 has it where MoorDyn reads it.
+  const std::size_t ei = v1 ? std::size_t(-1) : r.column(t, {"ei"}, 5, "EI");
   for (const auto& row : t.rows) {
     MoorDynLineType type;
     type.name = row.second[0];
@@ -220,6 +246,9 @@ void convert_types(Reader& r) {
     type.normal_drag_coefficient = r.value(row, cd, "Cd");
     type.tangential_drag_coefficient = r.value(row, cd_axial, "CdAx");
     type.tangential_added_mass_coefficient = r.value(row, ca_axial, "CaAx");
+    if (!v1 && ei < row.second.size()) type.bending_stiffness_text = row.second[ei];
+    type.other_columns =
+        other_columns(t, row, {0, diam, mass, ea, ba, ca, cd, cd_axial, ca_axial, ei});
     r.deck.types.push_back(type);
   }
 }
@@ -258,6 +287,7 @@ void convert_points(Reader& r) {
     p.volume_m3 = r.value(row, volume, "Volume");
     p.added_mass_coefficient = row.second.size() > ca ? r.value(row, ca, "CA") : 0.0;
     p.file_line = row.first;
+    p.other_columns = other_columns(t, row, {0, 1, 2, 3, 4, mass, volume, ca});
     r.deck.points.push_back(p);
   }
 }
@@ -275,7 +305,8 @@ void convert_lines(Reader& r) {
     r.deck.lines.push_back({static_cast<int>(r.value(row, 0, "ID")), r.cell(row, type, "LineType"),
                             r.cell(row, a, "AttachA"), r.cell(row, b, "AttachB"),
                             r.value(row, length, "UnstrLen"),
-                            static_cast<int>(r.value(row, segments, "NumSegs")), row.first});
+                            static_cast<int>(r.value(row, segments, "NumSegs")), row.first,
+                            other_columns(t, row, {0, type, a, b, length, segments})});
   }
 }
 
@@ -305,9 +336,25 @@ double MoorDynDeck::water_density() const { return option_or(*this, kDensityName
 double MoorDynDeck::bottom_stiffness() const {
   return option_or(*this, kBottomStiffnessNames, 3.0e6);
 }
+double MoorDynDeck::bottom_damping() const { return option_or(*this, kBottomDampingNames, 3.0e5); }
 std::optional<double> MoorDynDeck::water_depth() const {
-  const double depth = option_or(*this, kDepthNames, -1.0);
-  return depth > 0.0 ? std::optional(depth) : std::nullopt;
+  for (const auto& name : kDepthNames) {
+    if (const auto it = options.find(name); it != options.end()) {
+      const auto depth = number(it->second);
+      return depth && *depth > 0.0 ? depth : std::nullopt;
+    }
+  }
+  return std::nullopt;
+}
+std::string MoorDynDeck::bathymetry_file() const {
+  if (const auto it = options.find("seafloorfile"); it != options.end()) return it->second;
+  for (const auto& name : kDepthNames) {
+    const auto it = options.find(name);
+    // MoorDyn-F reads a WtrDpth that is neither a number nor DEFAULT as a bathymetry file.
+    if (it != options.end() && !number(it->second) && upper(it->second) != "DEFAULT")
+      return it->second;
+  }
+  return "";
 }
 
 MoorDynDeck read_moordyn_deck(const std::filesystem::path& path) {
@@ -319,6 +366,10 @@ MoorDynDeck read_moordyn_deck(const std::filesystem::path& path) {
   convert_points(reader);
   convert_lines(reader);
   convert_failures(reader);
+  reader.deck.rod_type_rows = static_cast<int>(reader.tables[Section::RodTypes].rows.size());
+  reader.deck.rod_rows = static_cast<int>(reader.tables[Section::Rods].rows.size());
+  reader.deck.body_rows = static_cast<int>(reader.tables[Section::Bodies].rows.size());
+  reader.deck.syrope_rows = static_cast<int>(reader.tables[Section::SyropeIc].rows.size());
   return reader.deck;
 }
 

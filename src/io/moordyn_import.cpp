@@ -8,10 +8,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 
 #include "catena/core/error.hpp"
+#include "catena/io/scene_reader.hpp"
 #include "catena/statics/elastic_catenary.hpp"
 #include "io/internal/moordyn_scene_text.hpp"
 
@@ -152,33 +154,135 @@ std::vector<ChainSegment> build_chain(const Topology& t, int start, std::string&
   return chain;
 }
 
-// Whether a uniform line with the given geometry, solved without a seabed, goes below it.
-bool uniform_line_touches(const internal::SegmentProperties& segment,
-                          const SceneGeometry& geometry,
-                          double seabed_z,
-                          std::string& why) {
-  Problem problem;
-  problem.cable.length_m = segment.length_m;
-  problem.cable.weight_n_per_m = segment.weight_n_per_m;
-  problem.cable.axial_stiffness_n = segment.axial_stiffness_n;
-  problem.cable.mass_kg_per_m = segment.mass_kg_per_m;
-  problem.cable.added_mass_kg_per_m = segment.added_mass_kg_per_m;
-  problem.supports.a_m = geometry.a_m;
-  problem.supports.b_m = geometry.b_m;
+// The height of the solved line's lowest point [m].
+double lowest_z(const StaticSolution& statics) {
+  return statics.position_m(statics.lowest_point_s_m()).y();
+}
+
+// A length for the summary: "113.2 m".
+std::string metres(double value) { return fmt::format("{:.4g} m", value); }
+
+ImportedScene refused(int line, const std::string& why) {
+  ImportedScene scene;
+  scene.lines = {line};
+  scene.reason = why;
+  return scene;
+}
+
+// After the statics refused the scene with its seabed: where the line would hang without it, so
+// the summary says whether it would pass below the deck's water depth.
+void report_without_seabed(internal::ChainDescription d,
+                           bool as_line,
+                           const std::string& origin,
+                           ImportedScene& scene) {
+  const double seabed_z = *d.seabed.z_m;
+  d.seabed.z_m.reset();
   try {
+    const Problem problem =
+        parse_scene_text(internal::scene_tables(d, as_line), origin).front().problem;
+    const StaticSolution statics = solve_statics(problem);
+    if (!statics.converged) return;
+    const double z = lowest_z(statics);
+    if (z < seabed_z - 1e-9 * (std::abs(seabed_z) + 1.0)) {
+      scene.notes.push_back(fmt::format(
+          "Without the seabed the line would hang down to z = {:.6g} m, {:.4g} m below the deck's "
+          "water depth (seabed z = {:.6g} m): do not solve it without [seabed].",
+          z, seabed_z - z, seabed_z));
+    } else {
+      scene.notes.push_back(fmt::format(
+          "Without the seabed the line stays above it (lowest z = {:.6g} m, seabed z = {:.6g} m).",
+          z, seabed_z));
+    }
+  } catch (const Error&) {
+    // The line has no equilibrium without the seabed either; the refusal above says why.
+  }
+}
+
+// Catena's seabed has one stiffness: the importer uses the diameter at end A; say so when the
+// chain's segments differ.
+void seabed_diameter_note(const internal::ChainDescription& d, ImportedScene& scene) {
+  if (!d.seabed.z_m) return;
+  for (const auto& segment : d.segments) {
+    if (segment.diameter_m != d.segments.front().diameter_m) {
+      scene.notes.push_back(fmt::format(
+          "[seabed] stiffness and damping use Diam = {} m of the segment at end A; other segments "
+          "have other diameters (Catena's seabed has one stiffness).",
+          d.segments.front().diameter_m));
+      return;
+    }
+  }
+}
+
+// What this line's types hold that its scene cannot: a bending stiffness (Catena's lines are
+// cables). Also among the deck's notes; repeated per line so each scene's summary row has it.
+void dropped_type_notes(const MoorDynDeck& deck,
+                        const internal::ChainDescription& d,
+                        ImportedScene& scene) {
+  for (const auto& segment : d.segments) {
+    const auto type =
+        std::find_if(deck.types.begin(), deck.types.end(),
+                     [&](const MoorDynLineType& t) { return t.name == segment.type; });
+    const std::string& ei = type->bending_stiffness_text;
+    char* end = nullptr;
+    const double value = std::strtod(ei.c_str(), &end);
+    if (ei.empty() || (end == ei.c_str() + ei.size() && value == 0.0)) continue;
+    scene.notes.push_back(fmt::format(
+        "Line {} (type {}): EI = {} N m^2 dropped: Catena's lines have no bending stiffness.",
+        segment.line, segment.type, ei));
+  }
+}
+
+// The statics of the scene's tables (what `catena solve` will solve), with its seabed when it has
+// one: the summary's words and the notes, including whether the line would pass below the deck's
+// water depth. A refusal (InvalidInput) is reported with its message, never thrown.
+void report_statics(const internal::ChainDescription& d,
+                    bool as_line,
+                    const std::string& origin,
+                    ImportedScene& scene) {
+  const double tolerance = 1e-9 * (std::abs(d.seabed.z_m.value_or(0.0)) + 1.0);
+  Problem problem;
+  try {
+    problem = parse_scene_text(internal::scene_tables(d, as_line), origin).front().problem;
     const StaticSolution statics = solve_statics(problem);
     if (!statics.converged) {
-      why = "statics did not converge: " + statics.message;
-      return false;
+      scene.statics = "did not converge (see the notes)";
+      scene.notes.push_back("The statics did not converge: " + statics.message);
+      return;
     }
-    for (int j = 0; j <= 2000; ++j) {
-      const double z = statics.position_m(segment.length_m * j / 2000.0).y();
-      if (z < seabed_z - 1e-9 * (std::abs(seabed_z) + 1.0)) return true;
+    scene.statics_solved = true;
+    const double z = lowest_z(statics);
+    const auto intervals = statics.contact_intervals();
+    if (!d.seabed.z_m) {
+      scene.statics = fmt::format("lowest z = {}", metres(z));
+    } else if (intervals.empty()) {
+      scene.statics = "off the seabed";
+    } else {
+      scene.statics = fmt::format("grounded {} of {}", metres(statics.grounded_length_m()),
+                                  metres(problem.length_m()));
+      if (intervals.size() > 1) scene.statics += fmt::format(" ({} stretches)", intervals.size());
     }
-  } catch (const InvalidInput& error) {
-    why = error.what();
+    scene.notes.push_back(fmt::format(
+        "Statics{}: H = {:.6g} N, fairlead tension {:.6g} N, lowest point z = {:.6g} m; {}.",
+        d.seabed.z_m ? " with the seabed" : "", statics.horizontal_force_n(),
+        statics.tension_n(problem.length_m()), z, scene.statics));
+    if (d.seabed.z_m && z < *d.seabed.z_m - tolerance) {
+      scene.notes.push_back(
+          fmt::format("The solved line passes below the seabed: lowest z = {:.6g} m < {:.6g} m.", z,
+                      *d.seabed.z_m));
+    }
+    if (!d.seabed.z_m && d.seabed.deepest_point_z_m && z < *d.seabed.deepest_point_z_m) {
+      scene.notes.push_back(fmt::format(
+          "No seabed is written, and the solved line's lowest point z = {:.6g} m is below the "
+          "deepest point of the deck ({:.6g} m): check where the deck's seabed is.",
+          z, *d.seabed.deepest_point_z_m));
+    }
+  } catch (const Error& error) {
+    // InvalidInput from the scene reader's or the statics' checks (e.g. a case the seabed model
+    // does not support): reported, not thrown, so the other lines are still imported.
+    scene.statics = "refused (see the notes)";
+    scene.notes.push_back(std::string("Statics refused: ") + error.what());
+    if (d.seabed.z_m) report_without_seabed(d, as_line, origin, scene);
   }
-  return false;
 }
 
 ImportedScene convert_chain(const Topology& t,
@@ -188,29 +292,21 @@ ImportedScene convert_chain(const Topology& t,
   internal::ChainDescription d = internal::describe_chain(t.deck, chain, t.points);
   for (const auto& segment : d.chain) scene.lines.push_back(segment.line);
   const bool general = d.segments.size() > 1 || d.segments[0].weight_n_per_m <= 0.0;
-  bool touches = false;
-  if (d.seabed_z) {
-    if (general) {
-      touches = std::abs(d.geometry.a_m.y() - *d.seabed_z) <= 1e-6 * (std::abs(*d.seabed_z) + 1.0);
-    } else {
-      std::string why;
-      touches = uniform_line_touches(d.segments[0], d.geometry, *d.seabed_z, why);
-      if (!why.empty()) {
-        scene.reason = why;
-        return scene;
-      }
-    }
-  }
-  if (d.segments.size() > 1) scene.needs.push_back("[line] with segments (general lines)");
-  if (!d.points.empty()) scene.needs.push_back("[[line.points]] point attachments (general lines)");
-  if (d.segments.size() == 1 && d.segments[0].weight_n_per_m <= 0.0)
-    scene.needs.push_back("[line] with zero or negative weight (general lines)");
-  if (touches) scene.needs.push_back("[seabed] (seabed contact)");
+  scene.tables = general ? fmt::format("[line] {} segment{}", d.segments.size(),
+                                       d.segments.size() > 1 ? "s" : "")
+                         : "[cable]";
+  if (!d.points.empty())
+    scene.tables += fmt::format(", {} point{}", d.points.size(), d.points.size() > 1 ? "s" : "");
+  if (d.seabed.z_m) scene.tables += " + [seabed]";
+  dropped_type_notes(t.deck, d, scene);
+  seabed_diameter_note(d, scene);
   std::string ids;
   for (int id : scene.lines) ids += (ids.empty() ? "" : "-") + std::to_string(id);
   const std::string name = fmt::format("{}-line-{}", stem, ids);
   scene.file_name = name + ".toml";
-  scene.toml = internal::scene_text(d, name, scene.needs, touches, general);
+  report_statics(d, general, scene.file_name, scene);
+  scene.toml = internal::scene_header(d, name, scene.notes, moordyn_deck_notes(t.deck)) +
+               internal::scene_tables(d, general);
   return scene;
 }
 
@@ -224,14 +320,14 @@ std::vector<ImportedScene> convert_moordyn_deck(const MoorDynDeck& deck, const s
   for (const auto& line : deck.lines) {
     if (done.count(line.id)) continue;
     if (topology.reasons.count(line.id)) {
-      out.push_back({{line.id}, "", "", {}, topology.reasons.at(line.id)});
+      out.push_back(refused(line.id, topology.reasons.at(line.id)));
       done.insert(line.id);
       continue;
     }
     std::string why;
     const std::vector<ChainSegment> chain = build_chain(topology, line.id, why);
     if (chain.empty()) {
-      out.push_back({{line.id}, "", "", {}, why});
+      out.push_back(refused(line.id, why));
       done.insert(line.id);
       continue;
     }

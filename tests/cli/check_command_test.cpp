@@ -77,9 +77,42 @@ TEST(CheckCommand, BiasedCodeConvergesToAWrongLimitWithOrderTwo) {
     EXPECT_NEAR(mode.at("study").at("observed_order").get<double>(), 2.0, 1e-4);
     EXPECT_NEAR(mode.at("study").at("bias_relative").get<double>(), bias, 1e-3 * bias);
   }
+  // Trustworthy studies: their order and bias are printed unmarked.
+  EXPECT_NE(run.output.find(" 2.000 "), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("? not trusted"), std::string::npos) << run.output;
   EXPECT_TRUE(fs::exists(out / "check.html"));
   EXPECT_TRUE(fs::exists(out / "check.md"));
   EXPECT_TRUE(fs::exists(out / "figures" / "outofplane-mode-3.svg"));
+}
+
+// A study whose order is not stable across triples (order 2 from the three coarsest resolutions,
+// 1.3 from the three finest) is judged untrustworthy: the terminal table still prints what the
+// fit gave, marked "?", with the study's reason under the table.
+TEST(CheckCommand, UntrustworthyStudyIsMarkedInTheTerminalTable) {
+  const auto omegas = reference_omegas();
+  const double c = 3.0;
+  // Errors c/N^2 at N = 20, 40, 80, then the N = 160 value that makes the finest triple's order
+  // log2((e40 - e80) / (e80 - e160)) = 1.3.
+  const double e80 = c / 6400.0;
+  const double e160 = e80 - (c / 1600.0 - e80) / std::pow(2.0, 1.3);
+  std::string csv = "plane,mode,resolution,omega_rad_s\n";
+  for (const auto& [n, error] : std::vector<std::pair<int, double>>{
+           {20, c / 400.0}, {40, c / 1600.0}, {80, e80}, {160, e160}}) {
+    csv += fmt::format("in-plane,1,{},{:.17g}\n", n, omegas[0][0] * (1.0 - error));
+  }
+  const fs::path results = write_temp_file(kFolder, "unstable.csv", csv);
+  const fs::path json = results.parent_path() / "unstable.json";
+  const CliRun run =
+      run_cli("check " + results.string() + " --scene " + kScene + " --json " + json.string());
+  const auto study = read_json(json).at("modes").at(0).at("study");
+  ASSERT_FALSE(study.at("trustworthy").get<bool>()) << study.dump();
+  const double order = study.at("observed_order").get<double>();
+  EXPECT_NEAR(order, 1.3, 1e-6);
+  EXPECT_NE(run.output.find(fmt::format("{:.3f}?", order)), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("? not trusted"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("in-plane mode 1: " + study.at("note").get<std::string>()),
+            std::string::npos)
+      << run.output;
 }
 
 TEST(CheckCommand, UnbiasedCodeIsConvergedOrNotYetWithinTolerance) {

@@ -77,11 +77,15 @@ TEST(ImportCommand, V2DeckConvertsEachLineOrSaysWhyNot) {
   fs::remove_all(out);
   const CliRun run = run_cli("import moordyn " + kV2Deck + " --out " + out.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  // Line 1: one uniform, taut line: a [cable] scene that Catena solves today.
+  // Line 1: one uniform, taut line: a [cable] scene with the deck's seabed (it stays off it).
   const fs::path single = out / "moordyn-v2-semitaut-line-1.toml";
   const std::string text = read_text(single);
   EXPECT_NE(text.find("[cable]"), std::string::npos) << text;
-  EXPECT_NE(text.find("Needs: nothing"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n[seabed]"), std::string::npos) << text;
+  EXPECT_EQ(text.find("Needs:"), std::string::npos) << text;
+  EXPECT_NE(run.output.find("moordyn-v2-semitaut-line-1.toml  [cable] + [seabed]: off the seabed"),
+            std::string::npos)
+      << run.output;
   EXPECT_NE(text.find("b = [800.0, -20.0]"), std::string::npos) << text;
   const double weight = (35.0 - 1025.0 * kPi / 4.0 * 0.04) * 9.80665;  // (MassDen - rho pi/4 d^2) g
   EXPECT_NEAR(value_of(text, "weight"), weight, kRelTolConversion * weight) << text;
@@ -106,7 +110,10 @@ TEST(ImportCommand, V2DeckConvertsEachLineOrSaysWhyNot) {
   EXPECT_NEAR(value_of(chain, "weight", chain.rfind("[[line.points]]")), clump,
               kRelTolConversion * clump)
       << chain;
-  EXPECT_NE(chain.find("Needs: [line]"), std::string::npos) << chain;
+  EXPECT_NE(run.output.find("moordyn-v2-semitaut-line-2-3.toml  [line] 2 segments, 1 point + "
+                            "[seabed]: "),
+            std::string::npos)
+      << run.output;
   // The chain type's CaAx = 0.5 on the first segment: rho_w CaAx pi/4 Diam^2.
   const double chain_ma_t = 0.5 * 1025.0 * kPi / 4.0 * 0.15 * 0.15;
   EXPECT_NEAR(value_of(chain, "added_mass_tangential"), chain_ma_t, kRelTolConversion * chain_ma_t)
@@ -142,9 +149,20 @@ TEST(ImportCommand, V1DeckUsesItsOptionsAndRefusesABridle) {
   EXPECT_EQ(value_of(text, "water_density"), 1020.0) << text;
   EXPECT_EQ(value_of(text, "gravity"), 9.81) << text;
   // 700 m of chain over 600 m x 190 m rests on the seabed at z = -200: [cable] with [seabed].
-  EXPECT_NE(text.find("[seabed]"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n[seabed]"), std::string::npos) << text;
   EXPECT_NE(text.find("stiffness = 200000.0"), std::string::npos) << text;  // kBot 2e6 Pa/m x 0.1 m
-  EXPECT_NE(text.find("Needs: [seabed]"), std::string::npos) << text;
+  // The importer solved its statics with the seabed and says how much of it rests there.
+  EXPECT_NE(run.output.find("v1-line-1.toml  [cable] + [seabed]: grounded "), std::string::npos)
+      << run.output;
+  EXPECT_NE(text.find("# Statics with the seabed: H = "), std::string::npos) << text;
+  // The rest of the deck: each option with what became of it, under the table.
+  EXPECT_NE(run.output.find("What became of the rest of the deck:"), std::string::npos);
+  EXPECT_NE(run.output.find("option dtM = 0.001: ignored - MoorDyn's time integration"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("option kBot = 2.0e6: used - [seabed] stiffness = kBot Diam"),
+            std::string::npos)
+      << run.output;
   // The [seabed] table it writes is read: the statics lays part of the chain on the seabed.
   const CliRun solve = run_cli("solve " + (out / "v1-line-1.toml").string() + " --solver fe");
   EXPECT_EQ(solve.exit_code, 0) << solve.output;

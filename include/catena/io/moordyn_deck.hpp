@@ -16,6 +16,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace catena {
@@ -36,6 +37,10 @@ struct MoorDynLineType {
   /// a viscoelastic "BA|BA_D" pair).
   std::optional<double> axial_damping;
   std::string axial_damping_text;
+  /// EI as written (v2); empty when the table has no EI column (v1).
+  std::string bending_stiffness_text;
+  /// Columns Catena does not read (e.g. Cl, dF, cF), as (name as written, value).
+  std::vector<std::pair<std::string, std::string>> other_columns;
 };
 
 /// How a point is held (MoorDyn's type or attachment column).
@@ -56,6 +61,8 @@ struct MoorDynPoint {
   double volume_m3 = 0.0;
   double added_mass_coefficient = 0.0;
   int file_line = 0;
+  /// Columns Catena does not read (CdA, v1's FX FY FZ), as (name as written, value).
+  std::vector<std::pair<std::string, std::string>> other_columns;
 };
 
 struct MoorDynLine {
@@ -66,6 +73,15 @@ struct MoorDynLine {
   double length_m = 0.0;
   int segments = 0;
   int file_line = 0;
+  /// Columns Catena does not read (Outputs/Flags), as (name as written, value).
+  std::vector<std::pair<std::string, std::string>> other_columns;
+};
+
+/// One row of OPTIONS, as written.
+struct MoorDynOption {
+  std::string name;  ///< as written, e.g. "WtrDpth"
+  std::string value;
+  int file_line = 0;
 };
 
 struct MoorDynDeck {
@@ -73,20 +89,34 @@ struct MoorDynDeck {
   std::vector<MoorDynLineType> types;
   std::vector<MoorDynPoint> points;
   std::vector<MoorDynLine> lines;
-  /// Options by lower-case name, values as written.
+  /// Options by lower-case name, values as written (the last row of a name).
   std::map<std::string, std::string> options;
+  /// Every OPTIONS row in file order (for the import summary: what became of each).
+  std::vector<MoorDynOption> option_rows;
+  /// The channels of the OUTPUTS section, as written.
+  std::vector<std::string> outputs;
+  /// Data rows of the ROD TYPES, RODS, BODIES and SYROPE IC sections.
+  int rod_type_rows = 0;
+  int rod_rows = 0;
+  int body_rows = 0;
+  int syrope_rows = 0;
   bool has_rods = false;
   bool has_bodies = false;
   /// Lines named in a FAILURE section.
   std::vector<int> failing_lines;
 
-  /// Gravity [m/s^2], water density [kg/m^3], depth [m] (absent when silent), bottom stiffness
-  /// [Pa/m]: from the options (g/gravity, rho/rhow/wtrdnsty, wtrdpth/depth, kbot/kb), else
-  /// MoorDyn's defaults 9.80665, 1025, none, 3e6.
+  /// Gravity [m/s^2], water density [kg/m^3], depth [m] (absent when silent or not a number,
+  /// e.g. MoorDyn-F's "DEFAULT" or a bathymetry file), bottom stiffness [Pa/m] and damping
+  /// [Pa s/m]: from the options (g/gravity, rho/rhow/wtrdnsty, wtrdpth/depth, kbot/kb, cbot/cb),
+  /// else MoorDyn-C's defaults 9.80665, 1025, none, 3e6, 3e5.
   double gravity() const;
   double water_density() const;
   std::optional<double> water_depth() const;
   double bottom_stiffness() const;
+  double bottom_damping() const;
+  /// The bathymetry file MoorDyn would read instead of a flat seabed (MoorDyn-C's SeafloorFile,
+  /// or MoorDyn-F's WtrDpth given as a file name); empty when none.
+  std::string bathymetry_file() const;
 };
 
 /// Reads a deck. InvalidInput naming the file and line for an unknown section, a table without

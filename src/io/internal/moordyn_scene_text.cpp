@@ -64,14 +64,6 @@ SegmentProperties segment_of(const MoorDynDeck& deck, int line_id) {
   return segment;
 }
 
-std::optional<double> seabed_height(const MoorDynDeck& deck) {
-  if (const auto depth = deck.water_depth()) return -*depth;
-  if (deck.points.empty()) return std::nullopt;
-  return std::min_element(deck.points.begin(), deck.points.end(),
-                          [](const auto& a, const auto& b) { return a.z_m < b.z_m; })
-      ->z_m;
-}
-
 // A TOML float (always with a '.' or an exponent: "400" would be an integer).
 std::string number(double value) {
   std::string text = fmt::format("{:.15g}", value);
@@ -79,9 +71,12 @@ std::string number(double value) {
   return text;
 }
 
-std::string header(const ChainDescription& d,
-                   const std::string& name,
-                   const std::vector<std::string>& needs) {
+}  // namespace
+
+std::string scene_header(const ChainDescription& d,
+                         const std::string& name,
+                         const std::vector<std::string>& notes,
+                         const std::vector<MoorDynNote>& deck_notes) {
   const auto point_text = [](const MoorDynPoint* p) {
     return fmt::format("point {} ({}) at ({}, {}, {}) m", p->id, p->attachment, p->x_m, p->y_m,
                        p->z_m);
@@ -113,18 +108,17 @@ std::string header(const ChainDescription& d,
         "the deck's segment count).\n",
         s.line, s.damping_ratio, s.damping_ratio, s.axial_damping_n_s, s.deck_segments);
   }
-  if (needs.empty()) {
-    out += "# Needs: nothing beyond the one-segment [cable] (Catena solves it today).\n";
-  } else {
-    out += "# Needs:";
-    for (const auto& need : needs) out += " " + need + ";";
-    out += "\n# (Catena solves this scene once its readers accept these tables.)\n";
-  }
+  for (const auto& note : notes) out += "# " + note + "\n";
+  out += "# What became of the rest of the deck:\n";
+  for (const auto& note : deck_notes)
+    out += fmt::format("#   {}: {} - {}\n", note.item, note.fate, note.detail);
   return out + fmt::format(
                    "name = \"{}\"\ndescription = \"MoorDyn line(s) {} of {}\"\ntags = "
                    "[\"moordyn-import\"]\n\n",
                    name, lines, d.deck_file);
 }
+
+namespace {
 
 // The hydrodynamic and damping keys of a section (docs/reference/scene-format.md); a deck's zero
 // diameter gives no drag keys (a diameter in a scene must be > 0).
@@ -205,29 +199,30 @@ ChainDescription describe_chain(const MoorDynDeck& deck,
                           joint.added_mass_coefficient * d.water_density * joint.volume_m3});
     }
   }
-  d.seabed_z = seabed_height(deck);
-  d.seabed_stiffness_n_per_m2 = deck.bottom_stiffness() * d.segments.front().diameter_m;
+  d.seabed = moordyn_seabed(deck);
+  d.bottom_stiffness_pa_per_m = deck.bottom_stiffness();
+  d.bottom_damping_pa_s_per_m = deck.bottom_damping();
+  // MoorDyn's contact force per node is (kBot penetration - cBot velocity) Diam l: per unit
+  // length kBot Diam and cBot Diam (source/Line.cpp). Catena's seabed has one stiffness, so the
+  // diameter is the one at end A (the scene's header says so when the segments differ).
+  d.seabed_stiffness_n_per_m2 = d.bottom_stiffness_pa_per_m * d.segments.front().diameter_m;
+  d.seabed_damping_n_s_per_m2 = d.bottom_damping_pa_s_per_m * d.segments.front().diameter_m;
   return d;
 }
 
-std::string scene_text(const ChainDescription& d,
-                       const std::string& name,
-                       const std::vector<std::string>& needs,
-                       bool seabed,
-                       bool as_line) {
-  std::string out = header(d, name, needs) + (as_line ? line_table(d) : cable_table(d));
+std::string scene_tables(const ChainDescription& d, bool as_line) {
+  std::string out = as_line ? line_table(d) : cable_table(d);
   // The deck's water (WtrDnsty/rho, g/gravity; MoorDyn's defaults when silent): the Morison drag's
   // density; the weights above were computed with both.
   out += fmt::format("[environment]\nwater_density = {}\ngravity = {}\n\n", number(d.water_density),
                      number(d.gravity));
-  if (seabed) {
+  if (d.seabed.z_m) {
     out += fmt::format(
-        "[seabed]                          # kBot {} Pa/m times Diam {} m at end A\nz = "
-        "{}\nfriction = 0.0\n"
-        "stiffness = {}\n\n",
-        number(d.seabed_stiffness_n_per_m2 / d.segments.front().diameter_m),
-        number(d.segments.front().diameter_m), number(*d.seabed_z),
-        number(d.seabed_stiffness_n_per_m2));
+        "[seabed]                          # kBot {} Pa/m, cBot {} Pa s/m times Diam {} m at end "
+        "A\nz = {}\nfriction = 0.0\nstiffness = {}\ndamping = {}\n\n",
+        number(d.bottom_stiffness_pa_per_m), number(d.bottom_damping_pa_s_per_m),
+        number(d.segments.front().diameter_m), number(*d.seabed.z_m),
+        number(d.seabed_stiffness_n_per_m2), number(d.seabed_damping_n_s_per_m2));
   }
   return out + "[request]\ninplane_modes = 6\noutofplane_modes = 6\n";
 }

@@ -2,7 +2,7 @@
 #pragma once
 // A chain of MoorDyn lines described in Catena's terms (docs/how-to/moordyn-import.md), and written
 // as a scene: `[cable]` for one uniform line, `[line]` with segments and points otherwise,
-// `[seabed]` when the line touches it.
+// `[seabed]` whenever the deck has a water depth (the statics decides contact).
 
 #include <map>
 #include <optional>
@@ -11,6 +11,7 @@
 
 #include "catena/core/types.hpp"
 #include "catena/io/moordyn_deck.hpp"
+#include "catena/io/moordyn_notes.hpp"
 
 namespace catena::internal {
 
@@ -62,9 +63,12 @@ struct ChainDescription {
   std::vector<SegmentProperties> segments;
   std::vector<PointAttachment> points;
   SceneGeometry geometry;
-  /// -WtrDpth, else the deepest point of the deck (MoorDyn's own rule when the depth is silent).
-  std::optional<double> seabed_z;
+  /// The deck's seabed (moordyn_seabed()); no z when none can be written.
+  MoorDynSeabed seabed;
   double seabed_stiffness_n_per_m2 = 0.0;  ///< kBot times the diameter at end A
+  double seabed_damping_n_s_per_m2 = 0.0;  ///< cBot times the diameter at end A
+  double bottom_stiffness_pa_per_m = 0.0;  ///< kBot
+  double bottom_damping_pa_s_per_m = 0.0;  ///< cBot
   double gravity = 0.0;
   double water_density = 0.0;
 };
@@ -74,12 +78,15 @@ ChainDescription describe_chain(const MoorDynDeck& deck,
                                 std::vector<ChainSegment> chain,
                                 const std::map<int, const MoorDynPoint*>& points);
 
-/// The scene file: a header comment (source, conversion, `needs`), then `[cable]` or, when
-/// `as_line`, `[line]`; `[seabed]` when `seabed`; a request for 6 modes per plane.
-std::string scene_text(const ChainDescription& d,
-                       const std::string& name,
-                       const std::vector<std::string>& needs,
-                       bool seabed,
-                       bool as_line);
+/// The scene's tables: `[cable]` or, when `as_line`, `[line]`; `[environment]`; `[seabed]` when
+/// the deck has one; a request for 6 modes per plane.
+std::string scene_tables(const ChainDescription& d, bool as_line);
+
+/// The scene's header: a comment (source, conversion, the line's `notes` and the deck's notes),
+/// then its name, description and tags. Header + tables is the scene file.
+std::string scene_header(const ChainDescription& d,
+                         const std::string& name,
+                         const std::vector<std::string>& notes,
+                         const std::vector<MoorDynNote>& deck_notes);
 
 }  // namespace catena::internal
