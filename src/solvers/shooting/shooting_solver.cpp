@@ -139,16 +139,34 @@ void mark_failed(Plane plane, const ShootingFailure& failure, SolverSummary& sum
   summary.message = fmt::format("Numerical failure ({}): {}", to_string(plane), failure.what());
 }
 
-// Friction that brings the static tension on the seabed to zero leaves that stretch with no
-// transverse stiffness but the foundation's: the equations divide by T there, in both planes.
+// A grounded stretch without static tension (friction that takes it all on the stretch from an
+// anchor on the seabed, or a slack line, H = 0, whose grounded part carries none and whose hanging
+// part leaves the seabed with T = 0) has no transverse stiffness but the foundation's: the shot's
+// coefficient 1/T is infinite there, in both planes, and the count of conjugate points is not
+// defined. Declined, wherever along the line the stretch lies.
 std::optional<std::string> slack_on_seabed(const StaticSolution& statics) {
-  if (!statics.has_contact() || statics.anchor_horizontal_force_n() > 0.0) return std::nullopt;
+  if (!statics.has_contact()) return std::nullopt;
+  const double H = statics.horizontal_force_n();
+  double slack = 0.0;
+  for (const StaticPiece& piece : statics.pieces()) {
+    if (!piece.grounded) continue;
+    const double middle = piece.s_begin_m + 0.5 * piece.section.length_m;
+    if (!(statics.tension_n(middle) > 0.0)) slack += piece.section.length_m;
+  }
+  if (!(slack > 0.0)) return std::nullopt;
+  if (!(H > 0.0)) {
+    return fmt::format(
+        "a slack line (H = 0): {:.6g} m rest on the seabed without static tension and the hanging "
+        "part leaves it with T = 0; the transverse equations divide by T, so the shot is singular "
+        "there in both planes (fe solves a plane whose seabed stiffness holds the grounded part)",
+        slack);
+  }
   return fmt::format(
-      "the seabed friction (seabed.friction = {:.6g}) brings the static tension on the grounded "
-      "part to zero before the anchor (H = {:.6g} N < C_B w L_g): that stretch has no transverse "
-      "stiffness but the foundation's and the transverse equations of both planes are singular "
-      "there; lower seabed.friction below H / (w L_g) or shorten the grounded length",
-      statics.seabed().friction, statics.horizontal_force_n());
+      "the seabed friction (seabed.friction = {:.6g}) brings the static tension on {:.6g} m of the "
+      "grounded part to zero (H = {:.6g} N < C_B w L_g): that stretch has no transverse stiffness "
+      "but the foundation's and the transverse equations of both planes are singular there; lower "
+      "seabed.friction below H / (w L_g) or shorten the grounded length",
+      statics.seabed().friction, slack, H);
 }
 
 // The numerics of the shooting solver for one problem.
@@ -260,8 +278,7 @@ void ShootingNumerics::describe(SolverSummary& summary) const {
       "exact linearisation about the closed-form static catenary; A^{-1} used, so EA = inf is "
       "exact (no penalty); counting by the conjugate points of the principal solution (phase of "
       "det(Phi + iF), Morse index / Sturm)");
-  const char* how =
-      "integrated piece by piece, matched to the suspended part at the touchdown point";
+  const char* how = "integrated piece by piece, continuous across every contact boundary";
   if (auto note = seabed_model_note(context_.statics, how)) summary.notes.push_back(*note);
 }
 
