@@ -96,6 +96,83 @@ inline ContactState u_shape(CableProperties cable,
   return state;
 }
 
+/// A grounded stretch of `length_m` of `section` from arc length `s_begin_m` at `offset_m`
+/// (its height is the seabed's), with tension `H` along it (friction not mobilised).
+inline StaticPiece grounded_piece(const CableProperties& section,
+                                  double length_m,
+                                  double H,
+                                  double s_begin_m,
+                                  const Vec2& offset_m,
+                                  double stretched_m) {
+  StaticPiece piece;
+  piece.section = section;
+  piece.section.length_m = length_m;
+  piece.s_begin_m = s_begin_m;
+  piece.offset_begin_m = offset_m;
+  piece.stretched_begin_m = stretched_m;
+  piece.grounded = true;
+  piece.grounded_tension_begin_n = H;
+  return piece;
+}
+
+/// A line in two grounded stretches (a W without its outer arms): `grounded_a_m` from A (on the
+/// seabed at z = 0), then a hump of two arcs of `hump_arc_m` held up by a buoy of mass
+/// `buoy_mass_kg` at its top (upward force 2 w hump_arc_m: the arcs leave and meet the seabed
+/// tangentially), `grounded_b_m` on the seabed, and an arc of `arc_b_m` up to B; tension H on
+/// both grounded stretches (C_B = 0).
+inline ContactState two_stretch_line(CableProperties cable,
+                                     double H,
+                                     double grounded_a_m,
+                                     double hump_arc_m,
+                                     double buoy_mass_kg,
+                                     double grounded_b_m,
+                                     double arc_b_m,
+                                     const Seabed& seabed) {
+  const double w = cable.weight_n_per_m;
+  const double strain = cable.is_inextensible() ? 0.0 : H / cable.axial_stiffness_n;
+  cable.length_m = grounded_a_m + 2.0 * hump_arc_m + grounded_b_m + arc_b_m;
+  Line line = line_of_cable(cable);
+  PointAttachment buoy;
+  buoy.s_m = grounded_a_m + hump_arc_m;
+  buoy.mass_kg = buoy_mass_kg;
+  buoy.weight_n = -2.0 * w * hump_arc_m;
+  buoy.added_mass_kg = 0.5 * buoy_mass_kg;
+  line.points.push_back(buoy);
+  std::vector<StaticPiece> pieces{grounded_piece(cable, grounded_a_m, H, 0.0, Vec2::Zero(), 0.0)};
+  double x = grounded_a_m * (1.0 + strain), stretched = x;
+  Line hump = line;
+  hump.segments.front().length_m = 2.0 * hump_arc_m;
+  hump.points.front().s_m = hump_arc_m;
+  const std::vector<StaticPiece> hump_pieces = internal::build_line_pieces(hump, H, 0.0);
+  for (StaticPiece piece : hump_pieces) {
+    piece.s_begin_m += grounded_a_m;
+    piece.offset_begin_m += Vec2(x, 0.0);
+    piece.stretched_begin_m += stretched;
+    pieces.push_back(piece);
+  }
+  // The hump is symmetric: it comes back down to the seabed (z = 0 up to rounding).
+  const Vec2 hump_offset = internal::line_end_offset(hump_pieces, H);
+  stretched += 2.0 * arc_stretched_m(cable, hump_arc_m, H, 0.0);
+  x += hump_offset.x();
+  const double s_b = grounded_a_m + 2.0 * hump_arc_m;
+  pieces.push_back(grounded_piece(cable, grounded_b_m, H, s_b, Vec2(x, 0.0), stretched));
+  x += grounded_b_m * (1.0 + strain);
+  stretched += grounded_b_m * (1.0 + strain);
+  for (const StaticPiece& piece :
+       shifted_arc(cable, arc_b_m, H, 0.0, s_b + grounded_b_m, Vec2(x, 0.0), stretched))
+    pieces.push_back(piece);
+  CableProperties arc_b = cable;
+  arc_b.length_m = arc_b_m;
+  ContactState state;
+  state.problem.line = line;
+  state.problem.cable = cable;
+  state.problem.supports.a_m = Vec2(0.0, seabed.z_m);
+  state.problem.supports.b_m =
+      state.problem.supports.a_m + Vec2(x, 0.0) + catenary_end_offset(arc_b, H, 0.0);
+  state.statics = StaticSolution(line, state.problem.supports.a_m, seabed, H, pieces);
+  return state;
+}
+
 /// One arc of the U alone: `arc_m` of `cable` from a fixed end at its lowest point (the U's
 /// touchdown point) to the U's end B, in the same equilibrium (H, V = 0 at the fixed end).
 inline ContactState u_arc(CableProperties cable, double H, double arc_m) {

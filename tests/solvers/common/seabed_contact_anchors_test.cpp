@@ -4,8 +4,10 @@
 // - a symmetric U (both ends above the seabed, the middle grounded with tension H): fe against
 //   shooting in both planes, within fe's own estimate; the mirror symmetry makes every mode
 //   symmetric or antisymmetric; as the seabed stiffness grows the grounded stretch clamps the two
-//   arcs, and the U's frequencies pair up on those of one arc alone with a fixed end at its
-//   touchdown point;
+//   arcs, and the frequencies of a U approach those of each arc alone with a fixed end at its
+//   touchdown point (like sqrt(H / k)); shooting crosses a stiff grounded middle (its cost);
+// - two grounded stretches (one from A, one between a buoyed hump and the last arc): fe against
+//   shooting within the estimates;
 // - a slack line (H = 0): its hanging part is the hanging chain, whose exact frequencies are
 //   J0(2 omega sqrt(l / g')) = 0 (g' = w / M); shooting declines the singular 1/T, and fe, whose
 //   chain converges to them only logarithmically (measured here), declines it too.
@@ -103,6 +105,35 @@ TEST(SeabedContactAnchors, FeAgreesWithShootingOnTheUWithinItsEstimate) {
     }
     std::printf("%s-plane: fe - shooting at most %.2e, at most %.2f of the estimates\n",
                 inplane ? "in" : "out-of", worst, worst_ratio);
+  }
+}
+
+// Two grounded stretches, one from A and one in the middle, with a buoy holding up the hump
+// between them (chain, H = 200 kN, 80 m + 2 x 60 m + 70 m + 150 m, a 20 t buoy): fe against
+// shooting on 6 modes per plane, within the estimates.
+TEST(SeabedContactAnchors, FeAgreesWithShootingOnTwoGroundedStretches) {
+  const ContactState line = testing::two_stretch_line(kChain, kH, 80.0, 60.0, 2e4, 70.0, kArc,
+                                                      Seabed{0.0, 0.0, 1e5, 1e4});
+  ASSERT_EQ(line.statics.contact_intervals().size(), 2u);
+  EXPECT_NEAR(line.statics.position_m(80.0 + 120.0 + 35.0).y(), 0.0, 1e-9);
+  EXPECT_NEAR((line.statics.position_m(line.problem.length_m()) - line.problem.supports.b_m).norm(),
+              0.0, 1e-9);
+  const SolveRequest request = modes_request(6, 6);
+  const SolverOutput fe = fe_of(line, request), shooting = shooting_of(line, request);
+  for (bool inplane : {true, false}) {
+    const ModalResult& a = plane_of(fe, inplane);
+    const ModalResult& b = plane_of(shooting, inplane);
+    ASSERT_EQ(a.modes.size(), 6u) << a.summary.message;
+    ASSERT_EQ(b.modes.size(), 6u) << b.summary.message;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < 6; ++i) {
+      const double difference = relative_error(a.modes[i].omega_rad_s, b.modes[i].omega_rad_s);
+      EXPECT_LT(difference, a.modes[i].relative_error_estimate + b.modes[i].relative_error_estimate)
+          << (inplane ? "in" : "out") << " mode " << i + 1;
+      worst = std::max(worst, difference);
+    }
+    std::printf("%s-plane: fe - shooting at most %.2e (fe's largest estimate %.2e)\n",
+                inplane ? "in" : "out-of", worst, a.summary.max_error_estimate);
   }
 }
 
