@@ -228,24 +228,33 @@ Vector closure_residual(
 Eigen::MatrixXd closure_jacobian(const FeChain& chain, const Closure& closure) {
   const auto rows = static_cast<Eigen::Index>(2 + closure.seabed_nodes.size());
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, 1 + closure.stretches);
-  Eigen::MatrixXd node = Eigen::MatrixXd::Zero(2, 1 + closure.stretches);  // d(node)/d(unknowns)
+  // d(node)/dH and d(node)/dV_k, in fixed-size vectors (N may be 1e6).
+  Vec2 by_H = Vec2::Zero();
+  std::vector<Vec2> by_V(static_cast<std::size_t>(closure.stretches), Vec2::Zero());
+  auto store = [&](Eigen::Index row, int component) {
+    J(row, 0) = by_H[component];
+    for (int k = 0; k < closure.stretches; ++k)
+      J(row, 1 + k) = by_V[static_cast<std::size_t>(k)][component];
+  };
   std::size_t next = 0;
   for (int j = 0; j < chain.elements; ++j) {
     if (next < closure.seabed_nodes.size() && closure.seabed_nodes[next] == j)
-      J.row(static_cast<Eigen::Index>(2 + next++)) = node.row(1);
+      store(static_cast<Eigen::Index>(2 + next++), 1);
     const double l0 = chain.element_length_m[j];
     if (chain.is_grounded(j)) {
-      if (chain.tension_n[j] > 0.0) node(0, 0) += l0 / chain.axial_stiffness_n[j];
+      if (chain.tension_n[j] > 0.0) by_H.x() += l0 / chain.axial_stiffness_n[j];
       continue;
     }
     const Vec2& t = chain.direction[static_cast<std::size_t>(j)];
     const Eigen::Matrix2d G =
         l0 * ((Eigen::Matrix2d::Identity() - t * t.transpose()) / chain.tension_n[j] +
               Eigen::Matrix2d::Identity() / chain.axial_stiffness_n[j]);
-    node.col(0) += G.col(0);
-    node.col(1 + chain.suspended_stretch[static_cast<std::size_t>(j)]) += G.col(1);
+    by_H += G.col(0);
+    by_V[static_cast<std::size_t>(chain.suspended_stretch[static_cast<std::size_t>(j)])] +=
+        G.col(1);
   }
-  J.topRows(2) = node;
+  store(0, 0);
+  store(1, 1);
   return J;
 }
 
