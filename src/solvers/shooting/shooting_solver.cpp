@@ -133,10 +133,37 @@ std::string resolution(const ShootingSolverOptions& options) {
                      options.effective_root_tolerance());
 }
 
+// What a failure on a grounded stretch away from A likely means: the general shot crosses it
+// (the grounded run takes only the pieces from A), and its steps grow with the e-folds
+// L_g sqrt(k / T) of the foundation's growing solution (docs/explanation/methods/shooting.md,
+// "The grounded run"). Empty when no such stretch has many e-folds.
+std::string grounded_middle_hint(const ShootingCoefficients& k) {
+  std::size_t leading = 0;
+  while (leading < k.pieces.size() && k.pieces[leading].grounded) ++leading;
+  double efolds = 0.0, s_begin = 0.0, s_end = 0.0;
+  for (std::size_t j = leading; j < k.pieces.size(); ++j) {
+    const ShootingPiece& p = k.pieces[j];
+    if (!p.grounded || !(p.min_tension(k.H) > 0.0)) continue;
+    const double stiffness = std::max(p.foundation_normal, p.foundation_tangential);
+    const double e = (p.s_end - p.s_begin) * std::sqrt(stiffness / p.min_tension(k.H));
+    if (e > efolds) efolds = e, s_begin = p.s_begin, s_end = p.s_end;
+  }
+  if (!(efolds > 100.0)) return "";
+  return fmt::format(
+      "; the general shot crosses the grounded stretch s in [{:.6g}, {:.6g}] m away from A, where "
+      "the foundation's solution grows by {:.0f} e-folds (L_g sqrt(k / T)): the grounded run, "
+      "whose cost does not grow with k, takes only the stretch from A",
+      s_begin, s_end, efolds);
+}
+
 // A plane whose frequencies could not be found: the integrator failed (the reason says where).
-void mark_failed(Plane plane, const ShootingFailure& failure, SolverSummary& summary) {
+void mark_failed(Plane plane,
+                 const ShootingFailure& failure,
+                 const ShootingCoefficients& k,
+                 SolverSummary& summary) {
   summary.termination = Termination::NumericalFailure;
-  summary.message = fmt::format("Numerical failure ({}): {}", to_string(plane), failure.what());
+  summary.message = fmt::format("Numerical failure ({}): {}{}", to_string(plane), failure.what(),
+                                grounded_middle_hint(k));
 }
 
 // A grounded stretch without static tension (friction that takes it all on the stretch from an
@@ -303,7 +330,7 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
   try {
     integrator.emplace(integration_plane, k_, integrator_settings(options_));
   } catch (const ShootingFailure& failure) {
-    mark_failed(plane, failure, summary);
+    mark_failed(plane, failure, k_, summary);
     return result;
   }
   // String estimate of the (n+1)-th frequency, nudged off the exact string values.
@@ -325,7 +352,7 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
     const std::vector<Root> roots = finder.find(count, summary.warnings, &meter);
     add_modes(*integrator, roots, plane, count, result);
   } catch (const ShootingFailure& failure) {
-    mark_failed(plane, failure, summary);
+    mark_failed(plane, failure, k_, summary);
     summary.iterations = finder.shots();
     summary.operations = integrator->total_rhs_evaluations();
     return result;
@@ -350,7 +377,7 @@ ModalResult ShootingNumerics::damped_modes(Plane plane, int count) {
     result = damped_plane_modes(k_, context_, plane, count, settings);
   } catch (const ShootingFailure& failure) {
     result = ModalResult();
-    mark_failed(plane, failure, result.summary);
+    mark_failed(plane, failure, k_, result.summary);
   }
   result.summary.resolution = resolution(options_);
   result.summary.accuracy_target = accuracy_target(options_);

@@ -204,8 +204,8 @@ TEST(SeabedContactAnchors, AStiffSeabedClampsTheArcsOfTheU) {
 // Shooting crosses a grounded middle with its general stepper (the grounded run takes only the
 // pieces from A), whose steps grow like the e-folds sqrt(k / T) L_g of the foundation's growing
 // solution: measured on this U (4 in-plane modes), 5.3e6 steps (2.1 s) at k = 1e6 and 1.5e7
-// (6.2 s) at 1e7; ERKStep fails at k = 3e7 (a numerical failure, no number). Here: k = 1e6,
-// against fe.
+// (6.2 s) at 1e7; ERKStep fails at k = 3e7 (a numerical failure that says why, no number).
+// Here: k = 1e6 against fe, and the failure at 1e8.
 TEST(SeabedContactAnchors, ShootingCrossesAStiffGroundedMiddle) {
   const ContactState u = u_on(1e6, 1e6);
   const SolverOutput shooting = shooting_of(u, modes_request(4, 0));
@@ -219,6 +219,12 @@ TEST(SeabedContactAnchors, ShootingCrossesAStiffGroundedMiddle) {
             shooting.inplane->modes[i].relative_error_estimate)
         << "mode " << i + 1;
   }
+  const SolverOutput stiff = shooting_of(u_on(1e8, 1e8), modes_request(1, 0));
+  EXPECT_EQ(stiff.inplane->summary.termination, Termination::NumericalFailure);
+  EXPECT_TRUE(stiff.inplane->modes.empty());
+  EXPECT_NE(stiff.inplane->summary.message.find("grounded stretch s in [150, 250] m away from A"),
+            std::string::npos)
+      << stiff.inplane->summary.message;
 }
 
 }  // namespace
