@@ -201,6 +201,26 @@ TEST(SeabedContactAnchors, AStiffSeabedClampsTheArcsOfTheU) {
   }
 }
 
+// On a symmetric U with a stiff middle (k = 3e6: exp(-2 L_g sqrt(k / H)) = 1e-337) the two arcs'
+// modes are pairs equal in double precision. Shooting finds each root of a pair in its own count
+// bracket; equal, they are returned as a proved double root (multiplicity 2), not rejected as one
+// root returned twice.
+TEST(SeabedContactAnchors, AStiffSymmetricUHasDoubleRoots) {
+  const SolverOutput out = shooting_of(u_on(3e6, 3e6), modes_request(0, 4));
+  const std::vector<Mode>& modes = out.outofplane->modes;
+  ASSERT_EQ(modes.size(), 4u) << out.outofplane->summary.message;
+  for (std::size_t i = 0; i < 4; i += 2) {
+    std::printf("modes %zu, %zu: %.17g, %.17g, multiplicity %d\n", i + 1, i + 2,
+                modes[i].omega_rad_s, modes[i + 1].omega_rad_s, modes[i].multiplicity);
+    EXPECT_LT(relative_error(modes[i].omega_rad_s, modes[i + 1].omega_rad_s), 1e-12);
+    if (modes[i].omega_rad_s == modes[i + 1].omega_rad_s) {
+      EXPECT_EQ(modes[i].multiplicity, 2);
+      EXPECT_EQ(modes[i + 1].multiplicity, 2);
+    }
+  }
+  EXPECT_LT(modes[1].omega_rad_s, modes[2].omega_rad_s);
+}
+
 // Shooting crosses a grounded middle with its general stepper (the grounded run takes only the
 // pieces from A), whose steps grow like the e-folds sqrt(k / T) L_g of the foundation's growing
 // solution: measured on this U (4 in-plane modes), 5.3e6 steps (2.1 s) at k = 1e6 and 1.5e7
