@@ -60,6 +60,7 @@ struct FeChain {
   std::vector<int> suspended_stretch;
   Vector stretch_vertical_force_n;
   Vector grounded_tension_offset_n;
+  /// The number of grounded elements (0 without contact).
   int grounded_elements = 0;
   /// Height of the seabed relative to support a [m] (with contact).
   double seabed_offset_z_m = 0.0;
@@ -68,7 +69,7 @@ struct FeChain {
   /// The seabed dashpot c_s under the grounded elements, vertical only [N s/m per m].
   double foundation_damping_n_s_per_m2 = 0.0;
   /// The first element of each mesh piece (fe_line_mesh.hpp), ascending from 0: within a piece the
-  /// elements are equal and the response smooth; joints, points and the touchdown point are
+  /// elements are equal and the response smooth; joints, points and the contact boundaries are
   /// piece boundaries.
   std::vector<int> piece_first_element;
   /// Per node i = 0..N: unstretched arc length s_i [m] and the inertia of a point attachment there.
