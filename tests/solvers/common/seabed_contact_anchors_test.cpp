@@ -7,7 +7,7 @@
 //   arcs, and the frequencies of a U approach those of each arc alone with a fixed end at its
 //   touchdown point (like sqrt(H / k)); shooting crosses a stiff grounded middle (its cost);
 // - two grounded stretches (one from A, one between a buoyed hump and the last arc): fe against
-//   shooting within the estimates;
+//   shooting within the estimates; a damped U: the same, and the exact decay rate out of plane;
 // - a slack line (H = 0): its hanging part is the hanging chain, whose exact frequencies are
 //   J0(2 omega sqrt(l / g')) = 0 (g' = w / M); shooting declines the singular 1/T, and fe, whose
 //   chain converges to them only logarithmically (measured here), declines it too.
@@ -329,6 +329,39 @@ TEST(SeabedContactAnchors, FesChainConvergesOnlyLogarithmicallyOnASlackLine) {
       EXPECT_GT(error[k + 1], 0.1);
       EXPECT_LT(std::log2(error[k] / error[k + 1]), 0.5);  // fe's estimate assumes 2
     }
+  }
+}
+
+// A damped U (normal drag c_n = 50 N s/m/m on the chain; arcs of 150 and 120 m, so that the two
+// arcs' modes stay apart): fe's and shooting's damped modes (the general damped shot crosses the
+// grounded middle) agree within their estimates, and out of plane, where the drag is proportional
+// to the mass M, every decay rate is c_n / (2 M) exactly.
+TEST(SeabedContactAnchors, DampedModesOfAUAgree) {
+  CableProperties chain = kChain;
+  chain.damping.normal_n_s_per_m2 = 50.0;
+  const ContactState u =
+      testing::u_shape(chain, kH, kArc, kGround, Seabed{0.0, 0.0, 1e5, 1e4}, 120.0);
+  const SolveRequest request = modes_request(4, 4);
+  const SolverOutput fe = fe_of(u, request), shooting = shooting_of(u, request);
+  const double proportional = 50.0 / (2.0 * chain.normal_mass_kg_per_m());
+  for (bool inplane : {true, false}) {
+    const ModalResult& a = plane_of(fe, inplane);
+    const ModalResult& b = plane_of(shooting, inplane);
+    ASSERT_EQ(a.modes.size(), 4u) << a.summary.message;
+    ASSERT_EQ(b.modes.size(), 4u) << b.summary.message;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const double difference = relative_error(a.modes[i].omega_rad_s, b.modes[i].omega_rad_s);
+      EXPECT_LT(difference, a.modes[i].relative_error_estimate + b.modes[i].relative_error_estimate)
+          << (inplane ? "in" : "out") << " mode " << i + 1;
+      worst = std::max(worst, difference);
+      if (inplane) continue;
+      for (const ModalResult* r : {&a, &b})
+        EXPECT_LT(relative_error(r->modes[i].decay_rate_1_s, proportional), 1e-9)
+            << "mode " << i + 1;
+    }
+    std::printf("%s-plane damped: fe - shooting at most %.2e in omega_d\n",
+                inplane ? "in" : "out-of", worst);
   }
 }
 
