@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "catena/models/cable.hpp"
 #include "catena/statics/elastic_catenary.hpp"
@@ -26,12 +27,29 @@ inline std::optional<std::string> uniform_cable_only(const Problem& problem, con
          std::to_string(problem.line.points.size()) + " point attachment(s)";
 }
 
+/// The stretches of `statics` resting on the seabed, e.g. "s in [0, 412.3] m and [880, 1010] m"
+/// (empty without contact).
+inline std::string contact_intervals_text(const StaticSolution& statics) {
+  std::string text;
+  const std::vector<ContactInterval> intervals = statics.contact_intervals();
+  for (std::size_t i = 0; i < intervals.size(); ++i) {
+    char interval[96];
+    std::snprintf(interval, sizeof interval, "%s[%.6g, %.6g]",
+                  i == 0 ? "" : (i + 1 == intervals.size() ? " and " : ", "),
+                  intervals[i].s_begin_m, intervals[i].s_end_m);
+    text += interval;
+  }
+  return "s in " + text + " m";
+}
+
 /// The reason a method declines a static state with seabed contact (L_g > 0), or nullopt.
 inline std::optional<std::string> no_seabed_contact(const StaticSolution& statics,
                                                     const char* model) {
   if (!statics.has_contact()) return std::nullopt;
-  return std::string(model) + " has no model of seabed contact; this line rests " +
-         std::to_string(statics.grounded_length_m()) + " m of its length on the seabed";
+  char length[64];
+  std::snprintf(length, sizeof length, "%.6g", statics.grounded_length_m());
+  return std::string(model) + " has no model of seabed contact; this line rests " + length +
+         " m of its length on the seabed (" + contact_intervals_text(statics) + ")";
 }
 
 /// The note fe and shooting put in their summary on a line with seabed contact: the dynamic model
@@ -40,14 +58,13 @@ inline std::optional<std::string> seabed_model_note(const StaticSolution& static
                                                     const std::string& discretisation) {
   if (!statics.has_contact()) return std::nullopt;
   char text[256];
-  std::snprintf(
-      text, sizeof text,
-      "seabed contact: the grounded %.6g m from A move on a Winkler foundation (k_s = %.6g, k_t = "
-      "%.6g "
-      "N/m per unstretched m) with the friction tension of the statics, the contact set fixed; ",
-      statics.grounded_length_m(), statics.seabed().stiffness_n_per_m2,
-      statics.seabed().tangential_stiffness_n_per_m2);
-  return text + discretisation;
+  std::snprintf(text, sizeof text,
+                " move on a Winkler foundation (k_s = %.6g, k_t = %.6g N/m per unstretched m) "
+                "with the static tension of the statics, the contact set fixed; ",
+                statics.seabed().stiffness_n_per_m2,
+                statics.seabed().tangential_stiffness_n_per_m2);
+  return "seabed contact: the grounded stretches " + contact_intervals_text(statics) + text +
+         discretisation;
 }
 
 }  // namespace catena::internal

@@ -51,28 +51,37 @@ struct FeChain {
   Vector normal_damping_n_s_per_m2;
   Vector axial_damping_n_s;
   Vector vertical_offset_n;
-  /// Seabed contact (docs/explanation/methods/fe.md, "Seabed contact"): the first
-  /// `grounded_elements` elements lie on the seabed, horizontal, with tension max(H +
-  /// grounded_tension_offset_n[j], 0) (the continuous friction profile at the element's midpoint,
-  /// shifted with the chain's own H); the others are suspended from the touchdown node, where the
-  /// chain's vertical force is V_A (vertical_offset_n then counts only the weight beyond the
-  /// touchdown point). The foundation stiffnesses k_s (vertical) and k_t (along and across) act on
-  /// the grounded elements [N/m/m].
-  int grounded_elements = 0;
+  /// Seabed contact (docs/explanation/methods/fe.md, "Seabed contact"), in any number of grounded
+  /// stretches anywhere along the line: element j lies on the seabed when grounded[j], horizontal,
+  /// with tension max(H + grounded_tension_offset_n[j], 0) (the continuous tension profile at the
+  /// element's midpoint, shifted with the chain's own H; 0 on suspended elements). The suspended
+  /// elements form stretches, numbered from A (suspended_stretch[j], -1 on grounded elements): a
+  /// stretch's vertical force is stretch_vertical_force_n[k] at its first node plus
+  /// vertical_offset_n[j] (the weight from that node; the weight of a point on a grounded node
+  /// rests on the seabed). The foundation stiffnesses k_s (vertical) and k_t (along and across)
+  /// act on the grounded elements [N/m/m].
+  std::vector<bool> grounded;
+  std::vector<int> suspended_stretch;
+  Vector stretch_vertical_force_n;
   Vector grounded_tension_offset_n;
+  /// The number of grounded elements (0 without contact).
+  int grounded_elements = 0;
+  /// Height of the seabed relative to support a [m] (with contact).
+  double seabed_offset_z_m = 0.0;
   double foundation_vertical_n_per_m2 = 0.0;
   double foundation_tangential_n_per_m2 = 0.0;
   /// The seabed dashpot c_s under the grounded elements, vertical only [N s/m per m].
   double foundation_damping_n_s_per_m2 = 0.0;
   /// The first element of each mesh piece (fe_line_mesh.hpp), ascending from 0: within a piece the
-  /// elements are equal and the response smooth; joints, points and the touchdown point are
+  /// elements are equal and the response smooth; joints, points and the contact boundaries are
   /// piece boundaries.
   std::vector<int> piece_first_element;
   /// Per node i = 0..N: unstretched arc length s_i [m] and the inertia of a point attachment there.
   Vector node_s_m;
   std::vector<FeNodeInertia> node_inertia;
-  /// Support force (H, V_A) of the chain [N]; with seabed contact, H of the suspended part and the
-  /// vertical force just beyond the touchdown node (O(l0^2), the discrete chain's correction).
+  /// Support force (H, V_A) of the chain [N]; with seabed contact, H of the suspended parts and the
+  /// vertical force at the first node of the first suspended stretch (just beyond the touchdown
+  /// node when A rests on the seabed: O(l0^2), the discrete chain's correction).
   double horizontal_force_n = 0.0;
   double vertical_force_a_n = 0.0;
   /// Per element j = 0..N-1: tension T_j [N], unit direction t_j, stretched length l_j [m].
@@ -92,6 +101,7 @@ struct FeChain {
 
   bool in_equilibrium() const { return failure.empty(); }
   bool has_contact() const { return grounded_elements > 0; }
+  bool is_grounded(int j) const { return has_contact() && grounded[static_cast<std::size_t>(j)]; }
   /// Length of unstretched grounded element next to node i on each side that the node carries:
   /// half of each grounded neighbour's l0 [m] (the foundation is lumped like the mass).
   double grounded_share_m(int i) const;

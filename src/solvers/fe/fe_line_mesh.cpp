@@ -39,26 +39,26 @@ std::vector<int> proportional_counts(const std::vector<double>& lengths, int ele
   return counts;
 }
 
-// The grounded part's transverse motion decays away from the touchdown point within
-// delta = sqrt(T / k) (tension over foundation stiffness), far shorter than the line's elements
-// when k is large. The last kTouchdownLayerWidths delta before the touchdown point become a piece
-// of their own with elements of delta / kTouchdownLayerElementsPerWidth
-// (docs/explanation/methods/fe.md, "Seabed contact"): the layer's share of the discretisation error
-// then no longer depends on k.
+// The grounded part's transverse motion decays away from a contact boundary (a touchdown or
+// lift-off point) within delta = sqrt(T / k) (tension over foundation stiffness), far shorter than
+// the line's elements when k is large. The kTouchdownLayerWidths delta next to every contact
+// boundary, on the grounded side, become a piece of their own with elements of delta /
+// kTouchdownLayerElementsPerWidth (docs/explanation/methods/fe.md, "Seabed contact"): the layer's
+// share of the discretisation error then no longer depends on k.
 constexpr double kTouchdownLayerWidths = 10.0;
 constexpr double kTouchdownLayerElementsPerWidth = 32.0;
 
-void refine_touchdown_layer(FeLineMesh& mesh) {
-  std::size_t last = 0;  // the grounded piece that ends at the touchdown point
-  while (last + 1 < mesh.pieces.size() && mesh.pieces[last + 1].grounded) ++last;
-  FeMeshPiece& piece = mesh.pieces[last];
+// Splits the layer off grounded piece `index` at its end (`at_end`, the boundary toward B) or at
+// its start; returns the number of pieces inserted (0 or 1).
+int split_layer(FeLineMesh& mesh, std::size_t index, bool at_end) {
+  FeMeshPiece& piece = mesh.pieces[index];
   const double k =
       std::max(mesh.seabed->stiffness_n_per_m2, mesh.seabed->tangential_stiffness_n_per_m2);
   const double length = piece.section.length_m;
   const double slope = piece.grounded_tension_slope_n_per_m;
-  const double touchdown_tension = piece.grounded_tension_begin_n + slope * length;
-  if (!(k > 0.0) || !(touchdown_tension > 0.0) || !piece.grounded) return;
-  const double delta = std::sqrt(touchdown_tension / k);
+  const double boundary_tension = piece.grounded_tension_begin_n + (at_end ? slope * length : 0.0);
+  if (!(k > 0.0) || !(boundary_tension > 0.0)) return 0;
+  const double delta = std::sqrt(boundary_tension / k);
   const double layer = kTouchdownLayerWidths * delta;
   const int layer_elements =
       static_cast<int>(std::ceil(kTouchdownLayerElementsPerWidth * layer / delta));
@@ -66,17 +66,40 @@ void refine_touchdown_layer(FeLineMesh& mesh) {
     piece.elements =
         std::max(piece.elements,
                  static_cast<int>(std::ceil(kTouchdownLayerElementsPerWidth * length / delta)));
-    return;
+    return 0;
   }
   FeMeshPiece near = piece;
-  near.point_at_start = -1;
   near.section.length_m = layer;
-  near.grounded_tension_begin_n = piece.grounded_tension_begin_n + slope * (length - layer);
   near.elements = layer_elements;
-  piece.section.length_m = length - layer;
-  piece.elements =
+  const int rest_elements =
       std::max(1, static_cast<int>(std::lround(piece.elements * (length - layer) / length)));
-  mesh.pieces.insert(mesh.pieces.begin() + static_cast<std::ptrdiff_t>(last) + 1, near);
+  piece.section.length_m = length - layer;
+  piece.elements = rest_elements;
+  if (at_end) {
+    near.point_at_start = -1;
+    near.grounded_tension_begin_n = piece.grounded_tension_begin_n + slope * (length - layer);
+    mesh.pieces.insert(mesh.pieces.begin() + static_cast<std::ptrdiff_t>(index) + 1, near);
+  } else {
+    piece.point_at_start = -1;
+    piece.grounded_tension_begin_n += slope * layer;
+    mesh.pieces.insert(mesh.pieces.begin() + static_cast<std::ptrdiff_t>(index), near);
+  }
+  return 1;
+}
+
+// The layer at every contact boundary: the end of each grounded stretch followed by a suspended
+// piece, and the start of each one preceded by a suspended piece (a middle stretch has both).
+void refine_touchdown_layers(FeLineMesh& mesh) {
+  for (std::size_t p = 0; p < mesh.pieces.size(); ++p) {
+    if (!mesh.pieces[p].grounded) continue;
+    const std::size_t first = p;
+    while (p + 1 < mesh.pieces.size() && mesh.pieces[p + 1].grounded) ++p;
+    const bool suspended_after = p + 1 < mesh.pieces.size();
+    const bool suspended_before = first > 0;
+    // The end first: the split keeps `first` where it is.
+    if (suspended_after) p += static_cast<std::size_t>(split_layer(mesh, p, true));
+    if (suspended_before) p += static_cast<std::size_t>(split_layer(mesh, first, false));
+  }
 }
 
 }  // namespace
@@ -130,7 +153,8 @@ FeLineMesh make_line_mesh(const Problem& problem, const StaticSolution& statics,
   std::vector<double> lengths;
   for (std::size_t p = 0; p < statics.pieces().size(); ++p) {
     const StaticPiece& source = statics.pieces()[p];
-    // A line lying entirely on the seabed ends with an empty suspended piece.
+    // A line lying entirely on the seabed ends with an empty suspended piece (the statics may
+    // leave other empty pieces at a contact boundary too).
     if (!(source.section.length_m > 0.0)) continue;
     FeMeshPiece piece;
     piece.segment = source.segment;
@@ -145,7 +169,7 @@ FeLineMesh make_line_mesh(const Problem& problem, const StaticSolution& statics,
   }
   const std::vector<int> counts = proportional_counts(lengths, elements);
   for (std::size_t p = 0; p < counts.size(); ++p) mesh.pieces[p].elements = counts[p];
-  if (mesh.seabed) refine_touchdown_layer(mesh);
+  if (mesh.seabed) refine_touchdown_layers(mesh);
   return mesh;
 }
 

@@ -36,7 +36,7 @@ struct FeMeshPiece {
 struct FeLineMesh {
   std::vector<FeMeshPiece> pieces;
   std::vector<PointAttachment> points;
-  /// The seabed when the line rests on it (grounded pieces first), else empty.
+  /// The seabed when the line rests on it (grounded pieces anywhere), else empty.
   std::optional<Seabed> seabed;
 
   /// Total number of elements.
@@ -59,10 +59,12 @@ FeLineMesh uniform_cable_mesh(const CableProperties& cable, int elements);
 bool meshed_as_one_piece(const Problem& problem, const StaticSolution& statics);
 
 /// The mesh of `problem` with about `elements` elements: a uniform cable gets exactly that many; a
-/// line's pieces (and those of a cable resting on the seabed, whose touchdown point and
-/// zero-tension point are cuts of the statics, hence nodes) (statics.pieces()) share them in
+/// line's pieces (and those of a cable resting on the seabed, whose contact boundaries and
+/// zero-tension points are cuts of the statics, hence nodes) (statics.pieces()) share them in
 /// proportion to their lengths (largest remainder), each getting at least one, so the total can
-/// exceed `elements` by the pieces that are too short for their share.
+/// exceed `elements` by the pieces that are too short for their share. With a seabed foundation,
+/// the grounded side of every contact boundary gets a layer piece of its own (fe.md, "Seabed
+/// contact").
 FeLineMesh make_line_mesh(const Problem& problem, const StaticSolution& statics, int elements);
 
 }  // namespace catena::internal

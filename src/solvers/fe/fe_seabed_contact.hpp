@@ -21,4 +21,14 @@ double slack_grounded_length_m(const StaticSolution& statics);
 /// foundation stiffness across it: k_t out of plane, k_s in plane); nullopt when it has.
 std::optional<std::string> seabed_plane_singular(Plane plane, const StaticSolution& statics);
 
+/// Why fe declines a slack line (H = 0 on the seabed: the hanging part leaves the seabed with zero
+/// tension), or nullopt. There the continuous modes of the hanging part and of the grounded
+/// stretch do not meet (zero tension transmits no transverse force, so the hanging chain's foot
+/// moves freely, J0(2 omega sqrt(l M / w)) = 0), while the chain's lift-off node carries the
+/// grounded stretch's foundation share and is held by it: the frequencies converge only
+/// logarithmically in the mesh size (measured on a 50 m hanging chain with k = 1e5 N/m/m: 28 %,
+/// 25 %, 22 %, 19 % from the Bessel frequency at N = 100 ... 800), far below the order fe's
+/// estimate assumes.
+std::optional<std::string> slack_line_declined(const StaticSolution& statics);
+
 }  // namespace catena::internal

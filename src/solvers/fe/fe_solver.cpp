@@ -95,14 +95,16 @@ class FeNumerics final : public SolverNumerics {
                            context.request.outofplane_modes)) {}
 
   std::optional<std::string> not_applicable() const override {
+    if (auto slack = slack_line_declined(context_.statics)) return slack;
     return fe_penalty_not_applicable(plan_);
   }
   void describe(SolverSummary& summary) const override {
     describe_fe_run(plan_, summary);
     if (auto note =
             seabed_model_note(context_.statics,
-                              "lumped on the grounded nodes like the mass; the touchdown point "
-                              "is a node, the layer sqrt(T/k_s) beyond it a piece of its own"))
+                              "lumped on the grounded nodes like the mass; every contact "
+                              "boundary is a node, the layer sqrt(T/k) on its grounded side a "
+                              "piece of its own"))
       summary.notes.push_back(*note);
   }
   // Damped lines: the quadratic eigenproblem (fe_damped_modes.hpp).

@@ -56,6 +56,7 @@ void ShootingModeBuilder::add_cluster(const std::vector<Root>& cluster,
     if (vectors.size() == 2) mass_orthogonalise(shot, vectors);
   }
   std::size_t member = 0;
+  const std::size_t first = modes.size();
   for (const Root& root : cluster) {
     for (int j = 0; j < root.multiplicity && static_cast<int>(modes.size()) < num_modes; ++j) {
       Mode mode;
@@ -68,6 +69,25 @@ void ShootingModeBuilder::add_cluster(const std::vector<Root>& cluster,
       max_residual_ = std::max(max_residual_, root.residual);
       modes.push_back(std::move(mode));
     }
+  }
+  mark_equal_roots(modes, first);
+}
+
+// Roots of a cluster found one by one that came out equal in double precision (two eigenvalues
+// closer than rounding, e.g. the two arcs of a symmetric U whose stiff grounded middle decouples
+// them: the splitting falls like exp(-2 L_g sqrt(k / T))) are one multiple root: the count rose by
+// one across each root's bracket, so it rose by their number across the union of these brackets,
+// all around one double. Marked as proved multiple (Mode::multiplicity), like a bracket whose
+// count rose by two.
+void ShootingModeBuilder::mark_equal_roots(std::vector<Mode>& modes, std::size_t first) {
+  for (std::size_t i = first; i < modes.size();) {
+    std::size_t end = i + 1;
+    while (end < modes.size() && modes[end].omega_rad_s == modes[i].omega_rad_s) ++end;
+    const int equal = static_cast<int>(end - i);
+    if (equal > 1)
+      for (std::size_t j = i; j < end; ++j)
+        modes[j].multiplicity = std::max(modes[j].multiplicity, equal);
+    i = end;
   }
 }
 

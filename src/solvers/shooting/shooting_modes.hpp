@@ -42,6 +42,8 @@ class ShootingModeBuilder {
   /// Appends the modes of one cluster to `modes`, numbered on from modes.size() + 1 and at most
   /// `num_modes` in all. Throws ShootingFailure when the shape shot fails.
   void add_cluster(const std::vector<Root>& cluster, int num_modes, std::vector<Mode>& modes);
+  /// Marks the modes from `first` on that share one frequency as a proved multiple root.
+  static void mark_equal_roots(std::vector<Mode>& modes, std::size_t first);
 
   /// Largest error estimate and residual over the modes added [-].
   double max_error() const { return max_error_; }

@@ -133,22 +133,67 @@ std::string resolution(const ShootingSolverOptions& options) {
                      options.effective_root_tolerance());
 }
 
-// A plane whose frequencies could not be found: the integrator failed (the reason says where).
-void mark_failed(Plane plane, const ShootingFailure& failure, SolverSummary& summary) {
-  summary.termination = Termination::NumericalFailure;
-  summary.message = fmt::format("Numerical failure ({}): {}", to_string(plane), failure.what());
+// What a failure on a grounded stretch away from A likely means: the general shot crosses it
+// (the grounded run takes only the pieces from A), and its steps grow with the e-folds
+// L_g sqrt(k / T) of the foundation's growing solution (docs/explanation/methods/shooting.md,
+// "The grounded run"). Empty when no such stretch has many e-folds.
+std::string grounded_middle_hint(const ShootingCoefficients& k) {
+  std::size_t leading = 0;
+  while (leading < k.pieces.size() && k.pieces[leading].grounded) ++leading;
+  double efolds = 0.0, s_begin = 0.0, s_end = 0.0;
+  for (std::size_t j = leading; j < k.pieces.size(); ++j) {
+    const ShootingPiece& p = k.pieces[j];
+    if (!p.grounded || !(p.min_tension(k.H) > 0.0)) continue;
+    const double stiffness = std::max(p.foundation_normal, p.foundation_tangential);
+    const double e = (p.s_end - p.s_begin) * std::sqrt(stiffness / p.min_tension(k.H));
+    if (e > efolds) efolds = e, s_begin = p.s_begin, s_end = p.s_end;
+  }
+  if (!(efolds > 100.0)) return "";
+  return fmt::format(
+      "; the general shot crosses the grounded stretch s in [{:.6g}, {:.6g}] m away from A, where "
+      "the foundation's solution grows by {:.0f} e-folds (L_g sqrt(k / T)): the grounded run, "
+      "whose cost does not grow with k, takes only the stretch from A",
+      s_begin, s_end, efolds);
 }
 
-// Friction that brings the static tension on the seabed to zero leaves that stretch with no
-// transverse stiffness but the foundation's: the equations divide by T there, in both planes.
+// A plane whose frequencies could not be found: the integrator failed (the reason says where).
+void mark_failed(Plane plane,
+                 const ShootingFailure& failure,
+                 const ShootingCoefficients& k,
+                 SolverSummary& summary) {
+  summary.termination = Termination::NumericalFailure;
+  summary.message = fmt::format("Numerical failure ({}): {}{}", to_string(plane), failure.what(),
+                                grounded_middle_hint(k));
+}
+
+// A grounded stretch without static tension (friction that takes it all on the stretch from an
+// anchor on the seabed, or a slack line, H = 0, whose grounded part carries none and whose hanging
+// part leaves the seabed with T = 0) has no transverse stiffness but the foundation's: the shot's
+// coefficient 1/T is infinite there, in both planes, and the count of conjugate points is not
+// defined. Declined, wherever along the line the stretch lies.
 std::optional<std::string> slack_on_seabed(const StaticSolution& statics) {
-  if (!statics.has_contact() || statics.anchor_horizontal_force_n() > 0.0) return std::nullopt;
+  if (!statics.has_contact()) return std::nullopt;
+  const double H = statics.horizontal_force_n();
+  double slack = 0.0;
+  for (const StaticPiece& piece : statics.pieces()) {
+    if (!piece.grounded) continue;
+    const double middle = piece.s_begin_m + 0.5 * piece.section.length_m;
+    if (!(statics.tension_n(middle) > 0.0)) slack += piece.section.length_m;
+  }
+  if (!(slack > 0.0)) return std::nullopt;
+  if (!(H > 0.0)) {
+    return fmt::format(
+        "a slack line (H = 0): {:.6g} m rest on the seabed without static tension and the hanging "
+        "part leaves it with T = 0; the transverse equations divide by T, so the shot is singular "
+        "there in both planes (fe solves a plane whose seabed stiffness holds the grounded part)",
+        slack);
+  }
   return fmt::format(
-      "the seabed friction (seabed.friction = {:.6g}) brings the static tension on the grounded "
-      "part to zero before the anchor (H = {:.6g} N < C_B w L_g): that stretch has no transverse "
-      "stiffness but the foundation's and the transverse equations of both planes are singular "
-      "there; lower seabed.friction below H / (w L_g) or shorten the grounded length",
-      statics.seabed().friction, statics.horizontal_force_n());
+      "the seabed friction (seabed.friction = {:.6g}) brings the static tension on {:.6g} m of the "
+      "grounded part to zero (H = {:.6g} N < C_B w L_g): that stretch has no transverse stiffness "
+      "but the foundation's and the transverse equations of both planes are singular there; lower "
+      "seabed.friction below H / (w L_g) or shorten the grounded length",
+      statics.seabed().friction, slack, H);
 }
 
 // The numerics of the shooting solver for one problem.
@@ -260,8 +305,7 @@ void ShootingNumerics::describe(SolverSummary& summary) const {
       "exact linearisation about the closed-form static catenary; A^{-1} used, so EA = inf is "
       "exact (no penalty); counting by the conjugate points of the principal solution (phase of "
       "det(Phi + iF), Morse index / Sturm)");
-  const char* how =
-      "integrated piece by piece, matched to the suspended part at the touchdown point";
+  const char* how = "integrated piece by piece, continuous across every contact boundary";
   if (auto note = seabed_model_note(context_.statics, how)) summary.notes.push_back(*note);
 }
 
@@ -286,7 +330,7 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
   try {
     integrator.emplace(integration_plane, k_, integrator_settings(options_));
   } catch (const ShootingFailure& failure) {
-    mark_failed(plane, failure, summary);
+    mark_failed(plane, failure, k_, summary);
     return result;
   }
   // String estimate of the (n+1)-th frequency, nudged off the exact string values.
@@ -308,7 +352,7 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
     const std::vector<Root> roots = finder.find(count, summary.warnings, &meter);
     add_modes(*integrator, roots, plane, count, result);
   } catch (const ShootingFailure& failure) {
-    mark_failed(plane, failure, summary);
+    mark_failed(plane, failure, k_, summary);
     summary.iterations = finder.shots();
     summary.operations = integrator->total_rhs_evaluations();
     return result;
@@ -333,7 +377,7 @@ ModalResult ShootingNumerics::damped_modes(Plane plane, int count) {
     result = damped_plane_modes(k_, context_, plane, count, settings);
   } catch (const ShootingFailure& failure) {
     result = ModalResult();
-    mark_failed(plane, failure, result.summary);
+    mark_failed(plane, failure, k_, result.summary);
   }
   result.summary.resolution = resolution(options_);
   result.summary.accuracy_target = accuracy_target(options_);

@@ -9,11 +9,15 @@
 // - the 40 %-grounded line: observed order 2 of the unextrapolated frequencies in the mesh size,
 //   the mode count proved by inertia, convergence in k_s;
 // - touchdown exactly at A reproduces the line without a seabed;
-// - a slack grounded stretch (friction) without foundation stiffness across it is declined.
+// - a slack grounded stretch (friction) without foundation stiffness across it is declined;
+// - a U (both ends above the seabed, a grounded middle; tests/solvers/common/contact_states.hpp):
+//   the discrete statics converges to the continuous one at O(l0^2) with the middle stretch's
+//   nodes on the seabed, and both of its contact boundaries get a layer piece.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <vector>
 
@@ -21,6 +25,7 @@
 #include "catena/solvers/fe_solver.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/seabed_statics.hpp"
+#include "solvers/common/contact_states.hpp"
 #include "solvers/common/solver_test_support.hpp"
 #include "solvers/fe/fe_chain_statics.hpp"
 #include "solvers/fe/fe_levels.hpp"
@@ -358,6 +363,69 @@ TEST(FeSeabed, SlackGroundedStretchWithoutFoundationIsDeclined) {
   const SolverOutput soft = solve_forty(3.0, 0.0, 400);
   EXPECT_EQ(soft.inplane->summary.termination, Termination::NotApplicable);
   EXPECT_NE(soft.inplane->summary.message.find("[seabed].stiffness > 0"), std::string::npos);
+}
+
+// A U of chain (arcs of 150 m with H = 200 kN, 100 m grounded between them, k_s = 1e5).
+testing::ContactState u_shape_chain(double k_s = 1e5) {
+  return testing::u_shape({0.0, 1000.0, 5e8, 120.0, 20.0}, 2e5, 150.0, 100.0,
+                          Seabed{0.0, 0.0, k_s, 1e4});
+}
+
+// Both ends of the grounded middle are contact boundaries: each gets a layer of 10 sqrt(H / k)
+// on the grounded side (k = max(k_s, k_t)) with 320 elements.
+TEST(FeSeabed, TheGroundedMiddleOfAUHasALayerAtBothBoundaries) {
+  const testing::ContactState u = u_shape_chain();
+  const internal::FeLineMesh mesh = internal::make_line_mesh(u.problem, u.statics, 400);
+  ASSERT_EQ(mesh.pieces.size(), 5u);
+  const double layer = 10.0 * std::sqrt(2e5 / 1e5);
+  for (std::size_t p : {1u, 3u}) {
+    EXPECT_TRUE(mesh.pieces[p].grounded);
+    EXPECT_NEAR(mesh.pieces[p].section.length_m, layer, 1e-12);
+    EXPECT_EQ(mesh.pieces[p].elements, 320);
+  }
+  EXPECT_TRUE(mesh.pieces[2].grounded);
+  EXPECT_NEAR(mesh.pieces[2].section.length_m, 100.0 - 2.0 * layer, 1e-12);
+  EXPECT_FALSE(mesh.pieces[0].grounded || mesh.pieces[4].grounded);
+}
+
+// The U's discrete statics: H and the two stretches' vertical forces (V_A at A, 0 where the
+// second arc leaves the seabed) converge to the continuous ones at O(l0^2); the grounded nodes
+// lie on the seabed (the condition on the middle stretch's first node) and the tension there is
+// the chain's H.
+TEST(FeSeabed, DiscreteStaticsOfAUConvergesAtSecondOrder) {
+  const testing::ContactState u = u_shape_chain();
+  const double V_A = u.statics.vertical_force_a_n();
+  std::vector<double> h_error, a_error, v_error;
+  for (int N : {100, 200, 400}) {
+    const internal::FeLineMesh mesh = internal::make_line_mesh(u.problem, u.statics, N);
+    const internal::FeChain chain = internal::solve_chain_statics(u.problem, u.statics, mesh, 5e8);
+    ASSERT_TRUE(chain.in_equilibrium()) << chain.failure;
+    ASSERT_EQ(chain.stretch_vertical_force_n.size(), 2);
+    for (int i = 0; i <= chain.elements; ++i) {
+      const bool on_seabed =
+          (i < chain.elements && chain.is_grounded(i)) || (i > 0 && chain.is_grounded(i - 1));
+      if (on_seabed) {
+        EXPECT_NEAR(chain.node_offset_m[static_cast<std::size_t>(i)].y(), chain.seabed_offset_z_m,
+                    1e-9)
+            << "node " << i;
+      }
+    }
+    for (int j = 0; j < chain.elements; ++j) {
+      if (chain.is_grounded(j)) {
+        EXPECT_EQ(chain.tension_n[j], chain.horizontal_force_n);
+      }
+    }
+    h_error.push_back(std::abs(chain.horizontal_force_n - u.statics.horizontal_force_n()));
+    a_error.push_back(std::abs(chain.stretch_vertical_force_n[0] - V_A));
+    v_error.push_back(std::abs(chain.stretch_vertical_force_n[1]));
+    std::printf("N = %d: H - H_continuous %.3e N, V_A error %.3e N, lift-off V %.3e N\n",
+                chain.elements, h_error.back(), a_error.back(), v_error.back());
+  }
+  for (std::size_t k = 0; k + 1 < h_error.size(); ++k) {
+    EXPECT_NEAR(std::log2(h_error[k] / h_error[k + 1]), 2.0, 0.1);
+    EXPECT_NEAR(std::log2(a_error[k] / a_error[k + 1]), 2.0, 0.1);
+    EXPECT_NEAR(std::log2(v_error[k] / v_error[k + 1]), 2.0, 0.1);
+  }
 }
 
 }  // namespace
