@@ -8,7 +8,7 @@
 import os
 import pathlib
 from collections.abc import Sequence
-from typing import Any, Literal, Optional, Union
+from typing import Any, List, Literal, Optional, Tuple, Union
 
 import numpy
 import numpy.typing
@@ -271,6 +271,12 @@ class Statics:
     def has_contact(self) -> bool: ...
     @property
     def grounded_length_m(self) -> float: ...
+    @property
+    def contact_intervals(self) -> List[Tuple[float, float]]: ...
+    @property
+    def slack_length_m(self) -> float: ...
+    @property
+    def anchor_grounded(self) -> bool: ...
     @property
     def anchor_horizontal_force_n(self) -> float: ...
     @property

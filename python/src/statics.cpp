@@ -77,10 +77,28 @@ void bind_static_solution(py::module_& module) {
       .def_property_readonly("line", &S::line, "the line (one segment for a uniform cable)")
       .def_property_readonly("has_contact", &S::has_contact,
                              "True when a grounded length rests on the seabed")
-      .def_property_readonly("grounded_length_m", &S::grounded_length_m,
-                             "unstretched grounded length L_g from end A [m]; 0 without contact")
+      .def_property_readonly(
+          "grounded_length_m", &S::grounded_length_m,
+          "total unstretched length resting on the seabed [m] (all contact intervals); 0 without "
+          "contact")
+      .def_property_readonly(
+          "contact_intervals",
+          [](const S& s) {
+            std::vector<std::pair<double, double>> intervals;
+            for (const ContactInterval& c : s.contact_intervals())
+              intervals.emplace_back(c.s_begin_m, c.s_end_m);
+            return intervals;
+          },
+          "stretches resting on the seabed, [(s_begin_m, s_end_m)] in order of s (unstretched arc "
+          "lengths [m]); empty without contact")
+      .def_property_readonly("slack_length_m", &S::slack_length_m,
+                             "unstretched length of a slack line (H = 0) lying in a heap on the "
+                             "seabed beyond the span [m]; 0 otherwise")
+      .def_property_readonly("anchor_grounded", &S::anchor_grounded,
+                             "True when end A rests on the seabed")
       .def_property_readonly("anchor_horizontal_force_n", &S::anchor_horizontal_force_n,
-                             "horizontal force on the anchor, H less the seabed friction [N]")
+                             "horizontal force on end A: with A on the seabed, H less the seabed "
+                             "friction; H otherwise [N]")
       .def_property_readonly("lowest_point_s_m", &S::lowest_point_s_m,
                              "arc length of the lowest point [m]")
       .def(

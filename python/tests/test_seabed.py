@@ -54,6 +54,29 @@ def test_bad_seabed_is_a_value_error_naming_the_field(kwargs, field):
         catena.Seabed(**kwargs)
 
 
-def test_an_anchor_off_the_seabed_is_refused():
+def test_an_anchor_below_the_seabed_is_refused():
     with pytest.raises(ValueError, match=r"seabed\.z"):
-        catena.Problem(catena.Cable(**CHAIN), b_m=B, a_m=(0.0, -190.0), seabed=catena.Seabed(-200.0))
+        catena.Problem(catena.Cable(**CHAIN), b_m=B, a_m=(0.0, -210.0), seabed=catena.Seabed(-200.0))
+
+
+def test_a_u_shape_has_one_contact_interval_between_its_hanging_ends():
+    # Both ends 20 m below the surface, 1200 m of chain over 800 m in 300 m of water: each end hangs
+    # to the seabed and the middle lies on it (docs/explanation/physics.md, "Seabed contact").
+    cable = catena.Cable(**dict(CHAIN, length_m=1200.0))
+    problem = catena.Problem(cable, b_m=(800.0, -20.0), a_m=(0.0, -20.0), seabed=catena.Seabed(-300.0))
+    statics = catena.solve_statics(problem)
+    assert not statics.anchor_grounded and statics.slack_length_m == 0.0
+    [(begin, end)] = statics.contact_intervals
+    assert begin == pytest.approx(1200.0 - end, rel=1e-12)
+    assert statics.grounded_length_m == pytest.approx(end - begin, rel=1e-14)
+    assert statics.position_m([0.5 * (begin + end)])[0][1] == pytest.approx(-300.0, abs=1e-9)
+
+
+def test_a_slack_line_has_no_horizontal_force_and_a_heap():
+    # 890 m of chain from an anchor 400 m away in 300 m of water (MoorPy tests/case5.dat).
+    cable = catena.Cable(**dict(CHAIN, length_m=890.0))
+    problem = catena.Problem(cable, b_m=(0.0, 0.0), a_m=(-400.0, -300.0), seabed=catena.Seabed(-300.0))
+    statics = catena.solve_statics(problem)
+    assert statics.horizontal_force_n == 0.0 and statics.anchor_grounded
+    [(begin, end)] = statics.contact_intervals
+    assert statics.slack_length_m == pytest.approx(end - begin - 400.0, rel=1e-12)

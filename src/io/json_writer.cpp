@@ -266,17 +266,37 @@ json node_json(const StaticSolution& statics,
           {key::tension_after_n, std::hypot(H, after)}};
 }
 
-// The seabed block (docs/reference/json-layout.md, "Seabed"): contact, grounded length, touchdown
-// point, the forces on the anchor (A) and the fairlead (B).
+// The stretches resting on the seabed: unstretched arc lengths and x of their ends.
+json contact_intervals_json(const StaticSolution& statics) {
+  json list = json::array();
+  for (const ContactInterval& interval : statics.contact_intervals()) {
+    list.push_back({{key::s_begin_m, interval.s_begin_m},
+                    {key::s_end_m, interval.s_end_m},
+                    {key::x_begin_m, statics.position_m(interval.s_begin_m).x()},
+                    {key::x_end_m, statics.position_m(interval.s_end_m).x()}});
+  }
+  return list;
+}
+
+// The seabed block (docs/reference/json-layout.md, "Seabed"): contact, the contact intervals,
+// grounded and slack lengths, the first touchdown point from A, the forces on the ends A and B.
 json seabed_json(const StaticSolution& statics) {
   const Seabed& seabed = statics.seabed();
   const double L = statics.cable().length_m;
-  const double Lg = statics.grounded_length_m();
-  const Vec2 touchdown = statics.position_m(Lg);
+  const std::vector<ContactInterval> intervals = statics.contact_intervals();
+  // The first touchdown from A: where the line from A reaches the seabed, or with A on the
+  // seabed where it leaves it (the end of the stretch from A); s = 0 without contact.
+  double touchdown_s = 0.0;
+  if (!intervals.empty()) {
+    touchdown_s =
+        statics.anchor_grounded() ? intervals.front().s_end_m : intervals.front().s_begin_m;
+  }
+  const Vec2 touchdown = statics.position_m(touchdown_s);
   const char* model =
       statics.has_contact()
-          ? "flat seabed: grounded length straight on it from the anchor, tangential touchdown, "
-            "Coulomb friction C_B w per unit length (MAP++/MoorPy convention)"
+          ? "flat seabed: grounded stretches straight on it, tangential touchdown and lift-off; "
+            "Coulomb friction C_B w per unit length on the stretch from an anchor on the seabed "
+            "(MAP++/MoorPy convention), tension H on the others"
           : "flat seabed: no contact (the line stays on or above the seabed)";
   return {{key::z_m, seabed.z_m},
           {key::friction, seabed.friction},
@@ -284,8 +304,11 @@ json seabed_json(const StaticSolution& statics) {
           {key::tangential_stiffness_n_per_m2, seabed.tangential_stiffness_n_per_m2},
           {key::contact, statics.has_contact()},
           {key::contact_model, model},
-          {key::grounded_length_m, Lg},
-          {key::touchdown, {{key::s_m, Lg}, {key::x_m, touchdown.x()}, {key::z_m, touchdown.y()}}},
+          {key::contact_intervals, contact_intervals_json(statics)},
+          {key::grounded_length_m, statics.grounded_length_m()},
+          {key::slack_length_m, statics.slack_length_m()},
+          {key::touchdown,
+           {{key::s_m, touchdown_s}, {key::x_m, touchdown.x()}, {key::z_m, touchdown.y()}}},
           {key::anchor_horizontal_force_n, statics.anchor_horizontal_force_n()},
           {key::anchor_vertical_force_n, statics.vertical_force_a_n()},
           {key::fairlead_horizontal_force_n, statics.horizontal_force_n()},

@@ -247,8 +247,8 @@ Problem read_cable_form(TableReader& root, const std::string& origin) {
   return read_gale(root, origin);
 }
 
-// [seabed] (docs/reference/scene-format.md): the flat seabed under a [cable] or [line]; end A must
-// lie on it.
+// [seabed] (docs/reference/scene-format.md): the flat seabed under a [cable] or [line]; no end may
+// be below it.
 void read_seabed(TableReader& root, Problem& problem, const std::string& origin) {
   TableReader table = root.subtable("seabed");
   Seabed seabed;

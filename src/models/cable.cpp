@@ -175,10 +175,10 @@ void Problem::validate_seabed() const {
   seabed->validate();
   const double z = seabed->z_m;
   const double tolerance = 1e-9 * std::max(1.0, std::abs(z));
-  if (!(std::abs(supports.a_m.y() - z) <= tolerance)) {
-    throw InvalidInput(fmt::format(
-        "Invalid seabed.z = {}: end A (the anchor) must lie on the seabed; a.z = {} [m]", z,
-        supports.a_m.y()));
+  if (supports.a_m.y() < z - tolerance) {
+    throw InvalidInput(
+        fmt::format("Invalid seabed.z = {}: end A must not be below the seabed; a.z = {} [m]", z,
+                    supports.a_m.y()));
   }
   if (supports.b_m.y() < z - tolerance) {
     throw InvalidInput(

@@ -216,6 +216,13 @@ std::vector<ContactInterval> StaticSolution::contact_intervals() const {
   return intervals;
 }
 
+double StaticSolution::slack_length_m() const {
+  double length = 0.0;
+  for (const StaticPiece& piece : pieces_)
+    if (piece.slack_heap) length += piece.section.length_m;
+  return length;
+}
+
 double StaticSolution::anchor_horizontal_force_n() const {
   if (!anchor_grounded()) return H_;
   return internal::grounded_tension(pieces_.front(), 0.0);
@@ -284,11 +291,22 @@ double StaticSolution::strain(double s) const {
   return tension_n(s) * inverse_stiffness(cable_);
 }
 
-double StaticSolution::angle_rad(double s) const { return std::atan2(vertical_force_n(s), H_); }
+double StaticSolution::angle_rad(double s) const {
+  const double V = vertical_force_n(s);
+  if (std::hypot(H_, V) > 0.0) return std::atan2(V, H_);
+  const Vec2 t = tangent(s);
+  return std::atan2(t.y(), t.x());
+}
 
 Vec2 StaticSolution::tangent(double s) const {
   if (has_contact() && piece_at(s).grounded) return {1.0, 0.0};
-  const double T = tension_n(s);
+  const double T = std::hypot(H_, vertical_force_n(s));
+  if (!(T > 0.0)) {
+    // Zero tension on a suspended piece: only at V = 0 on a vertical part (H = 0), which leaves
+    // upward when it weighs (V grows along it) and downward when it floats.
+    const double W = is_line() ? piece_at(s).section.weight_n_per_m : cable_.weight_n_per_m;
+    return {0.0, W < 0.0 ? -1.0 : 1.0};
+  }
   return {H_ / T, vertical_force_n(s) / T};
 }
 
@@ -301,6 +319,7 @@ Vec2 StaticSolution::offset_m(double s) const {
   if (!is_line()) return offset(cable_, H_, V_A_, s);
   const StaticPiece& piece = piece_at(s);
   if (piece.grounded) {
+    if (piece.slack_heap) return piece.offset_begin_m;
     const double ds = s - piece.s_begin_m;
     return piece.offset_begin_m + Vec2(internal::grounded_stretched_increment(piece, ds), 0.0);
   }

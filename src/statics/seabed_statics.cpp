@@ -8,25 +8,16 @@
 #include <limits>
 
 #include "catena/core/error.hpp"
+#include "statics/internal/bisection.hpp"
+#include "statics/internal/contact_arcs.hpp"
+#include "statics/internal/general_contact.hpp"
 #include "statics/internal/line_pieces.hpp"
 #include "statics/internal/seabed_pieces.hpp"
 
 namespace catena {
 namespace {
 
-// Bisection of a sign change on [lo, hi] down to adjacent doubles (or 1e-17 of the bracket, so
-// that a root at 0 does not walk through the subnormals): `below(x)` says whether x is on the
-// side of lo. Returns the last x on the side of lo.
-template <class Below>
-double bisect(double lo, double hi, Below below) {
-  const double floor = 1e-17 * std::abs(hi - lo);
-  for (int i = 0; i < 200 && std::abs(hi - lo) > floor; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    if (mid <= std::min(lo, hi) || mid >= std::max(lo, hi)) break;
-    (below(mid) ? lo : hi) = mid;
-  }
-  return lo;
-}
+using internal::bisect;
 
 // The contact equations of one problem: the end offset of the line as a function of (H, L_g).
 struct ContactSystem {
@@ -74,15 +65,7 @@ double contact_horizontal_force(const ContactSystem& system) {
   for (int i = 0; i < 200 && !(system.reach_residual(hi) > 0.0); ++i) hi *= 2.0;
   double lo = hi;
   for (int i = 0; i < 120 && system.reach_residual(lo) >= 0.0; ++i) lo *= 0.5;
-  if (system.reach_residual(lo) >= 0.0) {
-    throw InvalidInput(fmt::format(
-        "No static equilibrium with the seabed: the line (L = {:.10g} m) is longer than the "
-        "horizontal distance "
-        "{:.10g} m plus the height {:.10g} m of the fairlead above the seabed, so its grounded "
-        "part would pass "
-        "the fairlead (it would fold on the seabed); shorten the line or move the ends apart",
-        system.line.length_m(), system.chord_m.x(), system.chord_m.y() - system.seabed_offset_z_m));
-  }
+  if (system.reach_residual(lo) >= 0.0) return -1.0;
   return bisect(lo, hi, [&](double H) { return system.reach_residual(H) < 0.0; });
 }
 
@@ -110,16 +93,20 @@ void check_supported(const StaticSolution& solution, const Line& line, double to
   const double lowest = solution.position_m(solution.lowest_point_s_m()).y();
   if (lowest < solution.seabed().z_m - tolerance) {
     throw InvalidInput(
-        fmt::format("seabed: the suspended part goes below the seabed again (lowest point {:.6g} m "
-                    "below it at s = {:.6g} m): "
-                    "lift-off after touchdown and a second contact interval are not supported",
+        fmt::format("seabed: the suspended line would pass {:.6g} m below the seabed at s = "
+                    "{:.6g} m: a configuration outside the model of tangential contact (not "
+                    "supported)",
                     solution.seabed().z_m - lowest, solution.lowest_point_s_m()));
   }
 }
 
-// The no-seabed solution is the answer when it stays on or above the seabed with V_A >= 0.
-bool stays_off_seabed(const StaticSolution& free, const Seabed& seabed, double tolerance) {
-  if (!free.converged || free.vertical_force_a_n() < 0.0) return false;
+// The no-seabed solution is the answer when it stays on or above the seabed (leaving an anchor
+// that lies on the seabed upward, V_A >= 0).
+bool stays_off_seabed(const StaticSolution& free,
+                      const Seabed& seabed,
+                      double tolerance,
+                      bool anchor_on_seabed) {
+  if (!free.converged || (anchor_on_seabed && free.vertical_force_a_n() < 0.0)) return false;
   return free.position_m(free.lowest_point_s_m()).y() >= seabed.z_m - tolerance;
 }
 
@@ -129,6 +116,7 @@ StaticSolution solve_contact(const Problem& problem, const StaticsOptions& optio
   const Vec2 chord = problem.supports.chord_m();
   const ContactSystem system{line, seabed, seabed.z_m - problem.supports.a_m.y(), chord};
   const double H = contact_horizontal_force(system);
+  if (H < 0.0) return internal::solve_general_contact(problem, options);
   const double grounded_length = system.grounded_length_for(H);
   StaticSolution solution(line, problem.supports.a_m, seabed, H, std::max(grounded_length, 0.0));
   const double scale = std::max(line.length_m(), chord.norm());
@@ -159,19 +147,31 @@ StaticSolution solve_seabed_statics(const Problem& problem, const StaticsOptions
   if (!problem.seabed) return solve_statics(free, options);
   const Seabed& seabed = *problem.seabed;
   const double tolerance = 1e-9 * std::max(1.0, std::abs(seabed.z_m));
-  if (problem.supports.b_m.y() <= seabed.z_m + tolerance) {
+  const bool anchor_on_seabed = std::abs(problem.supports.a_m.y() - seabed.z_m) <= tolerance;
+  if (problem.supports.b_m.y() <= seabed.z_m + tolerance && anchor_on_seabed) {
     throw InvalidInput(
         fmt::format("Invalid seabed.z = {}: end B (the fairlead) lies on the seabed (b.z = {}): a "
-                    "line entirely on the seabed "
-                    "is not supported; the fairlead must be above the seabed",
+                    "line entirely on the seabed is not supported; the fairlead must be above the "
+                    "seabed",
+                    seabed.z_m, problem.supports.b_m.y()));
+  }
+  if (problem.supports.b_m.y() <= seabed.z_m + tolerance) {
+    throw InvalidInput(
+        fmt::format("Invalid seabed.z = {}: end B lies on the seabed (b.z = {}) with end A above "
+                    "it: not supported; mirror the line so that s runs from the end on the seabed",
                     seabed.z_m, problem.supports.b_m.y()));
   }
   StaticSolution solution = solve_statics(free, options);
-  if (stays_off_seabed(solution, seabed, tolerance)) {
+  if (stays_off_seabed(solution, seabed, tolerance, anchor_on_seabed)) {
     solution.set_seabed_without_contact(seabed);
     return solution;
   }
-  return solve_contact(problem, options);
+  // One contact interval from the anchor (no buoyancy to lift an arc): the two nested bisections
+  // of the original model, bit for bit; everything else in general contact.
+  if (anchor_on_seabed && internal::buoyant_stretches(problem.as_line()).empty()) {
+    return solve_contact(problem, options);
+  }
+  return internal::solve_general_contact(problem, options);
 }
 
 }  // namespace catena

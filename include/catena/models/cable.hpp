@@ -112,9 +112,9 @@ struct Problem {
   /// determined by the chord only to about (rounding / static strain), e.g. 1e-2 relative for
   /// eps = 1e-6, so a tension-specified problem must not be re-solved from its geometry.
   std::optional<EndForces> prescribed_forces;
-  /// A flat seabed under the line (docs/explanation/physics.md, "Seabed contact"): end A lies on
-  /// it, end B above it. The statics then lays a grounded length from A on it where the line would
-  /// go below it (catena/statics/seabed_statics.hpp).
+  /// A flat seabed under the line (docs/explanation/physics.md, "Seabed contact"): end A on or
+  /// above it, end B above it. The statics then lays the line on it where it would go below it
+  /// (catena/statics/seabed_statics.hpp).
   std::optional<Seabed> seabed;
   /// The water (Morison drag's density).
   Environment environment{};
@@ -135,8 +135,8 @@ struct Problem {
   double length_m() const { return is_uniform() ? cable.length_m : line.length_m(); }
 
   /// Validates the cable (or the line) and the supports (not reachability: statics checks that).
-  /// A general line cannot have prescribed forces. With a seabed: the seabed is valid, end A lies
-  /// on it (within 1e-9 max(1, |z|)), end B is not below it, and the forces are not prescribed.
+  /// A general line cannot have prescribed forces. With a seabed: the seabed is valid, neither end
+  /// is below it (within 1e-9 max(1, |z|)), and the forces are not prescribed.
   void validate() const;
 
  private:

@@ -7,7 +7,7 @@
 
 namespace catena {
 
-/// The seabed at height z (x horizontal, z up), on which end A (the anchor) lies.
+/// The seabed at height z (x horizontal, z up), under the line (end A on it or above it).
 struct Seabed {
   /// Height of the seabed [m]. Finite.
   double z_m = 0.0;

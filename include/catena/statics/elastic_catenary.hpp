@@ -63,6 +63,11 @@ struct StaticPiece {
   /// friction is not mobilised and the tension is the suspended parts' H
   /// (docs/explanation/physics.md, "Seabed contact"). Unused (0) on suspended pieces.
   double grounded_tension_slope_n_per_m = 0.0;
+  /// Grounded pieces of a slack line (H = 0, docs/explanation/physics.md, "Seabed contact"): the
+  /// part of the grounded length that does not fit between the ends' feet. It lies in a heap at
+  /// its start, whose shape on the seabed the statics does not define: its offset stays at
+  /// offset_begin_m along it, its stretched length grows as ds (zero tension). False elsewhere.
+  bool slack_heap = false;
 };
 
 /// One stretch of a line resting on the seabed: unstretched arc lengths [m], s_begin < s_end.
@@ -115,6 +120,9 @@ class StaticSolution {
   /// The stretches resting on the seabed, in order of s (merged across piece cuts); empty without
   /// contact.
   std::vector<ContactInterval> contact_intervals() const;
+  /// Unstretched length lying in a heap on the seabed [m]: the part of a slack line's (H = 0)
+  /// grounded length that does not fit in the span (StaticPiece::slack_heap); 0 otherwise.
+  double slack_length_m() const;
   /// True when s lies on a stretch resting on the seabed (at a cut: the piece toward B).
   bool grounded_at(double s) const { return is_line() && piece_at(s).grounded; }
   /// True when end A rests on the seabed (the first piece is grounded).
@@ -151,9 +159,12 @@ class StaticSolution {
   double tension_n(double s) const;
   /// e(s) = T/EA (0 when inextensible) [-].
   double strain(double s) const;
-  /// Angle of the tangent above the horizontal, atan2(V, H) [rad].
+  /// Angle of the tangent above the horizontal [rad]: atan2(V, H), that of tangent() where the
+  /// tension is zero.
   double angle_rad(double s) const;
-  /// Unit tangent t = (H, V)/T.
+  /// Unit tangent t = (H, V)/T; (1, 0) on the seabed. Where the tension is zero on a suspended
+  /// piece (the foot of a slack line's vertical part, H = V = 0): the direction the piece leaves
+  /// in, (0, +-1) by the sign of its weight.
   Vec2 tangent(double s) const;
   /// Unit in-plane normal n = (-V, H)/T (t rotated +90 degrees).
   Vec2 normal(double s) const;

@@ -110,12 +110,12 @@ double grounded_stretched_increment(const StaticPiece& piece, double ds) {
   return ds + inverse_stiffness(piece.section) * std::max(integral, 0.0);
 }
 
-std::vector<StaticPiece> build_seabed_pieces(const Line& line,
-                                             double friction,
-                                             double seabed_offset_z_m,
-                                             double H,
-                                             double grounded_length_m) {
-  std::vector<StaticPiece> pieces;
+double append_anchor_stretch(std::vector<StaticPiece>& pieces,
+                             const Line& line,
+                             double friction,
+                             double seabed_offset_z_m,
+                             double H,
+                             double grounded_length_m) {
   const double slack = slack_end(line, friction, H, grounded_length_m);
   const std::vector<double> cuts = grounded_cuts(line, slack, grounded_length_m);
   double x = 0.0;
@@ -131,6 +131,17 @@ std::vector<StaticPiece> build_seabed_pieces(const Line& line,
     x += grounded_stretched_increment(piece, length);
     pieces.push_back(piece);
   }
+  return x;
+}
+
+std::vector<StaticPiece> build_seabed_pieces(const Line& line,
+                                             double friction,
+                                             double seabed_offset_z_m,
+                                             double H,
+                                             double grounded_length_m) {
+  std::vector<StaticPiece> pieces;
+  const double x =
+      append_anchor_stretch(pieces, line, friction, seabed_offset_z_m, H, grounded_length_m);
   std::size_t first_segment = 0;
   const Line suspended = line_beyond(line, grounded_length_m, first_segment);
   for (StaticPiece piece : build_line_pieces(suspended, H, 0.0)) {

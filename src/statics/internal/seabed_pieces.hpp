@@ -26,6 +26,17 @@ std::vector<StaticPiece> build_seabed_pieces(const Line& line,
                                              double H,
                                              double grounded_length_m);
 
+/// Appends to `pieces` the grounded stretch [0, grounded_length_m) from an anchor A lying on the
+/// seabed (offsets relative to A): Coulomb friction C_B = `friction` drops the tension from `H` at
+/// its end towards A, down to 0; cut at joints, points and where the tension reaches 0. Returns the
+/// stretched length of the stretch (the x of its end) [m].
+double append_anchor_stretch(std::vector<StaticPiece>& pieces,
+                             const Line& line,
+                             double friction,
+                             double seabed_offset_z_m,
+                             double H,
+                             double grounded_length_m);
+
 /// Tension of a grounded piece at `ds` from its start [N]: max(T_begin + slope ds, 0).
 double grounded_tension(const StaticPiece& piece, double ds);
 
