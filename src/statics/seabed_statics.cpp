@@ -168,8 +168,17 @@ StaticSolution solve_seabed_statics(const Problem& problem, const StaticsOptions
   }
   // One contact interval from the anchor (no buoyancy to lift an arc): the two nested bisections
   // of the original model, bit for bit; everything else in general contact.
-  if (anchor_on_seabed && internal::buoyant_stretches(problem.as_line()).empty()) {
+  if (!anchor_on_seabed) return internal::solve_general_contact(problem, options);
+  if (internal::buoyant_stretches(problem.as_line()).empty())
     return solve_contact(problem, options);
+  // With buoyancy the one-interval state is still the answer when it passes its checks (nothing
+  // below the seabed, nothing buoyant on it): the equilibrium is unique, so a state that satisfies
+  // every contact condition is it (MoorPy tests/case3.dat: a buoy and a clump weight beyond the
+  // touchdown). Otherwise the buoyancy lifts arcs off the seabed: general contact.
+  try {
+    StaticSolution solution = solve_contact(problem, options);
+    if (solution.converged) return solution;
+  } catch (const InvalidInput&) {
   }
   return internal::solve_general_contact(problem, options);
 }

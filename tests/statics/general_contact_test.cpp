@@ -272,6 +272,37 @@ void expect_finite_everywhere(const StaticSolution& s, double L) {
 // MoorPy tests/case5.dat: 890 m of chain from an anchor 400 m away in 300 m of water: longer than
 // span plus depth. H = 0: the hanging part is vertical under B, the rest on the seabed with zero
 // tension; what does not fit in the span lies in a heap at the foot.
+// MoorPy tests/case3.dat: anchored on the seabed, a buoy (200 m^3) at s = 400 m and a clump weight
+// (1e5 kg) at s = 650 m beyond the touchdown. The one-interval state from the anchor satisfies
+// every contact condition, so it is the equilibrium (a regression: general contact once refused
+// this line as passing below the seabed).
+TEST(GeneralContact, BuoyAndClumpBeyondTheTouchdownKeepOneIntervalFromTheAnchor) {
+  Problem p;
+  p.line.segments = {chain(400.0), chain(250.0), chain(250.0)};
+  PointAttachment buoy;
+  buoy.s_m = 400.0;
+  buoy.weight_n = kBuoyWeight;
+  PointAttachment clump;
+  clump.s_m = 650.0;
+  clump.weight_n = 1e5 * 9.81;
+  p.line.points = {buoy, clump};
+  p.supports.a_m = Vec2(0.0, -kDepth);
+  p.supports.b_m = Vec2(800.0, 0.0);
+  p.seabed = Seabed{-kDepth, 0.0, 0.0, 0.0};
+  const StaticSolution s = solve_seabed_statics(p);
+  ASSERT_TRUE(s.converged) << s.message;
+  ASSERT_EQ(s.contact_intervals().size(), 1u);
+  EXPECT_EQ(s.contact_intervals()[0].s_begin_m, 0.0);
+  const double touchdown = s.contact_intervals()[0].s_end_m;
+  EXPECT_GT(touchdown, 0.0);
+  EXPECT_LT(std::abs(s.vertical_force_n(touchdown)), 1e-6 * s.horizontal_force_n());
+  for (int i = 0; i <= 9000; ++i) {
+    const double at = 0.1 * i;
+    EXPECT_GE(s.position_m(at).y(), -kDepth - 1e-9 * kDepth) << "s = " << at;
+  }
+  EXPECT_LT((s.position_m(900.0) - p.supports.b_m).norm(), 1e-9 * 900.0);
+}
+
 TEST(GeneralContact, SlackLineIsTheVerticalHangingChainAndAHeap) {
   Problem p;
   p.cable = {890.0, kChainWeight, kChainEA, 500.0, 0.0};
