@@ -309,6 +309,38 @@ Mode damped_mode(const DampedPlaneInput& in,
   return mode;
 }
 
+// The rounding of overdamped root r relative to delta: a real root is -delta_c +- sqrt(delta_c^2 -
+// k/m) of its vector's Rayleigh functional (delta_c = c / 2m), so a relative rounding rho of k
+// (the element-wise quotient's, fe_rayleigh_quotient.hpp, or the polished pair's backward error)
+// moves it by rho (k/m) / (2 |lambda + delta_c|): relative to |lambda| that is amplified where the
+// two roots of the functional are close or the root is the slow one. Times the extrapolations'
+// gains, as damped_rounding.
+double overdamped_rounding(const DampedPlaneInput& in, Eigen::Index r) {
+  double largest = 0.0;
+  for (const auto& row : in.levels) {
+    for (const FeLevel& level : row) {
+      const FeDampedEigenSolution& damped = level.damped.at(in.plane);
+      const Eigen::VectorXcd& phi = damped.real_vectors.col(r);
+      // The vector of a real root is real up to a phase: the larger of its parts.
+      const Vector x =
+          phi.real().norm() >= phi.imag().norm() ? Vector(phi.real()) : Vector(phi.imag());
+      const SparseMatrix& mass = level.matrices.at(in.plane).mass;
+      const double mx = x.dot(mass * x);
+      if (!(mx > 0.0)) return std::numeric_limits<double>::infinity();
+      const RayleighQuotient k = element_rayleigh_quotient(level.chain, in.plane, x, mass);
+      const double delta_c = x.dot(level.damping.at(in.plane).damping * x) / (2.0 * mx);
+      const double lambda = damped.real_roots[r];
+      const double amplification =
+          std::abs(k.value) / (2.0 * std::abs(lambda + delta_c) * std::abs(lambda));
+      largest = std::max(largest,
+                         std::max(k.relative_rounding, damped.max_backward_error) * amplification);
+    }
+  }
+  const double mesh_gain = in.plan.richardson && in.plan.has_coarse() ? 5.0 / 3.0 : 1.0;
+  const double kappa_gain = in.plan.inextensible ? 3.0 : 1.0;
+  return largest * mesh_gain * kappa_gain;
+}
+
 // The overdamped roots of the finest main mesh that every level found at the same rank, within
 // the smallest radius Spectra searched on any level, extrapolated in delta by rank.
 void add_overdamped(const DampedPlaneInput& in, const Vector& stations, ModalResult& result) {
@@ -337,6 +369,11 @@ void add_overdamped(const DampedPlaneInput& in, const Vector& stations, ModalRes
     mode.index = static_cast<int>(r) + 1;
     set_damped_root(mode, Complex(-value.omega_rad_s, 0.0), in.context.groups);
     mode.decay_rate_error_estimate = relative(value.error_rad_s, value.omega_rad_s);
+    if (mode.decay_rate_error_estimate >= 0.0) {
+      const double rounding = overdamped_rounding(in, r);
+      mode.decay_rate_error_estimate =
+          std::isfinite(rounding) ? mode.decay_rate_error_estimate + rounding : -1.0;
+    }
     mode.relative_error_estimate = mode.decay_rate_error_estimate;
     attach_damped_shape(in, true, static_cast<int>(r), static_cast<int>(r),
                         Complex(-value.omega_rad_s, 0.0), stations, mode);
