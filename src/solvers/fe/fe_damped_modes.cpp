@@ -10,6 +10,8 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "catena/solvers/fe_solver.hpp"
 #include "solvers/common/mode_tools.hpp"
@@ -40,11 +42,33 @@ Eigen::MatrixXcd restrict_to_nodes(const Eigen::MatrixXcd& vectors,
   return out;
 }
 
-// Greedy pairing by the complex MAC |a^H b|^2 / (|a|^2 |b|^2), best pair first (as match_modes).
-std::vector<int> match_complex(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) {
+// The underdamped roots a level kept and then its spare ones (fe_quadratic_eigen.hpp): the
+// candidates of the pairing across levels, column j.
+Eigen::MatrixXcd candidate_vectors(const FeDampedEigenSolution& solution) {
+  Eigen::MatrixXcd all(solution.vectors.rows(),
+                       solution.vectors.cols() + solution.spare_vectors.cols());
+  all << solution.vectors, solution.spare_vectors;
+  return all;
+}
+Complex candidate_root(const FeDampedEigenSolution& solution, int j) {
+  const auto kept = static_cast<int>(solution.roots.size());
+  return j < kept ? solution.roots[j] : solution.spare_roots[j - kept];
+}
+Eigen::VectorXcd candidate_vector(const FeDampedEigenSolution& solution, int j) {
+  const auto kept = static_cast<int>(solution.vectors.cols());
+  return j < kept ? Eigen::VectorXcd(solution.vectors.col(j))
+                  : Eigen::VectorXcd(solution.spare_vectors.col(j - kept));
+}
+
+// Greedy pairing by the complex MAC |a^H b|^2 / (|a|^2 |b|^2), best pair first (as match_modes);
+// `macs` receives the MAC of each pair.
+std::vector<int> match_complex(const Eigen::MatrixXcd& a,
+                               const Eigen::MatrixXcd& b,
+                               std::vector<double>& macs) {
   const Eigen::MatrixXcd cross = a.adjoint() * b;
   const auto n = static_cast<int>(a.cols());
   std::vector<int> result(static_cast<std::size_t>(n), -1);
+  macs.assign(static_cast<std::size_t>(n), 0.0);
   std::vector<bool> used(static_cast<std::size_t>(b.cols()), false);
   for (int assigned = 0; assigned < n; ++assigned) {
     double best = -1.0;
@@ -63,27 +87,39 @@ std::vector<int> match_complex(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd
       }
     }
     result[static_cast<std::size_t>(bi)] = bj;
+    macs[static_cast<std::size_t>(bi)] = best;
     used[static_cast<std::size_t>(bj)] = true;
   }
   return result;
 }
 
+// A pair across levels below this MAC is not the same mode: the reference root is then not
+// resolved by the meshes (damped_mode). Paired modes of a resolved spectrum agree to 1 - O(h^2).
+constexpr double kMinLevelMac = 0.9;
+
+// The pairing of the finest main mesh's roots with every level's candidates (kept and spare
+// roots: a poorly resolved root crosses the cut at `modes` from level to level), and the
+// smallest MAC each reference root met on any level.
 FeModeMatches match_damped_levels(const FeLevels& levels,
                                   const FePlan& plan,
                                   Plane plane,
-                                  int available) {
+                                  int available,
+                                  std::vector<double>& worst_mac) {
   const FeLevel& reference = levels[static_cast<std::size_t>(plan.main_fine)][0];
   const int per_node = plane == Plane::InPlane ? 2 : 1;
   const Eigen::MatrixXcd ref = reference.damped.at(plane).vectors.leftCols(available);
   FeModeMatches matches(levels.size(), std::vector<std::vector<int>>(plan.penalties()));
+  worst_mac.assign(static_cast<std::size_t>(available), 1.0);
   for (std::size_t m = 0; m < levels.size(); ++m) {
     for (std::size_t k = 0; k < plan.penalties(); ++k) {
       const FeLevel& level = levels[m][k];
-      const Eigen::MatrixXcd other = level.damped.at(plane).vectors.leftCols(available);
+      const Eigen::MatrixXcd other = candidate_vectors(level.damped.at(plane));
       const int common = std::min(reference.chain.elements, level.chain.elements);
+      std::vector<double> macs;
       matches[m][k] =
           match_complex(restrict_to_nodes(ref, reference.chain.elements, common, per_node),
-                        restrict_to_nodes(other, level.chain.elements, common, per_node));
+                        restrict_to_nodes(other, level.chain.elements, common, per_node), macs);
+      for (std::size_t i = 0; i < macs.size(); ++i) worst_mac[i] = std::min(worst_mac[i], macs[i]);
     }
   }
   return matches;
@@ -96,7 +132,7 @@ std::vector<std::vector<double>> level_parts(
   for (std::size_t m = 0; m < levels.size(); ++m) {
     for (std::size_t k = 0; k < levels[m].size(); ++k) {
       const Complex root =
-          levels[m][k].damped.at(plane).roots[matches[m][k][static_cast<std::size_t>(i)]];
+          candidate_root(levels[m][k].damped.at(plane), matches[m][k][static_cast<std::size_t>(i)]);
       values[m].push_back(part == 0 ? root.imag() : -root.real());
     }
   }
@@ -113,7 +149,7 @@ double damped_rounding(
     for (std::size_t k = 0; k < levels[m].size(); ++k) {
       const FeLevel& level = levels[m][k];
       const FeDampedEigenSolution& damped = level.damped.at(plane);
-      const Vector re = damped.vectors.col(matches[m][k][static_cast<std::size_t>(i)]).real();
+      const Vector re = candidate_vector(damped, matches[m][k][static_cast<std::size_t>(i)]).real();
       largest =
           std::max({largest,
                     element_rayleigh_quotient(level.chain, plane, re, level.matrices.at(plane).mass)
@@ -177,8 +213,8 @@ void attach_damped_shape(const DampedPlaneInput& in,
   auto level_mode = [&](std::size_t k, int column) {
     const FeLevel& level = in.levels[fine][k];
     const FeDampedEigenSolution& solution = level.damped.at(in.plane);
-    const Eigen::VectorXcd vector =
-        overdamped ? solution.real_vectors.col(column) : solution.vectors.col(column);
+    const Eigen::VectorXcd vector = overdamped ? Eigen::VectorXcd(solution.real_vectors.col(column))
+                                               : candidate_vector(solution, column);
     return damped_mode_on_stations(in.plane, level.chain, vector, lambda, stations,
                                    in.context.statics, request.tension);
   };
@@ -205,17 +241,57 @@ double relative(double error, double value) {
   return error >= 0.0 && value > 0.0 ? error / value : -1.0;
 }
 
-// Underdamped mode i, extrapolated.
+// Mode i as the finest main mesh's own root, without an estimate (so a declared miss), when the
+// levels do not resolve it: a pairing across levels below kMinLevelMac, or an extrapolation that
+// leaves the passive line's half plane (delta < 0: C is positive semi-definite, so every root of
+// every level has Re lambda <= 0, and only values outside the asymptotic range extrapolate past
+// it). Such a root (a heavily damped one of a seabed dashpot, whose omega_d moves by tens of
+// per cent between the meshes) is reported with the reason rather than extrapolated.
+Mode unresolved_mode(const DampedPlaneInput& in,
+                     int i,
+                     const std::string& why,
+                     std::vector<std::string>& warnings,
+                     Mode mode) {
+  const FeDampedEigenSolution& finest =
+      in.levels[static_cast<std::size_t>(in.plan.main_fine)][0].damped.at(in.plane);
+  const Complex lambda = finest.roots[i];
+  set_damped_root(mode, lambda, in.context.groups);
+  mode.relative_error_estimate = -1.0;
+  mode.decay_rate_error_estimate = -1.0;
+  warnings.push_back(fmt::format(
+      "{} root near lambda = {:.6g} {:+.6g} i not resolved by the meshes ({}): the finest "
+      "mesh's value is returned without an error estimate",
+      to_string(in.plane), lambda.real(), lambda.imag(), why));
+  return mode;
+}
+
+// Underdamped mode i, extrapolated (or unresolved_mode).
 Mode damped_mode(const DampedPlaneInput& in,
                  const FeModeMatches& matches,
                  int i,
-                 const Vector& stations) {
+                 double worst_mac,
+                 const Vector& stations,
+                 std::vector<std::string>& warnings) {
   const FeExtrapolatedFrequency omega =
       extrapolate_frequency(in.plan, level_parts(in.levels, matches, in.plane, i, 0));
   const FeExtrapolatedFrequency delta =
       extrapolate_frequency(in.plan, level_parts(in.levels, matches, in.plane, i, 1));
   Mode mode;
   mode.index = i + 1;
+  const auto fine = static_cast<std::size_t>(in.plan.main_fine);
+  const int second = in.plan.inextensible ? matches[fine][1][static_cast<std::size_t>(i)] : 0;
+  std::string why;
+  if (worst_mac < kMinLevelMac)
+    why = fmt::format("its shape pairs across the levels with a MAC of {:.3f} only", worst_mac);
+  else if (!(omega.omega_rad_s > 0.0) || !(delta.omega_rad_s >= 0.0))
+    why = fmt::format("the extrapolation gives omega_d = {:.6g} rad/s, delta = {:.6g} 1/s",
+                      omega.omega_rad_s, delta.omega_rad_s);
+  if (!why.empty()) {
+    mode = unresolved_mode(in, i, why, warnings, std::move(mode));
+    attach_damped_shape(in, false, i, second, Complex(-mode.decay_rate_1_s, mode.omega_rad_s),
+                        stations, mode);
+    return mode;
+  }
   const Complex lambda(-delta.omega_rad_s, omega.omega_rad_s);
   set_damped_root(mode, lambda, in.context.groups);
   const double rounding = damped_rounding(in.plan, in.levels, matches, in.plane, i);
@@ -229,10 +305,40 @@ Mode damped_mode(const DampedPlaneInput& in,
   if (in.plan.has_estimate_mesh() && mode.relative_error_estimate >= 0.0 &&
       !in.context.problem.prescribed_forces)
     mode.relative_error_estimate += in.plan.statics_floor(in.context.groups.t0_n);
-  const auto fine = static_cast<std::size_t>(in.plan.main_fine);
-  const int second = in.plan.inextensible ? matches[fine][1][static_cast<std::size_t>(i)] : 0;
   attach_damped_shape(in, false, i, second, lambda, stations, mode);
   return mode;
+}
+
+// The rounding of overdamped root r relative to delta: a real root is -delta_c +- sqrt(delta_c^2 -
+// k/m) of its vector's Rayleigh functional (delta_c = c / 2m), so a relative rounding rho of k
+// (the element-wise quotient's, fe_rayleigh_quotient.hpp, or the polished pair's backward error)
+// moves it by rho (k/m) / (2 |lambda + delta_c|): relative to |lambda| that is amplified where the
+// two roots of the functional are close or the root is the slow one. Times the extrapolations'
+// gains, as damped_rounding.
+double overdamped_rounding(const DampedPlaneInput& in, Eigen::Index r) {
+  double largest = 0.0;
+  for (const auto& row : in.levels) {
+    for (const FeLevel& level : row) {
+      const FeDampedEigenSolution& damped = level.damped.at(in.plane);
+      const Eigen::VectorXcd& phi = damped.real_vectors.col(r);
+      // The vector of a real root is real up to a phase: the larger of its parts.
+      const Vector x =
+          phi.real().norm() >= phi.imag().norm() ? Vector(phi.real()) : Vector(phi.imag());
+      const SparseMatrix& mass = level.matrices.at(in.plane).mass;
+      const double mx = x.dot(mass * x);
+      if (!(mx > 0.0)) return std::numeric_limits<double>::infinity();
+      const RayleighQuotient k = element_rayleigh_quotient(level.chain, in.plane, x, mass);
+      const double delta_c = x.dot(level.damping.at(in.plane).damping * x) / (2.0 * mx);
+      const double lambda = damped.real_roots[r];
+      const double amplification =
+          std::abs(k.value) / (2.0 * std::abs(lambda + delta_c) * std::abs(lambda));
+      largest = std::max(largest,
+                         std::max(k.relative_rounding, damped.max_backward_error) * amplification);
+    }
+  }
+  const double mesh_gain = in.plan.richardson && in.plan.has_coarse() ? 5.0 / 3.0 : 1.0;
+  const double kappa_gain = in.plan.inextensible ? 3.0 : 1.0;
+  return largest * mesh_gain * kappa_gain;
 }
 
 // The overdamped roots of the finest main mesh that every level found at the same rank, within
@@ -263,6 +369,11 @@ void add_overdamped(const DampedPlaneInput& in, const Vector& stations, ModalRes
     mode.index = static_cast<int>(r) + 1;
     set_damped_root(mode, Complex(-value.omega_rad_s, 0.0), in.context.groups);
     mode.decay_rate_error_estimate = relative(value.error_rad_s, value.omega_rad_s);
+    if (mode.decay_rate_error_estimate >= 0.0) {
+      const double rounding = overdamped_rounding(in, r);
+      mode.decay_rate_error_estimate =
+          std::isfinite(rounding) ? mode.decay_rate_error_estimate + rounding : -1.0;
+    }
     mode.relative_error_estimate = mode.decay_rate_error_estimate;
     attach_damped_shape(in, true, static_cast<int>(r), static_cast<int>(r),
                         Complex(-value.omega_rad_s, 0.0), stations, mode);
@@ -330,9 +441,11 @@ void damped_modal_result(const SolveContext& context,
   const int available = damped_modes_on_every_level(levels, plane, count);
   SolverSummary& summary = result.summary;
   if (available > 0) {
-    const FeModeMatches matches = match_damped_levels(levels, plan, plane, available);
+    std::vector<double> worst_mac;
+    const FeModeMatches matches = match_damped_levels(levels, plan, plane, available, worst_mac);
     for (int i = 0; i < available; ++i) {
-      Mode mode = damped_mode(in, matches, i, stations);
+      Mode mode = damped_mode(in, matches, i, worst_mac[static_cast<std::size_t>(i)], stations,
+                              summary.warnings);
       summary.max_error_estimate =
           std::max(summary.max_error_estimate, mode.relative_error_estimate);
       result.modes.push_back(std::move(mode));

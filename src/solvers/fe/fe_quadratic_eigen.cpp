@@ -312,6 +312,13 @@ void sort_roots(std::vector<RawRoot>& roots, int modes, FeDampedEigenSolution& o
     out.roots[i] = under[static_cast<std::size_t>(i)]->lambda;
     out.vectors.col(i) = under[static_cast<std::size_t>(i)]->phi;
   }
+  const auto spare = static_cast<Eigen::Index>(under.size()) - kept;
+  out.spare_roots.resize(spare);
+  out.spare_vectors.resize(n, spare);
+  for (Eigen::Index i = 0; i < spare; ++i) {
+    out.spare_roots[i] = under[static_cast<std::size_t>(kept + i)]->lambda;
+    out.spare_vectors.col(i) = under[static_cast<std::size_t>(kept + i)]->phi;
+  }
   out.real_roots.resize(static_cast<Eigen::Index>(over.size()));
   out.real_vectors.resize(n, static_cast<Eigen::Index>(over.size()));
   for (std::size_t i = 0; i < over.size(); ++i) {

@@ -36,6 +36,11 @@ struct FeDampedEigenSolution {
   /// Underdamped roots lambda (Im > 0), ascending Im, and their vectors (free unknowns, columns).
   Eigen::VectorXcd roots;
   Eigen::MatrixXcd vectors;
+  /// The underdamped roots found beyond the `modes` kept (ascending Im) and their vectors: a
+  /// poorly resolved root (a heavily damped one of a seabed dashpot) moves across the cut from
+  /// level to level, and the pairing across levels (fe_damped_modes.cpp) looks among these too.
+  Eigen::VectorXcd spare_roots;
+  Eigen::MatrixXcd spare_vectors;
   /// Overdamped (real) roots, ascending -lambda, and their vectors.
   Eigen::VectorXd real_roots;
   Eigen::MatrixXcd real_vectors;

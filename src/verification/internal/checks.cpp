@@ -16,6 +16,7 @@
 #include "verification/internal/dynamic_tension_checks.hpp"
 #include "verification/internal/estimate_checks.hpp"
 #include "verification/internal/mode_mix.hpp"
+#include "verification/internal/mode_pairing.hpp"
 #include "verification/internal/published_checks.hpp"
 
 namespace catena::internal {
@@ -101,6 +102,42 @@ CheckBuilder::Tolerance declared_miss(CheckBuilder::Tolerance tol,
   return tol;
 }
 
+// A damped mode one solver returned and the other has no partner for (mode_pairing.hpp): a WARN
+// when it lies within the other's returned omega_d range (a root outside the other's counted
+// region, such as a heavily damped one of a seabed dashpot, or one it missed: its summary gives
+// the region it counted), a SKIP when it lies beyond the other's top (the other returned fewer
+// modes there). Never a FAIL on its own: the paired modes carry the comparison.
+void unpaired_modes(const SolverOutput& a,
+                    const SolverOutput& b,
+                    Plane plane,
+                    const ModalResult& ma,
+                    const ModalResult& mb,
+                    const ModePairs& pairing,
+                    CheckBuilder& builder) {
+  auto report = [&](const SolverOutput& has, const ModalResult& own, const SolverOutput& lacks,
+                    const ModalResult& other, std::size_t i) {
+    const Mode& mode = own.modes[i];
+    CheckResult check =
+        builder.base("unpaired", has.solver + " vs " + lacks.solver, plane_name(plane), mode.index);
+    const double top = other.modes.empty() ? 0.0 : other.modes.back().omega_rad_s;
+    const bool within = mode.omega_rad_s <= top;
+    check.value_a = mode.omega_rad_s;
+    check.verdict = within ? Verdict::Warn : Verdict::Skipped;
+    check.detail = fmt::format(
+        "{}'s mode {} (lambda = {:.9g} {:+.9g} i, damping ratio {:.3g}) has no partner in {}: {}",
+        has.solver, mode.index, -mode.decay_rate_1_s, mode.omega_rad_s, mode.damping_ratio,
+        lacks.solver,
+        within
+            ? fmt::format("a root outside {0}'s counted region (its summary) or one {0} "
+                          "missed; not compared",
+                          lacks.solver)
+            : fmt::format("beyond {}'s top omega_d {:.9g} rad/s; not compared", lacks.solver, top));
+    builder.add(std::move(check));
+  };
+  for (std::size_t i : pairing.only_a) report(a, ma, b, mb, i);
+  for (std::size_t j : pairing.only_b) report(b, mb, a, ma, j);
+}
+
 void frequency_pair(const SceneResult& result,
                     const SolverOutput& a,
                     const SolverOutput& b,
@@ -116,17 +153,19 @@ void frequency_pair(const SceneResult& result,
       builder.tolerance("frequency", a.solver, b.solver, result.scene.checks.frequency_rel);
   if (!result.scene.checks.frequency_rel) tol = tightened_by_targets(tol, builder, a, b, *ma, *mb);
   const bool damped = result.scene.problem.is_damped();
-  const std::size_t n = std::min(ma->modes.size(), mb->modes.size());
-  for (std::size_t i = 0; i < n; ++i) {
+  const ModePairs pairing = pair_modes(*ma, *mb, damped);
+  unpaired_modes(a, b, plane, *ma, *mb, pairing, builder);
+  for (const auto& [i, j] : pairing.pairs) {
     const Mode& x = ma->modes[i];
-    const Mode& y = mb->modes[i];
+    const Mode& y = mb->modes[j];
     CheckResult check =
         builder.base("frequency", a.solver + " vs " + b.solver, plane_name(plane), x.index);
+    if (x.index != y.index) check.detail = fmt::format("{}'s mode {}: ", b.solver, y.index);
     check.value_a = x.omega_rad_s;
     check.value_b = y.omega_rad_s;
     // A damped line's omega_rad_s is the damped frequency omega_d = Im lambda (its decay rate is
     // the decay-rate check's): the detail names it so.
-    check.detail =
+    check.detail +=
         fmt::format("{} {:.12g} vs {:.12g} rad/s (error estimates {:.1e}, {:.1e})",
                     damped ? "omega_d (damped frequency Im lambda)" : "omega", x.omega_rad_s,
                     y.omega_rad_s, x.relative_error_estimate, y.relative_error_estimate);
@@ -162,10 +201,9 @@ void shape_pair(const SceneResult& result,
     return;
   const std::string quantity = plane == Plane::InPlane ? "shape-in-plane" : "shape-out-of-plane";
   if (!builder.independent(a.solver, b.solver, quantity, "shape", plane_name(plane))) return;
-  const std::size_t n = std::min(ma->modes.size(), mb->modes.size());
-  for (std::size_t i = 0; i < n; ++i) {
+  for (const auto& [i, j] : pair_modes(*ma, *mb, result.scene.problem.is_damped()).pairs) {
     const Mode& x = ma->modes[i];
-    const Mode& y = mb->modes[i];
+    const Mode& y = mb->modes[j];
     if (!has_stacked_shape(x, plane) || !has_stacked_shape(y, plane) ||
         x.s_m.size() != y.s_m.size())
       continue;
@@ -204,10 +242,9 @@ void tension_pair(const SceneResult& result,
   if (!ma || !mb || plane == Plane::OutOfPlane) return;  // out-of-plane modes carry no tension
   if (ma->modes[0].max_abs_tension_n < 0.0 || mb->modes[0].max_abs_tension_n < 0.0) return;
   if (!builder.independent(a.solver, b.solver, "tension", "tension", plane_name(plane))) return;
-  const std::size_t n = std::min(ma->modes.size(), mb->modes.size());
-  for (std::size_t i = 0; i < n; ++i) {
+  for (const auto& [i, j] : pair_modes(*ma, *mb, result.scene.problem.is_damped()).pairs) {
     const Mode& x = ma->modes[i];
-    const Mode& y = mb->modes[i];
+    const Mode& y = mb->modes[j];
     if (x.max_abs_tension_n < 0.0 || y.max_abs_tension_n < 0.0) continue;
     if (x.normalised_by != y.normalised_by) continue;
     const auto tol =

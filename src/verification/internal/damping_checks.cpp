@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "verification/internal/mode_pairing.hpp"
+
 namespace catena::internal {
 namespace {
 
@@ -93,9 +95,9 @@ void decay_rate_pair(const SolverOutput& a,
   if (!tol) return;
   const double resolved = std::max(resolution(a, ma.summary.accuracy_target, builder),
                                    resolution(b, mb.summary.accuracy_target, builder));
-  const std::size_t n = std::min(ma.modes.size(), mb.modes.size());
-  for (std::size_t i = 0; i < n; ++i) {
-    compare_decay("decay-rate", a.solver + " vs " + b.solver, plane, ma.modes[i], mb.modes[i],
+  // Paired by lambda (mode_pairing.hpp), as the frequency check pairs them.
+  for (const auto& [i, j] : pair_modes(ma, mb, true).pairs) {
+    compare_decay("decay-rate", a.solver + " vs " + b.solver, plane, ma.modes[i], mb.modes[j],
                   ma.summary.accuracy_target, mb.summary.accuracy_target, resolved, *tol, builder);
   }
 }

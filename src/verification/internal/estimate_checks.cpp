@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "verification/internal/dynamic_tension_checks.hpp"
+#include "verification/internal/mode_pairing.hpp"
 
 namespace catena::internal {
 namespace {
@@ -127,35 +128,52 @@ void check_claim(const SolverOutput& claimant,
   builder.add(std::move(check));
 }
 
-// The frequency of mode `index` in `plane`; a reference's plane must itself have converged.
-ClaimOf frequency_claim(Plane plane, int index) {
-  return [plane, index](const SolverOutput& output, bool as_reference) -> std::optional<Claim> {
+// The mode of `output` that stands for the claimant's mode `index` in `plane`: the claimant's own
+// mode, or, for a reference, its mode of the same index (undamped: the counted spectra make it
+// the same mode) or its partner by lambda (damped: mode_pairing.hpp; none when unpaired). A
+// reference's plane must itself have converged.
+const Mode* claimed_mode(const SolverOutput& output,
+                         bool as_reference,
+                         const ModalResult& claimant,
+                         Plane plane,
+                         int index,
+                         bool damped) {
+  const auto& modal = plane == Plane::InPlane ? output.inplane : output.outofplane;
+  if (!modal || (as_reference && modal->summary.termination != Termination::Converged))
+    return nullptr;
+  if (!as_reference || !damped) {
+    for (const Mode& mode : modal->modes)
+      if (mode.index == index) return &mode;
+    return nullptr;
+  }
+  for (const auto& [i, j] : pair_modes(claimant, *modal, true).pairs)
+    if (claimant.modes[i].index == index) return &modal->modes[j];
+  return nullptr;
+}
+
+// The frequency of mode `index` in `plane`.
+ClaimOf frequency_claim(const ModalResult& claimant, Plane plane, int index, bool damped) {
+  return [&claimant, plane, index, damped](const SolverOutput& output,
+                                           bool as_reference) -> std::optional<Claim> {
+    const Mode* mode = claimed_mode(output, as_reference, claimant, plane, index, damped);
+    if (!mode) return std::nullopt;
     const auto& modal = plane == Plane::InPlane ? output.inplane : output.outofplane;
-    if (!modal || (as_reference && modal->summary.termination != Termination::Converged))
-      return std::nullopt;
-    for (const Mode& mode : modal->modes) {
-      if (mode.index == index)
-        return usable_claim(mode.omega_rad_s, mode.relative_error_estimate,
-                            modal->summary.accuracy_target);
-    }
-    return std::nullopt;
+    return usable_claim(mode->omega_rad_s, mode->relative_error_estimate,
+                        modal->summary.accuracy_target);
   };
 }
 
 // The decay rate delta of mode `index` in `plane` with its estimate of the relative error of
 // delta on its own (Mode::decay_rate_error_estimate: -1, no claim, on an undamped line), held to
 // the plane's accuracy target as the frequency is.
-ClaimOf decay_claim(Plane plane, int index) {
-  return [plane, index](const SolverOutput& output, bool as_reference) -> std::optional<Claim> {
+ClaimOf decay_claim(const ModalResult& claimant, Plane plane, int index) {
+  return [&claimant, plane, index](const SolverOutput& output,
+                                   bool as_reference) -> std::optional<Claim> {
+    const Mode* mode = claimed_mode(output, as_reference, claimant, plane, index, true);
+    if (!mode) return std::nullopt;
     const auto& modal = plane == Plane::InPlane ? output.inplane : output.outofplane;
-    if (!modal || (as_reference && modal->summary.termination != Termination::Converged))
-      return std::nullopt;
-    for (const Mode& mode : modal->modes) {
-      if (mode.index == index)
-        return usable_claim(mode.decay_rate_1_s, mode.decay_rate_error_estimate,
-                            modal->summary.accuracy_target);
-    }
-    return std::nullopt;
+    return usable_claim(mode->decay_rate_1_s, mode->decay_rate_error_estimate,
+                        modal->summary.accuracy_target);
   };
 }
 
@@ -191,12 +209,13 @@ void estimate_checks(const std::vector<const SolverOutput*>& usable, CheckBuilde
       if (!modal) continue;
       const std::string quantity =
           plane == Plane::InPlane ? "frequency-in-plane" : "frequency-out-of-plane";
+      const bool damped = builder.result().scene.problem.is_damped();
       for (const Mode& mode : modal->modes) {
         check_claim(*output, usable, {quantity, plane_name(plane), mode.index},
-                    frequency_claim(plane, mode.index), builder);
+                    frequency_claim(*modal, plane, mode.index, damped), builder);
         if (mode.decay_rate_error_estimate >= 0.0)
           check_claim(*output, usable, {quantity, plane_name(plane), mode.index, "decay-estimate"},
-                      decay_claim(plane, mode.index), builder);
+                      decay_claim(*modal, plane, mode.index), builder);
       }
     }
     for (std::size_t i = 0; i < output->forced.size(); ++i) {

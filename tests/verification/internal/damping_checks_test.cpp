@@ -248,6 +248,67 @@ TEST(DampingChecks, AnUndampedSceneHasNoDampingChecksAndItsOwnFrequencyDetail) {
   EXPECT_EQ(c->detail.rfind("omega 1.86 vs", 0), 0u) << c->detail;
 }
 
+// A heavily damped root one solver returns (a seabed dashpot's, zeta 0.98, outside the other's
+// counted region) and a mode beyond the other's top: paired by lambda, the common modes are
+// compared with each other (not shifted by one), the extra root is an `unpaired` WARN, the mode
+// beyond the top a SKIP, and nothing FAILs (docs/reference/verdicts.md, "Damped scenes").
+TEST(DampingChecks, ARootOneSolverDoesNotReachIsUnpairedAndShiftsNoPair) {
+  SceneResult r = gale_result(0.1);
+  const double p = 1.0 + 1e-11;
+  r.outputs = {output_with("fe", {{0.834, 0.0099}, {1.357, 0.0156}, {1.993, 8.90}, {2.404, 0.028}}),
+               output_with("shooting", {{0.834 * p, 0.0099 * p},
+                                        {1.357 * p, 0.0156 * p},
+                                        {2.404 * p, 0.028 * p},
+                                        {2.929, 0.035}})};
+  const auto checks = run_checks(r);
+  EXPECT_EQ(count_of(checks, "frequency"), 3);
+  EXPECT_EQ(count_of(checks, "decay-rate"), 3);
+  for (int mode : {1, 2, 4}) {
+    EXPECT_EQ(verdict_of(checks, "frequency", mode), Verdict::Pass) << mode;
+    EXPECT_EQ(verdict_of(checks, "decay-rate", mode), Verdict::Pass) << mode;
+  }
+  // fe's mode 4 is shooting's mode 3, and the detail says so.
+  EXPECT_NE(find(checks, "frequency", 4)->detail.find("shooting's mode 3"), std::string::npos);
+  EXPECT_EQ(verdict_of(checks, "frequency", 3), std::nullopt);
+  int unpaired = 0;
+  for (const auto& c : checks) {
+    EXPECT_NE(c.verdict, Verdict::Fail) << c.check << " " << c.compare << " " << c.detail;
+    if (c.check != "unpaired") continue;
+    ++unpaired;
+    if (c.compare == "fe vs shooting") {
+      EXPECT_EQ(c.mode, 3);
+      EXPECT_EQ(c.verdict, Verdict::Warn) << c.detail;  // within shooting's omega_d range
+    } else {
+      EXPECT_EQ(c.compare, "shooting vs fe");
+      EXPECT_EQ(c.mode, 4);
+      EXPECT_EQ(c.verdict, Verdict::Skipped) << c.detail;  // beyond fe's top
+    }
+  }
+  EXPECT_EQ(unpaired, 2);
+  // The estimate check holds fe's mode 4 against shooting's mode 3, and has no reference for
+  // the unpaired root.
+  const CheckResult* estimate = nullptr;
+  for (const auto& c : checks)
+    if (c.check == "estimate" && c.compare == "fe vs shooting" && c.mode == 4) estimate = &c;
+  ASSERT_NE(estimate, nullptr);
+  EXPECT_EQ(estimate->verdict, Verdict::Pass) << estimate->detail;
+  for (const auto& c : checks)
+    EXPECT_FALSE(c.check == "estimate" && c.compare == "fe vs shooting" && c.mode == 3);
+}
+
+// Undamped, the pairing stays by index (the counted spectra make mode i the same mode): a mode
+// one solver has in the middle of the other's spectrum shifts the pairs and FAILs, as before.
+TEST(DampingChecks, UndampedModesArePairedByIndexStill) {
+  SceneResult r = gale_result(0.0);
+  r.outputs = {output_with("frobenius", {{1.86, 0.0}, {2.5, 0.0}, {3.16, 0.0}}),
+               output_with("shooting", {{1.86, 0.0}, {3.16, 0.0}})};
+  const auto checks = run_checks(r);
+  EXPECT_EQ(verdict_of(checks, "frequency", 1), Verdict::Pass);
+  EXPECT_EQ(verdict_of(checks, "frequency", 2), Verdict::Fail);
+  EXPECT_EQ(count_of(checks, "frequency"), 2);
+  EXPECT_EQ(count_of(checks, "unpaired"), 0);
+}
+
 // kappa of a damped response: finite at resonance, 2 |lambda|^2 / (2 delta Omega) there; the same
 // as the undamped formula with every delta 0.
 TEST(DampingChecks, TheForcedConditionNumberOfADampedLineIsFiniteAtResonance) {
