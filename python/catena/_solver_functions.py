@@ -54,10 +54,10 @@ def solve_fe(problem: Problem, request: Optional[Request] = None, *, statics: Op
         4 kappa for the error estimate).
     observed_order : bool, default False
         Also solve 4N and report the observed convergence order.
-    tolerance : float, default 0
-        Accuracy target of each frequency, relative [-], in [0, 1]: while a mode's error estimate
-        exceeds it, fe solves again on a finer mesh (up to max_elements); a mode that still exceeds
-        it is named and the plane not converged (0: none).
+    tolerance : float, default 1e-06
+        Accuracy target of each frequency, relative [-], in [0, 1] (default fe's declared accuracy):
+        while a mode's error estimate exceeds it, fe solves again on a finer mesh (up to
+        max_elements); a mode that still exceeds it is named and the plane not converged (0: none).
     max_elements : int, default 51200
         The largest N [-] a tolerance may refine to, in [2, 5e+07] (at or below elements: no
         refinement).
