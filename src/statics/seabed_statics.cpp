@@ -11,6 +11,7 @@
 #include "statics/internal/bisection.hpp"
 #include "statics/internal/contact_arcs.hpp"
 #include "statics/internal/general_contact.hpp"
+#include "statics/internal/line_parts.hpp"
 #include "statics/internal/line_pieces.hpp"
 #include "statics/internal/seabed_pieces.hpp"
 
@@ -49,19 +50,10 @@ struct ContactSystem {
   }
 };
 
-// Sum of |weights| of the line [N]: the scale of H from which the bracket starts.
-double weight_scale(const Line& line) {
-  double scale = 0.0;
-  for (const LineSegment& segment : line.segments)
-    scale += std::abs(segment.weight_n_per_m) * segment.length_m;
-  for (const PointAttachment& point : line.points) scale += std::abs(point.weight_n);
-  return scale > 0.0 ? scale : 1.0;
-}
-
 // The H of the contact solution by bisection on the reach residual (increasing in H), after
 // bracketing it by doubling and halving from the line's weight.
 double contact_horizontal_force(const ContactSystem& system) {
-  double hi = weight_scale(system.line);
+  double hi = internal::weight_scale(system.line);
   for (int i = 0; i < 200 && !(system.reach_residual(hi) > 0.0); ++i) hi *= 2.0;
   double lo = hi;
   for (int i = 0; i < 120 && system.reach_residual(lo) >= 0.0; ++i) lo *= 0.5;

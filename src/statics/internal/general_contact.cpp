@@ -12,6 +12,7 @@
 #include "statics/internal/bisection.hpp"
 #include "statics/internal/contact_arcs.hpp"
 #include "statics/internal/contact_pieces.hpp"
+#include "statics/internal/line_parts.hpp"
 #include "statics/internal/line_pieces.hpp"
 
 namespace catena::internal {
@@ -40,15 +41,6 @@ struct GeneralContact {
     return line_end_offset(built->pieces, H).x() - chord_m.x();
   }
 };
-
-// Sum of |weights| of the line [N]: the scale of H from which the bracket starts.
-double weight_scale(const Line& line) {
-  double scale = 0.0;
-  for (const LineSegment& segment : line.segments)
-    scale += std::abs(segment.weight_n_per_m) * segment.length_m;
-  for (const PointAttachment& point : line.points) scale += std::abs(point.weight_n);
-  return scale > 0.0 ? scale : 1.0;
-}
 
 // H of the contact solution (increasing reach in H), after bracketing it by doubling and halving
 // from the line's weight; 0 when even H -> 0 reaches past B (a slack line).

@@ -3,6 +3,7 @@
 #include "statics/internal/line_parts.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace catena::internal {
 
@@ -45,6 +46,14 @@ double weight_between(const Line& line, double s_begin_m, double s_end_m) {
     if (point.s_m > s_begin_m + merge && point.s_m < s_end_m - merge) weight += point.weight_n;
   }
   return weight;
+}
+
+double weight_scale(const Line& line) {
+  double scale = 0.0;
+  for (const LineSegment& segment : line.segments)
+    scale += std::abs(segment.weight_n_per_m) * segment.length_m;
+  for (const PointAttachment& point : line.points) scale += std::abs(point.weight_n);
+  return scale > 0.0 ? scale : 1.0;
 }
 
 }  // namespace catena::internal
