@@ -8,6 +8,7 @@
 #include <string>
 
 #include "catena/core/error.hpp"
+#include "statics/internal/line_parts.hpp"
 #include "statics/internal/line_pieces.hpp"
 
 namespace catena {
@@ -54,14 +55,7 @@ NewtonRun newton_from(
   return run;
 }
 
-// Sum of |weight| over the segments and points [N]: the force scale of the statics (0: weightless).
-double weight_scale(const Line& line) {
-  double scale = 0.0;
-  for (const LineSegment& segment : line.segments)
-    scale += std::abs(segment.weight_n_per_m) * segment.length_m;
-  for (const PointAttachment& point : line.points) scale += std::abs(point.weight_n);
-  return scale;
-}
+using internal::weight_scale;
 
 // The parabolic start of a uniform cable of the same length, total weight and chord (weights
 // taken by magnitude, so that a buoyant or weightless line gets a sensible tension scale).

@@ -53,7 +53,7 @@ struct ContactSystem {
 // The H of the contact solution by bisection on the reach residual (increasing in H), after
 // bracketing it by doubling and halving from the line's weight.
 double contact_horizontal_force(const ContactSystem& system) {
-  double hi = internal::weight_scale(system.line);
+  double hi = std::max(internal::weight_scale(system.line), 1.0);
   for (int i = 0; i < 200 && !(system.reach_residual(hi) > 0.0); ++i) hi *= 2.0;
   double lo = hi;
   for (int i = 0; i < 120 && system.reach_residual(lo) >= 0.0; ++i) lo *= 0.5;

@@ -45,7 +45,7 @@ struct GeneralContact {
 // H of the contact solution (increasing reach in H), after bracketing it by doubling and halving
 // from the line's weight; 0 when even H -> 0 reaches past B (a slack line).
 double horizontal_force(const GeneralContact& system) {
-  double hi = weight_scale(system.geometry.line);
+  double hi = std::max(weight_scale(system.geometry.line), 1.0);
   for (int i = 0; i < 200 && !(system.reach_residual(hi) > 0.0); ++i) hi *= 2.0;
   if (!(system.reach_residual(hi) > 0.0)) {
     throw InvalidInput(fmt::format(
@@ -87,7 +87,7 @@ double contact_vertical_force(const StaticPiece& before, const StaticPiece& afte
 // The result's conditions: positive weight on the seabed, tangential contact, nothing below.
 void check_contact(const StaticSolution& solution, const Line& line, double tolerance) {
   const std::vector<StaticPiece>& pieces = solution.pieces();
-  const double force_tolerance = 1e-9 * weight_scale(line);
+  const double force_tolerance = 1e-9 * std::max(weight_scale(line), 1.0);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const StaticPiece& piece = pieces[i];
     if (piece.grounded && !(piece.section.weight_n_per_m > 0.0)) {

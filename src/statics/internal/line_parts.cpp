@@ -53,7 +53,7 @@ double weight_scale(const Line& line) {
   for (const LineSegment& segment : line.segments)
     scale += std::abs(segment.weight_n_per_m) * segment.length_m;
   for (const PointAttachment& point : line.points) scale += std::abs(point.weight_n);
-  return scale > 0.0 ? scale : 1.0;
+  return scale;
 }
 
 }  // namespace catena::internal

@@ -24,8 +24,8 @@ Line line_between(const Line& line, double s_begin_m, double s_end_m, std::size_
 /// length of each inside it plus the points strictly inside it (the rule of line_between).
 double weight_between(const Line& line, double s_begin_m, double s_end_m);
 
-/// Sum of |weights| of the line's segments and points [N] (1 when weightless): the scale of H from
-/// which the contact solves bracket it.
+/// Sum of |weights| of the line's segments and points [N] (0 when weightless): the force scale of
+/// the statics.
 double weight_scale(const Line& line);
 
 }  // namespace catena::internal
