@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <system_error>
@@ -139,13 +140,18 @@ OutputTarget classify_output(const fs::path& path) {
                        : errno == ENOENT ? "a dangling symbolic link (its target does not exist)"
                                          : std::strerror(errno));
   }
-  if (S_ISREG(target.st_mode)) {
+  // /dev/stdout, /dev/fd/1 or /proc/self/fd/1 leading to a regular file: a stream this process
+  // has open (`catena solve S --json /dev/stdout > out.json`), not a file to replace; renaming
+  // over it would leave the shell's descriptor on an unlinked file.
+  const bool stream = S_ISLNK(link.st_mode) && (path.native().rfind("/dev/", 0) == 0 ||
+                                                path.native().rfind("/proc/", 0) == 0);
+  if (S_ISREG(target.st_mode) && !stream) {
     std::error_code error;
     const fs::path resolved = S_ISLNK(link.st_mode) ? fs::canonical(path, error) : path;
     if (error) cannot_write(path, error.message());
     return {OutputTarget::Kind::Regular, resolved, static_cast<mode_t>(target.st_mode & 07777)};
   }
-  if (S_ISCHR(target.st_mode) || S_ISFIFO(target.st_mode))
+  if (S_ISCHR(target.st_mode) || S_ISFIFO(target.st_mode) || S_ISREG(target.st_mode))
     return {OutputTarget::Kind::WriteThrough, path, 0};
   if (S_ISDIR(target.st_mode)) cannot_write(path, "it is a directory");
   const fs::file_type type = S_ISBLK(target.st_mode)    ? fs::file_type::block
@@ -156,10 +162,35 @@ OutputTarget classify_output(const fs::path& path) {
                          "written");
 }
 
-// Writes `text` through to a character device or FIFO: opened without O_CREAT or O_TRUNC, so the
-// node stays what it is. A FIFO blocks until a reader opens it, as a shell's `>` does.
+// The descriptor of this process that `path` names (/dev/stdout, /dev/stderr, /dev/fd/N,
+// /proc/self/fd/N), or -1. Written through that descriptor, the output shares its offset with
+// what the process prints there: opened anew, it would be overwritten by the next print.
+int own_descriptor(const fs::path& path) {
+  const std::string& text = path.native();
+  if (text == "/dev/stdout") return STDOUT_FILENO;
+  if (text == "/dev/stderr") return STDERR_FILENO;
+  for (const std::string prefix : {"/dev/fd/", "/proc/self/fd/"}) {
+    if (text.rfind(prefix, 0) != 0 || text.size() == prefix.size() ||
+        text.size() > prefix.size() + 6)
+      continue;
+    if (text.find_first_not_of("0123456789", prefix.size()) != std::string::npos) continue;
+    return std::stoi(text.substr(prefix.size()));
+  }
+  return -1;
+}
+
+// Writes `text` through to a character device, FIFO or open stream: opened without O_CREAT or
+// O_TRUNC, so the node stays what it is (a stream of this process: through its descriptor, after
+// what was printed to it, flushed first). A FIFO blocks until a reader opens it, as a shell's `>`
+// does.
 void write_through(const fs::path& path, const std::string& text) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+  std::fflush(nullptr);
+  const int own = own_descriptor(path);
+  if (own >= 0 && ::fcntl(own, F_GETFD) != -1) {
+    if (!write_all(own, text)) cannot_write(path, std::strerror(errno));
+    return;
+  }
+  const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_NOCTTY | O_CLOEXEC);
   if (fd < 0) cannot_write(path, std::strerror(errno));
   const bool written = write_all(fd, text);
   const int write_errno = errno;

@@ -63,6 +63,26 @@ TEST(OutputPaths, SolveWritesThroughAFifoToItsReader) {
   EXPECT_EQ(fs::symlink_status(fifo).type(), fs::file_type::fifo);
 }
 
+// `--json /dev/stdout > file`: /dev/stdout leads to a regular file, the shell's; the JSON goes
+// through the process's own descriptor, after the summary and before "wrote", nothing overwritten.
+TEST(OutputPaths, SolveWritesToDevStdoutRedirectedToAFile) {
+  const fs::path dir = fresh_dir("stdout");
+  const fs::path file = dir / "out.txt";
+  CliRun run = run_cli("solve " + kScene + " --json /dev/stdout > " + file.string());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  const std::string text = contents(file);
+  const auto json_start = text.find("\n{\n");
+  const auto wrote = text.find("\nwrote /dev/stdout\n");
+  ASSERT_NE(json_start, std::string::npos) << text.substr(0, 300);
+  ASSERT_NE(wrote, std::string::npos) << text.substr(text.size() - 300);
+  EXPECT_EQ(text.rfind("scene taut-string", 0), 0u);  // the summary first
+  EXPECT_EQ(nlohmann::json::parse(text.substr(json_start, wrote - json_start))["scenes"].size(),
+            1u);
+  EXPECT_EQ(fs::symlink_status(file).type(), fs::file_type::regular);
+  run = run_cli("solve " + kScene + " -q --json /dev/stdout > " + file.string());
+  EXPECT_EQ(nlohmann::json::parse(contents(file))["scenes"].size(), 1u);
+}
+
 TEST(OutputPaths, SolveFollowsASymlinkAndKeepsIt) {
   const fs::path dir = fresh_dir("symlink");
   std::ofstream(dir / "real.json") << "old\n";
@@ -108,6 +128,27 @@ TEST(OutputPaths, NoCommandOverwritesItsOwnInput) {
       << run.output;
   EXPECT_EQ(contents(dir / "suite" / "report.json"), before);
   EXPECT_EQ(contents(scene), before);
+}
+
+// The importer and `report` check the files they write in --out against their input too.
+TEST(OutputPaths, ImportAndReportDoNotOverwriteTheirInput) {
+  const fs::path dir = fresh_dir("import_report");
+  const fs::path deck = dir / "deck.txt";
+  fs::copy_file(std::string(CATENA_SOURCE_DIR) + "/docs/examples/moordyn-v2-semitaut.txt", deck);
+  const std::string text = contents(deck);
+  fs::create_directories(dir / "out");
+  fs::create_hard_link(deck, dir / "out" / "deck-line-1.toml");  // the name of a scene it writes
+  CliRun run = run_cli("import moordyn " + deck.string() + " -q --out " + (dir / "out").string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_TRUE(contains(run.output, "same file as the input " + deck.string())) << run.output;
+  EXPECT_EQ(contents(deck), text);
+  EXPECT_FALSE(fs::exists(dir / "out" / "deck-line-2-3.toml"));  // nothing written
+  std::ofstream(dir / "report.md") << "{}\n";
+  run = run_cli("report --no-figures --from " + (dir / "report.md").string() + " --out " +
+                dir.string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_TRUE(contains(run.output, "same file as the input")) << run.output;
+  EXPECT_EQ(contents(dir / "report.md"), "{}\n");
 }
 
 TEST(OutputPaths, EmptyPathsAndJobsBelowOneAreUsageErrors) {

@@ -38,7 +38,9 @@ std::string read_input_file(const std::filesystem::path& path,
 /// - a symlink to a regular file: the same, next to the link's final target, which is replaced;
 ///   the link stays a link;
 /// - a character device or FIFO (/dev/null, /dev/stdout, a named pipe): written through, opened
-///   without creating or truncating, so the node stays; a FIFO waits for its reader.
+///   without creating or truncating, so the node stays; a FIFO waits for its reader;
+/// - /dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N leading to a regular file (a shell's
+///   redirection): written through the process's own descriptor, after what it printed there.
 /// InvalidInput naming the path when it is empty, a directory, a block device, a socket, a
 /// dangling symlink or a loop, or cannot be written; the target is then left as it was and no
 /// temporary file remains.
