@@ -122,6 +122,8 @@ struct OutputTarget {
   enum class Kind { New, Regular, WriteThrough } kind = Kind::New;
   fs::path path;    // where the file is replaced (a symlink's target) or written through
   mode_t mode = 0;  // a regular file's permissions, kept when it is replaced
+  uid_t owner = 0;  // and its owner and group (run as root, the new file would be root's)
+  gid_t group = 0;
 };
 
 // Classifies `path`. A symlink is followed deliberately: users keep links such as
@@ -149,7 +151,8 @@ OutputTarget classify_output(const fs::path& path) {
     std::error_code error;
     const fs::path resolved = S_ISLNK(link.st_mode) ? fs::canonical(path, error) : path;
     if (error) cannot_write(path, error.message());
-    return {OutputTarget::Kind::Regular, resolved, static_cast<mode_t>(target.st_mode & 07777)};
+    return {OutputTarget::Kind::Regular, resolved, static_cast<mode_t>(target.st_mode & 07777),
+            target.st_uid, target.st_gid};
   }
   if (S_ISCHR(target.st_mode) || S_ISFIFO(target.st_mode) || S_ISREG(target.st_mode))
     return {OutputTarget::Kind::WriteThrough, path, 0};
@@ -208,6 +211,12 @@ void replace_atomically(const OutputTarget& target,
   std::string temporary;
   const int fd = make_temporary(directory, target.path.filename().string(), temporary, named);
   const mode_t mode = target.kind == OutputTarget::Kind::Regular ? target.mode : new_file_mode();
+  // Owner first: chown clears set-id bits, which fchmod then restores. A user who may not give
+  // the file away (not root) keeps the new file as their own, as a plain write would not; that
+  // failure is not an error.
+  if (target.kind == OutputTarget::Kind::Regular &&
+      (target.owner != ::geteuid() || target.group != ::getegid()))
+    static_cast<void>(::fchown(fd, target.owner, target.group));
   const bool written = fchmod(fd, mode) == 0 && write_all(fd, text);
   const int write_errno = errno;
   const bool closed = ::close(fd) == 0;

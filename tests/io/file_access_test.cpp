@@ -183,6 +183,16 @@ TEST(WriteFileAtomically, FollowsASymlinkReplacingItsTargetAndKeepingTheLink) {
   EXPECT_EQ(contents(dir / "runs" / "today.json"), "new\n");
   // The replaced file keeps its permissions.
   EXPECT_EQ(static_cast<int>(fs::status(dir / "runs" / "today.json").permissions()) & 0777, 0640);
+  // And, run as root, its owner: `sudo catena ... --json ~user/x.json` must not take it away.
+  if (::geteuid() == 0) {
+    ASSERT_EQ(::chown((dir / "runs" / "today.json").c_str(), 4321, 4321), 0);
+    write_file_atomically(dir / "chain.json", "newer\n");
+    struct stat after {};
+    ASSERT_EQ(::stat((dir / "runs" / "today.json").c_str(), &after), 0);
+    EXPECT_EQ(after.st_uid, 4321u);
+    EXPECT_EQ(after.st_gid, 4321u);
+    EXPECT_EQ(after.st_mode & 0777, 0640u);
+  }
   int files = 0;
   for (const auto& entry : fs::recursive_directory_iterator(dir))
     files += fs::is_regular_file(fs::symlink_status(entry.path()));

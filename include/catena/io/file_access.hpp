@@ -34,7 +34,8 @@ std::string read_input_file(const std::filesystem::path& path,
 
 /// Writes `text` to `path`:
 /// - a regular file or a new one: into a temporary file next to it, then renamed over it (parent
-///   directories created; an existing file keeps its permissions);
+///   directories created; an existing file keeps its permissions, and its owner when catena may
+///   give the file away, as root may);
 /// - a symlink to a regular file: the same, next to the link's final target, which is replaced;
 ///   the link stays a link;
 /// - a character device or FIFO (/dev/null, /dev/stdout, a named pipe): written through, opened
