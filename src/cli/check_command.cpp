@@ -244,7 +244,7 @@ void add_check_command(CLI::App& app, std::function<int()>& run) {
       ->capture_default_str();
   command
       ->add_option("--json", arguments->json,
-                   std::string("Write every number of the comparison as JSON to this file; ") +
+                   std::string("Write every number of the comparison as JSON to this file.") +
                        kOutputPathHelp)
       ->check(non_empty_path());
   command

@@ -30,9 +30,9 @@ CLI::Validator non_empty_path();
 
 /// What every output option's help says about the kinds of path it writes (file_access.hpp).
 inline constexpr const char* kOutputPathHelp =
-    "a symlink is followed (its target replaced, the link kept); a character device or\n"
-    "FIFO (/dev/null, /dev/stdout, a named pipe) is written through; a block device, socket\n"
-    "or an input file of the same run is refused";
+    "\nA symlink is followed (its target replaced, the link kept); a character device\n"
+    "or FIFO (/dev/null, /dev/stdout, a named pipe) is written through; a block\n"
+    "device, a socket or an input of the same run is refused.";
 
 /// --tolerances and --findings (empty: the tables built into the library).
 struct TableArguments {

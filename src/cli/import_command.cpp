@@ -114,9 +114,9 @@ void add_import_command(CLI::App& app, std::function<int()>& run) {
       ->check(non_empty_path());
   moordyn
       ->add_option("--out", arguments->out,
-                   std::string("Directory for the scene files (created; a scene file that\n"
-                               "exists is replaced: ") +
-                       kOutputPathHelp + ")")
+                   std::string("Directory for the scene files (created; a scene file that exists\n"
+                               "is replaced).") +
+                       kOutputPathHelp)
       ->required()
       ->check(non_empty_path());
   moordyn->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");

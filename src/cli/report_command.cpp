@@ -38,7 +38,7 @@ void add_report_command(CLI::App& app, std::function<int()>& run) {
       ->check(non_empty_path());
   command
       ->add_option("--out", arguments->out,
-                   std::string("Output directory (each file in it: ") + kOutputPathHelp + ")")
+                   std::string("Output directory. For each file written in it:") + kOutputPathHelp)
       ->capture_default_str()
       ->check(non_empty_path());
   command->add_option(

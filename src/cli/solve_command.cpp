@@ -237,7 +237,7 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
   command
       ->add_option("--json", arguments->json,
                    std::string("Write the results as JSON to this file ('-' for stdout); checked "
-                               "to be\nwritable before solving, written whole or not at all; ") +
+                               "to be\nwritable before solving, written whole or not at all.") +
                        kOutputPathHelp)
       ->check(non_empty_path());
   command->add_option(

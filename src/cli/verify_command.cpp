@@ -316,10 +316,10 @@ void add_verify_command(CLI::App& app, std::function<int()>& run) {
       ->check(non_empty_path());
   command
       ->add_option("--out", arguments->out,
-                   std::string("Directory for report.json (checked to be writable before\n"
-                               "the solving, created only when it is written; the file is "
-                               "written whole or not at all; ") +
-                       kOutputPathHelp + ")")
+                   std::string("Directory for report.json (checked to be writable before the\n"
+                               "solving, created only when it is written); the file is written\n"
+                               "whole or not at all.") +
+                       kOutputPathHelp)
       ->capture_default_str()
       ->check(non_empty_path());
   command->add_option("--filter", arguments->filter,
