@@ -4,7 +4,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "catena/core/error.hpp"
 #include "catena/io/check_report.hpp"
@@ -157,7 +159,19 @@ int run_tension_check(const CheckArguments& arguments) {
   return checked.check->any_failure() ? 1 : 0;
 }
 
+// Before any work: no output of this run may replace one of its inputs (`--json R`, a results
+// file named check.md in --out).
+void check_outputs_spare_inputs(const CheckArguments& arguments) {
+  const std::vector<std::filesystem::path> inputs{arguments.results, arguments.shapes,
+                                                  arguments.scene};
+  if (!arguments.json.empty()) check_not_an_input(arguments.json, inputs, "--json");
+  if (arguments.out.empty()) return;
+  for (const char* name : {"check.md", "check.html"})
+    check_not_an_input(std::filesystem::path(arguments.out) / name, inputs, "--out");
+}
+
 int run_check(const CheckArguments& arguments) {
+  check_outputs_spare_inputs(arguments);
   if (is_tension_results_file(arguments.results)) return run_tension_check(arguments);
   const ExternalCheckOptions options = check_options(arguments);
   if (!arguments.json.empty()) check_output_file(arguments.json);
@@ -214,11 +228,13 @@ void add_check_command(CLI::App& app, std::function<int()>& run) {
           "optional shapes (docs/how-to/check.md); or a CSV of dynamic tension along the\n"
           "line: s_m (or node with nodes), tension_std_n or tension_amplitude_n, optional\n"
           "period_s, resolution, tension_uncertainty_n (docs/how-to/check-dynamic-tension.md)")
-      ->required();
+      ->required()
+      ->check(non_empty_path());
   command
       ->add_option("--scene", arguments->scene,
                    "The scene the other program solved (TOML, docs/reference/scene-format.md)")
-      ->required();
+      ->required()
+      ->check(non_empty_path());
   command->add_option(
       "--shapes", arguments->shapes,
       "Mode shapes of CSV results, long format, one row per station: plane, mode,\n"
@@ -226,12 +242,18 @@ void add_check_command(CLI::App& app, std::function<int()>& run) {
       "(in-plane tangential and normal), v (out-of-plane) [any scale], tension_n [N]");
   command->add_option("--rtol", arguments->rtol, "Relative tolerance on frequencies")
       ->capture_default_str();
-  command->add_option("--json", arguments->json,
-                      "Write every number of the comparison as JSON to this file");
-  command->add_option(
-      "--out", arguments->out,
-      "Write check.md, check.html (self-contained) and figures/*.svg (one convergence\n"
-      "plot per mode with two or more resolutions) to this directory");
+  command
+      ->add_option("--json", arguments->json,
+                   std::string("Write every number of the comparison as JSON to this file.") +
+                       kOutputPathHelp)
+      ->check(non_empty_path());
+  command
+      ->add_option(
+          "--out", arguments->out,
+          "Write check.md, check.html (self-contained) and figures/*.svg (one convergence\n"
+          "plot per mode with two or more resolutions) to this directory (created when the\n"
+          "check is written; nothing is created when the inputs are refused)")
+      ->check(non_empty_path());
   command->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
   command->callback([arguments, &run] { run = [arguments] { return run_check(*arguments); }; });
 }

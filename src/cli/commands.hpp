@@ -23,6 +23,17 @@ void add_check_command(CLI::App& app, std::function<int()>& run);
 /// `import moordyn`: MoorDyn decks as scenes (src/cli/import_command.cpp).
 void add_import_command(CLI::App& app, std::function<int()>& run);
 
+/// For every option naming a file or directory: an empty value ("--json ''", often an unset
+/// shell variable) is a usage error naming the option (exit 2), never "no output" or "the
+/// built-in table".
+CLI::Validator non_empty_path();
+
+/// What every output option's help says about the kinds of path it writes (file_access.hpp).
+inline constexpr const char* kOutputPathHelp =
+    "\nA symlink is followed (its target replaced, the link kept); a character device\n"
+    "or FIFO (/dev/null, /dev/stdout, a named pipe) is written through; a block\n"
+    "device, a socket or an input of the same run is refused.";
+
 /// --tolerances and --findings (empty: the tables built into the library).
 struct TableArguments {
   std::string tolerances;

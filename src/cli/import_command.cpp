@@ -61,6 +61,12 @@ int run_import(const ImportArguments& arguments) {
   const MoorDynDeck deck = read_moordyn_deck(arguments.deck);
   const std::vector<ImportedScene> scenes =
       convert_moordyn_deck(deck, std::filesystem::path(arguments.deck).stem().string());
+  // Before the first file is written: no scene file may replace the deck (or any input).
+  for (const auto& scene : scenes) {
+    if (scene.reason.empty())
+      check_not_an_input(std::filesystem::path(arguments.out) / scene.file_name, {arguments.deck},
+                         "--out");
+  }
   for (const auto& scene : scenes) {
     if (scene.reason.empty())
       write_file_atomically(std::filesystem::path(arguments.out) / scene.file_name, scene.toml);
@@ -103,9 +109,16 @@ void add_import_command(CLI::App& app, std::function<int()>& run) {
       "and what became of everything else in the deck (each option, EI, outputs, free points).\n"
       "Exit 0 when the deck was read (whatever could be converted), 2 for a deck that cannot be\n"
       "read (unknown section, missing column, non-numeric value: the line is named).");
-  moordyn->add_option("deck", arguments->deck, "MoorDyn input file")->required();
-  moordyn->add_option("--out", arguments->out, "Directory for the scene files (created)")
-      ->required();
+  moordyn->add_option("deck", arguments->deck, "MoorDyn input file")
+      ->required()
+      ->check(non_empty_path());
+  moordyn
+      ->add_option("--out", arguments->out,
+                   std::string("Directory for the scene files (created; a scene file that exists\n"
+                               "is replaced).") +
+                       kOutputPathHelp)
+      ->required()
+      ->check(non_empty_path());
   moordyn->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
   moordyn->callback([arguments, &run] { run = [arguments] { return run_import(*arguments); }; });
 }

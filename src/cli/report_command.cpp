@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "catena/core/error.hpp"
+#include "catena/io/file_access.hpp"
 #include "catena/io/report.hpp"
 #include "cli/commands.hpp"
 
@@ -33,8 +34,13 @@ void add_report_command(CLI::App& app, std::function<int()>& run) {
       "report.html (self-contained, figures embedded), data/*.csv and figures/*.png.\n"
       "Figures need python3 with matplotlib; without them the report says so.");
   command->add_option("--from", arguments->from, "Results JSON written by `catena verify`")
-      ->capture_default_str();
-  command->add_option("--out", arguments->out, "Output directory")->capture_default_str();
+      ->capture_default_str()
+      ->check(non_empty_path());
+  command
+      ->add_option("--out", arguments->out,
+                   std::string("Output directory. For each file written in it:") + kOutputPathHelp)
+      ->capture_default_str()
+      ->check(non_empty_path());
   command->add_option(
       "--data", arguments->data,
       "Data dir: figures.py, reference/published, benchmarks (default: share/catena next to\n"
@@ -46,6 +52,10 @@ void add_report_command(CLI::App& app, std::function<int()>& run) {
   command->add_flag("--no-figures", arguments->no_figures, "Skip the figures");
   command->callback([arguments, &run] {
     run = [arguments] {
+      for (const char* name : {"report.md", "report.html"}) {
+        check_not_an_input(std::filesystem::path(arguments->out) / name, {arguments->from},
+                           "--out");
+      }
       ReportOptions options;
       options.out_dir = arguments->out;
       options.data_dir = arguments->data;

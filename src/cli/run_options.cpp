@@ -1,17 +1,30 @@
 // SPDX-License-Identifier: MIT
-// What `catena solve` and `catena verify` share: the tables a run checks against, and one rule for
-// the exit code.
+// What the commands share: the tables a run checks against, the check on path options, and one
+// rule for the exit code.
 #include "catena/io/findings_reader.hpp"
 #include "catena/io/tolerance_reader.hpp"
 #include "cli/commands.hpp"
 
 namespace catena::cli {
 
+CLI::Validator non_empty_path() {
+  return CLI::Validator(
+      [](std::string& value) {
+        return value.empty() ? std::string("an empty path; give a file or directory name")
+                             : std::string();
+      },
+      "", "non-empty path");
+}
+
 void add_table_options(CLI::App& command, TableArguments& tables) {
-  command.add_option("--tolerances", tables.tolerances,
-                     "Tolerance table (TOML) instead of the built-in verification/tolerances.toml");
-  command.add_option("--findings", tables.findings,
-                     "Reviewed findings (TOML) instead of the built-in verification/findings.toml");
+  command
+      .add_option("--tolerances", tables.tolerances,
+                  "Tolerance table (TOML) instead of the built-in verification/tolerances.toml")
+      ->check(non_empty_path());
+  command
+      .add_option("--findings", tables.findings,
+                  "Reviewed findings (TOML) instead of the built-in verification/findings.toml")
+      ->check(non_empty_path());
 }
 
 CLI::Option* add_time_limit_option(CLI::App& command, double& seconds, const std::string& what) {

@@ -232,10 +232,14 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
       ->add_option("scene", arguments->scene,
                    "Scene file (TOML, a regular file of at most 1 MiB; format and limits in\n"
                    "docs/reference/scene-format.md)")
-      ->required();
-  command->add_option("--json", arguments->json,
-                      "Write the results as JSON to this file ('-' for stdout); checked to be\n"
-                      "writable before solving, written whole or not at all");
+      ->required()
+      ->check(non_empty_path());
+  command
+      ->add_option("--json", arguments->json,
+                   std::string("Write the results as JSON to this file ('-' for stdout); checked "
+                               "to be\nwritable before solving, written whole or not at all.") +
+                       kOutputPathHelp)
+      ->check(non_empty_path());
   command->add_option(
       "--solver", arguments->solvers,
       "Run only this solver (repeatable): fe, shooting, frobenius, asymptotic, airy");
@@ -251,7 +255,12 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
           throw InvalidInput(fmt::format("--solver {}: unknown solver", name));
       }
       // A bad --json fails before the solving, not after it.
-      if (!arguments->json.empty() && arguments->json != "-") check_output_file(arguments->json);
+      if (!arguments->json.empty() && arguments->json != "-") {
+        check_output_file(arguments->json);
+        check_not_an_input(
+            arguments->json,
+            {arguments->scene, arguments->tables.tolerances, arguments->tables.findings}, "--json");
+      }
       const std::vector<Scene> scenes = read_scene_file(arguments->scene);
       std::vector<SceneResult> results;
       SceneRunOptions options = run_options_with_tables(arguments->tables);

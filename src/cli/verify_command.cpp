@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -233,7 +234,10 @@ int run_verify(const VerifyArguments& arguments) {
   const auto start = std::chrono::steady_clock::now();
   const auto report = std::filesystem::path(arguments.out) / "report.json";
   check_output_file(report);  // a bad --out fails now, not after the solving
-  SceneFiles files = read_all(list_scene_files(arguments.scenes), arguments.filter);
+  std::vector<std::filesystem::path> inputs = list_scene_files(arguments.scenes);
+  SceneFiles files = read_all(inputs, arguments.filter);
+  inputs.insert(inputs.end(), {arguments.tables.tolerances, arguments.tables.findings});
+  check_not_an_input(report, inputs, "--out");
   const std::vector<Scene>& scenes = files.scenes;
   if (scenes.empty() && files.unreadable.empty()) {
     throw InvalidInput(
@@ -308,15 +312,35 @@ void add_verify_command(CLI::App& app, std::function<int()>& run) {
       "scene error: the other scenes still run, the report is written, and the exit code is 2.");
   command
       ->add_option("--scenes", arguments->scenes, "Directory of scene files (searched recursively)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(non_empty_path());
   command
       ->add_option("--out", arguments->out,
-                   "Directory for report.json (checked to be writable before\n"
-                   "the solving; the file is written whole or not at all)")
-      ->capture_default_str();
+                   std::string("Directory for report.json (checked to be writable before the\n"
+                               "solving, created only when it is written); the file is written\n"
+                               "whole or not at all.") +
+                       kOutputPathHelp)
+      ->capture_default_str()
+      ->check(non_empty_path());
   command->add_option("--filter", arguments->filter,
                       "Only scenes whose name or file contains this text");
-  command->add_option("--jobs,-j", arguments->jobs, "Worker threads (default: all cores)");
+  command
+      ->add_option("--jobs,-j", arguments->jobs,
+                   "Worker threads, at least 1 (default: all cores, as many as the machine "
+                   "reports;\nthe closing line says how many ran)")
+      ->check(CLI::Validator(
+          [](std::string& value) {
+            // 0 and negatives used to mean "all cores" without saying so; a value that is not
+            // an integer is left to CLI11's own conversion error.
+            long jobs = 0;
+            const auto [end, error] =
+                std::from_chars(value.data(), value.data() + value.size(), jobs);
+            const bool integer = error == std::errc() && end == value.data() + value.size();
+            return integer && jobs < 1
+                       ? std::string("must be at least 1 (omit -j/--jobs to use all cores)")
+                       : std::string();
+          },
+          "", "at least 1"));
   command->add_flag("--quiet,-q", arguments->quiet, "Print only failures and the closing line");
   command->add_flag(
       "--mutation", arguments->mutation,

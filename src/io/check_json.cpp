@@ -5,6 +5,7 @@
 #include "catena/core/version.hpp"
 #include "catena/io/check_report.hpp"
 #include "catena/io/file_access.hpp"
+#include "io/internal/json_text.hpp"
 
 namespace catena {
 namespace {
@@ -94,7 +95,7 @@ std::string check_to_json(const ExternalCheck& check, const CheckSources& source
       {"references", references},
       {"modes", modes},
       {"failed_modes", failed}};
-  return document.dump(2);
+  return internal::json_text(document, 2);
 }
 
 void write_check_json(const std::filesystem::path& path,

@@ -17,6 +17,7 @@
 #include "io/internal/check_table.hpp"
 #include "io/internal/dynamic_tension_json.hpp"
 #include "io/internal/json_records.hpp"
+#include "io/internal/json_text.hpp"
 #include "io/internal/results_keys.hpp"
 
 namespace catena {
@@ -542,7 +543,7 @@ std::string results_to_json(const std::vector<SceneResult>& results,
                    {key::scenes, scenes},
                    {key::tolerance_reasons, reasons.list()}};
   if (mutation) document[key::mutation] = mutation_json(*mutation);
-  return indent < 0 ? document.dump() : internal::dump_records(document, indent);
+  return indent < 0 ? internal::json_text(document) : internal::dump_records(document, indent);
 }
 
 void write_results_json(const std::filesystem::path& path,

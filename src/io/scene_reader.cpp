@@ -541,6 +541,7 @@ std::vector<Scene> read_document(const toml::value& document,
   }
 
   TableReader root(document, origin, "");
+  root.known_elsewhere("sweep");  // read above, before this reader
   Scene scene;
   scene.file = file;
   scene.name = root.string("name", file.empty() ? origin : path_text(file.stem()));

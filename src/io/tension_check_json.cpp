@@ -7,6 +7,7 @@
 
 #include "catena/core/version.hpp"
 #include "catena/io/file_access.hpp"
+#include "io/internal/json_text.hpp"
 
 namespace catena {
 namespace {
@@ -97,7 +98,7 @@ std::string tension_check_to_json(const TensionCheck& check, const CheckSources&
       {"max_relative_difference", check.max_relative_difference},
       {"verdict", to_string(check.verdict)},
       {"failed", check.any_failure()}};
-  return document.dump(2);
+  return internal::json_text(document, 2);
 }
 
 void write_tension_check_json(const std::filesystem::path& path,

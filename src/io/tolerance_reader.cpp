@@ -117,6 +117,14 @@ ToleranceTable read_tolerance_document(const toml::value& document, const std::s
   for (internal::TableReader& item : root.table_array("solver"))
     solvers.push_back(read_solver(item));
   root.finish();
+  // Said here, naming the file: the run would otherwise stop at SceneRunOptions::validate(),
+  // whose message speaks to a programmer.
+  if (rules.empty()) {
+    throw ParseError(fmt::format(
+        "{}: no [[tolerance]] tables: a tolerance file gives the agreement expected of each check "
+        "(as verification/tolerances.toml does), and without any no check could run",
+        origin));
+  }
   return ToleranceTable(std::move(rules), std::move(solvers));
 }
 

@@ -5,12 +5,16 @@
 #include "catena/io/file_access.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/un.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "catena/core/error.hpp"
 #include "catena/io/scene_reader.hpp"
@@ -137,6 +141,140 @@ TEST(WriteFileAtomically, UnwritablePlacesAreInvalidInputNamingThePath) {
   for (const auto& entry : fs::recursive_directory_iterator(dir))
     entries += entry.is_regular_file();
   EXPECT_EQ(entries, 1);  // the checks leave no probe file behind
+}
+
+// Issue 32: `--json /dev/null` run as root renamed a regular file over the device node; a FIFO
+// or a symlink given as the target was replaced the same way.
+TEST(WriteFileAtomically, WritesThroughDevNullWhichStaysACharacterDevice) {
+  EXPECT_NO_THROW(check_output_file("/dev/null"));
+  EXPECT_NO_THROW(write_file_atomically("/dev/null", "{}\n"));
+  struct stat after {};
+  ASSERT_EQ(::lstat("/dev/null", &after), 0);
+  EXPECT_TRUE(S_ISCHR(after.st_mode)) << "/dev/null is no longer a character device";
+}
+
+TEST(WriteFileAtomically, WritesThroughAFifoToItsReaderAndKeepsTheFifo) {
+  const fs::path dir = fresh_dir("fifo");
+  const fs::path fifo = dir / "out.json";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+  EXPECT_NO_THROW(check_output_file(fifo));  // must not open it: there is no reader yet
+  std::string received;
+  std::thread reader([&] { received = contents(fifo); });
+  EXPECT_NO_THROW(write_file_atomically(fifo, "through the pipe\n"));
+  reader.join();
+  EXPECT_EQ(received, "through the pipe\n");
+  EXPECT_EQ(fs::symlink_status(fifo).type(), fs::file_type::fifo);
+  int entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 1);  // no temporary file next to it
+}
+
+TEST(WriteFileAtomically, FollowsASymlinkReplacingItsTargetAndKeepingTheLink) {
+  const fs::path dir = fresh_dir("symlink");
+  fs::create_directories(dir / "runs");
+  fs::create_directories(dir / "links");
+  std::ofstream(dir / "runs" / "today.json") << "old\n";
+  fs::permissions(dir / "runs" / "today.json", fs::perms(0640));
+  fs::create_symlink("../runs/today.json", dir / "links" / "latest.json");
+  fs::create_symlink("links/latest.json", dir / "chain.json");  // a link to a link
+  write_file_atomically(dir / "chain.json", "new\n");
+  EXPECT_TRUE(fs::is_symlink(dir / "chain.json"));
+  EXPECT_TRUE(fs::is_symlink(dir / "links" / "latest.json"));
+  EXPECT_EQ(contents(dir / "runs" / "today.json"), "new\n");
+  // The replaced file keeps its permissions.
+  EXPECT_EQ(static_cast<int>(fs::status(dir / "runs" / "today.json").permissions()) & 0777, 0640);
+  // And, run as root, its owner: `sudo catena ... --json ~user/x.json` must not take it away.
+  if (::geteuid() == 0) {
+    ASSERT_EQ(::chown((dir / "runs" / "today.json").c_str(), 4321, 4321), 0);
+    write_file_atomically(dir / "chain.json", "newer\n");
+    struct stat after {};
+    ASSERT_EQ(::stat((dir / "runs" / "today.json").c_str(), &after), 0);
+    EXPECT_EQ(after.st_uid, 4321u);
+    EXPECT_EQ(after.st_gid, 4321u);
+    EXPECT_EQ(after.st_mode & 0777, 0640u);
+  }
+  int files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    files += fs::is_regular_file(fs::symlink_status(entry.path()));
+  EXPECT_EQ(files, 1);  // the temporary was renamed, none left in either directory
+}
+
+TEST(WriteFileAtomically, RefusesWhatItMustNotReplaceNamingThePath) {
+  const fs::path dir = fresh_dir("refuse");
+  fs::create_symlink("nowhere.json", dir / "dangling.json");
+  expect_error<InvalidInput>([&] { write_file_atomically(dir / "dangling.json", "{}"); },
+                             {"dangling.json", "dangling symbolic link"});
+  expect_error<InvalidInput>([&] { check_output_file(dir / "dangling.json"); },
+                             {"dangling.json", "dangling symbolic link"});
+  EXPECT_FALSE(fs::exists(dir / "nowhere.json"));
+  fs::create_symlink("loop2.json", dir / "loop1.json");
+  fs::create_symlink("loop1.json", dir / "loop2.json");
+  expect_error<InvalidInput>([&] { write_file_atomically(dir / "loop1.json", "{}"); },
+                             {"loop1.json", "loop"});
+  const fs::path socket_path = dir / "socket.json";
+  const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  ASSERT_GE(fd, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  std::snprintf(address.sun_path, sizeof(address.sun_path), "%s", socket_path.c_str());
+  ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)), 0);
+  expect_error<InvalidInput>([&] { write_file_atomically(socket_path, "{}"); },
+                             {"socket.json", "a socket"});
+  expect_error<InvalidInput>([&] { check_output_file(socket_path); }, {"socket.json", "a socket"});
+  EXPECT_EQ(fs::symlink_status(socket_path).type(), fs::file_type::socket);
+  ::close(fd);
+  // A block device, where the machine has one (as root it could otherwise be overwritten).
+  for (const auto& entry : fs::directory_iterator("/dev")) {
+    if (fs::symlink_status(entry.path()).type() != fs::file_type::block) continue;
+    expect_error<InvalidInput>([&] { check_output_file(entry.path()); },
+                               {entry.path().string(), "a block device"});
+    break;
+  }
+  expect_error<InvalidInput>([] { write_file_atomically("", "{}"); }, {"an empty path"});
+  expect_error<InvalidInput>([] { check_output_file(""); }, {"an empty path"});
+  expect_error<InvalidInput>([] { check_output_directory(""); }, {"an empty path"});
+}
+
+// `catena check` with bad input left an empty --out directory behind: the checks made before the
+// work create nothing.
+TEST(CheckOutputDirectory, CreatesNothing) {
+  const fs::path dir = fresh_dir("create_nothing");
+  EXPECT_NO_THROW(check_output_directory(dir / "new" / "deeper"));
+  EXPECT_NO_THROW(check_output_file(dir / "other" / "out.json"));
+  EXPECT_FALSE(fs::exists(dir / "new"));
+  EXPECT_FALSE(fs::exists(dir / "other"));
+}
+
+// `catena solve S --json S` and `catena check R --json R` overwrote their own input.
+TEST(CheckNotAnInput, RefusesTheSameFileByAnyNameAndNamesBoth) {
+  const fs::path dir = fresh_dir("same_file");
+  const fs::path scene = dir / "scene.toml";
+  std::ofstream(scene) << "x = 1\n";
+  fs::create_hard_link(scene, dir / "hard.toml");
+  fs::create_symlink("scene.toml", dir / "soft.toml");
+  const fs::path dotted = dir / "." / "scene.toml";
+  for (const fs::path& output : {scene, dotted, dir / "hard.toml", dir / "soft.toml"}) {
+    expect_error<InvalidInput>(
+        [&] {
+          check_not_an_input(output, {"", scene}, "--json");
+        },
+        {"--json " + output.string(), "same file as the input", scene.string()});
+  }
+  std::ofstream(dir / "other.json") << "{}";
+  EXPECT_NO_THROW(check_not_an_input(dir / "other.json", {scene}, "--json"));
+  EXPECT_NO_THROW(check_not_an_input(dir / "missing.json", {scene}, "--json"));
+  EXPECT_EQ(contents(scene), "x = 1\n");
+}
+
+// A scene saved as "Unicode" by a Windows editor: a clear reason, not a TOML error of NUL bytes.
+TEST(ReadInputFile, RefusesUtf16TextSayingSo) {
+  const fs::path dir = fresh_dir("utf16");
+  std::ofstream(dir / "le.toml", std::ios::binary) << std::string("\xFF\xFEx\0=\0", 6);
+  std::ofstream(dir / "be.toml", std::ios::binary) << std::string("\xFE\xFF\0x\0=", 6);
+  for (const char* name : {"le.toml", "be.toml"}) {
+    expect_error<ParseError>([&] { read_input_file(dir / name, "scene file"); },
+                             {name, "UTF-16 text", "save the scene file as UTF-8"});
+  }
 }
 
 }  // namespace

@@ -180,5 +180,22 @@ TEST(ToleranceReader, MissingFileIsAParseErrorNamingIt) {
   }
 }
 
+// An empty --tolerances file used to pass reading and stop the run with
+// "SceneRunOptions::tolerances is empty while checks are asked", a message for programmers.
+TEST(ToleranceReader, AFileWithoutRulesIsRefusedNamingTheFile) {
+  for (const char* text : {"", "# nothing yet\n",
+                           "[[solver]]\nname = \"fe\"\nfamily = \"exact\"\naccuracy = 1e-6\n"
+                           "reason = \"r\"\n"}) {
+    try {
+      parse_tolerance_table(text, "mine.toml");
+      ADD_FAILURE() << "accepted a table without rules: '" << text << "'";
+    } catch (const ParseError& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find("mine.toml: no [[tolerance]] tables"), std::string::npos) << message;
+      EXPECT_EQ(message.find("SceneRunOptions"), std::string::npos) << message;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace catena

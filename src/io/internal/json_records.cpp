@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "io/internal/json_records.hpp"
 
+#include "io/internal/json_text.hpp"
+
 namespace catena::internal {
 namespace {
 
@@ -61,7 +63,7 @@ void append_records(const nlohmann::json& value, int indent, int depth, std::str
 
 std::string dump_records(const nlohmann::json& value, int indent) {
   std::string out;
-  append_records(value, indent, 0, out);
+  append_records(utf8_json(value), indent, 0, out);  // valid UTF-8 before any dump
   return out;
 }
 

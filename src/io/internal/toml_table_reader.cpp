@@ -81,7 +81,12 @@ std::string TableReader::where(const std::string& key) const {
                        : fmt::format("{}: [{}].{}", origin_, path_, key);
 }
 
-bool TableReader::has(const std::string& key) const { return table_.as_table().count(key) > 0; }
+bool TableReader::has(const std::string& key) const {
+  asked_.insert(key);  // a key asked about is known here, present or not
+  return table_.as_table().count(key) > 0;
+}
+
+void TableReader::known_elsewhere(const std::string& key) { asked_.insert(key); }
 
 const toml::value* TableReader::find(const std::string& key) {
   used_.insert(key);
@@ -255,8 +260,12 @@ std::vector<TableReader> TableReader::table_array(const std::string& key) {
 void TableReader::finish() const {
   for (const auto& [key, value] : table_.as_table()) {
     if (used_.count(key)) continue;
+    // Every key this reader read or asked about: the list is complete for the table, whatever
+    // was present (a table read only when present, such as [checks], asks with has()).
+    std::set<std::string> keys = asked_;
+    keys.insert(used_.begin(), used_.end());
     std::string known;
-    for (const auto& k : used_) known += (known.empty() ? "" : ", ") + k;
+    for (const auto& k : keys) known += (known.empty() ? "" : ", ") + k;
     throw ParseError(fmt::format("{}: unknown key (known here: {})", where(key), known));
   }
 }

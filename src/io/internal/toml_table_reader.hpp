@@ -31,7 +31,10 @@ class TableReader {
   TableReader(const toml::value& table, std::string origin, std::string path);
 
   std::string where(const std::string& key) const;
+  /// Whether `key` is present; the key is then known here (listed by finish()'s message).
   bool has(const std::string& key) const;
+  /// Lists `key`, read by other code than this reader, among the keys known here.
+  void known_elsewhere(const std::string& key);
   /// The value of `key` (recorded as used), or nullptr.
   const toml::value* find(const std::string& key);
   /// The value of `key`; ParseError when missing.
@@ -69,7 +72,7 @@ class TableReader {
   /// The tables of an array of tables `[[key]]` (empty when absent), each named "<key>#<n>".
   std::vector<TableReader> table_array(const std::string& key);
 
-  /// Throws ParseError for the first key never asked for.
+  /// Throws ParseError for the first key never read, listing every key read or asked about.
   void finish() const;
 
   const toml::value& value() const { return table_; }
@@ -80,6 +83,8 @@ class TableReader {
   std::string origin_;
   std::string path_;
   std::set<std::string> used_;
+  mutable std::set<std::string>
+      asked_;  // by has(): known here, but reading them is up to the caller
 };
 
 }  // namespace catena::internal

@@ -37,6 +37,8 @@ int evaluate(N_Vector u, N_Vector g, void* data) {
   }
 }
 
+void ignore_message(int, const char*, const char*, char*, void*) {}
+
 struct ContextDeleter {
   void operator()(SUNContext c) const { SUNContext_Free(&c); }
 };
@@ -79,7 +81,10 @@ FixedPointOutcome anderson_fixed_point(const std::function<Vector(const Vector&)
                         KINSetUserData(mem, &problem) == KIN_SUCCESS &&
                         KINSetFuncNormTol(mem, tolerance) == KIN_SUCCESS &&
                         KINSetNumMaxIters(mem, max_evaluations) == KIN_SUCCESS &&
-                        KINSetPrintLevel(mem, 0) == KIN_SUCCESS;
+                        KINSetPrintLevel(mem, 0) == KIN_SUCCESS &&
+                        // KINSOL's default handler prints to stderr (even under --quiet); the
+                        // reason is made from the return flag below.
+                        KINSetErrHandlerFn(mem, ignore_message, nullptr) == KIN_SUCCESS;
   if (!setup_ok) {
     out.reason = "could not set up KINSOL";
     return out;

@@ -102,10 +102,14 @@ class SundialsNonlinearSolver {
   SUNNonlinearSolver solver_ = nullptr;
 };
 
-/// Owns CVODE's integrator memory.
+/// Owns CVODE's integrator memory. CVODE's default error handler prints to stderr, under
+/// `catena --quiet` and inside Python alike; this one keeps the last message instead (the caller
+/// reports the failure from the return flag).
 class CvodeMemory {
  public:
-  CvodeMemory(int method, SUNContext context) : memory_(CVodeCreate(method, context)) {}
+  CvodeMemory(int method, SUNContext context) : memory_(CVodeCreate(method, context)) {
+    if (memory_) CVodeSetErrHandlerFn(memory_, keep, &last_message_);
+  }
   ~CvodeMemory() {
     if (memory_) CVodeFree(&memory_);
   }
@@ -113,9 +117,15 @@ class CvodeMemory {
   CvodeMemory& operator=(const CvodeMemory&) = delete;
   void* get() const { return memory_; }
   bool ok() const { return memory_ != nullptr; }
+  /// CVODE's last error or warning message ("<function>: <message>"), empty when none.
+  const std::string& last_message() const { return last_message_; }
 
  private:
+  static void keep(int, const char*, const char* function, char* message, void* user_data) {
+    *static_cast<std::string*>(user_data) = std::string(function) + ": " + message;
+  }
   void* memory_ = nullptr;
+  std::string last_message_;
 };
 
 /// Owns ARKODE's ERKStep memory (an explicit Runge-Kutta integrator).
