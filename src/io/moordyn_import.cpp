@@ -36,6 +36,7 @@ struct Topology {
 };
 
 // The point an end names ("4", "P4", "Point4", "C4"), or nullopt with `why` (rod ends, bodies).
+// At most 9 digits: point IDs are ints (moordyn_deck.cpp), so stoi cannot overflow.
 std::optional<int> end_point(const std::string& end, std::string& why) {
   std::size_t digits = 0;
   while (digits < end.size() && std::isalpha(static_cast<unsigned char>(end[digits]))) ++digits;
@@ -48,7 +49,7 @@ std::optional<int> end_point(const std::string& end, std::string& why) {
   }
   if (!(letters.empty() || letters == "P" || letters == "POINT" || letters == "C" ||
         letters == "CON") ||
-      rest.empty() || !std::all_of(rest.begin(), rest.end(), [](char c) {
+      rest.empty() || rest.size() > 9 || !std::all_of(rest.begin(), rest.end(), [](char c) {
         return std::isdigit(static_cast<unsigned char>(c));
       })) {
     why = fmt::format("end '{}' is not a point", end);
