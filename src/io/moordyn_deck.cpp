@@ -240,12 +240,14 @@ void add_option(Reader& reader, const std::vector<std::string>& words, int line)
       reader.fail(line, fmt::format("option {}: '{}' is {}", words[1], words[0],
                                     why.empty() ? "not a number" : why));
     }
-    // Catena's statics and MoorDyn both need gravity pointing down with a positive magnitude
-    // (MoorDyn's z is up; g is a magnitude), and no negative density or seabed stiffness.
-    if (names == &kGravityNames && !(*value > 0.0))
-      reader.fail(line, fmt::format("option {} = {}: gravity must be > 0 (its magnitude)", words[1],
-                                    words[0]));
-    if (names != &kGravityNames && *value < 0.0)
+    // g is a magnitude (MoorDyn's z is up): negative is a sign error. g = 0 is a deck of MoorDyn's
+    // own tests: read, and each line then not converted with the reason (moordyn_import.cpp).
+    // No negative density or seabed coefficients either.
+    if (*value < 0.0 && names == &kGravityNames)
+      reader.fail(line, fmt::format("option {} = {}: gravity must not be negative (it is a "
+                                    "magnitude; MoorDyn's z points up)",
+                                    words[1], words[0]));
+    if (*value < 0.0)
       reader.fail(line, fmt::format("option {} = {} is negative", words[1], words[0]));
   }
   reader.deck.options[name] = words[0];
@@ -474,6 +476,10 @@ void require_tables(Reader& reader, int last_line) {
   if (last_line == 0) throw InvalidInput(fmt::format("{}: empty deck (no lines)", reader.file));
   const std::pair<Section, const char*> required[] = {
       {Section::LineTypes, "LINE TYPES"}, {Section::Points, "POINTS"}, {Section::Lines, "LINES"}};
+  // A deck of rods or bodies alone is complete without lines (nothing for Catena to convert).
+  if (reader.tables[Section::Lines].section_line == 0 &&
+      (!reader.tables[Section::Rods].rows.empty() || !reader.tables[Section::Bodies].rows.empty()))
+    return;
   for (const auto& [section, name] : required) {
     const Table& table = reader.tables[section];
     // A deck whose lines end only at rods or bodies may have no POINTS section.

@@ -86,6 +86,9 @@ void find_reasons(Topology& t) {
           "BA = {} is a damping ratio, which MoorDyn applies per segment, but "
           "NumSegs = {}",
           type->axial_damping_text, line.segments);
+    // Without gravity a line has no weight and no catenary: nothing for Catena's statics.
+    if (why.empty() && !(t.deck.gravity() > 0.0))
+      why = "g = 0 in the OPTIONS: a weightless line has no catenary statics";
     if (std::count(t.deck.failing_lines.begin(), t.deck.failing_lines.end(), line.id))
       why = "may fail (FAILURE section)";
     if (!why.empty()) t.reasons[line.id] = why;

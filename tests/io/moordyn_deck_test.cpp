@@ -133,10 +133,15 @@ TEST(MoorDynDeck, RefusesNegativeMassDiameterAndVolume) {
 
 TEST(MoorDynDeck, RefusesNonPositiveGravity) {
   EXPECT_NE(refusal(replaced(deck(), "9.81     g", "-9.81     g"))
-                .find("deck.txt:16: option g = -9.81: gravity must be > 0"),
+                .find("deck.txt:16: option g = -9.81: gravity must not be negative"),
             std::string::npos);
-  EXPECT_NE(refusal(replaced(deck(), "9.81     g", "0     g")).find("deck.txt:16:"),
-            std::string::npos);
+  // g = 0 (decks of MoorDyn's own tests) reads; the line is then not converted, with the reason.
+  const MoorDynDeck weightless =
+      parse_moordyn_deck_text(replaced(deck(), "9.81     g", "0     g"), "deck.txt");
+  const auto scenes = convert_moordyn_deck(weightless, "stem");
+  ASSERT_EQ(scenes.size(), 1u);
+  EXPECT_TRUE(scenes[0].toml.empty());
+  EXPECT_NE(scenes[0].reason.find("g = 0"), std::string::npos);
   EXPECT_NE(refusal(replaced(deck(), "1025     rho", "-1025     rho")).find("deck.txt:17:"),
             std::string::npos);
 }
