@@ -107,13 +107,20 @@ void check_scene(const Layout& l, const json& scene, const std::string& where) {
   l.object(solvers, where + ".solvers");
   for (const auto& [solver, output] : solvers.items())
     check_solver(l, output, where + ".solvers." + solver);
-  const json& groups = l.member(scene, key::groups, where);
-  l.members(groups, kGroupKeys, where + ".groups");
-  if (groups.contains(key::gale)) {
-    const char* const gale[] = {key::xi1, key::xi2};
-    l.members(groups.at(key::gale), gale, where + ".groups.gale");
+  if (scene.contains(key::groups)) {
+    const json& groups = scene.at(key::groups);
+    l.members(groups, kGroupKeys, where + ".groups");
+    if (groups.contains(key::gale)) {
+      const char* const gale[] = {key::xi1, key::xi2};
+      l.members(groups.at(key::gale), gale, where + ".groups.gale");
+    }
   }
-  l.object(l.member(scene, key::statics, where), where + ".statics");
+  // The forced table divides by the statics' H: required when a solver has forced responses.
+  bool forced = false;
+  for (const auto& [solver, output] : solvers.items())
+    forced = forced || output.contains(key::forced);
+  if (forced || scene.contains(key::statics))
+    l.object(l.member(scene, key::statics, where), where + ".statics");
   if (scene.contains(key::published))
     check_published(l, scene.at(key::published), where + ".published");
 }
