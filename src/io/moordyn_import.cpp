@@ -311,6 +311,17 @@ ImportedScene convert_chain(const Topology& t,
   report_statics(d, general, scene.file_name, scene);
   scene.toml = internal::scene_header(d, name, scene.notes, moordyn_deck_notes(t.deck)) +
                internal::scene_tables(d, general);
+  // A scene Catena's own reader refuses (a deck value beyond the scene format's ranges, e.g. a
+  // coordinate of 1e20 m or a negative drag coefficient) is not written: the line is listed as not
+  // converted, with the reader's reason.
+  try {
+    parse_scene_text(scene.toml, scene.file_name);
+  } catch (const Error& error) {
+    ImportedScene not_converted;
+    not_converted.lines = scene.lines;
+    not_converted.reason = std::string("the scene would not read: ") + error.what();
+    return not_converted;
+  }
   return scene;
 }
 

@@ -182,5 +182,17 @@ TEST(ExternalResultsReader, JsonDuplicateKeysAndDeepNestingAreRefused) {
   EXPECT_EQ(modes.size(), 2u);
 }
 
+// Found by the check fuzz target: an unknown top-level key read past the end of the list of
+// known keys (std::begin and std::end of two different initializer lists): a segmentation fault.
+TEST(ExternalResultsReader, JsonUnknownTopLevelKeyIsNamed) {
+  testing::expect_invalid(
+      [&] {
+        read_external_results(file(
+            "unknown.json",
+            R"({"resultz": [], "results": [{"plane": "inplane", "mode": 1, "omega_rad_s": 1}]})"));
+      },
+      "unknown key 'resultz'");
+}
+
 }  // namespace
 }  // namespace catena

@@ -15,6 +15,9 @@ namespace {
 
 using nlohmann::json;
 
+// One array: std::begin({"results"}) and std::end({"results"}) would be two different lists (the
+// end of one is not reachable from the other: reading past it crashed on an unknown key).
+const char* const kDocumentKeys[] = {"results"};
 const char* const kItemKeys[] = {"plane",        "mode",        "resolution",
                                  "frequency_hz", "omega_rad_s", "shape"};
 const char* const kShapeKeys[] = {"s_m", "u", "w", "v", "tension_n"};
@@ -102,7 +105,7 @@ std::vector<ExternalMode> parse_results_json_text(const std::string& text,
   const json document = parse_json_strict(text, file, kMaxDepth);
   const json* list = &document;
   if (document.is_object()) {
-    reject_unknown_keys(document, std::begin({"results"}), std::end({"results"}), file);
+    reject_unknown_keys(document, std::begin(kDocumentKeys), std::end(kDocumentKeys), file);
     if (!document.contains("results"))
       throw InvalidInput(fmt::format("{}: missing 'results'", file));
     list = &document.at("results");
