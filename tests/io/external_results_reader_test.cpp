@@ -171,6 +171,13 @@ TEST(ExternalResultsReader, JsonDuplicateKeysAndDeepNestingAreRefused) {
             file("dupresults.json", R"({"results": [], "results": [{"plane": "inplane"}]})"));
       },
       "key 'results' given twice");
+  // Found by the check fuzz target: nlohmann throws out_of_range for 31e308, not parse_error.
+  testing::expect_invalid(
+      [&] {
+        read_external_results(
+            file("overflow.json", R"([{"plane": "inplane", "mode": 1, "omega_rad_s": 31e308}])"));
+      },
+      "beyond the range of double");
   const std::string deep =
       "{\"results\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
   testing::expect_invalid([&] { read_external_results(file("deep.json", deep)); },

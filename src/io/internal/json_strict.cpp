@@ -46,6 +46,9 @@ nlohmann::json parse_json_strict(const std::string& text, const std::string& fil
   } catch (const json::parse_error& error) {
     throw InvalidInput(
         fmt::format("{}: not valid JSON at byte {} (NaN is not JSON either)", file, error.byte));
+  } catch (const json::out_of_range&) {
+    // nlohmann's only out_of_range while parsing: a number literal beyond double's range (1e400).
+    throw InvalidInput(fmt::format("{}: a number beyond the range of double (over 1.8e308)", file));
   }
 }
 
