@@ -95,7 +95,7 @@ int run_fuzzer(const Arguments& a, const std::vector<catena::fuzz::SeedScene>& c
   if (!a.failures.empty()) fs::create_directories(a.failures);
   const fs::path work =
       a.work.empty() ? fs::temp_directory_path() / ("catena_input_fuzz_" + a.target_name) : a.work;
-  const auto context = catena::fuzz::make_context(a.target, work);
+  const auto context = catena::fuzz::make_context(a.target, a.corpus, work);
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed_s = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "../io/report/report_test_support.hpp"
@@ -23,24 +24,6 @@ namespace catena::fuzz {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The scene the check corpus (tests/fuzz/corpus/check) was written for: a sagging cable, cheap to
-// solve. Its references are computed once per run.
-const char* const kCheckScene = R"(name = "fuzz-check"
-[cable]
-length = 100.0
-weight = 10.0
-EA = 1e7
-mass = 1.0
-a = [0.0, 0.0]
-b = [90.0, 20.0]
-[request]
-inplane_modes = 8
-outofplane_modes = 8
-shapes = true
-tension = true
-points = 21
-)";
 
 // Seeds of the report target: two small scenes solved, with forced responses and published values.
 const char* const kReportScenes[] = {
@@ -91,6 +74,25 @@ std::string file_text(const fs::path& path) {
 
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+}
+
+// The scene the check corpus was written for (a sagging cable, cheap to solve, 8 modes per plane
+// with shapes and tension): its references are computed once per run.
+const char* const kCheckSceneFile = "scene.toml";
+
+// Wall times, as values and in messages ("[0.00441 ms]", "statics 958.2 us"), set to one value.
+void fix_wall_times(nlohmann::json& value) {
+  static const std::regex kTime(R"([0-9][0-9.]*(e[+-]?[0-9]+)? (us|ms|s)\b)");
+  if (value.is_string()) {
+    value = std::regex_replace(value.get<std::string>(), kTime, "1 ms");
+  } else if (value.is_object()) {
+    for (auto& [key, item] : value.items()) {
+      if (key == "wall_time_s") item = 0.001;
+      fix_wall_times(item);
+    }
+  } else if (value.is_array()) {
+    for (auto& item : value) fix_wall_times(item);
+  }
 }
 
 bool fuzz_moordyn(const std::string& text, std::vector<std::string>& violations) {
@@ -151,7 +153,9 @@ bool parse_input_target(const std::string& name, InputTarget& target) {
   return true;
 }
 
-InputFuzzContext make_context(InputTarget target, const fs::path& work_dir) {
+InputFuzzContext make_context(InputTarget target,
+                              const fs::path& corpus,
+                              const fs::path& work_dir) {
   InputFuzzContext context;
   context.target = target;
   context.work_dir = work_dir;
@@ -159,8 +163,7 @@ InputFuzzContext make_context(InputTarget target, const fs::path& work_dir) {
   if (target != InputTarget::Check) return context;
   SceneRunOptions run;
   run.checks = false;
-  const SceneResult solved =
-      run_scene(parse_scene_text(kCheckScene, "fuzz-check.toml").front(), run);
+  const SceneResult solved = run_scene(read_scene_file(corpus / kCheckSceneFile).front(), run);
   for (const Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
     std::string why;
     auto reference = certified_reference(solved.outputs, plane, why);
@@ -178,7 +181,15 @@ std::vector<SeedScene> input_seed_corpus(InputTarget target, const fs::path& dir
     std::vector<SceneResult> results;
     for (const char* text : kReportScenes)
       results.push_back(run_scene(parse_scene_text(text, "fuzz-report.toml").front(), run));
-    corpus.push_back({"catena-written.json", results_to_json(results)});
+    // The same seed on every machine and run: the build's identity and the wall times replaced.
+    nlohmann::json written = nlohmann::json::parse(results_to_json(results));
+    written["catena"] = {{"version", "0"},
+                         {"git", "fuzz"},
+                         {"compiler", "-"},
+                         {"build_type", "-"},
+                         {"generated_utc", "2026-01-01T00:00:00Z"}};
+    fix_wall_times(written);
+    corpus.push_back({"catena-written.json", written.dump(1)});
     corpus.push_back({"synthetic.json", catena::testing::synthetic_results().dump(1)});
     return corpus;
   }

@@ -30,9 +30,11 @@ struct InputFuzzContext {
   std::vector<CertifiedReference> references;
 };
 
-/// The context for `target` (for check: the references of the small scene the check corpus was
-/// written for, 8 modes per plane with shapes and tension).
-InputFuzzContext make_context(InputTarget target, const std::filesystem::path& work_dir);
+/// The context for `target` (for check: the references of the scene the check corpus was written
+/// for, `corpus`/scene.toml, which `catena check --scene` gets in the CLI campaign too).
+InputFuzzContext make_context(InputTarget target,
+                              const std::filesystem::path& corpus,
+                              const std::filesystem::path& work_dir);
 
 /// The seed corpus of `target`: the files under `directory` (moordyn: *.txt, check: *.csv and
 /// *.json) sorted by path; for report, results documents written by Catena itself for two small
