@@ -185,5 +185,19 @@ TEST(MoorDynImport, WritesNamesWithQuotesBackslashesAndInvalidUtf8AsValidToml) {
       << scenes[0].description;
 }
 
+// Found by the MoorDyn fuzz target: a deck value beyond the scene format's ranges (here a
+// negative CdAx, the scene's drag_tangential) gave a scene file that Catena's own reader refuses.
+// The line is now listed as not converted, with the reader's reason, and no scene is written.
+TEST(MoorDynImport, AValueTheSceneReaderRefusesLeavesTheLineNotConverted) {
+  const MoorDynDeck d =
+      parse_moordyn_deck_text(replaced(deck(), "1.0  0.4", "1.0  -0.4"), "deck.txt");
+  const auto scenes = convert_moordyn_deck(d, "stem");
+  ASSERT_EQ(scenes.size(), 1u);
+  EXPECT_TRUE(scenes[0].toml.empty());
+  EXPECT_NE(scenes[0].reason.find("the scene would not read"), std::string::npos)
+      << scenes[0].reason;
+  EXPECT_NE(scenes[0].reason.find("drag_tangential"), std::string::npos) << scenes[0].reason;
+}
+
 }  // namespace
 }  // namespace catena
