@@ -6,6 +6,16 @@ One command, fixed seed, the same mutants on every machine:
 
     python3 scripts/fuzz_campaign.py                     # 5000 mutants, seed 18, 2 at a time
     python3 scripts/fuzz_campaign.py --count 200 --build build-sanitize
+    python3 scripts/fuzz_campaign.py --target moordyn    # MoorDyn decks: catena import moordyn
+    python3 scripts/fuzz_campaign.py --target check      # results files: catena check R --scene S
+    python3 scripts/fuzz_campaign.py --target report     # results JSON: catena report --from R
+
+--target scene (the default) mutates the suite's scenes. The other targets (issue 32) mutate the seed
+files of tests/fuzz/corpus/TARGET with the same mutator (`catena_input_fuzz --emit`; the report
+target's seeds are results documents Catena writes itself) and run
+`catena import moordyn MUTANT --out DIR`, `catena check MUTANT --scene tests/fuzz/corpus/check/scene.toml`
+or `catena report --from MUTANT --out DIR --no-figures`; they have no result JSON to inspect, so
+their classes are the exit status, signals, sanitizer reports and timeouts.
 
 The mutants are made by the fuzzer's own mutator (`catena_scene_fuzz --emit`, tests/fuzz/), so
 the campaign and the in-process fuzz test share one definition of a mutation. Each mutant runs as
@@ -62,15 +72,18 @@ def parse_arguments():
                         help="seed corpus (default verification/scenes)")
     parser.add_argument("--out", default=None, help="output directory (default BUILD/fuzz-campaign)")
     parser.add_argument("--no-build", action="store_true", help="do not build catena and the fuzzer first")
+    parser.add_argument("--target", default="scene", choices=["scene", "moordyn", "check", "report"],
+                        help="what is mutated and which command reads it (default scene)")
     return parser.parse_args()
 
 
 def build_tools(arguments):
+    fuzzer_name = "catena_scene_fuzz" if arguments.target == "scene" else "catena_input_fuzz"
     if not arguments.no_build:
         subprocess.run(["cmake", "--build", arguments.build, "-j", str(arguments.jobs), "--target",
-                        "catena_cli", "catena_scene_fuzz"], check=True, stdout=subprocess.DEVNULL)
+                        "catena_cli", fuzzer_name], check=True, stdout=subprocess.DEVNULL)
     cli = os.path.join(arguments.build, "catena")
-    fuzzer = os.path.join(arguments.build, "tests", "catena_scene_fuzz")
+    fuzzer = os.path.join(arguments.build, "tests", fuzzer_name)
     for path in (cli, fuzzer):
         if not os.access(path, os.X_OK):
             sys.exit(f"fuzz_campaign: {path} not found (configure {arguments.build} with tests on)")
@@ -79,14 +92,31 @@ def build_tools(arguments):
 
 def emit_mutants(fuzzer, arguments, mutants_dir):
     shutil.rmtree(mutants_dir, ignore_errors=True)
-    subprocess.run([fuzzer, "--corpus", arguments.scenes, "--emit", mutants_dir, "--iterations",
-                    str(arguments.count), "--seed", str(arguments.seed)], check=True, stdout=subprocess.DEVNULL)
+    command = [fuzzer, "--corpus", arguments.scenes, "--emit", mutants_dir, "--iterations",
+               str(arguments.count), "--seed", str(arguments.seed)]
+    if arguments.target != "scene":
+        command = [fuzzer, "--target", arguments.target, "--corpus", corpus_dir(arguments.target)] + command[3:]
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     recipes = []
     with open(os.path.join(mutants_dir, "recipes.tsv"), encoding="utf-8", errors="replace") as table:
         for line in table:
             name, seed_scene, recipe = line.rstrip("\n").split("\t", 2)
             recipes.append((name, os.path.basename(seed_scene), recipe))
     return recipes
+
+
+def corpus_dir(target):
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    return os.path.join(root, "tests", "fuzz", "corpus", target)
+
+
+def input_command(cli, target, mutant, scratch):
+    """The CLI command that reads a mutant of another program's file (--target moordyn/check/report)."""
+    if target == "moordyn":
+        return [cli, "import", "moordyn", mutant, "--out", scratch]
+    if target == "check":
+        return [cli, "check", mutant, "--scene", os.path.join(corpus_dir("check"), "scene.toml")]
+    return [cli, "report", "--from", mutant, "--out", scratch, "--no-figures"]
 
 
 def reject_constant(token):
@@ -160,14 +190,19 @@ def check_json(path, input_has_nan):
 def run_mutant(cli, arguments, mutants_dir, json_dir, name):
     mutant = os.path.join(mutants_dir, name)
     result_path = os.path.join(json_dir, name.replace(".toml", ".json"))
+    scratch = os.path.join(json_dir, name + ".out")
     started = time.monotonic()
     try:
         command = [cli, "solve", mutant, "--json", result_path, "--quiet"]
-        if arguments.time_limit:
+        if arguments.target != "scene":
+            command = input_command(cli, arguments.target, mutant, scratch)
+        if arguments.time_limit and arguments.target == "scene":
             command += ["--time-limit", f"{arguments.time_limit:g}"]
         run = subprocess.run(command, capture_output=True, timeout=arguments.timeout)
     except subprocess.TimeoutExpired:
         return name, "timeout", f"still running after {arguments.timeout:g} s", time.monotonic() - started
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
     elapsed = time.monotonic() - started
     stderr = run.stderr.decode("utf-8", errors="replace")
     first_line = (stderr.strip().splitlines() or [""])[-1][:200]
@@ -179,6 +214,8 @@ def run_mutant(cli, arguments, mutants_dir, json_dir, name):
         return name, "exit-3", first_line, elapsed
     if run.returncode not in (0, 1, 2):
         return name, "exit-other", f"exit {run.returncode}: {first_line}", elapsed
+    if arguments.target != "scene":
+        return name, f"exit-{run.returncode}", "", elapsed
     with open(mutant, "rb") as handle:
         input_has_nan = NAN_TEXT.search(handle.read().decode("utf-8", errors="replace")) is not None
     finding = check_json(result_path, input_has_nan)
@@ -221,7 +258,7 @@ def write_reports(arguments, out_dir, mutants_dir, recipes, results, wall_s):
             shutil.copy(os.path.join(mutants_dir, name), os.path.join(seeds_dir, kind, name))
     slowest = max(results.items(), key=lambda item: item[1][2])
     with open(os.path.join(out_dir, "summary.md"), "w", encoding="utf-8") as summary:
-        summary.write(f"# Fuzz campaign: {len(recipes)} mutants, seed {arguments.seed}, "
+        summary.write(f"# Fuzz campaign ({arguments.target}): {len(recipes)} mutants, seed {arguments.seed}, "
                       f"timeout {arguments.timeout:g} s, {arguments.jobs} at a time, {wall_s:.0f} s\n\n")
         summary.write("| class | count | example (mutant, seed scene, recipe, detail) |\n|---|---:|---|\n")
         for kind in FAILURE_CLASSES + ["exit-0", "exit-1", "exit-2"]:
@@ -234,7 +271,8 @@ def write_reports(arguments, out_dir, mutants_dir, recipes, results, wall_s):
 
 def main():
     arguments = parse_arguments()
-    out_dir = arguments.out or os.path.join(arguments.build, "fuzz-campaign")
+    out_dir = arguments.out or os.path.join(
+        arguments.build, "fuzz-campaign" + ("" if arguments.target == "scene" else "-" + arguments.target))
     mutants_dir = os.path.join(out_dir, "mutants")
     cli, fuzzer = build_tools(arguments)
     started = time.monotonic()
@@ -245,7 +283,7 @@ def main():
     wall_s = time.monotonic() - started
     counts = write_reports(arguments, out_dir, mutants_dir, recipes, results, wall_s)
     failed = sum(counts.get(kind, 0) for kind in FAILURE_CLASSES)
-    print(f"fuzz campaign: {len(recipes)} mutants (seed {arguments.seed}): "
+    print(f"fuzz campaign ({arguments.target}): {len(recipes)} mutants (seed {arguments.seed}): "
           + ", ".join(f"{counts.get(kind, 0)} {kind}" for kind in FAILURE_CLASSES)
           + f"; ok: {counts.get('exit-0', 0)} exit 0, {counts.get('exit-1', 0)} exit 1, "
           f"{counts.get('exit-2', 0)} exit 2; {failed} failing; {wall_s:.0f} s; see {out_dir}/summary.md")

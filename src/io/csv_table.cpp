@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <sstream>
 
@@ -75,7 +76,10 @@ const std::string& CsvTable::text(std::size_t row, const std::string& column) co
 
 CsvTable read_csv_table(const std::filesystem::path& path) {
   // Our largest table (verification/baseline/published.csv) is under 1 MB.
-  std::istringstream in(read_input_file(path, "CSV file", 64 * kMaxInputFileBytes));
+  std::string text = read_input_file(path, "CSV file", 64 * kMaxInputFileBytes);
+  // A UTF-8 byte order mark (spreadsheets write one) is not part of the first column's name.
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+  std::istringstream in(text);
   CsvTable table;
   std::string line;
   int line_number = 0;
@@ -90,6 +94,13 @@ CsvTable read_csv_table(const std::filesystem::path& path) {
     std::vector<std::string> cells = split_cells(line);
     for (auto& cell : cells) cell = trim(cell);
     if (table.columns.empty()) {
+      // A name given twice would make every lookup read the first of them only.
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        if (std::find(cells.begin(), cells.begin() + static_cast<long>(i), cells[i]) !=
+            cells.begin() + static_cast<long>(i))
+          throw ParseError(fmt::format("{}:{}: column '{}' appears twice in the header",
+                                       path_text(path), line_number, cells[i]));
+      }
       table.columns = cells;
       continue;
     }

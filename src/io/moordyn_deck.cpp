@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -81,12 +82,28 @@ std::vector<std::string> tokens(const std::string& line) {
   return out;
 }
 
+// MoorDyn's numbers are decimal. strtod also reads hexadecimal ("0x1p3"), "nan" and "inf": those
+// are not numbers here (a value that is one is refused by name, see special_number).
 std::optional<double> number(const std::string& text) {
+  if (text.find_first_not_of("0123456789+-.eE") != std::string::npos) return std::nullopt;
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
     return std::nullopt;
   return value;
+}
+
+// Why `text` looks like a number but is not one Catena reads ("" when it does not look like one):
+// hexadecimal floats, NaN and infinities, which strtod (and so MoorDyn's atof) would accept.
+std::string special_number(const std::string& text) {
+  std::string t = lower(text);
+  if (!t.empty() && (t[0] == '+' || t[0] == '-')) t.erase(0, 1);
+  if (t.rfind("0x", 0) == 0) return "a hexadecimal number (write it in decimal)";
+  if (t.rfind("nan", 0) == 0 || t.rfind("inf", 0) == 0) return "not a finite number";
+  if (!t.empty() && (std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.') &&
+      !number(text))
+    return "not a number";
+  return "";
 }
 
 // A table section: its column names (lower case) and data rows with their file lines.
@@ -96,6 +113,7 @@ struct Table {
   bool units_seen = false;
   std::vector<std::pair<int, std::vector<std::string>>> rows;
   int header_line = 0;
+  int section_line = 0;  // the "---" line that opened it (0: the deck has no such section)
 };
 
 struct Reader {
@@ -129,8 +147,42 @@ struct Reader {
                const char* what) const {
     const std::string& text = cell(row, index, what);
     const auto parsed = number(text);
-    if (!parsed) fail(row.first, fmt::format("'{}': '{}' is not a number", what, text));
+    if (!parsed) {
+      const std::string why = special_number(text);
+      fail(row.first,
+           fmt::format("'{}': '{}' is {}", what, text, why.empty() ? "not a number" : why));
+    }
     return *parsed;
+  }
+  // A value that must not be negative (a mass, a diameter, a volume).
+  double non_negative(const std::pair<int, std::vector<std::string>>& row,
+                      std::size_t index,
+                      const char* what) const {
+    const double parsed = value(row, index, what);
+    if (parsed < 0.0)
+      fail(row.first, fmt::format("'{}' = {} is negative", what, cell(row, index, what)));
+    return parsed;
+  }
+  // An integer (an ID, a segment count): a whole number that fits an int.
+  int integer(const std::pair<int, std::vector<std::string>>& row,
+              std::size_t index,
+              const char* what) const {
+    const double parsed = value(row, index, what);
+    if (parsed != std::floor(parsed) || std::abs(parsed) > 1.0e9)
+      fail(row.first, fmt::format("'{}': '{}' is not an integer of at most 9 digits", what,
+                                  cell(row, index, what)));
+    return static_cast<int>(parsed);
+  }
+  // A cell that may be a constant or text (EA, BA: a curve file, "BA|BA_D"): a hexadecimal,
+  // NaN or infinite number is refused rather than read as a curve's name.
+  const std::string& text_or_number(const std::pair<int, std::vector<std::string>>& row,
+                                    std::size_t index,
+                                    const char* what) const {
+    const std::string& text = cell(row, index, what);
+    const std::string why = special_number(text);
+    if (!why.empty() && why != "not a number")
+      fail(row.first, fmt::format("'{}': '{}' is {}", what, text, why));
+    return text;
   }
 };
 
@@ -181,15 +233,40 @@ void add_option(Reader& reader, const std::vector<std::string>& words, int line)
   // and reported, not used (moordyn_notes.cpp).
   for (const auto* names :
        {&kGravityNames, &kDensityNames, &kBottomStiffnessNames, &kBottomDampingNames}) {
-    if (std::find(names->begin(), names->end(), name) != names->end() && !number(words[0])) {
-      reader.fail(line, fmt::format("option {}: '{}' is not a number", words[1], words[0]));
+    if (std::find(names->begin(), names->end(), name) == names->end()) continue;
+    const auto value = number(words[0]);
+    if (!value) {
+      const std::string why = special_number(words[0]);
+      reader.fail(line, fmt::format("option {}: '{}' is {}", words[1], words[0],
+                                    why.empty() ? "not a number" : why));
     }
+    // g is a magnitude (MoorDyn's z is up): negative is a sign error. g = 0 is a deck of MoorDyn's
+    // own tests: read, and each line then not converted with the reason (moordyn_import.cpp).
+    // No negative density or seabed coefficients either.
+    if (*value < 0.0 && names == &kGravityNames)
+      reader.fail(line, fmt::format("option {} = {}: gravity must not be negative (it is a "
+                                    "magnitude; MoorDyn's z points up)",
+                                    words[1], words[0]));
+    if (*value < 0.0)
+      reader.fail(line, fmt::format("option {} = {} is negative", words[1], words[0]));
   }
   reader.deck.options[name] = words[0];
   reader.deck.option_rows.push_back({words[1], words[0], line});
 }
 
-void read_lines_of_file(Reader& reader, const std::string& text) {
+// A deck is text: a NUL or another control character (other than tab, CR, form feed) means a
+// binary file or a corrupted one, refused rather than read as names.
+void refuse_binary(const Reader& reader, const std::string& line, int line_number) {
+  for (const char c : line) {
+    const auto byte = static_cast<unsigned char>(c);
+    if ((byte < 0x20 && c != '\t' && c != '\r' && c != '\f') || byte == 0x7F)
+      reader.fail(line_number,
+                  fmt::format("byte 0x{:02X}: not a text file (a MoorDyn deck is text)", byte));
+  }
+}
+
+// Reads the sections; returns the number of the last line read (0 for an empty text).
+int read_lines_of_file(Reader& reader, const std::string& text) {
   std::istringstream in(text);
   Section section = Section::Preamble;
   int line_number = 0;
@@ -197,12 +274,23 @@ void read_lines_of_file(Reader& reader, const std::string& text) {
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const auto words = tokens(line);
+    refuse_binary(reader, line, line_number);
     if (words.empty() || words[0][0] == '#' || words[0][0] == '!') continue;
     if (words[0].rfind("---", 0) == 0) {
-      std::string header = line.substr(line.find_first_not_of(" \t-"));
+      const std::size_t first = line.find_first_not_of(" \t-");
+      if (first == std::string::npos)
+        reader.fail(line_number, "a section header of dashes only (no section name)");
+      std::string header = line.substr(first);
       header = header.substr(0, header.find_last_not_of(" \t-") + 1);
       section = section_of(header, line_number, reader.file);
-      if (section == Section::End) return;
+      // A second table of the same kind would read its column names as a data row.
+      const bool read_table =
+          section == Section::LineTypes || section == Section::Points || section == Section::Lines;
+      if (read_table && reader.tables.count(section) && reader.tables[section].section_line > 0)
+        reader.fail(line_number, fmt::format("a second '{}' section (the first is at line {})",
+                                             header, reader.tables[section].section_line));
+      reader.tables[section].section_line = line_number;
+      if (section == Section::End) return line_number;
       if (section == Section::Rods) reader.deck.has_rods = true;
       if (section == Section::Bodies) reader.deck.has_bodies = true;
       continue;
@@ -214,6 +302,7 @@ void read_lines_of_file(Reader& reader, const std::string& text) {
     else if (section != Section::Preamble)
       add_table_line(reader.tables[section], words, line_number);
   }
+  return line_number;
 }
 
 void convert_types(Reader& r) {
@@ -235,13 +324,18 @@ void convert_types(Reader& r) {
   for (const auto& row : t.rows) {
     MoorDynLineType type;
     type.name = row.second[0];
-    type.diameter_m = r.value(row, diam, "Diam");
-    type.mass_kg_per_m = r.value(row, mass, "MassDen");
-    type.axial_stiffness_text = r.cell(row, ea, "EA");
+    for (const auto& other : r.deck.types) {
+      if (other.name == type.name)
+        r.fail(row.first, fmt::format("line type '{}' is defined twice (first at line {})",
+                                      type.name, other.file_line));
+    }
+    type.diameter_m = r.non_negative(row, diam, "Diam");
+    type.mass_kg_per_m = r.non_negative(row, mass, "MassDen");
+    type.axial_stiffness_text = r.text_or_number(row, ea, "EA");
     type.normal_added_mass_coefficient = r.value(row, ca, "Ca");
     type.file_line = row.first;
     type.axial_stiffness_n = number(type.axial_stiffness_text);
-    type.axial_damping_text = r.cell(row, ba, "BA");
+    type.axial_damping_text = r.text_or_number(row, ba, "BA");
     type.axial_damping = number(type.axial_damping_text);
     type.normal_drag_coefficient = r.value(row, cd, "Cd");
     type.tangential_drag_coefficient = r.value(row, cd_axial, "CdAx");
@@ -277,14 +371,19 @@ void convert_points(Reader& r) {
   const auto ca = r.column(t, {"ca"}, static_cast<int>(t.columns.size()) - 1, "CA");
   for (const auto& row : t.rows) {
     MoorDynPoint p;
-    p.id = static_cast<int>(r.value(row, 0, "ID"));
+    p.id = r.integer(row, 0, "ID");
+    for (const auto& other : r.deck.points) {
+      if (other.id == p.id)
+        r.fail(row.first,
+               fmt::format("point {} is defined twice (first at line {})", p.id, other.file_line));
+    }
     p.attachment = r.cell(row, 1, "Attachment");
     p.kind = point_kind(p.attachment);
     p.x_m = r.value(row, 2, "X");
     p.y_m = r.value(row, 3, "Y");
     p.z_m = r.value(row, 4, "Z");
-    p.mass_kg = r.value(row, mass, "Mass");
-    p.volume_m3 = r.value(row, volume, "Volume");
+    p.mass_kg = r.non_negative(row, mass, "Mass");
+    p.volume_m3 = r.non_negative(row, volume, "Volume");
     p.added_mass_coefficient = row.second.size() > ca ? r.value(row, ca, "CA") : 0.0;
     p.file_line = row.first;
     p.other_columns = other_columns(t, row, {0, 1, 2, 3, 4, mass, volume, ca});
@@ -302,10 +401,18 @@ void convert_lines(Reader& r) {
   const auto length = r.column(t, {"unstrlen", "length"}, 4, "UnstrLen");
   const auto segments = r.column(t, {"numsegs", "nsegs"}, 5, "NumSegs");
   for (const auto& row : t.rows) {
-    r.deck.lines.push_back({static_cast<int>(r.value(row, 0, "ID")), r.cell(row, type, "LineType"),
-                            r.cell(row, a, "AttachA"), r.cell(row, b, "AttachB"),
-                            r.value(row, length, "UnstrLen"),
-                            static_cast<int>(r.value(row, segments, "NumSegs")), row.first,
+    const int id = r.integer(row, 0, "ID");
+    for (const auto& other : r.deck.lines) {
+      if (other.id == id)
+        r.fail(row.first,
+               fmt::format("line {} is defined twice (first at line {})", id, other.file_line));
+    }
+    const double unstretched = r.value(row, length, "UnstrLen");
+    if (!(unstretched > 0.0))
+      r.fail(row.first, fmt::format("'UnstrLen' = {} is not positive", unstretched));
+    r.deck.lines.push_back({id, r.cell(row, type, "LineType"), r.cell(row, a, "AttachA"),
+                            r.cell(row, b, "AttachB"), unstretched,
+                            r.integer(row, segments, "NumSegs"), row.first,
                             other_columns(t, row, {0, type, a, b, length, segments})});
   }
 }
@@ -358,10 +465,40 @@ std::string MoorDynDeck::bathymetry_file() const {
 }
 
 MoorDynDeck read_moordyn_deck(const std::filesystem::path& path) {
+  return parse_moordyn_deck_text(read_input_file(path, "MoorDyn deck"), path_text(path));
+}
+
+namespace {
+
+// The sections Catena reads must be there and hold rows: an empty or cut-off file is refused
+// here, naming where it ends, instead of importing nothing with exit 0.
+void require_tables(Reader& reader, int last_line) {
+  if (last_line == 0) throw InvalidInput(fmt::format("{}: empty deck (no lines)", reader.file));
+  const std::pair<Section, const char*> required[] = {
+      {Section::LineTypes, "LINE TYPES"}, {Section::Points, "POINTS"}, {Section::Lines, "LINES"}};
+  // A deck of rods or bodies alone is complete without lines (nothing for Catena to convert).
+  if (reader.tables[Section::Lines].section_line == 0 &&
+      (!reader.tables[Section::Rods].rows.empty() || !reader.tables[Section::Bodies].rows.empty()))
+    return;
+  for (const auto& [section, name] : required) {
+    const Table& table = reader.tables[section];
+    // A deck whose lines end only at rods or bodies may have no POINTS section.
+    if (section == Section::Points && table.section_line == 0) continue;
+    if (table.section_line == 0)
+      reader.fail(last_line, fmt::format("no {} section before the end of the deck", name));
+    if (table.rows.empty())
+      reader.fail(table.section_line,
+                  fmt::format("the {} section has no data rows (a truncated deck?)", name));
+  }
+}
+
+}  // namespace
+
+MoorDynDeck parse_moordyn_deck_text(const std::string& text, const std::string& file) {
   Reader reader;
-  reader.file = path_text(path);
+  reader.file = file;
   reader.deck.file = reader.file;
-  read_lines_of_file(reader, read_input_file(path, "MoorDyn deck"));
+  require_tables(reader, read_lines_of_file(reader, text));
   convert_types(reader);
   convert_points(reader);
   convert_lines(reader);

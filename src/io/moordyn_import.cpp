@@ -36,6 +36,7 @@ struct Topology {
 };
 
 // The point an end names ("4", "P4", "Point4", "C4"), or nullopt with `why` (rod ends, bodies).
+// At most 9 digits: point IDs are ints (moordyn_deck.cpp), so stoi cannot overflow.
 std::optional<int> end_point(const std::string& end, std::string& why) {
   std::size_t digits = 0;
   while (digits < end.size() && std::isalpha(static_cast<unsigned char>(end[digits]))) ++digits;
@@ -48,7 +49,7 @@ std::optional<int> end_point(const std::string& end, std::string& why) {
   }
   if (!(letters.empty() || letters == "P" || letters == "POINT" || letters == "C" ||
         letters == "CON") ||
-      rest.empty() || !std::all_of(rest.begin(), rest.end(), [](char c) {
+      rest.empty() || rest.size() > 9 || !std::all_of(rest.begin(), rest.end(), [](char c) {
         return std::isdigit(static_cast<unsigned char>(c));
       })) {
     why = fmt::format("end '{}' is not a point", end);
@@ -85,6 +86,9 @@ void find_reasons(Topology& t) {
           "BA = {} is a damping ratio, which MoorDyn applies per segment, but "
           "NumSegs = {}",
           type->axial_damping_text, line.segments);
+    // Without gravity a line has no weight and no catenary: nothing for Catena's statics.
+    if (why.empty() && !(t.deck.gravity() > 0.0))
+      why = "g = 0 in the OPTIONS: a weightless line has no catenary statics";
     if (std::count(t.deck.failing_lines.begin(), t.deck.failing_lines.end(), line.id))
       why = "may fail (FAILURE section)";
     if (!why.empty()) t.reasons[line.id] = why;
@@ -307,6 +311,17 @@ ImportedScene convert_chain(const Topology& t,
   report_statics(d, general, scene.file_name, scene);
   scene.toml = internal::scene_header(d, name, scene.notes, moordyn_deck_notes(t.deck)) +
                internal::scene_tables(d, general);
+  // A scene Catena's own reader refuses (a deck value beyond the scene format's ranges, e.g. a
+  // coordinate of 1e20 m or a negative drag coefficient) is not written: the line is listed as not
+  // converted, with the reader's reason.
+  try {
+    parse_scene_text(scene.toml, scene.file_name);
+  } catch (const Error& error) {
+    ImportedScene not_converted;
+    not_converted.lines = scene.lines;
+    not_converted.reason = std::string("the scene would not read: ") + error.what();
+    return not_converted;
+  }
   return scene;
 }
 

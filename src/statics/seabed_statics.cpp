@@ -102,6 +102,26 @@ bool stays_off_seabed(const StaticSolution& free,
   return free.position_m(free.lowest_point_s_m()).y() >= seabed.z_m - tolerance;
 }
 
+// The contact model's one known gap, diagnosed: the touchdown falls at a point weight (a clump),
+// where the line would leave the seabed at an angle with the clump's weight shared between the
+// seabed and the suspended part. The reach residual then jumps across zero as L_g crosses the
+// point (the clump's weight is wholly on one side or the other), and no (H, L_g) closes. Bad input
+// for this model (exit 2, what to change), not a numerical failure.
+void refuse_touchdown_at_point(const Line& line, double H, double grounded_length, double miss) {
+  const double near = 1e-6 * line.length_m();
+  for (std::size_t i = 0; i < line.points.size(); ++i) {
+    const PointAttachment& point = line.points[i];
+    if (!(point.weight_n > 0.0) || std::abs(point.s_m - grounded_length) > near) continue;
+    throw InvalidInput(fmt::format(
+        "Invalid line.points[{}]: the touchdown falls at this point weight (s = {:.6g} m, weight "
+        "{:.6g} N, H = {:.6g} N; the ends miss by {:.3e} m): the clump rests on the seabed with "
+        "the line leaving it at an angle, which the seabed statics does not model (not "
+        "supported). Move the point along the line (s), change its weight, or move the fairlead "
+        "so that the touchdown falls clear of it",
+        i, point.s_m, point.weight_n, H, miss));
+  }
+}
+
 StaticSolution solve_contact(const Problem& problem, const StaticsOptions& options) {
   const Line line = problem.as_line();
   const Seabed& seabed = *problem.seabed;
@@ -117,13 +137,11 @@ StaticSolution solve_contact(const Problem& problem, const StaticsOptions& optio
   check_supported(solution, line, 1e-9 * std::max(1.0, scale));
   const double accepted = std::max(options.relative_tolerance * scale, 1e-11 * scale);
   if (!(solution.closure_error_m <= accepted) || !std::isfinite(H)) {
+    refuse_touchdown_at_point(line, H, grounded_length, solution.closure_error_m);
     solution.converged = false;
     solution.message = fmt::format(
         "Statics on the seabed did not converge: closure error {:.3e} m > {:.3e} m (H = {:.6g} N, "
-        "grounded "
-        "length {:.6g} m); the touchdown may fall on a point weight, where the line leaves the "
-        "seabed at an angle "
-        "(not supported)",
+        "grounded length {:.6g} m)",
         solution.closure_error_m, accepted, H, grounded_length);
   }
   return solution;

@@ -56,5 +56,14 @@ TEST(CsvTable, RaggedRowsAndBadNumbersAreParseErrors) {
   EXPECT_THROW(t.number(0, "a"), ParseError);
 }
 
+TEST(CsvTable, DuplicateHeaderIsAParseErrorAndAByteOrderMarkIsDropped) {
+  EXPECT_THROW(read_csv_table(write("d.csv", "a,b,a\n1,2,3\n")), ParseError);
+  const CsvTable t = read_csv_table(write("bom.csv",
+                                          "\xEF\xBB\xBF"
+                                          "a,b\n1,2\n"));
+  ASSERT_EQ(t.columns.size(), 2u);
+  EXPECT_EQ(t.columns[0], "a");
+}
+
 }  // namespace
 }  // namespace catena

@@ -138,5 +138,68 @@ TEST(ExternalResultsReader, JsonTextEqualsJsonFile) {
       "duplicate");
 }
 
+// issue 32: a header naming a column twice is refused naming it (the reader would have read the
+// first only); a spreadsheet's UTF-8 byte order mark is not part of the first column's name.
+TEST(ExternalResultsReader, CsvDuplicateColumnIsRefusedAndAByteOrderMarkIsStripped) {
+  try {
+    read_external_results(file("dup.csv", "plane,mode,omega_rad_s,mode\ninplane,1,2.0,2\n"));
+    ADD_FAILURE() << "a duplicate column was read";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("column 'mode' appears twice"), std::string::npos)
+        << error.what();
+  }
+  const auto modes =
+      read_external_results(file("bom.csv", "\xEF\xBB\xBFplane,mode,omega_rad_s\ninplane,2,3.5\n"));
+  ASSERT_EQ(modes.size(), 1u);
+  EXPECT_EQ(modes[0].mode, 2);
+  EXPECT_EQ(modes[0].omega_rad_s, 3.5);
+}
+
+// issue 32: nlohmann keeps the last of two equal keys silently; a results file with one is refused
+// naming the key, and so is one nested deeper than any results file.
+TEST(ExternalResultsReader, JsonDuplicateKeysAndDeepNestingAreRefused) {
+  testing::expect_invalid(
+      [&] {
+        read_external_results(file(
+            "dupkey.json",
+            R"({"results": [{"plane": "inplane", "mode": 1, "omega_rad_s": 1, "omega_rad_s": 2}]})"));
+      },
+      "key 'omega_rad_s' given twice");
+  testing::expect_invalid(
+      [&] {
+        read_external_results(
+            file("dupresults.json", R"({"results": [], "results": [{"plane": "inplane"}]})"));
+      },
+      "key 'results' given twice");
+  // Found by the check fuzz target: nlohmann throws out_of_range for 31e308, not parse_error.
+  testing::expect_invalid(
+      [&] {
+        read_external_results(
+            file("overflow.json", R"([{"plane": "inplane", "mode": 1, "omega_rad_s": 31e308}])"));
+      },
+      "beyond the range of double");
+  const std::string deep =
+      "{\"results\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
+  testing::expect_invalid([&] { read_external_results(file("deep.json", deep)); },
+                          "nested deeper than");
+  // The same key in two different objects is fine.
+  const auto modes = read_external_results(file(
+      "two.json",
+      R"({"results": [{"plane": "inplane", "mode": 1, "omega_rad_s": 1}, {"plane": "inplane", "mode": 2, "omega_rad_s": 2}]})"));
+  EXPECT_EQ(modes.size(), 2u);
+}
+
+// Found by the check fuzz target: an unknown top-level key read past the end of the list of
+// known keys (std::begin and std::end of two different initializer lists): a segmentation fault.
+TEST(ExternalResultsReader, JsonUnknownTopLevelKeyIsNamed) {
+  testing::expect_invalid(
+      [&] {
+        read_external_results(file(
+            "unknown.json",
+            R"({"resultz": [], "results": [{"plane": "inplane", "mode": 1, "omega_rad_s": 1}]})"));
+      },
+      "unknown key 'resultz'");
+}
+
 }  // namespace
 }  // namespace catena

@@ -119,9 +119,16 @@ struct MoorDynDeck {
   std::string bathymetry_file() const;
 };
 
-/// Reads a deck. InvalidInput naming the file and line for an unknown section, a table without
-/// the columns it needs, a value that is not a number, or an option value that is not a number
-/// where Catena uses it; ParseError when the file cannot be read.
+/// Reads a deck. InvalidInput naming the file and line for: a byte that is not text (a binary
+/// file), an empty deck, an unknown section or a header of dashes only, a missing or empty LINE
+/// TYPES or LINES section (a truncated deck), a table without the columns it needs, a value that
+/// is not a decimal number (hexadecimal, NaN and infinities included), a negative diameter, mass
+/// or volume, a non-positive UnstrLen, an ID or NumSegs that is not an integer, a line type,
+/// point or line defined twice, or an option Catena uses that is not a number (g <= 0, negative
+/// density or seabed coefficients); ParseError when the file cannot be read.
 MoorDynDeck read_moordyn_deck(const std::filesystem::path& path);
+
+/// The same, from the deck's text; `file` names it in messages.
+MoorDynDeck parse_moordyn_deck_text(const std::string& text, const std::string& file);
 
 }  // namespace catena

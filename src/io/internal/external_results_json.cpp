@@ -8,12 +8,16 @@
 #include "catena/core/error.hpp"
 #include "catena/io/external_results_reader.hpp"
 #include "catena/io/file_access.hpp"
+#include "io/internal/json_strict.hpp"
 
 namespace catena::internal {
 namespace {
 
 using nlohmann::json;
 
+// One array: std::begin({"results"}) and std::end({"results"}) would be two different lists (the
+// end of one is not reachable from the other: reading past it crashed on an unknown key).
+const char* const kDocumentKeys[] = {"results"};
 const char* const kItemKeys[] = {"plane",        "mode",        "resolution",
                                  "frequency_hz", "omega_rad_s", "shape"};
 const char* const kShapeKeys[] = {"s_m", "u", "w", "v", "tension_n"};
@@ -96,12 +100,12 @@ std::vector<ExternalMode> read_external_results_json(const std::filesystem::path
 
 std::vector<ExternalMode> parse_results_json_text(const std::string& text,
                                                   const std::string& file) {
-  const json document = json::parse(text, nullptr, false);
-  if (document.is_discarded())
-    throw InvalidInput(fmt::format("{}: not valid JSON (NaN is not JSON either)", file));
+  // A results file is 4 levels deep ({"results": [{"shape": {"u": [...]}}]}).
+  constexpr int kMaxDepth = 32;
+  const json document = parse_json_strict(text, file, kMaxDepth);
   const json* list = &document;
   if (document.is_object()) {
-    reject_unknown_keys(document, std::begin({"results"}), std::end({"results"}), file);
+    reject_unknown_keys(document, std::begin(kDocumentKeys), std::end(kDocumentKeys), file);
     if (!document.contains("results"))
       throw InvalidInput(fmt::format("{}: missing 'results'", file));
     list = &document.at("results");

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/internal/toml_text.hpp"
+
 namespace catena::internal {
 namespace {
 
@@ -112,10 +114,12 @@ std::string scene_header(const ChainDescription& d,
   out += "# What became of the rest of the deck:\n";
   for (const auto& note : deck_notes)
     out += fmt::format("#   {}: {} - {}\n", note.item, note.fate, note.detail);
-  return out + fmt::format(
-                   "name = \"{}\"\ndescription = \"MoorDyn line(s) {} of {}\"\ntags = "
-                   "[\"moordyn-import\"]\n\n",
-                   name, lines, d.deck_file);
+  // The deck's names and its file name are another program's text: escaped, and made valid
+  // UTF-8, before they enter the scene (toml_text.hpp).
+  return toml_comment_text(out) +
+         fmt::format("name = {}\ndescription = {}\ntags = [\"moordyn-import\"]\n\n",
+                     toml_string(name),
+                     toml_string(fmt::format("MoorDyn line(s) {} of {}", lines, d.deck_file)));
 }
 
 namespace {

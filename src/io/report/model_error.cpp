@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 
 #include "catena/io/csv_table.hpp"
@@ -186,7 +187,9 @@ void add_by_eps_table(Document& out, const PointGroup& groups) {
   for (const auto& [what, points] : groups) {
     std::map<double, std::vector<const ErrorPoint*>> by_eps;
     for (const ErrorPoint* p : points)
-      by_eps[std::stod(fmt::format("{:.3g}", p->eps))].push_back(p);
+      // strtod, not stod: a subnormal eps (a results file may hold 1e-308) is a value, not an
+      // out_of_range exception (found by the report fuzz target).
+      by_eps[std::strtod(fmt::format("{:.3g}", p->eps).c_str(), nullptr)].push_back(p);
     for (const auto& [eps, list] : by_eps) {
       std::vector<double> errors;
       std::map<std::string, int> scenes;

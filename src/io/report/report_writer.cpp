@@ -6,7 +6,9 @@
 #include "catena/io/report.hpp"
 #include "io/internal/check_table.hpp"
 #include "io/internal/data_dir.hpp"
+#include "io/internal/json_strict.hpp"
 #include "io/report/figures.hpp"
+#include "io/report/results_layout.hpp"
 #include "io/report/sections.hpp"
 
 namespace catena {
@@ -18,18 +20,20 @@ json read_results(const std::filesystem::path& results_json) {
   // The suite's report.json is about 10 MB (far more with shapes asked); a regular file is required
   // (not a FIFO or device).
   constexpr std::uintmax_t kMaxResultsBytes = std::uintmax_t(4) << 30;
-  json document =
-      json::parse(read_input_file(results_json, "results JSON", kMaxResultsBytes), nullptr, false);
-  if (document.is_discarded() || !document.contains(internal::key::scenes)) {
-    throw ParseError(
-        fmt::format("{}: not a catena results JSON (no \"scenes\")", path_text(results_json)));
-  }
+  // A results JSON is about 8 levels deep (scenes, a scene, solvers, a solver, a plane, modes, a
+  // mode, its shape): deeper is not one, and the report's walks are recursive.
+  constexpr int kMaxDepth = 64;
+  const std::string file = path_text(results_json);
+  json document = internal::parse_json_strict(
+      read_input_file(results_json, "results JSON", kMaxResultsBytes), file, kMaxDepth);
+  if (!document.is_object() || !document.contains(internal::key::scenes))
+    throw ParseError(fmt::format("{}: not a catena results JSON (no \"scenes\")", file));
   try {
     internal::expand_check_tables(document);  // the report reads checks as records
   } catch (const nlohmann::json::exception& e) {
-    throw ParseError(
-        fmt::format("{}: malformed check table: {}", path_text(results_json), e.what()));
+    throw ParseError(fmt::format("{}: malformed check table: {}", file, e.what()));
   }
+  internal::check_results_layout(document, file);
   return document;
 }
 
@@ -66,8 +70,12 @@ void add_figures(internal::Document& out,
 
 }  // namespace
 
-ReportFiles write_report(const std::filesystem::path& results_json, const ReportOptions& options) {
-  const json document = read_results(results_json);
+namespace {
+
+// write_report once the document is read and its layout checked.
+ReportFiles write_report_from(const std::filesystem::path& results_json,
+                              const json& document,
+                              const ReportOptions& options) {
   check_output_directory(options.out_dir);
   ReportFiles files;
   files.data_dir = options.out_dir / "data";
@@ -95,6 +103,22 @@ ReportFiles write_report(const std::filesystem::path& results_json, const Report
   write_file_atomically(files.markdown, internal::render_markdown(report, options.out_dir));
   write_file_atomically(files.html, internal::render_html(report, "Catena verification report"));
   return files;
+}
+
+}  // namespace
+
+ReportFiles write_report(const std::filesystem::path& results_json, const ReportOptions& options) {
+  const json document = read_results(results_json);
+  try {
+    return write_report_from(results_json, document, options);
+  } catch (const nlohmann::json::exception& e) {
+    // check_results_layout checks what the report reads without asking; a value of another type
+    // than the one it is read as still ends here, as bad input rather than an internal error.
+    throw ParseError(
+        fmt::format("{}: a value of the wrong type ({}; not the layout `catena verify` "
+                    "writes)",
+                    path_text(results_json), e.what()));
+  }
 }
 
 }  // namespace catena

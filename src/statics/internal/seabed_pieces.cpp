@@ -118,6 +118,12 @@ double append_anchor_stretch(std::vector<StaticPiece>& pieces,
                              double grounded_length_m) {
   const double slack = slack_end(line, friction, H, grounded_length_m);
   const std::vector<double> cuts = grounded_cuts(line, slack, grounded_length_m);
+  // A friction so large that the tensioned stretch before the touchdown, H / (friction w), is
+  // within the merge distance of L_g: that stretch's elastic elongation (below H merge / EA) is
+  // beyond rounding, and the piece's tension, H - friction W with friction W >> H, would be a
+  // difference of huge numbers (issue 32: friction 1e12 failed to close). The grounded part is
+  // then slack.
+  const bool all_slack = slack >= grounded_length_m - merge_distance(line);
   double x = 0.0;
   for (std::size_t i = 0; i + 1 < cuts.size() && grounded_length_m > 0.0; ++i) {
     const std::size_t k = segment_index(line, cuts[i]);
@@ -126,8 +132,9 @@ double append_anchor_stretch(std::vector<StaticPiece>& pieces,
                       Vec2(x, seabed_offset_z_m),           x};
     piece.grounded = true;
     piece.grounded_tension_begin_n =
-        H - friction * grounded_weight_beyond(line, cuts[i], grounded_length_m);
-    piece.grounded_tension_slope_n_per_m = friction * piece.section.weight_n_per_m;
+        all_slack ? 0.0 : H - friction * grounded_weight_beyond(line, cuts[i], grounded_length_m);
+    piece.grounded_tension_slope_n_per_m =
+        all_slack ? 0.0 : friction * piece.section.weight_n_per_m;
     x += grounded_stretched_increment(piece, length);
     pieces.push_back(piece);
   }

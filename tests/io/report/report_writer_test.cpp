@@ -13,6 +13,8 @@
 #include "catena/io/report.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/io/tolerance_reader.hpp"
+#include "io/report/results_layout.hpp"
+#include "report_test_support.hpp"
 
 namespace catena {
 namespace {
@@ -71,6 +73,55 @@ TEST(ReportWriter, BadResultsFileIsAParseError) {
   options.figures = false;
   EXPECT_THROW(write_report(bad, options), ParseError);
   EXPECT_THROW(write_report("/nonexistent.json", options), ParseError);
+}
+
+// issue 32, item 9: results files that are JSON but not what `catena verify` writes were internal
+// errors (exit 3). Each is now a catena::Error naming the file and the place.
+TEST(ReportWriter, MalformedResultsFilesAreBadInputNamingThePlace) {
+  const fs::path dir = fs::temp_directory_path() / "catena_report_malformed";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string meta = R"("catena": {"version": "1"}, )";
+  const std::string scene =
+      R"({"name": "s", "error": null, "checks": [], "groups": {"eps": 0.1, "chord_angle_deg": 0,)"
+      R"( "lambda2": 1, "mass_ratio": 1}, "statics": {}, "solvers": )";
+  const std::pair<std::string, std::string> cases[] = {
+      {R"({"scenes": null})", "\"catena\""},
+      {"{" + meta + R"("scenes": null})", "scenes: not an array"},
+      {"{" + meta + R"("scenes": [{}]})", "scenes[0]: no \"name\""},
+      {"{" + meta + R"("scenes": [)" + scene + R"({"fe": null}}]})",
+       "scenes[0].solvers.fe: not an object"},
+      {"{\"scenes\": " + std::string(200000, '[') + std::string(200000, ']') + "}",
+       "nested deeper than"},
+      {"{" + meta + R"("scenes": [)" + scene +
+           R"({"fe": {"summary": {}, "inplane": {"modes": [1]}}}}]})",
+       "scenes[0].solvers.fe.inplane.modes[0]: not an object"},
+      {"{" + meta + R"("scenes": [)" + scene +
+           R"({}, "published": [{"quantity": "inplane_frequency", "modes": [-1], "values": [1]}]}]})",
+       "published[0].modes: -1 is not a whole number"},
+      {"{" + meta + R"("scenes": [], "scenes": []})", "key 'scenes' given twice"},
+      {"{" + meta + R"("scenes": [)" + scene + R"({}, "tags": 3}]})", "wrong type"},
+  };
+  ReportOptions options;
+  options.out_dir = dir / "out";
+  options.figures = false;
+  for (std::size_t i = 0; i < std::size(cases); ++i) {
+    const fs::path path = dir / ("case" + std::to_string(i) + ".json");
+    std::ofstream(path) << cases[i].first;
+    try {
+      write_report(path, options);
+      ADD_FAILURE() << "case " << i << " was read";
+    } catch (const Error& error) {
+      EXPECT_NE(std::string(error.what()).find(cases[i].second), std::string::npos)
+          << "case " << i << ": " << error.what();
+    }
+  }
+}
+
+// The layout check accepts the hand-written document of the section tests (every verdict, a
+// declined solver, a scene error, published entries) and a document Catena wrote (above).
+TEST(ReportWriter, LayoutCheckAcceptsTheHandWrittenResults) {
+  EXPECT_NO_THROW(internal::check_results_layout(testing::synthetic_results(), "synthetic"));
 }
 
 }  // namespace

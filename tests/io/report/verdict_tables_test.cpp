@@ -142,5 +142,19 @@ TEST(ModelError, FitsTheOrderOfAnExactPowerLawAndWritesEveryPoint) {
   std::filesystem::remove_all(dir);
 }
 
+// Found by the report fuzz target: a subnormal eps (1e-308 in a results file) made the by-eps
+// table's rounding (std::stod of "1e-308") throw out_of_range: an internal error.
+TEST(ModelError, ASubnormalEpsIsARowNotAnException) {
+  json document = {{"scenes", json::array()}};
+  for (double eps : {1e-308, 0.01, 0.1}) document["scenes"].push_back(model_scene(eps));
+  const auto dir = std::filesystem::temp_directory_path() / "catena_model_error_subnormal";
+  Document out;
+  EXPECT_NO_THROW(add_model_error(out, document, dir));
+  const auto t = tables(out);
+  ASSERT_EQ(t.size(), 2u);
+  EXPECT_EQ(t[1].rows.size(), 3u);  // one row per eps, the subnormal one included
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace catena::internal
