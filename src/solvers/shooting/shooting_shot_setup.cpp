@@ -54,4 +54,24 @@ void set_axial_frame(const ShootingCoefficients& k, RhsData& data) {
   data.to_axial_force = Eigen::Vector2d(1.0 / sigma, 1.0).asDiagonal() * rotation_t;
 }
 
+// The normal compliance of the carried system is B_n = T_ref (1 + e) / T, about 1 for a small
+// static strain but ~T_ref / EA once the strain exceeds 1: balancing as if B_n were 1 left the
+// carried Phi ~1e5 times larger than F at T0/EA = 7.5e5 (taut_inclined eps = 0.1, lambda^2 =
+// 1e-8), the phase turned in bursts the stepper stepped over, the conjugate-point count went wrong
+// and shooting returned a false double root 0.35 % off (49 % at lambda^2 = 1e-9, a rejected count
+// at 1e-10). Balancing with b = max(1, T_ref / EA) (the strain at the reference tension, the
+// largest) keeps the phase rate sqrt(B C) uniform; b = 1 below a strain of 1 keeps the shots of
+// every ordinary cable bit for bit what they were.
+void set_balance(const ShootingCoefficients& k, double omega_scaled, bool balance, RhsData& data) {
+  data.kappa2 = 1.0;
+  data.balance_moves = false;
+  if (!balance) return;
+  double max_compliance = k.compliance;
+  for (const ShootingPiece& p : k.pieces) max_compliance = std::max(max_compliance, p.compliance);
+  const double b = std::max(1.0, k.t_ref * max_compliance);
+  const double rate = omega_scaled * std::sqrt(b);
+  data.kappa2 = std::max(rate, 1.0) / b;
+  data.balance_moves = rate > 1.0;
+}
+
 }  // namespace catena::internal
