@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "solvers/shooting/shooting_integrator.hpp"
 
@@ -27,13 +28,11 @@ std::vector<Break> breaks_of(const ShootingCoefficients& k, bool from_b) {
   return breaks;
 }
 
-// The axial frame of the header: a constant rotation to the mean tangent (the bisector of the
-// end tangents) and the axial stretch sigma.
-void set_axial_frame(const ShootingCoefficients& k, RhsData& data) {
-  // The tangent angle is monotone on each piece: its extremes are at the piece ends.
+// The extreme tangent angles over the pieces [rad]: the tangent angle is monotone on each piece,
+// so its extremes are at the piece ends.
+static std::pair<double, double> tangent_angle_range(const ShootingCoefficients& k) {
   double theta_a = std::atan2(k.V_A, k.H);
   double theta_b = std::atan2(k.vertical_force(k.length_m), k.H);
-  double max_compliance = 0.0;
   for (const ShootingPiece& p : k.pieces) {
     const double ends[2] = {std::atan2(p.V_begin, k.H),
                             std::atan2(p.V_begin + p.W0 * (p.s_end - p.s_begin), k.H)};
@@ -41,8 +40,21 @@ void set_axial_frame(const ShootingCoefficients& k, RhsData& data) {
       theta_a = std::min(theta_a, theta);
       theta_b = std::max(theta_b, theta);
     }
-    max_compliance = std::max(max_compliance, p.compliance);
   }
+  return {theta_a, theta_b};
+}
+
+double tangent_turn_rad(const ShootingCoefficients& k) {
+  const auto [theta_a, theta_b] = tangent_angle_range(k);
+  return std::abs(theta_b - theta_a);
+}
+
+// The axial frame of the header: a constant rotation to the mean tangent (the bisector of the
+// end tangents) and the axial stretch sigma.
+void set_axial_frame(const ShootingCoefficients& k, RhsData& data) {
+  const auto [theta_a, theta_b] = tangent_angle_range(k);
+  double max_compliance = 0.0;
+  for (const ShootingPiece& p : k.pieces) max_compliance = std::max(max_compliance, p.compliance);
   const double theta_c = 0.5 * (theta_a + theta_b);
   const double sigma = axial_stretch(k.t_ref * max_compliance, 0.5 * std::abs(theta_b - theta_a));
   // A cable whose axial component is within kMinAxialStretch of the normal one keeps its digits in

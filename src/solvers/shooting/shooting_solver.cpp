@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -27,6 +28,7 @@
 #include "solvers/shooting/shooting_integrator.hpp"
 #include "solvers/shooting/shooting_modes.hpp"
 #include "solvers/shooting/shooting_root_finder.hpp"
+#include "solvers/shooting/shooting_shot_setup.hpp"
 
 namespace catena {
 
@@ -309,6 +311,40 @@ void ShootingNumerics::describe(SolverSummary& summary) const {
   if (auto note = seabed_model_note(context_.statics, how)) summary.notes.push_back(*note);
 }
 
+// In plane, the modes of a nearly straight cable depend on the stretching its curvature causes:
+// the axial displacement, a difference of the shot's components of relative size ~ the angle the
+// tangent turns through (the axial frame, shooting_integrator.hpp, stretches it by at most
+// kMaxAxialStretch = 1e8). Rounding of those components reaches the frequencies as about
+// u / turn, which the error estimate (a re-shot at tighter tolerances) does not see: measured
+// against eq. (21) (taut_inclined eps 1e-12 to 1e-6, phi_a 10 to 89 deg, lambda^2 1e-4 to 100,
+// issue 32) the error is at most 0.33 u / turn, and 36 u / turn (a 23 % error) at a turn of
+// 1.7e-14 rad. The estimate is therefore at least kInplaneRoundingFactor u / turn, and the plane
+// declines above kMaxInplaneRoundingFloor. A straight line (turn 0: H = 0) decouples exactly.
+constexpr double kInplaneRoundingFactor = 1.0;  // 3x the largest measured 0.33
+constexpr double kMaxInplaneRoundingFloor = 1e-3;
+
+double inplane_rounding_floor(const ShootingCoefficients& k) {
+  const double turn = tangent_turn_rad(k);
+  if (turn == 0.0) return 0.0;
+  return kInplaneRoundingFactor * std::numeric_limits<double>::epsilon() / 2.0 / turn;
+}
+
+void apply_rounding_floor(double floor, double turn, ModalResult& result) {
+  if (floor <= 0.0) return;
+  bool raised = false;
+  for (Mode& mode : result.modes) {
+    if (mode.relative_error_estimate < 0.0 || mode.relative_error_estimate >= floor) continue;
+    mode.relative_error_estimate = floor;
+    raised = true;
+  }
+  if (!raised) return;
+  result.summary.max_error_estimate = std::max(result.summary.max_error_estimate, floor);
+  result.summary.notes.push_back(fmt::format(
+      "in-plane error estimates raised to the rounding floor {:.2g} = {} u / (tangent turn {:.3g} "
+      "rad): the stretching of a nearly straight cable is known only to that",
+      floor, kInplaneRoundingFactor, turn));
+}
+
 // Frequencies (and shapes, tension) of one plane. A straight (vertical, H = 0) inextensible
 // cable: the axial direction is rigid, det Phi(L) vanishes identically, and the in-plane problem
 // is the transverse string alone, which is the out-of-plane equation for the normal displacement.
@@ -324,6 +360,16 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
         "straight inextensible cable: in-plane modes are the transverse string modes (normal "
         "displacement w, u = 0); the axial direction is rigid and its constant dynamic tension is "
         "statically indeterminate (reported as 0)");
+  }
+  const double floor = plane == Plane::InPlane && !string_only ? inplane_rounding_floor(k_) : 0.0;
+  if (floor > kMaxInplaneRoundingFloor) {
+    summary.termination = Termination::NotApplicable;
+    summary.message = fmt::format(
+        "Not applicable: in plane, the static tangent turns by only {:.3g} rad along the line, so "
+        "the stretching that sets the in-plane modes is a difference of the shot's components "
+        "known to about {:.2g} relative (rounding / turn), above the {:.0e} this solver reports",
+        tangent_turn_rad(k_), floor, kMaxInplaneRoundingFloor);
+    return result;
   }
   const Plane integration_plane = string_only ? Plane::OutOfPlane : plane;
   std::optional<ShootingIntegrator> integrator;
@@ -351,6 +397,7 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
   try {
     const std::vector<Root> roots = finder.find(count, summary.warnings, &meter);
     add_modes(*integrator, roots, plane, count, result);
+    apply_rounding_floor(floor, tangent_turn_rad(k_), result);
   } catch (const ShootingFailure& failure) {
     mark_failed(plane, failure, k_, summary);
     summary.iterations = finder.shots();
