@@ -35,7 +35,7 @@ def test_statics_of_another_fairlead_is_refused(solver):
     (dict(damping_normal_n_s_per_m2=1.0), "cable.damping.normal_n_s_per_m2"),
     (dict(diameter_m=0.1, drag_normal=1.2), "cable.drag.diameter_m"),
     (dict(b_m=(900.0, 300.000001)), "supports.b_m"),
-    (dict(a_m=(0.0, -49.0), b_m=(900.0, 301.0)), r"supports.a_m\[1\]"),
+    (dict(a_m=(0.0, -49.0), b_m=(900.0, 301.0)), r"supports.a_m = \(0, -(50|49)\) m here"),
     (dict(seabed=catena.Seabed(-60.0)), r"seabed (present|absent) here, (absent|present) in the statics"),
 ])
 def test_each_field_changed_alone_is_named(other, field):

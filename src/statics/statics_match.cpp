@@ -119,14 +119,18 @@ void compare_seabed(Differences& d, const Problem& problem, const StaticSolution
 // two chords within the closure have the same statics, and any farther apart do not).
 void compare_supports(Differences& d, const Problem& problem, const StaticSolution& statics) {
   d.set_part("other supports");
-  const Vec2 a = statics.position_m(0.0);
-  d.compare("supports.a_m[0]", problem.supports.a_m.x(), a.x());
-  d.compare("supports.a_m[1]", problem.supports.a_m.y(), a.y());
   const double L = problem.length_m();
   const Vec2 chord = problem.supports.chord_m();
-  const Vec2 end = statics.offset_m(L);
   constexpr double kRoundings = 64.0 * std::numeric_limits<double>::epsilon();
-  const double tolerance = 2.0 * statics.closure_error_m + kRoundings * std::max(L, chord.norm());
+  const double rounding = kRoundings * std::max({L, chord.norm(), problem.supports.a_m.norm()});
+  // r(0) is a plus the offset at s = 0, which a statics built from pieces may round to 1e-14.
+  const Vec2 a = statics.position_m(0.0);
+  if (!((a - problem.supports.a_m).norm() <= rounding)) {
+    d.mismatch(fmt::format("supports.a_m = ({}, {}) m here, ({}, {}) m in the statics",
+                           problem.supports.a_m.x(), problem.supports.a_m.y(), a.x(), a.y()));
+  }
+  const Vec2 end = statics.offset_m(L);
+  const double tolerance = 2.0 * statics.closure_error_m + rounding;
   if (!((end - chord).norm() <= tolerance)) {
     const Vec2 b = problem.supports.a_m + end;
     d.mismatch(fmt::format(

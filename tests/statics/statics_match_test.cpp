@@ -58,7 +58,8 @@ TEST(StaticsMatch, EachFieldChangedAloneIsNamed) {
   const std::pair<std::function<void(Problem&)>, std::string> changes[] = {
       {[](Problem& q) { q.supports.b_m = Vec2(800.0, 300.0); }, "supports.b_m = (900, 300) m here"},
       {[](Problem& q) { q.supports.b_m.y() += 1e-6; }, "supports.b_m"},
-      {[](Problem& q) { q.supports.a_m.x() += 1.0, q.supports.b_m.x() += 1.0; }, "supports.a_m[0]"},
+      {[](Problem& q) { q.supports.a_m.x() += 1.0, q.supports.b_m.x() += 1.0; },
+       "supports.a_m = (0, 0) m here, (1, 0) m"},
       {[](Problem& q) { q.cable.length_m = 1001.0; }, "cable.length_m = 1000 here, 1001"},
       {[](Problem& q) { q.cable.weight_n_per_m = 999.0; }, "cable.weight_n_per_m"},
       {[](Problem& q) { q.cable.axial_stiffness_n = 4e8; }, "cable.axial_stiffness_n"},
