@@ -70,7 +70,10 @@ TEST(ShootingAccuracy, TautCableAtEps1e5FirstInPlaneModeHoldsAtDefaults) {
       solve_problem(solve_asymptotic, problem, modes_request(6, 0), AsymptoticSolverOptions{});
   ASSERT_EQ(defaults.output.summary.termination, Termination::Converged)
       << defaults.output.summary.message;
-  ASSERT_EQ(reference.output.summary.termination, Termination::Converged);
+  // The reference's own target (1.1e-12 at rtol 1e-13) lies below the in-plane rounding floor
+  // u / (tangent turn 8.7e-6) = 1.3e-11 (docs/explanation/methods/shooting.md), so it may report
+  // no-convergence; its modes stay usable, and far more accurate than the 1e-9 compared here.
+  ASSERT_TRUE(reference.output.summary.is_usable()) << reference.output.summary.message;
   ASSERT_TRUE(model.output.inplane && model.output.inplane->modes.size() == 6u);
   const auto& ours = defaults.output.inplane->modes;
   for (std::size_t i = 0; i < ours.size(); ++i) {
