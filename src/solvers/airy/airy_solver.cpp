@@ -334,7 +334,7 @@ ModalResult AiryNumerics::inplane_modes(int count) const {
     declined.summary.message = fmt::format(
         "Not applicable: in plane, eps cos(phi_a) = {:.3g}: the Airy arguments grow as its inverse "
         "and their phases cancel, leaving the roots known to about {:.2g} relative (> {:.0e}; "
-        "errors up to 50 % measured below eps = 1e-9)",
+        "errors of 35 % to 100 % measured at eps cos(phi_a) <= 1e-10)",
         c.groups.eps * std::cos(c.groups.chord_angle_rad), inplane_rounding_, kMaxInplaneRounding);
     return declined;
   }
