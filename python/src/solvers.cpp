@@ -10,9 +10,8 @@
 
 #include "bindings.hpp"
 #include "catena/core/error.hpp"
-#include "catena/models/line.hpp"
-#include "catena/models/seabed.hpp"
 #include "catena/solvers/solver_registry.hpp"
+#include "catena/statics/statics_match.hpp"
 
 namespace catena::python {
 namespace {
@@ -67,51 +66,10 @@ const SolverEntry& solver_named(const std::string& name) {
   throw InvalidInput(fmt::format("solver \"{}\": unknown solver (known: {})", name, known));
 }
 
-// Damping does not change the statics, but a solver may take the line's dynamic coefficients
-// (damping, the seabed's foundation) from the copy the statics holds (shooting does): given
-// statics must therefore hold the problem's, or the solve would use another line's.
-bool same_damping(const SectionDamping& a, const SectionDamping& b) {
-  return a.tangential_n_s_per_m2 == b.tangential_n_s_per_m2 &&
-         a.normal_n_s_per_m2 == b.normal_n_s_per_m2 && a.axial_n_s == b.axial_n_s;
-}
-
-bool same_segment(const LineSegment& a, const LineSegment& b) {
-  return a.length_m == b.length_m && a.weight_n_per_m == b.weight_n_per_m &&
-         a.axial_stiffness_n == b.axial_stiffness_n && a.mass_kg_per_m == b.mass_kg_per_m &&
-         a.added_mass_kg_per_m == b.added_mass_kg_per_m && same_damping(a.damping, b.damping);
-}
-
-bool same_seabed(const Seabed& a, const Seabed& b) {
-  return a.z_m == b.z_m && a.friction == b.friction &&
-         a.stiffness_n_per_m2 == b.stiffness_n_per_m2 &&
-         a.tangential_stiffness_n_per_m2 == b.tangential_stiffness_n_per_m2 &&
-         a.damping_n_s_per_m2 == b.damping_n_s_per_m2;
-}
-
-bool same_point(const PointAttachment& a, const PointAttachment& b) {
-  return a.s_m == b.s_m && a.mass_kg == b.mass_kg && a.weight_n == b.weight_n &&
-         a.tangential_added_mass_kg() == b.tangential_added_mass_kg() &&
-         a.normal_added_mass_kg() == b.normal_added_mass_kg() &&
-         a.outofplane_added_mass_kg() == b.outofplane_added_mass_kg();
-}
-
-// The line the statics was solved for is the problem's (a uniform cable is a one-segment line).
-bool same_line(const Line& a, const Line& b) {
-  return std::equal(a.segments.begin(), a.segments.end(), b.segments.begin(), b.segments.end(),
-                    same_segment) &&
-         std::equal(a.points.begin(), a.points.end(), b.points.begin(), b.points.end(), same_point);
-}
-
-// Given statics must belong to the problem's cable (or line) and be usable for dynamics.
+// Given statics must be the problem's equilibrium (every field it was solved for, compared by the
+// one check the solver driver makes too: catena/statics/statics_match.hpp) and usable for dynamics.
 void check_given_statics(const Problem& problem, const StaticSolution& statics) {
-  const bool seabed_matches = problem.seabed.has_value() == statics.has_seabed() &&
-                              (!problem.seabed || same_seabed(*problem.seabed, statics.seabed()));
-  if (!seabed_matches) throw InvalidInput("statics: solved for another seabed than problem.seabed");
-  if (!same_line(problem.as_line(), statics.line())) {
-    throw InvalidInput(fmt::format(
-        "statics: solved for another {} than problem.{} (use catena.solve_statics(problem))",
-        problem.is_uniform() ? "cable" : "line", problem.is_uniform() ? "cable" : "line"));
-  }
+  check_statics_match(problem, statics);
   if (!statics.converged) throw InvalidInput("statics: did not converge (" + statics.message + ")");
 }
 

@@ -3,9 +3,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <tuple>
+#include <vector>
 
 namespace catena {
 namespace {
@@ -15,12 +18,33 @@ bool is_value_check(const CheckResult& check) {
          check.check == "dynamic-tension";
 }
 
-// Per group: the number of values compared and whether every pair so far was bit-identical.
+// Per group: the number of values compared, whether every pair so far was bit-identical, and the
+// values (for the string-limit test below).
 struct IdentityGroup {
   const CheckResult* first = nullptr;
   int values = 0;
   bool identical = true;
+  std::vector<double> list;
 };
+
+// A list of frequencies that are whole multiples of the lowest, each to a few roundings: the
+// spectrum of a string, omega_n = n omega_1, the limit every exact and asymptotic formula reaches
+// as the sag vanishes (eps -> 0). Two independent formulas there evaluate the same closed form and
+// may round alike to the last bit (asymptotic's WKB and airy's Bessel string at eps <= 1e-7, issue
+// 32): their coincidence is that of the known limit, not evidence of shared code. A shared code
+// path away from the limit gives values that are not all harmonics and is still flagged.
+bool is_harmonic_series(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const double first = values.front();
+  if (!(first > 0.0)) return false;
+  // n omega_1 and the n-th root each carry a few roundings: 8 ulp of the value.
+  constexpr double kRoundings = 8.0 * std::numeric_limits<double>::epsilon();
+  for (const double v : values) {
+    const double n = std::round(v / first);
+    if (n < 1.0 || std::abs(v - n * first) > kRoundings * v) return false;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -46,10 +70,12 @@ std::vector<CheckResult> identity_checks(const std::vector<CheckResult>& checks)
     ++group.values;
     // Bit-identical, not merely close: two independent computations never round alike over a list.
     group.identical = group.identical && check.value_a == check.value_b;
+    group.list.push_back(check.value_a);
   }
   std::vector<CheckResult> flags;
   for (const auto& [key, group] : groups) {
     if (group.values < 2 || !group.identical) continue;
+    if (std::get<0>(key) == "frequency" && is_harmonic_series(group.list)) continue;
     CheckResult flag;
     flag.scene = group.first->scene;
     flag.check = kIdentityCheck;
@@ -58,10 +84,15 @@ std::vector<CheckResult> identity_checks(const std::vector<CheckResult>& checks)
     flag.value_a = flag.value_b = std::nan("");
     flag.measured = group.values;
     flag.verdict = Verdict::Fail;
+    const std::string& plane = std::get<2>(key);
     flag.detail = fmt::format(
-        "all {} {} values of {} are bit-identical: two values from shared code, a check "
-        "that cannot fail (declare the shared computation in SolverEntry::computations)",
-        group.values, std::get<0>(key), flag.compare);
+        "{}: all {} {}{} values are bit-identical. Two independent computations almost never "
+        "round alike over a whole list (exact harmonics n omega_1, the string limit, excepted), so "
+        "these values most likely come from the same code: the pair is one witness, not two, and "
+        "its checks could not have failed. If the two solvers share the computation, declare it "
+        "in SolverEntry::computations (the pair is then not compared); if they should be "
+        "independent, find the code they share",
+        flag.compare, group.values, plane.empty() ? "" : plane + " ", std::get<0>(key));
     flags.push_back(std::move(flag));
   }
   return flags;

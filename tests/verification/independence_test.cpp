@@ -93,6 +93,48 @@ TEST(Independence, IdentityDetectorFlagsAWholeListOfBitIdenticalValues) {
   EXPECT_TRUE(identity_checks({identical[0], other_plane}).empty());
 }
 
+// Issue 32: at eps <= 1e-7 two independent exact string formulas (a WKB quadrature and a Bessel
+// solution) both return omega_n = n omega_1 to the last bit. The values below are those of the
+// taut_inclined eps = 1e-7 scene out of plane: n pi / sqrt(1 + e0), e0 = 7.5e-11, computed as
+// n times the first (as a closed form does) and as the n-th multiple rounded once more (as a root
+// finder lands on it).
+TEST(Independence, IdentityDetectorLeavesTheStringLimitsHarmonicsAlone) {
+  const double first = 3.14159265347;
+  std::vector<CheckResult> harmonics;
+  for (int n = 1; n <= 4; ++n) {
+    const double v = n % 2 ? n * first : std::nextafter(n * first, 0.0);
+    harmonics.push_back(value_check("frequency", n, v, v));
+  }
+  EXPECT_TRUE(identity_checks(harmonics).empty());
+  // Missing modes are still harmonics (n = 1, 3).
+  EXPECT_TRUE(identity_checks({harmonics[0], harmonics[2]}).empty());
+}
+
+// A test double of a real shared computation: bit-identical values off the string limit (the
+// in-plane frequencies of a sagging cable are no harmonic series), and harmonics that are not
+// frequencies (tension amplitudes), are still flagged, with a message that says what was seen.
+TEST(Independence, IdentityDetectorStillCatchesSharedCodeOffTheStringLimit) {
+  const std::vector<CheckResult> shared = {
+      value_check("frequency", 1, 3.14160555418, 3.14160555418),
+      value_check("frequency", 2, 6.28318530718, 6.28318530718),
+      value_check("frequency", 3, 9.42477843857, 9.42477843857)};
+  const auto flags = identity_checks(shared);
+  ASSERT_EQ(flags.size(), 1u);
+  EXPECT_NE(flags[0].detail.find("x vs y: all 3 in-plane frequency values are bit-identical"),
+            std::string::npos)
+      << flags[0].detail;
+  EXPECT_NE(flags[0].detail.find("SolverEntry::computations"), std::string::npos);
+  // One value off a harmonic by more than rounding (1e-12 relative) is no string limit either.
+  EXPECT_EQ(identity_checks({value_check("frequency", 1, 1.0, 1.0),
+                             value_check("frequency", 2, 2.0 + 2e-12, 2.0 + 2e-12)})
+                .size(),
+            1u);
+  EXPECT_EQ(
+      identity_checks({value_check("tension", 1, 1.0, 1.0), value_check("tension", 2, 2.0, 2.0)})
+          .size(),
+      1u);
+}
+
 TEST(Independence, TallyCountsIdentityFlagsAndSharedSkips) {
   SceneResult result;
   result.checks =

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "catena/core/error.hpp"
@@ -126,6 +127,23 @@ double airy_frequency_determinant(const Problem& problem,
 namespace internal {
 namespace {
 
+// In plane, the Airy arguments grow as 1 / (eps cos phi_a) as the sag vanishes, and the boundary
+// determinant is a difference of their phases: rounding reaches the roots as about u / (eps cos
+// phi_a), far above the model error eps^2 and the root tolerance. Measured against eq. (21)
+// (asymptotic, exact to O(eps^2) + rounding there: taut_inclined eps 1e-12 to 1e-6, phi_a 10 to
+// 89 deg, lambda^2 1e-4 to 100, issue 32): at most 1.4 u / (eps cos phi_a) wherever that is below
+// 1e-7, but errors of 35 % to 100 % at 1.1e-6 (lambda^2 = 1e-4) and above. The estimate is at least
+// kInplaneRoundingFactor u / (eps cos phi_a); the plane declines above kMaxInplaneRounding of the
+// bare term.
+constexpr double kInplaneRoundingFactor = 4.0;
+constexpr double kMaxInplaneRounding = 4e-7;  // kInplaneRoundingFactor x the measured 1e-7
+
+double inplane_rounding_floor(const DimensionlessGroups& groups) {
+  const double turn = groups.eps * std::cos(groups.chord_angle_rad);
+  if (!(turn > 0.0)) return 0.0;  // declined elsewhere (horizontal and vertical chords)
+  return kInplaneRoundingFactor * 0.5 * std::numeric_limits<double>::epsilon() / turn;
+}
+
 // The numerics of the airy solver for one problem: the Airy determinant's roots in plane, the
 // Bessel modes of the linear-tension string out of plane (airy_tension_string.hpp).
 class AiryNumerics final : public SolverNumerics {
@@ -138,7 +156,8 @@ class AiryNumerics final : public SolverNumerics {
         inplane_model_error_(context.groups.eps * context.groups.eps +
                              0.5 * static_strain(context.problem, context.groups)),
         root_error_(std::ldexp(1.0, 1 - options.tolerance_bits)),
-        inplane_error_estimate_(std::max(inplane_model_error_, root_error_)) {}
+        inplane_rounding_(inplane_rounding_floor(context.groups)),
+        inplane_error_estimate_(std::max({inplane_model_error_, root_error_, inplane_rounding_})) {}
 
   std::optional<std::string> not_applicable() const override {
     if (auto reason = uniform_cable_only(context_.problem, "the Airy boundary-layer solution"))
@@ -186,6 +205,7 @@ class AiryNumerics final : public SolverNumerics {
   AirySolverOptions options_;
   double inplane_model_error_;
   double root_error_;
+  double inplane_rounding_;
   double inplane_error_estimate_;
 };
 
@@ -308,6 +328,16 @@ void AiryNumerics::set_inplane_outcome(int found,
 
 ModalResult AiryNumerics::inplane_modes(int count) const {
   const SolveContext& c = context_;
+  if (inplane_rounding_ > kMaxInplaneRounding) {
+    ModalResult declined;
+    declined.summary.termination = Termination::NotApplicable;
+    declined.summary.message = fmt::format(
+        "Not applicable: in plane, eps cos(phi_a) = {:.3g}: the Airy arguments grow as its inverse "
+        "and their phases cancel, leaving the roots known to about {:.2g} relative (> {:.0e}; "
+        "errors of 35 % to 100 % measured at eps cos(phi_a) <= 1e-10)",
+        c.groups.eps * std::cos(c.groups.chord_angle_rad), inplane_rounding_, kMaxInplaneRounding);
+    return declined;
+  }
   const AiryModel model = build_airy_model(c.problem, c.statics, c.groups, options_.curvature_fit,
                                            options_.quadrature_panels);
   WorkMeter meter(c, "airy", "in-plane modes", count);

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
@@ -368,8 +369,22 @@ ModalResult AsymptoticNumerics::inplane_modes(int count) const {
   const DimensionlessGroups& groups = context_.groups;
   ModalResult result;
   long iterations = 0;
-  const std::vector<double> roots =
+  std::vector<double> roots =
       eq21_roots_counted(count, groups.eps, groups.chord_angle_rad, groups.lambda2, iterations);
+  const double axial_kl =
+      first_axial_k_l(groups.eps, groups.chord_angle_rad, groups.lambda2, groups.mass_ratio);
+  // Eq. (21) assumes quasi-static stretching and has no axial modes, while the exact spectrum has
+  // its first axial mode near axial_kl: every root above it is compared with the wrong index and
+  // is off by the spacing of the modes (issue 32: mode 4 at kL/pi = 4, 8 % off, and mode 5 29 %
+  // off, at lambda^2 = 0.1, strain 0.098, where the axial mode is at kL/pi = 3.69). Measured
+  // against fe (taut_inclined phi 30 deg, lambda^2 0.1, 1, 10, strain 1e-3 to 0.098, 14 modes):
+  // every root up to 0.97 of axial_kl is within the estimate, the first above it (1.04) is not. The
+  // roots from kMaxAxialFraction of axial_kl on are not returned.
+  constexpr double kMaxAxialFraction = 0.9;
+  const auto first_beyond = std::find_if(
+      roots.begin(), roots.end(), [&](double kl) { return kl >= kMaxAxialFraction * axial_kl; });
+  const std::size_t declined = static_cast<std::size_t>(roots.end() - first_beyond);
+  roots.erase(first_beyond, roots.end());
   const Vector stations = context_.request.stations_m(context_.problem.cable.length_m);
   for (std::size_t i = 0; i < roots.size(); ++i) {
     result.modes.push_back(inplane_mode(static_cast<int>(i) + 1, roots[i], stations));
@@ -384,8 +399,15 @@ ModalResult AsymptoticNumerics::inplane_modes(int count) const {
   summary.iterations = iterations;
   summary.max_error_estimate = error_estimate_;
   add_character_notes(roots, summary);
-  const double axial_kl =
-      first_axial_k_l(groups.eps, groups.chord_angle_rad, groups.lambda2, groups.mass_ratio);
+  if (declined > 0) {
+    summary.termination = roots.empty() ? Termination::NotApplicable : Termination::NoConvergence;
+    summary.message = fmt::format(
+        "{}: {} of {} in-plane modes; the next root of eq. (21) lies at or above {} of the first "
+        "axial mode kL/pi = {:.4g}, which eq. (21) lacks (quasi-static stretching): beyond it the "
+        "exact spectrum holds the axial modes too, so its modes are not computed here",
+        roots.empty() ? "Not applicable" : "No convergence", roots.size(), count, kMaxAxialFraction,
+        axial_kl / kPi);
+  }
   if (!roots.empty() && roots.back() > 0.25 * axial_kl) {
     summary.warnings.push_back(fmt::format(
         "top kL/pi = {:.4g} exceeds a quarter of the first axial mode kL/pi = {:.4g}: eq. (21) "

@@ -8,6 +8,7 @@
 #include <exception>
 
 #include "catena/core/error.hpp"
+#include "catena/statics/statics_match.hpp"
 #include "solvers/common/dynamic_tension.hpp"
 #include "solvers/common/result_validation.hpp"
 #include "solvers/common/work_meter.hpp"
@@ -129,6 +130,8 @@ SolverOutput drive_solver(const std::string& solver,
                           SolverNumerics& numerics) {
   context.request.validate();
   context.problem.validate();
+  // Statics of another problem would give "converged" numbers for the wrong cable (issue 32).
+  check_statics_match(context.problem, context.statics);
   const auto start = Clock::now();
   SolverOutput output;
   output.solver = solver;

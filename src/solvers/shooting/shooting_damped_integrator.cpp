@@ -203,7 +203,7 @@ DampedShot DampedShootingIntegrator::Impl::shoot(Complex lambda,
   data.lambda = lambda;
   // The balancing of the undamped shot with Omega = |lambda| L sqrt(M / T_ref).
   const double omega_scaled = std::abs(lambda) * k.length_m * std::sqrt(k.M / k.t_ref);
-  data.kappa2 = settings.balance ? std::max(omega_scaled, 1.0) : 1.0;
+  set_balance(k, omega_scaled, settings.balance, data);
   data.from_b = from_b;
   data.piece = from_b ? k.pieces.size() - 1 : 0;
   breaks = breaks_of(k, from_b);

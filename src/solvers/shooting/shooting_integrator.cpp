@@ -246,7 +246,7 @@ void ShootingIntegrator::Impl::begin_shot(double omega,
   if (slope_shot && !with_slope) with_slope = make_stepper(true);
   stepper = slope_shot ? with_slope.get() : plain.get();
   data.omega2 = data.coefficients.scaled_omega2(omega);
-  data.kappa2 = settings.balance ? std::max(std::sqrt(data.omega2), 1.0) : 1.0;
+  set_balance(data.coefficients, std::sqrt(data.omega2), settings.balance, data);
   data.from_b = from_b;
   data.piece = from_b ? data.coefficients.pieces.size() - 1 : 0;
   breaks = breaks_of(data.coefficients, from_b);
@@ -455,10 +455,10 @@ void ShootingIntegrator::Impl::set_slopes(Shot& shot,
                                           const Square<D>& F) const {
   const Eigen::Map<const Basis<D>> S(stepper->state() + 2 * D * D + 1);
   const double to_slope = 1.0 / (data.slope_scale * shot.omega_rad_s);  // S -> dY/dw
-  // The balancing kappa^2 = max(Omega, 1) moves with w as well (kappa ~ sqrt(w) above 1): the
+  // The balancing kappa^2 moves with w as well (kappa ~ sqrt(w) where balance_moves): the
   // carried Phi~ = kappa Phi^ and F~ = F^ / kappa gain +-(dkappa/dw / kappa) = +-1/(2 w) of
   // themselves, so that the slopes are those of the function the shots evaluate.
-  const double balance_rate = data.kappa2 > 1.0 ? 0.5 / shot.omega_rad_s : 0.0;
+  const double balance_rate = data.balance_moves ? 0.5 / shot.omega_rad_s : 0.0;
   const Square<D> dPhi = to_slope * S.template topRows<D>() + balance_rate * Phi;
   const Square<D> dF = to_slope * S.template bottomRows<D>() - balance_rate * F;
   const Square<D> G = Phi.transpose() * Phi + F.transpose() * F;

@@ -29,4 +29,14 @@ std::vector<Break> breaks_of(const ShootingCoefficients& k, bool from_b);
 /// the identity when sigma < kMinAxialStretch).
 void set_axial_frame(const ShootingCoefficients& k, RhsData& data);
 
+/// The angle the static tangent turns through along the line, max - min over the pieces [rad].
+double tangent_turn_rad(const ShootingCoefficients& k);
+
+/// The balancing of a shot (shooting_integrator.hpp, "Balancing") at the scaled frequency
+/// Omega = w L sqrt(M / T_ref): kappa^2 = max(r, 1) / b with the normal compliance scale
+/// b = max(1, T_ref / EA) and the phase rate r = Omega sqrt(b), set in `data` (kappa2 and
+/// balance_moves, true where kappa^2 moves with w, i.e. r > 1). For a static strain below 1 this
+/// is kappa^2 = max(Omega, 1).
+void set_balance(const ShootingCoefficients& k, double omega_scaled, bool balance, RhsData& data);
+
 }  // namespace catena::internal

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -27,6 +28,7 @@
 #include "solvers/shooting/shooting_integrator.hpp"
 #include "solvers/shooting/shooting_modes.hpp"
 #include "solvers/shooting/shooting_root_finder.hpp"
+#include "solvers/shooting/shooting_shot_setup.hpp"
 
 namespace catena {
 
@@ -309,6 +311,59 @@ void ShootingNumerics::describe(SolverSummary& summary) const {
   if (auto note = seabed_model_note(context_.statics, how)) summary.notes.push_back(*note);
 }
 
+// In plane, the modes of a nearly straight cable depend on the stretching its curvature causes:
+// the axial displacement, a difference of the shot's components of relative size ~ the angle the
+// tangent turns through (the axial frame, shooting_integrator.hpp, stretches it by at most
+// kMaxAxialStretch = 1e8). Rounding of those components reaches the stretching as about
+// u / turn, and the frequencies in proportion to how much the stretching moves them, about
+// min(1, lambda^2 / pi^2) with Irvine's lambda^2 = turn^2 EA / T (Irvine's symmetric modes); the
+// error estimate (a re-shot at tighter tolerances) sees none of it. Measured against eq. (21)
+// (taut_inclined eps 1e-12 to 1e-6, phi_a 10 to 89 deg, lambda^2 1e-4 to 100, issue 32): the error
+// is at most 0.33 of this floor, and 36 times it (a 23 % error) at a turn of 1.7e-14 rad. The
+// estimate is therefore at least kInplaneRoundingFactor times the floor, and the plane declines
+// where the bare u / turn exceeds kMaxInplaneRoundingFloor. A straight line (turn 0) decouples
+// exactly.
+constexpr double kInplaneRoundingFactor = 1.0;  // 3x the largest measured 0.33
+constexpr double kMaxInplaneRoundingFloor = 1e-3;
+
+// u / turn, and the floor: that times min(1, lambda^2 / pi^2) (with the stiffest section's EA,
+// the larger lambda^2) and kInplaneRoundingFactor.
+struct RoundingFloor {
+  double per_turn = 0.0;
+  double floor = 0.0;
+};
+
+RoundingFloor inplane_rounding_floor(const ShootingCoefficients& k) {
+  const double turn = tangent_turn_rad(k);
+  if (turn == 0.0) return {};
+  double min_compliance = kInfinity;
+  for (const ShootingPiece& p : k.all_pieces())
+    min_compliance = std::min(min_compliance, p.compliance);
+  const double lambda2 =
+      min_compliance > 0.0 ? turn * turn / (k.t_ref * min_compliance) : kInfinity;
+  RoundingFloor r;
+  r.per_turn = 0.5 * std::numeric_limits<double>::epsilon() / turn;
+  r.floor = kInplaneRoundingFactor * r.per_turn * std::min(1.0, lambda2 / (kPi * kPi));
+  return r;
+}
+
+void apply_rounding_floor(double floor, double turn, ModalResult& result) {
+  if (floor <= 0.0) return;
+  bool raised = false;
+  for (Mode& mode : result.modes) {
+    if (mode.relative_error_estimate < 0.0 || mode.relative_error_estimate >= floor) continue;
+    mode.relative_error_estimate = floor;
+    raised = true;
+  }
+  if (!raised) return;
+  result.summary.max_error_estimate = std::max(result.summary.max_error_estimate, floor);
+  result.summary.notes.push_back(fmt::format(
+      "in-plane error estimates raised to the rounding floor {:.2g} ({} u / (tangent turn {:.3g} "
+      "rad) x min(1, lambda^2 / pi^2)): the stretching of a nearly straight cable is known only "
+      "to that",
+      floor, kInplaneRoundingFactor, turn));
+}
+
 // Frequencies (and shapes, tension) of one plane. A straight (vertical, H = 0) inextensible
 // cable: the axial direction is rigid, det Phi(L) vanishes identically, and the in-plane problem
 // is the transverse string alone, which is the out-of-plane equation for the normal displacement.
@@ -324,6 +379,17 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
         "straight inextensible cable: in-plane modes are the transverse string modes (normal "
         "displacement w, u = 0); the axial direction is rigid and its constant dynamic tension is "
         "statically indeterminate (reported as 0)");
+  }
+  const RoundingFloor rounding =
+      plane == Plane::InPlane && !string_only ? inplane_rounding_floor(k_) : RoundingFloor{};
+  if (rounding.per_turn > kMaxInplaneRoundingFloor) {
+    summary.termination = Termination::NotApplicable;
+    summary.message = fmt::format(
+        "Not applicable: in plane, the static tangent turns by only {:.3g} rad along the line, so "
+        "the stretching that sets the in-plane modes is a difference of the shot's components "
+        "known to about {:.2g} relative (rounding / turn), above the {:.0e} this solver reports",
+        tangent_turn_rad(k_), rounding.per_turn, kMaxInplaneRoundingFloor);
+    return result;
   }
   const Plane integration_plane = string_only ? Plane::OutOfPlane : plane;
   std::optional<ShootingIntegrator> integrator;
@@ -351,6 +417,7 @@ ModalResult ShootingNumerics::modes(Plane plane, int count) {
   try {
     const std::vector<Root> roots = finder.find(count, summary.warnings, &meter);
     add_modes(*integrator, roots, plane, count, result);
+    apply_rounding_floor(rounding.floor, tangent_turn_rad(k_), result);
   } catch (const ShootingFailure& failure) {
     mark_failed(plane, failure, k_, summary);
     summary.iterations = finder.shots();

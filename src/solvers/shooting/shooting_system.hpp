@@ -31,10 +31,14 @@ struct RhsData {
   ShootingCoefficients coefficients;
   int dimension = 2;
   double omega2 = 0.0;  // scaled Omega^2
-  // Symplectic rescaling Phi~ = kappa Phi^, F~ = F^ / kappa with kappa^2 = max(Omega, 1): it
-  // balances B and C for the transverse wave, so that the phase turns at a nearly uniform rate
+  // Symplectic rescaling Phi~ = kappa Phi^, F~ = F^ / kappa with kappa^2 = max(Omega, 1) below a
+  // static strain of 1 (set_balance, shooting_shot_setup.hpp): it balances B and C for the
+  // transverse wave, so that the phase turns at a nearly uniform rate
   // (a Pruefer angle of unbalanced variables turns in bursts and costs CVODE many steps).
   double kappa2 = 1.0;
+  // True where kappa^2 moves with w (kappa ~ sqrt(w)): the slopes then include its change
+  // (set_balance in shooting_shot_setup.hpp).
+  bool balance_moves = false;
   bool from_b = false;
   // In plane, the constant symplectic change of variables Phi~ = P Phi^, F~ = P^{-T} F^ into the
   // axial frame (axial_frame in the header): P = diag(sigma, 1) R^T, Q = P^{-T}.

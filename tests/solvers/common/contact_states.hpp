@@ -92,6 +92,7 @@ inline ContactState u_shape(CableProperties cable,
   state.problem.cable = cable;
   state.problem.supports.a_m = a;
   state.problem.supports.b_m = a + lift_off + catenary_end_offset(arc_b, H, 0.0);
+  state.problem.seabed = seabed;  // given statics must be the problem's (statics_match.hpp)
   state.statics = StaticSolution(line_of_cable(cable), a, seabed, H, pieces);
   return state;
 }
@@ -169,6 +170,7 @@ inline ContactState two_stretch_line(CableProperties cable,
   state.problem.supports.a_m = Vec2(0.0, seabed.z_m);
   state.problem.supports.b_m =
       state.problem.supports.a_m + Vec2(x, 0.0) + catenary_end_offset(arc_b, H, 0.0);
+  state.problem.seabed = seabed;  // given statics must be the problem's (statics_match.hpp)
   state.statics = StaticSolution(line, state.problem.supports.a_m, seabed, H, pieces);
   return state;
 }
@@ -208,6 +210,7 @@ inline ContactState slack_line(CableProperties cable,
   state.problem.supports.a_m = Vec2(0.0, seabed.z_m);
   state.problem.supports.b_m =
       state.problem.supports.a_m + lift_off + catenary_end_offset(hanging, 0.0, 0.0);
+  state.problem.seabed = seabed;  // given statics must be the problem's (statics_match.hpp)
   state.statics =
       StaticSolution(line_of_cable(cable), state.problem.supports.a_m, seabed, 0.0, pieces);
   return state;

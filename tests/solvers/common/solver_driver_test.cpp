@@ -219,6 +219,7 @@ TEST_F(DriveSolver, NotApplicableStopsBeforeAnyWork) {
 // declined before any work, and a forced response they cannot damp is not computed.
 TEST_F(DriveSolver, DampedLinesAreDeclinedByNumericsThatDoNotHandleDamping) {
   solved.problem.cable.damping.normal_n_s_per_m2 = 0.01;
+  solved.statics = solve_statics(solved.problem);  // given statics must hold the damping too
   ScriptedNumerics undamped_only;
   const SolverOutput declined = drive(undamped_only);
   EXPECT_TRUE(undamped_only.asked.empty());

@@ -10,9 +10,14 @@
 //    off (a spurious exact zero of the end determinant) and, with that fixed, still ~5e-7 off and
 //    moving with rtol (the axial displacement lost its digits in the x-y frame). Compared with
 //    shooting at rtol 1e-13 and with the asymptotic solution, whose model error here is
-//    O(eps^2) + T0/(2 EA) ~ 1e-10.
+//    O(eps^2) + T0/(2 EA) ~ 1e-10;
+//  - the taut inclined cable at a static strain T0/EA far above 1 (eps = 0.1, lambda^2 = 1e-8 and
+//    1e-9, issue 32): in plane a false double root 0.35 % and 49 % off, as converged (the shot was
+//    balanced as if the normal compliance were 1). Compared with the closed form of the axial bar
+//    and of the string, which coincide there (below).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "catena/solvers/asymptotic_solver.hpp"
@@ -65,7 +70,10 @@ TEST(ShootingAccuracy, TautCableAtEps1e5FirstInPlaneModeHoldsAtDefaults) {
       solve_problem(solve_asymptotic, problem, modes_request(6, 0), AsymptoticSolverOptions{});
   ASSERT_EQ(defaults.output.summary.termination, Termination::Converged)
       << defaults.output.summary.message;
-  ASSERT_EQ(reference.output.summary.termination, Termination::Converged);
+  // The reference's own target (1.1e-12 at rtol 1e-13) lies below the in-plane rounding floor
+  // u / (tangent turn 8.7e-6) = 1.3e-11 (docs/explanation/methods/shooting.md), so it may report
+  // no-convergence; its modes stay usable, and far more accurate than the 1e-9 compared here.
+  ASSERT_TRUE(reference.output.summary.is_usable()) << reference.output.summary.message;
   ASSERT_TRUE(model.output.inplane && model.output.inplane->modes.size() == 6u);
   const auto& ours = defaults.output.inplane->modes;
   for (std::size_t i = 0; i < ours.size(); ++i) {
@@ -75,6 +83,32 @@ TEST(ShootingAccuracy, TautCableAtEps1e5FirstInPlaneModeHoldsAtDefaults) {
         << "mode " << i + 1;
     EXPECT_LE(relative_difference(omega, model.output.inplane->modes[i].omega_rad_s), 1e-8)
         << "mode " << i + 1;
+  }
+}
+
+// At a static strain e = T/EA >> 1 the string's wave speed sqrt(T / (M (1 + e))) tends to the
+// bar's sqrt(EA / m) (mass_ratio 1: m = M), to within EA / (2 T) <= 1 / (2 e_min) relative, so the
+// in-plane modes come in pairs (2n - 1, 2n) at n pi sqrt(EA / m) / L, split by less than that.
+TEST(ShootingAccuracy, TautCableFarAboveUnitStrainMatchesTheAxialBarInPlane) {
+  for (const double lambda2 : {1e-8, 1e-9}) {
+    const Problem problem = make_taut_inclined_problem(0.1, 30.0, lambda2, 1.0);
+    const auto solved =
+        solve_problem(solve_shooting, problem, modes_request(4, 2), ShootingSolverOptions{});
+    ASSERT_EQ(solved.output.summary.termination, Termination::Converged)
+        << solved.output.summary.message;
+    const double EA = problem.cable.axial_stiffness_n, m = problem.cable.mass_kg_per_m;
+    const double L = problem.cable.length_m;
+    const double e_min = std::min(solved.statics.tension_n(0.0), solved.statics.tension_n(L)) / EA;
+    ASSERT_GT(e_min, 1e5);
+    const double tolerance = 1.0 / e_min;  // twice the string's offset from the bar
+    const auto& modes = solved.output.inplane->modes;
+    ASSERT_EQ(modes.size(), 4u);
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+      const double bar = static_cast<double>(i / 2 + 1) * kPi / L * std::sqrt(EA / m);
+      EXPECT_LE(relative_difference(modes[i].omega_rad_s, bar), tolerance)
+          << "lambda2 " << lambda2 << " mode " << i + 1 << ": " << modes[i].omega_rad_s << " vs "
+          << bar;
+    }
   }
 }
 

@@ -245,9 +245,13 @@ TEST(ShootingSeabed, FrictionThatSlackensTheGroundedPartIsDeclinedWithAReason) {
   Problem p = g.problem();
   p.seabed->friction = 1.0;  // C_B w L = 5000 N of friction against H = 1e5 N: still taut
   const StaticSolution taut(p.as_line(), p.supports.a_m, *p.seabed, g.H, g.L);
+  // The friction stretches the grounded part less: b where each statics ends (given statics must
+  // be the problem's, catena/statics/statics_match.hpp).
+  p.supports.b_m = taut.position_m(p.length_m());
   EXPECT_EQ(solve_with(p, taut, 3, 3).inplane->summary.termination, Termination::Converged);
   p.seabed->friction = 40.0;  // 2e5 N of friction: the tension reaches 0 halfway
   const StaticSolution slack(p.as_line(), p.supports.a_m, *p.seabed, g.H, g.L);
+  p.supports.b_m = slack.position_m(p.length_m());
   const SolverOutput out = solve_with(p, slack, 3, 3);
   EXPECT_EQ(out.summary.termination, Termination::NotApplicable);
   EXPECT_NE(out.summary.message.find("seabed.friction"), std::string::npos) << out.summary.message;
