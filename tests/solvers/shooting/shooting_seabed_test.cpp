@@ -255,6 +255,24 @@ TEST(ShootingSeabed, FrictionThatSlackensTheGroundedPartIsDeclinedWithAReason) {
   EXPECT_FALSE(out.outofplane.has_value() && !out.outofplane->modes.empty());
 }
 
+// k_s = 1e24 N/m per m (3e11 e-folds of the foundation's solution over the 100 m) made the
+// grounded run store one e^600 factor per 600 e-folds: 24 GB and a SIGKILL under a time limit
+// (issue 32). Beyond 1e8 e-folds shooting declines, naming the stiffness, before any shot; just
+// below, it still solves.
+TEST(ShootingSeabed, FoundationTooStiffForTheShotIsDeclinedNamingTheStiffness) {
+  GroundedString g;
+  g.k_s = 1e24;
+  const SolverOutput out = solve_with(g.problem(), g.statics(), 3, 3);
+  EXPECT_EQ(out.summary.termination, Termination::NotApplicable);
+  EXPECT_NE(out.summary.message.find("[seabed] stiffness 1e+24 N/m per m"), std::string::npos)
+      << out.summary.message;
+  g.k_s = 1e16;  // 3.2e7 e-folds
+  const SolverOutput stiff = solve_with(g.problem(), g.statics(), 3, 0);
+  ASSERT_TRUE(stiff.inplane.has_value()) << stiff.summary.message;
+  EXPECT_EQ(stiff.inplane->summary.termination, Termination::Converged)
+      << stiff.inplane->summary.message;
+}
+
 // As k_s grows the grounded part is pinned vertically: the in-plane frequencies converge, their
 // change per decade of k_s shrinking by a steady factor (printed with the observed order in k_s).
 TEST(ShootingSeabed, InPlaneFrequenciesConvergeAsTheSeabedStiffens) {
