@@ -38,6 +38,7 @@ struct LineTally {
   std::size_t number = 1;  // 1-based line of the text
   std::size_t begin = 0;   // index of its first character
   std::size_t slow_items = 0;
+  bool blank = true;  // nothing but spaces so far: a '[' here opens a table header
 };
 
 void check_line(const LineTally& tally, std::size_t end, const std::string& origin) {
@@ -62,6 +63,7 @@ TomlScanCounts check_toml_work_bounds(const std::string& text, const std::string
     const char c = text[i];
     if (c == '"' || c == '\'') {
       ++tally.slow_items;
+      tally.blank = false;
       const std::size_t before = tally.number;
       i = skip_string(text, i, tally.number);
       // A multi-line string ends on another line: its length counts for neither.
@@ -74,8 +76,10 @@ TomlScanCounts check_toml_work_bounds(const std::string& text, const std::string
     }
     if (c == '\n') {
       check_line(tally, i, origin);
-      tally = LineTally{tally.number + 1, i + 1, 0};
+      tally = LineTally{tally.number + 1, i + 1, 0, true};
     }
+    if (c == '=' || (c == '[' && depth == 0 && tally.blank)) ++counts.keys;
+    if (c != ' ' && c != '\t' && c != '\n') tally.blank = false;
     if (c == '[' || c == '{') ++depth;
     if ((c == ']' || c == '}') && depth > 0) --depth;
     if (c == '{' || c == '=') ++tally.slow_items;
@@ -91,6 +95,11 @@ TomlScanCounts check_toml_work_bounds(const std::string& text, const std::string
           "'[' and '{{' outside strings and comments): a scene needs at most 100000 forcing "
           "frequencies and a few thousand other values",
           origin, tally.number, kMaxTomlItems));
+    }
+    if (counts.keys > kMaxTomlKeys) {
+      throw ParseError(fmt::format(
+          "{}: line {}: more than {} keys and table headers (the limit): a scene has a few hundred",
+          origin, tally.number, kMaxTomlKeys));
     }
     counts.deepest = std::max(counts.deepest, depth);
     ++i;

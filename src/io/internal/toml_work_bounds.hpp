@@ -17,6 +17,10 @@ inline constexpr int kMaxTomlNesting = 64;
 /// 100 000 forcing frequencies (the largest array a scene accepts) plus the rest of a scene;
 /// toml11 parses that many in about a second (benchmarks/results/toml-parse-time.md).
 inline constexpr std::size_t kMaxTomlItems = 110000;
+/// Most keys and table headers in one file (each `=`, and each `[` opening a header, outside
+/// strings and comments): toml11 spends 10-40 us on each, against 5-10 us per array value; a scene
+/// has a few hundred.
+inline constexpr std::size_t kMaxTomlKeys = 10000;
 /// Longest line that may hold more than kMaxLongLineSlowItems keys, strings or inline tables;
 /// longer lines may hold arrays of numbers (which toml11 parses in time linear in the line).
 inline constexpr std::size_t kMaxTomlSlowLineLength = 1000;
@@ -25,6 +29,7 @@ inline constexpr std::size_t kMaxLongLineSlowItems = 16;
 /// What the scan counted (for tests and the benchmark table).
 struct TomlScanCounts {
   std::size_t items = 0;
+  std::size_t keys = 0;
   std::size_t lines = 0;
   int deepest = 0;
 };

@@ -4,6 +4,7 @@
 // the scan counts; the one clock in here is a hang guard, not a speed test.
 #include "io/internal/toml_work_bounds.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -37,6 +38,7 @@ TEST(TomlWorkBounds, CountsItemsOutsideStringsAndComments) {
       check_toml_work_bounds("a = [1, 2, {b = 3}]  # , = [ {\ns = \"[,={\"\n", "f.toml");
   // a's '=', '[', two ',', '{', b's '=', s's '=': 7; the comment and the string count nothing.
   EXPECT_EQ(counts.items, 7u);
+  EXPECT_EQ(counts.keys, 3u);  // a, b and s
   EXPECT_EQ(counts.lines, 3u);
   EXPECT_EQ(counts.deepest, 2);
 }
@@ -55,6 +57,23 @@ TEST(TomlWorkBounds, AFileOfTinyItemsUnderTheSizeLimitIsRefusedAtTheItemLimit) {
   ASSERT_LE(text.size(), kMaxInputFileBytes);
   const std::string message = refusal(text);
   EXPECT_NE(message.find("f.toml: line 1: more than 110000 values"), std::string::npos) << message;
+}
+
+TEST(TomlWorkBounds, ManyKeysOrTableHeadersAreRefused) {
+  // 87 000 keys on their own lines fill 1 MiB and took toml11 2-4 s.
+  std::string keys, headers;
+  for (std::size_t i = 0; i <= kMaxTomlKeys; ++i) {
+    keys += fmt::format("k{} = 1\n", i);
+    headers += "[[p]]\n";
+  }
+  for (const std::string& text : {keys, headers}) {
+    const std::string message = refusal(text);
+    EXPECT_NE(message.find(
+                  fmt::format("line {}: more than 10000 keys and table headers", kMaxTomlKeys + 1)),
+              std::string::npos)
+        << message;
+  }
+  EXPECT_EQ(check_toml_work_bounds(std::string(headers, 6), "f.toml").keys, kMaxTomlKeys);
 }
 
 TEST(TomlWorkBounds, ManyStringsOrInlineTablesOnALongLineAreRefused) {
