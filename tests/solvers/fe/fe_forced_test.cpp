@@ -248,8 +248,6 @@ TEST(FeForced, FrequenciesBeyondWhatTheMeshResolvesAreDeclinedNotResonances) {
   const Solved solved = solve(problem, request, {.elements = 200});
   ASSERT_EQ(solved.output.forced.size(), 3u);
   EXPECT_TRUE(solved.output.forced[0].diagnostic.empty()) << solved.output.forced[0].diagnostic;
-  EXPECT_GE(solved.output.forced[0].relative_error_estimate, 0.0);
-  EXPECT_LE(solved.output.forced[0].relative_error_estimate, 1e-3);
   // v(s) = a sin(k s) / sin(k L), k = omega / c = 5 (c = 1, L = 1): at mid-span.
   const auto& v = solved.output.forced[0].v;
   const auto& s = solved.output.forced[0].s_m;
