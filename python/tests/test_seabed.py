@@ -80,3 +80,15 @@ def test_a_slack_line_has_no_horizontal_force_and_a_heap():
     assert statics.horizontal_force_n == 0.0 and statics.anchor_grounded
     [(begin, end)] = statics.contact_intervals
     assert statics.slack_length_m == pytest.approx(end - begin - 400.0, rel=1e-12)
+
+
+def test_a_seabed_stiffness_beyond_double_precision_is_refused_naming_the_field():
+    # k = 1e24 N/m per m made shooting's memory grow without bound, time_limit_s or not (issue 32):
+    # k L^2 / W is bounded by 1e16 (here k <= 1.2e16 N/m per m), in a scene and in Python alike.
+    big = scene(0.0)
+    big["seabed"]["stiffness"] = 1.0e24
+    with pytest.raises(catena.InvalidInput, match=r"seabed\.stiffness = 1e\+24"):
+        catena.solve(big, time_limit_s=10.0)
+    with pytest.raises(ValueError, match=r"seabed\.stiffness"):
+        catena.Problem(catena.Cable(**CHAIN), b_m=B, a_m=A,
+                       seabed=catena.Seabed(A[1], stiffness_n_per_m2=1.0e24))

@@ -171,8 +171,34 @@ void Problem::validate() const {
   if (seabed) validate_seabed();
 }
 
+// The largest seabed stiffness k against the line's weight W (total |weight|) and length L:
+// k L^2 / W <= 1e16. k enters the dynamics beside the tension's stiffness ~ T / L^2 ~ W / L^2
+// (fe adds k l to T / l per node; shooting integrates e^(L sqrt(k / T)), L sqrt(k / T) ~
+// sqrt(k L^2 / W) e-folds): beyond 1e16 the tension's part is below double precision's rounding of
+// the foundation's, and the grounded run's growth beyond the 1e8 e-folds a shot carries. Real
+// soils are below 1e9 N/m per m (k L^2 / W ~ 1e10 for a 1000 m chain of 1200 N/m).
+constexpr double kMaxFoundationToWeight = 1e16;
+
 void Problem::validate_seabed() const {
   seabed->validate();
+  const Line whole = as_line();
+  double weight = 0.0;
+  for (const LineSegment& segment : whole.segments)
+    weight += std::abs(segment.weight_n_per_m) * segment.length_m;
+  for (const PointAttachment& point : whole.points) weight += std::abs(point.weight_n);
+  const double L = whole.length_m();
+  for (const auto& [field, k] :
+       {std::pair{"stiffness", seabed->stiffness_n_per_m2},
+        std::pair{"tangential_stiffness", seabed->tangential_stiffness_n_per_m2}}) {
+    if (weight > 0.0 && k * L * L > kMaxFoundationToWeight * weight) {
+      throw InvalidInput(fmt::format(
+          "Invalid seabed.{} = {:g}: k L^2 / W = {:.3g} exceeds {:g}, beyond what double precision "
+          "carries beside the line's own stiffness (L = {:g} m, total |weight| W = {:g} N): at "
+          "most {:.3g} N/m per m for this line",
+          field, k, k * L * L / weight, kMaxFoundationToWeight, L, weight,
+          kMaxFoundationToWeight * weight / (L * L)));
+    }
+  }
   const double z = seabed->z_m;
   const double tolerance = 1e-9 * std::max(1.0, std::abs(z));
   if (supports.a_m.y() < z - tolerance) {

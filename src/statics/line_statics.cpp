@@ -160,6 +160,11 @@ StaticSolution solve_line_statics(const Problem& problem, const StaticsOptions& 
   if (!(best.closure <= accepted) || !best.forces.allFinite()) {
     solution.converged = false;
     solution.message = closure_failure(line, best, tolerance, iterations);
+    // No equilibrium in tension is the input's fault (exit 2), like the other "No static
+    // equilibrium" refusals; only a Newton failure stays a numerical failure (exit 3).
+    if (best.forces.x() <= 1e-8 * weight_scale(line)) {
+      throw InvalidInput("line.segments: " + solution.message);
+    }
   }
   return solution;
 }

@@ -290,14 +290,15 @@ TEST(Cli, APerturbationThatCannotApplyExitsTwo) {
 }  // namespace
 
 // The SI mooring line with 431 in-plane modes on fe's default 400 elements used to give mode 1 =
-// -0.525 rad/s, "converged". The request exceeds what the coarsest mesh resolves: bad input (exit
-// 2) naming the knob and the count.
+// -0.525 rad/s, "converged". A request beyond what the coarsest mesh of a chosen `elements`
+// resolves is bad input (exit 2) naming the knob and the count (at the default 400, fe sizes its
+// mesh instead: fe_solver_test DefaultMeshGrowsToTheModesAsked).
 TEST(Cli, FeRefusesMoreModesThanItsMeshResolves) {
-  std::string text = kGood + "[request]\ninplane_modes = 431\n";
+  std::string text = kGood + "[request]\ninplane_modes = 431\n[solvers]\nfe = { elements = 800 }\n";
   const fs::path scene = write_scene("too-many-modes.toml", text);
   const CliRun run = run_cli("solve " + scene.string() + " --solver fe");
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("[solvers.fe].elements = 400: too few for 431 in-plane modes"),
+  EXPECT_NE(run.output.find("[solvers.fe].elements = 800: too few for 431 in-plane modes"),
             std::string::npos)
       << run.output;
 }

@@ -92,6 +92,22 @@ TEST(LineCli, BadLineInputExitsTwoNamingTheField) {
   EXPECT_NE(run.output.find("too short"), std::string::npos) << run.output;
 }
 
+// No equilibrium in tension (a weightless rope between a chain and a buoyant rope, ends too
+// close for it to be taut) is the input's fault, exit 2 like every other "No static equilibrium"
+// (issue 32: it was exit 3, a numerical failure).
+TEST(LineCli, NoEquilibriumInTensionExitsTwo) {
+  const std::string segment = "[[line.segments]]\nEA = 1e7\nmass = 1.0\n";
+  const fs::path scene = write_scene(
+      "no-equilibrium.toml", "[line]\na = [0.0, 0.0]\nb = [50.0, 0.0]\n" + segment +
+                                 "length = 10.0\nweight = 10.0\n" + segment +
+                                 "length = 100.0\nweight = 0.0\n" + segment +
+                                 "length = 10.0\nweight = -10.0\n[request]\ninplane_modes = 1\n");
+  const CliRun run = run_cli("solve " + scene.string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("line.segments: No static equilibrium in tension"), std::string::npos)
+      << run.output;
+}
+
 TEST(LineCli, AnalyticSolversDeclineALineWithTheirReason) {
   const fs::path scene = write_scene(
       "modes.toml", kLine + "[request]\ninplane_modes = 2\n[solvers]\nfrobenius = {}\n");

@@ -107,6 +107,24 @@ TEST(CableProperties, RejectsMagnitudesThatOverflowTheStaticsNamingTheField) {
   })());
 }
 
+// k = 1e24 N/m per m made shooting store 24 GB (issue 32): a seabed stiffness is bounded by
+// k L^2 / W <= 1e16 against the line's length and total weight (here L = 100 m, W = 1000 N: at
+// most 1e15 N/m per m), beyond which double precision cannot carry the line's own stiffness beside
+// the foundation's. The message names the field and the largest value for this line.
+TEST(CableProperties, RejectsASeabedStiffnessBeyondDoublePrecisionNamingTheField) {
+  Problem p = good();
+  p.supports.b_m = Vec2(80.0, 0.0);
+  p.seabed = Seabed{0.0, 0.0, 1e15, 1e15};
+  EXPECT_NO_THROW(p.validate());
+  p.seabed->stiffness_n_per_m2 = 1.01e15;
+  expect_invalid([p] { p.validate(); }, "Invalid seabed.stiffness = 1.01e+15: k L^2 / W");
+  p.seabed->stiffness_n_per_m2 = 1e24;
+  expect_invalid([p] { p.validate(); }, "at most 1e+15 N/m per m for this line");
+  p.seabed->stiffness_n_per_m2 = 0.0;
+  p.seabed->tangential_stiffness_n_per_m2 = 1e20;
+  expect_invalid([p] { p.validate(); }, "seabed.tangential_stiffness");
+}
+
 TEST(Statics, ReportsUnreachableAndImpossibleGeometries) {
   Problem p = good();
   p.cable.axial_stiffness_n = kInfinity;

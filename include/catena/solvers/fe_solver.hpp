@@ -93,8 +93,9 @@ namespace catena {
 struct FeSolverOptions {
   /// Number of bar elements N (the coarse mesh when Richardson is on). In [2, 5e7]; the coarsest
   /// mesh used resolves at most N / 2 modes per plane (docs/explanation/methods/fe.md), more is
-  /// InvalidInput. The discretisation error of mode n is about (n pi / 2N)^2 / 6 relative without
-  /// Richardson.
+  /// InvalidInput; at the default 400, a request of more than 200 modes per plane raises N to
+  /// 2 x modes (rounded up to a multiple of 4) instead. The discretisation error of mode n is about
+  /// (n pi / 2N)^2 / 6 relative without Richardson.
   int elements = 400;
   /// Solve with N and 2N elements and extrapolate (order 2 -> 4). Without it, the error estimate
   /// needs a second mesh anyway, so N/2 is solved as well (when N >= 4) for the estimate only.

@@ -7,64 +7,13 @@
 #include <sstream>
 
 #include "catena/core/error.hpp"
+#include "io/internal/toml_linear_values.hpp"
+#include "io/internal/toml_work_bounds.hpp"
 
 namespace catena::internal {
 
-namespace {
-
-// The index just past the string that opens at text[i] (a basic "..." or literal '...' string,
-// either of them possibly multi-line """...""" / '''...'''); text.size() when unterminated
-// (the parser then reports the syntax error). Counts the newlines it skips into `line`.
-std::size_t skip_string(const std::string& text, std::size_t i, int& line) {
-  const char quote = text[i];
-  const bool multi_line = text.compare(i, 3, std::string(3, quote)) == 0;
-  const std::size_t open = multi_line ? 3 : 1;
-  for (std::size_t k = i + open; k < text.size(); ++k) {
-    if (text[k] == '\n') ++line;
-    if (quote == '"' && text[k] == '\\') {
-      ++k;
-      if (k < text.size() && text[k] == '\n') ++line;
-      continue;
-    }
-    if (text[k] != quote || (multi_line && text.compare(k, 3, std::string(3, quote)) != 0))
-      continue;
-    return k + open;
-  }
-  return text.size();
-}
-
-// toml11 parses arrays and inline tables recursively, so thousands of nested levels overflow the
-// stack. Scanning the text first (brackets outside strings and comments) bounds the recursion
-// before the parser sees it.
-void check_nesting_depth(const std::string& text, const std::string& origin) {
-  int depth = 0;
-  int line = 1;
-  for (std::size_t i = 0; i < text.size();) {
-    const char c = text[i];
-    if (c == '"' || c == '\'') {
-      i = skip_string(text, i, line);
-      continue;
-    }
-    if (c == '#') {
-      i = std::min(text.find('\n', i), text.size());
-      continue;
-    }
-    if (c == '\n') ++line;
-    if (c == '[' || c == '{') ++depth;
-    if ((c == ']' || c == '}') && depth > 0) --depth;
-    if (depth > kMaxTomlNesting) {
-      throw ParseError(fmt::format(
-          "{}: line {}: arrays and inline tables nested deeper than {} levels (the limit)", origin,
-          line, kMaxTomlNesting));
-    }
-    ++i;
-  }
-}
-
-}  // namespace
-
 toml::value parse_toml(const std::string& text, const std::string& origin) {
-  check_nesting_depth(text, origin);
+  check_toml_work_bounds(text, origin);
   std::istringstream stream(text);
   try {
     return toml::parse(stream, origin);

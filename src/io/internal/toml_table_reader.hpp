@@ -15,13 +15,8 @@
 
 namespace catena::internal {
 
-/// Deepest nesting of arrays and inline tables accepted in a TOML file
-/// (docs/reference/scene-format.md, "Limits"): our deepest is 2; the parser recurses once per
-/// level.
-inline constexpr int kMaxTomlNesting = 64;
-
-/// Parses TOML text; a syntax error, or nesting deeper than kMaxTomlNesting, is a ParseError
-/// naming `origin`.
+/// Parses TOML text; a syntax error, or text beyond the bounds of toml_work_bounds.hpp (nesting,
+/// items, long lines), is a ParseError naming `origin`.
 toml::value parse_toml(const std::string& text, const std::string& origin);
 
 /// Reads one TOML table strictly. Messages name "<origin>: [<path>].<key>".

@@ -25,6 +25,11 @@ bool WorkMeter::stop_after(long done) {
   return stopped_;
 }
 
+bool WorkMeter::expired() {
+  stopped_ = stopped_ || (limits_ && done_ < total_ && limits_->expired());
+  return stopped_;
+}
+
 std::string WorkMeter::message() const {
   return stopped_ ? time_limit_message(*limits_, done_, total_, units_) : std::string();
 }

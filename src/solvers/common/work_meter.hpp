@@ -37,6 +37,10 @@ class WorkMeter {
   /// Records that `done` units are finished and reports it; true when the deadline has passed
   /// and the part must stop (and stays true).
   bool stop_after(long done);
+  /// True when the deadline has passed with work left (and stays true), without recording
+  /// progress: for checks inside one unit of work (a root's refinement, a long scan), so that a
+  /// time limit holds within one evaluation, not one unit.
+  bool expired();
   bool stopped() const { return stopped_; }
   long done() const { return done_; }
   /// The reason of a stopped part (empty when it was not stopped).

@@ -345,13 +345,24 @@ ForcedOutcome fe_damped_forced_response(const ForcedRequest& request,
   ForcedOutcome outcome;
   WorkMeter meter(context, "fe", "forced frequencies",
                   static_cast<long>(request.omegas_rad_s.size()));
+  const double limit = fe_forcing_limit(levels, meshes, forcing.plane);
   for (double omega : request.omegas_rad_s) {
     ForcedResponse response;
     response.omega_rad_s = omega;
     response.s_m = stations;
-    response.diagnostic = resonance_diagnostic(omega, forcing.plane, undamped);
+    // Beyond the meshes' resolution, or an estimate above 1: declined (fe_forcing_limit).
+    response.diagnostic = fe_forcing_beyond_mesh(omega, limit);
+    bool declined = !response.diagnostic.empty();
+    if (!declined) response.diagnostic = resonance_diagnostic(omega, forcing.plane, undamped);
     if (response.diagnostic.empty()) respond(response, forcing, plan, levels, naturals, pencils);
-    response.at_resonance = !response.diagnostic.empty();
+    if (response.diagnostic.empty() && !(response.relative_error_estimate <= 1.0)) {
+      response.diagnostic = fmt::format(
+          "relative error estimate {:.3g} > 1 at omega = {:.6g} rad/s: no digit of the response "
+          "can be trusted",
+          response.relative_error_estimate, omega);
+      declined = true;
+    }
+    response.at_resonance = !declined && !response.diagnostic.empty();
     response.near_resonance = response.diagnostic.empty() && near_damped_natural(omega, naturals);
     if (!response.diagnostic.empty()) outcome.summary.warnings.push_back(response.diagnostic);
     outcome.responses.push_back(std::move(response));

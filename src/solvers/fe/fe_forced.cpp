@@ -254,6 +254,33 @@ std::string resonance_diagnostic(double omega,
   return {};
 }
 
+double fe_forcing_limit(const FeLevels& levels,
+                        const std::vector<std::size_t>& meshes,
+                        Plane plane) {
+  double limit = std::numeric_limits<double>::infinity();
+  for (std::size_t m : meshes) {
+    const FeMatrices& matrices = levels[m].front().matrices.at(plane);
+    const SparseMatrix& K = matrices.stiffness;
+    double top2 = 0.0;  // Gershgorin: lambda_max(M^-1 K) <= max_i sum_j |K_ij| / M_ii
+    for (int i = 0; i < K.outerSize(); ++i) {
+      double row = 0.0;  // K is symmetric: its column sums are its row sums
+      for (SparseMatrix::InnerIterator it(K, i); it; ++it) row += std::abs(it.value());
+      const double mass = matrices.mass.coeff(i, i);
+      if (mass > 0.0) top2 = std::max(top2, row / mass);
+    }
+    limit = std::min(limit, 0.5 * std::sqrt(top2));
+  }
+  return limit;
+}
+
+std::string fe_forcing_beyond_mesh(double omega, double limit) {
+  if (omega <= limit) return "";
+  return fmt::format(
+      "forcing at omega = {:.6g} rad/s is above what fe's meshes resolve (at most {:.6g} rad/s, "
+      "half the coarsest mesh's top frequency): not computed",
+      omega, limit);
+}
+
 double frequency_error_amplification(double omega,
                                      const std::vector<FeNaturalFrequency>& naturals) {
   double worst = 0.0;
@@ -347,15 +374,26 @@ ForcedOutcome fe_forced_response(const ForcedRequest& request,
   ForcedOutcome outcome;
   WorkMeter meter(context, "fe", "forced frequencies",
                   static_cast<long>(request.omegas_rad_s.size()));
+  const double limit = fe_forcing_limit(levels, meshes, forcing.plane);
   for (double omega : request.omegas_rad_s) {
     ForcedResponse response;
     response.omega_rad_s = omega;
     response.s_m = stations;
-    response.diagnostic = resonance_diagnostic(omega, forcing.plane, naturals);
+    response.diagnostic = fe_forcing_beyond_mesh(omega, limit);
+    bool declined = !response.diagnostic.empty();
+    if (!declined) response.diagnostic = resonance_diagnostic(omega, forcing.plane, naturals);
     if (response.diagnostic.empty()) respond(response, forcing, plan, levels, naturals);
-    // Every diagnostic of fe's forced response is a resonance (its own, or a singular K - omega^2
-    // M).
-    response.at_resonance = !response.diagnostic.empty();
+    if (response.diagnostic.empty() && !(response.relative_error_estimate <= 1.0)) {
+      // An estimate above 1 carries no digit: not an answer (issue 32, item 10).
+      response.diagnostic = fmt::format(
+          "relative error estimate {:.3g} > 1 at omega = {:.6g} rad/s: no digit of the response "
+          "can be trusted",
+          response.relative_error_estimate, omega);
+      declined = true;
+    }
+    // Any other diagnostic of fe's forced response is a resonance (its own, or a singular
+    // K - omega^2 M below the mesh's limit).
+    response.at_resonance = !declined && !response.diagnostic.empty();
     response.near_resonance = response.diagnostic.empty() && near_natural(omega, naturals);
     if (!response.diagnostic.empty()) outcome.summary.warnings.push_back(response.diagnostic);
     outcome.responses.push_back(std::move(response));

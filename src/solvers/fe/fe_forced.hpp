@@ -72,6 +72,18 @@ FeLevelResponse respond_on_level(Plane plane,
                                  const Vec2& end_a,
                                  const Vec2& end_b);
 
+/// The highest forcing frequency fe answers on the meshes `meshes` of `levels` in `plane`: half
+/// the smallest of their top frequencies, bounded by Gershgorin's row sums of K against the lumped
+/// M. Above it the discrete model no longer resolves the response (the string's waves span fewer
+/// than about 6 elements; far above, K - omega^2 M is omega^2 M to rounding and, at 1e300 rad/s,
+/// overflows), so its answer is declined, not a resonance (issue 32, item 10).
+double fe_forcing_limit(const FeLevels& levels,
+                        const std::vector<std::size_t>& meshes,
+                        Plane plane);
+
+/// The diagnostic of a forcing frequency above `limit` (fe_forcing_limit), or empty.
+std::string fe_forcing_beyond_mesh(double omega, double limit);
+
 /// How a relative error delta_n of the natural frequencies propagates into the forced response
 /// at `omega`: max over the modes with an estimate of 2 delta_n omega_n^2 / |omega_n^2 - omega^2|
 /// (the derivative of 1 / (omega_n^2 - omega^2) times the change 2 delta_n omega_n^2 of omega_n^2,

@@ -87,10 +87,10 @@ class FeNumerics final : public SolverNumerics {
  public:
   FeNumerics(const SolveContext& context, const FeSolverOptions& options)
       : context_(context),
-        options_(options),
+        options_(sized_for_request(options, context.request)),
         plan_(make_fe_plan(context.problem,
                            context.statics,
-                           options,
+                           options_,
                            context.request.inplane_modes,
                            context.request.outofplane_modes)) {}
 
@@ -136,6 +136,7 @@ class FeNumerics final : public SolverNumerics {
   ForcedOutcome forced_with_drag(const ForcedRequest& request, const DragProfile& drag) override;
 
  private:
+  static FeSolverOptions sized_for_request(FeSolverOptions options, const SolveRequest& request);
   void require_modes_fit() const;
   ModalResult modes_on_plan(Plane plane, int count);
   void damped_modes_on_plan(Plane plane, int count, ModalResult& result);
@@ -177,6 +178,22 @@ class FeNumerics final : public SolverNumerics {
   // computed them itself.
   std::string drag_naturals_note_;
 };
+
+// The default mesh (FeSolverOptions::elements = 400) resolves 200 modes per plane; a request up
+// to the 1000-mode limit (docs/reference/scene-format.md) gets the mesh it needs, 2 x modes
+// elements rounded up to a multiple of 4 (at most 2000: a few MB, its shift-invert Lanczos
+// minutes at 1000 modes, bounded by the time limit), instead of refusing the scene. Any other
+// `elements` is the user's choice and stays as given (too few: InvalidInput below).
+FeSolverOptions FeNumerics::sized_for_request(FeSolverOptions options,
+                                              const SolveRequest& request) {
+  const int modes = std::max(request.inplane_modes, request.outofplane_modes);
+  if (options.elements == FeSolverOptions{}.elements &&
+      fe_resolvable_modes(options.elements) < modes) {
+    options.elements = 4 * ((2 * modes + 3) / 4);
+    options.max_elements = std::max(options.max_elements, options.elements);
+  }
+  return options;
+}
 
 // Bad input: every requested mode must be resolved by the coarsest mesh that feeds the result
 // (fe_resolvable_modes: at least 4 elements per wavelength).

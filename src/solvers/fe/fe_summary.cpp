@@ -154,15 +154,23 @@ std::string fe_eigen_failure_message(Plane plane, const FePlaneEigenReport& eige
 
 void describe_forced(ForcedOutcome& outcome, const FeTimings& timings) {
   const std::size_t asked = outcome.responses.size();
-  std::size_t resonant = 0;
-  for (const ForcedResponse& response : outcome.responses)
-    resonant += response.diagnostic.empty() ? 0 : 1;
+  std::size_t resonant = 0, declined = 0;
+  const ForcedResponse* first_declined = nullptr;
+  for (const ForcedResponse& response : outcome.responses) {
+    resonant += response.at_resonance ? 1 : 0;
+    if (!response.diagnostic.empty() && !response.at_resonance && !declined++)
+      first_declined = &response;
+  }
   SolverSummary& summary = outcome.summary;
-  // A resonance diagnostic is the discrete model's answer at that frequency, not a failure.
-  summary.termination = Termination::Converged;
+  // A resonance diagnostic is the discrete model's answer at that frequency, not a failure; a
+  // declined frequency (beyond the mesh, or an estimate above 1) has no answer.
+  summary.termination = declined ? Termination::NoConvergence : Termination::Converged;
   summary.message = fmt::format(
-      "Converged: {} of {} forced frequencies{}", asked - resonant, asked,
-      resonant ? fmt::format(" ({} at resonance: no finite response)", resonant) : std::string());
+      "{}: {} of {} forced frequencies{}{}", declined ? "No convergence" : "Converged",
+      asked - resonant - declined, asked,
+      resonant ? fmt::format(" ({} at resonance: no finite response)", resonant) : std::string(),
+      declined ? fmt::format("; {} declined, e.g. {}", declined, first_declined->diagnostic)
+               : std::string());
   summary.notes.push_back(
       fmt::format("time: forced response {}", format_seconds(timings.forced_s)));
 }

@@ -35,12 +35,23 @@ class FrequencyFinder {
   PlaneRoots run();
 
  private:
+  // Thrown by check_time() when the run's time is up: one determinant at max_terms in quad
+  // precision takes up to seconds, and a root's bracket, widening and corrections take dozens,
+  // so the budget is checked before each evaluation, not only after each root (a 60-mode Gale
+  // scene ran 39 s under --time-limit 5, issue 32).
+  struct TimeUp {};
+  void check_time() {
+    if (meter_ && meter_->expired()) throw TimeUp{};
+  }
   double full(double omega) {
+    check_time();
     return scaled_determinant(result_.scan_precision, setup_, omega, result_.work);
   }
   double coarse(double omega) {
+    check_time();
     return scaled_determinant(result_.scan_precision, coarse_, omega, result_.work);
   }
+  PlaneRoots scan_and_refine();
 
   void choose_scan_precision();
   void choose_coarse_series();
@@ -143,7 +154,7 @@ void FrequencyFinder::scan_more(std::size_t wanted) {
   const double limit = (3.0 * count_ + 20.0) * spacing_;
   while (brackets_.size() < wanted && x1_ < limit) {
     if (meter_ && !brackets_.empty() && ++scan_steps_ % kScanStepsPerCheck == 0 &&
-        meter_->stop_after(0))
+        meter_->stop_after(static_cast<long>(result_.roots.size())))
       break;
     const double x2 = x1_ + step_, f2 = coarse(x2);
     if ((f0_ < 0.0) != (f1_ < 0.0)) brackets_.emplace_back(x0_, x1_);
@@ -171,7 +182,17 @@ void FrequencyFinder::scan_more(std::size_t wanted) {
   }
 }
 
+// The roots found when the time is up, with the meter stopped (its message names how many).
 PlaneRoots FrequencyFinder::run() {
+  try {
+    return scan_and_refine();
+  } catch (const TimeUp&) {
+    meter_->stop_after(static_cast<long>(result_.roots.size()));
+    return std::move(result_);
+  }
+}
+
+PlaneRoots FrequencyFinder::scan_and_refine() {
   choose_scan_precision();
   choose_coarse_series();
   x0_ = 0.02 * spacing_;
@@ -246,7 +267,9 @@ FoundRoot FrequencyFinder::corrected_root(double omega, double rtol) {
     if (level == 2 && settings_.extended_precision && correction > 0.1 * settings_.tolerance)
       check = Precision::Quad;
     fine.settings.term_tolerance = std::max(fine.settings.term_tolerance * 1e-3, 1e-40);
+    check_time();
     const double ga = scaled_determinant(check, fine, omega, result_.work);
+    if (level > 0) check_time();
     if (level > 0) slope = (scaled_determinant(check, fine, omega + h, result_.work) - ga) / h;
     if (slope == 0.0) break;
     const double corrected = omega - ga / slope;

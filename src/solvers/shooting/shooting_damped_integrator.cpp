@@ -176,6 +176,13 @@ void DampedShootingIntegrator::Impl::set_grounded_state(const DampedGroundedFram
   Eigen::VectorXd growth = frame.log_scale.real() - pushed;
   pushed = frame.log_scale.real();
   shot.log_scale += growth.sum();
+  // Bounded memory whoever calls (the solver declines such a foundation before any shot).
+  if (!(growth.cwiseAbs().maxCoeff() <= kMaxGroundedEfolds)) {
+    throw ShootingFailure(fmt::format(
+        "the seabed foundation's solution grows by {:.3g} e-folds on the grounded run, more than "
+        "the {:.0e} a shot carries: [seabed] stiffness too large",
+        growth.cwiseAbs().maxCoeff(), kMaxGroundedEfolds));
+  }
   do {
     const Eigen::VectorXd step = growth.cwiseMax(-kLargestLogFactor).cwiseMin(kLargestLogFactor);
     shot.segment_r.emplace_back(

@@ -38,6 +38,14 @@
 
 namespace catena::internal {
 
+/// Most e-folds L_g sqrt(k / T) of the foundation's growing solution over one grounded stretch
+/// that a shot carries. The integrators keep the grounded columns finite by splitting their growth
+/// into factors of at most e^600, stored per shot: 1e8 e-folds is 170 000 factors, a few MB and
+/// milliseconds per shot. k_s = 1e24 N/m per m on a chain (1e12 e-folds) stored 2e9 of them,
+/// 24 GB, between two checks of the time limit (issue 32). A foundation this stiff holds the
+/// grounded part clamped long before: k_s = 3e6 is about 2e3 e-folds on a 400 m chain.
+inline constexpr double kMaxGroundedEfolds = 1e8;
+
 /// The principal solutions at x in the run, in the scaled physical variables, per direction d:
 /// the unit column (phi_d, F_d) times exp(log_scale_d), and the conjugate points on (0, x].
 struct GroundedFrame {

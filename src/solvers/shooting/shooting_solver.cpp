@@ -25,6 +25,7 @@
 #include "solvers/shooting/shooting_damped_integrator.hpp"
 #include "solvers/shooting/shooting_damped_modes.hpp"
 #include "solvers/shooting/shooting_forced.hpp"
+#include "solvers/shooting/shooting_grounded.hpp"
 #include "solvers/shooting/shooting_integrator.hpp"
 #include "solvers/shooting/shooting_modes.hpp"
 #include "solvers/shooting/shooting_root_finder.hpp"
@@ -289,9 +290,30 @@ ForcedOutcome ShootingNumerics::forced_with_drag(const ForcedRequest& request,
 
 // The equations divide by the static tension: where it vanishes inside the cable (a slack
 // vertical cable), the principal solutions are not defined.
+// Why the seabed foundation is too stiff for the shot, or nothing.
+std::optional<std::string> foundation_too_stiff(const StaticSolution& statics) {
+  if (!statics.has_contact()) return std::nullopt;
+  const ShootingCoefficients k = ShootingCoefficients::from_statics(statics);
+  for (const ShootingPiece& p : k.pieces) {
+    if (!p.grounded || !(p.min_tension(k.H) > 0.0)) continue;
+    const double stiffness = std::max(p.foundation_normal, p.foundation_tangential);
+    const double efolds = (p.s_end - p.s_begin) * std::sqrt(stiffness / p.min_tension(k.H));
+    if (efolds > kMaxGroundedEfolds) {
+      return fmt::format(
+          "[seabed] stiffness {:.3g} N/m per m: on the grounded stretch s in [{:.6g}, {:.6g}] m "
+          "the foundation's solution grows by {:.3g} e-folds (L_g sqrt(k / T)), more than the "
+          "{:.0e} "
+          "a shot carries (its scale factors are kept per e^600)",
+          stiffness, p.s_begin, p.s_end, efolds, kMaxGroundedEfolds);
+    }
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> ShootingNumerics::not_applicable() const {
   const StaticSolution& statics = context_.statics;
   if (auto reason = slack_on_seabed(statics)) return reason;
+  if (auto reason = foundation_too_stiff(statics)) return reason;
   const double L = statics.cable().length_m;
   const double V_A = statics.vertical_force_a_n();
   const double V_B = statics.vertical_force_n(L);

@@ -5,8 +5,10 @@
 // already expired deadline makes every check deterministic.
 #include "catena/solvers/run_limits.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <map>
 #include <string>
 
@@ -83,16 +85,39 @@ INSTANTIATE_TEST_SUITE_P(Solvers,
                          ExpiredDeadline,
                          ::testing::Values("fe", "shooting", "frobenius"));
 
-// shooting and frobenius stop per mode: exactly the first mode is kept.
-TEST_F(ExpiredDeadline, ShootingAndFrobeniusKeepTheFirstModeFound) {
+// shooting stops per mode: exactly the first mode is kept. frobenius checks before each
+// determinant (one root at max_terms in quad precision takes dozens of them: a 60-mode Gale
+// scene ran 39 s under --time-limit 5, issue 32), so past the deadline it keeps none.
+TEST_F(ExpiredDeadline, ShootingKeepsTheFirstModeFoundAndFrobeniusStopsInsideIt) {
   const RunLimits limits = expired_limits();
-  for (const std::string solver : {"shooting", "frobenius"}) {
+  for (const auto& [solver, kept] : {std::pair{"shooting", 1u}, std::pair{"frobenius", 0u}}) {
     const SolverOutput output = run(solver, solved, testing::modes_request(5, 0), &limits);
     ASSERT_TRUE(output.inplane) << solver;
-    EXPECT_EQ(output.inplane->modes.size(), 1u) << solver;
-    EXPECT_NE(output.summary.message.find("reached after 1 of 5 in-plane modes"), std::string::npos)
+    EXPECT_EQ(output.inplane->modes.size(), kept) << solver;
+    EXPECT_EQ(output.summary.termination, Termination::NoConvergence) << solver;
+    EXPECT_NE(output.summary.message.find(
+                  fmt::format("time limit of 0.5 s reached after {} of 5 in-plane modes", kept)),
+              std::string::npos)
         << solver << ": " << output.summary.message;
   }
+}
+
+// A hang guard (not a speed test): frobenius on Gale's catenary, sag parameter 0.9, 60 modes per
+// plane at max_terms 5000 and tolerance 1e-15 takes minutes; under a 1 s limit it stops with the
+// reason. 30 s only catches a check that no longer runs inside the root search.
+TEST(RunLimitsTimeLimit, FrobeniusStopsWithinTheLimitOnALongRun) {
+  const testing::SolvedProblem solved = testing::prepare(make_gale_sag_problem(0.0, 0.9));
+  const RunLimits limits = RunLimits::time_limit(1.0);
+  const SolveContext context{solved.problem, solved.statics, solved.groups,
+                             testing::modes_request(60, 60), &limits};
+  const auto start = RunLimits::Clock::now();
+  const SolverOutput output =
+      run_solver(*find_solver("frobenius"), context, {{"max_terms", 5000L}, {"tolerance", 1e-15}});
+  const double seconds = std::chrono::duration<double>(RunLimits::Clock::now() - start).count();
+  EXPECT_EQ(output.summary.termination, Termination::NoConvergence);
+  EXPECT_NE(output.summary.message.find("time limit of 1 s reached after"), std::string::npos)
+      << output.summary.message;
+  EXPECT_LT(seconds, 30.0);
 }
 
 // A forced response alone: its first frequency is computed, the rest are not.

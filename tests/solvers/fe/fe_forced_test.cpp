@@ -233,6 +233,36 @@ TEST(FeForced, SummaryCountsTheFrequenciesWithAResponse) {
   EXPECT_TRUE(warned) << solved.output.summary.full_report();
 }
 
+// At 1e300 rad/s K - omega^2 M overflowed and fe called it a resonance; at 1e9 rad/s it said
+// "converged" with an estimate of 4.33 (issue 32, item 10). Above half the coarsest mesh's top
+// frequency (the taut string on N/2 = 100 elements: 2 N/L c = 200 rad/s, so 100 rad/s, mode 32
+// of the 100 the fine mesh resolves) the frequency is declined, not a resonance, and the part is
+// not converged; below, the answer stands.
+TEST(FeForced, FrequenciesBeyondWhatTheMeshResolvesAreDeclinedNotResonances) {
+  const Problem problem = make_taut_inclined_problem(1e-6, 0.0, 1e-6, 1.0);
+  SolveRequest request = modes_request(0, 3);
+  request.forced = ForcedRequest{.end = CableEnd::B,
+                                 .direction = ForcingDirection::OutOfPlane,
+                                 .amplitude_m = 0.01,
+                                 .omegas_rad_s = {5.0, 1e9, 1e300}};
+  const Solved solved = solve(problem, request, {.elements = 200});
+  ASSERT_EQ(solved.output.forced.size(), 3u);
+  EXPECT_TRUE(solved.output.forced[0].diagnostic.empty()) << solved.output.forced[0].diagnostic;
+  // v(s) = a sin(k s) / sin(k L), k = omega / c = 5 (c = 1, L = 1): at mid-span.
+  const auto& v = solved.output.forced[0].v;
+  const auto& s = solved.output.forced[0].s_m;
+  const auto mid = static_cast<Eigen::Index>(s.size() / 2);
+  EXPECT_NEAR(std::abs(v[mid]), std::abs(0.01 * std::sin(5.0 * s[mid]) / std::sin(5.0)), 1e-6);
+  for (std::size_t j : {1u, 2u}) {
+    const ForcedResponse& response = solved.output.forced[j];
+    EXPECT_NE(response.diagnostic.find("above what fe's meshes resolve"), std::string::npos)
+        << response.diagnostic;
+    EXPECT_FALSE(response.at_resonance);
+  }
+  EXPECT_EQ(solved.output.summary.termination, Termination::NoConvergence)
+      << solved.output.summary.full_report();
+}
+
 TEST(FeForced, WithoutModesAskedFeComputesTheNaturalFrequenciesItChecksResonanceAgainst) {
   // Regression: with no in-plane modes asked, fe judged resonance by a fixed pivot threshold only
   // and returned 859.7 N (estimate 0.65) exactly at a natural frequency of the Gale C-2 catenary.

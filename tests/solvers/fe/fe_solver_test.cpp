@@ -85,6 +85,25 @@ TEST(FeSolver, TautStringGivesIntegerKLOverPiInBothPlanes) {
   }
 }
 
+// The default mesh (400 elements) resolves 200 modes per plane; a request of more, up to the
+// 1000-mode limit, used to refuse the whole scene although shooting solves it (issue 32). At the
+// default, fe now sizes its mesh to 2 x modes: 300 out-of-plane modes on N = 600 (no Richardson,
+// so one mesh) are the lumped taut string's own frequencies kL/pi = (2N/pi) sin(n pi / 2N).
+TEST(FeSolver, DefaultMeshGrowsToTheModesAsked) {
+  const Solved solved = solve(make_taut_inclined_problem(1e-6, 0.0, 1e-6, 1.0),
+                              modes_request(0, 300), {.richardson = false, .tolerance = 0.0});
+  ASSERT_TRUE(solved.output.outofplane.has_value()) << solved.output.summary.full_report();
+  EXPECT_NE(solved.output.summary.resolution.find("N = 600"), std::string::npos)
+      << solved.output.summary.resolution;
+  const ModalResult& modes = *solved.output.outofplane;
+  ASSERT_EQ(modes.modes.size(), 300u) << modes.summary.full_report();
+  constexpr double N = 600.0;
+  for (const Mode& mode : modes.modes) {
+    const double chain = 2.0 * N / kPi * std::sin(mode.index * kPi / (2.0 * N));
+    EXPECT_LE(relative_error(mode.k_l_over_pi, chain), 1e-6) << "mode " << mode.index;
+  }
+}
+
 TEST(FeSolver, UnextrapolatedTautStringConvergesAtSecondOrder) {
   const Problem problem = make_taut_inclined_problem(1e-6, 0.0, 1e-6, 1.0);
   std::vector<std::vector<double>> omegas;
@@ -528,19 +547,22 @@ TEST(FeSolverOptions, TooFewElementsIsInvalidInputThroughTheRegistry) {
 // Gale's xi = -0.5..0.5 with 400 in-plane modes on 400 elements (Richardson: 400 and 800) used to
 // return a negative frequency (a mode beyond the coarse mesh's transverse branch paired with an
 // unrelated mode and extrapolated), sorted first and called converged. A request the coarsest mesh
-// cannot resolve is bad input naming the knob and the count; the largest count it resolves gives
+// of a chosen `elements` cannot resolve is bad input naming the knob and the count (at the default
+// 400 the mesh grows instead: DefaultMeshGrowsToTheModesAsked); the largest count it resolves gives
 // positive, ascending, counted frequencies.
 TEST(FeSolverOptions, ModesBeyondWhatTheCoarsestMeshResolvesAreRefused) {
   const SolverEntry* entry = find_solver("fe");
   ASSERT_NE(entry, nullptr);
   const Solved solved = catena::testing::prepare(make_gale_xi_problem(-0.5, 0.5));
-  for (const auto& [inplane, knobs] : {std::pair{400, SolverKnobs{}}, std::pair{600, SolverKnobs{}},
-                                       std::pair{201, SolverKnobs{{"richardson", false}}}}) {
+  for (const auto& [inplane, knobs] :
+       {std::pair{404, SolverKnobs{{"elements", 404L}}},
+        std::pair{600, SolverKnobs{{"elements", 404L}}},
+        std::pair{203, SolverKnobs{{"elements", 404L}, {"richardson", false}}}}) {
     const SolveRequest request = modes_request(inplane, 0);
     const SolveContext context{solved.problem, solved.statics, solved.groups, request};
     expect_invalid(
         [&] { run_solver(*entry, context, knobs); },
-        "[solvers.fe].elements = 400: too few for " + std::to_string(inplane) + " in-plane modes");
+        "[solvers.fe].elements = 404: too few for " + std::to_string(inplane) + " in-plane modes");
   }
   const Solved largest =
       solve(make_gale_xi_problem(-0.5, 0.5), modes_request(200, 0),

@@ -259,6 +259,26 @@ TEST(ShootingSeabed, FrictionThatSlackensTheGroundedPartIsDeclinedWithAReason) {
   EXPECT_FALSE(out.outofplane.has_value() && !out.outofplane->modes.empty());
 }
 
+// k_s = 1e24 N/m per m (1e12 e-folds of the foundation's solution on a chain) made the grounded
+// run store one e^600 factor per 600 e-folds: 24 GB and a SIGKILL under a time limit (issue 32).
+// Reading bounds k L^2 / W (Problem::validate), but the e-folds L sqrt(k / T) also grow as the
+// tension falls: beyond 1e8 shooting declines, naming the stiffness, before any shot; below, it
+// still solves. The line lies on the seabed: H = 1 N, k = 1e15 is 3.2e9 e-folds over 100 m.
+TEST(ShootingSeabed, FoundationTooStiffForTheShotIsDeclinedNamingTheStiffness) {
+  GroundedString g;
+  g.H = 1.0;
+  g.k_s = 1e15;
+  const SolverOutput out = solve_with(g.problem(), g.statics(), 3, 3);
+  EXPECT_EQ(out.summary.termination, Termination::NotApplicable);
+  EXPECT_NE(out.summary.message.find("[seabed] stiffness 1e+15 N/m per m"), std::string::npos)
+      << out.summary.message;
+  g.H = 1e5;  // 1e7 e-folds
+  const SolverOutput stiff = solve_with(g.problem(), g.statics(), 3, 0);
+  ASSERT_TRUE(stiff.inplane.has_value()) << stiff.summary.message;
+  EXPECT_EQ(stiff.inplane->summary.termination, Termination::Converged)
+      << stiff.inplane->summary.message;
+}
+
 // As k_s grows the grounded part is pinned vertically: the in-plane frequencies converge, their
 // change per decade of k_s shrinking by a steady factor (printed with the observed order in k_s).
 TEST(ShootingSeabed, InPlaneFrequenciesConvergeAsTheSeabedStiffens) {
