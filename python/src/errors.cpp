@@ -1,12 +1,27 @@
 // SPDX-License-Identifier: MIT
 // Catena's exceptions as Python exceptions (docs/reference/python.md, "Errors"): bad input is a
 // ValueError subclass whose message names the field, as in the CLI.
+#include <cstring>
 #include <filesystem>
 
 #include "bindings.hpp"
 #include "catena/core/error.hpp"
 
 namespace catena::python {
+namespace {
+
+// Sets the Python exception `type` with `what` as its message. A message may quote bytes of a file
+// in another encoding; pybind11's own call would decode it strictly and raise UnicodeDecodeError in
+// place of the real error, so invalid bytes are written as \\xNN (Python's "backslashreplace").
+void set_error(PyObject* type, const char* what) {
+  PyObject* text =
+      PyUnicode_DecodeUTF8(what, static_cast<Py_ssize_t>(std::strlen(what)), "backslashreplace");
+  if (text == nullptr) return;  // the decoding error is already set
+  PyErr_SetObject(type, text);
+  Py_DECREF(text);
+}
+
+}  // namespace
 
 void bind_errors(py::module_& module) {
   // Both are bad input, so ParseError (an unreadable or malformed scene) derives from InvalidInput
@@ -32,11 +47,11 @@ void bind_errors(py::module_& module) {
     try {
       if (pointer) std::rethrow_exception(pointer);
     } catch (const std::filesystem::filesystem_error& error) {
-      PyErr_SetString(PyExc_OSError, error.what());
+      set_error(PyExc_OSError, error.what());
     } catch (const ParseError& error) {
-      parse_error(error.what());
+      set_error(parse_error.ptr(), error.what());
     } catch (const Error& error) {
-      invalid_input(error.what());
+      set_error(invalid_input.ptr(), error.what());
     }
   });
 }

@@ -91,6 +91,14 @@ def test_files_that_cannot_be_read(tmp_path):
         catena.solve(broken)
 
 
+def test_a_message_quoting_bytes_of_another_encoding_is_still_the_real_error(tmp_path):
+    latin1 = tmp_path / "latin1.toml"
+    latin1.write_bytes(b'[cable]\nlength = "\xff"\n')  # a Latin-1 byte in a string
+    with pytest.raises(catena.ParseError) as raised:
+        catena.solve(latin1)
+    assert "latin1.toml" in str(raised.value)
+
+
 def test_given_statics_must_belong_to_the_problem():
     problem = catena.Problem(catena.Cable(**GOOD), b_m=(900.0, 300.0))
     other = catena.Problem(catena.Cable(**{**GOOD, "length_m": 1100.0}), b_m=(900.0, 300.0))

@@ -57,14 +57,23 @@ TEST(FeSummary, ForcedMessageCountsResponsesAndResonances) {
   internal::ForcedOutcome outcome;
   outcome.responses.resize(3);
   outcome.responses[1].diagnostic = "resonance";
+  outcome.responses[1].at_resonance = true;
   internal::FeTimings timings;
   timings.forced_s = 2e-3;
+  internal::ForcedOutcome declined = outcome;
   internal::describe_forced(outcome, timings);
   EXPECT_EQ(outcome.summary.termination, Termination::Converged);
   EXPECT_EQ(outcome.summary.message,
             "Converged: 2 of 3 forced frequencies (1 at resonance: no finite response)");
   ASSERT_EQ(outcome.summary.notes.size(), 1u);
   EXPECT_EQ(outcome.summary.notes[0], "time: forced response 2.000 ms");
+  // A frequency beyond what the mesh resolves has no answer: the forced part did not converge.
+  declined.responses[2].diagnostic = "beyond the mesh";
+  internal::describe_forced(declined, timings);
+  EXPECT_EQ(declined.summary.termination, Termination::NoConvergence);
+  EXPECT_EQ(declined.summary.message,
+            "No convergence: 1 of 3 forced frequencies (1 at resonance: no finite response); 1 "
+            "declined, e.g. beyond the mesh");
 }
 
 }  // namespace
