@@ -355,13 +355,7 @@ ForcedOutcome fe_damped_forced_response(const ForcedRequest& request,
     bool declined = !response.diagnostic.empty();
     if (!declined) response.diagnostic = resonance_diagnostic(omega, forcing.plane, undamped);
     if (response.diagnostic.empty()) respond(response, forcing, plan, levels, naturals, pencils);
-    if (response.diagnostic.empty() && !(response.relative_error_estimate <= 1.0)) {
-      response.diagnostic = fmt::format(
-          "relative error estimate {:.3g} > 1 at omega = {:.6g} rad/s: no digit of the response "
-          "can be trusted",
-          response.relative_error_estimate, omega);
-      declined = true;
-    }
+    if (fe_decline_untrusted_response(response)) declined = true;
     response.at_resonance = !declined && !response.diagnostic.empty();
     response.near_resonance = response.diagnostic.empty() && near_damped_natural(omega, naturals);
     if (!response.diagnostic.empty()) outcome.summary.warnings.push_back(response.diagnostic);

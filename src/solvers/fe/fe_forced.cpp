@@ -281,6 +281,15 @@ std::string fe_forcing_beyond_mesh(double omega, double limit) {
       omega, limit);
 }
 
+bool fe_decline_untrusted_response(ForcedResponse& response) {
+  if (!response.diagnostic.empty() || response.relative_error_estimate <= 1.0) return false;
+  response.diagnostic = fmt::format(
+      "relative error estimate {:.3g} > 1 at omega = {:.6g} rad/s: no digit of the response can "
+      "be trusted",
+      response.relative_error_estimate, response.omega_rad_s);
+  return true;
+}
+
 double frequency_error_amplification(double omega,
                                      const std::vector<FeNaturalFrequency>& naturals) {
   double worst = 0.0;
@@ -383,14 +392,7 @@ ForcedOutcome fe_forced_response(const ForcedRequest& request,
     bool declined = !response.diagnostic.empty();
     if (!declined) response.diagnostic = resonance_diagnostic(omega, forcing.plane, naturals);
     if (response.diagnostic.empty()) respond(response, forcing, plan, levels, naturals);
-    if (response.diagnostic.empty() && !(response.relative_error_estimate <= 1.0)) {
-      // An estimate above 1 carries no digit: not an answer (issue 32, item 10).
-      response.diagnostic = fmt::format(
-          "relative error estimate {:.3g} > 1 at omega = {:.6g} rad/s: no digit of the response "
-          "can be trusted",
-          response.relative_error_estimate, omega);
-      declined = true;
-    }
+    if (fe_decline_untrusted_response(response)) declined = true;
     // Any other diagnostic of fe's forced response is a resonance (its own, or a singular
     // K - omega^2 M below the mesh's limit).
     response.at_resonance = !declined && !response.diagnostic.empty();

@@ -84,6 +84,11 @@ double fe_forcing_limit(const FeLevels& levels,
 /// The diagnostic of a forcing frequency above `limit` (fe_forcing_limit), or empty.
 std::string fe_forcing_beyond_mesh(double omega, double limit);
 
+/// Declines a computed response whose relative error estimate is above 1 (or not a number): no
+/// digit of it can be trusted, so it is not an answer (issue 32, item 10). True when it declined
+/// (the diagnostic then says why); false, and `response` unchanged, otherwise.
+bool fe_decline_untrusted_response(ForcedResponse& response);
+
 /// How a relative error delta_n of the natural frequencies propagates into the forced response
 /// at `omega`: max over the modes with an estimate of 2 delta_n omega_n^2 / |omega_n^2 - omega^2|
 /// (the derivative of 1 / (omega_n^2 - omega^2) times the change 2 delta_n omega_n^2 of omega_n^2,
