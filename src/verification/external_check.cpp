@@ -11,6 +11,7 @@
 #include <map>
 
 #include "catena/core/error.hpp"
+#include "catena/solvers/solve_request.hpp"
 #include "verification/internal/shape_comparison.hpp"
 
 namespace catena {
@@ -59,6 +60,11 @@ std::vector<ModeGroup> group_results(const std::vector<ExternalMode>& results) {
   for (const ExternalMode& row : results) {
     if (row.mode < 1)
       throw InvalidInput(fmt::format("{}: mode = {}: must be >= 1", row.origin, row.mode));
+    // Catena solves at most kMaxRequestModes per plane: a higher mode has no reference, and a
+    // reference near the limit is minutes of work, so it is refused before anything is solved.
+    if (row.mode > kMaxRequestModes)
+      throw InvalidInput(fmt::format("{}: mode = {}: Catena solves at most {} modes per plane",
+                                     row.origin, row.mode, kMaxRequestModes));
     if (!std::isfinite(row.omega_rad_s) || row.omega_rad_s <= 0.0) {
       throw InvalidInput(fmt::format("{}: frequency = {} rad/s: must be finite and > 0", row.origin,
                                      row.omega_rad_s));

@@ -187,5 +187,18 @@ TEST(ExternalCheck, RejectsDuplicatesMixedResolutionsAndMissingReference) {
   testing::expect_invalid([&] { options.validate(); }, "rtol");
 }
 
+TEST(ExternalCheck, ModesBeyondWhatCatenaSolvesAreRefusedBeforeAnySolve) {
+  std::vector<ExternalMode> rows = biased_code(1000000, 1.0, 0.0, 0.0, {10.0});
+  try {
+    validate_external_results(rows);
+    FAIL() << "mode 1000000 accepted";
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find("mode = 1000000"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("at most 1000"), std::string::npos) << error.what();
+  }
+  rows = biased_code(1000, 1.0, 0.0, 0.0, {10.0});
+  EXPECT_NO_THROW(validate_external_results(rows));
+}
+
 }  // namespace
 }  // namespace catena

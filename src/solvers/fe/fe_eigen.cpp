@@ -22,6 +22,10 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// Thrown from the operator when FeEigenWorkspace::should_stop says so: it unwinds Spectra's
+// iteration (which has no stop hook of its own) back to solve_iteratively.
+struct StopRequested {};
+
 // K - sigma M is singular (or nearly) at the shift: the shift is moved (solve_iteratively). A type
 // of its own, so that it is not confused with Spectra's std::invalid_argument for bad arguments.
 class SingularShift : public std::invalid_argument {
@@ -365,7 +369,8 @@ void solve_iteratively(const FeMatrices& matrices,
   ShiftInvertOperator op(matrices.stiffness, matrices.mass, workspace.factor);
   const MassFactor factor(matrices.mass, matrices.dofs_per_node);
   StandardFormOperator standard(op, factor);
-  const SymmetricOperator apply = [&standard](const double* x, double* y) {
+  const SymmetricOperator apply = [&standard, &workspace](const double* x, double* y) {
+    if (workspace.should_stop && workspace.should_stop()) throw StopRequested();
     standard.perform_op(x, y);
   };
   const Vector start_guess = standard_form_guess(guess, factor, standard.rows());
@@ -380,7 +385,9 @@ void solve_iteratively(const FeMatrices& matrices,
       out.iteration_time_s += seconds_since(start);
       out.restarts += lanczos.restarts;
       out.operations += lanczos.operations;
-      if (lanczos.converged) {
+      if (lanczos.converged && workspace.should_stop && workspace.should_stop()) {
+        throw StopRequested();  // polishing hundreds of Ritz pairs costs as much again
+      } else if (lanczos.converged) {
         take_ritz_pairs(std::move(lanczos), sigma, factor, out);
         const auto start_polish = Clock::now();
         polish(matrices, op, factor, out);
@@ -404,6 +411,10 @@ void solve_iteratively(const FeMatrices& matrices,
       sigma = moved;
       out.termination = Termination::NumericalFailure;
       out.message = error.what();
+    } catch (const StopRequested&) {
+      out.termination = Termination::NoConvergence;
+      out.message = "Lanczos iteration stopped by the run's time limit";
+      break;
     } catch (const std::invalid_argument& error) {
       // Spectra rejected its arguments (solved_densely keeps them in range): nothing to retry.
       out.termination = Termination::NumericalFailure;

@@ -9,6 +9,7 @@
 /// inertia. Problems of at most 64 unknowns are solved densely.
 
 #include <Eigen/Dense>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,10 @@ struct FeEigenSolution {
 /// fault per 4 KiB; reused, it costs nothing. (Spectra allocates its Lanczos basis per solve.)
 struct FeEigenWorkspace {
   BandedLdlt factor;
+  /// Asked before every operator application of the Lanczos iteration; true stops the solve
+  /// (NoConvergence, "stopped: ..."). One Lanczos run at hundreds of modes takes minutes and cannot
+  /// be split into smaller units of work, so a time limit must reach inside it (issue 32, item 5).
+  std::function<bool()> should_stop;
 };
 
 /// Lowest `modes` eigenpairs. `modes` must be < number of unknowns (the caller validates).

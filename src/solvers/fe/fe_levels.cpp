@@ -248,6 +248,7 @@ FePlaneEigenReport solve_level_modes(FeLevels& levels,
   long solved = 0;
   FeEigenWorkspace workspace;                 // one banded factor for every level of this plane
   const FeEigenSolution* previous = nullptr;  // the last converged level: its modes start the next
+  if (meter) workspace.should_stop = [meter] { return meter->expired(); };
   for (auto& row : levels) {
     for (FeLevel& level : row) {
       const auto start = Clock::now();

@@ -120,6 +120,24 @@ TEST(RunLimitsTimeLimit, FrobeniusStopsWithinTheLimitOnALongRun) {
   EXPECT_LT(seconds, 30.0);
 }
 
+// A hang guard (not a speed test): fe at 1000 in-plane modes grows its default mesh to 2000
+// elements, and one Lanczos run there takes minutes that cannot be split into levels; under a 1 s
+// limit the operator's stop hook ends it with the reason. 30 s only catches a hook that no longer
+// reaches inside the iteration.
+TEST(RunLimitsTimeLimit, FeStopsInsideOneLanczosRunOnALongRun) {
+  const testing::SolvedProblem solved = testing::prepare(make_gale_sag_problem(0.0, 0.9));
+  const RunLimits limits = RunLimits::time_limit(1.0);
+  const SolveContext context{solved.problem, solved.statics, solved.groups,
+                             testing::modes_request(1000, 0), &limits};
+  const auto start = RunLimits::Clock::now();
+  const SolverOutput output = run_solver(*find_solver("fe"), context, {});
+  const double seconds = std::chrono::duration<double>(RunLimits::Clock::now() - start).count();
+  EXPECT_EQ(output.summary.termination, Termination::NoConvergence);
+  EXPECT_NE(output.summary.message.find("time limit of 1 s reached after"), std::string::npos)
+      << output.summary.message;
+  EXPECT_LT(seconds, 30.0);
+}
+
 // A forced response alone: its first frequency is computed, the rest are not.
 TEST_F(ExpiredDeadline, ForcedResponseKeepsTheFrequenciesDone) {
   const RunLimits limits = expired_limits();
