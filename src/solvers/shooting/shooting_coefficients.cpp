@@ -72,6 +72,7 @@ ShootingCoefficients ShootingCoefficients::from_statics(const StaticSolution& st
   c.H = statics.horizontal_force_n();
   c.V_A = statics.vertical_force_a_n();
   if (statics.is_line()) {
+    const Line line = statics.line();  // by value: a reference into statics.line() would dangle
     for (const StaticPiece& piece : statics.pieces()) {
       // A line entirely on the seabed ends in an empty suspended piece: nothing to integrate.
       if (statics.has_contact() && !piece.grounded && piece.section.length_m <= 0.0) continue;
@@ -79,13 +80,13 @@ ShootingCoefficients ShootingCoefficients::from_statics(const StaticSolution& st
                              ? grounded_piece_of(piece, statics.seabed())
                              : piece_of(piece.section, piece.s_begin_m, piece.vertical_begin_n));
       // The statics' sections carry no damping (it does not enter the statics): the segment's.
-      const SectionDamping& damping = statics.line().segments[piece.segment].damping;
+      const SectionDamping& damping = line.segments[piece.segment].damping;
       c.pieces.back().damping_tangential = damping.tangential_n_s_per_m2;
       c.pieces.back().damping_normal = damping.normal_n_s_per_m2;
       c.pieces.back().damping_axial = damping.axial_n_s;
     }
     c.pieces.back().s_end = cable.length_m;
-    for (const PointAttachment& point : statics.line().points) {
+    for (const PointAttachment& point : line.points) {
       c.points.push_back(point_of(point, statics));
     }
   } else {

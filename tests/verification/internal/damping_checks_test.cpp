@@ -151,7 +151,8 @@ TEST(DampingChecks, AModelsDeltaIsMeasuredOnItsOwnAtLightDamping) {
   SceneResult r = gale_result(4e-4);
   r.outputs = {output_with("shooting", {{1.86, 1.86e-4}}),
                output_with("asymptotic", {{1.86, 1.86e-4 * 1.05}})};
-  const CheckResult* c = find(run_checks(r), "decay-rate", 1);
+  const std::vector<CheckResult> c_checks = run_checks(r);
+  const CheckResult* c = find(c_checks, "decay-rate", 1);
   ASSERT_NE(c, nullptr);
   EXPECT_NEAR(c->measured, 0.05 / 1.05, 1e-9);
   EXPECT_NE(c->detail.find("on its own"), std::string::npos) << c->detail;
