@@ -17,20 +17,13 @@
 #include "catena/solvers/solver_registry.hpp"
 #include "catena/statics/dimensionless_groups.hpp"
 #include "catena/statics/problem_builders.hpp"
+#include "solvers/common/solver_test_support.hpp"
 
 namespace catena {
 namespace {
 
-Problem mooring(Vec2 b = Vec2(900.0, 300.0)) {
-  Problem p;
-  p.cable.length_m = 1000.0;
-  p.cable.weight_n_per_m = 1000.0;
-  p.cable.mass_kg_per_m = 120.0;
-  p.cable.axial_stiffness_n = 5e8;
-  p.cable.added_mass_kg_per_m = 80.0;
-  p.supports.b_m = b;
-  return p;
-}
+// The mooring line, its fairlead at `b` (solver_test_support.hpp).
+Problem mooring(Vec2 b = Vec2(900.0, 300.0)) { return testing::mooring_line(b); }
 
 // The InvalidInput message of check_statics_match(problem, statics of `other`), or "" if none.
 std::string refusal(const Problem& problem, const Problem& other) {
