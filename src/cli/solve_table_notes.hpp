@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The lines under `catena solve`'s tables: a solver that declined or failed in one short line
+// (why), the failed checks, a count of the others that are not PASS; under --verbose every long
+// message once (each solver's resolution, plane summaries, warnings, notes; every check that is
+// not PASS).
+
+#include <string>
+
+#include "catena/verification/scene_runner.hpp"
+
+namespace catena::cli {
+
+/// `message` cut at its first clause (": " or "; " after some words) and to `width` characters.
+std::string short_message(const std::string& message, std::size_t width = 96);
+
+/// Declines, failures, partial results, forced diagnostics, overdamped roots and unconverged
+/// fixed points, one short line each (each line ends in a newline, indented by two spaces).
+std::string solver_notes(const SceneResult& result);
+
+/// The checks worth a line: FAIL always (one line each), and a count of SOURCE and WARN (each
+/// listed under `verbose`).
+std::string check_notes(const SceneResult& result, bool verbose);
+
+/// Every solver's long messages, each said once (--verbose).
+std::string solver_details(const SceneResult& result);
+
+}  // namespace catena::cli
