@@ -101,10 +101,11 @@ void print_result(const SceneResult& result, const PrintOptions& options) {
     fmt::print("  (--units {}: not defined for this line; rad/s shown)\n",
                unit_label(options.unit));
   const auto names = references(result);
-  bool tables = false;
+  bool tables = false, missed = false;
   for (const Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
     const auto table = modal_table(result, plane, unit, names[plane == Plane::InPlane ? 0 : 1]);
     tables = tables || table;
+    missed = missed || (table && misses_target(*table));
     print_table(table, options.style);
   }
   const auto forced = forced_table(result);
@@ -113,8 +114,8 @@ void print_result(const SceneResult& result, const PrintOptions& options) {
   print_table(tension, options.style);
   if (tables || forced || tension)
     fmt::print(
-        "  est: the solver's relative error estimate; spread: (max - min) / max of the exact "
-        "solvers\n");
+        "  est: relative error estimate{}; spread: (max - min) / max over the exact solvers\n",
+        missed ? " (*: beyond the solver's target)" : "");
   fmt::print("{}", solver_notes(result));
   if (options.verbose) fmt::print("{}", solver_details(result));
   fmt::print("{}{}", check_notes(result, options.verbose), verdict_line(result, options.style));

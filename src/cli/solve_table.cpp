@@ -38,7 +38,8 @@ std::vector<Column> solver_columns(const SolverTable& table, std::size_t k) {
   for (const auto& row : table.rows) {
     const auto& cell = row.cells[k];
     value.cells.push_back(cell ? fmt::format("{:.{}g}", cell->value, table.digits) : "-");
-    estimate.cells.push_back(cell ? estimate_text(cell->estimate) : "-");
+    estimate.cells.push_back(cell ? estimate_text(cell->estimate) + (cell->meets_target ? "" : "*")
+                                  : "-");
   }
   return {value, estimate};
 }
@@ -100,6 +101,13 @@ void append_lines(std::vector<std::string>& lines,
 }
 
 }  // namespace
+
+bool misses_target(const SolverTable& table) {
+  for (const auto& row : table.rows)
+    for (const auto& cell : row.cells)
+      if (cell && !cell->meets_target) return true;
+  return false;
+}
 
 std::optional<double> exact_spread(const SolverTable& table, const TableRow& row) {
   double low = INFINITY, high = -INFINITY, scale = 0.0;

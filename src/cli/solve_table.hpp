@@ -17,6 +17,9 @@ struct TableCell {
   double value = 0.0;
   /// The solver's relative error estimate (< 0: none, printed "-").
   double estimate = -1.0;
+  /// False when the estimate exceeds the solver's accuracy target: the value is shown (the solver
+  /// returned it as a partial result) with its estimate marked "*".
+  bool meets_target = true;
 };
 
 struct TableRow {
@@ -46,6 +49,9 @@ struct SolverTable {
   std::vector<std::string> extra_headers;
   std::vector<TableRow> rows;
 };
+
+/// True when a cell of the table misses its solver's accuracy target (marked "*").
+bool misses_target(const SolverTable& table);
 
 /// The relative spread of the exact solvers' values in `row`: (max - min) / max |value|; nullopt
 /// with fewer than two values.

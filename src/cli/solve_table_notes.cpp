@@ -47,11 +47,21 @@ std::string overdamped_note(const SolverOutput& output) {
 
 std::string short_message(const std::string& message, std::size_t width) {
   std::string text = message;
-  // The first clause says why; what follows explains it (--verbose has the whole message).
-  for (const char* cut : {"; ", ": "}) {
-    const std::size_t at = text.find(cut, 12);
-    if (at != std::string::npos) text = text.substr(0, at);
+  // The termination is said before the message: drop its echo.
+  for (const char* echo : {"No convergence: ", "Converged: "})
+    if (text.rfind(echo, 0) == 0) text = text.substr(std::string(echo).size());
+  // The first clause says why; what follows explains it (--verbose has the whole message). A
+  // clause ends at "; " or ": " outside parentheses, after a few words.
+  int depth = 0;
+  for (std::size_t i = 0; i + 1 < text.size(); ++i) {
+    depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
+    if (depth == 0 && i >= 20 && (text[i] == ';' || text[i] == ':') && text[i + 1] == ' ') {
+      text = text.substr(0, i);
+      break;
+    }
   }
+  const std::size_t aside = text.find(" (");
+  if (text.size() > width && aside != std::string::npos) text = text.substr(0, aside);
   if (text.size() > width) text = text.substr(0, width - 3) + "...";
   return text;
 }

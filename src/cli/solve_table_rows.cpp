@@ -111,9 +111,9 @@ std::optional<SolverTable> modal_table(const SceneResult& result,
     for (const auto& solver : table.solvers) {
       const Mode* mode = mode_at(*plane_result(output_of(result, solver), plane), index);
       const auto value = mode ? in_unit(*mode, unit) : std::nullopt;
-      row.cells.push_back(
-          value ? std::optional<TableCell>(TableCell{*value, mode->relative_error_estimate})
-                : std::nullopt);
+      row.cells.push_back(value ? std::optional<TableCell>(TableCell{
+                                      *value, mode->relative_error_estimate, mode->meets_target})
+                                : std::nullopt);
     }
     if (damped) {
       const Mode* mode = mode_at(delta_modes, index);

@@ -39,13 +39,17 @@ TEST(DragCli, ADragSceneIsSolvedAndItsDynamicTensionPrintedAndWritten) {
                           "[request.motion]\ndirection = [1.0, 0.0]\namplitude = 2.0\n"
                           "periods = [8.0, 12.0]\n");
   const fs::path json_path = scene.parent_path() / "regular.json";
-  const CliRun run = run_cli("solve " + scene.string() + " --solver fe --solver shooting --json " +
+  const CliRun run = run_cli("solve " + scene.string() +
+                             " --verbose --solver fe --solver shooting --json " +
                              json_path.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("drag: d = 0.12 m, Cd = 2.4, CdAx = 1.15"), std::string::npos)
       << run.output;
-  EXPECT_NE(run.output.find("dynamic tension, regular motion"), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("converged"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("dynamic tension at the ends"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("T = 12 s fairlead max = mean + amplitude [N]"), std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("dynamic tension fixed point converged"), std::string::npos)
+      << run.output;
   const auto document = nlohmann::json::parse(std::ifstream(json_path));
   const auto& scene_json = document["scenes"][0];
   EXPECT_EQ(scene_json["request"]["motion"]["periods_s"], nlohmann::json({8.0, 12.0}));
