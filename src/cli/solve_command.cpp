@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `catena solve SCENE [--json FILE]`: one scene (or one sweep), every applicable solver.
 #include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <array>
 #include <iostream>
@@ -39,6 +41,16 @@ struct SolveArguments {
   const CLI::Option* time_limit = nullptr;
   TableArguments tables;
 };
+
+// True when --json writes to this process's stdout ("-", /dev/stdout, the file stdout is
+// redirected to): then --quiet prints nothing else there, so that stdout holds the JSON alone.
+bool json_on_stdout(const std::string& json) {
+  if (json == "-") return true;
+  struct stat file {};
+  struct stat out {};
+  return !json.empty() && ::stat(json.c_str(), &file) == 0 && ::fstat(STDOUT_FILENO, &out) == 0 &&
+         file.st_dev == out.st_dev && file.st_ino == out.st_ino;
+}
 
 struct PrintOptions {
   FrequencyUnit unit = FrequencyUnit::RadPerSecond;
@@ -190,6 +202,7 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
             arguments->json,
             {arguments->scene, arguments->tables.tolerances, arguments->tables.findings}, "--json");
       }
+      const bool quiet_json = arguments->quiet && json_on_stdout(arguments->json);
       const std::vector<Scene> scenes = read_scene_file(arguments->scene);
       std::vector<SceneResult> results;
       SceneRunOptions options = run_options_with_tables(arguments->tables);
@@ -202,10 +215,11 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
         results.push_back(run_scene(scene, options));
         progress.clear();
         if (arguments->json == "-") continue;  // stdout holds the JSON alone
-        if (arguments->quiet)
-          fmt::print("{}", verdict_line(results.back(), print.style));
-        else
+        if (arguments->quiet) {
+          if (!quiet_json) fmt::print("{}", verdict_line(results.back(), print.style));
+        } else {
           print_result(results.back(), print);
+        }
       }
       if (arguments->json == "-") {
         std::cout << results_to_json(results) << '\n';

@@ -114,7 +114,7 @@ TEST(LineCli, AnalyticSolversDeclineALineWithTheirReason) {
   const fs::path scene = write_scene(
       "modes.toml", kLine + "[request]\ninplane_modes = 2\n[solvers]\nfrobenius = {}\n");
   const CliRun run = run_cli("solve " + scene.string());
-  EXPECT_NE(run.output.find("not-applicable"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("frobenius: not applicable: "), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("one uniform cable"), std::string::npos) << run.output;
 }
 
