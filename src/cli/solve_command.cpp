@@ -128,7 +128,7 @@ void print_result(const SceneResult& result, const PrintOptions& options) {
     fmt::print(
         "  est: relative error estimate{}; spread: (max - min) / max over the exact solvers\n",
         missed ? " (*: beyond the solver's target)" : "");
-  fmt::print("{}", solver_notes(result));
+  fmt::print("{}", solver_notes(result, options.verbose));
   if (options.verbose) fmt::print("{}", solver_details(result));
   fmt::print("{}{}", check_notes(result, options.verbose), verdict_line(result, options.style));
 }

@@ -66,19 +66,28 @@ std::string short_message(const std::string& message, std::size_t width) {
   return text;
 }
 
-std::string solver_notes(const SceneResult& result) {
+std::string solver_notes(const SceneResult& result, bool verbose) {
   std::string text;
   for (const auto& output : result.outputs) {
     const SolverSummary& summary = output.summary;
-    if (summary.termination != Termination::Converged)
+    // Under --verbose the whole message follows (solver_details); said once, not twice.
+    if (summary.termination != Termination::Converged && !verbose)
       text += fmt::format("  {}: {}: {}\n", output.solver, termination_text(summary.termination),
                           short_message(summary.message));
+    // A plane the solver declined or missed while the other converged.
+    for (const auto* modes : {&output.inplane, &output.outofplane}) {
+      if (!*modes || verbose || summary.termination != Termination::Converged) continue;
+      const SolverSummary& part = (*modes)->summary;
+      if (part.termination == Termination::Converged) continue;
+      text += fmt::format("  {} {}: {}: {}\n", output.solver, to_string((*modes)->plane),
+                          termination_text(part.termination), short_message(part.message));
+    }
     for (const auto& response : output.forced)
-      if (!response.diagnostic.empty())
+      if (!response.diagnostic.empty() && !verbose)
         text += fmt::format("  {} at {:.6g} rad/s: {}\n", output.solver, response.omega_rad_s,
                             short_message(response.diagnostic));
     for (const auto& tension : output.dynamic_tension)
-      if (!tension.converged)
+      if (!tension.converged && !verbose)
         text +=
             fmt::format("  {}: dynamic tension fixed point NOT converged{}\n", output.solver,
                         tension.diagnostic.empty() ? "" : ": " + short_message(tension.diagnostic));
@@ -127,9 +136,11 @@ std::string solver_details(const SceneResult& result) {
     }
     if (lines.empty()) add_once(lines, summary.message);
     for (const auto& tension : output.dynamic_tension)
-      add_once(lines, fmt::format("dynamic tension fixed point {}: {} iterations, residual {:.2e}",
-                                  tension.converged ? "converged" : "NOT converged",
-                                  tension.iterations, tension.residual));
+      add_once(lines,
+               fmt::format("dynamic tension fixed point {}: {} iterations, residual {:.2e}{}",
+                           tension.converged ? "converged" : "NOT converged", tension.iterations,
+                           tension.residual,
+                           tension.diagnostic.empty() ? "" : "; " + tension.diagnostic));
     for (const auto& response : output.forced)
       if (!response.diagnostic.empty())
         add_once(lines,

@@ -14,9 +14,11 @@ namespace catena::cli {
 /// `message` cut at its first clause (": " or "; " after some words) and to `width` characters.
 std::string short_message(const std::string& message, std::size_t width = 96);
 
-/// Declines, failures, partial results, forced diagnostics, overdamped roots and unconverged
-/// fixed points, one short line each (each line ends in a newline, indented by two spaces).
-std::string solver_notes(const SceneResult& result);
+/// Declines (of a solver, or of one plane), failures, partial results, forced diagnostics and
+/// unconverged fixed points, one short line each, and the overdamped roots (each line ends in a
+/// newline, indented by two spaces). Under `verbose` only the overdamped roots: solver_details()
+/// says the rest in full.
+std::string solver_notes(const SceneResult& result, bool verbose);
 
 /// The checks worth a line: FAIL always (one line each), and a count of SOURCE and WARN (each
 /// listed under `verbose`).
