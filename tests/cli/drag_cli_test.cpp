@@ -39,9 +39,9 @@ TEST(DragCli, ADragSceneIsSolvedAndItsDynamicTensionPrintedAndWritten) {
                           "[request.motion]\ndirection = [1.0, 0.0]\namplitude = 2.0\n"
                           "periods = [8.0, 12.0]\n");
   const fs::path json_path = scene.parent_path() / "regular.json";
-  const CliRun run = run_cli("solve " + scene.string() +
-                             " --verbose --solver fe --solver shooting --json " +
-                             json_path.string());
+  const CliRun run =
+      run_cli("solve " + scene.string() + " --verbose --solver fe --solver shooting --json " +
+              json_path.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("drag: d = 0.12 m, Cd = 2.4, CdAx = 1.15"), std::string::npos)
       << run.output;

@@ -53,8 +53,7 @@ TEST(LineCli, StaticsOnlySceneWritesNodesAndRunsNoSolver) {
       write_scene("statics.toml", kLine + "[request]\ninplane_modes = 0\noutofplane_modes = 0\n");
   const fs::path json_path = scene.parent_path() / "statics.json";
   // The statics at every joint and point is the problem's description: --verbose.
-  const CliRun run =
-      run_cli("solve " + scene.string() + " --verbose --json " + json_path.string());
+  const CliRun run = run_cli("solve " + scene.string() + " --verbose --json " + json_path.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("joint 1"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("point 0"), std::string::npos) << run.output;

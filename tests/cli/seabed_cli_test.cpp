@@ -65,8 +65,7 @@ TEST(SeabedCli, FeAndShootingSolveALineWithContactAndTheOthersDecline) {
       << run.output;
   EXPECT_NE(run.output.find("  shooting: converged"), std::string::npos) << run.output;
   for (const char* solver : {"frobenius", "asymptotic", "airy"}) {
-    EXPECT_NE(run.output.find(std::string("  ") + solver + ": not applicable: "),
-              std::string::npos)
+    EXPECT_NE(run.output.find(std::string("  ") + solver + ": not applicable: "), std::string::npos)
         << run.output;
   }
   EXPECT_NE(run.output.find("has no model of seabed contact"), std::string::npos) << run.output;
