@@ -45,21 +45,33 @@ std::string overdamped_note(const SolverOutput& output) {
 
 }  // namespace
 
-std::string short_message(const std::string& message, std::size_t width) {
+std::string short_message(const std::string& message, bool decline, std::size_t width) {
   std::string text = message;
   // The termination is said before the message: drop its echo.
   for (const char* echo : {"No convergence: ", "Converged: "})
     if (text.rfind(echo, 0) == 0) text = text.substr(std::string(echo).size());
-  // The first clause says why; what follows explains it (--verbose has the whole message). A
-  // clause ends at "; " or ": " outside parentheses, after a few words.
+  // Clauses end at "; " or ": " outside parentheses. A decline states its reason first; a
+  // failure often states what it found first and why later: the first clause that says what went
+  // wrong, else the first.
+  std::vector<std::string> clauses;
   int depth = 0;
+  std::size_t start = 0;
   for (std::size_t i = 0; i + 1 < text.size(); ++i) {
     depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
-    if (depth == 0 && i >= 20 && (text[i] == ';' || text[i] == ':') && text[i + 1] == ' ') {
-      text = text.substr(0, i);
-      break;
+    if (depth == 0 && i - start >= 20 && (text[i] == ';' || text[i] == ':') && text[i + 1] == ' ') {
+      clauses.push_back(text.substr(start, i - start));
+      start = i + 2;
     }
   }
+  clauses.push_back(text.substr(start));
+  const auto says_why = [](const std::string& clause) {
+    for (const char* word : {" not ", "miss", "fail", "exceed", "limit", "lost", "cannot", "no "})
+      if (clause.find(word) != std::string::npos) return true;
+    return false;
+  };
+  const auto why =
+      decline ? clauses.begin() : std::find_if(clauses.begin(), clauses.end(), says_why);
+  text = why != clauses.end() ? *why : clauses.front();
   const std::size_t aside = text.find(" (");
   if (text.size() > width && aside != std::string::npos) text = text.substr(0, aside);
   if (text.size() > width) text = text.substr(0, width - 3) + "...";
@@ -70,27 +82,32 @@ std::string solver_notes(const SceneResult& result, bool verbose) {
   std::string text;
   for (const auto& output : result.outputs) {
     const SolverSummary& summary = output.summary;
-    // Under --verbose the whole message follows (solver_details); said once, not twice.
-    if (summary.termination != Termination::Converged && !verbose)
-      text += fmt::format("  {}: {}: {}\n", output.solver, termination_text(summary.termination),
-                          short_message(summary.message));
-    // A plane the solver declined or missed while the other converged.
+    // Under --verbose the whole messages follow (solver_details): said once, not twice. A plane
+    // that did not converge is named, with its own message; otherwise the solver's.
+    std::string planes;
     for (const auto* modes : {&output.inplane, &output.outofplane}) {
-      if (!*modes || verbose || summary.termination != Termination::Converged) continue;
+      if (!*modes || verbose || summary.termination == Termination::NotApplicable) continue;
       const SolverSummary& part = (*modes)->summary;
       if (part.termination == Termination::Converged) continue;
-      text += fmt::format("  {} {}: {}: {}\n", output.solver, to_string((*modes)->plane),
-                          termination_text(part.termination), short_message(part.message));
+      planes +=
+          fmt::format("  {} {}: {}: {}\n", output.solver, to_string((*modes)->plane),
+                      termination_text(part.termination),
+                      short_message(part.message, part.termination == Termination::NotApplicable));
     }
+    text += planes;
+    if (planes.empty() && summary.termination != Termination::Converged && !verbose)
+      text += fmt::format(
+          "  {}: {}: {}\n", output.solver, termination_text(summary.termination),
+          short_message(summary.message, summary.termination == Termination::NotApplicable));
     for (const auto& response : output.forced)
       if (!response.diagnostic.empty() && !verbose)
         text += fmt::format("  {} at {:.6g} rad/s: {}\n", output.solver, response.omega_rad_s,
-                            short_message(response.diagnostic));
+                            short_message(response.diagnostic, false));
     for (const auto& tension : output.dynamic_tension)
       if (!tension.converged && !verbose)
-        text +=
-            fmt::format("  {}: dynamic tension fixed point NOT converged{}\n", output.solver,
-                        tension.diagnostic.empty() ? "" : ": " + short_message(tension.diagnostic));
+        text += fmt::format(
+            "  {}: dynamic tension fixed point NOT converged{}\n", output.solver,
+            tension.diagnostic.empty() ? "" : ": " + short_message(tension.diagnostic, false));
     text += overdamped_note(output);
   }
   return text;

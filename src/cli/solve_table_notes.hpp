@@ -11,8 +11,10 @@
 
 namespace catena::cli {
 
-/// `message` cut at its first clause (": " or "; " after some words) and to `width` characters.
-std::string short_message(const std::string& message, std::size_t width = 96);
+/// One clause of `message` (clauses end at ": " or "; " outside parentheses), at most `width`
+/// characters: a decline's first (its reason); otherwise the first that says what went wrong
+/// ("not", "miss", "fail", "limit", ...), else the first.
+std::string short_message(const std::string& message, bool decline, std::size_t width = 96);
 
 /// Declines (of a solver, or of one plane), failures, partial results, forced diagnostics and
 /// unconverged fixed points, one short line each, and the overdamped roots (each line ends in a
