@@ -310,15 +310,15 @@ def test_json_of_a_damped_scene_carries_the_damping(cli, tmp_path):
     path = tmp_path / "damped.toml"
     path.write_text(scene_toml_text(scene))
     out = tmp_path / "out.json"
-    text = subprocess.run([cli, "solve", str(path), "--json", str(out)], check=True, capture_output=True,
-                          text=True).stdout
+    text = subprocess.run([cli, "solve", str(path), "--verbose", "--json", str(out)], check=True,
+                          capture_output=True, text=True).stdout
     assert "damping: c_t = 0.2 N s/m per m, c_n = 0.3 N s/m per m, c_a = 50 N s" in text
     assert json.loads(out.read_text())["scenes"][0]["problem"] == problem
     # Each converged solver's modes carry delta and zeta in the JSON and in the text table.
     for name, solver in document["solvers"].items():
         if result[name].inplane is None or len(result[name].inplane) == 0:
             continue
-        assert "omega_d [rad/s]" in text and "delta [1/s]" in text
+        assert "damped: omega_d = Im lambda" in text and "delta [1/s]" in text
         for k, mode in enumerate(solver["inplane"]["modes"]):
             assert mode["decay_rate_1_s"] == result[name].inplane.decay_rate_1_s[k]
             assert mode["damping_ratio"] == result[name].inplane.damping_ratio[k]
