@@ -110,8 +110,8 @@ void print_result(const SceneResult& result, const PrintOptions& options) {
   fmt::print("{}", statics_text(result));
   const FrequencyUnit unit = usable_unit(result, options.unit);
   if (unit != options.unit)
-    fmt::print("  (--units {}: not defined for this line; rad/s shown)\n",
-               unit_label(options.unit));
+    fmt::print(  // only Gale's ratio can be missing (solve_units.hpp)
+        "  (--units gale: Gale's ratio is defined for one uniform cable only; rad/s shown)\n");
   const auto names = references(result);
   bool tables = false, missed = false;
   for (const Plane plane : {Plane::InPlane, Plane::OutOfPlane}) {
@@ -172,13 +172,13 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
                     "the statics at every joint and point) and every long message once: each\n"
                     "solver's resolution and time, its summaries, warnings and notes, and every\n"
                     "check that is not PASS");
-  command
-      ->add_option("--units", arguments->units,
-                   "Unit of the frequencies in the tables: rad/s (omega, the default), hz\n"
-                   "(f = omega / 2 pi), kl-pi (kL/pi = omega L / (pi c), c = sqrt(T0 / (m + "
-                   "ma)), the taut\nstring's mode numbers) or gale (omega / sqrt(g/a), a = H/W0, "
-                   "Gale 1976's tables;\nuniform cables only). --json always has all four.")
-      ->excludes("--quiet");
+  command->add_option(
+      "--units", arguments->units,
+      "Unit of the frequencies in the tables: rad/s (omega, the default), hz\n"
+      "(f = omega / 2 pi), kl-pi (kL/pi = omega L sqrt((m + ma) / T0) / pi: a taut\n"
+      "string's modes are 1, 2, 3, ...) or gale (omega / sqrt(g/a), g = W0/m, a = "
+      "H/W0:\nGale 1976's tables; uniform cables only, rad/s otherwise). --json "
+      "always has all four.");
   arguments->time_limit = add_time_limit_option(
       *command, arguments->time_limit_s,
       "for each scene (a sweep file: each of its scenes), from the start of its statics");
