@@ -151,9 +151,11 @@ struct Solved {
 };
 
 Solved solve(const std::string& scene, const std::string& options = "") {
+  // Named by the test: ctest runs each test in a process of its own, in parallel.
   static int count = 0;
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
   const fs::path json_path =
-      fs::temp_directory_path() / kFolder / ("run" + std::to_string(count++) + ".json");
+      fs::temp_directory_path() / kFolder / (test + std::to_string(count++) + ".json");
   fs::create_directories(json_path.parent_path());
   CliRun run = run_cli("solve " + scene + " " + options + " --json " + json_path.string());
   json document = json::parse(std::ifstream(json_path));
