@@ -10,6 +10,8 @@
 namespace catena::cli {
 namespace {
 
+constexpr std::size_t kWidth = 120;  // the terminal width the lines fit (solve-output.md)
+
 std::string termination_text(Termination termination) {
   std::string text = to_string(termination);
   std::replace(text.begin(), text.end(), '-', ' ');
@@ -72,8 +74,11 @@ std::string short_message(const std::string& message, bool decline, std::size_t 
   const auto why =
       decline ? clauses.begin() : std::find_if(clauses.begin(), clauses.end(), says_why);
   text = why != clauses.end() ? *why : clauses.front();
+  // Too long: up to its first aside, else its last comma that fits, else cut.
   const std::size_t aside = text.find(" (");
   if (text.size() > width && aside != std::string::npos) text = text.substr(0, aside);
+  const std::size_t comma = text.size() > width ? text.rfind(", ", width) : std::string::npos;
+  if (comma != std::string::npos && comma >= 20) text = text.substr(0, comma);
   if (text.size() > width) text = text.substr(0, width - 3) + "...";
   return text;
 }
@@ -89,16 +94,23 @@ std::string solver_notes(const SceneResult& result, bool verbose) {
       if (!*modes || verbose || summary.termination == Termination::NotApplicable) continue;
       const SolverSummary& part = (*modes)->summary;
       if (part.termination == Termination::Converged) continue;
-      planes +=
-          fmt::format("  {} {}: {}: {}\n", output.solver, to_string((*modes)->plane),
-                      termination_text(part.termination),
-                      short_message(part.message, part.termination == Termination::NotApplicable));
+      const std::string head =
+          fmt::format("  {} {}: {}: ", output.solver, to_string((*modes)->plane),
+                      termination_text(part.termination));
+      planes += head +
+                short_message(part.message, part.termination == Termination::NotApplicable,
+                              kWidth - head.size()) +
+                "\n";
     }
     text += planes;
-    if (planes.empty() && summary.termination != Termination::Converged && !verbose)
-      text += fmt::format(
-          "  {}: {}: {}\n", output.solver, termination_text(summary.termination),
-          short_message(summary.message, summary.termination == Termination::NotApplicable));
+    if (planes.empty() && summary.termination != Termination::Converged && !verbose) {
+      const std::string head =
+          fmt::format("  {}: {}: ", output.solver, termination_text(summary.termination));
+      text += head +
+              short_message(summary.message, summary.termination == Termination::NotApplicable,
+                            kWidth - head.size()) +
+              "\n";
+    }
     for (const auto& response : output.forced)
       if (!response.diagnostic.empty() && !verbose)
         text += fmt::format("  {} at {:.6g} rad/s: {}\n", output.solver, response.omega_rad_s,
