@@ -216,6 +216,20 @@ TEST(ModalIdentification, NoiseAloneYieldsNoIdentifiableMode) {
   for (const IdentifiedMode& m : id.modes) EXPECT_FALSE(m.identifiable) << m.frequency_hz;
 }
 
+TEST(ModalIdentification, GrowingOscillationIsNotReported) {
+  // A decaying mode and a growing one (negative damping, as an unstable time integration gives):
+  // the decaying one is reported, the growing one listed as discarded.
+  const Decay d{{{0.2, 0.01, 1.0, 0.0}, {0.5, -0.01, 0.2, 1.0}}, 10.0, 60.0, 1e4};
+  const Vector t = sample_times(d);
+  const Identification id = identify_modes(t, {channel(t, d, 0.0, 9u)});
+  ASSERT_EQ(id.modes.size(), 1u);
+  EXPECT_NEAR(id.modes[0].frequency_hz, 0.2, id.modes[0].frequency_uncertainty_hz);
+  ASSERT_FALSE(id.discarded.empty());
+  bool growing = false;
+  for (const std::string& line : id.discarded) growing |= line.find("growing") != std::string::npos;
+  EXPECT_TRUE(growing);
+}
+
 TEST(ModalIdentification, BadInputNamesTheProblem) {
   const Decay d{{{0.2, 0.01, 1.0, 0.0}}, 10.0, 20.0, 0.0};
   const Vector t = sample_times(d);

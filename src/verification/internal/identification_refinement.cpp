@@ -105,6 +105,9 @@ PoleFit refine_poles(const Vector& tau_s,
   Projection projection{tau_s, channels, Vector::Ones(num_channels)};
   PoleFit fit;
   fit.converged = minimise(projection, x);
+  // (delta, -omega) fits as well as (delta, omega) with the sine's amplitude negated: report omega
+  // > 0.
+  for (Index k = 0; k < poles; ++k) x[2 * k + 1] = std::abs(x[2 * k + 1]);
   Vector residual;
   projection(x, residual);
   const Index per_channel_parameters = 1 + 2 * poles;
@@ -123,6 +126,7 @@ PoleFit refine_poles(const Vector& tau_s,
       projection.weights[c] = 1.0 / std::sqrt(variance);
     }
     fit.converged = minimise(projection, x) && fit.converged;
+    for (Index k = 0; k < poles; ++k) x[2 * k + 1] = std::abs(x[2 * k + 1]);
     projection(x, residual);
     for (Index c = 0; c < num_channels; ++c) {
       fit.residual_variance[static_cast<std::size_t>(c)] =
