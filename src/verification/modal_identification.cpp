@@ -146,6 +146,30 @@ PoleReading read_pole(const internal::PoleFit& fit,
   return out;
 }
 
+// The pencil's poles with Im > 0 below the Nyquist frequency: the oscillations the fit starts from.
+// Real poles (the offset left by removing the mean, a drift) and poles at the Nyquist frequency
+// are listed in `discarded`; conjugates are implied.
+std::vector<std::complex<double>> oscillating_poles(const std::vector<std::complex<double>>& poles,
+                                                    double dt,
+                                                    std::vector<std::string>& discarded) {
+  std::vector<std::complex<double>> out;
+  const double nyquist_rad_s = kPi / dt;
+  for (const std::complex<double>& lambda : poles) {
+    if (lambda.imag() > 1e-9 * nyquist_rad_s && lambda.imag() < 0.98 * nyquist_rad_s) {
+      out.push_back(lambda);
+    } else if (std::abs(lambda.imag()) <= 1e-9 * nyquist_rad_s) {
+      discarded.push_back(
+          fmt::format("a real pole, lambda = {:.6g} 1/s: an offset or a drift, not an oscillation",
+                      lambda.real()));
+    } else if (lambda.imag() > 0.0) {
+      discarded.push_back(
+          fmt::format("a pole at the Nyquist frequency, lambda = {:.6g}{:+.6g}i 1/s: noise",
+                      lambda.real(), lambda.imag()));
+    }
+  }
+  return out;
+}
+
 // Whether a reported mode can be stood behind, and if not why (IdentifiedMode::identifiable).
 void judge(PoleReading& pole, bool converged) {
   IdentifiedMode& m = pole.mode;
@@ -203,22 +227,8 @@ Identification identify_modes(const Vector& time_s,
       record.channels, record.sample_interval_s, options.max_model_order, record.white_fraction);
   out.singular_values = pencil.singular_values;
   out.model_order = pencil.order;
-  std::vector<std::complex<double>> initial;
-  const double pencil_nyquist = kPi / record.sample_interval_s;
-  for (const std::complex<double>& lambda : pencil.poles_1_s) {
-    if (lambda.imag() > 1e-9 * pencil_nyquist && lambda.imag() < 0.98 * pencil_nyquist) {
-      initial.push_back(lambda);
-    } else if (std::abs(lambda.imag()) <= 1e-9 * pencil_nyquist) {
-      out.discarded.push_back(
-          fmt::format("a real pole, lambda = {:.6g} 1/s: an offset or a drift, not an oscillation",
-                      lambda.real()));
-    } else if (lambda.imag() > 0.0) {
-      out.discarded.push_back(
-          fmt::format("a pole at the Nyquist frequency, lambda = {:.6g}{:+.6g}i "
-                      "1/s: noise",
-                      lambda.real(), lambda.imag()));
-    }
-  }
+  const std::vector<std::complex<double>> initial =
+      oscillating_poles(pencil.poles_1_s, record.sample_interval_s, out.discarded);
   const Index n_fit = record.channels.front().size();
   const Vector tau =
       Vector::LinSpaced(n_fit, 0.0, static_cast<double>(n_fit - 1) * record.sample_interval_s);
