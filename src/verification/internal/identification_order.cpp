@@ -13,7 +13,7 @@ double noise_threshold(const std::vector<double>& singular_values,
   // White noise alone fills a rows x cols matrix with singular values within
   // sqrt(rows) sigma (1 +- sqrt(cols / rows)) (Marchenko-Pastur); a Hankel matrix's structure
   // spreads them further: in 20 draws each of 6 shapes (40 x 21 to 11800 x 201, 1 to 3 stacked
-  // channels) the largest stayed within 1.15 (1 + sqrt(c))^2 of the trailing half's median. The
+  // channels) the largest stayed within 1.22 (1 + sqrt(c))^2 of the trailing half's median. The
   // factor 2 leaves a margin, so that noise alone yields order 0; the median of the trailing half
   // of the white part is the noise's while the signal's order is below cols / 3 (its cap).
   const auto size = static_cast<double>(singular_values.size());
