@@ -126,7 +126,7 @@ PoleReading read_pole(const internal::PoleFit& fit,
       sigmas * std::sqrt(cov(1, 1)) / (2.0 * kPi) + m.frequency_hz * (kFrequencyFloor + grid_error);
   m.damping_ratio_uncertainty =
       sigmas * std::sqrt(std::max(0.0, grad.dot(cov * grad))) + kDampingFloor;
-  out.decay_bound_1_s = sigmas * std::sqrt(cov(0, 0)) + std::abs(delta) * kFrequencyFloor;
+  out.decay_bound_1_s = sigmas * std::sqrt(cov(0, 0)) + kDampingFloor * modulus;
   // Energy over the window on the input's grid: |c|^2 / 2 sum exp(-2 delta t_n).
   const double ratio = std::exp(-2.0 * delta * dt);
   const double n = static_cast<double>(samples);

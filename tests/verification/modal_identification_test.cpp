@@ -230,6 +230,17 @@ TEST(ModalIdentification, GrowingOscillationIsNotReported) {
   EXPECT_TRUE(growing);
 }
 
+TEST(ModalIdentification, UndampedToneIsReportedNotGrowing) {
+  // Noise-free and undamped: the fit's damping is zero to rounding, of either sign; the floor of
+  // the uncertainty keeps it from being taken for a growing pole.
+  const Decay d{{{0.3, 0.0, 1.0, 0.4}}, 10.0, 100.0, 0.0};
+  const Vector t = sample_times(d);
+  const Identification id = identify_modes(t, {channel(t, d, 5.0, 1u)});
+  ASSERT_EQ(id.modes.size(), 1u);
+  EXPECT_LE(std::abs(id.modes[0].frequency_hz - 0.3), id.modes[0].frequency_uncertainty_hz);
+  EXPECT_LE(std::abs(id.modes[0].damping_ratio), id.modes[0].damping_ratio_uncertainty);
+}
+
 TEST(ModalIdentification, BadInputNamesTheProblem) {
   const Decay d{{{0.2, 0.01, 1.0, 0.0}}, 10.0, 20.0, 0.0};
   const Vector t = sample_times(d);
