@@ -53,6 +53,16 @@ Vector mode_signal(const Vector& t, const TrueMode& m) {
   return x;
 }
 
+// A standard normal draw by Box-Muller from the engine's raw output: std::mt19937_64's sequence is
+// fixed by the standard but std::normal_distribution's algorithm is not, and the tests' 3-sigma
+// checks must see the same draws with every standard library.
+double gaussian(std::mt19937_64& engine) {
+  const double scale = 1.0 / 18446744073709551616.0;  // 2^-64
+  const double u1 = (static_cast<double>(engine()) + 0.5) * scale;
+  const double u2 = static_cast<double>(engine()) * scale;
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
+}
+
 // The channel: an offset, the modes, white noise of the level that gives the weakest mode its SNR.
 Vector channel(const Vector& t, const Decay& d, double offset, unsigned seed) {
   Vector x = Vector::Constant(t.size(), offset);
@@ -66,8 +76,7 @@ Vector channel(const Vector& t, const Decay& d, double offset, unsigned seed) {
     const double sigma =
         std::sqrt(weakest_energy / (static_cast<double>(t.size()) * d.weakest_snr));
     std::mt19937_64 engine(seed);
-    std::normal_distribution<double> noise(0.0, sigma);
-    for (Index i = 0; i < x.size(); ++i) x[i] += noise(engine);
+    for (Index i = 0; i < x.size(); ++i) x[i] += sigma * gaussian(engine);
   }
   return x;
 }
@@ -82,12 +91,27 @@ const IdentifiedMode* nearest(const Identification& id, double frequency_hz) {
   return best;
 }
 
+// The tests ask for 4-sigma uncertainties: each of the ~220 errors below must lie within its stated
+// bound, and at 3 sigma (the default) one in 370 lies outside by chance even when the bound is
+// exact (the benchmark measures that coverage over 20 seeds). The calibration itself is checked
+// on the same fits: the RMS of error / sigma within [0.5, 2], and the default 3-sigma bound
+// within 10x of the RMS error.
+constexpr double kTestSigmas = 4.0;
+
+IdentificationOptions test_options(IdentificationOptions options = {}) {
+  options.confidence_sigmas = kTestSigmas;
+  return options;
+}
+
 // Identifies `d` over `seeds` noise draws: each true mode found, identifiable, within its bounds;
-// the bounds within 10x of the RMS error over the seeds (noisy records only).
-void check_decay(const Decay& d, int seeds, const IdentificationOptions& options = {}) {
+// on noisy records the bounds calibrated (above).
+void check_decay(const Decay& d, int seeds, const IdentificationOptions& given = {}) {
+  const IdentificationOptions options = test_options(given);
   const Vector t = sample_times(d);
   const std::size_t count = d.modes.size();
   std::vector<double> f_error2(count), z_error2(count), f_bound(count), z_bound(count);
+  double score2 = 0.0;
+  int scores = 0;
   for (int seed = 0; seed < seeds; ++seed) {
     const Identification id =
         identify_modes(t, {channel(t, d, 1234.5, 17u + static_cast<unsigned>(seed))}, options);
@@ -105,11 +129,18 @@ void check_decay(const Decay& d, int seeds, const IdentificationOptions& options
       EXPECT_LE(std::abs(z_error), m->damping_ratio_uncertainty);
       f_error2[k] += f_error * f_error / seeds;
       z_error2[k] += z_error * z_error / seeds;
-      f_bound[k] += m->frequency_uncertainty_hz / seeds;
-      z_bound[k] += m->damping_ratio_uncertainty / seeds;
+      // At the default 3 sigma (the floor is negligible against the noise's part here).
+      f_bound[k] += 3.0 / kTestSigmas * m->frequency_uncertainty_hz / seeds;
+      z_bound[k] += 3.0 / kTestSigmas * m->damping_ratio_uncertainty / seeds;
+      score2 += std::pow(kTestSigmas * f_error / m->frequency_uncertainty_hz, 2) +
+                std::pow(kTestSigmas * z_error / m->damping_ratio_uncertainty, 2);
+      scores += 2;
     }
   }
   if (d.weakest_snr == 0.0) return;
+  const double rms_score = std::sqrt(score2 / scores);
+  EXPECT_GE(rms_score, 0.5);
+  EXPECT_LE(rms_score, 2.0);
   for (std::size_t k = 0; k < count; ++k) {
     SCOPED_TRACE(::testing::Message() << "mode " << d.modes[k].frequency_hz << " Hz");
     EXPECT_LE(f_bound[k], 10.0 * std::sqrt(f_error2[k]));
@@ -153,8 +184,8 @@ TEST(ModalIdentification, ChannelsInDifferentUnitsShareThePoles) {
   for (int seed = 0; seed < seeds; ++seed) {
     const Vector x = channel(t, tension, 2.5e6, 100u + static_cast<unsigned>(seed));
     const Vector y = channel(t, position, -3.0, 200u + static_cast<unsigned>(seed));
-    const Identification single = identify_modes(t, {x});
-    const Identification pair = identify_modes(t, {x, y});
+    const Identification single = identify_modes(t, {x}, test_options());
+    const Identification pair = identify_modes(t, {x, y}, test_options());
     ASSERT_EQ(pair.modes.size(), 2u);
     for (std::size_t k = 0; k < 2; ++k) {
       const TrueMode& truth = tension.modes[k];
@@ -173,7 +204,7 @@ TEST(ModalIdentification, ChannelsInDifferentUnitsShareThePoles) {
     error2 += std::pow(pair.modes[0].frequency_hz - 0.15, 2) / seeds;
   }
   EXPECT_LT(both, alone);  // the position channel adds information
-  EXPECT_LE(both, 10.0 * std::sqrt(error2));
+  EXPECT_LE(3.0 / kTestSigmas * both, 10.0 * std::sqrt(error2));  // at the default 3 sigma
 }
 
 TEST(ModalIdentification, BandOfInterestDecimatesWithoutBias) {
@@ -182,7 +213,7 @@ TEST(ModalIdentification, BandOfInterestDecimatesWithoutBias) {
   const Decay d{
       {{0.25, 0.01, 1.0, 0.0}, {0.6, 0.02, 0.5, 1.0}, {8.0, 0.01, 0.5, 2.0}}, 50.0, 80.0, 1e3};
   const Vector t = sample_times(d);
-  IdentificationOptions options;
+  IdentificationOptions options = test_options();
   options.max_frequency_hz = 1.0;
   double error2 = 0.0, bound = 0.0;
   const int seeds = 6;
@@ -202,16 +233,15 @@ TEST(ModalIdentification, BandOfInterestDecimatesWithoutBias) {
     error2 += std::pow(id.modes[0].frequency_hz - 0.25, 2) / seeds;
     bound += id.modes[0].frequency_uncertainty_hz / seeds;
   }
-  EXPECT_LE(bound, 10.0 * std::sqrt(error2));
+  EXPECT_LE(3.0 / kTestSigmas * bound, 10.0 * std::sqrt(error2));  // at the default 3 sigma
 }
 
 TEST(ModalIdentification, NoiseAloneYieldsNoIdentifiableMode) {
   const Decay d{{{0.2, 0.01, 0.0, 0.0}}, 10.0, 100.0, 0.0};
   const Vector t = sample_times(d);
   std::mt19937_64 engine(5);
-  std::normal_distribution<double> noise(0.0, 1.0);
   Vector x(t.size());
-  for (Index i = 0; i < x.size(); ++i) x[i] = noise(engine);
+  for (Index i = 0; i < x.size(); ++i) x[i] = gaussian(engine);
   const Identification id = identify_modes(t, {x});
   for (const IdentifiedMode& m : id.modes) EXPECT_FALSE(m.identifiable) << m.frequency_hz;
 }
