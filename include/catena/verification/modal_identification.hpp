@@ -51,6 +51,10 @@ struct Identification {
   double noise_rms = 0.0;               // residual RMS after the fit, per channel averaged
   double sample_interval_s = 0.0;       // of the input [s]
   std::string method;                   // e.g. "matrix pencil (Hua & Sarkar 1990) + least squares"
+  /// One line per pole found but not reported, and why (outside the band, growing, noise).
+  std::vector<std::string> discarded;
+  /// The pencil and the fit ran on every n-th low-passed sample (1: on the samples as given).
+  int decimation_factor = 1;
 };
 
 /// Identifies the damped modes of a free decay.
