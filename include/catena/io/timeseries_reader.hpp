@@ -16,6 +16,7 @@
 /// unit (`time_s`, `Time [s]`, `time (s)`); the time unit must be seconds. Other columns are the
 /// channels.
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>

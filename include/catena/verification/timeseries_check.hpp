@@ -146,8 +146,12 @@ struct TimeSeriesCheck {
   int disagrees = 0;
   int not_identifiable = 0;
   int unmatched = 0;
-  /// True when a mode disagrees or is unmatched, a study converges to a wrong limit, or no mode
-  /// agrees (nothing was verified): `catena check` then exits 1.
+  /// Non-empty when Catena could not compute its reference (the statics failed numerically, or
+  /// neither exact solver converged in a plane used): there is no comparison (`catena check`
+  /// exits 3).
+  std::string error;
+  /// True when `error` is set, a mode disagrees or is unmatched, a study converges to a wrong
+  /// limit, or no mode agrees (nothing was verified): `catena check` then exits 1.
   bool any_failure() const;
 };
 
@@ -156,8 +160,8 @@ struct TimeSeriesCheck {
 /// NaN samples (row and channel named), a window outside the record or shorter than two periods of
 /// Catena's lowest mode, non-uniform sampling beyond the file's rounding (identification needs
 /// uniform samples: it refuses rather than resamples, since interpolation would bias the damping
-/// by an amount the uncertainty does not include), a channel whose plane is unknown. Throws Error
-/// when Catena could not compute a certified reference (the statics or both exact solvers failed).
+/// by an amount the uncertainty does not include), a channel whose plane is unknown. When Catena
+/// could not compute its reference, TimeSeriesCheck::error says why (never an exception).
 TimeSeriesCheck check_time_series(const Scene& scene,
                                   const TimeSeries& series,
                                   const TimeSeriesCheckOptions& options);
