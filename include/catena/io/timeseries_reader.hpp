@@ -46,7 +46,7 @@ struct TimeSeries {
   /// One per name, as long as time_s. May hold NaN or inf as read (MoorDyn prints `nan` when a
   /// run goes unstable): channel() refuses a channel that does, naming row and channel.
   std::vector<Vector> columns;
-  /// The file's line number (1-based) of each sample, for messages.
+  /// The file's line number (1-based) of each sample, for messages (empty for samples from memory).
   std::vector<int> line_numbers;
   /// A MoorDyn line file (`Line<k>.out`): its number of segments N, from its node or segment
   /// columns (`Node0..NodeN`, `Seg1..SegN`); the resolution of a run. Absent otherwise.
@@ -68,6 +68,15 @@ TimeSeries read_time_series(const std::filesystem::path& file);
 
 /// The same from text already read; `source` names it in messages.
 TimeSeries parse_time_series_text(const std::string& text, const std::string& source);
+
+/// A time series from samples already in memory (the Python module's arrays): format "csv", no
+/// line numbers (messages name the 1-based sample). Throws InvalidInput naming `source`, the
+/// channel and the sample for: no samples, columns of another length than time_s, a time not finite
+/// or not strictly increasing, an empty or repeated name.
+TimeSeries time_series_from_samples(const Vector& time_s,
+                                    const std::vector<std::string>& names,
+                                    const std::vector<Vector>& columns,
+                                    const std::string& source);
 
 /// True when `file` starts like a time series (a MoorDyn header whose first name is `Time`, or a
 /// CSV header with a time column and no column of the modal or tension results files), so that
