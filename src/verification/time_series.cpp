@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Finding a channel of a time series by name, and refusing one with NaN or infinite samples
-// (docs/how-to/check-time-series.md, "Channels").
+// A time series: finding a channel by name, refusing one with NaN or infinite samples, and building
+// one from samples in memory (docs/how-to/check-time-series.md, "Channels and planes").
+#include "catena/verification/time_series.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,7 +11,6 @@
 #include <numeric>
 
 #include "catena/core/error.hpp"
-#include "catena/io/timeseries_reader.hpp"
 
 namespace catena {
 namespace {
