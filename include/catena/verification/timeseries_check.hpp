@@ -26,9 +26,9 @@
 #include <vector>
 
 #include "catena/core/types.hpp"
-#include "catena/verification/time_series.hpp"
 #include "catena/verification/external_check.hpp"
 #include "catena/verification/scene.hpp"
+#include "catena/verification/time_series.hpp"
 
 namespace catena {
 
