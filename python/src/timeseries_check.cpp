@@ -102,7 +102,8 @@ TimeSeriesOutcome check_samples(const Vector& time_s,
 }
 
 py::object optional_hz(const std::optional<double>& rad_s) {
-  return rad_s ? py::float_(*rad_s / (2.0 * kPi)) : py::none();
+  if (!rad_s) return py::none();
+  return py::float_(*rad_s / (2.0 * kPi));
 }
 
 py::dict study_dict(const TimeSeriesStudy& s) {
