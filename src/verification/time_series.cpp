@@ -86,8 +86,8 @@ const Vector& TimeSeries::channel(const std::string& name) const {
                                     ? fmt::format("line {}", line_numbers[row])
                                     : fmt::format("sample {}", row + 1);
       throw InvalidInput(fmt::format(
-          "{} {} (time {} s), channel '{}': the sample is {}: the run went unstable or the output "
-          "is corrupt",
+          "{} {} (time {:.10g} s), channel '{}': the sample is {}: the run went unstable or the "
+          "output is corrupt",
           source, where, time_s[k], names[index], samples[k]));
     }
   }
