@@ -47,4 +47,5 @@ PYBIND11_MODULE(_catena, module) {
   bind_external_check(module);
   bind_tension_check(module);
   bind_synthetic_output(module);
+  bind_plot(module);
 }

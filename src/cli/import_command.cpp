@@ -10,6 +10,7 @@
 #include "catena/io/moordyn_deck.hpp"
 #include "catena/io/moordyn_import.hpp"
 #include "catena/io/moordyn_notes.hpp"
+#include "catena/io/scene_reader.hpp"
 #include "cli/commands.hpp"
 
 namespace catena::cli {
@@ -19,6 +20,7 @@ struct ImportArguments {
   std::string deck;
   std::string out;
   bool quiet = false;
+  bool plot = false;
 };
 
 std::string line_list(const std::vector<int>& lines) {
@@ -56,6 +58,22 @@ void print_summary(const MoorDynDeck& deck,
   for (const auto& note : notes) fmt::print("  {}: {} - {}\n", note.item, note.fate, note.detail);
 }
 
+// --plot: each converted line solved as its scene says, with shapes, and drawn next to its scene
+// file as <scene>.svg; a line whose statics was refused gets no picture (the notes say why).
+void plot_scenes(const std::vector<ImportedScene>& scenes, const ImportArguments& arguments) {
+  for (const auto& imported : scenes) {
+    if (!imported.reason.empty() || !imported.statics_solved) continue;
+    const std::filesystem::path file = std::filesystem::path(arguments.out) / imported.file_name;
+    std::vector<SceneResult> results;
+    for (Scene scene : parse_scene_text(imported.toml, path_text(file))) {
+      scene.request.shapes = true;
+      results.push_back(run_scene(scene));
+    }
+    draw_results(results, std::filesystem::path(file).replace_extension(".svg").string(),
+                 ScenePictureOptions{}, arguments.quiet, 0);
+  }
+}
+
 int run_import(const ImportArguments& arguments) {
   check_output_directory(arguments.out);
   const MoorDynDeck deck = read_moordyn_deck(arguments.deck);
@@ -74,6 +92,7 @@ int run_import(const ImportArguments& arguments) {
   if (!arguments.quiet && deck.lines.empty())
     fmt::print("{}: the deck has no lines\n", arguments.deck);
   if (!arguments.quiet) print_summary(deck, scenes, arguments.out);
+  if (arguments.plot) plot_scenes(scenes, arguments);
   return 0;
 }
 
@@ -120,6 +139,12 @@ void add_import_command(CLI::App& app, std::function<int()>& run) {
       ->required()
       ->check(non_empty_path());
   moordyn->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
+  moordyn->add_flag(
+      "--plot", arguments->plot,
+      "Also solve each converted line (shapes asked) and draw it next to its scene\n"
+      "file, as <scene>.svg: the profile with the seabed at the deck's depth and the\n"
+      "water surface, the modes and the tension (docs/how-to/plot.md); a line whose\n"
+      "statics was refused is not drawn (its notes say why)");
   moordyn->callback([arguments, &run] { run = [arguments] { return run_import(*arguments); }; });
 }
 

@@ -29,6 +29,7 @@ struct SolveArguments {
   double time_limit_s = 0.0;
   const CLI::Option* time_limit = nullptr;
   TableArguments tables;
+  PictureArguments picture;
 };
 
 // A damped line's modes: the damped frequency omega_d = Im lambda, the decay rate delta = -Re
@@ -248,6 +249,13 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
       *command, arguments->time_limit_s,
       "for each scene (a sweep file: each of its scenes), from the start of its statics");
   add_table_options(*command, arguments->tables);
+  command
+      ->add_option("--plot", arguments->picture.out,
+                   "Draw each scene to this .svg (or .png, with matplotlib): profile, modes,\n"
+                   "tension (docs/how-to/plot.md); asks the solvers for the shapes it draws, so\n"
+                   "--json then holds them too. A sweep: <stem>-<scene name>.svg per scene.")
+      ->check(non_empty_path());
+  add_picture_options(*command, arguments->picture);
   command->callback([arguments, &run] {
     run = [arguments] {
       for (const auto& name : arguments->solvers) {
@@ -261,7 +269,14 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
             arguments->json,
             {arguments->scene, arguments->tables.tolerances, arguments->tables.findings}, "--json");
       }
-      const std::vector<Scene> scenes = read_scene_file(arguments->scene);
+      const bool plot = !arguments->picture.out.empty();
+      const ScenePictureOptions picture = picture_options(arguments->picture);
+      if (plot) {
+        check_scene_picture_output(arguments->picture.out, "--plot", picture);
+        check_not_an_input(arguments->picture.out, {arguments->scene}, "--plot");
+      }
+      std::vector<Scene> scenes = read_scene_file(arguments->scene);
+      for (auto& scene : scenes) scene.request.shapes = scene.request.shapes || plot;
       std::vector<SceneResult> results;
       SceneRunOptions options = run_options_with_tables(arguments->tables);
       options.only_solvers = arguments->solvers;
@@ -283,7 +298,9 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
       for (const auto& result : results) {
         if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
       }
-      return exit_code_of(results);
+      if (!plot) return exit_code_of(results);
+      return draw_results(results, arguments->picture.out, picture,
+                          arguments->quiet || arguments->json == "-", exit_code_of(results));
     };
   });
 }
