@@ -202,13 +202,13 @@ def _plot_result(self: Result, ax: Any = None, modes: Union[Iterable[int], str, 
     except ValueError as error:
         raise InvalidInput(str(error)) from None
     if ax is None:
-        import matplotlib.pyplot as plt
+        import matplotlib.pyplot as plt  # type: ignore[import]
         _, ax = plt.subplots(figsize=(10, 4))
     _plot.draw_panel(ax, panel)
     return ax
 
 
-Result.plot = _plot_result  # type: ignore[attr-defined]
+Result.plot = _plot_result  # type: ignore[assignment]
 
 
 @dataclass(frozen=True)

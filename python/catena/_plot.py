@@ -13,8 +13,13 @@ imports matplotlib only when drawing.
 """
 
 import argparse
+import importlib
 import json
 import sys
+from typing import Any, Optional, Sequence, Union
+
+#: One panel or the whole picture, as the library writes it (JSON objects).
+Picture = dict[str, Any]
 
 NO_MATPLOTLIB = 4
 _MARKERS = {"circle": "o", "square": "s", "diamond": "D", "triangle-up": "^", "triangle-down": "v"}
@@ -22,19 +27,19 @@ _MARKERS = {"circle": "o", "square": "s", "diamond": "D", "triangle-up": "^", "t
 _PANELS = {"in-plane": "profile", "out-of-plane": "out-of-plane", "tension": "tension"}
 
 
-def _values(items):
+def _values(items: Sequence[Optional[float]]) -> list[float]:
     """JSON numbers with null (a non-finite value) as NaN, so that matplotlib breaks the line."""
     return [float("nan") if v is None else v for v in items]
 
 
-def _linestyle(dash, width):
+def _linestyle(dash: str, width: float) -> Union[str, tuple[float, tuple[float, ...]]]:
     if not dash:
         return "-"
     # matplotlib scales dash lengths by the line width; SVG's are in pixels.
-    return (0, tuple(float(d) / max(width, 1.0) for d in dash.split(",")))
+    return (0.0, tuple(float(d) / max(width, 1.0) for d in dash.split(",")))
 
 
-def draw_panel(ax, panel):
+def draw_panel(ax: Any, panel: Picture) -> list[Any]:
     """Draws one panel of the picture data on `ax`; returns the Line2D objects of its series, in order."""
     for level in panel["levels"]:
         if level["y"] is not None:
@@ -62,23 +67,23 @@ def draw_panel(ax, panel):
     return lines
 
 
-def panel_of(picture, plane):
+def panel_of(picture: Picture, plane: str) -> Picture:
     """The panel that `plane` names ("in-plane": the profile with the in-plane modes, "out-of-plane",
     "tension"); ValueError naming what the picture holds when it has no such panel."""
     if plane not in _PANELS:
         raise ValueError(f"plane: {plane!r}: expected one of {', '.join(map(repr, _PANELS))}")
     for panel in picture["panels"]:
         if panel["id"] == _PANELS[plane]:
-            return panel
+            return dict(panel)
     held = ", ".join(p["id"] for p in picture["panels"])
     raise ValueError(f"plane: {plane!r}: the result has no out-of-plane mode shapes to draw (panels: {held})")
 
 
-def draw_figure(picture):
+def draw_figure(picture: Picture) -> Any:
     """Every panel, stacked, with the title and the notes: a matplotlib Figure."""
-    import matplotlib
+    import matplotlib  # type: ignore[import]
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    import matplotlib.pyplot as plt  # type: ignore[import]
 
     heights = [3.4 if p["id"] == "profile" else 2.0 for p in picture["panels"]]
     figure, axes = plt.subplots(len(heights), 1, figsize=(11, sum(heights) + 1.2 + 0.2 * len(picture["notes"])),
@@ -92,14 +97,14 @@ def draw_figure(picture):
     return figure
 
 
-def main(argv=None):
+def main(argv: Optional[Sequence[str]] = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--data", help="picture data (JSON) written by catena")
     parser.add_argument("--out", help="PNG file to write")
     parser.add_argument("--check-matplotlib", action="store_true", help="exit 4 unless matplotlib imports")
     args = parser.parse_args(argv)
     try:
-        import matplotlib  # noqa: F401  (the one dependency)
+        importlib.import_module("matplotlib")  # the one dependency
     except ImportError as error:
         print(f"matplotlib cannot be imported: {error}", file=sys.stderr)
         return NO_MATPLOTLIB

@@ -31,8 +31,6 @@ void bind_scene(py::module_& module);
 void bind_external_check(py::module_& module);
 void bind_tension_check(py::module_& module);
 void bind_synthetic_output(py::module_& module);
-/// _scene_picture: the scene picture's data for Result.plot() (python/catena/_plot.py).
-void bind_plot(py::module_& module);
 
 /// Marks `array` read-only: result arrays are copies, and writing into one would change nothing.
 py::array read_only(py::array array);

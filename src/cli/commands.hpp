@@ -9,8 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "catena/io/scene_picture.hpp"
 #include "catena/verification/scene_runner.hpp"
+
+namespace catena {
+struct ScenePictureOptions;  // catena/io/scene_picture.hpp
+}  // namespace catena
 
 namespace catena::cli {
 

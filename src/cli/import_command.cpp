@@ -3,6 +3,7 @@
 // (docs/how-to/moordyn-import.md).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 
@@ -10,6 +11,7 @@
 #include "catena/io/moordyn_deck.hpp"
 #include "catena/io/moordyn_import.hpp"
 #include "catena/io/moordyn_notes.hpp"
+#include "catena/io/scene_picture.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "cli/commands.hpp"
 
@@ -59,19 +61,32 @@ void print_summary(const MoorDynDeck& deck,
 }
 
 // --plot: each converted line solved as its scene says, with shapes, and drawn next to its scene
-// file as <scene>.svg; a line whose statics was refused gets no picture (the notes say why).
-void plot_scenes(const std::vector<ImportedScene>& scenes, const ImportArguments& arguments) {
+// file as <scene>.svg. A line whose statics with its seabed was refused is solved and drawn without
+// it, under the seabed it should rest on, so that a line hanging below the water depth is seen.
+// Returns 0, or 2 when a picture could not be drawn (the reason is printed).
+int plot_scenes(const std::vector<ImportedScene>& scenes, const ImportArguments& arguments) {
+  const SceneRunOptions run_options = run_options_with_tables({});
+  int code = 0;
   for (const auto& imported : scenes) {
-    if (!imported.reason.empty() || !imported.statics_solved) continue;
+    if (!imported.reason.empty()) continue;
     const std::filesystem::path file = std::filesystem::path(arguments.out) / imported.file_name;
+    ScenePictureOptions options;
     std::vector<SceneResult> results;
     for (Scene scene : parse_scene_text(imported.toml, path_text(file))) {
       scene.request.shapes = true;
-      results.push_back(run_scene(scene));
+      if (!imported.statics_solved && scene.problem.seabed) {
+        options.seabed_z_m = scene.problem.seabed->z_m;
+        options.caption =
+            "drawn as solved WITHOUT its seabed: the statics with it was refused (see the notes)";
+        scene.problem.seabed.reset();
+      }
+      results.push_back(run_scene(scene, run_options));
     }
-    draw_results(results, std::filesystem::path(file).replace_extension(".svg").string(),
-                 ScenePictureOptions{}, arguments.quiet, 0);
+    code = std::max(
+        code, draw_results(results, std::filesystem::path(file).replace_extension(".svg").string(),
+                           options, arguments.quiet, 0));
   }
+  return code;
 }
 
 int run_import(const ImportArguments& arguments) {
@@ -92,8 +107,7 @@ int run_import(const ImportArguments& arguments) {
   if (!arguments.quiet && deck.lines.empty())
     fmt::print("{}: the deck has no lines\n", arguments.deck);
   if (!arguments.quiet) print_summary(deck, scenes, arguments.out);
-  if (arguments.plot) plot_scenes(scenes, arguments);
-  return 0;
+  return arguments.plot ? plot_scenes(scenes, arguments) : 0;
 }
 
 }  // namespace
@@ -143,8 +157,9 @@ void add_import_command(CLI::App& app, std::function<int()>& run) {
       "--plot", arguments->plot,
       "Also solve each converted line (shapes asked) and draw it next to its scene\n"
       "file, as <scene>.svg: the profile with the seabed at the deck's depth and the\n"
-      "water surface, the modes and the tension (docs/how-to/plot.md); a line whose\n"
-      "statics was refused is not drawn (its notes say why)");
+      "water surface, the modes and the tension (docs/how-to/plot.md). A line whose\n"
+      "statics with the seabed was refused is drawn as solved without it, under the\n"
+      "seabed (a line hanging below the water depth is seen at once)");
   moordyn->callback([arguments, &run] { run = [arguments] { return run_import(*arguments); }; });
 }
 

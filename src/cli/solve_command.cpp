@@ -12,6 +12,7 @@
 #include "catena/core/error.hpp"
 #include "catena/io/file_access.hpp"
 #include "catena/io/json_writer.hpp"
+#include "catena/io/scene_picture.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/verification/scene_runner.hpp"
 #include "cli/commands.hpp"

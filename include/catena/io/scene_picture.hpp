@@ -19,6 +19,7 @@
 /// without a shell from the data dir (share/catena).
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,12 @@ struct ScenePictureOptions {
   /// The largest displacement of a drawn in-plane mode, as a fraction of the profile's extent
   /// (the larger of its width and height). In (0, 1].
   double mode_scale = 0.08;
+  /// A seabed drawn when the results hold none: the importer draws a line whose statics with its
+  /// seabed was refused as solved without it, with the seabed it should rest on, so that a line
+  /// hanging below the water depth is seen. Empty: only the results' own seabed.
+  std::optional<double> seabed_z_m;
+  /// A line added under the picture's title (e.g. why the line was solved without its seabed).
+  std::string caption;
   /// The scene to draw, by name (empty: every scene of the document that has statics).
   std::string scene;
   /// Python interpreter for PNG output (searched on PATH when it has no '/').

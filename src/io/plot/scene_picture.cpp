@@ -268,9 +268,17 @@ std::vector<std::string> title_lines(const PictureInput& in) {
 
 }  // namespace
 
-LinearFigure scene_figure(const PictureInput& in, const ScenePictureOptions& options) {
+LinearFigure scene_figure(const PictureInput& input, const ScenePictureOptions& options) {
+  PictureInput in_with_seabed;
+  const bool add_seabed = !input.seabed_z_m && options.seabed_z_m;
+  if (add_seabed) {
+    in_with_seabed = input;
+    in_with_seabed.seabed_z_m = options.seabed_z_m;
+  }
+  const PictureInput& in = add_seabed ? in_with_seabed : input;
   LinearFigure figure;
-  figure.title = title_lines(in);
+  figure.title = title_lines(input);
+  if (!options.caption.empty()) figure.title.push_back(options.caption);
   LinearPanel profile{"profile",
                       "Static profile to scale (the line's vertical plane)",
                       "x, horizontal from end a [m]",

@@ -170,6 +170,7 @@ constexpr double kLegendRow = 16.0;
 constexpr double kPanelTitle = 26.0;  // above the frame
 constexpr double kPanelAxis = 48.0;   // below the frame: tick labels and the axis label
 constexpr double kTitleLine = 18.0;
+constexpr std::size_t kNoteColumns = 140;  // about 6.5 px a character at 12 px: within 960 px
 
 // A "nice" tick step (1, 2 or 5 times a power of ten) giving about `count` ticks over `range`.
 double tick_step(double range, double count) {
@@ -326,7 +327,9 @@ int panel_legend(const LinearPanel& panel, double top, std::string& out) {
     out += legend_line(kLegendLeft, y(), s.colour, s.label, s.width, s.dash), ++row;
   }
   for (const auto& m : panel.markers) {
-    out += marker_shape(kLegendLeft + 11, y(), m);
+    LinearPanel::Marker sample = m;
+    sample.role = "legend";  // not a drawn point of the data
+    out += marker_shape(kLegendLeft + 11, y(), sample);
     out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", kLegendLeft + 28, y() + 4,
                        html_escape(m.label));
     ++row;
@@ -360,6 +363,21 @@ double render_panel(const LinearPanel& panel, double top, std::string& out) {
   return kPanelTitle + std::max(panel.height, kLegendRow * rows + 10.0) + kPanelAxis;
 }
 
+// `text` in lines of at most `columns` characters, broken at spaces (SVG text does not wrap).
+std::vector<std::string> wrapped(const std::string& text, std::size_t columns) {
+  std::vector<std::string> lines{""};
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t space = std::min(text.find(' ', start), text.size());
+    const std::string word = text.substr(start, space - start);
+    if (!lines.back().empty() && lines.back().size() + 1 + word.size() > columns)
+      lines.emplace_back();
+    lines.back() += (lines.back().empty() ? "" : " ") + word;
+    start = space + 1;
+  }
+  return lines;
+}
+
 }  // namespace
 
 std::string render_svg(const LinearFigure& figure) {
@@ -374,8 +392,11 @@ std::string render_svg(const LinearFigure& figure) {
   y += 6.0;
   for (const auto& panel : figure.panels) y += render_panel(panel, y, body);
   for (const auto& note : figure.notes) {
-    y += kTitleLine;
-    body += fmt::format("<text x=\"12\" y=\"{}\" fill=\"#444\">{}</text>\n", y, html_escape(note));
+    for (const std::string& line : wrapped(note, kNoteColumns)) {
+      y += kTitleLine;
+      body +=
+          fmt::format("<text x=\"12\" y=\"{}\" fill=\"#444\">{}</text>\n", y, html_escape(line));
+    }
   }
   return svg_open(kFigureWidth, std::ceil(y + 12.0)) + body + "</svg>\n";
 }
