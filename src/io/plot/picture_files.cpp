@@ -160,7 +160,12 @@ void check_scene_picture_output(const std::filesystem::path& out,
                                 const std::string& option,
                                 const ScenePictureOptions& options) {
   options.validate();
-  if (out.extension() != ".svg" && !is_png(out)) {
+  // A character device or FIFO (/dev/stdout, a pipe) has no extension to go by: SVG goes through.
+  std::error_code error;
+  const auto type = std::filesystem::status(out, error).type();
+  const bool stream =
+      type == std::filesystem::file_type::character || type == std::filesystem::file_type::fifo;
+  if (out.extension() != ".svg" && !is_png(out) && !stream) {
     throw InvalidInput(
         fmt::format("{} {}: the picture is written as .svg (native) or .png "
                     "(matplotlib): name the file so",

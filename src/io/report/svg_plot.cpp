@@ -85,8 +85,8 @@ std::string legend_line(double x,
                         double width,
                         const std::string& dash) {
   return fmt::format(
-      "<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" "
-      "stroke-width=\"{}\"{}/><text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
+      "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"{}\"{}/>"
+      "<text x=\"{}\" y=\"{}\">{}</text>\n",
       x, y, x + 22, y, colour, width,
       dash.empty() ? std::string() : fmt::format(" stroke-dasharray=\"{}\"", dash), x + 28, y + 4,
       html_escape(label));
