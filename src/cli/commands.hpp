@@ -40,6 +40,12 @@ struct PictureArguments {
 void add_picture_options(CLI::App& command, PictureArguments& picture);
 /// The drawing options (InvalidInput naming --plot-modes when it is not a list of modes).
 ScenePictureOptions picture_options(const PictureArguments& picture);
+/// The results to draw: each result whose scene asked for shapes as it is; the others solved again
+/// with shapes, by the exact solvers among those that ran (all of them when none is exact), without
+/// checks, so that drawing never changes a verdict (shape checks come with shapes).
+std::vector<SceneResult> results_with_shapes(const std::vector<Scene>& scenes,
+                                             const std::vector<SceneResult>& results,
+                                             SceneRunOptions options);
 /// Draws each result to scene_picture_path(out, ...) and prints the files unless `quiet`. Returns
 /// `exit_code`, or 2 (when it is 0) after printing why no picture could be drawn.
 int draw_results(const std::vector<SceneResult>& results,

@@ -11,6 +11,7 @@
 #include "catena/io/file_access.hpp"
 #include "catena/io/json_writer.hpp"
 #include "catena/io/scene_picture.hpp"
+#include "catena/solvers/solver_registry.hpp"
 #include "cli/commands.hpp"
 
 namespace catena::cli {
@@ -102,6 +103,29 @@ ScenePictureOptions picture_options(const PictureArguments& picture) {
   parse_modes(picture.modes, "--plot-modes", options);
   options.python = picture.python.empty() ? default_python() : picture.python;
   return options;
+}
+
+std::vector<SceneResult> results_with_shapes(const std::vector<Scene>& scenes,
+                                             const std::vector<SceneResult>& results,
+                                             SceneRunOptions options) {
+  options.checks = false;
+  std::vector<SceneResult> out;
+  for (std::size_t i = 0; i < results.size() && i < scenes.size(); ++i) {
+    if (scenes[i].request.shapes || !results[i].statics) {
+      out.push_back(results[i]);  // already drawable, or nothing to draw (its error says why)
+      continue;
+    }
+    Scene scene = scenes[i];
+    scene.request.shapes = true;
+    options.only_solvers.clear();
+    for (const auto& output : results[i].outputs) {
+      if (is_exact_solver(output.solver) &&
+          output.summary.termination != Termination::NotApplicable)
+        options.only_solvers.push_back(output.solver);
+    }
+    out.push_back(run_scene(scene, options));
+  }
+  return out;
 }
 
 int draw_results(const std::vector<SceneResult>& results,

@@ -253,8 +253,10 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
   command
       ->add_option("--plot", arguments->picture.out,
                    "Draw each scene to this .svg (or .png, with matplotlib): profile, modes,\n"
-                   "tension (docs/how-to/plot.md); asks the solvers for the shapes it draws, so\n"
-                   "--json then holds them too. A sweep: <stem>-<scene name>.svg per scene.")
+                   "tension (docs/how-to/plot.md). A scene that asks for no shapes is solved a\n"
+                   "second time for the picture, with shapes, by the exact solvers that ran and\n"
+                   "without checks (its output, --json and exit status are those of the solve\n"
+                   "as asked). A sweep: <stem>-<scene name>.svg per scene.")
       ->check(non_empty_path());
   add_picture_options(*command, arguments->picture);
   command->callback([arguments, &run] {
@@ -276,8 +278,7 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
         check_scene_picture_output(arguments->picture.out, "--plot", picture);
         check_not_an_input(arguments->picture.out, {arguments->scene}, "--plot");
       }
-      std::vector<Scene> scenes = read_scene_file(arguments->scene);
-      for (auto& scene : scenes) scene.request.shapes = scene.request.shapes || plot;
+      const std::vector<Scene> scenes = read_scene_file(arguments->scene);
       std::vector<SceneResult> results;
       SceneRunOptions options = run_options_with_tables(arguments->tables);
       options.only_solvers = arguments->solvers;
@@ -300,8 +301,9 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
         if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
       }
       if (!plot) return exit_code_of(results);
-      return draw_results(results, arguments->picture.out, picture,
-                          arguments->quiet || arguments->json == "-", exit_code_of(results));
+      return draw_results(results_with_shapes(scenes, results, options), arguments->picture.out,
+                          picture, arguments->quiet || arguments->json == "-",
+                          exit_code_of(results));
     };
   });
 }
