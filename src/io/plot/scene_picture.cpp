@@ -252,12 +252,18 @@ LinearPanel outofplane_panel(const std::vector<const PictureMode*>& modes, const
   return panel;
 }
 
+// A force in kN, or in N below 1 kN (a dimensionless scene's forces are of order 1 N).
+std::string force_text(double force_n) {
+  return std::abs(force_n) >= 1e3 ? fmt::format("{:.5g} kN", 1e-3 * force_n)
+                                  : fmt::format("{:.5g} N", force_n);
+}
+
 std::vector<std::string> title_lines(const PictureInput& in) {
   std::vector<std::string> title{
       fmt::format("scene {}: static profile, mode shapes, tension", in.name)};
   std::string statics =
-      fmt::format("H = {:.5g} kN, T at a = {:.5g} kN, T at b = {:.5g} kN",
-                  1e-3 * in.horizontal_force_n, 1e-3 * in.tension_a_n, 1e-3 * in.tension_b_n);
+      fmt::format("H = {}, T at a = {}, T at b = {}", force_text(in.horizontal_force_n),
+                  force_text(in.tension_a_n), force_text(in.tension_b_n));
   if (in.seabed_z_m) {
     statics += in.contact ? fmt::format("; {:.5g} m on the seabed", in.grounded_length_m)
                           : std::string("; off the seabed");
