@@ -313,6 +313,7 @@ LinearFigure scene_figure(const PictureInput& input, const ScenePictureOptions& 
     const auto modes = chosen_modes(*plane, options, "in-plane", figure.notes);
     const double largest = add_inplane_modes(in, modes, options.mode_scale, profile);
     modes_line = fmt::format("in-plane modes: {} ({})", plane->solver, why);
+    if (!modes.empty()) profile.title += fmt::format("; in-plane modes ({})", plane->solver);
     if (!modes.empty()) {
       figure.notes.push_back(fmt::format(
           "In-plane modes drawn as the displaced profile, largest displacement {:.3g} m ({:g} % of "
