@@ -33,6 +33,7 @@ from ._catena import (Cable, CertifiedReference, Check, ConvergenceStudy, dimens
                       ResolutionComparison, Result, run_solver, Scene, Seabed, solve_statics, SolverResult,
                       Statics, Summary, TensionCheck, TimeSeriesCheck, TimeSeriesMode, __version__)
 from . import _catena
+from . import _plot
 from ._check_results import ORIGIN as _RESULTS_ORIGIN, _NotAValue, results_json_text
 from ._scene_dict import scene_toml_text
 from ._solver_functions import solve_airy, solve_asymptotic, solve_fe, solve_frobenius, solve_shooting
@@ -226,6 +227,43 @@ def check_timeseries(series: Union[str, os.PathLike[str], Sequence[Union[str, os
     return _catena._check_timeseries_files([_existing_path(f, "time series") for f in files], scene,
                                            list(channels), start, end, plane or "",
                                            list(resolutions or []), min_frequency_hz, max_frequency_hz)
+
+
+def _plot_result(self: Result, ax: Any = None, modes: Union[Iterable[int], str, None] = (1, 2, 3),
+                 plane: str = "in-plane", mode_scale: float = 0.08) -> Any:
+    """Draws the result on a matplotlib axes, as `catena plot` draws its panels (docs/how-to/plot.md);
+    returns the axes.
+
+    plane: "in-plane" (the static profile to scale, one line per segment, the ends, points, the seabed
+        and touchdown points, with the in-plane modes as the displaced profile), "out-of-plane"
+        (v(s) of the out-of-plane modes) or "tension" (the static tension T(s) [kN]).
+    modes: mode numbers drawn (1-based), "all", or None/() for none. The modes are those of the most
+        accurate exact solver that gave shapes (the axes' title names it in `catena plot`).
+    ax: the axes to draw on (default: a new figure's).
+    mode_scale: the largest in-plane displacement drawn, as a fraction of the profile's extent.
+
+    The result must hold the static profile and the shapes: solve a scene whose [request] has
+    shapes = true (InvalidInput otherwise, saying so).
+    """
+    if isinstance(modes, str):
+        if modes != "all":
+            raise InvalidInput(f"modes: {modes!r}: give mode numbers, 'all' or None")
+        numbers, every = [], True
+    else:
+        numbers, every = [int(m) for m in (modes or ())], False
+    picture = json.loads(_catena._scene_picture(self.to_json(), numbers, every, float(mode_scale)))
+    try:
+        panel = _plot.panel_of(picture, plane)
+    except ValueError as error:
+        raise InvalidInput(str(error)) from None
+    if ax is None:
+        import matplotlib.pyplot as plt  # type: ignore[import]
+        _, ax = plt.subplots(figsize=(10, 4))
+    _plot.draw_panel(ax, panel)
+    return ax
+
+
+Result.plot = _plot_result  # type: ignore[assignment]
 
 
 @dataclass(frozen=True)

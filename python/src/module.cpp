@@ -20,6 +20,10 @@ py::array_t<double> owned_array(const Vector& values) {
   return array;
 }
 
+// python/src/plot.cpp: _scene_picture, the scene picture's data for Result.plot() (declared here,
+// not in bindings.hpp, which every binding file includes).
+void bind_plot(py::module_& module);
+
 py::array_t<double> owned_array(const std::vector<double>& values) {
   py::array_t<double> array(static_cast<py::ssize_t>(values.size()));
   std::copy(values.begin(), values.end(), array.mutable_data());
@@ -48,4 +52,5 @@ PYBIND11_MODULE(_catena, module) {
   bind_tension_check(module);
   bind_timeseries_check(module);
   bind_synthetic_output(module);
+  bind_plot(module);
 }

@@ -11,6 +11,10 @@
 
 #include "catena/verification/scene_runner.hpp"
 
+namespace catena {
+struct ScenePictureOptions;  // catena/io/scene_picture.hpp
+}  // namespace catena
+
 namespace catena::cli {
 
 /// Registers `solve` on `app`; `run` is set to the command's body.
@@ -22,6 +26,33 @@ void add_report_command(CLI::App& app, std::function<int()>& run);
 void add_check_command(CLI::App& app, std::function<int()>& run);
 /// `import moordyn`: MoorDyn decks as scenes (src/cli/import_command.cpp).
 void add_import_command(CLI::App& app, std::function<int()>& run);
+
+/// `plot`: a picture of each scene of a results JSON (src/cli/plot_command.cpp).
+void add_plot_command(CLI::App& app, std::function<int()>& run);
+
+/// The options that go with --plot FILE in `solve` and `import moordyn`.
+struct PictureArguments {
+  std::string out;  ///< empty: no picture
+  std::string modes = "1,2,3";
+  std::string python;  ///< empty: /usr/bin/python3 when it exists, else python3
+};
+/// --plot-modes and --python (the --plot option itself is the command's, with its own help).
+void add_picture_options(CLI::App& command, PictureArguments& picture);
+/// The drawing options (InvalidInput naming --plot-modes when it is not a list of modes).
+ScenePictureOptions picture_options(const PictureArguments& picture);
+/// The results to draw: each result whose scene asked for shapes as it is; the others solved again
+/// with shapes, by the exact solvers among those that ran (all of them when none is exact), without
+/// checks, so that drawing never changes a verdict (shape checks come with shapes).
+std::vector<SceneResult> results_with_shapes(const std::vector<Scene>& scenes,
+                                             const std::vector<SceneResult>& results,
+                                             SceneRunOptions options);
+/// Draws each result to scene_picture_path(out, ...) and prints the files unless `quiet`. Returns
+/// `exit_code`, or 2 (when it is 0) after printing why no picture could be drawn.
+int draw_results(const std::vector<SceneResult>& results,
+                 const std::string& out,
+                 const ScenePictureOptions& options,
+                 bool quiet,
+                 int exit_code);
 
 /// For every option naming a file or directory: an empty value ("--json ''", often an unset
 /// shell variable) is a usage error naming the option (exit 2), never "no output" or "the

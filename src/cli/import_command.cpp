@@ -3,6 +3,7 @@
 // (docs/how-to/moordyn-import.md).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 
@@ -10,6 +11,8 @@
 #include "catena/io/moordyn_deck.hpp"
 #include "catena/io/moordyn_import.hpp"
 #include "catena/io/moordyn_notes.hpp"
+#include "catena/io/scene_picture.hpp"
+#include "catena/io/scene_reader.hpp"
 #include "cli/commands.hpp"
 
 namespace catena::cli {
@@ -19,6 +22,7 @@ struct ImportArguments {
   std::string deck;
   std::string out;
   bool quiet = false;
+  bool plot = false;
 };
 
 std::string line_list(const std::vector<int>& lines) {
@@ -56,6 +60,36 @@ void print_summary(const MoorDynDeck& deck,
   for (const auto& note : notes) fmt::print("  {}: {} - {}\n", note.item, note.fate, note.detail);
 }
 
+// --plot: each converted line solved as its scene says, with shapes, and drawn next to its scene
+// file as <scene>.svg. A line whose statics with its seabed was refused is solved and drawn without
+// it, under the seabed it should rest on, so that a line hanging below the water depth is seen.
+// Returns 0, or 2 when a picture could not be drawn (the reason is printed).
+int plot_scenes(const std::vector<ImportedScene>& scenes, const ImportArguments& arguments) {
+  SceneRunOptions run_options;  // the picture needs no checks
+  run_options.checks = false;
+  int code = 0;
+  for (const auto& imported : scenes) {
+    if (!imported.reason.empty()) continue;
+    const std::filesystem::path file = std::filesystem::path(arguments.out) / imported.file_name;
+    ScenePictureOptions options;
+    std::vector<SceneResult> results;
+    for (Scene scene : parse_scene_text(imported.toml, path_text(file))) {
+      scene.request.shapes = true;
+      if (!imported.statics_solved && scene.problem.seabed) {
+        options.seabed_z_m = scene.problem.seabed->z_m;
+        options.caption =
+            "drawn as solved WITHOUT its seabed: the statics with it was refused (see the notes)";
+        scene.problem.seabed.reset();
+      }
+      results.push_back(run_scene(scene, run_options));
+    }
+    code = std::max(
+        code, draw_results(results, std::filesystem::path(file).replace_extension(".svg").string(),
+                           options, arguments.quiet, 0));
+  }
+  return code;
+}
+
 int run_import(const ImportArguments& arguments) {
   check_output_directory(arguments.out);
   const MoorDynDeck deck = read_moordyn_deck(arguments.deck);
@@ -74,7 +108,7 @@ int run_import(const ImportArguments& arguments) {
   if (!arguments.quiet && deck.lines.empty())
     fmt::print("{}: the deck has no lines\n", arguments.deck);
   if (!arguments.quiet) print_summary(deck, scenes, arguments.out);
-  return 0;
+  return arguments.plot ? plot_scenes(scenes, arguments) : 0;
 }
 
 }  // namespace
@@ -120,6 +154,13 @@ void add_import_command(CLI::App& app, std::function<int()>& run) {
       ->required()
       ->check(non_empty_path());
   moordyn->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
+  moordyn->add_flag(
+      "--plot", arguments->plot,
+      "Also solve each converted line (shapes asked) and draw it next to its scene\n"
+      "file, as <scene>.svg: the profile with the seabed at the deck's depth and the\n"
+      "water surface, the modes and the tension (docs/how-to/plot.md). A line whose\n"
+      "statics with the seabed was refused is drawn as solved without it, under the\n"
+      "seabed (a line hanging below the water depth is seen at once)");
   moordyn->callback([arguments, &run] { run = [arguments] { return run_import(*arguments); }; });
 }
 

@@ -15,6 +15,7 @@
 #include "catena/core/error.hpp"
 #include "catena/io/file_access.hpp"
 #include "catena/io/json_writer.hpp"
+#include "catena/io/scene_picture.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/verification/certified_reference.hpp"
 #include "catena/verification/scene_runner.hpp"
@@ -40,6 +41,7 @@ struct SolveArguments {
   double time_limit_s = 0.0;
   const CLI::Option* time_limit = nullptr;
   TableArguments tables;
+  PictureArguments picture;
 };
 
 // True when --json writes to this process's stdout ("-", /dev/stdout, the file stdout is
@@ -183,6 +185,15 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
       *command, arguments->time_limit_s,
       "for each scene (a sweep file: each of its scenes), from the start of its statics");
   add_table_options(*command, arguments->tables);
+  command
+      ->add_option("--plot", arguments->picture.out,
+                   "Draw each scene to this .svg (or .png, with matplotlib): profile, modes,\n"
+                   "tension (docs/how-to/plot.md). A scene that asks for no shapes is solved a\n"
+                   "second time for the picture, with shapes, by the exact solvers that ran and\n"
+                   "without checks (its output, --json and exit status are those of the solve\n"
+                   "as asked). A sweep: <stem>-<scene name>.svg per scene.")
+      ->check(non_empty_path());
+  add_picture_options(*command, arguments->picture);
   command->callback([arguments, &run] {
     run = [arguments] {
       if (arguments->quiet && arguments->verbose)
@@ -203,6 +214,12 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
             {arguments->scene, arguments->tables.tolerances, arguments->tables.findings}, "--json");
       }
       const bool quiet_json = arguments->quiet && json_on_stdout(arguments->json);
+      const bool plot = !arguments->picture.out.empty();
+      const ScenePictureOptions picture = picture_options(arguments->picture);
+      if (plot) {
+        check_scene_picture_output(arguments->picture.out, "--plot", picture);
+        check_not_an_input(arguments->picture.out, {arguments->scene}, "--plot");
+      }
       const std::vector<Scene> scenes = read_scene_file(arguments->scene);
       std::vector<SceneResult> results;
       SceneRunOptions options = run_options_with_tables(arguments->tables);
@@ -230,7 +247,10 @@ void add_solve_command(CLI::App& app, std::function<int()>& run) {
       for (const auto& result : results) {
         if (!result.error.empty()) fmt::print(stderr, "error: {}\n", result.error);
       }
-      return exit_code_of(results);
+      if (!plot) return exit_code_of(results);
+      return draw_results(results_with_shapes(scenes, results, options), arguments->picture.out,
+                          picture, arguments->quiet || arguments->json == "-",
+                          exit_code_of(results));
     };
   });
 }
