@@ -4,7 +4,7 @@ updates in place (at most 5 times a second); otherwise (a log, CI) a line every 
 
 import sys
 import time
-from typing import Optional
+from typing import Any, Optional
 
 
 def _duration(seconds: float) -> str:
@@ -14,7 +14,7 @@ def _duration(seconds: float) -> str:
 
 
 class Progress:
-    def __init__(self, total: int, enabled: Optional[bool] = None, stream=None):
+    def __init__(self, total: int, enabled: Optional[bool] = None, stream: Any = None):
         self.stream = stream or sys.stderr
         self.tty = bool(getattr(self.stream, "isatty", lambda: False)())
         self.enabled = self.tty if enabled is None else enabled

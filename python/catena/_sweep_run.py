@@ -10,6 +10,7 @@ that still kills them is written with its error, not retried forever.
 """
 
 import hashlib
+import importlib
 import json
 import logging
 import math
@@ -18,7 +19,7 @@ import platform
 import shutil
 import tempfile
 import time
-from typing import Any, Optional
+from typing import Any, Iterator, Optional
 
 from ._catena import InvalidInput, __version__
 from ._sweep_point import columns, solve_batch
@@ -32,12 +33,18 @@ _PILOT_POINTS = 2  # points per worker in the first tasks, which time a point
 _MAX_BATCH = 100_000
 
 
-def _client(client: Any, scheduler: Optional[str], workers: Optional[int]) -> tuple[Any, Any, bool]:
-    """(client, cluster or None, whether we own it)."""
+def _distributed() -> Any:
+    """dask.distributed, untyped (an Any for mypy --strict); InvalidInput naming the Debian package."""
     try:
-        from dask.distributed import Client, LocalCluster
+        return importlib.import_module("distributed")
     except ImportError as error:
         raise InvalidInput(f"catena sweep needs Dask (Debian: python3-distributed): {error}") from None
+
+
+def _client(client: Any, scheduler: Optional[str], workers: Optional[int]) -> tuple[Any, Any, bool]:
+    """(client, cluster or None, whether we own it)."""
+    distributed = _distributed()
+    Client, LocalCluster = distributed.Client, distributed.LocalCluster
     if client is not None:
         return client, None, False
     if scheduler:
@@ -58,7 +65,7 @@ def _points(spec: Spec, first: int, count: int) -> list[tuple[int, list[Any]]]:
     return [(p, spec.point_values(p)) for p in range(first, first + count)]
 
 
-def _batches(runs: list[tuple[int, int]], size: int):
+def _batches(runs: list[tuple[int, int]], size: int) -> Iterator[tuple[int, int]]:
     for first, count in runs:
         for start in range(first, first + count, size):
             yield start, min(size, first + count - start)
@@ -80,8 +87,7 @@ class _Runner:
         return future
 
     def collect(self, future: Any, pending: Any) -> None:
-        from distributed import KilledWorker
-
+        KilledWorker = _distributed().KilledWorker
         first, count = future.catena_batch
         try:
             rows, busy = future.result()
@@ -114,8 +120,7 @@ class _Runner:
 
     def run(self, workers: int, batch_seconds: float) -> int:
         """Runs every missing point; returns the batch size used after the pilot tasks."""
-        from distributed import as_completed
-
+        as_completed = _distributed().as_completed
         runs = list(self.store.missing_runs())
         if not runs:
             return 0
@@ -169,7 +174,7 @@ def _json_safe(value: Any) -> Any:
     return json.loads(json.dumps(value, default=str))
 
 
-def run_sweep(spec_source: Any, out: Optional[str] = None, *, client: Any = None, scheduler: Optional[str] = None,
+def run_sweep(spec_source: Any, out: str, *, client: Any = None, scheduler: Optional[str] = None,
               workers: Optional[int] = None, progress: Optional[bool] = None,
               batch_seconds: float = 0.1) -> tuple[str, dict[str, Any]]:
     """Runs (or resumes) a sweep into `out`; returns (points.csv path, summary)."""
@@ -183,13 +188,15 @@ def run_sweep(spec_source: Any, out: Optional[str] = None, *, client: Any = None
     try:
         missing = spec.points - store.resumed
         reporter = Progress(missing, progress)
-        size, used_workers, runner = 0, 0, None
+        size, used_workers, runner, started, solving = 0, 0, None, 0.0, 0.0
         if missing:
             owned_client, cluster, owned = _client(client, scheduler, workers)
+            started = time.perf_counter() - start
             try:
                 used_workers = max(1, len(owned_client.scheduler_info().get("workers", {})))
                 runner = _Runner(owned_client, spec, store, reporter)
                 size = runner.run(used_workers, batch_seconds)
+                solving = time.perf_counter() - start - started
             finally:
                 reporter.finish()
                 if owned:
@@ -205,10 +212,11 @@ def run_sweep(spec_source: Any, out: Optional[str] = None, *, client: Any = None
     summary = {
         "spec": _json_safe(spec.text), "scene": spec.scene_origin, "points": spec.points,
         "computed": missing, "resumed": store.resumed, "status_counts": counts, "points_with_error": errors,
-        "wall_time_s": wall, "workers": used_workers, "tasks": runner.tasks if runner else 0,
-        "batch_points": size, "solve_time_s": busy,
-        # busy share of the workers' time: what the scheduler, transfers and the client's writes cost
-        "worker_utilization": busy / (wall * used_workers) if used_workers and wall > 0 else None,
+        "wall_time_s": wall, "cluster_start_s": started, "run_time_s": solving, "workers": used_workers,
+        "tasks": runner.tasks if runner else 0, "batch_points": size, "solve_time_s": busy,
+        # the workers' busy share of the run (after the cluster started): the rest is what the
+        # scheduler, the transfers, the client's writes and idle workers at the end cost
+        "worker_utilization": busy / (solving * used_workers) if used_workers and solving > 0 else None,
         "columns": header, "parquet": "not written: Parquet needs pyarrow or fastparquet, neither installed "
                                       "(Debian 12 packages neither); points.csv holds every value",
         "versions": _versions(),
@@ -231,10 +239,9 @@ def sweep(spec: Any, client: Any = None, *, out: Optional[str] = None, workers: 
         Default: a temporary directory, removed once read.
     progress: points done, rate and ETA on stderr (None: when stderr is a terminal).
     """
-    import pandas
-
+    pandas: Any = importlib.import_module("pandas")
     temporary = out is None
-    directory = tempfile.mkdtemp(prefix="catena-sweep-") if temporary else os.fspath(out)
+    directory = tempfile.mkdtemp(prefix="catena-sweep-") if out is None else os.fspath(out)
     try:
         path, _ = run_sweep(spec, directory, client=client, scheduler=scheduler, workers=workers,
                             progress=progress, batch_seconds=batch_seconds)

@@ -12,7 +12,7 @@ SPEC (digest) is refused. Memory is flat: a byte per point and a few numbers per
 import csv
 import fcntl
 import os
-from typing import Iterator, Optional
+from typing import Iterator
 
 import numpy
 
@@ -83,8 +83,8 @@ class Store:
         if missing.size == 0:
             return
         breaks = numpy.flatnonzero(numpy.diff(missing) != 1)
-        starts = numpy.concatenate(([0], breaks + 1))
-        ends = numpy.concatenate((breaks, [missing.size - 1]))
+        starts = [0] + [int(b) + 1 for b in breaks]
+        ends = [int(b) for b in breaks] + [int(missing.size) - 1]
         for s, e in zip(starts, ends):
             yield int(missing[s]), int(missing[e] - missing[s] + 1)
 
@@ -127,7 +127,7 @@ def status_counts(path: str, solvers: list[str]) -> tuple[dict[str, dict[str, in
         reader = csv.reader(file)
         header = next(reader)
         where = {s: header.index(f"{s}.status") for s in solvers}
-        error_column: Optional[int] = header.index("error")
+        error_column = header.index("error")
         for row in reader:
             for solver, column in where.items():
                 counts[solver][row[column]] = counts[solver].get(row[column], 0) + 1
