@@ -77,7 +77,7 @@ class _Runner:
     def __init__(self, client: Any, spec: Spec, store: Store, progress: Progress):
         self.client, self.spec, self.store, self.progress = client, spec, store, progress
         self.scene, self.axes, self.outputs = spec.scene, spec.axes, spec.outputs
-        self.busy_s, self.solved, self.tasks = 0.0, 0, 0
+        self.busy_s, self.cpu_s, self.solved, self.tasks = 0.0, 0.0, 0, 0
 
     def submit(self, first: int, count: int) -> Any:
         self.tasks += 1
@@ -90,15 +90,16 @@ class _Runner:
         KilledWorker = _distributed().KilledWorker
         first, count = future.catena_batch
         try:
-            rows, busy = future.result()
+            rows, busy, cpu = future.result()
         except KilledWorker:
             if count > 1:  # a point kills its worker: find it, and keep the others
                 for point in range(first, first + count):
                     pending.add(self.submit(point, 1))
                 return
-            rows, busy = self._killer_row(first), 0.0
+            rows, busy, cpu = self._killer_row(first), 0.0, 0.0
         self.store.append(first, count, rows)
         self.busy_s += busy
+        self.cpu_s += cpu
         self.solved += count
         self.progress.update(count)
 
@@ -138,7 +139,9 @@ class _Runner:
             self.collect(future, pending)
         if not rest:
             return _PILOT_POINTS
-        per_point = self.busy_s / max(self.solved, 1)
+        # CPU time, not wall: on a loaded machine the wall time of a point grows, the cost of a
+        # task to the scheduler does not shrink, so tasks sized by wall time would be too small
+        per_point = self.cpu_s / max(self.solved, 1)
         remaining = sum(c for _, c in rest)
         size = max(1, min(_MAX_BATCH, round(batch_seconds / per_point) if per_point > 0 else _MAX_BATCH,
                           math.ceil(remaining / (4 * workers))))  # >= 4 tasks a worker: balance
@@ -214,6 +217,7 @@ def run_sweep(spec_source: Any, out: str, *, client: Any = None, scheduler: Opti
         "computed": missing, "resumed": store.resumed, "status_counts": counts, "points_with_error": errors,
         "wall_time_s": wall, "cluster_start_s": started, "run_time_s": solving, "workers": used_workers,
         "tasks": runner.tasks if runner else 0, "batch_points": size, "solve_time_s": busy,
+        "task_cpu_time_s": runner.cpu_s if runner else 0.0,
         # the workers' busy share of the run (after the cluster started): the rest is what the
         # scheduler, the transfers, the client's writes and idle workers at the end cost
         "worker_utilization": busy / (solving * used_workers) if used_workers and solving > 0 else None,
