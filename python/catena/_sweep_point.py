@@ -60,7 +60,7 @@ def _plane_kept(outputs: Outputs, plane: str) -> bool:
     return (outputs.inplane_modes if plane == "inplane" else outputs.outofplane_modes) > 0
 
 
-def _cell(value: Any) -> str:
+def cell(value: Any) -> str:
     if value is None:
         return ""
     if isinstance(value, bool):
@@ -103,7 +103,8 @@ def _row(point: int, values: list[Any], result: Any, error: Optional[str], wall:
     references = {p: _reference(result, p, kept[p]) for p in PLANES} if outputs.differences != "none" else {}
     for solver in outputs.solvers:
         ran = result is not None and solver in result
-        row.append(result[solver].summary.status if ran else ("error" if error else "not_run"))
+        failed = error or (result is not None and result.error)
+        row.append(result[solver].summary.status if ran else ("error" if failed else "not_run"))
         for plane, k in _mode_columns(outputs):
             modes = _plane_modes(result, solver, plane)
             omega = _mode_value(modes.omega_rad_s if modes is not None else None, k)
@@ -149,5 +150,5 @@ def solve_batch(scene: dict[str, Any], axes: list[Axis], points: list[tuple[int,
     for point, values in points:
         result, error, wall = solve_point(scene, axes, values, outputs)
         busy += wall
-        writer.writerow([_cell(v) for v in _row(point, values, result, error, wall, outputs)])
+        writer.writerow([cell(v) for v in _row(point, values, result, error, wall, outputs)])
     return text.getvalue(), busy, time.thread_time() - cpu

@@ -22,7 +22,7 @@ import time
 from typing import Any, Iterator, Optional
 
 from ._catena import InvalidInput, __version__
-from ._sweep_point import columns, solve_batch
+from ._sweep_point import cell, columns, solve_batch
 from ._sweep_progress import Progress
 from ._sweep_spec import Spec, read_spec
 from ._sweep_store import Store, status_counts
@@ -111,7 +111,7 @@ class _Runner:
         row = [""] * len(header)
         row[0] = str(point)
         for i, value in enumerate(self.spec.point_values(point)):
-            row[1 + i] = repr(value)
+            row[1 + i] = cell(value)
         row[header.index("error")] = "this point killed the Dask worker solving it on every try (a crash: please report it)"
         for solver in self.outputs.solvers:
             row[header.index(f"{solver}.status")] = "crashed"
