@@ -223,3 +223,43 @@ def test_the_cli_reaches_the_sweep(cli, tmp_path):
     done = subprocess.run([cli, "sweep", str(spec), "--out", str(tmp_path / "bad")], capture_output=True, text=True,
                           timeout=300)
     assert done.returncode == 2 and "axes[0].values: empty" in done.stderr, done.stderr
+
+
+def test_a_point_that_kills_its_workers_is_isolated_and_reported(tmp_path):
+    """A task whose workers die on every try (Dask's KilledWorker) is split into single points; the
+    one that still kills its worker is written as `crashed` with a message, the others normally."""
+    from catena._sweep_point import columns, solve_batch
+    from catena._sweep_progress import Progress
+    from catena._sweep_run import _Runner
+    from catena._sweep_store import Store
+
+    spec = read_spec(grid_spec(lambda2_points=1, eps_values=(0.1, 0.2, 0.3)))
+    header = columns(spec.axes, spec.outputs)
+
+    class Future:
+        def __init__(self, points):
+            self.points = points
+
+        def result(self):
+            if any(point == 1 for point, _ in self.points):
+                raise distributed.KilledWorker("solve_batch", "tcp://127.0.0.1:1", 3)
+            return solve_batch(spec.scene, spec.axes, self.points, spec.outputs)
+
+    class FakeClient:
+        def submit(self, function, scene, axes, points, outputs, pure):
+            return Future(points)
+
+    store = Store(str(tmp_path), "digest", spec.points, header)
+    runner = _Runner(FakeClient(), spec, store, Progress(3, False))
+    class Pending(list):  # what the runner uses of distributed.as_completed
+        add = list.append
+
+    pending = Pending([runner.submit(0, 3)])
+    while pending:
+        runner.collect(pending.pop(0), pending)
+    frame = pandas.read_csv(store.assemble(), float_precision="round_trip")
+    store.close()
+    assert list(frame["point"]) == [0, 1, 2]
+    assert list(frame["shooting.status"]) == ["converged", "crashed", "converged"]
+    assert "killed the Dask worker" in frame["error"][1]
+    assert frame["taut_inclined.eps"][1] == 0.2 and math.isnan(frame["shooting.inplane.mode1.omega_rad_s"][1])
