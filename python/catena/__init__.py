@@ -15,6 +15,9 @@ Each solver also runs on its own: catena.solve_fe(problem, request, elements=800
 solve_shooting, solve_frobenius, solve_asymptotic, solve_airy, with their knobs as typed keyword
 arguments. A missing value (no error estimate, not asked, not counted) is None, or NaN in an array.
 
+catena.sweep(spec) solves a scene over a grid or a sample of its values on Dask and returns a pandas
+DataFrame (docs/how-to/sweep.md); `python3 -m catena sweep` is its command line.
+
 Errors: bad input raises catena.InvalidInput (a ValueError) naming the field; an unreadable or
 malformed scene raises catena.ParseError (a subclass of InvalidInput). Numerical trouble is never
 an exception: it is a status in each result's summary. Solves release the GIL.
