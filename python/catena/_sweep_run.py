@@ -65,19 +65,13 @@ def _points(spec: Spec, first: int, count: int) -> list[tuple[int, list[Any]]]:
     return [(p, spec.point_values(p)) for p in range(first, first + count)]
 
 
-def _batches(runs: list[tuple[int, int]], size: int) -> Iterator[tuple[int, int]]:
-    for first, count in runs:
-        for start in range(first, first + count, size):
-            yield start, min(size, first + count - start)
-
-
 class _Runner:
     """Submits batches, writes what finishes, and splits batches that kill workers."""
 
     def __init__(self, client: Any, spec: Spec, store: Store, progress: Progress):
         self.client, self.spec, self.store, self.progress = client, spec, store, progress
         self.scene, self.axes, self.outputs = spec.scene, spec.axes, spec.outputs
-        self.busy_s, self.cpu_s, self.solved, self.tasks = 0.0, 0.0, 0, 0
+        self.busy_s, self.cpu_s, self.solved, self.tasks, self.largest_batch = 0.0, 0.0, 0, 0, 0
 
     def submit(self, first: int, count: int) -> Any:
         self.tasks += 1
@@ -119,40 +113,52 @@ class _Runner:
         csv.writer(text, lineterminator="\n").writerow(row)
         return text.getvalue()
 
-    def run(self, workers: int, batch_seconds: float) -> int:
-        """Runs every missing point; returns the batch size used after the pilot tasks."""
+    def batch_size(self, workers: int, batch_seconds: float, remaining: int) -> int:
+        """Points in the next task: `batch_seconds` over the mean CPU time of the points solved so
+        far (it corrects itself as the sweep goes: the first points carry one-off costs), and at
+        most a quarter of the remaining points per worker, so that the end stays balanced. CPU time,
+        not wall: with other load on the machine the wall time of a point grows, while a task's
+        cost to the scheduler does not shrink, so tasks sized by wall time would be too small."""
+        per_point = self.cpu_s / self.solved if self.solved else 0.0
+        size = round(batch_seconds / per_point) if per_point > 0 else _MAX_BATCH
+        size = max(1, min(_MAX_BATCH, size, math.ceil(remaining / (4 * workers))))
+        self.largest_batch = max(self.largest_batch, size)
+        return size
+
+    def run(self, workers: int, batch_seconds: float) -> None:
+        """Runs every missing point: first a task of a few points per worker, to time a point, then
+        tasks sized by batch_size(), at most 2 per worker (+2) in flight."""
         as_completed = _distributed().as_completed
         runs = list(self.store.missing_runs())
-        if not runs:
-            return 0
         pilot, rest = [], []
         budget = _PILOT_POINTS * workers
-        for first, count in runs:  # the first points, as a few small tasks, time a point
+        for first, count in runs:
             take = min(count, budget)
             if take:
-                pilot += list(_batches([(first, take)], _PILOT_POINTS))
+                pilot += [(p, min(_PILOT_POINTS, first + take - p)) for p in range(first, first + take, _PILOT_POINTS)]
                 budget -= take
             if count > take:
                 rest.append((first + take, count - take))
         pending = as_completed([self.submit(f, c) for f, c in pilot])
         for future in pending:
             self.collect(future, pending)
-        if not rest:
-            return _PILOT_POINTS
-        # CPU time, not wall: on a loaded machine the wall time of a point grows, the cost of a
-        # task to the scheduler does not shrink, so tasks sized by wall time would be too small
-        per_point = self.cpu_s / max(self.solved, 1)
         remaining = sum(c for _, c in rest)
-        size = max(1, min(_MAX_BATCH, round(batch_seconds / per_point) if per_point > 0 else _MAX_BATCH,
-                          math.ceil(remaining / (4 * workers))))  # >= 4 tasks a worker: balance
-        batches = _batches(rest, size)
-        window = 2 * workers + 2
-        pending = as_completed([self.submit(f, c) for f, c in _take(batches, window)])
+
+        def batches() -> Iterator[tuple[int, int]]:
+            nonlocal remaining
+            for first, count in rest:
+                start = first
+                while start < first + count:
+                    size = min(self.batch_size(workers, batch_seconds, remaining), first + count - start)
+                    yield start, size
+                    start, remaining = start + size, remaining - size
+
+        queue = batches()
+        pending = as_completed([self.submit(f, c) for f, c in _take(queue, 2 * workers + 2)])
         for future in pending:
             self.collect(future, pending)
-            for f, c in _take(batches, 1):
+            for f, c in _take(queue, 1):
                 pending.add(self.submit(f, c))
-        return size
 
 
 def _take(iterator: Any, n: int) -> list[Any]:
@@ -191,14 +197,14 @@ def run_sweep(spec_source: Any, out: str, *, client: Any = None, scheduler: Opti
     try:
         missing = spec.points - store.resumed
         reporter = Progress(missing, progress)
-        size, used_workers, runner, started, solving = 0, 0, None, 0.0, 0.0
+        used_workers, runner, started, solving = 0, None, 0.0, 0.0
         if missing:
             owned_client, cluster, owned = _client(client, scheduler, workers)
             started = time.perf_counter() - start
             try:
                 used_workers = max(1, len(owned_client.scheduler_info().get("workers", {})))
                 runner = _Runner(owned_client, spec, store, reporter)
-                size = runner.run(used_workers, batch_seconds)
+                runner.run(used_workers, batch_seconds)
                 solving = time.perf_counter() - start - started
             finally:
                 reporter.finish()
@@ -216,7 +222,7 @@ def run_sweep(spec_source: Any, out: str, *, client: Any = None, scheduler: Opti
         "spec": _json_safe(spec.text), "scene": spec.scene_origin, "points": spec.points,
         "computed": missing, "resumed": store.resumed, "status_counts": counts, "points_with_error": errors,
         "wall_time_s": wall, "cluster_start_s": started, "run_time_s": solving, "workers": used_workers,
-        "tasks": runner.tasks if runner else 0, "batch_points": size, "solve_time_s": busy,
+        "tasks": runner.tasks if runner else 0, "batch_points": runner.largest_batch if runner else 0, "solve_time_s": busy,
         "task_cpu_time_s": runner.cpu_s if runner else 0.0,
         # the workers' busy share of the run (after the cluster started): the rest is what the
         # scheduler, the transfers, the client's writes and idle workers at the end cost
