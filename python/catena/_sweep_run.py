@@ -19,6 +19,7 @@ import platform
 import shutil
 import tempfile
 import time
+import warnings
 from typing import Any, Iterator, Optional
 
 from ._catena import InvalidInput, __version__
@@ -56,8 +57,12 @@ def _client(client: Any, scheduler: Optional[str], workers: Optional[int]) -> tu
     count = workers if workers is not None else (os.cpu_count() or 1)
     if isinstance(count, bool) or not isinstance(count, int) or count < 1:
         raise InvalidInput(f"--workers {workers!r}: an integer >= 1")
-    cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None,
-                           silence_logs=logging.ERROR)
+    with warnings.catch_warnings():
+        # the scheduler's HTTP server falls back to a free port when 8787 is taken (another
+        # cluster): nothing the user needs to act on
+        warnings.filterwarnings("ignore", message="Port 8787 is already in use")
+        cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None,
+                               silence_logs=logging.ERROR)
     return Client(cluster), cluster, True
 
 
