@@ -197,29 +197,38 @@ def run_sweep(spec_source: Any, out: str, *, client: Any = None, scheduler: Opti
         raise InvalidInput(f"batch_seconds = {batch_seconds!r}: in (0, 3600] s")
     header = columns(spec.axes, spec.outputs)
     digest = hashlib.sha256(f"{spec.digest()} {__version__} {','.join(header)}".encode()).hexdigest()
-    store = Store(out, digest, spec.points, header)
     start = time.perf_counter()
+    connected = _client(client, scheduler, None) if client is None and scheduler else None  # fail before writing
+    try:
+        store = Store(out, digest, spec.points, header)
+    except BaseException:
+        if connected:
+            connected[0].close()
+        raise
     try:
         missing = spec.points - store.resumed
-        reporter = Progress(missing, progress)
         used_workers, runner, started, solving = 0, None, 0.0, 0.0
         if missing:
-            owned_client, cluster, owned = _client(client, scheduler, workers)
+            dask_client, cluster, owned = connected or _client(client, None, workers)
+            connected = None
             started = time.perf_counter() - start
+            reporter = Progress(missing, progress)
             try:
-                used_workers = max(1, len(owned_client.scheduler_info().get("workers", {})))
-                runner = _Runner(owned_client, spec, store, reporter)
+                used_workers = max(1, len(dask_client.scheduler_info().get("workers", {})))
+                runner = _Runner(dask_client, spec, store, reporter)
                 runner.run(used_workers, batch_seconds)
                 solving = time.perf_counter() - start - started
             finally:
                 reporter.finish()
                 if owned:
-                    owned_client.close()
+                    dask_client.close()
                     if cluster is not None:
                         cluster.close()
         path = store.assemble()
     finally:
         store.close()
+        if connected:  # connected to a scheduler, but nothing was left to solve
+            connected[0].close()
     wall = time.perf_counter() - start
     counts, errors = status_counts(path, spec.outputs.solvers)
     busy = runner.busy_s if runner else 0.0

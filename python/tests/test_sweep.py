@@ -189,6 +189,7 @@ def test_an_unreachable_scheduler_is_an_error_within_seconds(tmp_path):
     with pytest.raises(catena.InvalidInput, match=r"--scheduler tcp://127.0.0.1:9: no Dask scheduler answered within 5 s"):
         catena.sweep(grid_spec(), scheduler="tcp://127.0.0.1:9", out=tmp_path / "out")
     assert time.monotonic() - start < 20
+    assert not (tmp_path / "out").exists()  # nothing written
 
 
 def test_points_of_grids_zips_and_samples():
