@@ -8,7 +8,7 @@ over 1, the scheduler's share, and peak memory (RSS) at 1e4 and 1e5 points.
 Every ratio is between runs of the same points in the same process, one after the other (the
 machine's other load changes between runs: the load average is printed). The sweep's times are
 its run after the cluster started (summary.json's run_time_s); the cluster's start is given apart.
-The serial loop calls catena.solve on each point's scene with the same solvers, as a task does.
+The clusters are catena.sweep's own (catena._sweep_run.local_cluster). The serial loop calls catena.solve on each point's scene with the same solvers, as a task does.
 Prints Markdown (benchmarks/results/sweep-scaling.md).
 """
 
@@ -20,9 +20,9 @@ import tempfile
 import time
 
 import catena
-from catena._sweep_run import run_sweep
+from catena._sweep_run import local_cluster, run_sweep
 from catena._sweep_spec import read_spec
-from distributed import Client, LocalCluster
+from distributed import Client
 
 SCENE = {"taut_inclined": {"eps": 0.3, "phi_deg": 30.0, "lambda2": 10.0},
          "request": {"inplane_modes": 3, "outofplane_modes": 3}}
@@ -52,8 +52,7 @@ def on_dask(sweep_spec, workers):
     sweep [s], and each worker's peak RSS [MB]."""
     with tempfile.TemporaryDirectory() as out:
         start = time.perf_counter()
-        with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
-                Client(cluster) as client:
+        with local_cluster(workers) as cluster, Client(cluster) as client:
             started = time.perf_counter() - start
             before, cpu = client.run(time.process_time), time.process_time()
             _, summary = run_sweep(sweep_spec, out, client=client, progress=False)

@@ -44,8 +44,7 @@ def _distributed() -> Any:
 
 def _client(client: Any, scheduler: Optional[str], workers: Optional[int]) -> tuple[Any, Any, bool]:
     """(client, cluster or None, whether we own it)."""
-    distributed = _distributed()
-    Client, LocalCluster = distributed.Client, distributed.LocalCluster
+    Client = _distributed().Client
     if client is not None:
         return client, None, False
     if scheduler:
@@ -57,13 +56,22 @@ def _client(client: Any, scheduler: Optional[str], workers: Optional[int]) -> tu
     count = workers if workers is not None else (os.cpu_count() or 1)
     if isinstance(count, bool) or not isinstance(count, int) or count < 1:
         raise InvalidInput(f"--workers {workers!r}: an integer >= 1")
-    with warnings.catch_warnings():
+    cluster = local_cluster(count)
+    return Client(cluster), cluster, True
+
+
+def local_cluster(workers: int) -> Any:
+    """The LocalCluster of a sweep: `workers` processes of one thread each, no dashboard, and no
+    statistical profiler in the workers (it samples every thread's stack every 10 ms: several
+    percent of a worker's CPU, for a profile nobody reads here)."""
+    distributed = _distributed()
+    dask: Any = importlib.import_module("dask")
+    with warnings.catch_warnings(), dask.config.set({"distributed.worker.profile.enabled": False}):
         # the scheduler's HTTP server falls back to a free port when 8787 is taken (another
         # cluster): nothing the user needs to act on
         warnings.filterwarnings("ignore", message="Port 8787 is already in use")
-        cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None,
-                               silence_logs=logging.ERROR)
-    return Client(cluster), cluster, True
+        return distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                        dashboard_address=None, silence_logs=logging.ERROR)
 
 
 def _points(spec: Spec, first: int, count: int) -> list[tuple[int, list[Any]]]:
