@@ -104,6 +104,9 @@ class _Runner:
                     pending.add(self.submit(point, 1))
                 return
             rows, busy, cpu = self._killer_row(first), 0.0, 0.0
+        except ImportError as error:  # a worker of a user's cluster without catena (or numpy)
+            raise InvalidInput(f"a Dask worker cannot import {error.name}: {error}; every worker of the cluster "
+                               "needs the same catena importable (the points written so far are kept)") from None
         self.store.append(first, count, rows)
         self.busy_s += busy
         self.cpu_s += cpu
