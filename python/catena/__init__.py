@@ -15,6 +15,9 @@ Each solver also runs on its own: catena.solve_fe(problem, request, elements=800
 solve_shooting, solve_frobenius, solve_asymptotic, solve_airy, with their knobs as typed keyword
 arguments. A missing value (no error estimate, not asked, not counted) is None, or NaN in an array.
 
+catena.sweep(spec) solves a scene over a grid or a sample of its values on Dask and returns a pandas
+DataFrame (docs/how-to/sweep.md); `python3 -m catena sweep` is its command line.
+
 Errors: bad input raises catena.InvalidInput (a ValueError) naming the field; an unreadable or
 malformed scene raises catena.ParseError (a subclass of InvalidInput). Numerical trouble is never
 an exception: it is a status in each result's summary. Solves release the GIL.
@@ -37,6 +40,7 @@ from . import _plot
 from ._check_results import ORIGIN as _RESULTS_ORIGIN, _NotAValue, results_json_text
 from ._scene_dict import scene_toml_text
 from ._solver_functions import solve_airy, solve_asymptotic, solve_fe, solve_frobenius, solve_shooting
+from ._sweep_run import sweep
 
 __all__ = [
     "Cable", "CertifiedReference", "Check", "ConvergenceStudy", "DynamicTension", "DynamicTensionEnd",
@@ -47,7 +51,7 @@ __all__ = [
     "check", "check_tension", "check_timeseries",
     "dimensionless_groups", "load_scene", "load_scenes", "run_solver", "solve", "solve_airy",
     "solve_asymptotic", "solve_fe", "solve_frobenius", "solve_shooting", "solve_statics", "solve_sweep",
-    "solvers", "__version__",
+    "solvers", "sweep", "__version__",
 ]
 
 #: What names a scene: the path of a TOML file, a dict with the file's structure, or a Scene.

@@ -26,6 +26,9 @@ void add_report_command(CLI::App& app, std::function<int()>& run);
 void add_check_command(CLI::App& app, std::function<int()>& run);
 /// `import moordyn`: MoorDyn decks as scenes (src/cli/import_command.cpp).
 void add_import_command(CLI::App& app, std::function<int()>& run);
+/// `sweep`: a SPEC's points on Dask, by the Python package's `python3 -m catena sweep`
+/// (src/cli/sweep_command.cpp, docs/how-to/sweep.md).
+void add_sweep_command(CLI::App& app, std::function<int()>& run);
 
 /// `plot`: a picture of each scene of a results JSON (src/cli/plot_command.cpp).
 void add_plot_command(CLI::App& app, std::function<int()>& run);
