@@ -188,7 +188,8 @@ def triangulation(x, y, log_x, log_y):
 
 
 def draw_panel(ax, tri, error, title):
-    """Heat map of log10(error) with contours at CONTOURS; grey where no value."""
+    """Heat map of log10(error) with contours at CONTOURS; grey where no value. Returns the image
+    and the contour set (None, None when every point is grey)."""
     import matplotlib.tri as mtri  # noqa: PLC0415
 
     valid = np.isfinite(error)
@@ -196,7 +197,7 @@ def draw_panel(ax, tri, error, title):
     masked = mtri.Triangulation(tri.x, tri.y, triangles=tri.triangles,
                                 mask=np.any(~valid[tri.triangles], axis=1))
     ax.set_facecolor("0.75")
-    image = None
+    image = lines = None
     if not masked.mask.all():
         faces = level[masked.triangles].mean(axis=1)  # flat shading: gouraud ignores the mask
         image = ax.tripcolor(masked, facecolors=faces, cmap="viridis", vmin=-8.0, vmax=0.0,
@@ -208,7 +209,7 @@ def draw_panel(ax, tri, error, title):
         if lines.allsegs and any(len(s) for s in lines.allsegs):
             ax.clabel(lines, fmt={v: f"{c:g}" for v, c in zip(lines.levels, CONTOURS)}, fontsize=7)
     ax.set_title(title, fontsize=9)
-    return image
+    return image, lines
 
 
 def draw_figure(data, geometry, model, out_dir):
@@ -225,14 +226,16 @@ def draw_figure(data, geometry, model, out_dir):
     fig, axes = plt.subplots(1, 3, figsize=(13.5, 4.2), sharey=True, layout="constrained")
     image = None
     for ax, (quantity, label) in zip(axes, QUANTITIES):
-        image = draw_panel(ax, tri, data[model][quantity], label) or image
+        image = draw_panel(ax, tri, data[model][quantity], label)[0] or image
         ax.set_xscale("log" if xkey in LOG_AXES else "linear")
         ax.set_yscale("log" if ykey in LOG_AXES else "linear")
         ax.set_xlabel(AXIS_LABELS[xkey])
         if geometry == "level":  # the physical corner: static strain T0/EA = 1 % along this line
             strain = np.array([c["strain"] for c in data["cable"]])
-            ax.tricontour(tri, np.log10(strain), levels=[-2.0], colors="r", linewidths=0.8,
-                          linestyles="dashdot")
+            with warnings.catch_warnings():  # a map wholly on one side of it has no line
+                warnings.simplefilter("ignore", UserWarning)
+                ax.tricontour(tri, np.log10(strain), levels=[-2.0], colors="r", linewidths=0.8,
+                              linestyles="dashdot")
     axes[0].set_ylabel(AXIS_LABELS[ykey])
     if image is not None:
         bar = fig.colorbar(image, ax=list(axes), shrink=0.95, aspect=30)
@@ -317,7 +320,7 @@ def table(summary, geometry, picks):
 
 # --- the report's entry point ---------------------------------------------------------------------
 
-def draw_all(validity_dir, out_dir):
+def draw_all(validity_dir, out_dir, models=MODELS):
     """Every map whose sweep output exists: validity_dir/<geometry>/points.csv. Returns
     [(file, caption)] and the notes of maps not drawn."""
     figures, notes = [], []
@@ -328,7 +331,7 @@ def draw_all(validity_dir, out_dir):
                          f"verification/sweeps/{geometry}-coarse.toml --out {points.parent})")
             continue
         data = read_map(points)
-        for model in MODELS:
+        for model in models:
             figures.append(draw_figure(data, geometry, model, out_dir))
     return figures, notes
 
