@@ -36,6 +36,7 @@ from . import _catena
 from ._check_results import ORIGIN as _RESULTS_ORIGIN, _NotAValue, results_json_text
 from ._scene_dict import scene_toml_text
 from ._solver_functions import solve_airy, solve_asymptotic, solve_fe, solve_frobenius, solve_shooting
+from ._sweep_run import sweep
 
 __all__ = [
     "Cable", "CertifiedReference", "Check", "ConvergenceStudy", "DynamicTension", "DynamicTensionEnd",
@@ -45,7 +46,7 @@ __all__ = [
     "SolverInfo", "SolverResult", "Statics", "Summary", "TensionCheck", "check", "check_tension",
     "dimensionless_groups", "load_scene", "load_scenes", "run_solver", "solve", "solve_airy",
     "solve_asymptotic", "solve_fe", "solve_frobenius", "solve_shooting", "solve_statics", "solve_sweep",
-    "solvers", "__version__",
+    "solvers", "sweep", "__version__",
 ]
 
 #: What names a scene: the path of a TOML file, a dict with the file's structure, or a Scene.
