@@ -127,9 +127,12 @@ def test_map_builder_on_synthetic_points(tmp_path):
     # (t = 0.375, sag 10^-2.25).
     holds = vm.holds_up_to(data, "level", "string", "worst6", 1e-2)
     assert len(holds) == 9
-    for index, (_, y) in enumerate(holds):
+    for index, (_, y, end) in enumerate(holds):
         assert y == pytest.approx(10.0 ** (-3 + (0.75 if index == 4 else 1.5)), rel=1e-12)
-    assert all(y is None for _, y in vm.holds_up_to(data, "level", "airy", "inplane1", 1e-2))
+        assert end == ("grey" if index == 4 else "error")
+    assert all(y is None and end == "grey" for _, y, end in vm.holds_up_to(data, "level", "airy", "inplane1", 1e-2))
+    assert all(y == pytest.approx(0.1) and end == "edge"  # e <= 1e-1 everywhere: held to the map's edge
+               for x, y, end in vm.holds_up_to(data, "level", "string", "outofplane1", 0.11) if x != holds[4][0])
 
     # The drawn panel has all three contours, and the figures land in index order with captions.
     import matplotlib

@@ -261,22 +261,27 @@ def draw_figure(data, geometry, model, out_dir):
 # point from the column's smallest y up to y is within 1 % (a grey point ends the run too).
 COLUMNS = {"level": ("lambda2", "sag_to_span"), "inclined": ("phi_deg", "eps")}
 THRESHOLDS = (1e-2, 1e-3)
+# The columns the docs tabulate (the nearest grid values are taken).
+TABLE_COLUMNS = {"level": (0.1, 1.0, 10.0, 4 * math.pi ** 2, 100.0, 1000.0),
+                 "inclined": (0.0, 15.0, 30.0, 45.0, 60.0, 85.0)}
 
 
 def holds_up_to(data, geometry, model, quantity, threshold):
-    """[(column value, largest y up to which the model holds, or None where its first y fails)]."""
+    """[(column value, largest y up to which the model holds or None where its first y does not,
+    what ends the run: "error" above the threshold, "grey" no value, "edge" the map's end)]."""
     column, along = COLUMNS[geometry]
     groups = {}
     for cable, error in zip(data["cable"], data[model][quantity]):
         groups.setdefault(float(f"{cable[column]:.9g}"), []).append((cable[along], error))
     result = []
     for value in sorted(groups):
-        last = None
+        last, end = None, "edge"
         for y, error in sorted(groups[value]):
-            if not error <= threshold:  # nan (grey) fails too
+            if not error <= threshold:
+                end = "error" if math.isfinite(error) else "grey"
                 break
             last = y
-        result.append((value, last))
+        result.append((value, last, end))
     return result
 
 
@@ -289,31 +294,36 @@ def summarize(data, geometry):
             out[model][quantity] = {}
             for threshold in THRESHOLDS:
                 columns = holds_up_to(data, geometry, model, quantity, threshold)
-                ys = [y for _, y in columns]
+                ys = [y for _, y, _ in columns]
                 everywhere = None if any(y is None for y in ys) else min(ys)
-                out[model][quantity][f"{threshold:g}"] = {"columns": [[x, y] for x, y in columns],
+                out[model][quantity][f"{threshold:g}"] = {"columns": [list(c) for c in columns],
                                                           "everywhere_up_to": everywhere}
     return out
 
 
 def table(summary, geometry, picks):
     """Markdown: per model and quantity, the largest y holding to 1 % and 0.1 % at the grid columns
-    nearest each pick."""
+    nearest each pick; '*' where the model declines beyond it (grey), '+' where it holds to the
+    map's edge."""
     column, along = COLUMNS[geometry]
     any_entry = summary[MODELS[0]][QUANTITIES[0][0]][f"{THRESHOLDS[0]:g}"]["columns"]
-    xs = np.array([x for x, _ in any_entry])
+    xs = np.array([x for x, _, _ in any_entry])
     chosen = [float(xs[np.argmin(np.abs(np.log(xs / p) if column in LOG_AXES else xs - p))]) for p in picks]
     head = " | ".join(f"{x:.3g}: 1 % / 0.1 %" for x in chosen)
-    lines = [f"| model, frequency | {AXIS_LABELS[column]} = {head} |", "|---|" + "---|" * len(chosen)]
+    lines = [f"| model, frequency | {AXIS_LABELS[column]} = {head} | every {column} of the map |",
+             "|---|" + "---|" * (len(chosen) + 1)]
     for model in MODELS:
         for quantity, label in QUANTITIES:
             cells = []
             for x in chosen:
                 pair = []
                 for threshold in THRESHOLDS:
-                    entry = dict((a, b) for a, b in summary[model][quantity][f"{threshold:g}"]["columns"])
-                    pair.append("-" if entry[x] is None else f"{entry[x]:.3g}")
+                    entry = {a: (b, end) for a, b, end in summary[model][quantity][f"{threshold:g}"]["columns"]}
+                    y, end = entry[x]
+                    pair.append("-" if y is None else f"{y:.3g}" + {"grey": "*", "edge": "+"}.get(end, ""))
                 cells.append(" / ".join(pair))
+            everywhere = [summary[model][quantity][f"{t:g}"]["everywhere_up_to"] for t in THRESHOLDS]
+            cells.append(" / ".join("-" if y is None else f"{y:.3g}" for y in everywhere))
             lines.append(f"| {model}, {label} | " + " | ".join(cells) + " |")
     return f"{AXIS_LABELS[along]} up to which each model holds:\n\n" + "\n".join(lines)
 
@@ -332,6 +342,10 @@ def draw_all(validity_dir, out_dir, models=MODELS):
             continue
         data = read_map(points)
         for model in models:
+            if not any(np.isfinite(data[model][q]).any() for q, _ in QUANTITIES):
+                notes.append(f"validity map '{geometry}' of {model} not drawn: no point has a value "
+                             f"(e.g. airy declines every level cable)")
+                continue
             figures.append(draw_figure(data, geometry, model, out_dir))
     return figures, notes
 
@@ -354,9 +368,8 @@ def main():
             data = read_map(points)
             summaries[geometry] = {"points": len(data["cable"]), "maps": summarize(data, geometry)}
             if args.tables:
-                picks = (0.1, 1.0, 10.0, 4 * math.pi ** 2, 100.0, 1000.0) if geometry == "level" else (
-                    0.0, 15.0, 30.0, 45.0, 60.0, 85.0)
-                print(f"## {geometry} ({len(data['cable'])} points)\n\n{table(summaries[geometry]['maps'], geometry, picks)}\n")
+                print(f"## {geometry} ({len(data['cable'])} points)\n")
+                print(table(summaries[geometry]["maps"], geometry, TABLE_COLUMNS[geometry]) + "\n")
     if args.summary:
         with open(args.summary, "w") as f:
             json.dump(summaries, f, indent=1)
