@@ -301,6 +301,30 @@ def summarize(data, geometry):
     return out
 
 
+def prose_notes(data, summary, geometry):
+    """Lines for the docs' prose: the columns where each model holds at all, and (level) the static
+    strain T0/EA at the string's out-of-plane boundaries."""
+    column, along = COLUMNS[geometry]
+    lines = []
+    for model in MODELS:
+        for quantity, label in QUANTITIES:
+            for threshold in THRESHOLDS:
+                columns = summary[model][quantity][f"{threshold:g}"]["columns"]
+                held = [x for x, y, _ in columns if y is not None]
+                if held and len(held) < len(columns):
+                    lines.append(f"- {model}, {label}, {threshold:g}: holds somewhere only for {column} in "
+                                 f"[{min(held):.3g}, {max(held):.3g}] ({len(held)} of {len(columns)} columns)")
+    if geometry == "level":
+        strain = {(float(f"{c[column]:.9g}"), c[along]): c["strain"] for c in data["cable"]}
+        for threshold in THRESHOLDS:
+            columns = summary["string"]["outofplane1"][f"{threshold:g}"]["columns"]
+            at = [strain[(x, y)] for x, y, _ in columns if y is not None and (x, y) in strain]
+            lines.append(f"- string out of plane, {threshold:g}: static strain T0/EA at the boundary "
+                         f"from {min(at):.3g} to {max(at):.3g}; at {column} = {columns[0][0]:.3g}: "
+                         f"{strain[(columns[0][0], columns[0][1])]:.3g}")
+    return "\n".join(lines)
+
+
 def table(summary, geometry, picks):
     """Markdown: per model and quantity, the largest y holding to 1 % and 0.1 % at the grid columns
     nearest each pick; '*' where the model declines beyond it (grey), '+' where it holds to the
@@ -313,6 +337,10 @@ def table(summary, geometry, picks):
     lines = [f"| model, frequency | {AXIS_LABELS[column]} = {head} | every {column} of the map |",
              "|---|" + "---|" * (len(chosen) + 1)]
     for model in MODELS:
+        if all(entry[1] is None and entry[2] == "grey" for quantity, _ in QUANTITIES for threshold in THRESHOLDS
+               for entry in summary[model][quantity][f"{threshold:g}"]["columns"]):
+            lines.append(f"| {model}: declines every point of the map |" + " |" * (len(chosen) + 1))
+            continue
         for quantity, label in QUANTITIES:
             cells = []
             for x in chosen:
@@ -370,6 +398,7 @@ def main():
             if args.tables:
                 print(f"## {geometry} ({len(data['cable'])} points)\n")
                 print(table(summaries[geometry]["maps"], geometry, TABLE_COLUMNS[geometry]) + "\n")
+                print(prose_notes(data, summaries[geometry]["maps"], geometry) + "\n")
     if args.summary:
         with open(args.summary, "w") as f:
             json.dump(summaries, f, indent=1)
