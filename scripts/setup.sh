@@ -17,6 +17,8 @@ packages=(
   python3-setuptools  # the build backend of python/pyproject.toml (pip --no-build-isolation)
   python3-wheel       # setuptools builds the wheel pip installs
   python3-mypy        # the stubs and annotations checked by mypy and stubtest (python/tests/test_typing.py)
+  python3-distributed # catena sweep's Dask (docs/how-to/sweep.md); Parquet output would need pyarrow or
+  python3-pandas      #   fastparquet, which Debian 12 does not package: sweeps write CSV only
   universal-ctags     # the function-length check (scripts/check_function_length.py)
   clang-format        # the formatting check (scripts/check_format.py)
   chromium            # the HTML report is checked in headless Chromium (test skipped without it)

@@ -159,7 +159,8 @@ def bad(spec, match, tmp_path):
     ({"key": "taut_incline.eps", "values": [0.1]}, r"axes\[0\].key = 'taut_incline.eps': 'taut_incline' is not a key of the scene \(close: taut_inclined\)"),
     ({"key": "taut_inclined.eps", "values": []}, r"axes\[0\].values: empty"),
     ({"key": "taut_inclined.eps", "from": 0.0, "to": 1.0, "points": 5, "spacing": "log"}, r"axes\[0\].from = 0.0: a log spacing needs bounds > 0"),
-    ({"key": "taut_inclined.eps", "from": 0.1, "to": 20.0, "points": 3}, r"axes\[0\] \(key 'taut_inclined.eps'\) at its last value 20.0.*eps"),
+    ({"key": "taut_inclined.phi_deg", "from": 10.0, "to": 95.0, "points": 3},
+     r"axes\[0\] \(key 'taut_inclined.phi_deg'\) at its last value 95.0: the scene .* is refused: .*phi_deg"),
     ({"key": "line.segments.1.EA", "values": [1e9]}, r"'line' is not a key of the scene"),
 ])
 def test_bad_axes_are_refused_naming_the_field(axis, match, tmp_path):

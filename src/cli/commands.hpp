@@ -22,6 +22,9 @@ void add_report_command(CLI::App& app, std::function<int()>& run);
 void add_check_command(CLI::App& app, std::function<int()>& run);
 /// `import moordyn`: MoorDyn decks as scenes (src/cli/import_command.cpp).
 void add_import_command(CLI::App& app, std::function<int()>& run);
+/// `sweep`: a SPEC's points on Dask, by the Python package's `python3 -m catena sweep`
+/// (src/cli/sweep_command.cpp, docs/how-to/sweep.md).
+void add_sweep_command(CLI::App& app, std::function<int()>& run);
 
 /// For every option naming a file or directory: an empty value ("--json ''", often an unset
 /// shell variable) is a usage error naming the option (exit 2), never "no output" or "the

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   catena::cli::add_solvers_command(app, run);
   catena::cli::add_check_command(app, run);
   catena::cli::add_import_command(app, run);
+  catena::cli::add_sweep_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
