@@ -32,6 +32,7 @@ import csv
 import json
 import math
 import pathlib
+import re
 import warnings
 
 import numpy as np
@@ -378,6 +379,15 @@ def draw_all(validity_dir, out_dir, models=MODELS):
     return figures, notes
 
 
+def rounded(value):
+    """The summary with its floats at 6 significant digits."""
+    if isinstance(value, dict):
+        return {k: rounded(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [rounded(v) for v in value]
+    return float(f"{value:.6g}") if isinstance(value, float) else value
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("validity", help="directory holding <geometry>/points.csv (level, inclined)")
@@ -401,7 +411,11 @@ def main():
                 print(prose_notes(data, summaries[geometry]["maps"], geometry) + "\n")
     if args.summary:
         with open(args.summary, "w") as f:
-            json.dump(summaries, f, indent=1)
+            # One line per model and frequency; 6 significant digits, the grid's own resolution
+            # being far coarser.
+            text = json.dumps(rounded(summaries), indent=1)
+            text = re.sub(r"\[\s*([^\[\]]*?)\s*\]", lambda m: "[" + re.sub(r"\s+", " ", m.group(1)) + "]", text)
+            f.write(text + "\n")
 
 
 if __name__ == "__main__":
