@@ -151,3 +151,11 @@ def test_map_builder_on_synthetic_points(tmp_path):
     assert [name for name, _ in figures] == ["validity-map-level-string.png"]
     assert all((out / name).stat().st_size > 10000 for name, _ in figures)
     assert len(notes) == 1 and "inclined" in notes[0]  # no inclined sweep: said, not drawn
+
+
+def test_a_refused_point_is_grey_not_a_number():
+    # A point the scene refused has empty cells: no frequency, no error, for every model.
+    empty = vm.cable_of({})
+    for model in vm.MODELS:
+        errors = vm.errors({"inplane": None, "outofplane": None}, vm.model_modes({}, model, empty))
+        assert all(math.isnan(e) for e in errors.values())

@@ -143,6 +143,8 @@ def model_modes(row, model, cable):
     if model in SOLVER_MODELS:
         return {plane: solver_modes(row, model, plane) for plane in PLANES}
     args = (cable["chord_m"], cable["tension_n"], cable["mass_kg_per_m"])
+    if not (all(math.isfinite(a) and a > 0.0 for a in args) and cable["lambda2"] > 0.0):
+        return {plane: None for plane in PLANES}  # a point without statics (refused): grey
     string = string_frequencies(*args, MODES)
     if model == "string":
         return {"inplane": string, "outofplane": string}
