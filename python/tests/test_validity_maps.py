@@ -157,5 +157,6 @@ def test_a_refused_point_is_grey_not_a_number():
     # A point the scene refused has empty cells: no frequency, no error, for every model.
     empty = vm.cable_of({})
     for model in vm.MODELS:
-        errors = vm.errors({"inplane": None, "outofplane": None}, vm.model_modes({}, model, empty))
+        reference = {plane: [float(k) for k in range(1, 7)] for plane in vm.PLANES}  # shooting has values
+        errors = vm.errors(reference, vm.model_modes({}, model, empty))
         assert all(math.isnan(e) for e in errors.values())
