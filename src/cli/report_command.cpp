@@ -32,7 +32,10 @@ void add_report_command(CLI::App& app, std::function<int()>& run) {
       "report",
       "Write the comparison report from a results JSON of `catena verify`: report.md,\n"
       "report.html (self-contained, figures embedded), data/*.csv and figures/*.png.\n"
-      "Figures need python3 with matplotlib; without them the report says so.");
+      "Figures need python3 with matplotlib; without them the report says so. The validity\n"
+      "maps (figures/validity-map-*.png) are drawn from the `catena sweep` outputs found in\n"
+      "OUT/validity/<map>/points.csv (`make verify` writes them; see\n"
+      "docs/explanation/validity-maps.md).");
   command->add_option("--from", arguments->from, "Results JSON written by `catena verify`")
       ->capture_default_str()
       ->check(non_empty_path());

@@ -4,11 +4,12 @@
 
     /usr/bin/python3 verification/tools/figures.py --results build/report/report.json \
         --published verification/reference/published --out build/report/figures \
-        --time-vs-error benchmarks/results/time-vs-error.csv
+        --time-vs-error benchmarks/results/time-vs-error.csv [--validity build/report/validity]
 
 Writes PNG files and index.json ([{file, caption}], in report order). A figure whose scenes are
 not in the results (e.g. a filtered run) is skipped. Published points are read from the
-transcribed tables and overlaid as open markers.
+transcribed tables and overlaid as open markers. The validity maps (validity_maps.py) are drawn from
+the `catena sweep` outputs in --validity (default: the report's DIR/validity/<geometry>/points.csv).
 """
 import argparse
 import csv
@@ -374,12 +375,26 @@ def pareto(figures, csv_path):
                  "tolerance), error against shooting at rtol 1e-13.")
 
 
+def validity_maps(figures, validity_dir):
+    """The validity maps (validity_maps.py, next to this script) of the sweeps found in validity_dir."""
+    sys.path.insert(0, str(DATA_DIR))
+    import validity_maps as maps  # noqa: PLC0415
+
+    drawn, notes = maps.draw_all(validity_dir, figures.out)
+    for name, caption in drawn:
+        figures.index.append({K.file: name, K.caption: caption})
+    for note in notes:
+        print(note)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", required=True)
     parser.add_argument("--published", required=True)
     parser.add_argument("--out", required=True)
     parser.add_argument("--time-vs-error", default=str(DATA_DIR / "benchmarks" / "time-vs-error.csv"))
+    parser.add_argument("--validity", help="sweep outputs <geometry>/points.csv of the validity maps "
+                        "(default: validity/ next to --out, i.e. the report's DIR/validity)")
     args = parser.parse_args()
     with open(args.results) as f:
         results = json.load(f)
@@ -390,6 +405,7 @@ def main():
         draw()
     damped_resonance(figures)
     pareto(figures, args.time_vs_error)
+    validity_maps(figures, args.validity or pathlib.Path(args.out).parent / "validity")
     with open(pathlib.Path(args.out) / "index.json", "w") as f:
         json.dump(figures.index, f, indent=1)
     print(f"drew {len(figures.index)} figures in {args.out}")
