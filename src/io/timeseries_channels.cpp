@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+// Finding a channel of a time series by name, and refusing one with NaN or infinite samples
+// (docs/how-to/check-time-series.md, "Channels").
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <numeric>
+
+#include "catena/core/error.hpp"
+#include "catena/io/timeseries_reader.hpp"
+
+namespace catena {
+namespace {
+
+std::string lower(const std::string& s) {
+  std::string out = s;
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Levenshtein distance ignoring case: a MoorDyn file may spell a channel FAIRTEN1, FairTen1 or
+// Fair1Ten, and a user may type any of them.
+std::size_t distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  std::iota(row.begin(), row.end(), std::size_t{0});
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+      diagonal = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
+    }
+  }
+  return row[b.size()];
+}
+
+// The names closest to `name` (at most five), for the message of a missing channel.
+std::string close_names(const std::vector<std::string>& names, const std::string& name) {
+  const std::string key = lower(name);
+  std::vector<std::pair<std::size_t, std::size_t>> ranked;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string candidate = lower(names[i]);
+    // A name containing the query (or contained in it) ranks first.
+    const bool contains = !key.empty() && (candidate.find(key) != std::string::npos ||
+                                           key.find(candidate) != std::string::npos);
+    ranked.push_back({contains ? 0 : 1 + distance(key, candidate), i});
+  }
+  std::stable_sort(ranked.begin(), ranked.end());
+  std::string text;
+  for (std::size_t k = 0; k < std::min<std::size_t>(5, ranked.size()); ++k)
+    text += (k ? ", " : "") + names[ranked[k].second];
+  return text;
+}
+
+}  // namespace
+
+std::size_t TimeSeries::channel_index(const std::string& name) const {
+  const auto exact = std::find(names.begin(), names.end(), name);
+  if (exact != names.end()) return static_cast<std::size_t>(exact - names.begin());
+  std::vector<std::size_t> matches;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (lower(names[i]) == lower(name)) matches.push_back(i);
+  if (matches.size() == 1) return matches.front();
+  if (matches.size() > 1) {
+    throw InvalidInput(
+        fmt::format("{}: channel '{}' matches {} columns ignoring case ({}, ...): "
+                    "give its exact spelling",
+                    source, name, matches.size(), names[matches[0]]));
+  }
+  throw InvalidInput(fmt::format("{}: no channel '{}' ({} channels; closest: {})", source, name,
+                                 names.size(), close_names(names, name)));
+}
+
+const Vector& TimeSeries::channel(const std::string& name) const {
+  const std::size_t index = channel_index(name);
+  const Vector& samples = columns.at(index);
+  for (Index k = 0; k < samples.size(); ++k) {
+    if (!std::isfinite(samples[k])) {
+      const auto row = static_cast<std::size_t>(k);
+      throw InvalidInput(fmt::format(
+          "{} line {} (time {} s), channel '{}': the sample is {}: the run went unstable or "
+          "the output is corrupt",
+          source, row < line_numbers.size() ? line_numbers[row] : 0, time_s[k], names[index],
+          samples[k]));
+    }
+  }
+  return samples;
+}
+
+}  // namespace catena
