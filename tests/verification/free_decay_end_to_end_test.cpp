@@ -143,6 +143,13 @@ fs::path write_decay(const Scenario& s, int elements, const std::string& name, d
   return file;
 }
 
+// The fe mode nearest in damped frequency.
+const Mode& nearest(const std::vector<Mode>& modes, double frequency_hz) {
+  return *std::min_element(modes.begin(), modes.end(), [&](const Mode& a, const Mode& b) {
+    return std::abs(a.frequency_hz - frequency_hz) < std::abs(b.frequency_hz - frequency_hz);
+  });
+}
+
 TEST(FreeDecayEndToEnd, FeRootsOnTheMeshAreTheDenseEigenvaluesOfTheSameMatrices) {
   // The precondition of the same-mesh comparison: fe without Richardson returns this mesh's roots.
   const Scenario s = scenario();
@@ -209,6 +216,41 @@ TEST(FreeDecayEndToEnd, TheRecordReadsBackAsAMoorDynFileWithItsChannelsAndUnits)
   // plus what the held offset's displacement of its lower node stretches it by.
   const Vector& tension = series.channel("FAIRTEN1");
   EXPECT_GT(tension.maxCoeff() - tension.minCoeff(), 1.0);  // it rings [N]
+}
+
+TEST(FreeDecayEndToEnd, SameMeshDecayMatchesFesDampedRootsWithinTheIdentificationUncertainty) {
+  const Scenario s = scenario();
+  const TimeSeries series = read_time_series(write_decay(s, kElements, "decay-30.out", 0.0));
+  // From the first sample after the release: at t = 0 the fairlead has just moved back.
+  const Eigen::Index n = series.time_s.size() - 1;
+  // The identification as `catena check` runs it (its default band, up to 0.8 Nyquist), against
+  // fe's lowest 14 roots: the modes found below half a spacing above fe's highest are compared.
+  const Identification id =
+      identify_modes(series.time_s.tail(n), {Vector(series.channel("FAIRTEN1").tail(n))});
+  const std::vector<Mode> fe = fe_same_mesh(s, kElements, 14);
+  ASSERT_GE(fe.size(), 6u);
+  const double top = 1.5 * fe.back().frequency_hz - 0.5 * fe[fe.size() - 2].frequency_hz;
+  int compared = 0;
+  std::vector<int> matched;
+  for (const IdentifiedMode& mode : id.modes) {
+    if (!mode.identifiable || mode.frequency_hz > top) continue;
+    const Mode& reference = nearest(fe, mode.frequency_hz);
+    EXPECT_EQ(std::count(matched.begin(), matched.end(), reference.index), 0)
+        << "two identified modes near fe's mode " << reference.index;
+    matched.push_back(reference.index);
+    const double df = mode.frequency_hz - reference.frequency_hz;
+    const double dz = mode.damping_ratio - reference.damping_ratio;
+    std::printf(
+        "  mode %d: f %.9f Hz, fe %.9f, rel. error %.1e, U %.1e; zeta %.6f, fe %.6f, error %.1e, "
+        "U %.1e\n",
+        reference.index, mode.frequency_hz, reference.frequency_hz, df / reference.frequency_hz,
+        mode.frequency_uncertainty_hz / reference.frequency_hz, mode.damping_ratio,
+        reference.damping_ratio, dz, mode.damping_ratio_uncertainty);
+    EXPECT_LE(std::abs(df), mode.frequency_uncertainty_hz) << "mode " << reference.index;
+    EXPECT_LE(std::abs(dz), mode.damping_ratio_uncertainty) << "mode " << reference.index;
+    ++compared;
+  }
+  EXPECT_GE(compared, 3) << "modes identified: " << id.modes.size();
 }
 
 }  // namespace
