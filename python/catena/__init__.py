@@ -31,7 +31,7 @@ from ._catena import (Cable, CertifiedReference, Check, ConvergenceStudy, dimens
                       ForcedResponse, Groups, InvalidInput, Line, LineSegment, Mode, ModeComparison,
                       Modes, ModeShapes, MotionRequest, ParseError, PointAttachment, Problem, Request,
                       ResolutionComparison, Result, run_solver, Scene, Seabed, solve_statics, SolverResult,
-                      Statics, Summary, TensionCheck, __version__)
+                      Statics, Summary, TensionCheck, TimeSeriesCheck, TimeSeriesMode, __version__)
 from . import _catena
 from ._check_results import ORIGIN as _RESULTS_ORIGIN, _NotAValue, results_json_text
 from ._scene_dict import scene_toml_text
@@ -42,7 +42,8 @@ __all__ = [
     "Environment", "ExternalCheck", "ForcedRequest", "ForcedResponse", "Groups", "InvalidInput", "Knob",
     "Line", "LineSegment", "Mode", "ModeComparison", "Modes", "ModeShapes", "MotionRequest", "ParseError",
     "PointAttachment", "Problem", "Seabed", "Request", "ResolutionComparison", "Result", "Scene",
-    "SolverInfo", "SolverResult", "Statics", "Summary", "TensionCheck", "check", "check_tension",
+    "SolverInfo", "SolverResult", "Statics", "Summary", "TensionCheck", "TimeSeriesCheck", "TimeSeriesMode",
+    "check", "check_tension", "check_timeseries",
     "dimensionless_groups", "load_scene", "load_scenes", "run_solver", "solve", "solve_airy",
     "solve_asymptotic", "solve_fe", "solve_frobenius", "solve_shooting", "solve_statics", "solve_sweep",
     "solvers", "__version__",
@@ -171,6 +172,60 @@ def check_tension(results: Union[str, os.PathLike[str], Mapping[str, Any]], scen
     if not isinstance(results, Mapping):
         raise InvalidInput("results: a CSV path or a dict of columns")
     return _catena._check_tension_columns(dict(results), scene, rtol)
+
+
+_TIME_KEYS = ("time", "time_s")
+
+
+def check_timeseries(series: Union[str, os.PathLike[str], Sequence[Union[str, os.PathLike[str]]], Mapping[str, Any]],
+                     scene: SceneSource, channels: Union[str, Sequence[str], None] = None, *,
+                     time_s: Any = None, window: Optional[tuple[Optional[float], Optional[float]]] = None,
+                     plane: Optional[str] = None, resolutions: Optional[Sequence[float]] = None,
+                     min_frequency_hz: float = 0.0, max_frequency_hz: float = 0.0) -> TimeSeriesCheck:
+    """Checks a free decay computed by another code against Catena's damped modes of `scene`, as
+    `catena check FILE --channel NAME` does (docs/how-to/check-time-series.md). The modes in the
+    channels are identified (matrix pencil + least squares, each with an uncertainty from the data)
+    and matched to Catena's; each gets a verdict: "agrees", "disagrees", "not identifiable" or
+    "unmatched". Returns a TimeSeriesCheck: `.modes` (TimeSeriesMode: identified f and zeta with
+    their uncertainties, Catena's, the errors, the verdict, `.study` with several runs),
+    `.not_present`, `.notes`, `.failed`, `.error`, `.to_json()`.
+
+    series: a MoorDyn output file or a CSV with a time column (told by content); a list of them (runs
+        at different resolutions, e.g. MoorDyn NumSegs, with `resolutions` or MoorDyn line files);
+        or a dict {channel name: samples} with the times in `time_s` or in a "time" / "time_s" key.
+    scene: a path, a dict with the TOML's structure, or a Scene (as catena.solve).
+    channels: the channel name(s) to identify; default for a dict: every channel.
+    window: (t0, t1) [s], the free decay after the release; None (or a None side): the record's
+        start or end. It must span two periods of Catena's lowest mode.
+    plane: "in-plane" or "out-of-plane" for every channel, when the names do not tell.
+
+    Bad input raises InvalidInput (a ValueError) with the CLI's message; the work releases the GIL.
+    """
+    scene = load_scene(scene)
+    start, end = (None, None) if window is None else window
+    if isinstance(channels, str):
+        channels = [channels]
+    if isinstance(series, Mapping):
+        columns = dict(series)
+        keys = [k for k in columns if str(k).lower() in _TIME_KEYS]
+        if time_s is None and not keys:
+            raise InvalidInput("time_s: give the sample times [s] (time_s=..., or a 'time' key in the dict)")
+        if time_s is not None and keys:
+            raise InvalidInput(f"time_s: given twice (time_s=... and the key '{keys[0]}')")
+        if keys:
+            time_s = columns.pop(keys[0])
+        names = [str(k) for k in columns]
+        return _catena._check_timeseries_samples(
+            time_s, names, [columns[k] for k in columns], scene, list(channels if channels is not None else names),
+            start, end, plane or "", min_frequency_hz, max_frequency_hz)
+    if time_s is not None:
+        raise InvalidInput("time_s: the times of a file are in the file; time_s goes with a dict of samples")
+    files = [series] if isinstance(series, (str, os.PathLike)) else list(series)
+    if channels is None:
+        raise InvalidInput("channels: which channel(s) of the file to identify (e.g. 'FAIRTEN1')")
+    return _catena._check_timeseries_files([_existing_path(f, "time series") for f in files], scene,
+                                           list(channels), start, end, plane or "",
+                                           list(resolutions or []), min_frequency_hz, max_frequency_hz)
 
 
 @dataclass(frozen=True)

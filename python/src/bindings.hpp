@@ -30,6 +30,7 @@ void bind_solvers(py::module_& module);
 void bind_scene(py::module_& module);
 void bind_external_check(py::module_& module);
 void bind_tension_check(py::module_& module);
+void bind_timeseries_check(py::module_& module);
 void bind_synthetic_output(py::module_& module);
 
 /// Marks `array` read-only: result arrays are copies, and writing into one would change nothing.

@@ -46,5 +46,6 @@ PYBIND11_MODULE(_catena, module) {
   bind_scene(module);
   bind_external_check(module);
   bind_tension_check(module);
+  bind_timeseries_check(module);
   bind_synthetic_output(module);
 }

@@ -15,14 +15,18 @@
 #include "catena/io/file_access.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/io/tension_check_json.hpp"
+#include "catena/io/timeseries_reader.hpp"
 #include "catena/verification/scene_check.hpp"
 #include "catena/verification/scene_tension_check.hpp"
+#include "cli/check_timeseries.hpp"
 #include "cli/commands.hpp"
 
 namespace catena::cli {
 namespace {
 
 struct CheckArguments {
+  // Every positional file; a modal or tension results file is the only one (`results`).
+  std::vector<std::string> files;
   std::string results;
   std::string shapes;
   std::string scene;
@@ -30,6 +34,8 @@ struct CheckArguments {
   std::string out;
   double rtol = 1e-3;
   bool quiet = false;
+  // The time-series check's own options (cli/check_timeseries.hpp).
+  TimeSeriesArguments series;
 };
 
 Scene read_one_scene(const std::string& path) {
@@ -170,7 +176,48 @@ void check_outputs_spare_inputs(const CheckArguments& arguments) {
     check_not_an_input(std::filesystem::path(arguments.out) / name, inputs, "--out");
 }
 
-int run_check(const CheckArguments& arguments) {
+// The time-series check takes several files and its own options; the results checks one file and
+// none of those options: each refuses the other's, naming the option.
+int run_time_series_branch(const CheckArguments& arguments) {
+  if (!arguments.shapes.empty() || !arguments.out.empty()) {
+    throw InvalidInput(fmt::format("{} is a time series: --shapes and --out are for modal results",
+                                   arguments.files.front()));
+  }
+  TimeSeriesArguments series = arguments.series;
+  series.files = arguments.files;
+  series.scene = arguments.scene;
+  series.json = arguments.json;
+  series.quiet = arguments.quiet;
+  return run_timeseries_check(series);
+}
+
+void refuse_time_series_options(const CheckArguments& arguments) {
+  const TimeSeriesArguments& s = arguments.series;
+  const char* given = !s.channels.empty()      ? "--channel"
+                      : !s.window.empty()      ? "--window"
+                      : !s.plane.empty()       ? "--plane"
+                      : !s.resolutions.empty() ? "--resolution"
+                      : s.min_frequency_hz != 0.0 || s.max_frequency_hz != 0.0
+                          ? "--min/max-frequency"
+                          : nullptr;
+  if (given) {
+    throw InvalidInput(fmt::format(
+        "{} is for a time series (a MoorDyn output file or a CSV with a time column); {} is a "
+        "results file",
+        given, arguments.files.front()));
+  }
+  if (arguments.files.size() != 1) {
+    throw InvalidInput(fmt::format(
+        "{} files given: a results file is checked alone (several files are runs of a time "
+        "series; {} is not one)",
+        arguments.files.size(), arguments.files.front()));
+  }
+}
+
+int run_check(CheckArguments arguments) {
+  if (looks_like_time_series(arguments.files.front())) return run_time_series_branch(arguments);
+  refuse_time_series_options(arguments);
+  arguments.results = arguments.files.front();
   check_outputs_spare_inputs(arguments);
   if (is_tension_results_file(arguments.results)) return run_tension_check(arguments);
   const ExternalCheckOptions options = check_options(arguments);
@@ -198,6 +245,41 @@ int run_check(const CheckArguments& arguments) {
   return check.any_failure() ? 1 : 0;
 }
 
+// The options of the time-series check (docs/how-to/check-time-series.md).
+void add_time_series_options(CLI::App& command, TimeSeriesArguments& series) {
+  command
+      .add_option(
+          "--channel", series.channels,
+          "Time series: a channel to identify, by its name in the file (repeat for several; the\n"
+          "channels of one plane are identified together). A fairlead tension (FAIRTEN1, "
+          "Seg<N>Te)\n"
+          "sees the in-plane modes; node positions x, z (L1N5PX, Node5pz) the in-plane modes and "
+          "y\n"
+          "(L1N5PY) the out-of-plane modes, for a line in the x-z plane")
+      ->allow_extra_args(false);
+  command.add_option(
+      "--window", series.window,
+      "Time series: T0:T1 [s], the free decay: from the release (after any transient, e.g. a\n"
+      "ramp or the first second after the release) to the end; either side may be empty\n"
+      "(20: = from 20 s to the end). It must span two periods of Catena's lowest mode.\n"
+      "Default: the whole record");
+  command.add_option("--plane", series.plane,
+                     "Time series: in-plane or out-of-plane, the plane every channel sees,\n"
+                     "overriding the names (needed for CSV columns whose name does not say, or\n"
+                     "a line that does not lie in the x-z plane)");
+  command
+      .add_option("--resolution", series.resolutions,
+                  "Time series, several runs: each run's mesh count (e.g. MoorDyn's NumSegs;\n"
+                  "larger = finer), one per file in order. Default: a line file's own\n"
+                  "segment count (several: --resolution 20,40,80)")
+      ->allow_extra_args(false)
+      ->delimiter(',');
+  command.add_option("--min-frequency", series.min_frequency_hz,
+                     "Time series: identify modes above this frequency [Hz] (0: no bound)");
+  command.add_option("--max-frequency", series.max_frequency_hz,
+                     "Time series: identify modes below this frequency [Hz] (0: 0.8 Nyquist)");
+}
+
 }  // namespace
 
 void add_check_command(CLI::App& app, std::function<int()>& run) {
@@ -217,17 +299,23 @@ void add_check_command(CLI::App& app, std::function<int()>& run) {
       "2 bad input (the message names file, row and column), 3 no reference could be computed.\n"
       "A CSV with a tension_std_n or tension_amplitude_n column is another program's dynamic\n"
       "tension along the line for the scene's [request.motion]: per station the difference to\n"
-      "Catena's, against rtol + both uncertainties (docs/how-to/check-dynamic-tension.md).");
+      "Catena's, against rtol + both uncertainties (docs/how-to/check-dynamic-tension.md).\n"
+      "A time series (a MoorDyn output file, or a CSV with a time column; told by content) is a\n"
+      "free decay: the modes in --channel over --window are identified and compared with\n"
+      "Catena's damped modes (docs/how-to/check-time-series.md); several files are runs at\n"
+      "different resolutions (e.g. NumSegs), with a convergence study per mode.");
   command
       ->add_option(
-          "results", arguments->results,
+          "files", arguments->files,
           "The other program's results: CSV with a header row, columns plane (in-plane,\n"
           "inplane, out-of-plane, outofplane; any case), mode (1-based within its plane),\n"
           "frequency_hz [Hz] or omega_rad_s [rad/s], optional resolution (mesh count, e.g.\n"
           "number of segments: larger = finer); or a .json file with the same fields and\n"
           "optional shapes (docs/how-to/check.md); or a CSV of dynamic tension along the\n"
           "line: s_m (or node with nodes), tension_std_n or tension_amplitude_n, optional\n"
-          "period_s, resolution, tension_uncertainty_n (docs/how-to/check-dynamic-tension.md)")
+          "period_s, resolution, tension_uncertainty_n (docs/how-to/check-dynamic-tension.md);\n"
+          "or time series of a free decay: MoorDyn output files (<deck>.out, Line<k>.out) or\n"
+          "CSV with a time column, one file per run (docs/how-to/check-time-series.md)")
       ->required()
       ->check(non_empty_path());
   command
@@ -255,6 +343,7 @@ void add_check_command(CLI::App& app, std::function<int()>& run) {
           "check is written; nothing is created when the inputs are refused)")
       ->check(non_empty_path());
   command->add_flag("--quiet,-q", arguments->quiet, "Print nothing but errors");
+  add_time_series_options(*command, arguments->series);
   command->callback([arguments, &run] { run = [arguments] { return run_check(*arguments); }; });
 }
 

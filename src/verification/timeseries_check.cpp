@@ -326,7 +326,14 @@ TimeSeriesCheck check_time_series_runs(const Scene& scene,
       per_run.push_back(
           internal::match_modes(ids[r], reference, r == finest ? check.not_present : ignored));
     for (TimeSeriesModeCheck& mode : per_run[finest]) {
-      if (runs.size() > 1 && mode.mode > 0) mode.study = study_mode(per_run, resolutions, mode);
+      if (runs.size() > 1 && mode.mode > 0) {
+        mode.study = study_mode(per_run, resolutions, mode);
+        if (mode.verdict == "disagrees" && mode.study->verdict == "converges to Catena") {
+          mode.note +=
+              "; the runs converge to Catena's value: the finest run's difference is its "
+              "discretisation error (refine further for agreement)";
+        }
+      }
       check.modes.push_back(mode);
     }
     TimeSeriesPlane plane;

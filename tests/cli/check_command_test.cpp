@@ -199,5 +199,119 @@ TEST(CheckCommand, JsonResultsWithShapesArePairedByMac) {
   EXPECT_GT(document.at("modes").at(0).at("resolutions").at(0).at("mac").get<double>(), 0.95);
 }
 
+// ---- Time series (docs/how-to/check-time-series.md): a free decay written here in MoorDyn v2's
+// layout from Catena's own damped modes of the damped mooring line (read back from `catena solve
+// --json`, so no frequency is hard-coded), then checked by the command: exit 0 when it is Catena's
+// decay, 1 with one frequency 1 % off, 2 for each bad input named; the JSON keys of issue 33.
+
+const std::string kDampedScene =
+    std::string(CATENA_SOURCE_DIR) + "/verification/scenes/damped/mooring-line-900m-damped.toml";
+
+// Catena's first three in-plane damped modes (frequency [Hz], damping ratio) from `catena solve`.
+std::vector<std::pair<double, double>> damped_modes() {
+  const fs::path json = fs::temp_directory_path() / kFolder / "damped-solve.json";
+  fs::create_directories(json.parent_path());
+  const CliRun run = run_cli("solve " + kDampedScene + " --json " + json.string());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  // The document outlives the loop (a range-for over a member of a temporary would not).
+  const nlohmann::json document = read_json(json);
+  std::vector<std::pair<double, double>> modes;
+  for (const auto& m :
+       document.at("scenes")[0].at("solvers").at("shooting").at("inplane").at("modes")) {
+    if (modes.size() < 3)
+      modes.emplace_back(m.at("frequency_hz").get<double>(), m.at("damping_ratio").get<double>());
+  }
+  return modes;
+}
+
+// MoorDyn v2's main output (setw(10) time with 4 decimals, setw(20) values), 0.1 s for 300 s:
+// FAIRTEN1 = 1e6 + sum_k 3e4/k e^(-delta t) cos(omega t + k) with mode 2 scaled by `factor`.
+std::string moordyn_decay(double factor) {
+  const auto modes = damped_modes();
+  std::string text = fmt::format("{:>10}{:>20}\n{:>10}{:>20}\n", "Time", "FAIRTEN1", "(s)", "(N)");
+  for (int i = 0; i <= 3000; ++i) {
+    const double t = 0.1 * i;
+    double value = 1e6;
+    for (std::size_t k = 0; k < modes.size(); ++k) {
+      const double omega = 2 * M_PI * modes[k].first * (k == 1 ? factor : 1.0);
+      const double zeta = modes[k].second;
+      const double delta = zeta * omega / std::sqrt(1 - zeta * zeta);
+      value += 3e4 / double(k + 1) * std::exp(-delta * t) * std::cos(omega * t + double(k));
+    }
+    text += fmt::format("{:>10.4f}{:>20.7e}\n", t, value);  // MoorDyn prints 7 decimals
+  }
+  return text;
+}
+
+TEST(CheckCommand, TimeSeriesOfCatenasDecayAgreesAndWritesTheIssuesKeys) {
+  const fs::path decay = write_temp_file(kFolder, "decay.out", moordyn_decay(1.0));
+  const fs::path json = decay.parent_path() / "decay.json";
+  const CliRun run = run_cli("check " + decay.string() + " --scene " + kDampedScene +
+                             " --channel FAIRTEN1 --window 1: --json " + json.string());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("agrees"), std::string::npos) << run.output;
+  const auto document = read_json(json);
+  ASSERT_EQ(document.at("modes").size(), 3u) << document.dump(1);
+  for (const auto& mode : document.at("modes")) {
+    for (const char* key : {"plane", "mode", "identified_frequency_hz", "frequency_uncertainty_hz",
+                            "identified_damping_ratio", "damping_ratio_uncertainty",
+                            "catena_frequency_hz", "catena_damping_ratio", "verdict"})
+      EXPECT_TRUE(mode.contains(key)) << key;
+    EXPECT_EQ(mode.at("verdict").get<std::string>(), "agrees") << mode.dump();
+    EXPECT_EQ(mode.at("plane").get<std::string>(), "in-plane");
+  }
+  EXPECT_EQ(document.at("counts").at("agrees").get<int>(), 3);
+  EXPECT_FALSE(document.at("failed").get<bool>());
+}
+
+TEST(CheckCommand, TimeSeriesOnePercentOffExitsOne) {
+  const fs::path decay = write_temp_file(kFolder, "decay-off.out", moordyn_decay(1.01));
+  const CliRun run =
+      run_cli("check " + decay.string() + " --scene " + kDampedScene + " --channel FAIRTEN1");
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("disagrees"), std::string::npos) << run.output;
+}
+
+TEST(CheckCommand, TimeSeriesBadInputExitsTwoNamingTheProblem) {
+  const std::string good = moordyn_decay(1.0);
+  std::string nan = good;
+  nan.replace(nan.find("\n", nan.find("0.5000")) - 16, 16, fmt::format("{:>16}", "nan"));
+  std::string backwards = good;
+  backwards.replace(backwards.find("    0.5000"), 10, "    0.3000");
+  struct Case {
+    const char* name;
+    std::string text;
+    std::string options;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {"no-rows", "      Time            FAIRTEN1\n       (s)                 (N)\n",
+       "--channel FAIRTEN1", "no data rows"},
+      {"backwards", backwards, "--channel FAIRTEN1", "line 8: time 0.3 s is not after"},
+      {"missing", good, "--channel FAIRTEN2", "no channel 'FAIRTEN2'"},
+      {"no-channel", good, "", "--channel: which channel"},
+      {"nan", nan, "--channel FAIRTEN1", "line 8 (time 0.5 s), channel 'FAIRTEN1'"},
+      {"short", good, "--channel FAIRTEN1 --window 10:20", "shorter than two periods"},
+      {"window", good, "--channel FAIRTEN1 --window 10:x", "--window 10:x"},
+      {"plane", good, "--channel FAIRTEN1 --plane sideways", "--plane sideways"}};
+  for (const auto& c : cases) {
+    const fs::path file = write_temp_file(kFolder, std::string(c.name) + ".out", c.text);
+    const fs::path json = file.parent_path() / (std::string(c.name) + ".json");
+    fs::remove(json);
+    const CliRun run = run_cli("check " + file.string() + " --scene " + kDampedScene + " " +
+                               c.options + " --json " + json.string());
+    EXPECT_EQ(run.exit_code, 2) << c.name << "\n" << run.output;
+    EXPECT_NE(run.output.find(c.expected), std::string::npos) << c.name << "\n" << run.output;
+    EXPECT_FALSE(fs::exists(json)) << c.name;
+  }
+  // A results file refuses the time-series options, and the other way round.
+  const fs::path results =
+      write_temp_file(kFolder, "r.csv", "plane,mode,frequency_hz\nin-plane,1,0.06\n");
+  const CliRun mixed =
+      run_cli("check " + results.string() + " --scene " + kDampedScene + " --channel FAIRTEN1");
+  EXPECT_EQ(mixed.exit_code, 2) << mixed.output;
+  EXPECT_NE(mixed.output.find("--channel is for a time series"), std::string::npos) << mixed.output;
+}
+
 }  // namespace
 }  // namespace catena::testing

@@ -15,50 +15,21 @@
 /// CSV: comma-separated, a header row with a time column named `time`, any case, optionally with a
 /// unit (`time_s`, `Time [s]`, `time (s)`); the time unit must be seconds. Other columns are the
 /// channels.
+///
+/// The samples are a TimeSeries (include/catena/verification/time_series.hpp, next to the check
+/// that uses them: the verification layer comes before io).
 
 #include <cstdint>
 #include <filesystem>
-#include <optional>
 #include <string>
-#include <vector>
 
-#include "catena/core/types.hpp"
+#include "catena/verification/time_series.hpp"
 
 namespace catena {
 
 /// Largest time-series file read [bytes]: 512 MiB. A 10-minute MoorDyn line file of 100 nodes at
 /// 20 Hz is about 75 MB; the limit stops a device or a mistaken path, not a real record.
 inline constexpr std::uintmax_t kMaxTimeSeriesFileBytes = std::uintmax_t{1} << 29;
-
-/// The samples of a time-series file.
-struct TimeSeries {
-  /// The file, for messages ("decay.out").
-  std::string source;
-  /// "moordyn" or "csv".
-  std::string format;
-  /// Channel names as in the file, the time column excluded.
-  std::vector<std::string> names;
-  /// One per name: MoorDyn's units row without the parentheses ("N", "m"); "" when the file has
-  /// no units row, or for a CSV column without a unit in its name.
-  std::vector<std::string> units;
-  /// Sample times [s], strictly increasing.
-  Vector time_s;
-  /// One per name, as long as time_s. May hold NaN or inf as read (MoorDyn prints `nan` when a
-  /// run goes unstable): channel() refuses a channel that does, naming row and channel.
-  std::vector<Vector> columns;
-  /// The file's line number (1-based) of each sample, for messages.
-  std::vector<int> line_numbers;
-  /// A MoorDyn line file (`Line<k>.out`): its number of segments N, from its node or segment
-  /// columns (`Node0..NodeN`, `Seg1..SegN`); the resolution of a run. Absent otherwise.
-  std::optional<int> num_segments;
-
-  /// Index of the channel `name`: the exact name, else the only one equal ignoring case. Throws
-  /// InvalidInput naming the file and listing the closest names when there is none (or several).
-  std::size_t channel_index(const std::string& name) const;
-  /// The samples of channel `name` (channel_index()). Throws InvalidInput naming the file, line,
-  /// time and channel of the first NaN or infinite sample.
-  const Vector& channel(const std::string& name) const;
-};
 
 /// Reads `file` (MoorDyn or CSV by content). Throws ParseError when the file cannot be read (or is
 /// larger than kMaxTimeSeriesFileBytes) and InvalidInput naming the file and line for: no header,

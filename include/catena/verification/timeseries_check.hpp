@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "catena/core/types.hpp"
-#include "catena/io/timeseries_reader.hpp"
+#include "catena/verification/time_series.hpp"
 #include "catena/verification/external_check.hpp"
 #include "catena/verification/scene.hpp"
 

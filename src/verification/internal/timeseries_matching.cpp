@@ -20,6 +20,19 @@ std::size_t nearest(const std::vector<Mode>& modes, double frequency_hz) {
   return best;
 }
 
+// A mode whose damping ratio is not resolved from zero (its uncertainty exceeds it) still has a
+// frequency to compare, and a damping ratio to compare with Catena's within that uncertainty: an
+// undamped line's decay is exactly that (issue 33: "the identified zeta is compared to 0 within its
+// uncertainty"). Any other reason (no convergence, a singular fit, a frequency not resolved, a
+// mode below the noise) leaves it not identifiable.
+bool damping_unresolved_only(const IdentifiedMode& id) {
+  return !id.identifiable &&
+         id.note.find("damping-ratio uncertainty exceeds") != std::string::npos &&
+         id.frequency_uncertainty_hz > 0.0 && id.frequency_uncertainty_hz < id.frequency_hz;
+}
+
+bool comparable(const IdentifiedMode& id) { return id.identifiable || damping_unresolved_only(id); }
+
 void compare(const IdentifiedMode& id, const Mode& catena, TimeSeriesModeCheck& check) {
   check.mode = catena.index;
   check.catena_frequency_hz = catena.frequency_hz;
@@ -28,7 +41,7 @@ void compare(const IdentifiedMode& id, const Mode& catena, TimeSeriesModeCheck& 
   check.catena_damping_ratio_error = damping_ratio_error(catena);
   check.frequency_error_hz = id.frequency_hz - catena.frequency_hz;
   check.damping_ratio_error = id.damping_ratio - catena.damping_ratio;
-  if (!id.identifiable) {
+  if (!comparable(id)) {
     check.verdict = "not identifiable";
     check.note = id.note;
     return;
@@ -75,14 +88,14 @@ std::vector<TimeSeriesModeCheck> match_modes(const Identification& identificatio
            std::max(found[i].frequency_uncertainty_hz, 1e-300);
   };
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    if (found[a].identifiable != found[b].identifiable) return found[a].identifiable;
+    if (comparable(found[a]) != comparable(found[b])) return comparable(found[a]);
     return misfit(a) < misfit(b);
   });
   std::vector<int> taken_by(reference.modes.size(), -1);
   for (const std::size_t i : order) {
     const std::size_t k = nearest(reference.modes, found[i].frequency_hz);
     if (taken_by[k] >= 0) {
-      checks[i].verdict = found[i].identifiable ? "unmatched" : "not identifiable";
+      checks[i].verdict = comparable(found[i]) ? "unmatched" : "not identifiable";
       checks[i].note = fmt::format(
           "Catena's nearest mode, {} {} at {:.6g} Hz, is matched to the identified mode at {:.6g} "
           "Hz: the record shows a mode Catena's linear model does not have (a harmonic of a "
@@ -95,9 +108,11 @@ std::vector<TimeSeriesModeCheck> match_modes(const Identification& identificatio
     taken_by[k] = static_cast<int>(i);
     compare(found[i], reference.modes[k], checks[i]);
   }
+  // Not present: Catena's modes below the highest one a comparable mode matched.
   int highest = -1;
   for (std::size_t k = 0; k < taken_by.size(); ++k)
-    if (taken_by[k] >= 0) highest = static_cast<int>(k);
+    if (taken_by[k] >= 0 && comparable(found[static_cast<std::size_t>(taken_by[k])]))
+      highest = static_cast<int>(k);
   for (int k = 0; k < highest; ++k) {
     if (taken_by[static_cast<std::size_t>(k)] >= 0) continue;
     const Mode& m = reference.modes[static_cast<std::size_t>(k)];

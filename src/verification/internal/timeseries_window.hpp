@@ -5,7 +5,7 @@
 
 #include <optional>
 
-#include "catena/io/timeseries_reader.hpp"
+#include "catena/verification/time_series.hpp"
 
 namespace catena::internal {
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Finding a channel of a time series by name, and refusing one with NaN or infinite samples
-// (docs/how-to/check-time-series.md, "Channels").
+// A time series: finding a channel by name, refusing one with NaN or infinite samples, and building
+// one from samples in memory (docs/how-to/check-time-series.md, "Channels and planes").
+#include "catena/verification/time_series.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,7 +11,6 @@
 #include <numeric>
 
 #include "catena/core/error.hpp"
-#include "catena/io/timeseries_reader.hpp"
 
 namespace catena {
 namespace {
@@ -80,14 +81,52 @@ const Vector& TimeSeries::channel(const std::string& name) const {
   for (Index k = 0; k < samples.size(); ++k) {
     if (!std::isfinite(samples[k])) {
       const auto row = static_cast<std::size_t>(k);
+      // Samples from memory have no file lines: their index (1-based) instead.
+      const std::string where = row < line_numbers.size()
+                                    ? fmt::format("line {}", line_numbers[row])
+                                    : fmt::format("sample {}", row + 1);
       throw InvalidInput(fmt::format(
-          "{} line {} (time {} s), channel '{}': the sample is {}: the run went unstable or "
-          "the output is corrupt",
-          source, row < line_numbers.size() ? line_numbers[row] : 0, time_s[k], names[index],
-          samples[k]));
+          "{} {} (time {} s), channel '{}': the sample is {}: the run went unstable or the output "
+          "is corrupt",
+          source, where, time_s[k], names[index], samples[k]));
     }
   }
   return samples;
+}
+
+TimeSeries time_series_from_samples(const Vector& time_s,
+                                    const std::vector<std::string>& names,
+                                    const std::vector<Vector>& columns,
+                                    const std::string& source) {
+  if (time_s.size() == 0) throw InvalidInput(source + ": no samples (time_s is empty)");
+  if (names.size() != columns.size() || names.empty())
+    throw InvalidInput(
+        fmt::format("{}: {} names for {} channels", source, names.size(), columns.size()));
+  for (std::size_t j = 0; j < names.size(); ++j) {
+    if (names[j].empty()) throw InvalidInput(source + ": a channel with an empty name");
+    if (std::count(names.begin(), names.end(), names[j]) > 1)
+      throw InvalidInput(fmt::format("{}: channel '{}' given twice", source, names[j]));
+    if (columns[j].size() != time_s.size()) {
+      throw InvalidInput(fmt::format("{}: channel '{}' has {} samples, time_s {}", source, names[j],
+                                     columns[j].size(), time_s.size()));
+    }
+  }
+  for (Index k = 0; k < time_s.size(); ++k) {
+    if (!std::isfinite(time_s[k]) || (k > 0 && !(time_s[k] > time_s[k - 1]))) {
+      throw InvalidInput(fmt::format(
+          "{}: time_s[{}] = {} s is not finite or not after time_s[{}]: the time must increase "
+          "strictly",
+          source, k, time_s[k], k > 0 ? k - 1 : 0));
+    }
+  }
+  TimeSeries series;
+  series.source = source;
+  series.format = "csv";
+  series.names = names;
+  series.units.assign(names.size(), "");
+  series.time_s = time_s;
+  series.columns = columns;
+  return series;
 }
 
 }  // namespace catena
