@@ -199,8 +199,8 @@ Identification identify_modes(const Vector& time_s,
   const internal::DecimatedRecord record =
       internal::decimate_to_band(scaled, dt, options.max_frequency_hz);
   out.decimation_factor = record.factor;
-  const internal::PencilPoles pencil =
-      internal::matrix_pencil(record.channels, record.sample_interval_s, options.max_model_order);
+  const internal::PencilPoles pencil = internal::matrix_pencil(
+      record.channels, record.sample_interval_s, options.max_model_order, record.white_fraction);
   out.singular_values = pencil.singular_values;
   out.model_order = pencil.order;
   std::vector<std::complex<double>> initial;

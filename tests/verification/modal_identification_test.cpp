@@ -142,5 +142,106 @@ TEST(ModalIdentification, CloseModes) {
   check_decay({{{0.30, 0.005, 1.0, 0.0}, {0.32, 0.005, 0.7, 1.0}}, 4.0, 100.0, 1e3}, 6);
 }
 
+TEST(ModalIdentification, ChannelsInDifferentUnitsShareThePoles) {
+  // A tension in N (large offset and amplitude) and a position in m, each with its own noise:
+  // the modes are the same, and the pair identifies them at least as well as the tension alone.
+  const Decay tension{{{0.15, 0.008, 2e4, 0.2}, {0.42, 0.02, 8e3, 1.0}}, 10.0, 120.0, 300.0};
+  const Decay position{{{0.15, 0.008, 0.8, 2.0}, {0.42, 0.02, 0.1, 0.5}}, 10.0, 120.0, 30.0};
+  const Vector t = sample_times(tension);
+  double alone = 0.0, both = 0.0, error2 = 0.0;
+  const int seeds = 6;
+  for (int seed = 0; seed < seeds; ++seed) {
+    const Vector x = channel(t, tension, 2.5e6, 100u + static_cast<unsigned>(seed));
+    const Vector y = channel(t, position, -3.0, 200u + static_cast<unsigned>(seed));
+    const Identification single = identify_modes(t, {x});
+    const Identification pair = identify_modes(t, {x, y});
+    ASSERT_EQ(pair.modes.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+      const TrueMode& truth = tension.modes[k];
+      const IdentifiedMode& m = pair.modes[k];
+      SCOPED_TRACE(::testing::Message() << "mode " << truth.frequency_hz << " Hz, seed " << seed);
+      EXPECT_TRUE(m.identifiable) << m.note;
+      EXPECT_LE(std::abs(m.frequency_hz - truth.frequency_hz), m.frequency_uncertainty_hz);
+      EXPECT_LE(std::abs(m.damping_ratio - truth.damping_ratio), m.damping_ratio_uncertainty);
+      // The amplitude is the largest over the channels, in its channel's units: the tension's.
+      EXPECT_NEAR(m.amplitude, truth.amplitude, 0.05 * truth.amplitude);
+    }
+    const IdentifiedMode* first = nearest(single, 0.15);
+    ASSERT_NE(first, nullptr);
+    alone += first->frequency_uncertainty_hz / seeds;
+    both += pair.modes[0].frequency_uncertainty_hz / seeds;
+    error2 += std::pow(pair.modes[0].frequency_hz - 0.15, 2) / seeds;
+  }
+  EXPECT_LT(both, alone);  // the position channel adds information
+  EXPECT_LE(both, 10.0 * std::sqrt(error2));
+}
+
+TEST(ModalIdentification, BandOfInterestDecimatesWithoutBias) {
+  // 50 Hz sampling, modes below 1 Hz and one at 8 Hz outside the band: decimated by 12, the
+  // in-band modes are within their uncertainty and the 8 Hz mode is not reported.
+  const Decay d{
+      {{0.25, 0.01, 1.0, 0.0}, {0.6, 0.02, 0.5, 1.0}, {8.0, 0.01, 0.5, 2.0}}, 50.0, 80.0, 1e3};
+  const Vector t = sample_times(d);
+  IdentificationOptions options;
+  options.max_frequency_hz = 1.0;
+  double error2 = 0.0, bound = 0.0;
+  const int seeds = 6;
+  for (int seed = 0; seed < seeds; ++seed) {
+    const Identification id =
+        identify_modes(t, {channel(t, d, 0.0, 300u + static_cast<unsigned>(seed))}, options);
+    EXPECT_GT(id.decimation_factor, 1);
+    ASSERT_EQ(id.modes.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+      const TrueMode& truth = d.modes[k];
+      const IdentifiedMode& m = id.modes[k];
+      SCOPED_TRACE(::testing::Message() << "mode " << truth.frequency_hz << " Hz, seed " << seed);
+      EXPECT_LE(std::abs(m.frequency_hz - truth.frequency_hz), m.frequency_uncertainty_hz);
+      EXPECT_LE(std::abs(m.damping_ratio - truth.damping_ratio), m.damping_ratio_uncertainty);
+      EXPECT_NEAR(m.amplitude, truth.amplitude, 0.05 * truth.amplitude);
+    }
+    error2 += std::pow(id.modes[0].frequency_hz - 0.25, 2) / seeds;
+    bound += id.modes[0].frequency_uncertainty_hz / seeds;
+  }
+  EXPECT_LE(bound, 10.0 * std::sqrt(error2));
+}
+
+TEST(ModalIdentification, NoiseAloneYieldsNoIdentifiableMode) {
+  const Decay d{{{0.2, 0.01, 0.0, 0.0}}, 10.0, 100.0, 0.0};
+  const Vector t = sample_times(d);
+  std::mt19937_64 engine(5);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  Vector x(t.size());
+  for (Index i = 0; i < x.size(); ++i) x[i] = noise(engine);
+  const Identification id = identify_modes(t, {x});
+  for (const IdentifiedMode& m : id.modes) EXPECT_FALSE(m.identifiable) << m.frequency_hz;
+}
+
+TEST(ModalIdentification, BadInputNamesTheProblem) {
+  const Decay d{{{0.2, 0.01, 1.0, 0.0}}, 10.0, 20.0, 0.0};
+  const Vector t = sample_times(d);
+  const Vector x = channel(t, d, 0.0, 1u);
+  Vector jittered = t;
+  jittered[17] += 0.3 / d.rate_hz;
+  testing::expect_invalid([&] { identify_modes(jittered, {x}); }, "time_s[17]");
+  Vector backwards = t;
+  backwards[40] = backwards[39];
+  testing::expect_invalid([&] { identify_modes(backwards, {x}); }, "time_s[40]");
+  testing::expect_invalid([&] { identify_modes(t, {x, x.head(50)}); }, "channels[1]");
+  testing::expect_invalid([&] { identify_modes(t.head(10), {x.head(10)}); }, "at least 20");
+  testing::expect_invalid([&] { identify_modes(t, {}); }, "channels");
+  Vector with_nan = x;
+  with_nan[33] = std::numeric_limits<double>::quiet_NaN();
+  testing::expect_invalid([&] { identify_modes(t, {x, with_nan}); }, "channels[1][33]");
+  IdentificationOptions options;
+  options.max_frequency_hz = 6.0;  // above the 5 Hz Nyquist frequency
+  testing::expect_invalid([&] { identify_modes(t, {x}, options); }, "max_frequency_hz");
+  options = {};
+  options.confidence_sigmas = 0.0;
+  testing::expect_invalid([&] { identify_modes(t, {x}, options); }, "confidence_sigmas");
+  options = {};
+  options.min_frequency_hz = -1.0;
+  testing::expect_invalid([&] { identify_modes(t, {x}, options); }, "min_frequency_hz");
+}
+
 }  // namespace
 }  // namespace catena

@@ -63,6 +63,7 @@ DecimatedRecord decimate_to_band(const std::vector<Vector>& channels,
   out.sample_interval_s = factor * sample_interval_s;
   out.start_offset_s = static_cast<double>((length - 1) / 2) * sample_interval_s;
   out.noise_gain = factor * taps.squaredNorm();
+  out.white_fraction = pass / new_nyquist;
   out.taps = std::move(taps);
   return out;
 }

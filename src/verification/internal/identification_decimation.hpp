@@ -21,6 +21,9 @@ struct DecimatedRecord {
   /// factor * sum(taps^2): the decimated noise variance is noise_gain / factor times the input's
   /// white-noise variance; 1 for an ideal low-pass at the new Nyquist frequency.
   double noise_gain = 1.0;
+  /// The share of the decimated band, from 0, where white input noise stays white: 1 without a
+  /// filter, the pass band over the new Nyquist frequency with one.
+  double white_fraction = 1.0;
 };
 
 /// Decimates to the lowest rate that keeps 4 samples per period of `band_hz` (no decimation when

@@ -13,29 +13,37 @@ namespace catena::internal {
 
 namespace {
 
-constexpr double kPencilFlopBudget = 2e9;  // QR of the stacked Hankel matrix, ~1 s on this machine
-
-int pencil_parameter(Index samples, Index channels) {
-  const double budget_columns =
-      std::sqrt(kPencilFlopBudget / (2.0 * static_cast<double>(channels * samples)));
-  return static_cast<int>(
-      std::max<Index>(2, std::min<Index>(samples / 3, static_cast<Index>(budget_columns) - 1)));
-}
+// The pencil gives the order and the starting poles; the least-squares refinement, which uses
+// every sample, reaches the final accuracy. So the pencil's cost is capped: L <= 250 columns
+// (12.5 s at 20 Hz; separates poles 1 / (L dt) apart and closer at high SNR), and the rows (the
+// windows the Hankel matrix stacks) are thinned evenly to a QR of at most ~2e8 flops, keeping at
+// least 2 L of them so that the noise floor stays measurable.
+constexpr Index kMaxPencilParameter = 250;
+constexpr double kPencilFlopBudget = 2e8;
 
 }  // namespace
 
-PencilPoles matrix_pencil(const std::vector<Vector>& channels, double dt, int max_order) {
+PencilPoles matrix_pencil(const std::vector<Vector>& channels,
+                          double dt,
+                          int max_order,
+                          double white_fraction) {
   PencilPoles out;
   const Index n = channels.front().size();
-  const int l = pencil_parameter(n, static_cast<Index>(channels.size()));
-  out.pencil_parameter = l;
-  const Index rows_per_channel = n - l;
-  const Index rows = rows_per_channel * static_cast<Index>(channels.size());
+  const auto num_channels = static_cast<Index>(channels.size());
+  const Index l = std::max<Index>(2, std::min(n / 3, kMaxPencilParameter));
+  out.pencil_parameter = static_cast<int>(l);
+  const Index windows = n - l;  // rows per channel
+  const auto budget_rows =
+      static_cast<Index>(kPencilFlopBudget / (2.0 * static_cast<double>((l + 1) * (l + 1))));
+  const Index stride =
+      std::max<Index>(1, windows * num_channels / std::max(budget_rows, 2 * (l + 1)));
+  const Index rows_per_channel = (windows + stride - 1) / stride;
+  const Index rows = rows_per_channel * num_channels;
   Eigen::MatrixXd hankel(rows, l + 1);
-  for (std::size_t c = 0; c < channels.size(); ++c) {
+  for (Index c = 0; c < num_channels; ++c) {
     for (Index i = 0; i < rows_per_channel; ++i) {
-      hankel.row(static_cast<Index>(c) * rows_per_channel + i) =
-          channels[c].segment(i, l + 1).transpose();
+      hankel.row(c * rows_per_channel + i) =
+          channels[static_cast<std::size_t>(c)].segment(i * stride, l + 1).transpose();
     }
   }
   // QR first: the SVD then runs on the small triangular factor, with the same singular values and
@@ -45,8 +53,8 @@ PencilPoles matrix_pencil(const std::vector<Vector>& channels, double dt, int ma
   Eigen::BDCSVD<Eigen::MatrixXd> svd(r, Eigen::ComputeThinV);
   const Vector& s = svd.singularValues();
   out.singular_values.assign(s.data(), s.data() + s.size());
-  const int cap = max_order > 0 ? max_order : l;
-  out.order = choose_model_order(out.singular_values, rows, l + 1, cap);
+  const int cap = max_order > 0 ? max_order : static_cast<int>(l);
+  out.order = choose_model_order(out.singular_values, rows, l + 1, cap, white_fraction);
   if (out.order == 0) return out;
   // Hua & Sarkar's pencil on the signal subspace: the poles z are the eigenvalues of
   // V1^+ V2, V1 and V2 the signal right singular vectors without their last and first row.

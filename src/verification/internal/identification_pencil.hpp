@@ -21,8 +21,12 @@ struct PencilPoles {
 
 /// The poles of the channels (each of the same length >= 20, sampled every dt seconds), at most
 /// `max_order` of them (0: no cap). The pencil parameter L is N / 3 (Hua & Sarkar's best for
-/// noise) capped so that the QR factorisation of the stacked Hankel matrix costs at most ~2e9
-/// flops: the least-squares refinement, not the pencil, reaches the final accuracy.
-PencilPoles matrix_pencil(const std::vector<Vector>& channels, double dt, int max_order);
+/// noise) capped at 250, and the rows thinned to bound the cost: the least-squares refinement,
+/// not the pencil, reaches the final accuracy. `white_fraction`: the share of the band, from 0,
+/// where the noise is white (1 unless low-passed; see choose_model_order()).
+PencilPoles matrix_pencil(const std::vector<Vector>& channels,
+                          double dt,
+                          int max_order,
+                          double white_fraction);
 
 }  // namespace catena::internal
