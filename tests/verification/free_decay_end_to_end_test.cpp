@@ -22,6 +22,7 @@
 #include <complex>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "catena/io/scene_reader.hpp"
 #include "catena/io/timeseries_reader.hpp"
@@ -131,7 +132,8 @@ std::vector<std::complex<double>> dense_roots(const test::LumpedModel& model) {
 }
 
 // The decay of an `elements` mesh, written to `name` in MoorDyn's format, with optional noise.
-fs::path write_decay(const Scenario& s, int elements, const std::string& name, double noise) {
+fs::path write_decay(
+    const Scenario& s, int elements, const std::string& name, double noise, double rtol = kRtol) {
   const test::LumpedModel model = test::lumped_model(s.problem, s.statics, elements);
   const Vector x0 = test::released_offset(model, release_offset(model));
   test::DecayRecord record =
@@ -251,6 +253,56 @@ TEST(FreeDecayEndToEnd, SameMeshDecayMatchesFesDampedRootsWithinTheIdentificatio
     ++compared;
   }
   EXPECT_GE(compared, 3) << "modes identified: " << id.modes.size();
+}
+
+// The CLI run: N = 200, whose discretisation error (fe's same-mesh roots against Catena's
+// continuum: 4.5e-5, 7.5e-5, 1.6e-4 relative on in-plane modes 1-3, more above) must be negligible
+// against the identification's uncertainty. Sensor noise of 1 % of each channel's range sets that
+// uncertainty (a noise-free record's 8 digits resolve the lumped model's own frequencies to ~1e-6
+// and show its discretisation error as a disagreement, as a single coarse MoorDyn run would), and
+// the band is modes 1-3 (--max-frequency half-way to mode 4). The integration need only be far
+// below the noise: rtol 1e-6.
+constexpr int kFineElements = 200;
+constexpr double kNoise = 1e-2;
+constexpr double kFineRtol = 1e-6;
+constexpr double kBandHz = 0.59;
+// "Negligible": below a tenth of the uncertainty, so that the verdict is the identification's.
+constexpr double kNegligible = 0.1;
+
+TEST(FreeDecayEndToEnd, CatenaCheckAgreesOnAFineMeshDecayThroughTheCommandLine) {
+  const Scenario s = scenario();
+  const fs::path file = write_decay(s, kFineElements, "decay-200.out", kNoise, kFineRtol);
+  const fs::path scene = temp_dir() / "free-decay-100m.toml";
+  std::ofstream(scene) << kScene;
+  const fs::path json = temp_dir() / "check-200.json";
+  fs::remove(json);
+  const testing::CliRun run = testing::run_cli(
+      "check " + file.string() + " --scene " + scene.string() + " --channel FAIRTEN1 --window " +
+      fmt::format("{}: --max-frequency {}", kSampleInterval, kBandHz) + " --json " + json.string());
+  std::printf("%s", run.output.c_str());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  std::ifstream in(json);
+  ASSERT_TRUE(in.good()) << json;
+  const nlohmann::json document = nlohmann::json::parse(in);
+  const std::vector<Mode> fine = fe_same_mesh(s, kFineElements, 8);
+  int agreeing = 0;
+  for (const auto& mode : document.at("modes")) {
+    if (mode.at("verdict") != "agrees") continue;
+    ++agreeing;
+    const int index = mode.at("mode").get<int>();
+    ASSERT_LE(index, static_cast<int>(fine.size()));
+    const Mode& lumped = fine[static_cast<std::size_t>(index - 1)];
+    // The precondition: this mesh's own roots are within a tenth of the uncertainty of Catena's.
+    const double f = mode.at("catena_frequency_hz").get<double>();
+    const double zeta = mode.at("catena_damping_ratio").get<double>();
+    EXPECT_LE(std::abs(lumped.frequency_hz - f),
+              kNegligible * mode.at("frequency_uncertainty_hz").get<double>())
+        << "mode " << index;
+    EXPECT_LE(std::abs(lumped.damping_ratio - zeta),
+              kNegligible * mode.at("damping_ratio_uncertainty").get<double>())
+        << "mode " << index;
+  }
+  EXPECT_GE(agreeing, 2) << run.output;
 }
 
 }  // namespace
