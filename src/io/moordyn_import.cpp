@@ -11,10 +11,12 @@
 #include <cstdlib>
 #include <map>
 #include <set>
+#include <utility>
 
 #include "catena/core/error.hpp"
 #include "catena/io/scene_reader.hpp"
 #include "catena/statics/elastic_catenary.hpp"
+#include "io/internal/moordyn_free_decay_notes.hpp"
 #include "io/internal/moordyn_scene_text.hpp"
 
 namespace catena {
@@ -280,6 +282,10 @@ void report_statics(const internal::ChainDescription& d,
           "deepest point of the deck ({:.6g} m): check where the deck's seabed is.",
           z, *d.seabed.deepest_point_z_m));
     }
+    // What would make a MoorDyn free decay of this line non-linear
+    // (docs/how-to/moordyn-free-decay.md).
+    for (std::string& note : internal::free_decay_notes(d, statics, problem.length_m()))
+      scene.notes.push_back(std::move(note));
   } catch (const Error& error) {
     // InvalidInput from the scene reader's or the statics' checks (e.g. a case the seabed model
     // does not support): reported, not thrown, so the other lines are still imported.
@@ -309,6 +315,7 @@ ImportedScene convert_chain(const Topology& t,
   const std::string name = fmt::format("{}-line-{}", stem, ids);
   scene.file_name = name + ".toml";
   report_statics(d, general, scene.file_name, scene);
+  for (std::string& note : internal::drag_notes(d)) scene.notes.push_back(std::move(note));
   scene.toml = internal::scene_header(d, name, scene.notes, moordyn_deck_notes(t.deck)) +
                internal::scene_tables(d, general);
   // A scene Catena's own reader refuses (a deck value beyond the scene format's ranges, e.g. a

@@ -136,16 +136,23 @@ Layout moordyn_layout(const std::vector<Line>& lines, std::size_t header, const 
   std::size_t next = next_nonblank(lines, header + 1);
   if (next < lines.size()) {
     const auto cells = split_blanks(lines[next].text);
-    const bool units = !cells.empty() && std::all_of(cells.begin(), cells.end(), [](auto c) {
+    // MoorDyn-C v2's main file writes the time's unit in parentheses and the channels' bare
+    // ("(s)  N  m": source/MoorDyn2.cpp of FloatingArrayDesign/MoorDyn v2.7), its line files and
+    // MoorDyn-F every unit in parentheses: a row starting with "(s)" whose cells are not numbers.
+    const auto bracketed = [](std::string_view c) {
       return c.size() >= 2 && c.front() == '(' && c.back() == ')';
-    });
+    };
+    const bool units = !cells.empty() && bracketed(cells.front()) &&
+                       std::none_of(cells.begin(), cells.end(),
+                                    [](auto c) { return parse_number(c).has_value(); });
     if (units) {
       if (cells.size() != layout.header.size()) {
         throw InvalidInput(fmt::format("{} line {}: the units row has {} cells, the header {}", src,
                                        lines[next].number, cells.size(), layout.header.size()));
       }
       for (std::size_t j = 0; j < cells.size(); ++j)
-        layout.units[j] = std::string(cells[j].substr(1, cells[j].size() - 2));
+        layout.units[j] =
+            std::string(bracketed(cells[j]) ? cells[j].substr(1, cells[j].size() - 2) : cells[j]);
       next = next_nonblank(lines, next + 1);
     }
   }

@@ -234,5 +234,180 @@ TEST(MoorDynSeabed, DepthFromTheOptionsOrMoorDynCsRule) {
   EXPECT_TRUE(below);
 }
 
+// ---- What makes a MoorDyn free decay non-linear (io/internal/moordyn_free_decay_notes.hpp) ----
+
+// The note of `scene` that starts with `prefix`, or "" when none does.
+std::string note_starting(const ImportedScene& scene, const std::string& prefix) {
+  for (const auto& note : scene.notes) {
+    if (note.rfind(prefix, 0) == 0) return note;
+  }
+  return "";
+}
+
+// The number printed right after `marker` in `text` (NaN when the marker is absent).
+double number_after(const std::string& text, const std::string& marker) {
+  const auto at = text.find(marker);
+  if (at == std::string::npos) return std::nan("");
+  return std::stod(text.substr(at + marker.size()));
+}
+
+// The submerged weight per metre of w_deck's chain with MoorDyn-C's defaults g = 9.80665 m/s^2 and
+// rho_w = 1025 kg/m^3 (kOptions gives neither) [N/m].
+const double kChainWeight = (100.0 - 1025.0 * kPi / 4.0 * 0.1 * 0.1) * 9.80665;
+
+// The inextensible catenary between (0, 0) and (X, h) of length L, solved here as in
+// catenary_lowest_z: its parameter a = H / w [m], and the extremes the notes report: the largest
+// distance from the chord (by 1e5 samples of z(x) = a (cosh((x - x0)/a) - cosh(x0/a))), and the
+// lowest and largest tension a w and (a + h - z_vertex) w (T = w (a + z - z_vertex) on a catenary).
+struct CatenaryExtremes {
+  double a = 0.0, sag = 0.0, lowest_z = 0.0, tension_ratio = 0.0, vertex_s = 0.0;
+};
+CatenaryExtremes catenary_extremes(double X, double h, double L) {
+  const double target = std::sqrt(L * L - h * h);
+  double lo = 1e-3, hi = 1e6;
+  for (int i = 0; i < 200; ++i) {
+    const double a = 0.5 * (lo + hi);
+    (2.0 * a * std::sinh(X / (2.0 * a)) > target ? lo : hi) = a;
+  }
+  CatenaryExtremes out;
+  out.a = 0.5 * (lo + hi);
+  const double a = out.a;
+  const double x0 = X / 2.0 - a * std::asinh(h / (2.0 * a * std::sinh(X / (2.0 * a))));
+  for (int i = 0; i <= 100000; ++i) {
+    const double x = X * i / 100000.0;
+    const double z = a * (std::cosh((x - x0) / a) - std::cosh(x0 / a));
+    out.sag = std::max(out.sag, std::abs(X * z - h * x) / std::hypot(X, h));
+  }
+  out.lowest_z = a * (1.0 - std::cosh(x0 / a));
+  out.vertex_s = a * std::sinh(x0 / a);
+  out.tension_ratio = a / (a + h - out.lowest_z);
+  return out;
+}
+
+// w_deck's line with both ends moved and its length changed, over a seabed 1000 m deep (off it).
+std::string suspended_deck(const std::string& a_z,
+                           const std::string& b,
+                           const std::string& length) {
+  std::string text = w_deck(kOptions);
+  replace_once(text, "300      WtrDpth", "1000     WtrDpth");
+  replace_once(text, "0.0    0.0  -250.0", "0.0    0.0  " + a_z);
+  replace_once(text, "400.0  0.0  -20.0", b);
+  replace_once(text, "600.0     40", length + "     40");
+  return text;
+}
+
+TEST(MoorDynFreeDecayNotes, QuadraticDragIsNamedWithTheDampingRatioItAddsPerMetre) {
+  const auto scenes = convert_moordyn_deck(deck_from("drag.dat", w_deck(kOptions)), "drag");
+  ASSERT_EQ(scenes.size(), 1u);
+  const std::string note =
+      note_starting(scenes[0], "Free decay: line 1 (type chain) has quadratic");
+  ASSERT_FALSE(note.empty());
+  // Independently: the energy 1/2 rho_w Cd Diam |v| v dissipates over one cycle of v = w a cos(w t)
+  // (trapezoidal sum), as a linear damper c that dissipates as much (c = E / int v^2 dt), and its
+  // damping ratio c / (2 w M) with M = MassDen + Ca rho_w pi/4 Diam^2, at a = 1 m.
+  const double rho = 1025.0, omega = 0.7, a = 1.0, period = 2.0 * kPi / omega;
+  const double M = 100.0 + 1.0 * rho * kPi / 4.0 * 0.01;
+  double dissipated = 0.0, squared = 0.0;
+  constexpr int kSteps = 20000;
+  for (int i = 0; i < kSteps; ++i) {
+    const double v = omega * a * std::cos(omega * period * i / kSteps);
+    dissipated += 0.5 * rho * 1.2 * 0.1 * std::abs(v) * v * v * period / kSteps;
+    squared += v * v * period / kSteps;
+  }
+  const double zeta_per_metre = dissipated / squared / (2.0 * omega * M);
+  EXPECT_NEAR(number_after(note, "at most a damping ratio of "), zeta_per_metre,
+              2e-3 * zeta_per_metre)  // 3 digits printed
+      << note;
+  EXPECT_NE(note.find("set Cd = CdAx = 0"), std::string::npos) << note;
+  // Along the line: CdAx = 0.4 on pi Diam, mass MassDen (CaAx = 0).
+  const double tangential = zeta_per_metre * (0.4 * kPi / 1.2) * (M / 100.0);
+  EXPECT_NEAR(number_after(note, "and "), tangential, 2e-3 * tangential) << note;
+  // Without drag, no such note.
+  std::string text = w_deck(kOptions);
+  replace_once(text, "1.2  1.0  0.4", "0.0  1.0  0.0");
+  const auto no_drag = convert_moordyn_deck(deck_from("nodrag.dat", text), "nodrag");
+  ASSERT_EQ(no_drag.size(), 1u);
+  for (const auto& n : no_drag[0].notes) EXPECT_EQ(n.find("quadratic drag"), std::string::npos);
+}
+
+TEST(MoorDynFreeDecayNotes, AmplitudeScaleTensionAndClearanceOfASuspendedLine) {
+  // A at (0, -250), B at (400, -20), 600 m, EA = 1e20 N (inextensible to 1e-16), seabed at -1000.
+  const auto scenes = convert_moordyn_deck(
+      deck_from("suspended.dat", suspended_deck("-250.0", "400.0  0.0  -20.0", "600.0")), "s");
+  ASSERT_EQ(scenes.size(), 1u);
+  ASSERT_TRUE(scenes[0].statics_solved) << scenes[0].statics;
+  const CatenaryExtremes c = catenary_extremes(400.0, 230.0, 600.0);
+  // l = sqrt(d^2 + L^2 H/EA) = d here (L sqrt(H/EA) ~ 1e-6 m); 4 digits printed.
+  const std::string scale = note_starting(scenes[0], "Free decay: small means");
+  EXPECT_NEAR(number_after(scale, "sqrt(d^2 + L^2 H/EA) = "), c.sag, 1e-3 * c.sag) << scale;
+  EXPECT_NEAR(number_after(scale, "a <= "), 0.01 * c.sag, 1e-5 * c.sag) << scale;
+  // The lowest tension is H = a w at the vertex, 31 % of the fairlead's: not nearly slack.
+  const std::string tension = note_starting(scenes[0], "Free decay: lowest static tension");
+  ASSERT_FALSE(tension.empty());
+  EXPECT_NEAR(number_after(tension, "lowest static tension "), c.a * kChainWeight,
+              1e-3 * c.a * kChainWeight)
+      << tension;
+  // At the vertex, s = a sinh(x0 / a) from A, within the notes' sampling (L / 2000).
+  EXPECT_NEAR(number_after(tension, "N at s = "), c.vertex_s, 0.3) << tension;
+  EXPECT_NEAR(number_after(tension, " m ("), 100.0 * c.tension_ratio, 0.2 * c.tension_ratio)
+      << tension;
+  // Clearance: the vertex 668 m above the seabed.
+  const std::string clear = note_starting(scenes[0], "Free decay: the line is off the seabed");
+  const double clearance = -250.0 + c.lowest_z + 1000.0;
+  EXPECT_NEAR(number_after(clear, "its lowest point "), clearance, 1e-3 * clearance) << clear;
+}
+
+TEST(MoorDynFreeDecayNotes, ADeepUIsNearlySlack) {
+  // A at (0, -250), B at (200, -150), 800 m: a = 30.7 m, lowest tension 6.8 % of the largest.
+  const auto scenes = convert_moordyn_deck(
+      deck_from("deep-u.dat", suspended_deck("-250.0", "200.0  0.0  -150.0", "800.0")), "u");
+  ASSERT_EQ(scenes.size(), 1u);
+  ASSERT_TRUE(scenes[0].statics_solved) << scenes[0].statics;
+  const CatenaryExtremes c = catenary_extremes(200.0, 100.0, 800.0);
+  ASSERT_LT(c.tension_ratio, 0.1);
+  const std::string tension = note_starting(scenes[0], "Free decay: nearly slack: lowest static");
+  ASSERT_FALSE(tension.empty()) << scenes[0].toml;
+  EXPECT_NEAR(number_after(tension, "tension "), c.a * kChainWeight, 1e-3 * c.a * kChainWeight)
+      << tension;
+  EXPECT_NE(tension.find("slackens the line"), std::string::npos) << tension;
+}
+
+TEST(MoorDynFreeDecayNotes, SeabedContactNamesTheTouchdownsAndTheStaticPenetration) {
+  // w_deck's line rests on the seabed between two suspended parts: two touchdown points; MoorDyn's
+  // grounded node sits w / (kBot Diam) below the seabed (kBot = 2e6 Pa/m, Diam = 0.1 m).
+  const auto scenes = convert_moordyn_deck(deck_from("contact.dat", w_deck(kOptions)), "c");
+  ASSERT_EQ(scenes.size(), 1u);
+  if (!scenes[0].statics_solved) GTEST_SKIP() << "the seabed statics refuses this line";
+  const auto note = std::find_if(scenes[0].notes.begin(), scenes[0].notes.end(), [](const auto& n) {
+    return n.find("rest on the seabed (touchdown at s = ") != std::string::npos;
+  });
+  ASSERT_NE(note, scenes[0].notes.end()) << scenes[0].toml;
+  const double penetration_mm = 1e3 * kChainWeight / (2.0e6 * 0.1);
+  EXPECT_NEAR(number_after(*note, "static penetration, w / (kBot Diam) = "), penetration_mm,
+              2e-3 * penetration_mm)
+      << *note;
+  EXPECT_EQ(std::count(note->begin(), note->end(), '='), 3) << *note;  // two touchdowns + w/(..)
+  EXPECT_NE(note->find("one-sided"), std::string::npos) << *note;
+}
+
+TEST(MoorDynFreeDecayNotes, AnAnchorOnTheSeabedWithTheLineRisingFromItIsNotContact) {
+  // A on the seabed at -300 m, B at (400, -20), 500 m: the catenary's vertex lies beyond A, so the
+  // line rises from the anchor at atan(sinh(-x0 / a)) above the horizontal.
+  std::string text = w_deck(kOptions);
+  replace_once(text, "0.0    0.0  -250.0", "0.0    0.0  -300.0");
+  replace_once(text, "600.0     40", "500.0     40");
+  const auto scenes = convert_moordyn_deck(deck_from("rising.dat", text), "r");
+  ASSERT_EQ(scenes.size(), 1u);
+  ASSERT_TRUE(scenes[0].statics_solved) << scenes[0].statics;
+  const std::string note = note_starting(scenes[0], "Free decay: the line touches the seabed only");
+  ASSERT_FALSE(note.empty()) << scenes[0].toml;
+  const double X = 400.0, h = 280.0, L = 500.0;
+  const CatenaryExtremes c = catenary_extremes(X, h, L);
+  const double x0 = X / 2.0 - c.a * std::asinh(h / (2.0 * c.a * std::sinh(X / (2.0 * c.a))));
+  ASSERT_LT(x0, 0.0);
+  const double angle = std::atan(std::sinh(-x0 / c.a)) * 180.0 / kPi;
+  EXPECT_NEAR(number_after(note, "rises from it at "), angle, 2e-3 * angle) << note;
+}
+
 }  // namespace
 }  // namespace catena
