@@ -276,8 +276,10 @@ void add_time_series_options(CLI::App& command, TimeSeriesArguments& series) {
       ->delimiter(',');
   command.add_option("--min-frequency", series.min_frequency_hz,
                      "Time series: identify modes above this frequency [Hz] (0: no bound)");
-  command.add_option("--max-frequency", series.max_frequency_hz,
-                     "Time series: identify modes below this frequency [Hz] (0: 0.8 Nyquist)");
+  command.add_option(
+      "--max-frequency", series.max_frequency_hz,
+      "Time series: identify modes below this frequency [Hz] (default: 1.5x Catena's\n"
+      "6th mode of the channel's plane, at most 0.8 Nyquist)");
 }
 
 }  // namespace

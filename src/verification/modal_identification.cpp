@@ -174,6 +174,7 @@ std::vector<std::complex<double>> oscillating_poles(const std::vector<std::compl
 void judge(PoleReading& pole, bool converged) {
   IdentifiedMode& m = pole.mode;
   m.identifiable = false;
+  m.frequency_identifiable = false;
   if (!converged) {
     m.note = "the least-squares refinement did not converge";
   } else if (!std::isfinite(m.frequency_uncertainty_hz) ||
@@ -181,12 +182,14 @@ void judge(PoleReading& pole, bool converged) {
     m.note = "the fit cannot separate this mode from another (singular covariance)";
   } else if (m.frequency_uncertainty_hz >= m.frequency_hz) {
     m.note = "its frequency uncertainty exceeds the frequency";
-  } else if (m.damping_ratio_uncertainty >= std::abs(m.damping_ratio)) {
-    m.note = "its damping-ratio uncertainty exceeds the damping ratio";
   } else if (!pole.above_noise_after_one_period) {
     m.note = "it decays below the noise within one period";
+  } else if (m.damping_ratio_uncertainty >= std::abs(m.damping_ratio)) {
+    m.note = "its damping-ratio uncertainty exceeds the damping ratio";
+    m.frequency_identifiable = true;
   } else {
     m.identifiable = true;
+    m.frequency_identifiable = true;
   }
 }
 

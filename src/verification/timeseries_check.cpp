@@ -30,6 +30,11 @@ constexpr int kFirstReferenceModes = 6;
 // Catena's modes must reach this factor above the highest identified frequency, so that the
 // nearest Catena mode of the top identified one is really the nearest.
 constexpr double kReferenceMargin = 1.2;
+// Without --max-frequency the band identified reaches this factor above Catena's
+// kFirstReferenceModes-th mode of the plane: a real record (MoorDyn at 20 Hz) rings in dozens of
+// modes up to Nyquist, and fitting them all costs minutes while the high ones are the least linear
+// and least resolved.
+constexpr double kDefaultBandFactor = 1.5;
 // A window must span this many periods of Catena's lowest mode of the plane (issue 33).
 constexpr double kMinimumPeriods = 2.0;
 // At most this many singular values go into the result (the order choice needs the top ones).
@@ -142,6 +147,15 @@ std::vector<std::string> scene_notes(const Scene& scene, const std::vector<Dampe
     }
   }
   return notes;
+}
+
+// The top of the band identified when the user gives none (kDefaultBandFactor); 0 (the
+// identification's own default, 0.8 Nyquist) when that is lower anyway.
+double default_band_top_hz(const DampedReference& reference, const SampleWindow& window) {
+  if (reference.modes.empty() || window.count < 2) return 0.0;
+  const double nyquist_hz = 0.5 / window.step_s;
+  const double top_hz = kDefaultBandFactor * reference.modes.back().frequency_hz;
+  return top_hz < 0.8 * nyquist_hz ? top_hz : 0.0;
 }
 
 int highest_needed(const std::vector<Identification>& found, const DampedReference& reference) {
@@ -297,11 +311,14 @@ TimeSeriesCheck check_time_series_runs(const Scene& scene,
   // Identification of every run, plane by plane (the channels of a plane share the poles).
   IdentificationOptions identification;
   identification.min_frequency_hz = options.min_frequency_hz;
-  identification.max_frequency_hz = options.max_frequency_hz;
   identification.confidence_sigmas = options.confidence_sigmas;
   std::map<Plane, std::vector<Identification>> found;
   for (const auto& group : groups) {
     for (std::size_t r = 0; r < runs.size(); ++r) {
+      identification.max_frequency_hz =
+          options.max_frequency_hz > 0.0
+              ? options.max_frequency_hz
+              : default_band_top_hz(reference_of(references, group.plane), windows[r]);
       found[group.plane].push_back(identify_modes(
           windows[r].time_s, window_samples(runs[r], group, windows[r]), identification));
     }

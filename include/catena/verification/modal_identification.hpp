@@ -41,6 +41,10 @@ struct IdentifiedMode {
   bool identifiable = true;                // false: found but its uncertainty exceeds its own
   std::string note;                        //   value, or it decays below the noise within a
                                            //   period; note says why
+  /// Its frequency can be stood behind even when its damping ratio is not resolved from zero (an
+  /// undamped or very lightly damped line): identifiable, or not only because the damping-ratio
+  /// uncertainty exceeds the damping ratio.
+  bool frequency_identifiable = true;
 };
 
 /// The modes of a free decay and how they were found.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace catena::internal {
@@ -24,16 +25,21 @@ std::size_t nearest(const std::vector<Mode>& modes, double frequency_hz) {
 // frequency to compare, and a damping ratio to compare with Catena's within that uncertainty: an
 // undamped line's decay is exactly that (issue 33: "the identified zeta is compared to 0 within its
 // uncertainty"). Any other reason (no convergence, a singular fit, a frequency not resolved, a
-// mode below the noise) leaves it not identifiable.
-bool damping_unresolved_only(const IdentifiedMode& id) {
-  return !id.identifiable &&
-         id.note.find("damping-ratio uncertainty exceeds") != std::string::npos &&
-         id.frequency_uncertainty_hz > 0.0 && id.frequency_uncertainty_hz < id.frequency_hz;
+// mode below the noise) leaves it not identifiable (IdentifiedMode::frequency_identifiable).
+bool comparable(const IdentifiedMode& id) { return id.frequency_identifiable; }
+
+// The gap from Catena's mode k to its nearest neighbour in the plane [Hz] (infinite when alone).
+double neighbour_gap_hz(const std::vector<Mode>& modes, std::size_t k) {
+  double gap = std::numeric_limits<double>::infinity();
+  if (k > 0) gap = std::min(gap, modes[k].frequency_hz - modes[k - 1].frequency_hz);
+  if (k + 1 < modes.size()) gap = std::min(gap, modes[k + 1].frequency_hz - modes[k].frequency_hz);
+  return std::abs(gap);
 }
 
-bool comparable(const IdentifiedMode& id) { return id.identifiable || damping_unresolved_only(id); }
-
-void compare(const IdentifiedMode& id, const Mode& catena, TimeSeriesModeCheck& check) {
+void compare(const IdentifiedMode& id,
+             const Mode& catena,
+             double gap_hz,
+             TimeSeriesModeCheck& check) {
   check.mode = catena.index;
   check.catena_frequency_hz = catena.frequency_hz;
   check.catena_damping_ratio = catena.damping_ratio;
@@ -44,6 +50,16 @@ void compare(const IdentifiedMode& id, const Mode& catena, TimeSeriesModeCheck& 
   if (!comparable(id)) {
     check.verdict = "not identifiable";
     check.note = id.note;
+    return;
+  }
+  // An uncertainty that reaches halfway to Catena's neighbouring mode cannot say which mode this
+  // is: "agrees" would then promise nothing (a fit of noise at 3.6 +- 2.9 Hz once "agreed").
+  if (2.0 * check.frequency_uncertainty_hz >= gap_hz) {
+    check.verdict = "not identifiable";
+    check.note = fmt::format(
+        "its frequency uncertainty {:.3e} Hz reaches halfway to Catena's neighbouring mode ({:.3e} "
+        "Hz away): the match is ambiguous",
+        check.frequency_uncertainty_hz, gap_hz);
     return;
   }
   const double allowed_f = check.frequency_uncertainty_hz + check.catena_frequency_error_hz;
@@ -106,7 +122,7 @@ std::vector<TimeSeriesModeCheck> match_modes(const Identification& identificatio
       continue;
     }
     taken_by[k] = static_cast<int>(i);
-    compare(found[i], reference.modes[k], checks[i]);
+    compare(found[i], reference.modes[k], neighbour_gap_hz(reference.modes, k), checks[i]);
   }
   // Not present: Catena's modes below the highest one a comparable mode matched.
   int highest = -1;
