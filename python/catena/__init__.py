@@ -23,6 +23,7 @@ malformed scene raises catena.ParseError (a subclass of InvalidInput). Numerical
 an exception: it is a status in each result's summary. Solves release the GIL.
 """
 
+import importlib
 import json
 import os
 from collections.abc import Iterable, Mapping, Sequence
@@ -261,7 +262,7 @@ def _plot_result(self: Result, ax: Any = None, modes: Union[Iterable[int], str, 
     except ValueError as error:
         raise InvalidInput(str(error)) from None
     if ax is None:
-        import matplotlib.pyplot as plt  # type: ignore[import]
+        plt: Any = importlib.import_module("matplotlib.pyplot")  # optional, untyped: by name
         _, ax = plt.subplots(figsize=(10, 4))
     _plot.draw_panel(ax, panel)
     return ax

@@ -81,9 +81,10 @@ def panel_of(picture: Picture, plane: str) -> Picture:
 
 def draw_figure(picture: Picture) -> Any:
     """Every panel, stacked, with the title and the notes: a matplotlib Figure."""
-    import matplotlib  # type: ignore[import]
+    # Imported by name (untyped for mypy: matplotlib is optional and has no stubs here).
+    matplotlib: Any = importlib.import_module("matplotlib")
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt  # type: ignore[import]
+    plt: Any = importlib.import_module("matplotlib.pyplot")
 
     heights = [3.4 if p["id"] == "profile" else 2.0 for p in picture["panels"]]
     figure, axes = plt.subplots(len(heights), 1, figsize=(11, sum(heights) + 1.2 + 0.2 * len(picture["notes"])),
