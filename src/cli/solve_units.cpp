@@ -7,15 +7,14 @@
 #include <cctype>
 
 #include "catena/core/error.hpp"
+#include "core/internal/ascii_lower.hpp"
 
 namespace catena::cli {
 
 std::string frequency_unit_names() { return "rad/s, hz, kl-pi, gale"; }
 
 FrequencyUnit parse_frequency_unit(const std::string& text) {
-  std::string key = text;
-  std::transform(key.begin(), key.end(), key.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string key = internal::ascii_lower(text);
   if (key == "rad/s" || key == "rad-s" || key == "omega") return FrequencyUnit::RadPerSecond;
   if (key == "hz") return FrequencyUnit::Hertz;
   if (key == "kl-pi" || key == "kl/pi") return FrequencyUnit::KLOverPi;
@@ -25,17 +24,8 @@ FrequencyUnit parse_frequency_unit(const std::string& text) {
 }
 
 std::string unit_label(FrequencyUnit unit) {
-  switch (unit) {
-    case FrequencyUnit::RadPerSecond:
-      return "rad/s";
-    case FrequencyUnit::Hertz:
-      return "Hz";
-    case FrequencyUnit::KLOverPi:
-      return "kL/pi";
-    case FrequencyUnit::GaleRatio:
-      return "w/sqrt(g/a)";
-  }
-  return "?";
+  // The library's unit names, with Gale's ratio spelled out for a column header.
+  return unit == FrequencyUnit::GaleRatio ? "w/sqrt(g/a)" : to_string(unit);
 }
 
 std::optional<double> in_unit(const Mode& mode, FrequencyUnit unit) {

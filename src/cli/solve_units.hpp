@@ -7,15 +7,12 @@
 #include <string>
 
 #include "catena/solvers/modal_result.hpp"
+#include "catena/statics/dimensionless_groups.hpp"
 
 namespace catena::cli {
 
-enum class FrequencyUnit {
-  RadPerSecond,  ///< omega [rad/s]
-  Hertz,         ///< f = omega / (2 pi) [Hz]
-  KLOverPi,      ///< kL/pi = omega L / (pi c), c = sqrt(T0 / (m + ma)): the taut string's modes
-  GaleRatio      ///< omega / sqrt(g/a), a = H/W0: Gale (1976)'s tables (uniform cables only)
-};
+// The library's FrequencyUnit (catena/statics/dimensionless_groups.hpp): rad/s, Hz, kL/pi with
+// c = sqrt(T0 / (m + ma)), and Gale's omega / sqrt(g/a) (uniform cables only).
 
 /// The names --units accepts, for its help and its error: "rad/s, hz, kl-pi, gale".
 std::string frequency_unit_names();

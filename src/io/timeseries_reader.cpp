@@ -15,6 +15,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/file_access.hpp"
+#include "core/internal/ascii_lower.hpp"
 
 namespace catena {
 namespace {
@@ -74,12 +75,6 @@ std::vector<std::string_view> split_commas(std::string_view line) {
   return cells;
 }
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
 // A CSV column name split into the name and a trailing unit: "tension [N]", "x (m)", "time_s".
 // Only the bracketed forms give a unit for any column; "_s" is recognised for the time column only
 // (a channel "node_x" must not lose its "_x").
@@ -98,7 +93,7 @@ std::pair<std::string, std::string> split_unit(std::string_view cell) {
 // when it is another column.
 std::optional<std::string> time_column_unit(std::string_view cell) {
   auto [name, unit] = split_unit(cell);
-  const std::string key = lower(name);
+  const std::string key = internal::ascii_lower(name);
   if (key == "time") return unit;
   if (key.size() > 5 && key.compare(0, 5, "time_") == 0 && unit.empty()) return name.substr(5);
   return std::nullopt;
@@ -204,7 +199,7 @@ Layout detect_layout(const std::vector<Line>& lines, const std::string& source) 
   const std::string_view text = lines[header].text;
   const auto blank_cells = split_blanks(text);
   if (text.find(',') == std::string_view::npos && !blank_cells.empty() &&
-      lower(blank_cells.front()) == "time")
+      internal::ascii_lower(blank_cells.front()) == "time")
     return moordyn_layout(lines, header, source);
   if (text.find(',') != std::string_view::npos) return csv_layout(lines, header, source);
   throw InvalidInput(fmt::format(
@@ -272,7 +267,7 @@ void read_rows(const std::vector<Line>& lines, const Layout& layout, TimeSeries&
 std::optional<int> line_file_segments(const std::vector<std::string>& names) {
   int highest_node = -1, highest_segment = 0;
   for (const std::string& name : names) {
-    const std::string key = lower(name);
+    const std::string key = internal::ascii_lower(name);
     const bool node = key.rfind("node", 0) == 0;
     const bool segment = key.rfind("seg", 0) == 0;
     if (!node && !segment) return std::nullopt;
@@ -318,7 +313,7 @@ bool looks_like_time_series(const std::filesystem::path& file) {
   if (!line.empty() && line.back() == '\r') line.pop_back();
   if (line.find(',') == std::string::npos) {
     const auto cells = split_blanks(line);
-    return !cells.empty() && lower(cells.front()) == "time";
+    return !cells.empty() && internal::ascii_lower(cells.front()) == "time";
   }
   // A results or tension CSV of `catena check` never has a time column.
   const auto cells = split_commas(line);

@@ -11,15 +11,10 @@
 #include <numeric>
 
 #include "catena/core/error.hpp"
+#include "core/internal/ascii_lower.hpp"
 
 namespace catena {
 namespace {
-
-std::string lower(const std::string& s) {
-  std::string out = s;
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 // Levenshtein distance ignoring case: a MoorDyn file may spell a channel FAIRTEN1, FairTen1 or
 // Fair1Ten, and a user may type any of them.
@@ -40,10 +35,10 @@ std::size_t distance(const std::string& a, const std::string& b) {
 
 // The names closest to `name` (at most five), for the message of a missing channel.
 std::string close_names(const std::vector<std::string>& names, const std::string& name) {
-  const std::string key = lower(name);
+  const std::string key = internal::ascii_lower(name);
   std::vector<std::pair<std::size_t, std::size_t>> ranked;
   for (std::size_t i = 0; i < names.size(); ++i) {
-    const std::string candidate = lower(names[i]);
+    const std::string candidate = internal::ascii_lower(names[i]);
     // A name containing the query (or contained in it) ranks first.
     const bool contains = !key.empty() && (candidate.find(key) != std::string::npos ||
                                            key.find(candidate) != std::string::npos);
@@ -63,7 +58,7 @@ std::size_t TimeSeries::channel_index(const std::string& name) const {
   if (exact != names.end()) return static_cast<std::size_t>(exact - names.begin());
   std::vector<std::size_t> matches;
   for (std::size_t i = 0; i < names.size(); ++i)
-    if (lower(names[i]) == lower(name)) matches.push_back(i);
+    if (internal::ascii_lower(names[i]) == internal::ascii_lower(name)) matches.push_back(i);
   if (matches.size() == 1) return matches.front();
   if (matches.size() > 1) {
     throw InvalidInput(

@@ -8,15 +8,10 @@
 #include <string>
 
 #include "catena/verification/timeseries_check.hpp"
+#include "core/internal/ascii_lower.hpp"
 
 namespace catena {
 namespace {
-
-std::string lower(const std::string& s) {
-  std::string out = s;
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
@@ -32,7 +27,7 @@ std::string quantity_suffix(const std::string& key) {
 }  // namespace
 
 std::optional<Plane> channel_plane(const std::string& name) {
-  const std::string key = lower(name);
+  const std::string key = internal::ascii_lower(name);
   // Tensions: MoorDyn's FAIRTEN<k>, ANCHTEN<k>, L<k>N<j>TEN / T / TENA / TENB, a line file's
   // Seg<j>Te, v1's Fair<k>Ten, and the strains Seg<j>St / dSt, which follow the tension.
   if (key.rfind("fairten", 0) == 0 || key.rfind("anchten", 0) == 0) return Plane::InPlane;
